@@ -1,0 +1,122 @@
+//! 3-vectors and 3×3 matrices of expressions: the vector definitions the chapter starts from.
+//!
+//! Derivations are written with these (ω × r, [I]ω, Rz·Ry·Rx) and never in components, so
+//! that each component equation is *computed* and then compared with the book's.
+
+use super::expr::Expr;
+
+/// A column 3-vector of expressions.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Vec3(pub [Expr; 3]);
+
+/// A 3×3 matrix of expressions, row-major: `m.0[row][col]`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Mat3(pub [[Expr; 3]; 3]);
+
+impl Vec3 {
+    /// A vector of three symbols, e.g. `Vec3::symbols(["p", "q", "r"])`.
+    pub fn symbols(names: [&str; 3]) -> Self {
+        Vec3(names.map(Expr::symbol))
+    }
+
+    /// A vector from three expressions.
+    pub fn new(x: Expr, y: Expr, z: Expr) -> Self {
+        Vec3([x, y, z])
+    }
+
+    /// The zero vector.
+    pub fn zero() -> Self {
+        Vec3(std::array::from_fn(|_| Expr::zero()))
+    }
+
+    /// The scalar product.
+    pub fn dot(&self, other: &Vec3) -> Expr {
+        (0..3).map(|i| &self.0[i] * &other.0[i]).sum()
+    }
+
+    /// The vector product `self × other`.
+    pub fn cross(&self, other: &Vec3) -> Vec3 {
+        let [a1, a2, a3] = &self.0;
+        let [b1, b2, b3] = &other.0;
+        Vec3::new(a2 * b3 - a3 * b2, a3 * b1 - a1 * b3, a1 * b2 - a2 * b1)
+    }
+
+    /// Component-wise sum.
+    pub fn add(&self, other: &Vec3) -> Vec3 {
+        Vec3(std::array::from_fn(|i| &self.0[i] + &other.0[i]))
+    }
+
+    /// Component-wise difference.
+    pub fn sub(&self, other: &Vec3) -> Vec3 {
+        Vec3(std::array::from_fn(|i| &self.0[i] - &other.0[i]))
+    }
+
+    /// Every component multiplied by a scalar expression.
+    pub fn scale(&self, factor: &Expr) -> Vec3 {
+        Vec3(std::array::from_fn(|i| &self.0[i] * factor))
+    }
+
+    /// Applies a fallible map to each component.
+    pub fn try_map(
+        &self,
+        f: impl Fn(&Expr) -> Result<Expr, super::SymbolicError>,
+    ) -> Result<Vec3, super::SymbolicError> {
+        let [x, y, z] = &self.0;
+        Ok(Vec3::new(f(x)?, f(y)?, f(z)?))
+    }
+}
+
+impl Mat3 {
+    /// A matrix from a row-major function of (row, col).
+    pub fn from_fn(f: impl Fn(usize, usize) -> Expr) -> Self {
+        Mat3(std::array::from_fn(|r| std::array::from_fn(|c| f(r, c))))
+    }
+
+    /// The identity.
+    pub fn identity() -> Self {
+        Self::from_fn(|r, c| Expr::int(i64::from(r == c)))
+    }
+
+    /// A symmetric matrix of symbols given its upper triangle names, row-major.
+    pub fn symmetric(names: [[&str; 3]; 3]) -> Self {
+        Self::from_fn(|r, c| Expr::symbol(names[r.min(c)][r.max(c)]))
+    }
+
+    /// The transpose.
+    pub fn transpose(&self) -> Mat3 {
+        Self::from_fn(|r, c| self.0[c][r].clone())
+    }
+
+    /// Matrix × vector.
+    pub fn mul_vec(&self, v: &Vec3) -> Vec3 {
+        Vec3(std::array::from_fn(|r| {
+            (0..3).map(|k| &self.0[r][k] * &v.0[k]).sum()
+        }))
+    }
+
+    /// Matrix × matrix.
+    pub fn mul_mat(&self, other: &Mat3) -> Mat3 {
+        Self::from_fn(|r, c| (0..3).map(|k| &self.0[r][k] * &other.0[k][c]).sum())
+    }
+
+    /// The determinant, by cofactor expansion along the first row.
+    pub fn determinant(&self) -> Expr {
+        (0..3).map(|c| &self.0[0][c] * &self.cofactor(0, c)).sum()
+    }
+
+    /// The cofactor C_rc = (−1)^(r+c) · minor(r, c).
+    pub fn cofactor(&self, r: usize, c: usize) -> Expr {
+        let rows: Vec<usize> = (0..3).filter(|&i| i != r).collect();
+        let cols: Vec<usize> = (0..3).filter(|&j| j != c).collect();
+        let m = |i: usize, j: usize| &self.0[rows[i]][cols[j]];
+        let minor = m(0, 0) * m(1, 1) - m(0, 1) * m(1, 0);
+        if (r + c) % 2 == 0 { minor } else { -minor }
+    }
+
+    /// The inverse, adj / det, when the determinant is an invertible monomial.
+    pub fn inverse(&self) -> Result<Mat3, super::SymbolicError> {
+        let det = self.determinant();
+        let inverse_det = det.reciprocal()?;
+        Ok(Self::from_fn(|r, c| &self.cofactor(c, r) * &inverse_det))
+    }
+}
