@@ -10,7 +10,21 @@ use crate::symbolic::{Expr, Mat3, SymbolicError, Vec3, parse};
 
 /// Rz(ψ), 4.53: components in the rotated frame to components in the frame before it.
 pub fn rotation_z(angle: &str) -> Mat3 {
-    let (c, s) = (Expr::cos(angle), Expr::sin(angle));
+    rotation_z_cs(Expr::cos(angle), Expr::sin(angle))
+}
+
+/// Ry(θ), 4.54.
+pub fn rotation_y(angle: &str) -> Mat3 {
+    rotation_y_cs(Expr::cos(angle), Expr::sin(angle))
+}
+
+/// Rx(φ), 4.55.
+pub fn rotation_x(angle: &str) -> Mat3 {
+    rotation_x_cs(Expr::cos(angle), Expr::sin(angle))
+}
+
+/// Rz from the cosine and sine of its angle, given as any expressions (e.g. half-angle forms).
+pub fn rotation_z_cs(c: Expr, s: Expr) -> Mat3 {
     Mat3([
         [c.clone(), -&s, Expr::zero()],
         [s, c, Expr::zero()],
@@ -18,9 +32,8 @@ pub fn rotation_z(angle: &str) -> Mat3 {
     ])
 }
 
-/// Ry(θ), 4.54.
-pub fn rotation_y(angle: &str) -> Mat3 {
-    let (c, s) = (Expr::cos(angle), Expr::sin(angle));
+/// Ry from the cosine and sine of its angle.
+pub fn rotation_y_cs(c: Expr, s: Expr) -> Mat3 {
     Mat3([
         [c.clone(), Expr::zero(), s.clone()],
         [Expr::zero(), Expr::int(1), Expr::zero()],
@@ -28,9 +41,8 @@ pub fn rotation_y(angle: &str) -> Mat3 {
     ])
 }
 
-/// Rx(φ), 4.55.
-pub fn rotation_x(angle: &str) -> Mat3 {
-    let (c, s) = (Expr::cos(angle), Expr::sin(angle));
+/// Rx from the cosine and sine of its angle.
+pub fn rotation_x_cs(c: Expr, s: Expr) -> Mat3 {
     Mat3([
         [Expr::int(1), Expr::zero(), Expr::zero()],
         [Expr::zero(), c.clone(), -&s],

@@ -8,7 +8,9 @@ mod body_integral;
 mod energy;
 mod kinematics;
 mod momentum;
+mod pendulum;
 mod planar;
+mod quaternion;
 mod spatial;
 mod steiner;
 
@@ -17,19 +19,22 @@ use crate::symbolic::{Expr, SymbolicError, Vec3};
 
 pub use body_integral::integrate_over_body;
 pub use kinematics::{rotation_x, rotation_y, rotation_z};
+pub use quaternion::Quaternion;
 
 /// A section's derivations.
 type Section = fn() -> Result<Vec<Equation>, SymbolicError>;
 
 /// Every equation, in the chapter's order.
 pub fn all() -> Result<Vec<Equation>, CheckError> {
-    let sections: [(&'static str, Section); 6] = [
+    let sections: [(&'static str, Section); 8] = [
         ("4.9–4.14", momentum::equations),
         ("4.23", steiner::equations),
+        ("4.24", pendulum::equations),
         ("4.32–4.35", energy::equations),
         ("4.42–4.46", planar::equations),
         ("4.49–4.52", spatial::equations),
         ("4.57–4.60", kinematics::equations),
+        ("quaternion", quaternion::equations),
     ];
     let mut all = Vec::new();
     for (number, section) in sections {

@@ -17,11 +17,51 @@ pub(super) fn equations() -> Result<Vec<Equation>, SymbolicError> {
     let yaw = definitions(&YAW_RATE)?;
     let at_g = residuals_at_g()?;
     Ok(vec![
+        space_fixed(&yaw)?,
         acceleration(&yaw)?,
         form_at_g(&at_g, &yaw),
         track()?,
         form_at_midship(&at_g, &yaw)?,
     ])
+}
+
+/// Residuals of 4.39: d/dt(M Ẋ_G, M Ẏ_G) − (F_X, F_Y) in space axes (4.1), and the yaw
+/// equation as for 4.43 (k = K, so H_G = I_zz ψ̇ K, 4.38).
+pub fn space_fixed_residuals() -> Result<[Expr; 3], SymbolicError> {
+    let rates = [
+        ("X_dot", Expr::symbol("X_ddot")),
+        ("Y_dot", Expr::symbol("Y_ddot")),
+    ];
+    let momentum = |v: &str| Expr::symbol("M") * Expr::symbol(v);
+    let yaw = yaw_moment_equation()?;
+    Ok([
+        momentum("X_dot").time_derivative(&rates) - Expr::symbol("F_X"),
+        momentum("Y_dot").time_derivative(&rates) - Expr::symbol("F_Y"),
+        yaw - Expr::symbol("M_z"),
+    ])
+}
+
+fn space_fixed(yaw: &[Definition]) -> Result<Equation, SymbolicError> {
+    let derived = space_fixed_residuals()?;
+    let book = ["M*X_ddot - F_X", "M*Y_ddot - F_Y", "Izz*psi_ddot - M_z"];
+    Ok(Equation {
+        number: "4.39",
+        description: "planar equations in space-fixed axes",
+        components: (0..3)
+            .map(|i| Component::new(["X", "Y", "yaw"][i], derived[i].clone(), book[i], yaw))
+            .collect(),
+    })
+}
+
+/// The z-component of 4.51 for planar rotation (p = q = 0): I_zz ṙ, the products drop out.
+fn yaw_moment_equation() -> Result<Expr, SymbolicError> {
+    let planar_rates = [
+        ("p", Expr::zero()),
+        ("q", Expr::zero()),
+        ("p_dot", Expr::zero()),
+        ("q_dot", Expr::zero()),
+    ];
+    euler_equations()?.0[2].subs_all(&planar_rates)
 }
 
 /// a_G = [dv/dt] + ω × v for v = u i + v j, ω = r k.
@@ -45,7 +85,7 @@ fn acceleration(yaw: &[Definition]) -> Result<Equation, SymbolicError> {
 }
 
 /// Residuals (left − right) of 4.43 at G: M a_G − F and the yaw moment equation.
-fn residuals_at_g() -> Result<[Expr; 3], SymbolicError> {
+pub fn residuals_at_g() -> Result<[Expr; 3], SymbolicError> {
     let a = planar_acceleration();
     let m = Expr::symbol("M");
     let planar_rates = [
