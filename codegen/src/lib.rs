@@ -10,3 +10,5 @@ pub mod check;
 pub mod derivation;
 pub mod report;
 pub mod symbolic;
+pub mod model;
+pub mod emit;

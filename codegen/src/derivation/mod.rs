@@ -6,12 +6,12 @@
 
 mod body_integral;
 mod energy;
-mod kinematics;
+pub mod kinematics;
 mod momentum;
-mod pendulum;
-mod planar;
-mod quaternion;
-mod spatial;
+pub mod pendulum;
+pub mod planar;
+pub mod quaternion;
+pub mod spatial;
 mod steiner;
 
 use crate::check::{CheckError, Equation};

@@ -134,6 +134,23 @@ fn track() -> Result<Equation, SymbolicError> {
 /// 4.46: substitute 4.45 (v_G = v + x_G r, M_z(G) = M_z − x_G F_y) into 4.43, then eliminate
 /// F_y from the yaw equation with the sway equation.
 fn form_at_midship(at_g: &[Expr; 3], yaw: &[Definition]) -> Result<Equation, SymbolicError> {
+    let derived = residuals_at_midship(at_g)?;
+    let book = [
+        "M*(u_dot - v*psi_dot - x_G*psi_dot.powi(2)) - F_x",
+        "M*(v_dot + u*psi_dot + x_G*psi_ddot) - F_y",
+        "(Izz + M*x_G.powi(2))*psi_ddot + M*x_G*(v_dot + u*psi_dot) - M_z",
+    ];
+    Ok(Equation {
+        number: "4.46",
+        description: "planar equations at midship, G at (x_G, 0, 0), by the origin shift 4.45",
+        components: (0..3)
+            .map(|i| Component::new(["x", "y", "yaw"][i], derived[i].clone(), book[i], yaw))
+            .collect(),
+    })
+}
+
+/// Residuals of 4.46, from those of 4.43 at G by the origin shift 4.45.
+pub fn residuals_at_midship(at_g: &[Expr; 3]) -> Result<[Expr; 3], SymbolicError> {
     let sway_at_g = parse("v + x_G*r")?;
     let body_rates = [("v", Expr::symbol("v_dot")), ("r", Expr::symbol("r_dot"))];
     let origin_shift = [
@@ -147,17 +164,5 @@ fn form_at_midship(at_g: &[Expr; 3], yaw: &[Definition]) -> Result<Equation, Sym
         .collect::<Result<_, _>>()?;
     let sway_force = &shifted[1] + &Expr::symbol("F_y");
     let yaw_eliminated = shifted[2].subs("F_y", &sway_force)?;
-    let derived = [shifted[0].clone(), shifted[1].clone(), yaw_eliminated];
-    let book = [
-        "M*(u_dot - v*psi_dot - x_G*psi_dot.powi(2)) - F_x",
-        "M*(v_dot + u*psi_dot + x_G*psi_ddot) - F_y",
-        "(Izz + M*x_G.powi(2))*psi_ddot + M*x_G*(v_dot + u*psi_dot) - M_z",
-    ];
-    Ok(Equation {
-        number: "4.46",
-        description: "planar equations at midship, G at (x_G, 0, 0), by the origin shift 4.45",
-        components: (0..3)
-            .map(|i| Component::new(["x", "y", "yaw"][i], derived[i].clone(), book[i], yaw))
-            .collect(),
-    })
+    Ok([shifted[0].clone(), shifted[1].clone(), yaw_eliminated])
 }

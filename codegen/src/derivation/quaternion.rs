@@ -84,7 +84,7 @@ pub fn quaternion_of_euler_angles() -> Quaternion {
 }
 
 /// E = Rz(ψ)Ry(θ)Rx(φ) in half-angle atoms.
-fn body_to_space_half_angles() -> Mat3 {
+pub fn body_to_space_half_angles() -> Mat3 {
     let ((cz, sz), (cy, sy), (cx, sx)) = (
         double_angle("psi"),
         double_angle("theta"),

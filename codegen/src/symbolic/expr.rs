@@ -47,7 +47,7 @@ pub enum SymbolicError {
 pub type Rational = BigRational;
 
 /// A polynomial in atoms with rational coefficients, always in canonical form.
-#[derive(Debug, Clone, Default, PartialEq, Eq, Hash)]
+#[derive(Debug, Clone, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub struct Expr {
     terms: BTreeMap<Monomial, Rational>,
 }

@@ -1,0 +1,314 @@
+//! The builders: each family's system from the proved derivations.
+
+use super::solve::{Solution, solve_linear};
+use super::system::{ModelError, Parameter, Stage, System};
+use super::{Kinematics, Strategy, Symmetry};
+use crate::derivation::kinematics::{body_to_space, euler_rate_matrix, rotation_z};
+use crate::derivation::quaternion::{Quaternion, body_to_space_half_angles, quaternion_of_euler_angles, quaternion_rates};
+use crate::derivation::{pendulum as pendulum_eq, planar, spatial as spatial_eq};
+use crate::symbolic::{Expr, SymbolicError, Vec3};
+
+const MASS: Parameter = Parameter { symbol: "M", doc: "mass M" };
+const IZZ: Parameter = Parameter { symbol: "Izz", doc: "moment of inertia I_zz about G (4.13)" };
+
+fn symbolic(model: &str) -> impl Fn(SymbolicError) -> ModelError + '_ {
+    move |source| ModelError::Symbolic { model: model.into(), source }
+}
+
+fn symbols(names: &[&str]) -> Vec<Expr> {
+    names.iter().map(|n| Expr::symbol(n)).collect()
+}
+
+fn solved(solution: &Solution) -> Vec<Expr> {
+    solution.accelerations(&solution.rest)
+}
+
+/// Checks that the staged program composes back to the proved outputs, for the listed
+/// output indices.
+fn verify_outputs(system: &System, expected: &[(usize, Expr)]) -> Result<(), ModelError> {
+    let expanded = system.expanded_outputs().map_err(symbolic(&system.name))?;
+    for (index, wanted) in expected {
+        let (computed, state) = (&expanded[*index], system.state[*index]);
+        let residual = computed - wanted;
+        if !residual.is_zero() {
+            return Err(ModelError::Verification {
+                model: system.name.clone(),
+                what: format!("the staged rate of {state} differs from the proved form"),
+                residual: residual.to_string(),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Compound pendulum: 4.24 with an applied moment M_O about the pivot.
+pub fn pendulum() -> Result<System, ModelError> {
+    let name = "pendulum";
+    let residual = pendulum_eq::residual() - Expr::symbol("M_O");
+    let solution = solve_linear(name, &[residual], &["theta_ddot"], "inv_det")?;
+    Ok(System {
+        name: name.into(),
+        title: "Compound pendulum about a fixed horizontal axis".into(),
+        equations: vec!["4.24"],
+        parameters: vec![
+            Parameter { symbol: "I0", doc: "moment of inertia I₀ about the pivot" },
+            MASS,
+            Parameter { symbol: "g", doc: "gravitational acceleration g" },
+            Parameter { symbol: "h", doc: "distance h from the pivot to G" },
+        ],
+        reciprocals: vec![],
+        state: vec!["theta", "theta_dot"],
+        inputs: vec!["M_O"],
+        stages: vec![],
+        outputs: vec![Expr::symbol("theta_dot"), solved(&solution)[0].clone()],
+    })
+}
+
+/// (Ẋ, Ẏ) = Rz(ψ)(u, v) (4.44).
+fn track() -> [Expr; 2] {
+    let velocity = Vec3::new(Expr::symbol("u"), Expr::symbol("v"), Expr::zero());
+    let [x, y, _] = rotation_z("psi").mul_vec(&velocity).0;
+    [x, y]
+}
+
+fn planar_body_fixed(name: &str, title: &str, residuals: &[Expr; 3], equations: Vec<&'static str>, parameters: Vec<Parameter>) -> Result<System, ModelError> {
+    let solution = solve_linear(name, residuals, &["u_dot", "v_dot", "r_dot"], "inv_det")?;
+    let mut outputs = solved(&solution);
+    outputs.extend(track());
+    outputs.push(Expr::symbol("r"));
+    Ok(System {
+        name: name.into(),
+        title: title.into(),
+        equations,
+        parameters,
+        reciprocals: solution.reciprocal.into_iter().collect(),
+        state: vec!["u", "v", "r", "X", "Y", "psi"],
+        inputs: vec!["F_x", "F_y", "M_z"],
+        stages: vec![],
+        outputs,
+    })
+}
+
+/// Planar, body-fixed axes at G: 4.43 with the track 4.44.
+pub fn planar_at_g() -> Result<System, ModelError> {
+    let residuals = planar::residuals_at_g().map_err(symbolic("planar_at_g"))?;
+    planar_body_fixed("planar_at_g", "Planar motion in body axes at G", &residuals, vec!["4.43", "4.44"], vec![MASS, IZZ])
+}
+
+/// Planar, body-fixed axes at midship with G at (x_G, 0, 0): 4.46 with 4.44.
+pub fn planar_midship() -> Result<System, ModelError> {
+    let name = "planar_midship";
+    let at_g = planar::residuals_at_g().map_err(symbolic(name))?;
+    let residuals = planar::residuals_at_midship(&at_g).map_err(symbolic(name))?;
+    let x_g = Parameter { symbol: "x_G", doc: "x_G, the position of G ahead of midship (4.45)" };
+    planar_body_fixed(name, "Planar motion in body axes at midship", &residuals, vec!["4.45", "4.46", "4.44"], vec![MASS, IZZ, x_g])
+}
+
+/// Planar, space-fixed axes: 4.39.
+pub fn planar_space_fixed() -> Result<System, ModelError> {
+    let name = "planar_space_fixed";
+    let residuals = planar::space_fixed_residuals().map_err(symbolic(name))?;
+    let solution = solve_linear(name, &residuals, &["X_ddot", "Y_ddot", "r_dot"], "inv_det")?;
+    let mut outputs = symbols(&["X_dot", "Y_dot", "psi_dot"]);
+    outputs.extend(solved(&solution));
+    Ok(System {
+        name: name.into(),
+        title: "Planar motion in space-fixed axes".into(),
+        equations: vec!["4.39"],
+        parameters: vec![MASS, IZZ],
+        reciprocals: vec![],
+        state: vec!["X", "Y", "psi", "X_dot", "Y_dot", "psi_dot"],
+        inputs: vec!["F_X", "F_Y", "M_z"],
+        stages: vec![],
+        outputs,
+    })
+}
+
+fn inertia_parameters(symmetry: Symmetry) -> Vec<Parameter> {
+    let mut parameters = vec![
+        MASS,
+        Parameter { symbol: "Ixx", doc: "moment of inertia I_xx about G (4.13)" },
+        Parameter { symbol: "Iyy", doc: "moment of inertia I_yy about G (4.13)" },
+        IZZ,
+    ];
+    let ixz = Parameter { symbol: "Ixz", doc: "product of inertia I_xz = −∫zx dm (4.14)" };
+    match symmetry {
+        Symmetry::Full => parameters.extend([
+            Parameter { symbol: "Ixy", doc: "product of inertia I_xy = −∫xy dm (4.14)" },
+            Parameter { symbol: "Iyz", doc: "product of inertia I_yz = −∫yz dm (4.14)" },
+            ixz,
+        ]),
+        Symmetry::Xz => parameters.push(ixz),
+        Symmetry::Principal => {}
+    }
+    parameters
+}
+
+fn zero_products(symmetry: Symmetry) -> &'static [&'static str] {
+    match symmetry {
+        Symmetry::Full => &[],
+        Symmetry::Xz => &["Ixy", "Iyz"],
+        Symmetry::Principal => &["Ixy", "Iyz", "Ixz"],
+    }
+}
+
+/// The rotational part: stages and the three angular accelerations, by strategy.
+fn rotation(name: &str, symmetry: Symmetry, strategy: Strategy) -> Result<(Vec<Stage>, Vec<Expr>, Solution), ModelError> {
+    let err = symbolic(name);
+    let products = zero_products(symmetry);
+    let lhs = spatial_eq::euler_equations().map_err(&err)?;
+    let lhs = spatial_eq::without_products(&lhs, products).map_err(&err)?;
+    let moments = Vec3::symbols(["M_x", "M_y", "M_z"]);
+    let residuals: Vec<Expr> = (0..3).map(|i| &lhs.0[i] - &moments.0[i]).collect();
+    let solution = solve_linear(name, &residuals, &["p_dot", "q_dot", "r_dot"], "inv_det")?;
+    let (stages, rest) = match strategy {
+        Strategy::Expanded => (vec![], solution.rest.clone()),
+        Strategy::StagedBias => stage_all(&["b_x", "b_y", "b_z"], &solution.rest),
+        Strategy::StagedMomentum => momentum_stages(name, products)?,
+    };
+    let accelerations = solution.accelerations(&rest);
+    Ok((stages, accelerations, solution))
+}
+
+fn stage_all(names: &[&str], values: &[Expr]) -> (Vec<Stage>, Vec<Expr>) {
+    let stages = names.iter().zip(values).map(|(n, v)| (n.to_string(), v.clone())).collect();
+    (stages, symbols(names))
+}
+
+/// H = [I]ω, then ω × H − M: the structure of 4.50.
+fn momentum_stages(name: &str, products: &[&str]) -> Result<(Vec<Stage>, Vec<Expr>), ModelError> {
+    let zeros: Vec<(&str, Expr)> = products.iter().map(|p| (*p, Expr::zero())).collect();
+    let tensor = spatial_eq::inertia_tensor();
+    let omega = Vec3::symbols(["p", "q", "r"]);
+    let h = tensor.mul_vec(&omega).try_map(|e| e.subs_all(&zeros)).map_err(symbolic(name))?;
+    let (mut stages, h_symbols) = stage_all(&["H_x", "H_y", "H_z"], &h.0);
+    let h_vec = Vec3(h_symbols.try_into().expect("three components"));
+    let moments = Vec3::symbols(["M_x", "M_y", "M_z"]);
+    let bias = omega.cross(&h_vec).sub(&moments);
+    let (bias_stages, rest) = stage_all(&["b_x", "b_y", "b_z"], &bias.0);
+    stages.extend(bias_stages);
+    Ok((stages, rest))
+}
+
+/// Euler-angle kinematics: E·v through its nine entries (4.57), rates by 4.60 through ω in
+/// the frame before the roll, ω₃ = Rx(φ)ω: θ̇ = ω₃y, φ̇ = p + ω₃z tan θ, ψ̇ = ω₃z sec θ.
+fn euler_kinematics() -> (Vec<Stage>, Vec<Expr>) {
+    let e = body_to_space();
+    let mut stages: Vec<Stage> = Vec::new();
+    for r in 0..3 {
+        for c in 0..3 {
+            stages.push((format!("e{}{}", r + 1, c + 1), e.0[r][c].clone()));
+        }
+    }
+    let v = symbols(&["u", "v", "w"]);
+    let mut outputs: Vec<Expr> = (0..3)
+        .map(|r| (0..3).map(|c| Expr::symbol(&format!("e{}{}", r + 1, c + 1)) * &v[c]).sum())
+        .collect();
+    let (q, r) = (Expr::symbol("q"), Expr::symbol("r"));
+    let (s, c) = (Expr::sin("phi"), Expr::cos("phi"));
+    stages.push(("omega3_y".into(), &q * &c - &r * &s));
+    stages.push(("omega3_z".into(), &q * &s + &r * &c));
+    let omega3_z = Expr::symbol("omega3_z");
+    outputs.push(Expr::symbol("p") + &omega3_z * &Expr::tan("theta"));
+    outputs.push(Expr::symbol("omega3_y"));
+    outputs.push(&omega3_z * &Expr::sec("theta"));
+    (stages, outputs)
+}
+
+fn euler_kinematics_expected(name: &str) -> Result<Vec<Expr>, ModelError> {
+    let v = Vec3::symbols(["u", "v", "w"]);
+    let mut expected = body_to_space().mul_vec(&v).0.to_vec();
+    let inverse = euler_rate_matrix().inverse().map_err(symbolic(name))?;
+    expected.extend(inverse.mul_vec(&Vec3::symbols(["p", "q", "r"])).0);
+    Ok(expected)
+}
+
+/// Quaternion kinematics: v + 2(q₀t + q_v × t) with t = q_v × v, and q̇ = ½ q ⊗ (0, ω) with
+/// the half rates staged.
+fn quaternion_kinematics(name: &str) -> Result<(Vec<Stage>, Vec<Expr>), ModelError> {
+    let q_v = Vec3::symbols(["q1", "q2", "q3"]);
+    let v = Vec3::symbols(["u", "v", "w"]);
+    let (mut stages, t) = stage_all(&["t_x", "t_y", "t_z"], &q_v.cross(&v).0);
+    let t = Vec3(t.try_into().expect("three components"));
+    let s = t.scale(&Expr::symbol("q0")).add(&q_v.cross(&t));
+    let (s_stages, s) = stage_all(&["s_x", "s_y", "s_z"], &s.0);
+    stages.extend(s_stages);
+    let two = Expr::int(2);
+    let mut outputs: Vec<Expr> = (0..3).map(|i| &v.0[i] + &(&two * &s[i])).collect();
+    let half = crate::symbolic::parse("1/2").map_err(symbolic(name))?;
+    let (half_stages, half_rates) = stage_all(&["p_half", "q_half", "r_half"], &Vec3::symbols(["p", "q", "r"]).scale(&half).0);
+    stages.extend(half_stages);
+    let product = Quaternion::symbols().times(&Quaternion::pure(&Vec3(half_rates.try_into().expect("three components"))));
+    outputs.extend(product.0);
+    Ok((stages, outputs))
+}
+
+/// The quaternion position rate equals E·v for every unit quaternion: both sides are
+/// evaluated at q(φ, θ, ψ) in half angles, where |q| = 1 holds identically.
+fn verify_quaternion_position(system: &System) -> Result<(), ModelError> {
+    let err = symbolic(&system.name);
+    let q = quaternion_of_euler_angles();
+    let at_euler: Vec<(&str, Expr)> = ["q0", "q1", "q2", "q3"].into_iter().zip(q.0).collect();
+    let expanded = system.expanded_outputs().map_err(&err)?;
+    let e_v = body_to_space_half_angles().mul_vec(&Vec3::symbols(["u", "v", "w"]));
+    for i in 0..3 {
+        let residual = &expanded[6 + i].subs_all(&at_euler).map_err(&err)? - &e_v.0[i];
+        if !residual.is_zero() {
+            return Err(ModelError::Verification {
+                model: system.name.clone(),
+                what: "the quaternion position rate differs from E·v".into(),
+                residual: residual.to_string(),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Spatial 6-DOF: 4.49 and 4.51 (pruned by symmetry), with Euler or quaternion kinematics.
+pub fn spatial(symmetry: Symmetry, kinematics: Kinematics, strategy: Strategy) -> Result<System, ModelError> {
+    let model = super::Model::Spatial { symmetry, kinematics };
+    let name = model.name();
+    let err = symbolic(&name);
+    let forces = Vec3::symbols(["F_x", "F_y", "F_z"]);
+    let translation = spatial_eq::translation().sub(&forces);
+    let solution = solve_linear(&name, &translation.0, &["u_dot", "v_dot", "w_dot"], "inv_mass_det")?;
+    let mut outputs = solved(&solution);
+    let (mut stages, angular, rotation_solution) = rotation(&name, symmetry, strategy)?;
+    outputs.extend(angular);
+    let mut expected = solved(&solution);
+    expected.extend(solved(&rotation_solution));
+    let (kinematic_stages, kinematic_outputs, equations, state) = match kinematics {
+        Kinematics::Euler => {
+            let (s, o) = euler_kinematics();
+            expected.extend(euler_kinematics_expected(&name)?);
+            (s, o, vec!["4.49", "4.51", "4.57", "4.60"], vec!["phi", "theta", "psi"])
+        }
+        Kinematics::Quaternion => {
+            let (s, o) = quaternion_kinematics(&name)?;
+            (s, o, vec!["4.49", "4.51", "4.57 q", "4.60 q"], vec!["q0", "q1", "q2", "q3"])
+        }
+    };
+    stages.extend(kinematic_stages);
+    outputs.extend(kinematic_outputs);
+    let mut all_state = vec!["u", "v", "w", "p", "q", "r", "x", "y", "z"];
+    all_state.extend(state);
+    let system = System {
+        name: name.clone(),
+        title: format!("Spatial 6-DOF motion, {symmetry:?} inertia, {kinematics:?} kinematics"),
+        equations,
+        parameters: inertia_parameters(symmetry),
+        reciprocals: rotation_solution.reciprocal.into_iter().collect(),
+        state: all_state,
+        inputs: vec!["F_x", "F_y", "F_z", "M_x", "M_y", "M_z"],
+        stages,
+        outputs,
+    };
+    let mut checks: Vec<(usize, Expr)> = expected.into_iter().enumerate().collect();
+    if kinematics == Kinematics::Quaternion {
+        let rates = quaternion_rates().map_err(&err)?;
+        checks.extend((9..13).zip(rates.0));
+        verify_quaternion_position(&system)?;
+    }
+    verify_outputs(&system, &checks)?;
+    Ok(system)
+}

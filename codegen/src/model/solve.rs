@@ -1,0 +1,136 @@
+//! Solving the proved implicit forms for the accelerations.
+//!
+//! The proofs are about implicit forms, mass matrix × acceleration + bias = force. The mass
+//! matrix depends on parameters only, so it is inverted symbolically as adjugate over
+//! determinant; when the determinant is not a monomial (a full or xz-symmetric inertia tensor)
+//! its reciprocal becomes a parameter-level symbol computed once. The solution is checked by
+//! substituting it back: A·a + rest must vanish once that symbol is 1/det.
+
+use super::system::{ModelError, Reciprocal};
+use crate::symbolic::Expr;
+
+/// The solved accelerations `a = −A⁻¹ rest`, as the inverse entries and the rest terms, so
+/// that callers may expand the product or stage the rest terms.
+#[derive(Debug, Clone)]
+pub struct Solution {
+    /// Entries of A⁻¹ as parameter expressions, row-major.
+    pub inverse: Vec<Vec<Expr>>,
+    /// The residuals with the accelerations set to zero.
+    pub rest: Vec<Expr>,
+    /// The reciprocal of the determinant, if it had to be named.
+    pub reciprocal: Option<Reciprocal>,
+}
+
+impl Solution {
+    /// a_i = −Σ_j inverse_ij · rest_j, with `rest` given (as expressions or stage symbols).
+    pub fn accelerations(&self, rest: &[Expr]) -> Vec<Expr> {
+        self.inverse
+            .iter()
+            .map(|row| -row.iter().zip(rest).map(|(a, b)| a * b).sum::<Expr>())
+            .collect()
+    }
+}
+
+/// Solves `residuals = 0` for the `unknowns`, which must enter linearly with parameter-only
+/// coefficients.
+pub fn solve_linear(
+    model: &str,
+    residuals: &[Expr],
+    unknowns: &[&str],
+    reciprocal_name: &str,
+) -> Result<Solution, ModelError> {
+    let symbolic = |source| ModelError::Symbolic { model: model.into(), source };
+    let matrix: Vec<Vec<Expr>> = residuals
+        .iter()
+        .map(|r| unknowns.iter().map(|u| r.coefficient_of(u)).collect())
+        .collect();
+    let zeros: Vec<(&str, Expr)> = unknowns.iter().map(|u| (*u, Expr::zero())).collect();
+    let rest = residuals
+        .iter()
+        .map(|r| r.subs_all(&zeros))
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(symbolic)?;
+    let det = determinant(&matrix);
+    let (inverse_det, reciprocal) = match det.reciprocal() {
+        Ok(inverse) => (inverse, None),
+        Err(_) => {
+            let named = Reciprocal { symbol: reciprocal_name.into(), of: det.clone() };
+            (Expr::symbol(reciprocal_name), Some(named))
+        }
+    };
+    let adjugate = adjugate(&matrix);
+    let inverse = adjugate
+        .iter()
+        .map(|row| row.iter().map(|e| e * &inverse_det).collect())
+        .collect();
+    let solution = Solution { inverse, rest, reciprocal };
+    verify(model, &matrix, &det, &solution)?;
+    Ok(solution)
+}
+
+/// A·a + rest = 0 with a = −A⁻¹ rest: with 1/det named d, A·a + rest = (1 − det·d)·rest, so
+/// det·(A·a + rest) evaluated with d's coefficient must cancel.
+fn verify(model: &str, matrix: &[Vec<Expr>], det: &Expr, solution: &Solution) -> Result<(), ModelError> {
+    let a = solution.accelerations(&solution.rest);
+    for (row, rest) in matrix.iter().zip(&solution.rest) {
+        let lhs: Expr = row.iter().zip(&a).map(|(m, x)| m * x).sum::<Expr>() + rest;
+        let residual = match &solution.reciprocal {
+            None => lhs,
+            Some(r) => {
+                let without = lhs.subs(&r.symbol, &Expr::zero()).unwrap_or_default();
+                &without * det + lhs.coefficient_of(&r.symbol)
+            }
+        };
+        if !residual.is_zero() {
+            return Err(ModelError::Verification {
+                model: model.into(),
+                what: "the solved accelerations do not satisfy the proved equations".into(),
+                residual: residual.to_string(),
+            });
+        }
+    }
+    Ok(())
+}
+
+fn minor(m: &[Vec<Expr>], row: usize, col: usize) -> Vec<Vec<Expr>> {
+    m.iter()
+        .enumerate()
+        .filter(|(r, _)| *r != row)
+        .map(|(_, line)| {
+            line.iter()
+                .enumerate()
+                .filter(|(c, _)| *c != col)
+                .map(|(_, e)| e.clone())
+                .collect()
+        })
+        .collect()
+}
+
+/// The determinant by cofactor expansion (the systems here are at most 3×3).
+pub fn determinant(m: &[Vec<Expr>]) -> Expr {
+    match m.len() {
+        0 => Expr::int(1),
+        1 => m[0][0].clone(),
+        _ => (0..m.len())
+            .map(|c| {
+                let term = &m[0][c] * &determinant(&minor(m, 0, c));
+                if c % 2 == 0 { term } else { -term }
+            })
+            .sum(),
+    }
+}
+
+/// The adjugate (transposed cofactor matrix).
+pub fn adjugate(m: &[Vec<Expr>]) -> Vec<Vec<Expr>> {
+    let n = m.len();
+    (0..n)
+        .map(|r| {
+            (0..n)
+                .map(|c| {
+                    let cofactor = determinant(&minor(m, c, r));
+                    if (r + c) % 2 == 0 { cofactor } else { -cofactor }
+                })
+                .collect()
+        })
+        .collect()
+}

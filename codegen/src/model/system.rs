@@ -1,0 +1,94 @@
+//! A first-order system ready for emission: parameters, state, inputs, staged intermediates
+//! and one output per state (its time derivative), all as canonical expressions.
+
+use crate::symbolic::{Expr, SymbolicError};
+use thiserror::Error;
+
+/// Why a model could not be built or verified.
+#[derive(Debug, Clone, PartialEq, Eq, Error)]
+pub enum ModelError {
+    /// The symbolic engine could not perform a step.
+    #[error("model {model}: {source}")]
+    Symbolic {
+        /// The model's name.
+        model: String,
+        /// The underlying error.
+        source: SymbolicError,
+    },
+    /// A check on the solved or staged form failed: the emitted code would not be the proved
+    /// equations.
+    #[error("model {model}: {what} (residual {residual})")]
+    Verification {
+        /// The model's name.
+        model: String,
+        /// Which check failed.
+        what: String,
+        /// What was left over.
+        residual: String,
+    },
+}
+
+/// A parameter-level quantity that is not a polynomial: the reciprocal of a parameter
+/// polynomial, computed once (the determinant of a mass matrix that is not diagonal).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Reciprocal {
+    /// The symbol standing for `1 / of`.
+    pub symbol: String,
+    /// The parameter polynomial it inverts.
+    pub of: Expr,
+}
+
+/// One scalar parameter, given by the user in f64.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Parameter {
+    /// The symbol used in the equations (`Ixx`, `M`, `x_G`).
+    pub symbol: &'static str,
+    /// What it is, for the generated doc comment.
+    pub doc: &'static str,
+}
+
+/// A named intermediate computed at every call, before the outputs.
+pub type Stage = (String, Expr);
+
+/// The system `d(state)/dt = outputs(parameters, state, inputs)`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct System {
+    /// The model's name, a Rust identifier (`spatial_principal_euler`).
+    pub name: String,
+    /// A one-line title for docs.
+    pub title: String,
+    /// The chapter's equation numbers that this system implements.
+    pub equations: Vec<&'static str>,
+    /// Parameters in order.
+    pub parameters: Vec<Parameter>,
+    /// Reciprocals of parameter polynomials, computed once.
+    pub reciprocals: Vec<Reciprocal>,
+    /// State symbols in order.
+    pub state: Vec<&'static str>,
+    /// Input symbols (applied forces and moments) in order.
+    pub inputs: Vec<&'static str>,
+    /// Intermediates, each in terms of state, inputs and earlier stages.
+    pub stages: Vec<Stage>,
+    /// The derivative of each state symbol, in state order.
+    pub outputs: Vec<Expr>,
+}
+
+impl System {
+    /// The outputs with every stage substituted back: what the staged program computes.
+    pub fn expanded_outputs(&self) -> Result<Vec<Expr>, SymbolicError> {
+        let mut outputs = self.outputs.clone();
+        for (symbol, definition) in self.stages.iter().rev() {
+            outputs = outputs
+                .iter()
+                .map(|o| o.subs(symbol, definition))
+                .collect::<Result<_, _>>()?;
+        }
+        Ok(outputs)
+    }
+
+    /// True for a symbol that is a parameter or a reciprocal of parameters.
+    pub fn is_parameter(&self, symbol: &str) -> bool {
+        self.parameters.iter().any(|p| p.symbol == symbol)
+            || self.reciprocals.iter().any(|r| r.symbol == symbol)
+    }
+}
