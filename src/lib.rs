@@ -9,6 +9,7 @@
 #![deny(missing_docs)]
 
 pub mod elliptic;
+pub mod generic;
 mod inertia;
 
 pub use inertia::{InertiaError, InertiaTensor};

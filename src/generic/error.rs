@@ -1,0 +1,101 @@
+//! Why a parameter set is refused, and the checks that refuse it.
+//!
+//! Every generic model validates its `f64` parameters once, in its constructor, so that the
+//! right-hand sides never meet a NaN mass or a negative moment of inertia and never need to
+//! check anything in the hot path.
+
+use crate::InertiaError;
+use thiserror::Error;
+
+/// Why a model cannot be built from the parameters given, or why a state is outside the
+/// domain of a formulation.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum ModelError {
+    /// The mass `M` is NaN, infinite, zero or negative.
+    #[error("mass M = {value} must be finite and positive")]
+    Mass {
+        /// The value given.
+        value: f64,
+    },
+    /// A scalar parameter other than the mass breaks its requirement.
+    #[error("parameter {field} = {value} must be {requirement}")]
+    Parameter {
+        /// The parameter, named as in the chapter (`"I0"`, `"g"`, `"h"`, `"Izz"`, `"x_G"`).
+        field: &'static str,
+        /// The value given.
+        value: f64,
+        /// What it must be, e.g. `"finite and positive"`.
+        requirement: &'static str,
+    },
+    /// The inertia tensor is not that of a rigid body.
+    #[error("inertia tensor: {0}")]
+    Inertia(#[from] InertiaError),
+    /// The inertia tensor passed validation but its inverse could not be formed in floating
+    /// point (a determinant that underflows).
+    #[error("inertia tensor cannot be inverted (determinant {determinant})")]
+    SingularInertia {
+        /// The determinant of `[I]`.
+        determinant: f64,
+    },
+    /// The pitch is so close to ±90° that the Euler-angle rates of 4.60 (tan θ, sec θ) are
+    /// meaningless: the attitude must be carried by a quaternion there.
+    #[error(
+        "Euler angles are singular: |cos θ| = {cos_theta} at pitch θ = {theta} rad is below {limit}"
+    )]
+    GimbalLock {
+        /// The pitch angle θ.
+        theta: f64,
+        /// `|cos θ|`.
+        cos_theta: f64,
+        /// The smallest `|cos θ|` the caller accepts.
+        limit: f64,
+    },
+}
+
+/// Refuses a mass that is not finite and positive.
+pub(crate) fn check_mass(value: f64) -> Result<f64, ModelError> {
+    if value.is_finite() && value > 0.0 {
+        Ok(value)
+    } else {
+        Err(ModelError::Mass { value })
+    }
+}
+
+/// Refuses a parameter that is not finite and strictly positive.
+pub(crate) fn check_positive(field: &'static str, value: f64) -> Result<f64, ModelError> {
+    if value.is_finite() && value > 0.0 {
+        Ok(value)
+    } else {
+        Err(ModelError::Parameter {
+            field,
+            value,
+            requirement: "finite and positive",
+        })
+    }
+}
+
+/// Refuses a parameter that is not finite and non-negative.
+pub(crate) fn check_non_negative(field: &'static str, value: f64) -> Result<f64, ModelError> {
+    if value.is_finite() && value >= 0.0 {
+        Ok(value)
+    } else {
+        Err(ModelError::Parameter {
+            field,
+            value,
+            requirement: "finite and non-negative",
+        })
+    }
+}
+
+/// Refuses a parameter that is NaN or infinite (its sign is free).
+pub(crate) fn check_finite(field: &'static str, value: f64) -> Result<f64, ModelError> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(ModelError::Parameter {
+            field,
+            value,
+            requirement: "finite",
+        })
+    }
+}

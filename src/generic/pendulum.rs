@@ -1,0 +1,98 @@
+//! The compound pendulum of 4.24, written directly: `I₀ θ̈ = −M g h sin θ + M_applied`.
+//!
+//! State `[θ, θ̇]`. The two parameter-only coefficients, `M g h / I₀` and `1 / I₀`, are
+//! computed once in [`Pendulum::new`]; a call costs one `sin` and a few multiplications.
+
+use super::error::{ModelError, check_finite, check_mass, check_non_negative, check_positive};
+use nalgebra::{RealField, SVector, Vector2};
+
+/// Relative slack in the check `I₀ ≥ M h²`: a simple pendulum has `I₀ = M h²` exactly, and
+/// the product computed by the caller may exceed `I₀` by a few ulps.
+const STEINER_SLACK: f64 = 1e-12;
+
+/// A compound pendulum swinging about a fixed horizontal axis through the pivot O (4.24).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pendulum<T> {
+    i0: T,
+    mass: T,
+    g: T,
+    h: T,
+    /// `M g h / I₀`, the square of the small-amplitude angular frequency (4.27).
+    stiffness: T,
+    /// `1 / I₀`.
+    inv_i0: T,
+}
+
+impl<T: RealField + Copy> Pendulum<T> {
+    /// Validates the parameters once: the moment of inertia about the pivot `I₀ > 0`, the mass
+    /// `M > 0`, gravity `g` finite, the pivot-to-G distance `h ≥ 0`, and `I₀ ≥ M h²` (4.29:
+    /// the moment about G, `I_G = I₀ − M h²`, cannot be negative).
+    ///
+    /// ```
+    /// use eom::generic::Pendulum;
+    /// let p = Pendulum::<f64>::new(2.0, 3.0, 9.81, 0.5).unwrap();
+    /// let rate = p.rhs(&nalgebra::Vector2::new(0.0, 1.0), 0.0);
+    /// assert_eq!(rate, nalgebra::Vector2::new(1.0, 0.0));
+    /// assert!(Pendulum::<f64>::new(-2.0, 3.0, 9.81, 0.5).is_err());
+    /// ```
+    pub fn new(i0: f64, mass: f64, g: f64, h: f64) -> Result<Self, ModelError> {
+        let i0 = check_positive("I0", i0)?;
+        let mass = check_mass(mass)?;
+        let g = check_finite("g", g)?;
+        let h = check_non_negative("h", h)?;
+        if i0 < mass * h * h * (1.0 - STEINER_SLACK) {
+            return Err(ModelError::Parameter {
+                field: "I0",
+                value: i0,
+                requirement: "at least M h² (4.29: I_G = I0 − M h² is not negative)",
+            });
+        }
+        Ok(Self {
+            i0: nalgebra::convert(i0),
+            mass: nalgebra::convert(mass),
+            g: nalgebra::convert(g),
+            h: nalgebra::convert(h),
+            stiffness: nalgebra::convert(mass * g * h / i0),
+            inv_i0: nalgebra::convert(1.0 / i0),
+        })
+    }
+
+    /// The time derivative of `[θ, θ̇]`: `[θ̇, −(M g h / I₀) sin θ + moment / I₀]` (4.24), with
+    /// `moment` an applied moment about the pivot (positive in the sense of θ).
+    #[inline]
+    pub fn rhs(&self, state: &SVector<T, 2>, moment: T) -> SVector<T, 2> {
+        let (theta, theta_dot) = (state[0], state[1]);
+        Vector2::new(
+            theta_dot,
+            -self.stiffness * theta.sin() + moment * self.inv_i0,
+        )
+    }
+
+    /// The energy `½ I₀ θ̇² + M g h (1 − cos θ)` of 4.34–4.35, constant without an applied
+    /// moment.
+    pub fn energy(&self, state: &SVector<T, 2>) -> T {
+        let half: T = nalgebra::convert(0.5);
+        half * self.i0 * state[1] * state[1]
+            + self.mass * self.g * self.h * (T::one() - state[0].cos())
+    }
+
+    /// The moment of inertia about the pivot, `I₀`.
+    pub fn i0(&self) -> T {
+        self.i0
+    }
+
+    /// The mass `M`.
+    pub fn mass(&self) -> T {
+        self.mass
+    }
+
+    /// The acceleration of gravity `g`.
+    pub fn g(&self) -> T {
+        self.g
+    }
+
+    /// The distance `h` from the pivot to G.
+    pub fn h(&self) -> T {
+        self.h
+    }
+}
