@@ -11,5 +11,6 @@
 pub mod elliptic;
 pub mod generic;
 mod inertia;
+pub mod models;
 
 pub use inertia::{InertiaError, InertiaTensor};

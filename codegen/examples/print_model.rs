@@ -4,7 +4,9 @@ use eom_codegen::emit::generate;
 use eom_codegen::model::Model;
 
 fn main() {
-    let wanted = std::env::args().nth(1).unwrap_or_else(|| "spatial_principal_euler".into());
+    let wanted = std::env::args()
+        .nth(1)
+        .unwrap_or_else(|| "spatial_principal_euler".into());
     match Model::all().into_iter().find(|m| m.name() == wanted) {
         Some(model) => match generate(model) {
             Ok(generated) => print!("{}", generated.source),

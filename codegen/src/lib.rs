@@ -8,7 +8,7 @@
 
 pub mod check;
 pub mod derivation;
+pub mod emit;
+pub mod model;
 pub mod report;
 pub mod symbolic;
-pub mod model;
-pub mod emit;

@@ -30,6 +30,17 @@ pub enum ModelError {
     /// The inertia tensor is not that of a rigid body.
     #[error("inertia tensor: {0}")]
     Inertia(#[from] InertiaError),
+    /// A product of inertia that the model's symmetry class prunes is not zero: the pruned
+    /// equations would silently be wrong for this body.
+    #[error("product of inertia {field} = {value} must be zero for the {class} symmetry class")]
+    SymmetryClass {
+        /// The product, named as in the chapter (`"Ixy"`, `"Iyz"`, `"Ixz"`).
+        field: &'static str,
+        /// The value given.
+        value: f64,
+        /// The class that requires it to vanish.
+        class: &'static str,
+    },
     /// The inertia tensor passed validation but its inverse could not be formed in floating
     /// point (a determinant that underflows).
     #[error("inertia tensor cannot be inverted (determinant {determinant})")]

@@ -25,7 +25,7 @@
 //! is singular at pitch `θ = ±90°` (4.60 divides by `cos θ`): it does not panic there, but its
 //! rates are meaningless, so callers check with [`check_pitch`] or use the quaternion form.
 
-mod error;
+pub(crate) mod error;
 mod kinematics;
 mod midship;
 mod pendulum;

@@ -69,17 +69,27 @@ pub fn generate(model: Model) -> Result<Generated, EmitError> {
     for &strategy in model.strategies() {
         let system = model.system(strategy)?;
         let program = Program::build(&system);
-        let better = best.as_ref().is_none_or(|(_, _, p)| program.operations.cost() < p.operations.cost());
+        let better = best
+            .as_ref()
+            .is_none_or(|(_, _, p)| program.operations.cost() < p.operations.cost());
         if better {
             best = Some((strategy, system, program));
         }
     }
     let (strategy, system, program) = best.expect("every model has a strategy");
-    let source = rust::source(&system, &program, &format!("{strategy:?}")).map_err(|source| EmitError::Syntax {
-        model: system.name.clone(),
-        source,
+    let source = rust::source(&system, &program, &format!("{strategy:?}")).map_err(|source| {
+        EmitError::Syntax {
+            model: system.name.clone(),
+            source,
+        }
     })?;
-    Ok(Generated { model, name: system.name, strategy, operations: program.operations, source })
+    Ok(Generated {
+        model,
+        name: system.name,
+        strategy,
+        operations: program.operations,
+        source,
+    })
 }
 
 /// Writes `contents` to `path` unless the file already holds exactly those bytes; returns
@@ -88,7 +98,10 @@ pub fn write_if_changed(path: &Path, contents: &str) -> Result<bool, EmitError> 
     if std::fs::read(path).is_ok_and(|old| old == contents.as_bytes()) {
         return Ok(false);
     }
-    std::fs::write(path, contents).map_err(|source| EmitError::Io { path: path.to_owned(), source })?;
+    std::fs::write(path, contents).map_err(|source| EmitError::Io {
+        path: path.to_owned(),
+        source,
+    })?;
     Ok(true)
 }
 
@@ -107,7 +120,10 @@ pub fn emit_into(out_dir: &Path, models: &[Model]) -> Result<Vec<Generated>, Emi
         .iter()
         .map(|&model| {
             let generated = generate(model)?;
-            write_if_changed(&out_dir.join(format!("{}.rs", generated.name)), &generated.source)?;
+            write_if_changed(
+                &out_dir.join(format!("{}.rs", generated.name)),
+                &generated.source,
+            )?;
             Ok(generated)
         })
         .collect()

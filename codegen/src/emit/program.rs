@@ -120,7 +120,12 @@ impl Program {
     pub fn build(system: &System) -> Program {
         let mut b = Builder {
             system,
-            program: Program { coefficients: vec![], steps: vec![], outputs: vec![], operations: Operations::default() },
+            program: Program {
+                coefficients: vec![],
+                steps: vec![],
+                outputs: vec![],
+                operations: Operations::default(),
+            },
             coefficient_index: BTreeMap::new(),
             products: BTreeMap::new(),
             angles_with_sin_cos: vec![],
@@ -161,7 +166,8 @@ impl Builder<'_> {
 
     fn single_leaf(&mut self, monomial: &Monomial) -> Option<String> {
         let leaves = self.leaves(monomial);
-        (leaves.len() == 1 && monomial.factors().all(|(a, _)| self.is_runtime(a))).then(|| leaves[0].clone())
+        (leaves.len() == 1 && monomial.factors().all(|(a, _)| self.is_runtime(a)))
+            .then(|| leaves[0].clone())
     }
 
     fn sum_into(&mut self, name: String, value: &Expr) {
@@ -178,7 +184,11 @@ impl Builder<'_> {
             .collect();
         if terms.is_empty() {
             let zero = self.hoist(Expr::zero());
-            terms.push(Term { negative: false, coefficient: Some(zero), factor: None });
+            terms.push(Term {
+                negative: false,
+                coefficient: Some(zero),
+                factor: None,
+            });
         }
         self.count_sum(&terms);
         self.program.steps.push(Step::Sum { name, terms });
@@ -187,22 +197,39 @@ impl Builder<'_> {
     fn split(&self, monomial: &Monomial) -> (Monomial, Monomial) {
         let (mut runtime, mut parameter) = (Monomial::one(), Monomial::one());
         for (atom, power) in monomial.factors() {
-            let part = if self.is_runtime(atom) { &mut runtime } else { &mut parameter };
+            let part = if self.is_runtime(atom) {
+                &mut runtime
+            } else {
+                &mut parameter
+            };
             part.multiply_atom(atom.clone(), power);
         }
         (runtime, parameter)
     }
 
     fn term(&mut self, runtime: &Monomial, coefficient: &Expr) -> Term {
-        let negative = coefficient.terms().next().is_some_and(|(_, c)| c.is_negative());
-        let magnitude = if negative { -coefficient } else { coefficient.clone() };
+        let negative = coefficient
+            .terms()
+            .next()
+            .is_some_and(|(_, c)| c.is_negative());
+        let magnitude = if negative {
+            -coefficient
+        } else {
+            coefficient.clone()
+        };
         let factor = (!runtime.is_one()).then(|| self.product(runtime));
-        let unit = magnitude.as_constant().is_some_and(|c: Rational| c.is_one());
+        let unit = magnitude
+            .as_constant()
+            .is_some_and(|c: Rational| c.is_one());
         let coefficient = (!unit || factor.is_none()).then(|| self.hoist(magnitude));
         if coefficient.is_some() && factor.is_some() {
             self.program.operations.mul += 1;
         }
-        Term { negative, coefficient, factor }
+        Term {
+            negative,
+            coefficient,
+            factor,
+        }
     }
 
     fn hoist(&mut self, value: Expr) -> usize {
@@ -211,7 +238,10 @@ impl Builder<'_> {
         }
         let index = self.program.coefficients.len();
         let name = format!("k{index}");
-        self.program.coefficients.push(Coefficient { name, value: value.clone() });
+        self.program.coefficients.push(Coefficient {
+            name,
+            value: value.clone(),
+        });
         self.coefficient_index.insert(value, index);
         index
     }
@@ -262,7 +292,11 @@ impl Builder<'_> {
             }
             let name = prefix.join("_");
             self.program.operations.mul += 1;
-            self.program.steps.push(Step::Product { name: name.clone(), left: current, right: leaves[end - 1].clone() });
+            self.program.steps.push(Step::Product {
+                name: name.clone(),
+                left: current,
+                right: leaves[end - 1].clone(),
+            });
             self.products.insert(prefix, name.clone());
             current = name;
         }

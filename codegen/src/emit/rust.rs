@@ -56,11 +56,14 @@ fn parameters_struct(system: &System) -> TokenStream {
 }
 
 fn coefficients_struct(system: &System, program: &Program) -> TokenStream {
-    let fields = program.coefficients.iter().map(|Coefficient { name, value }| {
-        let name = ident(name);
-        let doc = format!(" `{value}`");
-        quote! { #[doc = #doc] pub #name: T, }
-    });
+    let fields = program
+        .coefficients
+        .iter()
+        .map(|Coefficient { name, value }| {
+            let name = ident(name);
+            let doc = format!(" `{value}`");
+            quote! { #[doc = #doc] pub #name: T, }
+        });
     let bindings = system.parameters.iter().map(|p| {
         let name = ident(&identifier(p.symbol));
         quote! { let #name = parameters.#name; }
@@ -70,11 +73,14 @@ fn coefficients_struct(system: &System, program: &Program) -> TokenStream {
         let value = f64_tokens(&r.of);
         quote! { let #name = 1.0 / (#value); }
     });
-    let values = program.coefficients.iter().map(|Coefficient { name, value }| {
-        let name = ident(name);
-        let value = f64_tokens(value);
-        quote! { #name: T::from_subset(&(#value)), }
-    });
+    let values = program
+        .coefficients
+        .iter()
+        .map(|Coefficient { name, value }| {
+            let name = ident(name);
+            let value = f64_tokens(value);
+            quote! { #name: T::from_subset(&(#value)), }
+        });
     quote! {
         /// Every parameter-only coefficient of [`rhs`], computed once from [`Parameters`].
         #[derive(Clone, Copy, Debug, PartialEq)]
@@ -93,10 +99,20 @@ fn coefficients_struct(system: &System, program: &Program) -> TokenStream {
 }
 
 fn constants(system: &System, operations: &Operations) -> TokenStream {
-    let (n, m) = (Literal::usize_unsuffixed(system.state.len()), Literal::usize_unsuffixed(system.inputs.len()));
+    let (n, m) = (
+        Literal::usize_unsuffixed(system.state.len()),
+        Literal::usize_unsuffixed(system.inputs.len()),
+    );
     let state = &system.state;
     let inputs = &system.inputs;
-    let [add, mul, div, sqrt, trig] = [operations.add, operations.mul, operations.div, operations.sqrt, operations.trig].map(Literal::u32_unsuffixed);
+    let [add, mul, div, sqrt, trig] = [
+        operations.add,
+        operations.mul,
+        operations.div,
+        operations.sqrt,
+        operations.trig,
+    ]
+    .map(Literal::u32_unsuffixed);
     quote! {
         /// The state layout: the symbol of each entry of the state array.
         pub const STATE: [&str; #n] = [#(#state),*];
@@ -111,9 +127,17 @@ fn constants(system: &System, operations: &Operations) -> TokenStream {
 fn rhs_doc(system: &System, program: &Program, strategy: &str) -> Vec<String> {
     let ops = program.operations;
     let mut doc = vec![
-        format!(" {} (equations {}).", system.title, system.equations.join(", ")),
+        format!(
+            " {} (equations {}).",
+            system.title,
+            system.equations.join(", ")
+        ),
         String::new(),
-        format!(" State: `[{}]`; inputs: `[{}]`.", system.state.join(", "), system.inputs.join(", ")),
+        format!(
+            " State: `[{}]`; inputs: `[{}]`.",
+            system.state.join(", "),
+            system.inputs.join(", ")
+        ),
         " Returns the time derivative of the state.".into(),
         String::new(),
         format!(
@@ -129,11 +153,14 @@ fn rhs_doc(system: &System, program: &Program, strategy: &str) -> Vec<String> {
 
 fn rhs_function(system: &System, program: &Program, strategy: &str) -> TokenStream {
     let doc = rhs_doc(system, program, strategy);
-    let (n, m) = (Literal::usize_unsuffixed(system.state.len()), Literal::usize_unsuffixed(system.inputs.len()));
+    let (n, m) = (
+        Literal::usize_unsuffixed(system.state.len()),
+        Literal::usize_unsuffixed(system.inputs.len()),
+    );
     let used = |name: &str| uses(program, &identifier(name));
     let state = destructure(&system.state, &used);
     let inputs = destructure(&system.inputs, &used);
-    let steps = program.steps.iter().map(step_tokens);
+    let steps = program.steps.iter().map(|step| step_tokens(program, step));
     let outputs = program.outputs.iter().map(|o| ident(o));
     quote! {
         #(#[doc = #doc])*
@@ -147,7 +174,10 @@ fn rhs_function(system: &System, program: &Program, strategy: &str) -> TokenStre
     }
 }
 
-fn destructure<'a>(symbols: &'a [&'a str], used: &'a dyn Fn(&str) -> bool) -> impl Iterator<Item = TokenStream> + 'a {
+fn destructure<'a>(
+    symbols: &'a [&'a str],
+    used: &'a dyn Fn(&str) -> bool,
+) -> impl Iterator<Item = TokenStream> + 'a {
     symbols.iter().map(move |s| {
         if used(s) {
             let name = ident(&identifier(s));
@@ -161,16 +191,29 @@ fn destructure<'a>(symbols: &'a [&'a str], used: &'a dyn Fn(&str) -> bool) -> im
 fn uses(program: &Program, var: &str) -> bool {
     program.outputs.iter().any(|o| o == var)
         || program.steps.iter().any(|step| match step {
-            Step::SinCos { angle } | Step::Secant { angle } => angle == var,
+            Step::SinCos { angle } => angle == var,
+            Step::Secant { angle } => var == format!("c_{angle}"),
             Step::Product { left, right, .. } => left == var || right == var,
             Step::Sum { terms, .. } => terms.iter().any(|t| t.factor.as_deref() == Some(var)),
         })
 }
 
-fn step_tokens(step: &Step) -> TokenStream {
+/// A binding, or `_` when the program never reads it.
+fn binding(program: &Program, name: &str) -> TokenStream {
+    if uses(program, name) {
+        let name = ident(name);
+        quote! { #name }
+    } else {
+        quote! { _ }
+    }
+}
+
+fn step_tokens(program: &Program, step: &Step) -> TokenStream {
     match step {
         Step::SinCos { angle } => {
-            let (a, s, c) = (ident(angle), ident(&format!("s_{angle}")), ident(&format!("c_{angle}")));
+            let a = ident(angle);
+            let s = binding(program, &format!("s_{angle}"));
+            let c = binding(program, &format!("c_{angle}"));
             quote! { let (#s, #c) = #a.simd_sin_cos(); }
         }
         Step::Secant { angle } => {
@@ -241,10 +284,19 @@ fn f64_tokens(e: &Expr) -> TokenStream {
 fn f64_term(monomial: &crate::symbolic::Monomial, magnitude: &Rational) -> TokenStream {
     let (mut numerator, mut denominator) = (Vec::new(), Vec::new());
     for (atom, power) in monomial.factors() {
-        let Atom::Symbol(s) = atom else { unreachable!("parameters are plain symbols") };
+        let Atom::Symbol(s) = atom else {
+            unreachable!("parameters are plain symbols")
+        };
         let name = ident(&identifier(s));
-        let side = if power > 0 { &mut numerator } else { &mut denominator };
-        side.extend(std::iter::repeat_n(quote! { #name }, power.unsigned_abs() as usize));
+        let side = if power > 0 {
+            &mut numerator
+        } else {
+            &mut denominator
+        };
+        side.extend(std::iter::repeat_n(
+            quote! { #name },
+            power.unsigned_abs() as usize,
+        ));
     }
     if !magnitude.is_one() || numerator.is_empty() {
         numerator.insert(0, rational_tokens(magnitude));
@@ -264,13 +316,10 @@ fn product(parts: Vec<TokenStream>) -> TokenStream {
     iter.fold(first, |acc, p| quote! { #acc * #p })
 }
 
+/// A rational as an f64 literal: n / d of two exactly representable integers is correctly
+/// rounded, so the literal is the nearest double to the exact value.
 fn rational_tokens(r: &Rational) -> TokenStream {
-    let float = |v: &num_bigint::BigInt| Literal::f64_unsuffixed(v.to_string().parse::<f64>().unwrap_or(f64::NAN));
-    if r.is_integer() {
-        let n = float(r.numer());
-        quote! { #n }
-    } else {
-        let (n, d) = (float(r.numer()), float(r.denom()));
-        quote! { (#n / #d) }
-    }
+    let float = |v: &num_bigint::BigInt| v.to_string().parse::<f64>().unwrap_or(f64::NAN);
+    let value = Literal::f64_unsuffixed(float(r.numer()) / float(r.denom()));
+    quote! { #value }
 }

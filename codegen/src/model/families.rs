@@ -4,15 +4,26 @@ use super::solve::{Solution, solve_linear};
 use super::system::{ModelError, Parameter, Stage, System};
 use super::{Kinematics, Strategy, Symmetry};
 use crate::derivation::kinematics::{body_to_space, euler_rate_matrix, rotation_z};
-use crate::derivation::quaternion::{Quaternion, body_to_space_half_angles, quaternion_of_euler_angles, quaternion_rates};
+use crate::derivation::quaternion::{
+    Quaternion, body_to_space_half_angles, quaternion_of_euler_angles, quaternion_rates,
+};
 use crate::derivation::{pendulum as pendulum_eq, planar, spatial as spatial_eq};
 use crate::symbolic::{Expr, SymbolicError, Vec3};
 
-const MASS: Parameter = Parameter { symbol: "M", doc: "mass M" };
-const IZZ: Parameter = Parameter { symbol: "Izz", doc: "moment of inertia I_zz about G (4.13)" };
+const MASS: Parameter = Parameter {
+    symbol: "M",
+    doc: "mass M",
+};
+const IZZ: Parameter = Parameter {
+    symbol: "Izz",
+    doc: "moment of inertia I_zz about G (4.13)",
+};
 
 fn symbolic(model: &str) -> impl Fn(SymbolicError) -> ModelError + '_ {
-    move |source| ModelError::Symbolic { model: model.into(), source }
+    move |source| ModelError::Symbolic {
+        model: model.into(),
+        source,
+    }
 }
 
 fn symbols(names: &[&str]) -> Vec<Expr> {
@@ -51,10 +62,19 @@ pub fn pendulum() -> Result<System, ModelError> {
         title: "Compound pendulum about a fixed horizontal axis".into(),
         equations: vec!["4.24"],
         parameters: vec![
-            Parameter { symbol: "I0", doc: "moment of inertia I₀ about the pivot" },
+            Parameter {
+                symbol: "I0",
+                doc: "moment of inertia I₀ about the pivot",
+            },
             MASS,
-            Parameter { symbol: "g", doc: "gravitational acceleration g" },
-            Parameter { symbol: "h", doc: "distance h from the pivot to G" },
+            Parameter {
+                symbol: "g",
+                doc: "gravitational acceleration g",
+            },
+            Parameter {
+                symbol: "h",
+                doc: "distance h from the pivot to G",
+            },
         ],
         reciprocals: vec![],
         state: vec!["theta", "theta_dot"],
@@ -71,7 +91,13 @@ fn track() -> [Expr; 2] {
     [x, y]
 }
 
-fn planar_body_fixed(name: &str, title: &str, residuals: &[Expr; 3], equations: Vec<&'static str>, parameters: Vec<Parameter>) -> Result<System, ModelError> {
+fn planar_body_fixed(
+    name: &str,
+    title: &str,
+    residuals: &[Expr; 3],
+    equations: Vec<&'static str>,
+    parameters: Vec<Parameter>,
+) -> Result<System, ModelError> {
     let solution = solve_linear(name, residuals, &["u_dot", "v_dot", "r_dot"], "inv_det")?;
     let mut outputs = solved(&solution);
     outputs.extend(track());
@@ -92,7 +118,13 @@ fn planar_body_fixed(name: &str, title: &str, residuals: &[Expr; 3], equations: 
 /// Planar, body-fixed axes at G: 4.43 with the track 4.44.
 pub fn planar_at_g() -> Result<System, ModelError> {
     let residuals = planar::residuals_at_g().map_err(symbolic("planar_at_g"))?;
-    planar_body_fixed("planar_at_g", "Planar motion in body axes at G", &residuals, vec!["4.43", "4.44"], vec![MASS, IZZ])
+    planar_body_fixed(
+        "planar_at_g",
+        "Planar motion in body axes at G",
+        &residuals,
+        vec!["4.43", "4.44"],
+        vec![MASS, IZZ],
+    )
 }
 
 /// Planar, body-fixed axes at midship with G at (x_G, 0, 0): 4.46 with 4.44.
@@ -100,8 +132,17 @@ pub fn planar_midship() -> Result<System, ModelError> {
     let name = "planar_midship";
     let at_g = planar::residuals_at_g().map_err(symbolic(name))?;
     let residuals = planar::residuals_at_midship(&at_g).map_err(symbolic(name))?;
-    let x_g = Parameter { symbol: "x_G", doc: "x_G, the position of G ahead of midship (4.45)" };
-    planar_body_fixed(name, "Planar motion in body axes at midship", &residuals, vec!["4.45", "4.46", "4.44"], vec![MASS, IZZ, x_g])
+    let x_g = Parameter {
+        symbol: "x_G",
+        doc: "x_G, the position of G ahead of midship (4.45)",
+    };
+    planar_body_fixed(
+        name,
+        "Planar motion in body axes at midship",
+        &residuals,
+        vec!["4.45", "4.46", "4.44"],
+        vec![MASS, IZZ, x_g],
+    )
 }
 
 /// Planar, space-fixed axes: 4.39.
@@ -127,15 +168,30 @@ pub fn planar_space_fixed() -> Result<System, ModelError> {
 fn inertia_parameters(symmetry: Symmetry) -> Vec<Parameter> {
     let mut parameters = vec![
         MASS,
-        Parameter { symbol: "Ixx", doc: "moment of inertia I_xx about G (4.13)" },
-        Parameter { symbol: "Iyy", doc: "moment of inertia I_yy about G (4.13)" },
+        Parameter {
+            symbol: "Ixx",
+            doc: "moment of inertia I_xx about G (4.13)",
+        },
+        Parameter {
+            symbol: "Iyy",
+            doc: "moment of inertia I_yy about G (4.13)",
+        },
         IZZ,
     ];
-    let ixz = Parameter { symbol: "Ixz", doc: "product of inertia I_xz = −∫zx dm (4.14)" };
+    let ixz = Parameter {
+        symbol: "Ixz",
+        doc: "product of inertia I_xz = −∫zx dm (4.14)",
+    };
     match symmetry {
         Symmetry::Full => parameters.extend([
-            Parameter { symbol: "Ixy", doc: "product of inertia I_xy = −∫xy dm (4.14)" },
-            Parameter { symbol: "Iyz", doc: "product of inertia I_yz = −∫yz dm (4.14)" },
+            Parameter {
+                symbol: "Ixy",
+                doc: "product of inertia I_xy = −∫xy dm (4.14)",
+            },
+            Parameter {
+                symbol: "Iyz",
+                doc: "product of inertia I_yz = −∫yz dm (4.14)",
+            },
             ixz,
         ]),
         Symmetry::Xz => parameters.push(ixz),
@@ -153,7 +209,11 @@ fn zero_products(symmetry: Symmetry) -> &'static [&'static str] {
 }
 
 /// The rotational part: stages and the three angular accelerations, by strategy.
-fn rotation(name: &str, symmetry: Symmetry, strategy: Strategy) -> Result<(Vec<Stage>, Vec<Expr>, Solution), ModelError> {
+fn rotation(
+    name: &str,
+    symmetry: Symmetry,
+    strategy: Strategy,
+) -> Result<(Vec<Stage>, Vec<Expr>, Solution), ModelError> {
     let err = symbolic(name);
     let products = zero_products(symmetry);
     let lhs = spatial_eq::euler_equations().map_err(&err)?;
@@ -171,7 +231,11 @@ fn rotation(name: &str, symmetry: Symmetry, strategy: Strategy) -> Result<(Vec<S
 }
 
 fn stage_all(names: &[&str], values: &[Expr]) -> (Vec<Stage>, Vec<Expr>) {
-    let stages = names.iter().zip(values).map(|(n, v)| (n.to_string(), v.clone())).collect();
+    let stages = names
+        .iter()
+        .zip(values)
+        .map(|(n, v)| (n.to_string(), v.clone()))
+        .collect();
     (stages, symbols(names))
 }
 
@@ -180,7 +244,10 @@ fn momentum_stages(name: &str, products: &[&str]) -> Result<(Vec<Stage>, Vec<Exp
     let zeros: Vec<(&str, Expr)> = products.iter().map(|p| (*p, Expr::zero())).collect();
     let tensor = spatial_eq::inertia_tensor();
     let omega = Vec3::symbols(["p", "q", "r"]);
-    let h = tensor.mul_vec(&omega).try_map(|e| e.subs_all(&zeros)).map_err(symbolic(name))?;
+    let h = tensor
+        .mul_vec(&omega)
+        .try_map(|e| e.subs_all(&zeros))
+        .map_err(symbolic(name))?;
     let (mut stages, h_symbols) = stage_all(&["H_x", "H_y", "H_z"], &h.0);
     let h_vec = Vec3(h_symbols.try_into().expect("three components"));
     let moments = Vec3::symbols(["M_x", "M_y", "M_z"]);
@@ -202,7 +269,11 @@ fn euler_kinematics() -> (Vec<Stage>, Vec<Expr>) {
     }
     let v = symbols(&["u", "v", "w"]);
     let mut outputs: Vec<Expr> = (0..3)
-        .map(|r| (0..3).map(|c| Expr::symbol(&format!("e{}{}", r + 1, c + 1)) * &v[c]).sum())
+        .map(|r| {
+            (0..3)
+                .map(|c| Expr::symbol(&format!("e{}{}", r + 1, c + 1)) * &v[c])
+                .sum()
+        })
         .collect();
     let (q, r) = (Expr::symbol("q"), Expr::symbol("r"));
     let (s, c) = (Expr::sin("phi"), Expr::cos("phi"));
@@ -236,9 +307,14 @@ fn quaternion_kinematics(name: &str) -> Result<(Vec<Stage>, Vec<Expr>), ModelErr
     let two = Expr::int(2);
     let mut outputs: Vec<Expr> = (0..3).map(|i| &v.0[i] + &(&two * &s[i])).collect();
     let half = crate::symbolic::parse("1/2").map_err(symbolic(name))?;
-    let (half_stages, half_rates) = stage_all(&["p_half", "q_half", "r_half"], &Vec3::symbols(["p", "q", "r"]).scale(&half).0);
+    let (half_stages, half_rates) = stage_all(
+        &["p_half", "q_half", "r_half"],
+        &Vec3::symbols(["p", "q", "r"]).scale(&half).0,
+    );
     stages.extend(half_stages);
-    let product = Quaternion::symbols().times(&Quaternion::pure(&Vec3(half_rates.try_into().expect("three components"))));
+    let product = Quaternion::symbols().times(&Quaternion::pure(&Vec3(
+        half_rates.try_into().expect("three components"),
+    )));
     outputs.extend(product.0);
     Ok((stages, outputs))
 }
@@ -265,13 +341,25 @@ fn verify_quaternion_position(system: &System) -> Result<(), ModelError> {
 }
 
 /// Spatial 6-DOF: 4.49 and 4.51 (pruned by symmetry), with Euler or quaternion kinematics.
-pub fn spatial(symmetry: Symmetry, kinematics: Kinematics, strategy: Strategy) -> Result<System, ModelError> {
-    let model = super::Model::Spatial { symmetry, kinematics };
+pub fn spatial(
+    symmetry: Symmetry,
+    kinematics: Kinematics,
+    strategy: Strategy,
+) -> Result<System, ModelError> {
+    let model = super::Model::Spatial {
+        symmetry,
+        kinematics,
+    };
     let name = model.name();
     let err = symbolic(&name);
     let forces = Vec3::symbols(["F_x", "F_y", "F_z"]);
     let translation = spatial_eq::translation().sub(&forces);
-    let solution = solve_linear(&name, &translation.0, &["u_dot", "v_dot", "w_dot"], "inv_mass_det")?;
+    let solution = solve_linear(
+        &name,
+        &translation.0,
+        &["u_dot", "v_dot", "w_dot"],
+        "inv_mass_det",
+    )?;
     let mut outputs = solved(&solution);
     let (mut stages, angular, rotation_solution) = rotation(&name, symmetry, strategy)?;
     outputs.extend(angular);
@@ -281,11 +369,21 @@ pub fn spatial(symmetry: Symmetry, kinematics: Kinematics, strategy: Strategy) -
         Kinematics::Euler => {
             let (s, o) = euler_kinematics();
             expected.extend(euler_kinematics_expected(&name)?);
-            (s, o, vec!["4.49", "4.51", "4.57", "4.60"], vec!["phi", "theta", "psi"])
+            (
+                s,
+                o,
+                vec!["4.49", "4.51", "4.57", "4.60"],
+                vec!["phi", "theta", "psi"],
+            )
         }
         Kinematics::Quaternion => {
             let (s, o) = quaternion_kinematics(&name)?;
-            (s, o, vec!["4.49", "4.51", "4.57 q", "4.60 q"], vec!["q0", "q1", "q2", "q3"])
+            (
+                s,
+                o,
+                vec!["4.49", "4.51", "4.57 q", "4.60 q"],
+                vec!["q0", "q1", "q2", "q3"],
+            )
         }
     };
     stages.extend(kinematic_stages);

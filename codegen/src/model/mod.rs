@@ -46,7 +46,11 @@ pub enum Strategy {
 
 impl Strategy {
     /// All strategies, in the order ties are broken.
-    pub const ALL: [Strategy; 3] = [Strategy::Expanded, Strategy::StagedBias, Strategy::StagedMomentum];
+    pub const ALL: [Strategy; 3] = [
+        Strategy::Expanded,
+        Strategy::StagedBias,
+        Strategy::StagedMomentum,
+    ];
 }
 
 /// A model family and its options.
@@ -72,10 +76,18 @@ pub enum Model {
 impl Model {
     /// Every variant `eom` ships, in a fixed order.
     pub fn all() -> Vec<Model> {
-        let mut all = vec![Model::Pendulum, Model::PlanarAtG, Model::PlanarMidship, Model::PlanarSpaceFixed];
+        let mut all = vec![
+            Model::Pendulum,
+            Model::PlanarAtG,
+            Model::PlanarMidship,
+            Model::PlanarSpaceFixed,
+        ];
         for symmetry in [Symmetry::Full, Symmetry::Xz, Symmetry::Principal] {
             for kinematics in [Kinematics::Euler, Kinematics::Quaternion] {
-                all.push(Model::Spatial { symmetry, kinematics });
+                all.push(Model::Spatial {
+                    symmetry,
+                    kinematics,
+                });
             }
         }
         all
@@ -88,7 +100,10 @@ impl Model {
             Model::PlanarAtG => "planar_at_g".into(),
             Model::PlanarMidship => "planar_midship".into(),
             Model::PlanarSpaceFixed => "planar_space_fixed".into(),
-            Model::Spatial { symmetry, kinematics } => {
+            Model::Spatial {
+                symmetry,
+                kinematics,
+            } => {
                 let s = match symmetry {
                     Symmetry::Full => "full",
                     Symmetry::Xz => "xz",
@@ -118,7 +133,10 @@ impl Model {
             Model::PlanarAtG => families::planar_at_g(),
             Model::PlanarMidship => families::planar_midship(),
             Model::PlanarSpaceFixed => families::planar_space_fixed(),
-            Model::Spatial { symmetry, kinematics } => families::spatial(symmetry, kinematics, strategy),
+            Model::Spatial {
+                symmetry,
+                kinematics,
+            } => families::spatial(symmetry, kinematics, strategy),
         }
     }
 }

@@ -39,7 +39,10 @@ pub fn solve_linear(
     unknowns: &[&str],
     reciprocal_name: &str,
 ) -> Result<Solution, ModelError> {
-    let symbolic = |source| ModelError::Symbolic { model: model.into(), source };
+    let symbolic = |source| ModelError::Symbolic {
+        model: model.into(),
+        source,
+    };
     let matrix: Vec<Vec<Expr>> = residuals
         .iter()
         .map(|r| unknowns.iter().map(|u| r.coefficient_of(u)).collect())
@@ -54,7 +57,10 @@ pub fn solve_linear(
     let (inverse_det, reciprocal) = match det.reciprocal() {
         Ok(inverse) => (inverse, None),
         Err(_) => {
-            let named = Reciprocal { symbol: reciprocal_name.into(), of: det.clone() };
+            let named = Reciprocal {
+                symbol: reciprocal_name.into(),
+                of: det.clone(),
+            };
             (Expr::symbol(reciprocal_name), Some(named))
         }
     };
@@ -63,14 +69,23 @@ pub fn solve_linear(
         .iter()
         .map(|row| row.iter().map(|e| e * &inverse_det).collect())
         .collect();
-    let solution = Solution { inverse, rest, reciprocal };
+    let solution = Solution {
+        inverse,
+        rest,
+        reciprocal,
+    };
     verify(model, &matrix, &det, &solution)?;
     Ok(solution)
 }
 
 /// A·a + rest = 0 with a = −A⁻¹ rest: with 1/det named d, A·a + rest = (1 − det·d)·rest, so
 /// det·(A·a + rest) evaluated with d's coefficient must cancel.
-fn verify(model: &str, matrix: &[Vec<Expr>], det: &Expr, solution: &Solution) -> Result<(), ModelError> {
+fn verify(
+    model: &str,
+    matrix: &[Vec<Expr>],
+    det: &Expr,
+    solution: &Solution,
+) -> Result<(), ModelError> {
     let a = solution.accelerations(&solution.rest);
     for (row, rest) in matrix.iter().zip(&solution.rest) {
         let lhs: Expr = row.iter().zip(&a).map(|(m, x)| m * x).sum::<Expr>() + rest;
@@ -128,7 +143,11 @@ pub fn adjugate(m: &[Vec<Expr>]) -> Vec<Vec<Expr>> {
             (0..n)
                 .map(|c| {
                     let cofactor = determinant(&minor(m, c, r));
-                    if (r + c) % 2 == 0 { cofactor } else { -cofactor }
+                    if (r + c) % 2 == 0 {
+                        cofactor
+                    } else {
+                        -cofactor
+                    }
                 })
                 .collect()
         })
