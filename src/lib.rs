@@ -9,6 +9,9 @@
 #![deny(missing_docs)]
 
 pub mod elliptic;
+pub mod energy;
 mod inertia;
+pub mod mass;
+pub mod swing;
 
 pub use inertia::{InertiaError, InertiaTensor};
