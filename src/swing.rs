@@ -383,9 +383,12 @@ fn least_squares_slope(values: &[f64]) -> f64 {
     let n = values.len() as f64;
     let mean_index = 0.5 * (n - 1.0);
     let mean_value = values.iter().sum::<f64>() / n;
-    let (covariance, variance) = values.iter().enumerate().fold((0.0, 0.0), |(c, v), (i, y)| {
-        let di = i as f64 - mean_index;
-        (c + di * (y - mean_value), v + di * di)
-    });
+    let (covariance, variance) = values
+        .iter()
+        .enumerate()
+        .fold((0.0, 0.0), |(c, v), (i, y)| {
+            let di = i as f64 - mean_index;
+            (c + di * (y - mean_value), v + di * di)
+        });
     covariance / variance
 }

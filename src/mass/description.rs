@@ -248,7 +248,10 @@ impl BodyFile {
 }
 
 fn resolve(index: usize, value: toml::Value, base: &Path) -> Result<BodyPart, BodyFileError> {
-    let label = |name: &Option<String>| name.as_ref().map_or(String::new(), |n| format!(" (\"{n}\")"));
+    let label = |name: &Option<String>| {
+        name.as_ref()
+            .map_or(String::new(), |n| format!(" (\"{n}\")"))
+    };
     let raw = RawPart::deserialize(value).map_err(|e| BodyFileError::Part {
         index,
         label: String::new(),
@@ -263,7 +266,11 @@ fn resolve(index: usize, value: toml::Value, base: &Path) -> Result<BodyPart, Bo
 
 fn part(raw: &RawPart, base: &Path) -> Result<BodyPart, PartError> {
     let kind = raw.kind;
-    if let Some(field) = raw.given().into_iter().find(|f| !kind.accepts().contains(f)) {
+    if let Some(field) = raw
+        .given()
+        .into_iter()
+        .find(|f| !kind.accepts().contains(f))
+    {
         return Err(PartError::NotApplicable {
             kind: kind.name(),
             field,

@@ -189,11 +189,16 @@ impl Mesh {
             MeshMass::Total(total) => positive("mass", total)? / moments.volume,
         };
         let centre = moments.first / moments.volume;
-        let second_about_g = (moments.second - centre * centre.transpose() * moments.volume) * density;
+        let second_about_g =
+            (moments.second - centre * centre.transpose() * moments.volume) * density;
         let inertia = Matrix3::identity() * second_about_g.trace() - second_about_g;
         let inertia = InertiaTensor::from_matrix(inertia).map_err(MassError::from)?;
         let origin = self.reference_point();
-        Ok(MassProperties::new(density * moments.volume, origin + centre, inertia)?)
+        Ok(MassProperties::new(
+            density * moments.volume,
+            origin + centre,
+            inertia,
+        )?)
     }
 
     /// The mean of the vertices: integrating about a point inside the body rather than the
@@ -216,7 +221,8 @@ impl Mesh {
             let [a, b, c] = t.map(|i| self.vertices[i] - origin);
             let volume = a.dot(&b.cross(&c)) / 6.0;
             let s = a + b + c;
-            let outer = a * a.transpose() + b * b.transpose() + c * c.transpose() + s * s.transpose();
+            let outer =
+                a * a.transpose() + b * b.transpose() + c * c.transpose() + s * s.transpose();
             sum.volume += volume;
             sum.first += s * (volume / 4.0);
             sum.second += outer * (volume / 20.0);
@@ -236,7 +242,10 @@ impl Mesh {
 }
 
 fn check_vertices(vertices: &[Vector3<f64>]) -> Result<(), MeshError> {
-    match vertices.iter().position(|v| !v.iter().all(|x| x.is_finite())) {
+    match vertices
+        .iter()
+        .position(|v| !v.iter().all(|x| x.is_finite()))
+    {
         Some(vertex) => Err(MeshError::NotFiniteVertex {
             vertex,
             position: vertices[vertex].into(),

@@ -39,7 +39,11 @@ pub fn solid_box(mass: f64, size: [f64; 3]) -> Result<MassProperties, MassError>
     let m = mass / 12.0;
     centred(
         mass,
-        [m * (b * b + d * d), m * (l * l + d * d), m * (l * l + b * b)],
+        [
+            m * (b * b + d * d),
+            m * (l * l + d * d),
+            m * (l * l + b * b),
+        ],
     )
 }
 
@@ -52,7 +56,11 @@ pub fn ellipsoid(mass: f64, size: [f64; 3]) -> Result<MassProperties, MassError>
     let m = mass / 5.0;
     centred(
         mass,
-        [m * (b * b + c * c), m * (c * c + a * a), m * (a * a + b * b)],
+        [
+            m * (b * b + c * c),
+            m * (c * c + a * a),
+            m * (a * a + b * b),
+        ],
     )
 }
 
