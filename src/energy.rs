@@ -48,3 +48,56 @@ pub fn pendulum_potential_energy(mass: f64, gravity: f64, pivot_to_cg: f64, angl
     let half = (0.5 * angle).sin();
     2.0 * mass * gravity * pivot_to_cg * half * half
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mass::Composite;
+
+    #[test]
+    fn kinetic_energy_4_32_equals_the_sum_over_particles_4_30() {
+        // T = ½ Σ m |v_G + ω × r|² over point masses (r from G) must equal 4.32 with the
+        // tensor built from the same points: the cross term vanishes because Σ m r = 0.
+        let points = [
+            (1.0, Vector3::new(1.0, 2.0, 3.0)),
+            (2.0, Vector3::new(-1.0, 0.5, 0.0)),
+            (0.5, Vector3::new(0.0, -2.0, 1.0)),
+            (3.0, Vector3::new(2.0, 1.0, -1.5)),
+        ];
+        let mut body = Composite::new();
+        for &(m, r) in &points {
+            body.add_point(m, r).unwrap();
+        }
+        let body = body.build().unwrap();
+        let g = body.centre_of_gravity();
+        let (v_g, omega) = (Vector3::new(0.3, -1.2, 0.7), Vector3::new(0.9, 0.4, -1.1));
+        let particles: f64 = points
+            .iter()
+            .map(|&(m, r)| 0.5 * m * (v_g + omega.cross(&(r - g))).norm_squared())
+            .sum();
+        let formula = kinetic_energy(body.mass(), &v_g, &body.inertia(), &omega);
+        // Relative 1e-14: two sums of a dozen terms of order ten.
+        assert!((formula - particles).abs() < 1e-14 * particles);
+    }
+
+    #[test]
+    fn gravity_potential_rises_against_gravity() {
+        let g = Vector3::new(0.0, 0.0, 9.81); // z down, as in ships' axes
+        let low = gravity_potential_energy(2.0, &g, &Vector3::new(0.0, 0.0, 1.0));
+        let high = gravity_potential_energy(2.0, &g, &Vector3::new(0.0, 0.0, -1.0));
+        assert_eq!(high - low, 2.0 * 9.81 * 2.0);
+    }
+
+    #[test]
+    fn pendulum_potential_matches_4_34_as_written() {
+        for angle in [0.1_f64, 1.0, 2.5, -3.0] {
+            let direct = 3.0 * 9.81 * 0.4 * (1.0 - angle.cos());
+            let computed = pendulum_potential_energy(3.0, 9.81, 0.4, angle);
+            // The direct form loses the ulp of cos θ to cancellation: relative ε / (1 − cos θ),
+            // 2e-14 at θ = 0.1; allow four of them.
+            let tolerance = 4.0 * f64::EPSILON / (1.0 - angle.cos());
+            assert!((computed - direct).abs() < tolerance * direct);
+        }
+        assert_eq!(pendulum_kinetic_energy(4.0, 0.5), 0.5);
+    }
+}

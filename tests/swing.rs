@@ -43,7 +43,9 @@ fn small_amplitude_period_inverts_4_27_through_4_28_and_4_29() {
 fn period_factor_matches_its_series_at_small_amplitude() {
     // T/T₀ = 1 + θ²/16 + 11θ⁴/3072 + 173θ⁶/737280 + O(θ⁸); at θ = 0.1 the next term is 2e-13.
     for theta in [0.01_f64, 0.05, 0.1] {
-        let series = 1.0 + theta.powi(2) / 16.0 + 11.0 * theta.powi(4) / 3072.0
+        let series = 1.0
+            + theta.powi(2) / 16.0
+            + 11.0 * theta.powi(4) / 3072.0
             + 173.0 * theta.powi(6) / 737_280.0;
         assert!((period_factor(theta).unwrap() - series).abs() < 1e-12);
     }
@@ -112,7 +114,9 @@ fn energy_is_conserved_along_the_exact_swing_4_33_to_4_35() {
 fn sampled_swing(amplitude: f64) -> (Vec<f64>, Vec<f64>, f64) {
     let swing = pendulum().released_from(amplitude).unwrap();
     let period = swing.period();
-    let times: Vec<f64> = (0..1237).map(|i| i as f64 * 8.3 * period / 1236.0).collect();
+    let times: Vec<f64> = (0..1237)
+        .map(|i| i as f64 * 8.3 * period / 1236.0)
+        .collect();
     let angles = times.iter().map(|&t| swing.angle(t)).collect();
     (times, angles, period)
 }
@@ -135,7 +139,10 @@ fn swing_test_recovers_kappa_g_from_a_sampled_swing_with_the_amplitude_correctio
     assert!(error < 1e-6, "κ_G relative error {error}");
     // Without the correction κ is too large by T/T₀ − 1 ≈ θ₀²/16 ≈ 0.43 %, and κ_G by that
     // times κ²/κ_G² ≈ 1.23: more than a thousand times the tolerance above.
-    assert!(error_uncorrected > 1e-3, "uncorrected error {error_uncorrected}");
+    assert!(
+        error_uncorrected > 1e-3,
+        "uncorrected error {error_uncorrected}"
+    );
 }
 
 #[test]
@@ -146,7 +153,10 @@ fn measured_period_matches_the_exact_period() {
         // Relative 1e-8: a hundredth of what the 1e-6 target on κ_G needs (κ_G's relative
         // error is κ²/κ_G² ≈ 1.2 times the period's). Observed: 2e-10 at 5°, 1e-9 at 150°,
         // with 150 samples per period and cubic inverse interpolation of each crossing.
-        assert!((measured - exact_period).abs() < 1e-8 * exact_period, "{degrees}°");
+        assert!(
+            (measured - exact_period).abs() < 1e-8 * exact_period,
+            "{degrees}°"
+        );
     }
 }
 
@@ -155,20 +165,49 @@ fn bad_swing_arguments_name_the_fault() {
     let cases = [
         (swing_test(-2.0, 0.0), "period"),
         (swing_test(f64::NAN, 0.0), "period"),
-        (SwingTest { pivot_to_cg: 0.0, ..swing_test(2.0, 0.0) }, "pivot_to_cg"),
-        (SwingTest { mass: -1.0, ..swing_test(2.0, 0.0) }, "mass"),
-        (SwingTest { gravity: f64::INFINITY, ..swing_test(2.0, 0.0) }, "gravity"),
+        (
+            SwingTest {
+                pivot_to_cg: 0.0,
+                ..swing_test(2.0, 0.0)
+            },
+            "pivot_to_cg",
+        ),
+        (
+            SwingTest {
+                mass: -1.0,
+                ..swing_test(2.0, 0.0)
+            },
+            "mass",
+        ),
+        (
+            SwingTest {
+                gravity: f64::INFINITY,
+                ..swing_test(2.0, 0.0)
+            },
+            "gravity",
+        ),
     ];
     for (test, field) in cases {
         let err = test.solve().unwrap_err();
-        assert!(matches!(err, SwingError::NotPositive { field: f, .. } if f == field), "{err}");
+        assert!(
+            matches!(err, SwingError::NotPositive { field: f, .. } if f == field),
+            "{err}"
+        );
     }
     for degrees in [180.0, 200.0, -5.0, f64::NAN] {
-        let err = swing_test(2.0, f64::to_radians(degrees)).solve().unwrap_err();
-        assert!(matches!(err, SwingError::AmplitudeOutOfRange { .. }), "{err}");
+        let err = swing_test(2.0, f64::to_radians(degrees))
+            .solve()
+            .unwrap_err();
+        assert!(
+            matches!(err, SwingError::AmplitudeOutOfRange { .. }),
+            "{err}"
+        );
     }
     // κ = (0.1 / 2π) √(g · 1) ≈ 0.05 m < h = 1 m: κ_G would be imaginary.
-    let short = SwingTest { pivot_to_cg: 1.0, ..swing_test(0.1, 0.0) };
+    let short = SwingTest {
+        pivot_to_cg: 1.0,
+        ..swing_test(0.1, 0.0)
+    };
     let err = short.solve().unwrap_err();
     assert!(matches!(err, SwingError::ImaginaryGyradius { .. }));
     assert!(err.to_string().contains("imaginary"), "{err}");
@@ -178,11 +217,17 @@ fn bad_swing_arguments_name_the_fault() {
 fn bad_samples_name_the_fault() {
     let t = [0.0, 1.0, 2.0, 3.0];
     let a = [-1.0, 1.0, -1.0, 1.0];
-    assert!(matches!(measure_period(&t, &a[..3]), Err(SwingError::LengthMismatch { .. })));
+    assert!(matches!(
+        measure_period(&t, &a[..3]),
+        Err(SwingError::LengthMismatch { .. })
+    ));
     let nan = [-1.0, f64::NAN, -1.0, 1.0];
     assert!(matches!(
         measure_period(&t, &nan),
-        Err(SwingError::NotFiniteSample { field: "angles", index: 1 })
+        Err(SwingError::NotFiniteSample {
+            field: "angles",
+            index: 1
+        })
     ));
     let backwards = [0.0, 1.0, 1.0, 3.0];
     assert!(matches!(
@@ -190,7 +235,10 @@ fn bad_samples_name_the_fault() {
         Err(SwingError::TimesNotIncreasing { index: 2 })
     ));
     let once = [-1.0, 1.0, 1.0, 1.0];
-    assert!(matches!(measure_period(&t, &once), Err(SwingError::TooFewCrossings { found: 1 })));
+    assert!(matches!(
+        measure_period(&t, &once),
+        Err(SwingError::TooFewCrossings { found: 1 })
+    ));
     assert_eq!(measure_period(&t, &a).unwrap(), 2.0);
 }
 
@@ -200,6 +248,12 @@ fn impossible_pendulums_are_refused() {
     let err = CompoundPendulum::new(1.0, 10.0, 1.0, STANDARD_GRAVITY).unwrap_err();
     assert!(matches!(err, SwingError::ImaginaryGyradius { .. }));
     let err = CompoundPendulum::new(1.0, 1.0, 0.1, 0.0).unwrap_err();
-    assert!(matches!(err, SwingError::NotPositive { field: "gravity", .. }));
+    assert!(matches!(
+        err,
+        SwingError::NotPositive {
+            field: "gravity",
+            ..
+        }
+    ));
     assert!(pendulum().released_from(std::f64::consts::PI).is_err());
 }

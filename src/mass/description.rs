@@ -29,28 +29,28 @@ use thiserror::Error;
 #[derive(Debug, Error)]
 pub enum BodyFileError {
     /// The file could not be read.
-    #[error("cannot read body file {path}: {source}")]
+    #[error("cannot read body file {path}: {error}")]
     Read {
         /// The file.
         path: PathBuf,
         /// What the system said.
-        source: std::io::Error,
+        error: std::io::Error,
     },
     /// The file is not valid TOML, or has an unknown top-level key.
     #[error("body file: {0}")]
-    Syntax(#[from] toml::de::Error),
+    Syntax(toml::de::Error),
     /// The file has no `[[part]]`.
     #[error("body file has no [[part]]")]
     NoParts,
     /// One part is wrong.
-    #[error("part {index}{label}: {source}")]
+    #[error("part {index}{label}: {error}")]
     Part {
         /// The part's number, from 1, in the order of the file.
         index: usize,
         /// ` ("name")` if the part has a name, else empty.
         label: String,
-        /// What is wrong with it.
-        source: PartError,
+        /// What is wrong with it (boxed: TOML errors are large, and errors are rare).
+        error: Box<PartError>,
     },
     /// Every part is valid but together they are not a rigid body (for instance, point masses
     /// on one line).
@@ -62,7 +62,7 @@ pub enum BodyFileError {
 #[derive(Debug, Error)]
 pub enum PartError {
     /// An unknown key, a key of the wrong type, or an unknown kind.
-    #[error("{0}")]
+    #[error("{}", one_line(.0))]
     Field(toml::de::Error),
     /// A key that this kind needs is missing.
     #[error("a {kind} needs `{field}`")]
@@ -87,13 +87,19 @@ pub enum PartError {
     #[error(transparent)]
     Mass(#[from] MassError),
     /// The mesh file is not a closed, oriented solid.
-    #[error("mesh {path}: {source}")]
+    #[error("mesh {path}: {error}")]
     Mesh {
         /// The STL file.
         path: PathBuf,
         /// What is wrong with it.
-        source: MeshError,
+        error: MeshError,
     },
+}
+
+/// serde's messages name the key on a line of their own (`…\nin `mass``); one line reads
+/// better after "part 2: ".
+fn one_line(error: &toml::de::Error) -> String {
+    error.to_string().trim().replace('\n', " ")
 }
 
 #[derive(Deserialize)]
@@ -205,16 +211,16 @@ pub struct BodyFile {
 impl BodyFile {
     /// Reads and checks a body file; meshes are loaded relative to its folder.
     pub fn load(path: &Path) -> Result<Self, BodyFileError> {
-        let text = std::fs::read_to_string(path).map_err(|source| BodyFileError::Read {
+        let text = std::fs::read_to_string(path).map_err(|error| BodyFileError::Read {
             path: path.to_path_buf(),
-            source,
+            error,
         })?;
         Self::parse(&text, path.parent().unwrap_or(Path::new(".")))
     }
 
     /// Parses and checks a body description; mesh paths are relative to `base`.
     pub fn parse(text: &str, base: &Path) -> Result<Self, BodyFileError> {
-        let raw: RawFile = toml::from_str(text)?;
+        let raw: RawFile = toml::from_str(text).map_err(BodyFileError::Syntax)?;
         if raw.part.is_empty() {
             return Err(BodyFileError::NoParts);
         }
@@ -255,12 +261,12 @@ fn resolve(index: usize, value: toml::Value, base: &Path) -> Result<BodyPart, Bo
     let raw = RawPart::deserialize(value).map_err(|e| BodyFileError::Part {
         index,
         label: String::new(),
-        source: PartError::Field(e),
+        error: Box::new(PartError::Field(e)),
     })?;
-    part(&raw, base).map_err(|source| BodyFileError::Part {
+    part(&raw, base).map_err(|error| BodyFileError::Part {
         index,
         label: label(&raw.name),
-        source,
+        error: Box::new(error),
     })
 }
 
@@ -331,9 +337,9 @@ fn mesh_solid(raw: &RawPart, base: &Path) -> Result<MassProperties, PartError> {
         (None, Some(density)) => MeshMass::Density(density),
         _ => return Err(PartError::MassOrDensity),
     };
-    let mesh_error = |source| PartError::Mesh {
+    let mesh_error = |error| PartError::Mesh {
         path: path.clone(),
-        source,
+        error,
     };
     let mesh = Mesh::load_stl(&path).map_err(mesh_error)?;
     mesh.mass_properties(mass).map_err(mesh_error)

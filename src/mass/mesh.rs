@@ -25,7 +25,7 @@ use thiserror::Error;
 pub enum MeshError {
     /// The STL file could not be opened or parsed.
     #[error("cannot read STL: {0}")]
-    Read(#[from] std::io::Error),
+    Read(std::io::Error),
     /// The mesh has no triangles.
     #[error("the mesh has no triangles")]
     Empty,
@@ -131,7 +131,7 @@ impl Mesh {
     /// Reads an ASCII or binary STL. Vertices with identical coordinates are merged (by
     /// `stl_io`), which is what joins the triangles into a surface.
     pub fn read_stl<R: Read + Seek>(reader: &mut R) -> Result<Self, MeshError> {
-        let indexed = stl_io::read_stl(reader)?;
+        let indexed = stl_io::read_stl(reader).map_err(MeshError::Read)?;
         let vertices = indexed
             .vertices
             .iter()
@@ -143,13 +143,13 @@ impl Mesh {
 
     /// Reads an STL file.
     pub fn load_stl(path: &Path) -> Result<Self, MeshError> {
-        Self::read_stl(&mut std::fs::File::open(path)?)
+        Self::read_stl(&mut std::fs::File::open(path).map_err(MeshError::Read)?)
     }
 
     /// Writes the mesh as a binary STL (coordinates rounded to `f32`, as the format stores them).
-    pub fn write_stl<W: Write>(&self, writer: &mut W) -> Result<(), MeshError> {
+    pub fn write_stl<W: Write>(&self, writer: &mut W) -> std::io::Result<()> {
         let triangles: Vec<stl_io::Triangle> = self.triangles.iter().map(|t| self.stl(t)).collect();
-        Ok(stl_io::write_stl(writer, triangles.iter())?)
+        stl_io::write_stl(writer, triangles.iter())
     }
 
     /// The number of triangles.
