@@ -344,3 +344,154 @@ fn mesh_solid(raw: &RawPart, base: &Path) -> Result<MassProperties, PartError> {
     let mesh = Mesh::load_stl(&path).map_err(mesh_error)?;
     mesh.mass_properties(mass).map_err(mesh_error)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Rotation3;
+
+    fn parse(text: &str) -> Result<BodyFile, BodyFileError> {
+        BodyFile::parse(text, Path::new("."))
+    }
+
+    fn part_error(text: &str) -> (usize, String) {
+        match parse(text).unwrap_err() {
+            BodyFileError::Part { index, error, .. } => (index, error.to_string()),
+            other => panic!("expected a part error, got {other}"),
+        }
+    }
+
+    #[test]
+    fn every_primitive_kind_combines_as_built_by_hand() {
+        let text = r#"
+            [[part]]
+            kind = "box"
+            mass = 10.0
+            size = [4, 2, 1]
+            offset = [1.0, 0.0, 0.5]
+            rotation_deg = [0.0, 0.0, 30.0]
+            [[part]]
+            kind = "sphere"
+            mass = 2
+            radius = 0.5
+            offset = [-2.0, 0.5, 0.0]
+            [[part]]
+            kind = "ellipsoid"
+            mass = 3
+            size = [2, 1, 1]
+            [[part]]
+            kind = "cylinder"
+            mass = 1.5
+            radius = 0.2
+            length = 3
+            rotation_deg = [10, 20, 0]
+            [[part]]
+            kind = "hollow_cylinder"
+            mass = 1
+            inner_radius = 0.1
+            radius = 0.3
+            length = 1
+            offset = [0, 0, -1]
+            [[part]]
+            kind = "point"
+            mass = 0.5
+            offset = [0, 2, 0]
+        "#;
+        let from_file = parse(text).unwrap().mass_properties().unwrap();
+        let turn = |deg: [f64; 3]| rotation_from_degrees(deg).unwrap();
+        let mut body = Composite::new();
+        let placed = |p: MassProperties, at: [f64; 3], r: Rotation3<f64>| {
+            p.placed(&Vector3::from(at), &r).unwrap()
+        };
+        let none = Rotation3::identity();
+        body.add(&placed(
+            solid_box(10.0, [4.0, 2.0, 1.0]).unwrap(),
+            [1.0, 0.0, 0.5],
+            turn([0.0, 0.0, 30.0]),
+        ));
+        body.add(&placed(sphere(2.0, 0.5).unwrap(), [-2.0, 0.5, 0.0], none));
+        body.add(&placed(
+            ellipsoid(3.0, [2.0, 1.0, 1.0]).unwrap(),
+            [0.0; 3],
+            none,
+        ));
+        body.add(&placed(
+            solid_cylinder(1.5, 0.2, 3.0).unwrap(),
+            [0.0; 3],
+            turn([10.0, 20.0, 0.0]),
+        ));
+        body.add(&placed(
+            hollow_cylinder(1.0, 0.1, 0.3, 1.0).unwrap(),
+            [0.0, 0.0, -1.0],
+            none,
+        ));
+        body.add_point(0.5, Vector3::new(0.0, 2.0, 0.0)).unwrap();
+        // The same operations in the same order: equal to the last bit.
+        assert_eq!(from_file, body.build().unwrap());
+    }
+
+    #[test]
+    fn unknown_key_names_part_and_key() {
+        let (index, message) = part_error(
+            "[[part]]\nkind = \"box\"\nmass = 1\nsize = [1, 1, 1]\n[[part]]\nkind = \"box\"\nmass = 1\nsise = [1, 1, 1]",
+        );
+        assert_eq!(index, 2);
+        assert!(message.contains("unknown field `sise`"), "{message}");
+    }
+
+    #[test]
+    fn missing_and_misplaced_keys_are_named() {
+        let (_, message) = part_error("[[part]]\nkind = \"sphere\"\nmass = 1");
+        assert_eq!(message, "a sphere needs `radius`");
+        let (_, message) =
+            part_error("[[part]]\nkind = \"sphere\"\nmass = 1\nradius = 1\nlength = 2");
+        assert_eq!(message, "`length` does not apply to a sphere");
+        let (_, message) =
+            part_error("[[part]]\nkind = \"point\"\nmass = 1\nrotation_deg = [0, 0, 1]");
+        assert_eq!(message, "`rotation_deg` does not apply to a point");
+        let (_, message) = part_error("[[part]]\nmass = 1");
+        assert!(message.contains("missing field `kind`"), "{message}");
+        let (_, message) =
+            part_error("[[part]]\nkind = \"box\"\nmass = \"heavy\"\nsize = [1, 1, 1]");
+        assert!(
+            message.contains("in `mass`") && !message.contains('\n'),
+            "{message}"
+        );
+    }
+
+    #[test]
+    fn a_mesh_needs_exactly_one_of_mass_and_density() {
+        let both = "[[part]]\nkind = \"mesh\"\npath = \"a.stl\"\nmass = 1\ndensity = 2";
+        assert_eq!(
+            part_error(both).1,
+            "a mesh needs exactly one of `mass` and `density`"
+        );
+        let neither = "[[part]]\nkind = \"mesh\"\npath = \"a.stl\"";
+        assert_eq!(
+            part_error(neither).1,
+            "a mesh needs exactly one of `mass` and `density`"
+        );
+    }
+
+    #[test]
+    fn bad_values_name_the_part_by_its_name() {
+        let err = parse("[[part]]\nname = \"keel\"\nkind = \"box\"\nmass = -4\nsize = [1, 1, 1]")
+            .unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "part 1 (\"keel\"): mass must be positive and finite, got -4"
+        );
+    }
+
+    #[test]
+    fn file_level_faults_are_reported() {
+        assert!(matches!(parse(""), Err(BodyFileError::NoParts)));
+        assert!(matches!(parse("parts = 1"), Err(BodyFileError::Syntax(_))));
+        assert!(matches!(parse("[[part]"), Err(BodyFileError::Syntax(_))));
+        let line = "[[part]]\nkind = \"point\"\nmass = 1\n[[part]]\nkind = \"point\"\nmass = 1\noffset = [1, 0, 0]";
+        let err = parse(line).unwrap().mass_properties().unwrap_err();
+        assert!(matches!(err, BodyFileError::Combination(_)), "{err}");
+        let missing = BodyFile::load(Path::new("/nonexistent/body.toml")).unwrap_err();
+        assert!(matches!(missing, BodyFileError::Read { .. }));
+    }
+}
