@@ -10,7 +10,7 @@ use std::path::PathBuf;
 #[derive(clap::Args)]
 pub struct Args {
     /// The body file: a TOML list of `[[part]]`s (box, sphere, ellipsoid, cylinder,
-    /// hollow_cylinder, point, mesh), each with its mass, size, offset and rotation.
+    /// hollow_cylinder, point, mesh, tensor), each with its mass, size, offset and rotation.
     file: PathBuf,
     /// Also give the inertia tensor about this point of the body axes, by Steiner's theorem
     /// (4.23), e.g. `--about 0,0,0` for the body origin.

@@ -4,12 +4,18 @@
 //! ```toml
 //! [[part]]
 //! name = "hull"                  # optional, for messages
-//! kind = "box"                   # box | sphere | ellipsoid | cylinder | hollow_cylinder | point | mesh
+//! kind = "box"                   # box | sphere | ellipsoid | cylinder | hollow_cylinder
+//!                                # | point | mesh | tensor
 //! mass = 1200.0
 //! size = [10.0, 2.0, 2.0]        # L, B, D
 //! offset = [0.0, 0.0, -0.5]      # where the part's own origin (its G, for a primitive) goes
 //! rotation_deg = [0.0, 0.0, 0.0] # roll, pitch, yaw: E = Rz(ψ) Ry(θ) Rx(φ) as in 4.57
 //! ```
+//!
+//! A `tensor` part is a body whose properties are already known (from a swing test or a CAD
+//! report): its `mass` and `inertia = [Ixx, Iyy, Izz, Ixy, Iyz, Izx]` about its own G, products
+//! with the chapter's sign (4.14). It is checked like any tensor: symmetric, positive definite,
+//! triangle inequalities, and an error says which condition fails.
 //!
 //! Parts are numbered from 1 in the order they appear; an unknown key, a missing key and a key
 //! that does not belong to the part's kind are errors naming the part and the key. A mesh's
@@ -20,6 +26,7 @@ use super::error::MassError;
 use super::mesh::{Mesh, MeshError, MeshMass};
 use super::primitives::{ellipsoid, hollow_cylinder, solid_box, solid_cylinder, sphere};
 use super::properties::{MassProperties, rotation_from_degrees};
+use crate::InertiaTensor;
 use nalgebra::Vector3;
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
@@ -119,6 +126,7 @@ enum Kind {
     HollowCylinder,
     Point,
     Mesh,
+    Tensor,
 }
 
 impl Kind {
@@ -131,6 +139,7 @@ impl Kind {
             Kind::HollowCylinder => "hollow_cylinder",
             Kind::Point => "point",
             Kind::Mesh => "mesh",
+            Kind::Tensor => "tensor",
         }
     }
 
@@ -143,6 +152,7 @@ impl Kind {
             Kind::HollowCylinder => &["mass", "radius", "inner_radius", "length", "rotation_deg"],
             Kind::Point => &["mass"],
             Kind::Mesh => &["mass", "density", "path", "rotation_deg"],
+            Kind::Tensor => &["mass", "inertia", "rotation_deg"],
         }
     }
 }
@@ -159,6 +169,7 @@ struct RawPart {
     inner_radius: Option<f64>,
     length: Option<f64>,
     path: Option<PathBuf>,
+    inertia: Option<[f64; 6]>,
     #[serde(default)]
     offset: [f64; 3],
     rotation_deg: Option<[f64; 3]>,
@@ -174,6 +185,7 @@ impl RawPart {
             ("inner_radius", self.inner_radius.is_some()),
             ("length", self.length.is_some()),
             ("path", self.path.is_some()),
+            ("inertia", self.inertia.is_some()),
             ("rotation_deg", self.rotation_deg.is_some()),
         ];
         keys.iter().filter(|(_, g)| *g).map(|(k, _)| *k).collect()
@@ -323,6 +335,12 @@ fn own_solid(raw: &RawPart, base: &Path) -> Result<MassProperties, PartError> {
             raw.need("length", raw.length)?,
         )?,
         Kind::Mesh => mesh_solid(raw, base)?,
+        Kind::Tensor => {
+            let [ixx, iyy, izz, ixy, iyz, izx] = raw.need("inertia", raw.inertia)?;
+            let inertia =
+                InertiaTensor::new(ixx, iyy, izz, ixy, iyz, izx).map_err(MassError::from)?;
+            MassProperties::new(mass()?, Vector3::zeros(), inertia)?
+        }
         Kind::Point => unreachable!("point masses have no solid; handled by the caller"),
     })
 }
@@ -396,6 +414,12 @@ mod tests {
             kind = "point"
             mass = 0.5
             offset = [0, 2, 0]
+            [[part]]
+            kind = "tensor"
+            mass = 4
+            inertia = [3, 4, 5, -0.5, 0.25, 0.1]
+            offset = [0.5, 0.5, 0.5]
+            rotation_deg = [0, 90, 0]
         "#;
         let from_file = parse(text).unwrap().mass_properties().unwrap();
         let turn = |deg: [f64; 3]| rotation_from_degrees(deg).unwrap();
@@ -426,6 +450,9 @@ mod tests {
             none,
         ));
         body.add_point(0.5, Vector3::new(0.0, 2.0, 0.0)).unwrap();
+        let given = InertiaTensor::new(3.0, 4.0, 5.0, -0.5, 0.25, 0.1).unwrap();
+        let given = MassProperties::new(4.0, Vector3::zeros(), given).unwrap();
+        body.add(&placed(given, [0.5; 3], turn([0.0, 90.0, 0.0])));
         // The same operations in the same order: equal to the last bit.
         assert_eq!(from_file, body.build().unwrap());
     }
@@ -456,6 +483,16 @@ mod tests {
         assert!(
             message.contains("in `mass`") && !message.contains('\n'),
             "{message}"
+        );
+    }
+
+    #[test]
+    fn an_impossible_given_tensor_says_which_condition_fails() {
+        let text = "[[part]]\nname = \"payload\"\nkind = \"tensor\"\nmass = 1\ninertia = [1, 1, 3, 0, 0, 0]";
+        let message = parse(text).unwrap_err().to_string();
+        assert_eq!(
+            message,
+            "part 1 (\"payload\"): triangle inequality fails: Ixx + Iyy = 2 < Izz = 3"
         );
     }
 

@@ -1,8 +1,8 @@
 //! Mass properties: the mass, the centre of gravity G and the inertia tensor about G that every
 //! model needs (the chapter's part 4.2), built from what a user actually has.
 //!
-//! - [`primitives`](sphere): the uniform solids whose tensors the chapter derives (4.18–4.22,
-//!   exercise 4.1) and the cylinders;
+//! - [`sphere`], [`solid_box`], [`ellipsoid`], [`solid_cylinder`], [`hollow_cylinder`]: the
+//!   uniform solids whose tensors the chapter derives (4.18–4.22, exercise 4.1), and cylinders;
 //! - [`Mesh`]: a solid bounded by a closed triangle mesh (an STL file from CAD);
 //! - [`Composite`]: parts placed at offsets and rotations, combined by Steiner's theorem (4.23);
 //! - [`MassProperties`]: the result, with radii of gyration (4.16–4.17) and principal axes;
