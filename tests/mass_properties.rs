@@ -557,3 +557,58 @@ fn stl_round_trip_keeps_the_mass_properties() {
     // Relative 1e-6: STL stores coordinates as f32 (ε = 6e-8), a few roundings per moment.
     assert!(relative_difference(&b.inertia().matrix(), &a.inertia().matrix()) < 1e-6);
 }
+
+#[test]
+fn stl_with_negative_zero_coordinates_is_still_closed() {
+    // The same corner written once as "0" and once as "-0" must be one vertex.
+    let facets = [
+        [[0.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]],
+        [[-0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]],
+        [[0.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, 1.0, 0.0]],
+        [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+    ];
+    let mut text = String::from("solid tetrahedron\n");
+    for facet in facets {
+        text += "facet normal 0 0 0\nouter loop\n";
+        for [x, y, z] in facet {
+            text += &format!("vertex {x:?} {y:?} {z:?}\n");
+        }
+        text += "endloop\nendfacet\n";
+    }
+    text += "endsolid tetrahedron\n";
+    assert!(text.contains("vertex -0.0 0.0 0.0"));
+    let mesh = Mesh::read_stl(&mut std::io::Cursor::new(text.into_bytes())).unwrap();
+    // Relative 1e-15: one tetrahedron, volume 1/6.
+    assert!((mesh.volume() - 1.0 / 6.0).abs() < 1e-15);
+}
+
+#[test]
+fn inward_shell_inside_a_box_is_a_cavity() {
+    let (mut vertices, mut triangles) = box_mesh(Vector3::zeros(), Vector3::new(4.0, 3.0, 2.0), 1);
+    let (inner_vertices, inner_triangles) =
+        box_mesh(Vector3::new(0.5, 0.5, 0.5), Vector3::new(1.0, 1.0, 1.0), 1);
+    let shift = vertices.len();
+    vertices.extend(inner_vertices);
+    triangles.extend(
+        inner_triangles
+            .iter()
+            .map(|&[a, b, c]| [a + shift, c + shift, b + shift]),
+    );
+    let hollow = Mesh::new(vertices, triangles)
+        .unwrap()
+        .mass_properties(MeshMass::Density(1.0))
+        .unwrap();
+    // The same body as a composite: the outer box less the inner one, by the first moments and
+    // Steiner's theorem written out (a composite cannot hold a negative mass).
+    let outer = solid_box(24.0, [4.0, 3.0, 2.0]).unwrap();
+    let inner = solid_box(1.0, [1.0, 1.0, 1.0]).unwrap();
+    let (r_outer, r_inner) = (Vector3::new(2.0, 1.5, 1.0), Vector3::new(1.0, 1.0, 1.0));
+    let g = (r_outer * 24.0 - r_inner) / 23.0;
+    let about_g = outer.inertia().matrix() + eom::mass::steiner_shift(24.0, &(r_outer - g))
+        - inner.inertia().matrix()
+        - eom::mass::steiner_shift(1.0, &(r_inner - g));
+    assert!((hollow.mass() - 23.0).abs() < 1e-13);
+    assert!((hollow.centre_of_gravity() - g).norm() < 1e-14);
+    // Relative 1e-14: two dozen tetrahedra of order-one coordinates.
+    assert!(relative_difference(&hollow.inertia().matrix(), &about_g) < 1e-14);
+}

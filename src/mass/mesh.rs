@@ -9,7 +9,8 @@
 //!
 //! The mesh must be closed and consistently oriented: every edge is used exactly once in each
 //! direction (once by the triangle on either side). Anything else gives a wrong volume, so it is
-//! an error that names the edge.
+//! an error that names the edge. Several closed shells are allowed: a shell wound inwards inside
+//! another is a cavity, whose volume and moments the sum subtracts.
 
 use super::error::{MassError, positive};
 use super::properties::MassProperties;
@@ -128,16 +129,24 @@ impl Mesh {
         })
     }
 
-    /// Reads an ASCII or binary STL. Vertices with identical coordinates are merged (by
-    /// `stl_io`), which is what joins the triangles into a surface.
+    /// Reads an ASCII or binary STL. Vertices with identical coordinates are merged, which is
+    /// what joins the triangles into a surface; `-0` and `0` count as the same coordinate, as
+    /// CAD exporters write both.
     pub fn read_stl<R: Read + Seek>(reader: &mut R) -> Result<Self, MeshError> {
-        let indexed = stl_io::read_stl(reader).map_err(MeshError::Read)?;
-        let vertices = indexed
-            .vertices
-            .iter()
-            .map(|v| Vector3::from(v.0.map(f64::from)))
-            .collect();
-        let triangles = indexed.faces.iter().map(|f| f.vertices).collect();
+        let mut index: BTreeMap<[u32; 3], usize> = BTreeMap::new();
+        let mut vertices = Vec::new();
+        let mut triangles = Vec::new();
+        for triangle in stl_io::create_stl_reader(reader).map_err(MeshError::Read)? {
+            let triangle = triangle.map_err(MeshError::Read)?;
+            triangles.push(triangle.vertices.map(|v| {
+                // Adding +0 turns -0 into +0 and leaves every other value as it is.
+                let key = v.0.map(|x| (x + 0.0).to_bits());
+                *index.entry(key).or_insert_with(|| {
+                    vertices.push(Vector3::from(v.0.map(f64::from)));
+                    vertices.len() - 1
+                })
+            }));
+        }
         Self::new(vertices, triangles)
     }
 
