@@ -150,7 +150,7 @@ fn print_text(r: &Report) {
     if let Some(k) = r.kappa_g_uncorrected {
         let off = 100.0 * (k / r.kappa_g - 1.0);
         println!(
-            "  κ_G without the amplitude correction {} m ({off:+.4} %)",
+            "  κ_G if θ₀ were ignored            {} m ({off:+.4} %)",
             number(k)
         );
     }
