@@ -9,8 +9,11 @@
 #![deny(missing_docs)]
 
 pub mod elliptic;
+pub mod energy;
 pub mod generic;
 mod inertia;
+pub mod mass;
 pub mod models;
+pub mod swing;
 
 pub use inertia::{InertiaError, InertiaTensor};

@@ -1,0 +1,306 @@
+//! Solid bodies from closed triangle meshes (STL files from CAD), by the divergence theorem.
+//!
+//! A closed, consistently oriented triangle mesh bounds a solid. Joining every triangle to one
+//! reference point cuts the solid into signed tetrahedra whose volumes, first moments and second
+//! moments add up to the solid's exactly (the divergence theorem in discrete form), for any
+//! polyhedron, convex or not. Triangles whose normals point inwards give a negative total; this
+//! module refuses such a mesh rather than flipping it silently, because an inside-out mesh
+//! usually means a wrong export that the user should see.
+//!
+//! The mesh must be closed and consistently oriented: every edge is used exactly once in each
+//! direction (once by the triangle on either side). Anything else gives a wrong volume, so it is
+//! an error that names the edge. Several closed shells are allowed: a shell wound inwards inside
+//! another is a cavity, whose volume and moments the sum subtracts.
+
+use super::error::{MassError, positive};
+use super::properties::MassProperties;
+use crate::InertiaTensor;
+use nalgebra::{Matrix3, Vector3};
+use std::collections::BTreeMap;
+use std::io::{Read, Seek, Write};
+use std::path::Path;
+use thiserror::Error;
+
+/// Why a mesh does not describe a solid.
+#[derive(Debug, Error)]
+pub enum MeshError {
+    /// The STL file could not be opened or parsed.
+    #[error("cannot read STL: {0}")]
+    Read(std::io::Error),
+    /// The mesh has no triangles.
+    #[error("the mesh has no triangles")]
+    Empty,
+    /// A vertex has a NaN or infinite coordinate.
+    #[error("vertex {vertex} has a coordinate that is not finite: {position:?}")]
+    NotFiniteVertex {
+        /// Index of the vertex.
+        vertex: usize,
+        /// Its coordinates.
+        position: [f64; 3],
+    },
+    /// A triangle refers to a vertex that does not exist.
+    #[error("triangle {triangle} refers to vertex {vertex}, but there are only {count} vertices")]
+    VertexOutOfRange {
+        /// Index of the triangle.
+        triangle: usize,
+        /// The missing vertex index.
+        vertex: usize,
+        /// How many vertices there are.
+        count: usize,
+    },
+    /// A triangle uses the same vertex twice.
+    #[error("triangle {triangle} uses the same vertex twice")]
+    DegenerateTriangle {
+        /// Index of the triangle.
+        triangle: usize,
+    },
+    /// An edge has a triangle on one side only: the mesh has a hole.
+    #[error("the mesh is not closed: edge {from:?} → {to:?} has no triangle on its other side")]
+    NotClosed {
+        /// One end of the edge.
+        from: [f64; 3],
+        /// The other end.
+        to: [f64; 3],
+    },
+    /// An edge is used twice in the same direction.
+    #[error(
+        "the mesh is not consistently oriented: edge {from:?} → {to:?} is used {count} times in \
+         the same direction (neighbouring triangles must run through a shared edge in opposite \
+         directions, and no more than two triangles may meet at an edge)"
+    )]
+    NotOriented {
+        /// One end of the edge.
+        from: [f64; 3],
+        /// The other end.
+        to: [f64; 3],
+        /// How many triangles use it in this direction.
+        count: usize,
+    },
+    /// The normals point inwards: the enclosed volume comes out negative.
+    #[error(
+        "the mesh is inside out (its triangles' normals point inwards, volume {volume}); \
+         reverse the winding of every triangle"
+    )]
+    InsideOut {
+        /// The signed volume computed.
+        volume: f64,
+    },
+    /// The mesh encloses no volume.
+    #[error("the mesh encloses no volume")]
+    ZeroVolume,
+    /// The mass or density given is not physical, or the tensor is not.
+    #[error(transparent)]
+    Mass(#[from] MassError),
+}
+
+/// How much a mesh weighs: a uniform density, or a total mass spread uniformly.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum MeshMass {
+    /// Mass per unit volume, in the mesh's length unit.
+    Density(f64),
+    /// The total mass.
+    Total(f64),
+}
+
+/// A closed, consistently oriented triangle mesh.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Mesh {
+    vertices: Vec<Vector3<f64>>,
+    triangles: Vec<[usize; 3]>,
+}
+
+/// Volume, first and second moments of a solid about a reference point.
+struct Moments {
+    volume: f64,
+    first: Vector3<f64>,
+    second: Matrix3<f64>,
+}
+
+impl Mesh {
+    /// Builds a mesh from vertices and triangles (vertex indices, counter-clockwise seen from
+    /// outside), refusing one that is not closed or not consistently oriented.
+    pub fn new(vertices: Vec<Vector3<f64>>, triangles: Vec<[usize; 3]>) -> Result<Self, MeshError> {
+        check_vertices(&vertices)?;
+        check_triangles(&triangles, vertices.len())?;
+        check_edges(&vertices, &triangles)?;
+        Ok(Self {
+            vertices,
+            triangles,
+        })
+    }
+
+    /// Reads an ASCII or binary STL. Vertices with identical coordinates are merged, which is
+    /// what joins the triangles into a surface; `-0` and `0` count as the same coordinate, as
+    /// CAD exporters write both.
+    pub fn read_stl<R: Read + Seek>(reader: &mut R) -> Result<Self, MeshError> {
+        let mut index: BTreeMap<[u32; 3], usize> = BTreeMap::new();
+        let mut vertices = Vec::new();
+        let mut triangles = Vec::new();
+        for triangle in stl_io::create_stl_reader(reader).map_err(MeshError::Read)? {
+            let triangle = triangle.map_err(MeshError::Read)?;
+            triangles.push(triangle.vertices.map(|v| {
+                // Adding +0 turns -0 into +0 and leaves every other value as it is.
+                let key = v.0.map(|x| (x + 0.0).to_bits());
+                *index.entry(key).or_insert_with(|| {
+                    vertices.push(Vector3::from(v.0.map(f64::from)));
+                    vertices.len() - 1
+                })
+            }));
+        }
+        Self::new(vertices, triangles)
+    }
+
+    /// Reads an STL file.
+    pub fn load_stl(path: &Path) -> Result<Self, MeshError> {
+        Self::read_stl(&mut std::fs::File::open(path).map_err(MeshError::Read)?)
+    }
+
+    /// Writes the mesh as a binary STL (coordinates rounded to `f32`, as the format stores them).
+    pub fn write_stl<W: Write>(&self, writer: &mut W) -> std::io::Result<()> {
+        let triangles: Vec<stl_io::Triangle> = self.triangles.iter().map(|t| self.stl(t)).collect();
+        stl_io::write_stl(writer, triangles.iter())
+    }
+
+    /// The number of triangles.
+    pub fn triangle_count(&self) -> usize {
+        self.triangles.len()
+    }
+
+    /// The enclosed volume.
+    pub fn volume(&self) -> f64 {
+        self.moments().volume
+    }
+
+    /// Mass, G and tensor about G of the uniform solid the mesh bounds, in the mesh's axes.
+    ///
+    /// ```
+    /// use eom::mass::{Mesh, MeshMass};
+    /// use nalgebra::Vector3;
+    /// // A tetrahedron with its right angle at the origin: volume 1/6, G at (1/4, 1/4, 1/4).
+    /// let vertices = vec![Vector3::zeros(), Vector3::x(), Vector3::y(), Vector3::z()];
+    /// let mesh = Mesh::new(vertices, vec![[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]).unwrap();
+    /// let body = mesh.mass_properties(MeshMass::Density(6.0)).unwrap();
+    /// assert!((body.mass() - 1.0).abs() < 1e-15);
+    /// assert!((body.centre_of_gravity() - Vector3::repeat(0.25)).norm() < 1e-15);
+    /// ```
+    pub fn mass_properties(&self, mass: MeshMass) -> Result<MassProperties, MeshError> {
+        let moments = self.moments();
+        if moments.volume < 0.0 {
+            return Err(MeshError::InsideOut {
+                volume: moments.volume,
+            });
+        }
+        if moments.volume == 0.0 {
+            return Err(MeshError::ZeroVolume);
+        }
+        let density = match mass {
+            MeshMass::Density(rho) => positive("density", rho)?,
+            MeshMass::Total(total) => positive("mass", total)? / moments.volume,
+        };
+        let centre = moments.first / moments.volume;
+        let second_about_g =
+            (moments.second - centre * centre.transpose() * moments.volume) * density;
+        let inertia = Matrix3::identity() * second_about_g.trace() - second_about_g;
+        let inertia = InertiaTensor::from_matrix(inertia).map_err(MassError::from)?;
+        let origin = self.reference_point();
+        Ok(MassProperties::new(
+            density * moments.volume,
+            origin + centre,
+            inertia,
+        )?)
+    }
+
+    /// The mean of the vertices: integrating about a point inside the body rather than the
+    /// file's origin keeps the digits that a part far from the origin would otherwise lose.
+    fn reference_point(&self) -> Vector3<f64> {
+        self.vertices.iter().sum::<Vector3<f64>>() / self.vertices.len() as f64
+    }
+
+    /// Sums the signed tetrahedra (reference point, a, b, c): volume `a·(b×c)/6`, first moment
+    /// `V (a + b + c)/4`, second moments `∫ r rᵀ dV = V/20 (a aᵀ + b bᵀ + c cᵀ + s sᵀ)` with
+    /// `s = a + b + c`, all relative to the reference point.
+    fn moments(&self) -> Moments {
+        let origin = self.reference_point();
+        let mut sum = Moments {
+            volume: 0.0,
+            first: Vector3::zeros(),
+            second: Matrix3::zeros(),
+        };
+        for t in &self.triangles {
+            let [a, b, c] = t.map(|i| self.vertices[i] - origin);
+            let volume = a.dot(&b.cross(&c)) / 6.0;
+            let s = a + b + c;
+            let outer =
+                a * a.transpose() + b * b.transpose() + c * c.transpose() + s * s.transpose();
+            sum.volume += volume;
+            sum.first += s * (volume / 4.0);
+            sum.second += outer * (volume / 20.0);
+        }
+        sum
+    }
+
+    fn stl(&self, t: &[usize; 3]) -> stl_io::Triangle {
+        let [a, b, c] = t.map(|i| self.vertices[i]);
+        let normal = (b - a).cross(&(c - a)).normalize();
+        let f32s = |v: Vector3<f64>| [v.x as f32, v.y as f32, v.z as f32];
+        stl_io::Triangle {
+            normal: stl_io::Normal::new(f32s(normal)),
+            vertices: [a, b, c].map(|v| stl_io::Vertex::new(f32s(v))),
+        }
+    }
+}
+
+fn check_vertices(vertices: &[Vector3<f64>]) -> Result<(), MeshError> {
+    match vertices
+        .iter()
+        .position(|v| !v.iter().all(|x| x.is_finite()))
+    {
+        Some(vertex) => Err(MeshError::NotFiniteVertex {
+            vertex,
+            position: vertices[vertex].into(),
+        }),
+        None => Ok(()),
+    }
+}
+
+fn check_triangles(triangles: &[[usize; 3]], count: usize) -> Result<(), MeshError> {
+    if triangles.is_empty() {
+        return Err(MeshError::Empty);
+    }
+    for (triangle, &[a, b, c]) in triangles.iter().enumerate() {
+        if let Some(&vertex) = [a, b, c].iter().find(|&&v| v >= count) {
+            return Err(MeshError::VertexOutOfRange {
+                triangle,
+                vertex,
+                count,
+            });
+        }
+        if a == b || b == c || c == a {
+            return Err(MeshError::DegenerateTriangle { triangle });
+        }
+    }
+    Ok(())
+}
+
+/// Every directed edge must appear exactly once and its reverse exactly once. A `BTreeMap`
+/// keeps the edge reported first the same from run to run.
+fn check_edges(vertices: &[Vector3<f64>], triangles: &[[usize; 3]]) -> Result<(), MeshError> {
+    let mut uses: BTreeMap<(usize, usize), usize> = BTreeMap::new();
+    for &[a, b, c] in triangles {
+        for edge in [(a, b), (b, c), (c, a)] {
+            *uses.entry(edge).or_default() += 1;
+        }
+    }
+    let point = |i: usize| -> [f64; 3] { vertices[i].into() };
+    for (&(from, to), &count) in &uses {
+        if count > 1 {
+            let (from, to) = (point(from), point(to));
+            return Err(MeshError::NotOriented { from, to, count });
+        }
+        if !uses.contains_key(&(to, from)) {
+            let (from, to) = (point(from), point(to));
+            return Err(MeshError::NotClosed { from, to });
+        }
+    }
+    Ok(())
+}
