@@ -51,6 +51,14 @@ impl<T: RealField + Copy> RigidBody<T> {
         })
     }
 
+    /// Validates a full matrix as an inertia tensor (4.12–4.14, see
+    /// [`InertiaTensor::from_matrix`]) and then builds the body as [`new`](Self::new) does;
+    /// an impossible tensor gives [`ModelError::Inertia`] naming the failed condition.
+    pub fn from_matrix(mass: f64, inertia: Matrix3<f64>) -> Result<Self, ModelError> {
+        check_mass(mass)?;
+        Self::new(mass, &InertiaTensor::from_matrix(inertia)?)
+    }
+
     /// The body-fixed rate of the velocity of G, 4.47–4.49: `v̇ = F/M − ω × v`.
     #[inline]
     pub fn translational_acceleration(
