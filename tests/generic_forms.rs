@@ -45,10 +45,16 @@ fn body() -> impl Strategy<Value = RigidBody<f64>> {
     (0.1..1e3f64, tensor()).prop_map(|(m, t)| RigidBody::new(m, &t).unwrap())
 }
 
+/// Body rates of any direction with magnitudes spread over five decades, up to about 10³ rad/s.
+fn body_rates_vector() -> impl Strategy<Value = Vector3<f64>> {
+    (vec3(1.0), -2.0..3.0f64).prop_map(|(w, decade)| w * 10f64.powf(decade))
+}
+
 /// An Euler state with the pitch at least 10° away from ±90°.
 fn euler_state() -> impl Strategy<Value = EulerState<f64>> {
     let attitude = (-PI..PI, -1.39..1.39f64, -PI..PI);
-    (vec3(10.0), vec3(3.0), vec3(100.0), attitude).prop_map(|(v, w, x, (phi, th, psi))| {
+    let motion = (vec3(10.0), body_rates_vector(), vec3(100.0));
+    (motion, attitude).prop_map(|((v, w, x), (phi, th, psi))| {
         let mut s = EulerState::zeros();
         s.fixed_rows_mut::<3>(0).copy_from(&v);
         s.fixed_rows_mut::<3>(3).copy_from(&w);
@@ -227,8 +233,26 @@ proptest! {
     }
 
     #[test]
+    fn kinetic_energy_4_32_changes_at_the_rate_the_equations_give(
+        body in body(), state in euler_state(), force in vec3(100.0), moment in vec3(100.0),
+    ) {
+        let rate = body.rhs_euler(&state, &force, &moment);
+        let (v, w) = (part(state.as_slice(), 0), part(state.as_slice(), 3));
+        let (v_dot, w_dot) = (part(rate.as_slice(), 0), part(rate.as_slice(), 3));
+        let energy_rate = body.mass() * v.dot(&v_dot) + w.dot(&(body.inertia() * w_dot));
+        // T is quadratic in (v, ω), so the central difference along (v̇, ω̇) is exact for any
+        // step h; only the roundoff of the two energies, EPS (T₊ + T₋)/h, remains.
+        let h = (v.norm() + w.norm()) / (v_dot.norm() + w_dot.norm());
+        let t = |s: f64| body.kinetic_energy(&(v + v_dot * s), &(w + w_dot * s));
+        let (ahead, behind) = (t(h), t(-h));
+        let difference = (ahead - behind) / (2.0 * h);
+        let scale = (ahead + behind) / h;
+        prop_assert!((difference - energy_rate).abs() <= 16.0 * EPS * scale);
+    }
+
+    #[test]
     fn angular_acceleration_satisfies_euler_equations_4_51(
-        body in body(), w in vec3(3.0), moment in vec3(100.0),
+        body in body(), w in body_rates_vector(), moment in vec3(100.0),
     ) {
         let d = body.angular_acceleration(&w, &moment);
         let i = body.inertia();
@@ -256,6 +280,18 @@ proptest! {
         let back = body_rates(phi, theta, &euler_rates(phi, theta, &w));
         // |cos θ| ≥ 0.18 here, so 4.60 amplifies roundoff by at most 6; 1e-14 relative.
         prop_assert!((back - w).norm() <= 1e-14 * (1.0 + w.norm()));
+    }
+
+    #[test]
+    fn euler_rates_near_gimbal_lock_degrade_only_as_sec_theta(
+        w in body_rates_vector(), phi in -PI..PI, decade in -6.0..-1.0f64, up in any::<bool>(),
+    ) {
+        // Pitch within 1e-6 to 0.1 rad of ±90°: 4.60 is finite but ill-conditioned there.
+        let theta = if up { 1.0 } else { -1.0 } * (FRAC_PI_2 - 10f64.powf(decade));
+        let back = body_rates(phi, theta, &euler_rates(phi, theta, &w));
+        // The rates are of size |ω|/|cos θ| and 4.59 cancels them back to |ω|, so the error
+        // is a few ulps of |ω|/|cos θ|; 64 ulps bounds it.
+        prop_assert!((back - w).norm() <= 64.0 * EPS * w.norm() / theta.cos().abs());
     }
 
     #[test]
