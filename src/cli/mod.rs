@@ -3,6 +3,7 @@
 mod derive;
 mod mass;
 mod swing;
+mod eval;
 
 use clap::Subcommand;
 
@@ -17,6 +18,8 @@ pub enum Command {
     /// The swing test: radius of gyration from a measured pendulum period (4.24–4.29), with
     /// the correction for a finite amplitude.
     Swing(swing::Args),
+    /// Evaluate one model's right-hand side at a state read from JSON (generic nalgebra form).
+    Eval(eval::Args),
 }
 
 /// Runs one subcommand.
@@ -25,5 +28,6 @@ pub fn run(command: Command) -> anyhow::Result<()> {
         Command::Derive(args) => derive::run(args),
         Command::Mass(args) => mass::run(args),
         Command::Swing(args) => swing::run(args),
+        Command::Eval(args) => eval::run(args),
     }
 }

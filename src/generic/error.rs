@@ -27,8 +27,8 @@ pub enum ModelError {
         /// What it must be, e.g. `"finite and positive"`.
         requirement: &'static str,
     },
-    /// The inertia tensor is not that of a rigid body.
-    #[error("inertia tensor: {0}")]
+    /// The inertia tensor is not that of a rigid body (its message names the failed check).
+    #[error(transparent)]
     Inertia(#[from] InertiaError),
     /// A product of inertia that the model's symmetry class prunes is not zero: the pruned
     /// equations would silently be wrong for this body.
@@ -51,7 +51,7 @@ pub enum ModelError {
     /// The pitch is so close to ±90° that the Euler-angle rates of 4.60 (tan θ, sec θ) are
     /// meaningless: the attitude must be carried by a quaternion there.
     #[error(
-        "Euler angles are singular: |cos θ| = {cos_theta} at pitch θ = {theta} rad is below {limit}"
+        "Euler angles are singular: |cos θ| = {cos_theta:e} at pitch θ = {theta} rad is below {limit:e}"
     )]
     GimbalLock {
         /// The pitch angle θ.

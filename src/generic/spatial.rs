@@ -7,10 +7,19 @@
 //! products, two 3×3 matrix–vector products and the attitude kinematics, with no allocation.
 //! Whatever a specialised form gains over it (zero products pruned, coefficients such as
 //! `I_zz − I_yy` hoisted, trigonometry shared) is the generator's doing.
+//!
+//! One cost is visible and deliberate: the Euler form takes `E` from nalgebra's
+//! `Rotation3::from_euler_angles` (three `sin_cos`) and computes the `sin_cos` of `φ` and `θ`
+//! again for 4.60, five in all where a fused hand-expansion of 4.57 would need three. Writing
+//! out the expansion is exactly the symbolic work the generator is checked on, so the generic
+//! form keeps nalgebra's rotation and stays independent of it.
 
 use super::error::{ModelError, check_mass};
 use super::kinematics::{body_to_space, euler_rates, quaternion_rate};
-use super::state::{ATTITUDE, EulerState, QuaternionState, attitude_quaternion, rates, velocity};
+use super::state::{
+    ATTITUDE, EulerState, POSITION, QuaternionState, RATES, VELOCITY, attitude_quaternion, rates,
+    velocity,
+};
 use crate::InertiaTensor;
 use nalgebra::{Matrix3, RealField, UnitQuaternion, Vector3};
 
@@ -51,6 +60,14 @@ impl<T: RealField + Copy> RigidBody<T> {
         })
     }
 
+    /// Validates a full matrix as an inertia tensor (4.12–4.14, see
+    /// [`InertiaTensor::from_matrix`]) and then builds the body as [`new`](Self::new) does;
+    /// an impossible tensor gives [`ModelError::Inertia`] naming the failed condition.
+    pub fn from_matrix(mass: f64, inertia: Matrix3<f64>) -> Result<Self, ModelError> {
+        check_mass(mass)?;
+        Self::new(mass, &InertiaTensor::from_matrix(inertia)?)
+    }
+
     /// The body-fixed rate of the velocity of G, 4.47–4.49: `v̇ = F/M − ω × v`.
     #[inline]
     pub fn translational_acceleration(
@@ -89,13 +106,13 @@ impl<T: RealField + Copy> RigidBody<T> {
         let (v, omega) = (velocity(state), rates(state));
         let (phi, theta, psi) = (state[ATTITUDE], state[ATTITUDE + 1], state[ATTITUDE + 2]);
         let mut out = EulerState::zeros();
-        out.fixed_rows_mut::<3>(0)
+        out.fixed_rows_mut::<3>(VELOCITY)
             .copy_from(&self.translational_acceleration(&v, &omega, force));
-        out.fixed_rows_mut::<3>(3)
+        out.fixed_rows_mut::<3>(RATES)
             .copy_from(&self.angular_acceleration(&omega, moment));
-        out.fixed_rows_mut::<3>(6)
+        out.fixed_rows_mut::<3>(POSITION)
             .copy_from(&(body_to_space(phi, theta, psi) * v));
-        out.fixed_rows_mut::<3>(9)
+        out.fixed_rows_mut::<3>(ATTITUDE)
             .copy_from(&euler_rates(phi, theta, &omega));
         out
     }
@@ -118,11 +135,11 @@ impl<T: RealField + Copy> RigidBody<T> {
         let q = attitude_quaternion(state);
         let q_dot = quaternion_rate(&q, &omega);
         let mut out = QuaternionState::zeros();
-        out.fixed_rows_mut::<3>(0)
+        out.fixed_rows_mut::<3>(VELOCITY)
             .copy_from(&self.translational_acceleration(&v, &omega, force));
-        out.fixed_rows_mut::<3>(3)
+        out.fixed_rows_mut::<3>(RATES)
             .copy_from(&self.angular_acceleration(&omega, moment));
-        out.fixed_rows_mut::<3>(6)
+        out.fixed_rows_mut::<3>(POSITION)
             .copy_from(&(UnitQuaternion::new_normalize(q) * v));
         out[ATTITUDE] = q_dot.w;
         out[ATTITUDE + 1] = q_dot.i;
