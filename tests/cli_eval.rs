@@ -37,11 +37,15 @@ fn eval(args: &[&str], input: &str) -> Run {
 
 /// The `generic` object of a successful run, as (key, value) pairs in printed order.
 fn generic(run: &Run) -> Vec<(String, f64)> {
+    section(run, "generic")
+}
+
+fn section(run: &Run, name: &str) -> Vec<(String, f64)> {
     assert!(run.ok, "eom eval failed: {}", run.stderr);
     let text = run.stdout.trim();
     // serde_json's map is sorted, so the printed order is read from the text itself.
     let parsed: Value = serde_json::from_str(text).unwrap();
-    let object = parsed["generic"].as_object().expect("a generic object");
+    let object = parsed[name].as_object().expect("an object per form");
     let mut keys: Vec<&String> = object.keys().collect();
     keys.sort_by_key(|k| text.find(&format!("\"{k}\"")).unwrap());
     keys.into_iter()
@@ -111,10 +115,11 @@ fn spatial_quaternion_shares_the_euler_rates_and_gives_half_q_omega() {
         TILTED,
     ));
     let keys: Vec<&str> = quat.iter().map(|(k, _)| k.as_str()).collect();
-    assert_eq!(&keys[9..], ["q0_dot", "q1_dot", "q2_dot", "q3_dot"]);
+    assert_eq!(&keys[9..12], ["phi_dot", "theta_dot", "psi_dot"]);
+    assert_eq!(&keys[12..], ["q0_dot", "q1_dot", "q2_dot", "q3_dot"]);
     // The accelerations come from one code path; the position rates from a matrix and a
     // quaternion rotation of one attitude, equal to a few ulps of |v| ≈ 1.1.
-    for (e, q) in euler.iter().zip(&quat).take(9) {
+    for (e, q) in euler.iter().zip(&quat).take(12) {
         assert_eq!(e.0, q.0);
         assert!((e.1 - q.1).abs() <= 1e-15, "{e:?} vs {q:?}");
     }
@@ -126,7 +131,7 @@ fn spatial_quaternion_shares_the_euler_rates_and_gives_half_q_omega() {
         &["--model", "spatial", "--kinematics", "quaternion"],
         &level,
     ));
-    let q_dot: Vec<f64> = at_rest[9..].iter().map(|(_, v)| *v).collect();
+    let q_dot: Vec<f64> = at_rest[12..].iter().map(|(_, v)| *v).collect();
     assert_eq!(q_dot, [0.0, 0.25, -0.5, 0.125]);
 }
 
@@ -236,4 +241,52 @@ fn missing_input_file_is_named() {
         .unwrap();
     assert!(!out.status.success());
     assert!(String::from_utf8_lossy(&out.stderr).contains("/nonexistent/eval.json"));
+}
+
+#[test]
+fn generated_and_generic_forms_agree_for_every_spatial_variant() {
+    for symmetry in ["full", "xz"] {
+        for kinematics in ["euler", "quaternion"] {
+            let args = [
+                "--model",
+                "spatial",
+                "--symmetry",
+                symmetry,
+                "--kinematics",
+                kinematics,
+            ];
+            let run = eval(&args, TILTED);
+            let (generated, generic) = (section(&run, "generated"), section(&run, "generic"));
+            assert_eq!(generated.len(), generic.len());
+            // Two f64 forms of one formula on values of order one: a few ulps, well below 1e-13.
+            for (g, n) in generated.iter().zip(&generic) {
+                assert_eq!(g.0, n.0);
+                assert!(
+                    (g.1 - n.1).abs() <= 1e-13 * (1.0 + n.1.abs()),
+                    "{symmetry} {kinematics}: {g:?} vs {n:?}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn quaternion_variant_at_ninety_degrees_pitch_omits_only_the_euler_rates() {
+    let vertical = TILTED.replace(&TILTED[TILTED.find("\"theta\"").unwrap()..], "\"theta\": 1.5707963267948966, \"psi\": 0.3}, \"force\": [1, 0, 0], \"moment\": [0, 0, 0.5]}");
+    let run = eval(
+        &["--model", "spatial", "--kinematics", "quaternion"],
+        &vertical,
+    );
+    let keys: Vec<String> = section(&run, "generated")
+        .into_iter()
+        .map(|(k, _)| k)
+        .collect();
+    assert!(!keys.iter().any(|k| k == "theta_dot"), "{keys:?}");
+    assert_eq!(keys.len(), 13);
+    let refused = eval(&["--model", "spatial", "--kinematics", "euler"], &vertical);
+    assert!(
+        !refused.ok && refused.stderr.contains("quaternion"),
+        "{}",
+        refused.stderr
+    );
 }

@@ -8,10 +8,12 @@
 
 use anyhow::{Context, Result, bail};
 use clap::ValueEnum;
+use eom::InertiaTensor;
 use eom::generic::{
     EulerState, Pendulum, PlanarBody, PlanarMidship, RigidBody, check_pitch,
     euler_state_to_quaternion_state,
 };
+use eom::models;
 use nalgebra::{Matrix3, Vector2, Vector3, Vector6};
 use serde::de::DeserializeOwned;
 use serde::ser::{Serialize, SerializeMap, Serializer};
@@ -68,7 +70,7 @@ enum Symmetry {
 }
 
 /// How a spatial body's attitude is carried.
-#[derive(Clone, Copy, ValueEnum)]
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
 enum Kinematics {
     /// Euler angles (4.57, 4.60).
     Euler,
@@ -86,11 +88,13 @@ pub fn run(args: Args) -> Result<()> {
         Model::PlanarSpace => planar_space(&parse(&text)?)?,
         Model::Spatial => spatial(&parse(&text)?, args.symmetry, args.kinematics)?,
     };
-    if let Some((key, value)) = derivative.iter().find(|(_, x)| !x.is_finite()) {
+    let all = derivative.generated.iter().chain(&derivative.generic);
+    if let Some((key, value)) = all.into_iter().find(|(_, x)| !x.is_finite()) {
         bail!("the derivative {key} is not finite ({value}); the state is outside the model");
     }
     let output = Output {
-        generic: Ordered(&derivative),
+        generated: Ordered(&derivative.generated),
+        generic: Ordered(&derivative.generic),
     };
     println!("{}", serde_json::to_string_pretty(&output)?);
     Ok(())
@@ -116,7 +120,14 @@ fn parse<T: DeserializeOwned>(text: &str) -> Result<T> {
 /// The printed object; a second key can sit beside `generic`.
 #[derive(SerializeDerive)]
 struct Output<'a> {
+    generated: Ordered<'a>,
     generic: Ordered<'a>,
+}
+
+/// One model evaluated both ways, keys in the state's order.
+struct Evaluation {
+    generated: Vec<(&'static str, f64)>,
+    generic: Vec<(&'static str, f64)>,
 }
 
 /// Named values serialised as a JSON object in the order given (the state's order).
@@ -125,6 +136,7 @@ struct Ordered<'a>(&'a [(&'static str, f64)]);
 impl Serialize for Ordered<'_> {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
         let mut map = serializer.serialize_map(Some(self.0.len()))?;
+        // Keys are in the state's order, which is why this is not a BTreeMap.
         for (key, value) in self.0 {
             map.serialize_entry(key, value)?;
         }
@@ -152,11 +164,18 @@ struct PendulumState {
     theta_dot: f64,
 }
 
-fn pendulum(input: &PendulumInput) -> Result<Vec<(&'static str, f64)>> {
+fn pendulum(input: &PendulumInput) -> Result<Evaluation> {
     let model = Pendulum::<f64>::new(input.i0, input.mass, input.g, input.h)?;
-    let state = Vector2::new(input.state.theta, input.state.theta_dot);
-    let d = model.rhs(&state, input.moment);
-    Ok(vec![("theta_dot", d[0]), ("theta_ddot", d[1])])
+    let generated = models::Pendulum::<f64>::new(input.i0, input.mass, input.g, input.h)?;
+    let state = [input.state.theta, input.state.theta_dot];
+    let keys = ["theta_dot", "theta_ddot"];
+    Ok(Evaluation {
+        generated: named(&keys, &generated.rhs(&state, input.moment)),
+        generic: named(
+            &keys,
+            model.rhs(&Vector2::from(state), input.moment).as_slice(),
+        ),
+    })
 }
 
 /// Input of the body-fixed planar models: `force` is `(F_x, F_y)` (or `(X, Y)`) in body
@@ -187,32 +206,42 @@ struct PlanarBodyState {
 const PLANAR_BODY_KEYS: [&str; 6] = ["u_dot", "v_dot", "r_dot", "x_dot", "y_dot", "psi_dot"];
 
 impl PlanarInput {
-    fn state(&self) -> Vector6<f64> {
+    fn state(&self) -> [f64; 6] {
         let s = &self.state;
-        Vector6::new(s.u, s.v, s.r, s.x, s.y, s.psi)
+        [s.u, s.v, s.r, s.x, s.y, s.psi]
     }
 
-    fn load(&self) -> Vector3<f64> {
-        Vector3::new(self.force[0], self.force[1], self.moment)
+    fn load(&self) -> [f64; 3] {
+        [self.force[0], self.force[1], self.moment]
     }
 }
 
-fn planar_g(input: &PlanarInput) -> Result<Vec<(&'static str, f64)>> {
+fn planar_g(input: &PlanarInput) -> Result<Evaluation> {
     if input.x_g.is_some() {
         bail!("key x_g belongs to --model planar-midship; at G the origin is G itself");
     }
     let model = PlanarBody::<f64>::new(input.mass, input.izz)?;
-    let d = model.rhs_body_at_g(&input.state(), &input.load());
-    Ok(named(&PLANAR_BODY_KEYS, d.as_slice()))
+    let generated = models::PlanarAtG::<f64>::new(input.mass, input.izz)?;
+    let (state, load) = (input.state(), input.load());
+    let d = model.rhs_body_at_g(&Vector6::from(state), &Vector3::from(load));
+    Ok(Evaluation {
+        generated: named(&PLANAR_BODY_KEYS, &generated.rhs(&state, &load)),
+        generic: named(&PLANAR_BODY_KEYS, d.as_slice()),
+    })
 }
 
-fn planar_midship(input: &PlanarInput) -> Result<Vec<(&'static str, f64)>> {
+fn planar_midship(input: &PlanarInput) -> Result<Evaluation> {
     let x_g = input
         .x_g
         .context("missing key x_g (position of G ahead of midship)")?;
     let model = PlanarMidship::<f64>::new(input.mass, input.izz, x_g)?;
-    let d = model.rhs_body_at_midship(&input.state(), &input.load());
-    Ok(named(&PLANAR_BODY_KEYS, d.as_slice()))
+    let generated = models::PlanarMidship::<f64>::new(input.mass, input.izz, x_g)?;
+    let (state, load) = (input.state(), input.load());
+    let d = model.rhs_body_at_midship(&Vector6::from(state), &Vector3::from(load));
+    Ok(Evaluation {
+        generated: named(&PLANAR_BODY_KEYS, &generated.rhs(&state, &load)),
+        generic: named(&PLANAR_BODY_KEYS, d.as_slice()),
+    })
 }
 
 /// Input of `--model planar-space`: `force` is `(F_X, F_Y)` in space axes.
@@ -237,14 +266,18 @@ struct PlanarSpaceState {
     psi_dot: f64,
 }
 
-fn planar_space(input: &PlanarSpaceInput) -> Result<Vec<(&'static str, f64)>> {
+fn planar_space(input: &PlanarSpaceInput) -> Result<Evaluation> {
     let model = PlanarBody::<f64>::new(input.mass, input.izz)?;
+    let generated = models::PlanarSpaceFixed::<f64>::new(input.mass, input.izz)?;
     let s = &input.state;
-    let state = Vector6::new(s.x, s.y, s.psi, s.x_dot, s.y_dot, s.psi_dot);
-    let load = Vector3::new(input.force[0], input.force[1], input.moment);
-    let d = model.rhs_space_fixed(&state, &load);
+    let state = [s.x, s.y, s.psi, s.x_dot, s.y_dot, s.psi_dot];
+    let load = [input.force[0], input.force[1], input.moment];
+    let d = model.rhs_space_fixed(&Vector6::from(state), &Vector3::from(load));
     let keys = ["x_dot", "y_dot", "psi_dot", "x_ddot", "y_ddot", "psi_ddot"];
-    Ok(named(&keys, d.as_slice()))
+    Ok(Evaluation {
+        generated: named(&keys, &generated.rhs(&state, &load)),
+        generic: named(&keys, d.as_slice()),
+    })
 }
 
 /// Input of `--model spatial`: the inertia tensor about G in the chapter's convention
@@ -288,35 +321,100 @@ const EULER_KEYS: [&str; 12] = [
     "psi_dot",
 ];
 
-const QUATERNION_KEYS: [&str; 13] = [
-    "u_dot", "v_dot", "w_dot", "p_dot", "q_dot", "r_dot", "x_dot", "y_dot", "z_dot", "q0_dot",
-    "q1_dot", "q2_dot", "q3_dot",
-];
+/// Quaternion variants print the Euler-angle keys (rates by 4.60) and then these.
+const QUATERNION_RATE_KEYS: [&str; 4] = ["q0_dot", "q1_dot", "q2_dot", "q3_dot"];
 
-fn spatial(
-    input: &SpatialInput,
-    symmetry: Symmetry,
-    kinematics: Kinematics,
-) -> Result<Vec<(&'static str, f64)>> {
+fn spatial(input: &SpatialInput, symmetry: Symmetry, kinematics: Kinematics) -> Result<Evaluation> {
     let matrix = Matrix3::from_fn(|r, c| input.inertia[r][c]);
     check_symmetry(&matrix, symmetry)?;
     let body = RigidBody::<f64>::from_matrix(input.mass, matrix)?;
+    let tensor = InertiaTensor::from_matrix(matrix)?;
     let state = spatial_state(&input.state);
     let (force, moment) = (Vector3::from(input.force), Vector3::from(input.moment));
-    match kinematics {
-        Kinematics::Euler => {
-            check_pitch(input.state.theta, MIN_COS_PITCH).context(
-                "Euler kinematics refused (use --kinematics quaternion near pitch ±90°)",
-            )?;
-            let d = body.rhs_euler(&state, &force, &moment);
-            Ok(named(&EULER_KEYS, d.as_slice()))
+    let pitch = check_pitch(input.state.theta, MIN_COS_PITCH);
+    if kinematics == Kinematics::Euler {
+        pitch
+            .clone()
+            .context("Euler kinematics refused (use --kinematics quaternion near pitch ±90°)")?;
+    }
+    let (mut generated, mut generic) = (Vec::new(), Vec::new());
+    if pitch.is_ok() {
+        let euler: [f64; 12] = state.into();
+        let g = generated_spatial_euler(
+            symmetry,
+            input.mass,
+            &tensor,
+            &euler,
+            &input.force,
+            &input.moment,
+        )?;
+        generated = named(&EULER_KEYS, &g);
+        generic = named(
+            &EULER_KEYS,
+            body.rhs_euler(&state, &force, &moment).as_slice(),
+        );
+    }
+    if kinematics == Kinematics::Quaternion {
+        let x = euler_state_to_quaternion_state(&state);
+        let quaternion: [f64; 13] = x.into();
+        let g = generated_spatial_quaternion(
+            symmetry,
+            input.mass,
+            &tensor,
+            &quaternion,
+            &input.force,
+            &input.moment,
+        )?;
+        let d = body.rhs_quaternion(&x, &force, &moment);
+        if pitch.is_err() {
+            // At pitch ±90° the Euler rates (4.60) do not exist; the rest is well defined.
+            generated = named(&EULER_KEYS[..9], &g[..9]);
+            generic = named(&EULER_KEYS[..9], &d.as_slice()[..9]);
         }
-        Kinematics::Quaternion => {
-            let x = euler_state_to_quaternion_state(&state);
-            let d = body.rhs_quaternion(&x, &force, &moment);
-            Ok(named(&QUATERNION_KEYS, d.as_slice()))
+        for (i, key) in QUATERNION_RATE_KEYS.iter().enumerate() {
+            generated.push((key, g[9 + i]));
+            generic.push((key, d[9 + i]));
         }
     }
+    Ok(Evaluation { generated, generic })
+}
+
+/// The generated Euler-angle variant of the symmetry class.
+fn generated_spatial_euler(
+    symmetry: Symmetry,
+    mass: f64,
+    tensor: &InertiaTensor,
+    state: &[f64; 12],
+    force: &[f64; 3],
+    moment: &[f64; 3],
+) -> Result<[f64; 12]> {
+    Ok(match symmetry {
+        Symmetry::Full => models::SpatialFullEuler::new(mass, tensor)?.rhs(state, force, moment),
+        Symmetry::Xz => models::SpatialXzEuler::new(mass, tensor)?.rhs(state, force, moment),
+        Symmetry::Principal => {
+            models::SpatialPrincipalEuler::new(mass, tensor)?.rhs(state, force, moment)
+        }
+    })
+}
+
+/// The generated quaternion variant of the symmetry class.
+fn generated_spatial_quaternion(
+    symmetry: Symmetry,
+    mass: f64,
+    tensor: &InertiaTensor,
+    state: &[f64; 13],
+    force: &[f64; 3],
+    moment: &[f64; 3],
+) -> Result<[f64; 13]> {
+    Ok(match symmetry {
+        Symmetry::Full => {
+            models::SpatialFullQuaternion::new(mass, tensor)?.rhs(state, force, moment)
+        }
+        Symmetry::Xz => models::SpatialXzQuaternion::new(mass, tensor)?.rhs(state, force, moment),
+        Symmetry::Principal => {
+            models::SpatialPrincipalQuaternion::new(mass, tensor)?.rhs(state, force, moment)
+        }
+    })
 }
 
 fn spatial_state(s: &SpatialState) -> EulerState<f64> {

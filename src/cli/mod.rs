@@ -1,9 +1,10 @@
 //! The subcommands of `eom`, one module each; this file only lists and dispatches them.
 
 mod derive;
-mod mass;
-mod swing;
 mod eval;
+mod mass;
+mod models;
+mod swing;
 
 use clap::Subcommand;
 
@@ -12,6 +13,8 @@ use clap::Subcommand;
 pub enum Command {
     /// Derive every equation of the chapter, prove it against the book, print the report.
     Derive(derive::Args),
+    /// List every generated model variant with its operation count per call.
+    Models(models::Args),
     /// Mass, centre of gravity, inertia tensor, principal axes and radii of gyration of a body
     /// described in a TOML file (4.12–4.23).
     Mass(mass::Args),
@@ -27,6 +30,7 @@ pub fn run(command: Command) -> anyhow::Result<()> {
     match command {
         Command::Derive(args) => derive::run(args),
         Command::Mass(args) => mass::run(args),
+        Command::Models(args) => models::run(args),
         Command::Swing(args) => swing::run(args),
         Command::Eval(args) => eval::run(args),
     }
