@@ -259,3 +259,56 @@ fn pruned_variants_name_the_product_they_cannot_carry() {
     assert!(SpatialFullEuler::<f64>::new(1.0, &iyz).is_ok());
     assert!(SpatialXzQuaternion::<f64>::new(1.0, &izx).is_ok());
 }
+
+#[test]
+fn pendulum_model_refuses_a_pivot_inertia_below_m_h_squared_as_the_generic_form_does() {
+    // I₀ = 1 < M h² = 4: I_G = I₀ − M h² would be negative (4.29).
+    let ours = Pendulum::<f64>::new(1.0, 1.0, 9.81, 2.0).unwrap_err();
+    let theirs = generic::Pendulum::<f64>::new(1.0, 1.0, 9.81, 2.0).unwrap_err();
+    assert!(matches!(ours, ModelError::Parameter { field: "I0", .. }));
+    assert_eq!(ours, theirs);
+    // A simple pendulum, I₀ = M h² exactly, is accepted by both.
+    assert!(Pendulum::<f64>::new(4.0, 1.0, 9.81, 2.0).is_ok());
+    assert!(generic::Pendulum::<f64>::new(4.0, 1.0, 9.81, 2.0).is_ok());
+}
+
+/// `S::new` on `tensor` must fail as the generic form does, with `SingularInertia`.
+fn refuses_singular<S: Spatial<f64>>(tensor: &InertiaTensor) -> bool {
+    matches!(
+        S::build(1.0, tensor),
+        Err(ModelError::SingularInertia { .. })
+    )
+}
+
+#[test]
+fn spatial_models_refuse_a_tensor_whose_determinant_leaves_f64_as_the_generic_form_does() {
+    // Valid tensors (1, 1.5, 2)·s whose determinant underflows (s = 1e-110) or overflows
+    // (s = 1e110): 1/det would make every rate NaN.
+    for s in [1e-110, 1e110] {
+        let xz = InertiaTensor::new(s, 1.5 * s, 2.0 * s, 0.0, 0.0, 0.1 * s).unwrap();
+        let principal = InertiaTensor::new(s, 1.5 * s, 2.0 * s, 0.0, 0.0, 0.0).unwrap();
+        let generic_refuses = |t| generic::RigidBody::<f64>::new(1.0, t).is_err();
+        assert!(
+            generic_refuses(&xz) && generic_refuses(&principal),
+            "s = {s:e}"
+        );
+        assert!(refuses_singular::<SpatialFullEuler<f64>>(&xz), "s = {s:e}");
+        assert!(
+            refuses_singular::<SpatialFullQuaternion<f64>>(&xz),
+            "s = {s:e}"
+        );
+        assert!(refuses_singular::<SpatialXzEuler<f64>>(&xz), "s = {s:e}");
+        assert!(
+            refuses_singular::<SpatialXzQuaternion<f64>>(&xz),
+            "s = {s:e}"
+        );
+        assert!(
+            refuses_singular::<SpatialPrincipalEuler<f64>>(&principal),
+            "s = {s:e}"
+        );
+        assert!(
+            refuses_singular::<SpatialPrincipalQuaternion<f64>>(&principal),
+            "s = {s:e}"
+        );
+    }
+}
