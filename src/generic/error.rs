@@ -42,7 +42,7 @@ pub enum ModelError {
         class: &'static str,
     },
     /// The inertia tensor passed validation but its inverse could not be formed in floating
-    /// point (a determinant that underflows).
+    /// point (a determinant that underflows or overflows).
     #[error("inertia tensor cannot be inverted (determinant {determinant})")]
     SingularInertia {
         /// The determinant of `[I]`.
@@ -109,4 +109,21 @@ pub(crate) fn check_finite(field: &'static str, value: f64) -> Result<f64, Model
             requirement: "finite",
         })
     }
+}
+
+/// Relative slack in the check `I₀ ≥ M h²`: a simple pendulum has `I₀ = M h²` exactly, and
+/// the product computed by the caller may exceed `I₀` by a few ulps.
+const STEINER_SLACK: f64 = 1e-12;
+
+/// Refuses `I₀ < M h²` (4.29: the moment about G, `I_G = I₀ − M h²`, cannot be negative),
+/// with a relative slack for a simple pendulum computed in floating point.
+pub(crate) fn check_steiner(i0: f64, mass: f64, h: f64) -> Result<(), ModelError> {
+    if i0 < mass * h * h * (1.0 - STEINER_SLACK) {
+        return Err(ModelError::Parameter {
+            field: "I0",
+            value: i0,
+            requirement: "at least M h² (4.29: I_G = I0 − M h² is not negative)",
+        });
+    }
+    Ok(())
 }

@@ -3,12 +3,10 @@
 //! State `[θ, θ̇]`. The two parameter-only coefficients, `M g h / I₀` and `1 / I₀`, are
 //! computed once in [`Pendulum::new`]; a call costs one `sin` and a few multiplications.
 
-use super::error::{ModelError, check_finite, check_mass, check_non_negative, check_positive};
+use super::error::{
+    ModelError, check_finite, check_mass, check_non_negative, check_positive, check_steiner,
+};
 use nalgebra::{RealField, SVector, Vector2};
-
-/// Relative slack in the check `I₀ ≥ M h²`: a simple pendulum has `I₀ = M h²` exactly, and
-/// the product computed by the caller may exceed `I₀` by a few ulps.
-const STEINER_SLACK: f64 = 1e-12;
 
 /// A compound pendulum swinging about a fixed horizontal axis through the pivot O (4.24).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -40,13 +38,7 @@ impl<T: RealField + Copy> Pendulum<T> {
         let mass = check_mass(mass)?;
         let g = check_finite("g", g)?;
         let h = check_non_negative("h", h)?;
-        if i0 < mass * h * h * (1.0 - STEINER_SLACK) {
-            return Err(ModelError::Parameter {
-                field: "I0",
-                value: i0,
-                requirement: "at least M h² (4.29: I_G = I0 − M h² is not negative)",
-            });
-        }
+        check_steiner(i0, mass, h)?;
         Ok(Self {
             i0: nalgebra::convert(i0),
             mass: nalgebra::convert(mass),

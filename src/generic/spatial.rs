@@ -49,9 +49,12 @@ impl<T: RealField + Copy> RigidBody<T> {
     pub fn new(mass: f64, inertia: &InertiaTensor) -> Result<Self, ModelError> {
         let mass = check_mass(mass)?;
         let matrix = inertia.matrix();
-        let inverse = matrix.try_inverse().ok_or(ModelError::SingularInertia {
-            determinant: matrix.determinant(),
-        })?;
+        // A determinant that overflows gives a "successful" inverse of NaNs; refuse it too.
+        let determinant = matrix.determinant();
+        let inverse = matrix
+            .try_inverse()
+            .filter(|_| determinant.is_normal())
+            .ok_or(ModelError::SingularInertia { determinant })?;
         Ok(Self {
             mass: nalgebra::convert(mass),
             inv_mass: nalgebra::convert(1.0 / mass),

@@ -3,7 +3,9 @@
 use super::generated::pendulum as generated;
 use super::scalar;
 use crate::generic::ModelError;
-use crate::generic::error::{check_finite, check_mass, check_non_negative, check_positive};
+use crate::generic::error::{
+    check_finite, check_mass, check_non_negative, check_positive, check_steiner,
+};
 use simba::simd::SimdRealField;
 
 /// The compound pendulum I₀θ̈ = −Mgh sin θ + M_O, state `[θ, θ̇]`.
@@ -22,7 +24,7 @@ pub struct Pendulum<T> {
 }
 
 impl<T: SimdRealField + Copy> Pendulum<T> {
-    /// Validates I₀ > 0 (about the pivot), M > 0, g finite, h ≥ 0.
+    /// Validates I₀ > 0 (about the pivot), M > 0, g finite, h ≥ 0 and I₀ ≥ M h² (4.29).
     pub fn new(i0: f64, mass: f64, g: f64, h: f64) -> Result<Self, ModelError> {
         let parameters = generated::Parameters {
             i0: check_positive("I0", i0)?,
@@ -30,6 +32,7 @@ impl<T: SimdRealField + Copy> Pendulum<T> {
             g: check_finite("g", g)?,
             h: check_non_negative("h", h)?,
         };
+        check_steiner(i0, mass, h)?;
         Ok(Self {
             coefficients: generated::Coefficients::new(&parameters),
             i0: scalar(i0),

@@ -58,6 +58,18 @@ fn check_symmetry(inertia: &InertiaTensor, symmetry: Symmetry) -> Result<(), Mod
     Ok(())
 }
 
+/// The generated coefficients hold [I]⁻¹ through 1/det[I]: a determinant that underflows or
+/// overflows in f64 would make them infinite or zero and every rate NaN or wrong, so it is
+/// refused as the generic form refuses it.
+fn check_invertible(inertia: &InertiaTensor) -> Result<(), ModelError> {
+    let determinant = inertia.matrix().determinant();
+    if determinant.is_normal() {
+        Ok(())
+    } else {
+        Err(ModelError::SingularInertia { determinant })
+    }
+}
+
 /// What every spatial variant keeps beside its coefficients: for the kinetic energy.
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct Body<T> {
@@ -106,6 +118,7 @@ macro_rules! spatial_model {
             pub fn new(mass: f64, inertia: &InertiaTensor) -> Result<Self, ModelError> {
                 let mass = check_mass(mass)?;
                 check_symmetry(inertia, $symmetry)?;
+                check_invertible(inertia)?;
                 let parameters = generated::$module::Parameters {
                     mass,
                     ixx: inertia.ixx(),

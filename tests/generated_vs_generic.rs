@@ -1,0 +1,314 @@
+//! The generated models against the independent nalgebra forms (`eom::generic`), variant by
+//! variant: at random states, at the extremes (pitch within 1e-6 rad of ±90°, rates up to
+//! 10³ rad/s, inertia ratios up to 10⁶), a pruned variant against the full one for a body
+//! whose pruned products are zero, and f32 against f64.
+//!
+//! Every comparison is relative to the size of the terms of each output (see `common`), not
+//! to the output itself, because the two forms add the same terms in different orders and an
+//! output may cancel.
+
+#[macro_use]
+mod common;
+
+use common::{
+    Class, PendulumCase, Pitch, PlanarCase, Spatial, SpatialCase, at_g_scale, generated, generic,
+    inverse_scale, midship_scale, pendulum_case, pendulum_scale, planar_case, relative_gap,
+    space_fixed_scale, spatial_case, spatial_scale,
+};
+use eom::InertiaTensor;
+use eom::generic::{self, ModelError};
+use eom::models::{
+    Pendulum, PlanarAtG, PlanarMidship, PlanarSpaceFixed, SpatialFullEuler, SpatialFullQuaternion,
+    SpatialPrincipalEuler, SpatialPrincipalQuaternion, SpatialXzEuler, SpatialXzQuaternion,
+};
+use nalgebra::{Quaternion, UnitQuaternion, Vector3, Vector6};
+
+/// Relative 1e-12 of the size of the terms: two f64 forms of one formula. Each evaluates an
+/// output through at most ~16 roundings, so each is within 16·(ε/2)·scale of the exact value
+/// and the two within 16ε·scale ≈ 3.6e-15·scale to first order. The scale includes the
+/// conditioning of the f64 inverse of [I] (and of the midship mass matrix): the generator
+/// inverts by cofactors over an expanded determinant, nalgebra by its own cofactor order, and
+/// for a rotated thin rod (1, 10⁶, 10⁶) the determinant is 10⁶ times smaller than its terms,
+/// so the two inverses differ by ~10⁶ε relative to [I]⁻¹ itself (2e-12 seen when the scale
+/// leaves this out); relative to the terms they agree to a few ε.
+const F64_TOLERANCE: f64 = 1e-12;
+
+/// A pruned variant against the full one, for a body whose pruned products are zero: two f64
+/// evaluations of the same formula with the zero terms dropped, each within 16·(ε/2)·scale,
+/// so 16ε apart at most; 64ε leaves a factor of four for the second-order terms.
+const PRUNED_TOLERANCE: f64 = 64.0 * f64::EPSILON;
+
+/// f32 against f64 at the same (f32-rounded) state and inputs, in units of f32::EPSILON times
+/// the term size. The f32 coefficients are the f64 ones rounded once, the trigonometry is
+/// within an ulp, and the longest path from a rounded input to an output (the full tensor's
+/// ṗ: H = [I]ω, ω × H, the bracket, [I]⁻¹ times it; or φ̇ through sin, cos, 1/cos θ) has at
+/// most ~12 roundings of ε/2: 6ε. The f64 reference is 10⁹ times more accurate. 16ε allows
+/// a factor of 2.5 over the count.
+const F32_TOLERANCE: f64 = 16.0;
+
+/// Generated against generic for one spatial variant, relative to the f64 term sizes.
+fn spatial_gap<S: Spatial<f64>>(case: &SpatialCase) -> f64 {
+    let inverse = inverse_scale(&case.tensor.matrix()).terms;
+    let scale = spatial_scale(case, S::KINEMATICS, &inverse);
+    relative_gap(&generated::<S>(case), &generic(case, S::KINEMATICS), &scale)
+}
+
+/// A pruned variant `P` against the full variant `F` on a body of `P`'s class.
+fn pruned_gap<P: Spatial<f64>, F: Spatial<f64>>(case: &SpatialCase) -> f64 {
+    let inverse = inverse_scale(&case.tensor.matrix()).terms;
+    let scale = spatial_scale(case, P::KINEMATICS, &inverse);
+    relative_gap(&generated::<P>(case), &generated::<F>(case), &scale)
+}
+
+/// The case with its state and inputs rounded to f32 (and read back as f64).
+fn rounded(case: &SpatialCase) -> SpatialCase {
+    let round = |v: &Vector3<f64>| v.map(|x| f64::from(x as f32));
+    let q = case.quaternion.coords.map(|x| f64::from(x as f32));
+    SpatialCase {
+        velocity: round(&case.velocity),
+        omega: round(&case.omega),
+        position: round(&case.position),
+        euler: round(&case.euler),
+        quaternion: UnitQuaternion::new_unchecked(Quaternion::from(q)),
+        force: round(&case.force),
+        moment: round(&case.moment),
+        ..case.clone()
+    }
+}
+
+/// The f32 model `S32` against the f64 model `S64` of the same variant at the f32-rounded
+/// case, in units of f32::EPSILON times the term size with exact coefficients.
+fn f32_gap<S32: Spatial<f32>, S64: Spatial<f64>>(case: &SpatialCase) -> f64 {
+    let case = rounded(case);
+    let state = case.state(S64::KINEMATICS);
+    let narrow = |v: &Vector3<f64>| v.map(|x| x as f32).into();
+    let model = S32::build(case.mass, &case.tensor).expect("a valid body");
+    let state32: Vec<f32> = state.iter().map(|&x| x as f32).collect();
+    let single = model.eval(&state32, &narrow(&case.force), &narrow(&case.moment));
+    let single: Vec<f64> = single.into_iter().map(f64::from).collect();
+    let inverse = inverse_scale(&case.tensor.matrix()).value;
+    let scale = spatial_scale(&case, S64::KINEMATICS, &inverse);
+    relative_gap(&single, &generated::<S64>(&case), &scale) / f64::from(f32::EPSILON)
+}
+
+fn pendulum_gap(case: &PendulumCase) -> f64 {
+    let (i0, m, g, h) = (case.i0, case.mass, case.g, case.h);
+    let ours = Pendulum::<f64>::new(i0, m, g, h)
+        .unwrap()
+        .rhs(&case.state, case.moment);
+    let theirs = generic::Pendulum::<f64>::new(i0, m, g, h).unwrap();
+    let theirs = theirs.rhs(&case.state.into(), case.moment);
+    relative_gap(&ours, theirs.as_slice(), &pendulum_scale(case))
+}
+
+fn at_g_gap(case: &PlanarCase) -> f64 {
+    let ours = PlanarAtG::<f64>::new(case.mass, case.izz).unwrap();
+    let theirs = generic::PlanarBody::<f64>::new(case.mass, case.izz).unwrap();
+    let theirs = theirs.rhs_body_at_g(&Vector6::from(case.state), &case.load.into());
+    let ours = ours.rhs(&case.state, &case.load);
+    relative_gap(&ours, theirs.as_slice(), &at_g_scale(case))
+}
+
+fn midship_gap(case: &PlanarCase) -> f64 {
+    let ours = PlanarMidship::<f64>::new(case.mass, case.izz, case.x_g).unwrap();
+    let theirs = generic::PlanarMidship::<f64>::new(case.mass, case.izz, case.x_g).unwrap();
+    let theirs = theirs.rhs_body_at_midship(&Vector6::from(case.state), &case.load.into());
+    let ours = ours.rhs(&case.state, &case.load);
+    relative_gap(&ours, theirs.as_slice(), &midship_scale(case, true))
+}
+
+fn space_fixed_gap(case: &PlanarCase) -> f64 {
+    let state = case.space_fixed_state();
+    let ours = PlanarSpaceFixed::<f64>::new(case.mass, case.izz).unwrap();
+    let theirs = generic::PlanarBody::<f64>::new(case.mass, case.izz).unwrap();
+    let theirs = theirs.rhs_space_fixed(&Vector6::from(state), &case.load.into());
+    let ours = ours.rhs(&state, &case.load);
+    relative_gap(&ours, theirs.as_slice(), &space_fixed_scale(case))
+}
+
+/// The planar models and the pendulum in f32 against f64 at the f32-rounded state, in units
+/// of f32::EPSILON times the term size with exact coefficients.
+fn planar_f32_gap(case: &PlanarCase) -> f64 {
+    let state = case.state.map(|x| x as f32);
+    let load = case.load.map(|x| x as f32);
+    let widen = |a: [f32; 6]| a.map(f64::from);
+    let rounded = PlanarCase {
+        state: state.map(f64::from),
+        load: load.map(f64::from),
+        ..case.clone()
+    };
+    let (m, izz, x_g) = (case.mass, case.izz, case.x_g);
+    let at_g = PlanarAtG::<f32>::new(m, izz).unwrap().rhs(&state, &load);
+    let at_g64 = PlanarAtG::<f64>::new(m, izz).unwrap();
+    let at_g64 = at_g64.rhs(&rounded.state, &rounded.load);
+    let midship = PlanarMidship::<f32>::new(m, izz, x_g)
+        .unwrap()
+        .rhs(&state, &load);
+    let midship64 = PlanarMidship::<f64>::new(m, izz, x_g).unwrap();
+    let midship64 = midship64.rhs(&rounded.state, &rounded.load);
+    let fixed_state = rounded.space_fixed_state().map(|x| x as f32);
+    let fixed = PlanarSpaceFixed::<f32>::new(m, izz)
+        .unwrap()
+        .rhs(&fixed_state, &load);
+    let fixed64 = PlanarSpaceFixed::<f64>::new(m, izz).unwrap();
+    let fixed64 = fixed64.rhs(&rounded.space_fixed_state(), &rounded.load);
+    let gaps = [
+        relative_gap(&widen(at_g), &at_g64, &at_g_scale(&rounded)),
+        relative_gap(&widen(midship), &midship64, &midship_scale(&rounded, false)),
+        relative_gap(&widen(fixed), &fixed64, &space_fixed_scale(&rounded)),
+    ];
+    gaps.into_iter().fold(0.0, f64::max) / f64::from(f32::EPSILON)
+}
+
+fn pendulum_f32_gap(case: &PendulumCase) -> f64 {
+    let (i0, m, g, h) = (case.i0, case.mass, case.g, case.h);
+    let state = case.state.map(|x| x as f32);
+    let moment = case.moment as f32;
+    let rounded = PendulumCase {
+        state: state.map(f64::from),
+        moment: f64::from(moment),
+        ..case.clone()
+    };
+    let single = Pendulum::<f32>::new(i0, m, g, h)
+        .unwrap()
+        .rhs(&state, moment);
+    let double = Pendulum::<f64>::new(i0, m, g, h).unwrap();
+    let double = double.rhs(&rounded.state, rounded.moment);
+    let gap = relative_gap(&single.map(f64::from), &double, &pendulum_scale(&rounded));
+    gap / f64::from(f32::EPSILON)
+}
+
+use Class::{Full, Principal, Xz};
+use Pitch::{NearVertical, Random};
+type FullEuler = SpatialFullEuler<f64>;
+type FullQuaternion = SpatialFullQuaternion<f64>;
+type XzEuler = SpatialXzEuler<f64>;
+type XzQuaternion = SpatialXzQuaternion<f64>;
+type PrincipalEuler = SpatialPrincipalEuler<f64>;
+type PrincipalQuaternion = SpatialPrincipalQuaternion<f64>;
+
+properties! {
+    pendulum_matches_generic: pendulum_case(), pendulum_gap, F64_TOLERANCE;
+    planar_at_g_matches_generic: planar_case(), at_g_gap, F64_TOLERANCE;
+    planar_midship_matches_generic: planar_case(), midship_gap, F64_TOLERANCE;
+    planar_space_fixed_matches_generic: planar_case(), space_fixed_gap, F64_TOLERANCE;
+    full_euler_matches_generic: spatial_case(Full, Random), spatial_gap::<FullEuler>, F64_TOLERANCE;
+    full_euler_matches_generic_near_vertical: spatial_case(Full, NearVertical), spatial_gap::<FullEuler>, F64_TOLERANCE;
+    full_quaternion_matches_generic: spatial_case(Full, Random), spatial_gap::<FullQuaternion>, F64_TOLERANCE;
+    xz_euler_matches_generic: spatial_case(Xz, Random), spatial_gap::<XzEuler>, F64_TOLERANCE;
+    xz_euler_matches_generic_near_vertical: spatial_case(Xz, NearVertical), spatial_gap::<XzEuler>, F64_TOLERANCE;
+    xz_quaternion_matches_generic: spatial_case(Xz, Random), spatial_gap::<XzQuaternion>, F64_TOLERANCE;
+    principal_euler_matches_generic: spatial_case(Principal, Random), spatial_gap::<PrincipalEuler>, F64_TOLERANCE;
+    principal_euler_matches_generic_near_vertical: spatial_case(Principal, NearVertical), spatial_gap::<PrincipalEuler>, F64_TOLERANCE;
+    principal_quaternion_matches_generic: spatial_case(Principal, Random), spatial_gap::<PrincipalQuaternion>, F64_TOLERANCE;
+    xz_euler_equals_full_euler_without_ixy_iyz: spatial_case(Xz, NearVertical), pruned_gap::<XzEuler, FullEuler>, PRUNED_TOLERANCE;
+    principal_euler_equals_full_euler_without_products: spatial_case(Principal, Random), pruned_gap::<PrincipalEuler, FullEuler>, PRUNED_TOLERANCE;
+    principal_euler_equals_xz_euler_without_ixz: spatial_case(Principal, Random), pruned_gap::<PrincipalEuler, XzEuler>, PRUNED_TOLERANCE;
+    xz_quaternion_equals_full_quaternion_without_ixy_iyz: spatial_case(Xz, Random), pruned_gap::<XzQuaternion, FullQuaternion>, PRUNED_TOLERANCE;
+    principal_quaternion_equals_full_quaternion_without_products: spatial_case(Principal, Random), pruned_gap::<PrincipalQuaternion, FullQuaternion>, PRUNED_TOLERANCE;
+    full_euler_f32_matches_f64: spatial_case(Full, Random), f32_gap::<SpatialFullEuler<f32>, FullEuler>, F32_TOLERANCE;
+    full_euler_f32_matches_f64_near_vertical: spatial_case(Full, NearVertical), f32_gap::<SpatialFullEuler<f32>, FullEuler>, F32_TOLERANCE;
+    full_quaternion_f32_matches_f64: spatial_case(Full, Random), f32_gap::<SpatialFullQuaternion<f32>, FullQuaternion>, F32_TOLERANCE;
+    xz_euler_f32_matches_f64: spatial_case(Xz, NearVertical), f32_gap::<SpatialXzEuler<f32>, XzEuler>, F32_TOLERANCE;
+    xz_quaternion_f32_matches_f64: spatial_case(Xz, Random), f32_gap::<SpatialXzQuaternion<f32>, XzQuaternion>, F32_TOLERANCE;
+    principal_euler_f32_matches_f64: spatial_case(Principal, NearVertical), f32_gap::<SpatialPrincipalEuler<f32>, PrincipalEuler>, F32_TOLERANCE;
+    principal_quaternion_f32_matches_f64: spatial_case(Principal, Random), f32_gap::<SpatialPrincipalQuaternion<f32>, PrincipalQuaternion>, F32_TOLERANCE;
+    planar_f32_matches_f64: planar_case(), planar_f32_gap, F32_TOLERANCE;
+    pendulum_f32_matches_f64: pendulum_case(), pendulum_f32_gap, F32_TOLERANCE;
+}
+
+#[test]
+fn xz_variants_refuse_a_tensor_with_ixy_and_name_it() {
+    let tensor = InertiaTensor::new(2.0, 3.0, 4.0, 0.1, 0.0, 0.2).unwrap();
+    for result in [
+        SpatialXzEuler::<f64>::new(1.0, &tensor).map(|_| ()),
+        SpatialXzQuaternion::<f64>::new(1.0, &tensor).map(|_| ()),
+    ] {
+        let error = result.unwrap_err();
+        assert!(matches!(
+            error,
+            ModelError::SymmetryClass {
+                field: "Ixy",
+                value: 0.1,
+                class: "xz"
+            }
+        ));
+        assert!(error.to_string().contains("Ixy"), "{error}");
+    }
+}
+
+#[test]
+fn pruned_variants_name_the_product_they_cannot_carry() {
+    let iyz = InertiaTensor::new(2.0, 3.0, 4.0, 0.0, -0.1, 0.2).unwrap();
+    let error = SpatialXzEuler::<f64>::new(1.0, &iyz).unwrap_err();
+    assert!(matches!(
+        error,
+        ModelError::SymmetryClass { field: "Iyz", .. }
+    ));
+    let izx = InertiaTensor::new(2.0, 3.0, 4.0, 0.0, 0.0, 0.2).unwrap();
+    let error = SpatialPrincipalQuaternion::<f64>::new(1.0, &izx).unwrap_err();
+    assert!(matches!(
+        error,
+        ModelError::SymmetryClass {
+            field: "Ixz",
+            class: "principal",
+            ..
+        }
+    ));
+    // The full class carries every product, and the xz class carries I_xz.
+    assert!(SpatialFullEuler::<f64>::new(1.0, &iyz).is_ok());
+    assert!(SpatialXzQuaternion::<f64>::new(1.0, &izx).is_ok());
+}
+
+#[test]
+fn pendulum_model_refuses_a_pivot_inertia_below_m_h_squared_as_the_generic_form_does() {
+    // I₀ = 1 < M h² = 4: I_G = I₀ − M h² would be negative (4.29).
+    let ours = Pendulum::<f64>::new(1.0, 1.0, 9.81, 2.0).unwrap_err();
+    let theirs = generic::Pendulum::<f64>::new(1.0, 1.0, 9.81, 2.0).unwrap_err();
+    assert!(matches!(ours, ModelError::Parameter { field: "I0", .. }));
+    assert_eq!(ours, theirs);
+    // A simple pendulum, I₀ = M h² exactly, is accepted by both.
+    assert!(Pendulum::<f64>::new(4.0, 1.0, 9.81, 2.0).is_ok());
+    assert!(generic::Pendulum::<f64>::new(4.0, 1.0, 9.81, 2.0).is_ok());
+}
+
+/// `S::new` on `tensor` must fail as the generic form does, with `SingularInertia`.
+fn refuses_singular<S: Spatial<f64>>(tensor: &InertiaTensor) -> bool {
+    matches!(
+        S::build(1.0, tensor),
+        Err(ModelError::SingularInertia { .. })
+    )
+}
+
+#[test]
+fn spatial_models_refuse_a_tensor_whose_determinant_leaves_f64_as_the_generic_form_does() {
+    // Valid tensors (1, 1.5, 2)·s whose determinant underflows (s = 1e-110) or overflows
+    // (s = 1e110): 1/det would make every rate NaN.
+    for s in [1e-110, 1e110] {
+        let xz = InertiaTensor::new(s, 1.5 * s, 2.0 * s, 0.0, 0.0, 0.1 * s).unwrap();
+        let principal = InertiaTensor::new(s, 1.5 * s, 2.0 * s, 0.0, 0.0, 0.0).unwrap();
+        let generic_refuses = |t| generic::RigidBody::<f64>::new(1.0, t).is_err();
+        assert!(
+            generic_refuses(&xz) && generic_refuses(&principal),
+            "s = {s:e}"
+        );
+        assert!(refuses_singular::<SpatialFullEuler<f64>>(&xz), "s = {s:e}");
+        assert!(
+            refuses_singular::<SpatialFullQuaternion<f64>>(&xz),
+            "s = {s:e}"
+        );
+        assert!(refuses_singular::<SpatialXzEuler<f64>>(&xz), "s = {s:e}");
+        assert!(
+            refuses_singular::<SpatialXzQuaternion<f64>>(&xz),
+            "s = {s:e}"
+        );
+        assert!(
+            refuses_singular::<SpatialPrincipalEuler<f64>>(&principal),
+            "s = {s:e}"
+        );
+        assert!(
+            refuses_singular::<SpatialPrincipalQuaternion<f64>>(&principal),
+            "s = {s:e}"
+        );
+    }
+}
