@@ -87,7 +87,12 @@ pub fn jacobi(u: f64, m: f64) -> Result<Jacobi, EllipticError> {
     }
     let (sn, cn) = phi.sin_cos();
     let dn = (1.0 - m * sn * sn).sqrt();
-    Ok(Jacobi { sn, cn, dn, am: phi })
+    Ok(Jacobi {
+        sn,
+        cn,
+        dn,
+        am: phi,
+    })
 }
 
 #[cfg(test)]

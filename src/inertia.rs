@@ -240,13 +240,19 @@ mod tests {
     fn asymmetric_matrix_is_refused() {
         let m = Matrix3::new(2.0, 0.1, 0.0, 0.0, 2.0, 0.0, 0.0, 0.0, 2.0);
         let err = InertiaTensor::from_matrix(m).unwrap_err();
-        assert!(matches!(err, InertiaError::NotSymmetric { upper: "Ixy", .. }));
+        assert!(matches!(
+            err,
+            InertiaError::NotSymmetric { upper: "Ixy", .. }
+        ));
     }
 
     #[test]
     fn triangle_violation_names_the_large_moment() {
         let err = InertiaTensor::new(1.0, 1.0, 3.0, 0.0, 0.0, 0.0).unwrap_err();
-        assert!(matches!(err, InertiaError::TriangleInequality { c: "Izz", .. }));
+        assert!(matches!(
+            err,
+            InertiaError::TriangleInequality { c: "Izz", .. }
+        ));
     }
 
     #[test]
@@ -267,7 +273,12 @@ mod tests {
     fn principal_moments_of_a_rotated_tensor() {
         let t = InertiaTensor::new(3.0, 3.0, 4.0, -1.0, 0.0, 0.0).unwrap();
         let (moments, axes) = t.principal();
-        assert!((moments - nalgebra::Vector3::new(2.0, 4.0, 4.0)).abs().max() < 1e-12);
+        assert!(
+            (moments - nalgebra::Vector3::new(2.0, 4.0, 4.0))
+                .abs()
+                .max()
+                < 1e-12
+        );
         let back = axes * Matrix3::from_diagonal(&moments) * axes.transpose();
         assert!((back - t.matrix()).abs().max() < 1e-12);
     }

@@ -10,5 +10,7 @@
 
 pub mod elliptic;
 mod inertia;
+pub mod integrate;
+pub mod reference;
 
 pub use inertia::{InertiaError, InertiaTensor};

@@ -1,0 +1,337 @@
+//! Dormand–Prince 8(5,3), as in Hairer's code DOP853 (Hairer, Nørsett & Wanner, *Solving ODEs
+//! I*, §II.10): twelve stages of an eighth-order method, whose error is estimated by a
+//! fifth-order embedded solution corrected by a third-order one,
+//! `err = |h| · e₅ / √(N · (e₅² + 0.01 e₃²))` in the weighted RMS norm (Hairer's "8(5,3)").
+//!
+//! The thirteenth evaluation, f(tₙ₊₁, yₙ₊₁), is made only when the step is accepted and is
+//! the first stage of the next step: 12 RHS evaluations per accepted step, 11 per rejected one.
+//! Step control: the classical controller (β = 0, α = 1/8), step ratios in [0.333, 6], as in
+//! Hairer's code. Dense output (three more stages per step) is not implemented; use
+//! [`Dopri5::solve_at`](super::Dopri5::solve_at) when output between steps is needed.
+//!
+//! The coefficients are Hairer's published constants; the tests check the tableau's row sums
+//! and order conditions and the method's order of convergence.
+
+use nalgebra::{RealField, SVector};
+
+use super::controller::{PiController, Progress, initial_step};
+use super::{AdaptiveOptions, IntegrateError, Integrator, OdeSystem, Stats, check_finite};
+use super::{check_interval, lit};
+
+/// The rows aᵢⱼ of stages 2–12 (Hairer's `dop853.f`).
+const A: [&[f64]; 11] = [
+    &[0.05260015195876773],
+    &[0.0197250569845379, 0.0591751709536137],
+    &[0.02958758547680685, 0.0, 0.08876275643042054],
+    &[
+        0.2413651341592667,
+        0.0,
+        -0.8845494793282861,
+        0.924834003261792,
+    ],
+    &[
+        0.037037037037037035,
+        0.0,
+        0.0,
+        0.17082860872947386,
+        0.12546768756682242,
+    ],
+    &[
+        0.037109375,
+        0.0,
+        0.0,
+        0.17025221101954405,
+        0.06021653898045596,
+        -0.017578125,
+    ],
+    &[
+        0.03709200011850479,
+        0.0,
+        0.0,
+        0.17038392571223998,
+        0.10726203044637328,
+        -0.015319437748624402,
+        0.008273789163814023,
+    ],
+    &[
+        0.6241109587160757,
+        0.0,
+        0.0,
+        -3.3608926294469414,
+        -0.868219346841726,
+        27.59209969944671,
+        20.154067550477894,
+        -43.48988418106996,
+    ],
+    &[
+        0.47766253643826434,
+        0.0,
+        0.0,
+        -2.4881146199716677,
+        -0.590290826836843,
+        21.230051448181193,
+        15.279233632882423,
+        -33.28821096898486,
+        -0.020331201708508627,
+    ],
+    &[
+        -0.9371424300859873,
+        0.0,
+        0.0,
+        5.186372428844064,
+        1.0914373489967295,
+        -8.149787010746927,
+        -18.52006565999696,
+        22.739487099350505,
+        2.4936055526796523,
+        -3.0467644718982196,
+    ],
+    &[
+        2.273310147516538,
+        0.0,
+        0.0,
+        -10.53449546673725,
+        -2.0008720582248625,
+        -17.9589318631188,
+        27.94888452941996,
+        -2.8589982771350235,
+        -8.87285693353063,
+        12.360567175794303,
+        0.6433927460157636,
+    ],
+];
+/// The eighth-order weights bᵢ (stages 1–12).
+const B: [f64; 12] = [
+    0.054293734116568765,
+    0.0,
+    0.0,
+    0.0,
+    0.0,
+    4.450312892752409,
+    1.8915178993145003,
+    -5.801203960010585,
+    0.3111643669578199,
+    -0.1521609496625161,
+    0.20136540080403034,
+    0.04471061572777259,
+];
+/// The weights of the third-order estimate on stages 1, 9 and 12.
+const BHH: [f64; 3] = [0.2440944881889764, 0.7338466882816118, 0.022058823529411766];
+/// The weights of the fifth-order error estimate (stages 1–12).
+const ER: [f64; 12] = [
+    0.01312004499419488,
+    0.0,
+    0.0,
+    0.0,
+    0.0,
+    -1.2251564463762044,
+    -0.4957589496572502,
+    1.6643771824549864,
+    -0.35032884874997366,
+    0.3341791187130175,
+    0.08192320648511571,
+    -0.022355307863886294,
+];
+/// The nodes cᵢ (c₁₂ = 1).
+const C: [f64; 12] = [
+    0.0,
+    0.05260015195876773,
+    0.0789002279381516,
+    0.1183503419072274,
+    0.2816496580927726,
+    0.3333333333333333,
+    0.25,
+    0.3076923076923077,
+    0.6512820512820513,
+    0.6,
+    0.8571428571428571,
+    1.0,
+];
+
+/// Σ wᵢ kᵢ over the stages whose weight is non-zero.
+fn combine<T: RealField + Copy, const N: usize>(
+    w: &[f64],
+    k: &[SVector<T, N>; 12],
+) -> SVector<T, N> {
+    let mut sum = SVector::<T, N>::zeros();
+    for (wi, ki) in w.iter().zip(k) {
+        if *wi != 0.0 {
+            sum.axpy(lit(*wi), ki, T::one());
+        }
+    }
+    sum
+}
+
+/// The adaptive Dormand–Prince 8(5,3) method.
+#[derive(Debug, Clone)]
+pub struct Dop853 {
+    options: AdaptiveOptions,
+    stats: Stats,
+}
+
+/// The stages of one trial step, the candidate state, and the scaled error.
+struct Trial<T: RealField + Copy, const N: usize> {
+    y_new: SVector<T, N>,
+    err: T,
+}
+
+/// Evaluates stages 2–12 of a step of size `h` from `(t, y)` with first stage `k1`, and the
+/// 8(5,3) error estimate in the norm of `tols = (rtol, atol)`.
+fn trial<T, const N: usize, S>(
+    system: &S,
+    (t, h): (T, T),
+    y: &SVector<T, N>,
+    k1: &SVector<T, N>,
+    tols: (T, T),
+) -> Trial<T, N>
+where
+    T: RealField + Copy,
+    S: OdeSystem<T, N> + ?Sized,
+{
+    let mut k = [*k1; 12];
+    for (s, row) in A.iter().enumerate() {
+        let ys = y + combine(row, &k) * h;
+        system.rhs(t + h * lit(C[s + 1]), &ys, &mut k[s + 1]);
+    }
+    let increment = combine(&B, &k);
+    let y_new = y + increment * h;
+    let e5 = combine(&ER, &k);
+    let e3 =
+        increment - (k[0] * lit::<T>(BHH[0]) + k[8] * lit::<T>(BHH[1]) + k[11] * lit::<T>(BHH[2]));
+    let (rtol, atol) = tols;
+    let (mut sum5, mut sum3) = (T::zero(), T::zero());
+    for i in 0..N {
+        let scale = atol + rtol * y[i].abs().max(y_new[i].abs());
+        sum5 += (e5[i] / scale) * (e5[i] / scale);
+        sum3 += (e3[i] / scale) * (e3[i] / scale);
+    }
+    let mut denominator = sum5 + lit::<T>(0.01) * sum3;
+    if denominator <= T::zero() {
+        denominator = T::one();
+    }
+    let err = h.abs() * sum5 / (denominator * lit::<T>(N as f64)).sqrt();
+    Trial { y_new, err }
+}
+
+impl Dop853 {
+    /// A method with the given options (see [`AdaptiveOptions::dop853`] for Hairer's defaults).
+    pub fn new(options: AdaptiveOptions) -> Self {
+        Self {
+            options,
+            stats: Stats::default(),
+        }
+    }
+}
+
+impl<T, const N: usize, S> Integrator<T, N, S> for Dop853
+where
+    T: RealField + Copy,
+    S: OdeSystem<T, N> + ?Sized,
+{
+    fn integrate_with<F>(
+        &mut self,
+        system: &S,
+        t0: T,
+        y0: SVector<T, N>,
+        t_end: T,
+        mut observe: F,
+    ) -> Result<SVector<T, N>, IntegrateError>
+    where
+        F: FnMut(T, &SVector<T, N>),
+    {
+        self.options.validate()?;
+        check_interval(t0, t_end)?;
+        check_finite(&y0, t0)?;
+        self.stats = Stats::default();
+        if t_end == t0 {
+            return Ok(y0);
+        }
+        let tols = (lit::<T>(self.options.rtol), lit::<T>(self.options.atol));
+        let (mut y, mut k1) = (y0, SVector::zeros());
+        system.rhs(t0, &y, &mut k1);
+        self.stats.rhs_evals = 1;
+        let mut progress = Progress::new(&self.options, t0, t_end, t_end - t0);
+        progress.h = match self.options.h0 {
+            Some(h0) => lit::<T>(h0).min(progress.h_max()),
+            None => {
+                self.stats.rhs_evals += 1;
+                initial_step(system, (t0, &y, &k1), 8, tols, progress.h_max())
+            }
+        };
+        let mut controller = PiController::new(&self.options, 7);
+        loop {
+            let last = progress.next_step()?;
+            let (t, h) = (progress.t, progress.h);
+            let step = trial(system, (t, h), &y, &k1, tols);
+            self.stats.rhs_evals += 11;
+            if !step.err.is_finite() {
+                check_finite(&step.y_new, t + h)?;
+            }
+            let accepted = progress.record(controller.decide(step.err, h), last);
+            (self.stats.steps, self.stats.rejected) = (progress.steps, progress.rejected);
+            if accepted {
+                y = step.y_new;
+                system.rhs(progress.t, &y, &mut k1);
+                self.stats.rhs_evals += 1;
+                observe(progress.t, &y);
+                if last {
+                    return Ok(y);
+                }
+            }
+        }
+    }
+
+    fn stats(&self) -> Stats {
+        self.stats
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    // Tolerances: the coefficients carry 30 digits rounded to f64, and the sums mix terms up
+    // to 45 in size, so 1e-13 allows the rounding of each term.
+    const TOL: f64 = 1e-13;
+
+    #[test]
+    fn tableau_rows_sum_to_nodes() {
+        for (s, row) in A.iter().enumerate() {
+            assert!(
+                (row.iter().sum::<f64>() - C[s + 1]).abs() < TOL,
+                "stage {}",
+                s + 2
+            );
+        }
+    }
+
+    #[test]
+    fn eighth_order_weights_integrate_polynomials_of_degree_seven() {
+        for k in 1..=8 {
+            let s: f64 = B.iter().zip(C).map(|(b, c)| b * c.powi(k - 1)).sum();
+            assert!((s - 1.0 / f64::from(k)).abs() < TOL, "Σ b c^{}", k - 1);
+        }
+    }
+
+    #[test]
+    fn eighth_order_weights_satisfy_the_depth_two_tree_conditions() {
+        // Σᵢⱼ bᵢ aᵢⱼ cⱼ^k = 1/((k+1)(k+2)) for k = 0..6.
+        for k in 0..=6 {
+            let mut s = 0.0;
+            for (r, row) in A.iter().enumerate() {
+                for (j, a) in row.iter().enumerate() {
+                    s += B[r + 1] * a * C[j].powi(k);
+                }
+            }
+            let expected = 1.0 / f64::from((k + 1) * (k + 2));
+            assert!((s - expected).abs() < TOL, "k = {k}");
+        }
+    }
+
+    #[test]
+    fn error_estimators_vanish_on_constants() {
+        // Both estimates are differences of consistent quadratures: Σ er = 0 and Σ bhh = 1.
+        assert!(ER.iter().sum::<f64>().abs() < TOL);
+        assert!((BHH.iter().sum::<f64>() - 1.0).abs() < TOL);
+    }
+}
