@@ -87,7 +87,7 @@ impl AdaptiveOptions {
                 value: self.h_min,
             });
         }
-        if !(self.h_max > 0.0) || self.h_max.is_nan() {
+        if self.h_max.is_nan() || self.h_max <= 0.0 {
             return Err(IntegrateError::InvalidStep {
                 name: "h_max",
                 value: self.h_max,

@@ -15,7 +15,9 @@
 use nalgebra::{RealField, SVector};
 
 use super::controller::{PiController, Progress, initial_step};
-use super::{AdaptiveOptions, IntegrateError, Integrator, OdeSystem, Stats, check_finite};
+use super::{
+    AdaptiveOptions, IntegrateError, Integrator, OdeSystem, Statistics, Stats, check_finite,
+};
 use super::{check_interval, lit};
 
 /// The rows aᵢⱼ of stages 2–12 (Hairer's `dop853.f`).
@@ -280,7 +282,9 @@ where
             }
         }
     }
+}
 
+impl Statistics for Dop853 {
     fn stats(&self) -> Stats {
         self.stats
     }

@@ -12,7 +12,9 @@
 use nalgebra::{RealField, SVector};
 
 use super::controller::{PiController, Progress, initial_step, scaled_rms};
-use super::{AdaptiveOptions, IntegrateError, Integrator, OdeSystem, Stats, check_finite};
+use super::{
+    AdaptiveOptions, IntegrateError, Integrator, OdeSystem, Statistics, Stats, check_finite,
+};
 use super::{check_interval, lit};
 
 /// The nodes cᵢ.
@@ -290,7 +292,9 @@ where
             observe(t + h, &trial.y_new)
         })
     }
+}
 
+impl Statistics for Dopri5 {
     fn stats(&self) -> Stats {
         self.stats
     }

@@ -5,7 +5,7 @@
 
 use nalgebra::{RealField, SVector};
 
-use super::{IntegrateError, Integrator, OdeSystem, Stats, run_fixed, uniform_steps};
+use super::{IntegrateError, Integrator, OdeSystem, Statistics, Stats, run_fixed, uniform_steps};
 
 /// The explicit Euler method with a fixed step.
 #[derive(Debug, Clone)]
@@ -55,7 +55,9 @@ where
         };
         run_fixed(t0, y0, (n, h), step, observe)
     }
+}
 
+impl Statistics for Euler {
     fn stats(&self) -> Stats {
         self.stats
     }

@@ -29,7 +29,7 @@
 
 use nalgebra::{Matrix3, Quaternion, RealField, SVector, Vector3};
 
-use super::{IntegrateError, Integrator, Stats, lit, run_fixed, to_f64, uniform_steps};
+use super::{IntegrateError, Integrator, Statistics, Stats, lit, run_fixed, to_f64, uniform_steps};
 
 /// A rigid body whose rotation the [`LieMidpoint`] method can integrate. The state is
 /// `[p, q, r, q0, q1, q2, q3]`: body angular velocity (4.1) and the scalar-first unit
@@ -154,7 +154,9 @@ where
         };
         run_fixed(t0, y0, (n, h), step, observe)
     }
+}
 
+impl Statistics for LieMidpoint {
     fn stats(&self) -> Stats {
         self.stats
     }

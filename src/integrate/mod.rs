@@ -45,7 +45,7 @@ use nalgebra::{RealField, SVector};
 /// right-hand side needs no wrapper:
 ///
 /// ```
-/// use eom::integrate::{Integrator, Rk4};
+/// use eom::integrate::{Integrator, Rk4, Statistics};
 /// use nalgebra::Vector2;
 ///
 /// // The harmonic oscillator ẍ = −x, state (x, ẋ).
@@ -76,7 +76,7 @@ where
 /// The system type is a parameter of the trait, so a method states which systems it accepts:
 /// the Runge–Kutta methods take any [`OdeSystem`], the geometric [`LieMidpoint`] only a
 /// [`RigidRotation`]. Only forward integration (`t_end ≥ t0`) is supported.
-pub trait Integrator<T: RealField + Copy, const N: usize, S: ?Sized> {
+pub trait Integrator<T: RealField + Copy, const N: usize, S: ?Sized>: Statistics {
     /// Integrates from `(t0, y0)` to `t_end`, calling `observe(t, y)` after every accepted step
     /// (not at `t0`), and returns the state at `t_end`.
     fn integrate_with<F>(
@@ -90,9 +90,6 @@ pub trait Integrator<T: RealField + Copy, const N: usize, S: ?Sized> {
     where
         F: FnMut(T, &SVector<T, N>);
 
-    /// The statistics of the last call to [`Integrator::integrate_with`].
-    fn stats(&self) -> Stats;
-
     /// Integrates from `(t0, y0)` to `t_end` and returns the state at `t_end`.
     fn integrate(
         &mut self,
@@ -103,6 +100,13 @@ pub trait Integrator<T: RealField + Copy, const N: usize, S: ?Sized> {
     ) -> Result<SVector<T, N>, IntegrateError> {
         self.integrate_with(system, t0, y0, t_end, |_, _| {})
     }
+}
+
+/// The cost counters of an integrator's last run (a trait of its own, without the scalar and
+/// system parameters of [`Integrator`], so that `method.stats()` needs no annotation).
+pub trait Statistics {
+    /// The statistics of the last call to [`Integrator::integrate_with`].
+    fn stats(&self) -> Stats;
 }
 
 /// Converts an `f64` constant (a coefficient, a tolerance) to the scalar type.

@@ -6,7 +6,9 @@
 
 use nalgebra::{RealField, SVector};
 
-use super::{IntegrateError, Integrator, OdeSystem, Stats, lit, run_fixed, uniform_steps};
+use super::{
+    IntegrateError, Integrator, OdeSystem, Statistics, Stats, lit, run_fixed, uniform_steps,
+};
 
 /// The classical fourth-order Runge–Kutta method with a fixed step.
 #[derive(Debug, Clone)]
@@ -75,7 +77,9 @@ where
         };
         run_fixed(t0, y0, (n, h), step, observe)
     }
+}
 
+impl Statistics for Rk4 {
     fn stats(&self) -> Stats {
         self.stats
     }

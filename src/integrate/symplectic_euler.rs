@@ -12,7 +12,7 @@ use std::ops::Range;
 
 use nalgebra::{RealField, SVector};
 
-use super::{IntegrateError, Integrator, OdeSystem, Stats, run_fixed, uniform_steps};
+use super::{IntegrateError, Integrator, OdeSystem, Statistics, Stats, run_fixed, uniform_steps};
 
 /// The semi-implicit Euler method with a fixed step and a range of "kick" components.
 #[derive(Debug, Clone)]
@@ -72,7 +72,9 @@ where
         };
         run_fixed(t0, y0, (n, h), step, observe)
     }
+}
 
+impl Statistics for SymplecticEuler {
     fn stats(&self) -> Stats {
         self.stats
     }

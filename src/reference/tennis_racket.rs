@@ -50,7 +50,8 @@ impl TennisRacket {
         let [i1, i2, i3] = [moments.x, moments.y, moments.z];
         positive("I1", i1)?;
         let order = "I₁ < I₂ < I₃";
-        if !(i1 < i2) || !(i2 < i3) || !i3.is_finite() {
+        let ordered = i1 < i2 && i2 < i3 && i3.is_finite();
+        if !ordered {
             return Err(ReferenceError::OutOfRange {
                 name: "I2",
                 value: i2,
