@@ -3,9 +3,9 @@
 //!
 //! The controller is Gustafsson's PI controller as Hairer's DOPRI5/DOP853 codes use it
 //! (Hairer, Nørsett & Wanner, *Solving ODEs I*, §II.4): with the scaled error `err` of the
-//! step, the new step is `h · clamp(safety · err^(−α) · err_prev^β, fac_min, fac_max)`, where
-//! `α = 1/(q+1) − 0.75 β` for an error estimator of order `q` (q = 4 for DOPRI5, 7 for DOP853).
-//! `β = 0` is the classical (integral-only) controller.
+//! step, the new step is `h · clamp(err^(−α) · err_prev^β / safety⁻¹, fac_min, fac_max)`, where
+//! α = 1/5 − 0.75β in DOPRI5 and α = 1/8 − 0.2β in DOP853, as in Hairer's codes. β = 0 is the
+//! classical (integral-only) controller.
 
 use nalgebra::{RealField, SVector};
 
@@ -119,6 +119,16 @@ pub(crate) fn scaled_rms<T: RealField + Copy, const N: usize>(
     (sum / lit::<T>(N as f64)).sqrt()
 }
 
+/// The weighted Euclidean norm of `e` with weights `atol + rtol · |yᵢ|` (Hairer's `hinit`
+/// uses this norm, not the RMS one of the error test).
+fn scaled_norm<T: RealField + Copy, const N: usize>(
+    e: &SVector<T, N>,
+    y: &SVector<T, N>,
+    tols: (T, T),
+) -> T {
+    scaled_rms(e, y, y, tols) * lit::<T>(N as f64).sqrt()
+}
+
 /// Hairer's initial step (`hinit` of DOPRI5/DOP853): a step that makes an explicit Euler step
 /// of the given order meet the tolerance, from ‖y₀‖, ‖f₀‖ and a difference estimate of ‖f′‖.
 /// Costs one RHS evaluation; `f0` is the derivative at `(t0, y0)`.
@@ -133,9 +143,10 @@ where
     T: RealField + Copy,
     S: OdeSystem<T, N> + ?Sized,
 {
-    let d0 = scaled_rms(y0, y0, y0, tols);
-    let d1 = scaled_rms(f0, y0, y0, tols);
-    let tiny = lit::<T>(1e-10);
+    let d0 = scaled_norm(y0, y0, tols);
+    let d1 = scaled_norm(f0, y0, tols);
+    // Hairer compares the squared norms with 1e-10.
+    let tiny = lit::<T>(1e-5);
     let mut h = if d0 <= tiny || d1 <= tiny {
         lit(1e-6)
     } else {
@@ -145,7 +156,7 @@ where
     let y1 = y0 + f0 * h;
     let mut f1 = SVector::<T, N>::zeros();
     system.rhs(t0 + h, &y1, &mut f1);
-    let d2 = scaled_rms(&(f1 - f0), y0, y0, tols) / h;
+    let d2 = scaled_norm(&(f1 - f0), y0, tols) / h;
     let d = d1.max(d2);
     let h1 = if d <= lit(1e-15) {
         (h * lit(1e-3)).max(lit(1e-6))
@@ -175,9 +186,10 @@ pub(crate) struct PiController<T> {
 }
 
 impl<T: RealField + Copy> PiController<T> {
-    /// A controller for an error estimator of order `q` (its error is O(h^(q+1))).
-    pub(crate) fn new(options: &AdaptiveOptions, q: u32) -> Self {
-        let alpha = 1.0 / f64::from(q + 1) - 0.75 * options.beta;
+    /// A controller with exponent α = `alpha0` − `beta_weight` · β (Hairer's (0.2, 0.75) for
+    /// DOPRI5, (0.125, 0.2) for DOP853).
+    pub(crate) fn new(options: &AdaptiveOptions, (alpha0, beta_weight): (f64, f64)) -> Self {
+        let alpha = alpha0 - beta_weight * options.beta;
         Self {
             alpha: lit(alpha),
             beta: lit(options.beta),

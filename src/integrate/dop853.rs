@@ -5,8 +5,8 @@
 //!
 //! The thirteenth evaluation, f(tₙ₊₁, yₙ₊₁), is made only when the step is accepted and is
 //! the first stage of the next step: 12 RHS evaluations per accepted step, 11 per rejected one.
-//! Step control: the classical controller (β = 0, α = 1/8), step ratios in [0.333, 6], as in
-//! Hairer's code. Dense output (three more stages per step) is not implemented; use
+//! Step control: α = 1/8 − 0.2β with β = 0 by default (the classical controller), step ratios
+//! in [0.333, 6], as in Hairer's code. Dense output (three more stages per step) is not implemented; use
 //! [`Dopri5::solve_at`](super::Dopri5::solve_at) when output between steps is needed.
 //!
 //! The coefficients are Hairer's published constants; the tests check the tableau's row sums
@@ -260,7 +260,7 @@ where
                 initial_step(system, (t0, &y, &k1), 8, tols, progress.h_max())
             }
         };
-        let mut controller = PiController::new(&self.options, 7);
+        let mut controller = PiController::new(&self.options, (0.125, 0.2));
         loop {
             let last = progress.next_step()?;
             let (t, h) = (progress.t, progress.h);

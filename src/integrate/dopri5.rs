@@ -4,7 +4,8 @@
 //!
 //! - FSAL ("first same as last"): the seventh stage is f(tₙ₊₁, yₙ₊₁), the first stage of the
 //!   next step, so an accepted step costs six RHS evaluations, not seven.
-//! - Step control: the PI controller of [`AdaptiveOptions`] (β = 0.04, α = 0.2 − 0.75β).
+//! - Step control: the PI controller of [`AdaptiveOptions`] (β = 0.04, α = 0.2 − 0.75β), and
+//!   the initial step by Hairer's heuristic, as in his code.
 //! - Dense output: Hairer's fourth-order continuous extension (the five coefficients of his
 //!   `CONTD5`), built from the stages already computed, so output at any time costs no RHS
 //!   evaluation; see [`Dopri5::solve_at`].
@@ -229,7 +230,7 @@ impl Dopri5 {
                 initial_step(system, (t0, &y, &k1), 5, tols, progress.h_max())
             }
         };
-        let mut controller = PiController::new(&self.options, 4);
+        let mut controller = PiController::new(&self.options, (0.2, 0.75));
         loop {
             let last = progress.next_step()?;
             let (t, h) = (progress.t, progress.h);
