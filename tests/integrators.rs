@@ -2,6 +2,7 @@
 //! their order of convergence is measured on problems with exact solutions, their failures
 //! name the culprit, and the geometric integrator conserves what it claims.
 
+use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 
 use eom::integrate::{
@@ -418,4 +419,96 @@ fn planar_turn_is_integrated_to_its_exact_track() {
     );
     // 1e-9: the tolerance times the error growth of two turns (linear in t for this system).
     assert!(e < 1e-9, "error {e}");
+}
+
+/// The global allocator of this test binary: the system's, counting allocations per thread
+/// (tests run in parallel threads, so a global count would mix them up).
+struct CountingAllocator;
+
+thread_local! {
+    static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
+}
+
+// SAFETY: every call is forwarded unchanged to the system allocator; the count is a
+// const-initialised thread-local without destructor, safe to touch from inside the allocator.
+unsafe impl GlobalAlloc for CountingAllocator {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        let _ = ALLOCATIONS.try_with(|a| a.set(a.get() + 1));
+        // SAFETY: the caller upholds `alloc`'s contract, which `System.alloc` shares.
+        unsafe { System.alloc(layout) }
+    }
+
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        // SAFETY: `ptr` was allocated by `System` with this layout, through `alloc` above.
+        unsafe { System.dealloc(ptr, layout) }
+    }
+}
+
+#[global_allocator]
+static GLOBAL: CountingAllocator = CountingAllocator;
+
+/// The allocations made on this thread while `run` runs.
+fn allocations_during(run: impl FnOnce()) -> usize {
+    let before = ALLOCATIONS.with(Cell::get);
+    run();
+    ALLOCATIONS.with(Cell::get) - before
+}
+
+#[test]
+fn no_integrator_allocates() {
+    // Every method, over a whole tumbling run of the tennis racket (hundreds of steps): not a
+    // single heap allocation, so none per step.
+    let racket = racket();
+    let (body, y0, t_end) = (racket.body(), racket.initial_state(), racket.t_end());
+    let h = t_end / 500.0;
+    // The counter does see allocations.
+    assert!(allocations_during(|| drop(std::hint::black_box(vec![0u8; 16]))) >= 1);
+    let count = allocations_during(|| {
+        Euler::new(h).integrate(&body, 0.0, y0, t_end).unwrap();
+        SymplecticEuler::new(h, 0..3)
+            .integrate(&body, 0.0, y0, t_end)
+            .unwrap();
+        Rk4::new(h).integrate(&body, 0.0, y0, t_end).unwrap();
+        LieMidpoint::new(h)
+            .integrate(&body, 0.0, y0, t_end)
+            .unwrap();
+        Dopri5::new(AdaptiveOptions::dopri5(1e-9, 1e-9))
+            .integrate(&body, 0.0, y0, t_end)
+            .unwrap();
+        Dop853::new(AdaptiveOptions::dop853(1e-9, 1e-9))
+            .integrate(&body, 0.0, y0, t_end)
+            .unwrap();
+    });
+    assert_eq!(count, 0);
+    let times = [1.0, 2.5, t_end];
+    let mut out = [SVector::<f64, 7>::zeros(); 3];
+    let mut dopri = Dopri5::new(AdaptiveOptions::dopri5(1e-9, 1e-9));
+    let count = allocations_during(|| dopri.solve_at(&body, 0.0, y0, &times, &mut out).unwrap());
+    assert_eq!(count, 0);
+    // The end state by dense output is the end state of the run.
+    let end = Dopri5::new(AdaptiveOptions::dopri5(1e-9, 1e-9)).integrate(&body, 0.0, y0, t_end);
+    assert_eq!(out[2], end.unwrap());
+}
+
+#[test]
+fn dense_output_refuses_unordered_times_and_short_buffers() {
+    let p = pendulum();
+    let mut dopri = Dopri5::new(AdaptiveOptions::dopri5(1e-6, 1e-6));
+    let mut out = [SVector::<f64, 2>::zeros(); 2];
+    let e = dopri.solve_at(&p, 0.0, p.initial_state(), &[1.0, 0.5], &mut out);
+    assert!(
+        matches!(
+            e,
+            Err(IntegrateError::InvalidInterval {
+                t0: 1.0,
+                t_end: 0.5
+            })
+        ),
+        "{e:?}"
+    );
+    let e = dopri.solve_at(&p, 0.0, p.initial_state(), &[0.5, 1.0, 2.0], &mut out);
+    assert!(
+        matches!(e, Err(IntegrateError::OutputLength { times: 3, slots: 2 })),
+        "{e:?}"
+    );
 }

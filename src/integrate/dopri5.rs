@@ -16,7 +16,7 @@ use super::controller::{PiController, Progress, initial_step, scaled_rms};
 use super::{
     AdaptiveOptions, IntegrateError, Integrator, OdeSystem, Statistics, Stats, check_finite,
 };
-use super::{check_interval, lit};
+use super::{check_interval, lit, to_f64};
 
 /// The nodes cᵢ.
 const C: [f64; 7] = [0.0, 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0, 1.0, 1.0];
@@ -174,6 +174,7 @@ impl Dopri5 {
         T: RealField + Copy,
         S: OdeSystem<T, N> + ?Sized,
     {
+        check_outputs(t0, times, out.len())?;
         let Some(&t_end) = times.last() else {
             return Ok(());
         };
@@ -253,6 +254,30 @@ impl Dopri5 {
             }
         }
     }
+}
+
+/// Checks that the output times are ascending, none before `t0`, and that `out` holds one
+/// state per time.
+fn check_outputs<T: RealField + Copy>(
+    t0: T,
+    times: &[T],
+    slots: usize,
+) -> Result<(), IntegrateError> {
+    if slots != times.len() {
+        return Err(IntegrateError::OutputLength {
+            times: times.len(),
+            slots,
+        });
+    }
+    let mut previous = t0;
+    for &t in times {
+        if !t.is_finite() || t < previous {
+            let (t0, t_end) = (to_f64(previous), to_f64(t));
+            return Err(IntegrateError::InvalidInterval { t0, t_end });
+        }
+        previous = t;
+    }
+    Ok(())
 }
 
 /// The continuous extension of an accepted step (Hairer's `CONTD5` coefficients).

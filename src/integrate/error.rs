@@ -59,6 +59,14 @@ pub enum IntegrateError {
         /// The time at which it appeared.
         t: f64,
     },
+    /// Dense output was asked for a number of times that differs from the room given for it.
+    #[error("{times} output times but room for {slots} states")]
+    OutputLength {
+        /// The number of output times.
+        times: usize,
+        /// The number of output slots.
+        slots: usize,
+    },
     /// The inertia tensor given to a rotation integrator has no finite inverse.
     #[error("inertia tensor is singular: [I]⁻¹ (for ω = [I]⁻¹H) does not exist")]
     SingularInertia,
