@@ -512,3 +512,25 @@ fn dense_output_refuses_unordered_times_and_short_buffers() {
         "{e:?}"
     );
 }
+
+#[test]
+fn pure_relative_tolerance_handles_components_that_stay_zero() {
+    // atol = 0 with a component that is exactly zero throughout (p of a body spinning about
+    // its third axis): the weight of that component is zero, and its zero error must not
+    // turn into 0/0.
+    let body = PrincipalBody {
+        moments: Vector3::new(1.0, 2.0, 3.0),
+    };
+    let y0 = SVector::<f64, 7>::from([0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 0.0]);
+    let y5 = Dopri5::new(AdaptiveOptions::dopri5(1e-9, 0.0))
+        .integrate(&body, 0.0, y0, 3.0)
+        .unwrap();
+    let y8 = Dop853::new(AdaptiveOptions::dop853(1e-9, 0.0))
+        .integrate(&body, 0.0, y0, 3.0)
+        .unwrap();
+    // Steady spin about axis 3: q = (cos(t/2), 0, 0, sin(t/2)); 1e-8 is 10× the tolerance.
+    for y in [y5, y8] {
+        assert!((y[3] - 1.5f64.cos()).abs() < 1e-8 && (y[6] - 1.5f64.sin()).abs() < 1e-8);
+        assert_eq!((y[0], y[1], y[4], y[5]), (0.0, 0.0, 0.0, 0.0));
+    }
+}

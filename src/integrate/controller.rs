@@ -9,7 +9,7 @@
 
 use nalgebra::{RealField, SVector};
 
-use super::{IntegrateError, OdeSystem, lit, to_f64};
+use super::{IntegrateError, OdeSystem, check_finite, check_interval, lit, to_f64};
 
 /// Tolerances and limits of an adaptive method.
 ///
@@ -103,7 +103,8 @@ impl AdaptiveOptions {
     }
 }
 
-/// The weighted root-mean-square norm of `e` with weights `atol + rtol · max(|yᵢ|, |zᵢ|)`.
+/// The weighted root-mean-square norm of `e` with weights `atol + rtol · max(|yᵢ|, |zᵢ|)`
+/// (Hairer's norm).
 pub(crate) fn scaled_rms<T: RealField + Copy, const N: usize>(
     e: &SVector<T, N>,
     y: &SVector<T, N>,
@@ -113,7 +114,13 @@ pub(crate) fn scaled_rms<T: RealField + Copy, const N: usize>(
     let mut sum = T::zero();
     for i in 0..N {
         let scale = atol + rtol * y[i].abs().max(z[i].abs());
-        let r = e[i] / scale;
+        // An exact zero error counts as zero even where the scale is zero (atol = 0 and a
+        // component that stays at zero), instead of 0/0.
+        let r = if e[i] == T::zero() {
+            T::zero()
+        } else {
+            e[i] / scale
+        };
         sum += r * r;
     }
     (sum / lit::<T>(N as f64)).sqrt()
@@ -147,12 +154,19 @@ where
     let d1 = scaled_norm(f0, y0, tols);
     // Hairer compares the squared norms with 1e-10.
     let tiny = lit::<T>(1e-5);
+    let fallback = lit::<T>(1e-6).min(h_max);
     let mut h = if d0 <= tiny || d1 <= tiny {
         lit(1e-6)
     } else {
         lit::<T>(0.01) * d0 / d1
     };
-    h = h.min(h_max);
+    // With atol = 0, a component that starts at zero but moves has zero weight and infinite
+    // scaled rate, so the estimate collapses to zero; take Hairer's fallback step instead.
+    h = if h > T::zero() && h.is_finite() {
+        h.min(h_max)
+    } else {
+        fallback
+    };
     let y1 = y0 + f0 * h;
     let mut f1 = SVector::<T, N>::zeros();
     system.rhs(t0 + h, &y1, &mut f1);
@@ -163,7 +177,12 @@ where
     } else {
         (lit::<T>(0.01) / d).powf(lit::<T>(1.0 / f64::from(order)))
     };
-    (h * lit(100.0)).min(h1).min(h_max)
+    let h = (h * lit(100.0)).min(h1).min(h_max);
+    if h > T::zero() && h.is_finite() {
+        h
+    } else {
+        fallback
+    }
 }
 
 /// What the controller decided about a step.
@@ -296,4 +315,55 @@ impl<T: RealField + Copy> Progress<T> {
             }
         }
     }
+}
+
+/// What an adaptive run knows before its first step.
+pub(crate) struct Start<T: RealField + Copy, const N: usize> {
+    /// f(t0, y0), the first stage of the first step.
+    pub(crate) k1: SVector<T, N>,
+    /// The run's position, with the first step size.
+    pub(crate) progress: Progress<T>,
+    /// (rtol, atol) in the scalar type.
+    pub(crate) tols: (T, T),
+    /// The RHS evaluations spent so far (f0, and one more for the initial step heuristic).
+    pub(crate) rhs_evals: usize,
+}
+
+/// Checks the options, the interval and the initial state, evaluates f(t0, y0) and chooses
+/// the first step (given, or by Hairer's heuristic for a method of order `order`). `None`
+/// when there is nothing to integrate (`t_end = t0`).
+pub(crate) fn start<T, const N: usize, S>(
+    options: &AdaptiveOptions,
+    system: &S,
+    (t0, y0, t_end): (T, &SVector<T, N>, T),
+    order: i32,
+) -> Result<Option<Start<T, N>>, IntegrateError>
+where
+    T: RealField + Copy,
+    S: OdeSystem<T, N> + ?Sized,
+{
+    options.validate()?;
+    check_interval(t0, t_end)?;
+    check_finite(y0, t0)?;
+    if t_end == t0 {
+        return Ok(None);
+    }
+    let tols = (lit::<T>(options.rtol), lit::<T>(options.atol));
+    let mut k1 = SVector::zeros();
+    system.rhs(t0, y0, &mut k1);
+    let mut progress = Progress::new(options, t0, t_end, t_end - t0);
+    let (h, rhs_evals) = match options.h0 {
+        Some(h0) => (lit::<T>(h0).min(progress.h_max()), 1),
+        None => (
+            initial_step(system, (t0, y0, &k1), order, tols, progress.h_max()),
+            2,
+        ),
+    };
+    progress.h = h;
+    Ok(Some(Start {
+        k1,
+        progress,
+        tols,
+        rhs_evals,
+    }))
 }

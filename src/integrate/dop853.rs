@@ -14,11 +14,11 @@
 
 use nalgebra::{RealField, SVector};
 
-use super::controller::{PiController, Progress, initial_step};
+use super::controller::{PiController, Start, start};
+use super::lit;
 use super::{
     AdaptiveOptions, IntegrateError, Integrator, OdeSystem, Statistics, Stats, check_finite,
 };
-use super::{check_interval, lit};
 
 /// The rows aᵢⱼ of stages 2–12 (Hairer's `dop853.f`).
 const A: [&[f64]; 11] = [
@@ -204,8 +204,10 @@ where
     let (mut sum5, mut sum3) = (T::zero(), T::zero());
     for i in 0..N {
         let scale = atol + rtol * y[i].abs().max(y_new[i].abs());
-        sum5 += (e5[i] / scale) * (e5[i] / scale);
-        sum3 += (e3[i] / scale) * (e3[i] / scale);
+        // Exact zeros count as zero where the scale is zero (atol = 0), instead of 0/0.
+        let ratio = |e: T| if e == T::zero() { e } else { e / scale };
+        sum5 += ratio(e5[i]) * ratio(e5[i]);
+        sum3 += ratio(e3[i]) * ratio(e3[i]);
     }
     let mut denominator = sum5 + lit::<T>(0.01) * sum3;
     if denominator <= T::zero() {
@@ -241,25 +243,18 @@ where
     where
         F: FnMut(T, &SVector<T, N>),
     {
-        self.options.validate()?;
-        check_interval(t0, t_end)?;
-        check_finite(&y0, t0)?;
         self.stats = Stats::default();
-        if t_end == t0 {
+        let Some(start) = start(&self.options, system, (t0, &y0, t_end), 8)? else {
             return Ok(y0);
-        }
-        let tols = (lit::<T>(self.options.rtol), lit::<T>(self.options.atol));
-        let (mut y, mut k1) = (y0, SVector::zeros());
-        system.rhs(t0, &y, &mut k1);
-        self.stats.rhs_evals = 1;
-        let mut progress = Progress::new(&self.options, t0, t_end, t_end - t0);
-        progress.h = match self.options.h0 {
-            Some(h0) => lit::<T>(h0).min(progress.h_max()),
-            None => {
-                self.stats.rhs_evals += 1;
-                initial_step(system, (t0, &y, &k1), 8, tols, progress.h_max())
-            }
         };
+        let Start {
+            mut k1,
+            mut progress,
+            tols,
+            rhs_evals,
+        } = start;
+        self.stats.rhs_evals = rhs_evals;
+        let mut y = y0;
         let mut controller = PiController::new(&self.options, (0.125, 0.2));
         loop {
             let last = progress.next_step()?;

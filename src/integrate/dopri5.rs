@@ -12,11 +12,11 @@
 
 use nalgebra::{RealField, SVector};
 
-use super::controller::{PiController, Progress, initial_step, scaled_rms};
+use super::controller::{PiController, Start, scaled_rms, start};
 use super::{
     AdaptiveOptions, IntegrateError, Integrator, OdeSystem, Statistics, Stats, check_finite,
 };
-use super::{check_interval, lit, to_f64};
+use super::{lit, to_f64};
 
 /// The nodes cᵢ.
 const C: [f64; 7] = [0.0, 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0, 1.0, 1.0];
@@ -212,25 +212,18 @@ impl Dopri5 {
         S: OdeSystem<T, N> + ?Sized,
         F: FnMut(T, T, &SVector<T, N>, &Trial<T, N>),
     {
-        self.options.validate()?;
-        check_interval(t0, t_end)?;
-        check_finite(&y0, t0)?;
         self.stats = Stats::default();
-        if t_end == t0 {
+        let Some(start) = start(&self.options, system, (t0, &y0, t_end), 5)? else {
             return Ok(y0);
-        }
-        let tols = (lit::<T>(self.options.rtol), lit::<T>(self.options.atol));
-        let (mut y, mut k1) = (y0, SVector::zeros());
-        system.rhs(t0, &y, &mut k1);
-        self.stats.rhs_evals = 1;
-        let mut progress = Progress::new(&self.options, t0, t_end, t_end - t0);
-        progress.h = match self.options.h0 {
-            Some(h0) => lit::<T>(h0).min(progress.h_max()),
-            None => {
-                self.stats.rhs_evals += 1;
-                initial_step(system, (t0, &y, &k1), 5, tols, progress.h_max())
-            }
         };
+        let Start {
+            mut k1,
+            mut progress,
+            tols,
+            rhs_evals,
+        } = start;
+        self.stats.rhs_evals = rhs_evals;
+        let mut y = y0;
         let mut controller = PiController::new(&self.options, (0.2, 0.75));
         loop {
             let last = progress.next_step()?;
