@@ -226,6 +226,46 @@ fn dopri5_dense_output_is_fourth_order_between_steps() {
 }
 
 #[test]
+fn dop853_dense_output_is_seventh_order_between_steps() {
+    // Hairer's continuous extension of DOP853 has order 7: the interpolation error falls by at
+    // least 2⁷ = 128 per halving of the step (2⁸ locally). Interior times of the planar turn,
+    // with the step pinned; the errors stay well above round-off at these steps.
+    let turn = turn();
+    let times: Vec<f64> = (1..=29)
+        .map(|i| turn.t_end() * f64::from(i) / 29.5)
+        .collect();
+    let worst = |h: f64| {
+        let mut out = vec![SVector::<f64, 5>::zeros(); times.len()];
+        let mut dop = Dop853::new(pinned(AdaptiveOptions::dop853(1e3, 1e3), h));
+        dop.solve_at(&turn, 0.0, turn.initial_state(), &times, &mut out)
+            .unwrap();
+        times
+            .iter()
+            .zip(&out)
+            .map(|(t, y)| turn.error(*t, y))
+            .fold(0.0, f64::max)
+    };
+    let ratio = halving_ratio(worst, turn.t_end() / 20.0);
+    assert!(ratio > 128.0, "ratio {ratio}");
+}
+
+#[test]
+fn dop853_dense_output_costs_three_evaluations_per_step_used() {
+    // The step is pinned to a tenth of the span and given (no initial-step heuristic): one
+    // evaluation at t0, 12 per step, and 3 more for each of the 3 steps that hold an output.
+    let turn = turn();
+    let t_end = turn.t_end();
+    let times = [0.15 * t_end, 0.55 * t_end, t_end];
+    let mut out = [SVector::<f64, 5>::zeros(); 3];
+    let mut dop = Dop853::new(pinned(AdaptiveOptions::dop853(1e3, 1e3), 0.1 * t_end));
+    dop.solve_at(&turn, 0.0, turn.initial_state(), &times, &mut out)
+        .unwrap();
+    let s = dop.stats();
+    assert_eq!((s.steps, s.rejected), (10, 0));
+    assert_eq!(s.rhs_evals, 1 + 12 * 10 + 3 * 3);
+}
+
+#[test]
 fn adaptive_methods_meet_their_tolerance_on_the_pendulum() {
     // The global error of a tolerance-controlled run is not bounded by the tolerance, but on a
     // well-conditioned problem over one period it stays within a factor 100 of it.
@@ -484,6 +524,10 @@ fn no_integrator_allocates() {
     let mut out = [SVector::<f64, 7>::zeros(); 3];
     let mut dopri = Dopri5::new(AdaptiveOptions::dopri5(1e-9, 1e-9));
     let count = allocations_during(|| dopri.solve_at(&body, 0.0, y0, &times, &mut out).unwrap());
+    assert_eq!(count, 0);
+    let mut dop = Dop853::new(AdaptiveOptions::dop853(1e-9, 1e-9));
+    let mut out8 = [SVector::<f64, 7>::zeros(); 3];
+    let count = allocations_during(|| dop.solve_at(&body, 0.0, y0, &times, &mut out8).unwrap());
     assert_eq!(count, 0);
     // The end state by dense output is the end state of the run.
     let end = Dopri5::new(AdaptiveOptions::dopri5(1e-9, 1e-9)).integrate(&body, 0.0, y0, t_end);

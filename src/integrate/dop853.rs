@@ -6,8 +6,8 @@
 //! The thirteenth evaluation, f(tₙ₊₁, yₙ₊₁), is made only when the step is accepted and is
 //! the first stage of the next step: 12 RHS evaluations per accepted step, 11 per rejected one.
 //! Step control: α = 1/8 − 0.2β with β = 0 by default (the classical controller), step ratios
-//! in [0.333, 6], as in Hairer's code. Dense output (three more stages per step) is not implemented; use
-//! [`Dopri5::solve_at`](super::Dopri5::solve_at) when output between steps is needed.
+//! in [0.333, 6], as in Hairer's code. Dense output (Hairer's seventh-order extension, three
+//! more stages per accepted step, only when asked for) is in [`Dop853::solve_at`].
 //!
 //! The coefficients are Hairer's published constants; the tests check the tableau's row sums
 //! and order conditions and the method's order of convergence.
@@ -15,6 +15,8 @@
 use nalgebra::{RealField, SVector};
 
 use super::controller::{PiController, Start, start};
+use super::dop853_dense::{AcceptedStep, Dop853Interpolant, combine, interpolant};
+use super::dopri5::check_outputs;
 use super::lit;
 use super::{
     AdaptiveOptions, IntegrateError, Integrator, OdeSystem, Statistics, Stats, check_finite,
@@ -150,20 +152,6 @@ const C: [f64; 12] = [
     1.0,
 ];
 
-/// Σ wᵢ kᵢ over the stages whose weight is non-zero.
-fn combine<T: RealField + Copy, const N: usize>(
-    w: &[f64],
-    k: &[SVector<T, N>; 12],
-) -> SVector<T, N> {
-    let mut sum = SVector::<T, N>::zeros();
-    for (wi, ki) in w.iter().zip(k) {
-        if *wi != 0.0 {
-            sum.axpy(lit(*wi), ki, T::one());
-        }
-    }
-    sum
-}
-
 /// The adaptive Dormand–Prince 8(5,3) method.
 #[derive(Debug, Clone)]
 pub struct Dop853 {
@@ -173,6 +161,7 @@ pub struct Dop853 {
 
 /// The stages of one trial step, the candidate state, and the scaled error.
 struct Trial<T: RealField + Copy, const N: usize> {
+    k: [SVector<T, N>; 12],
     y_new: SVector<T, N>,
     err: T,
 }
@@ -214,7 +203,7 @@ where
         denominator = T::one();
     }
     let err = h.abs() * sum5 / (denominator * lit::<T>(N as f64)).sqrt();
-    Trial { y_new, err }
+    Trial { k, y_new, err }
 }
 
 impl Dop853 {
@@ -225,23 +214,60 @@ impl Dop853 {
             stats: Stats::default(),
         }
     }
-}
 
-impl<T, const N: usize, S> Integrator<T, N, S> for Dop853
-where
-    T: RealField + Copy,
-    S: OdeSystem<T, N> + ?Sized,
-{
-    fn integrate_with<F>(
+    /// Integrates from `(t0, y0)` to the last of `times` (ascending, none before `t0`) and
+    /// writes the state at each of `times` into `out` by dense output: the steps are chosen by
+    /// the tolerance alone, and each accepted step that holds an output time costs three more
+    /// RHS evaluations (counted in the statistics).
+    pub fn solve_at<T, const N: usize, S>(
+        &mut self,
+        system: &S,
+        t0: T,
+        y0: SVector<T, N>,
+        times: &[T],
+        out: &mut [SVector<T, N>],
+    ) -> Result<(), IntegrateError>
+    where
+        T: RealField + Copy,
+        S: OdeSystem<T, N> + ?Sized,
+    {
+        check_outputs(t0, times, out.len())?;
+        let Some(&t_end) = times.last() else {
+            return Ok(());
+        };
+        let mut next = times.iter().take_while(|&&t| t <= t0).count();
+        out[..next].fill(y0);
+        let mut extra = 0;
+        let y_end = self.run(system, t0, y0, t_end, |step| {
+            if next < times.len() && times[next] <= step.t_old + step.h {
+                let p: Dop853Interpolant<T, N> = interpolant(system, step);
+                extra += 3;
+                while next < times.len() && times[next] <= step.t_old + step.h {
+                    out[next] = p.eval(times[next]);
+                    next += 1;
+                }
+            }
+        })?;
+        self.stats.rhs_evals += extra;
+        // Times equal to t_end that rounding kept out of the last step get the end state.
+        out[next..].fill(y_end);
+        Ok(())
+    }
+
+    /// The stepping loop shared by [`Integrator::integrate_with`] and [`Dop853::solve_at`]:
+    /// `on_step` sees every accepted step with its thirteen stages.
+    fn run<T, const N: usize, S, F>(
         &mut self,
         system: &S,
         t0: T,
         y0: SVector<T, N>,
         t_end: T,
-        mut observe: F,
+        mut on_step: F,
     ) -> Result<SVector<T, N>, IntegrateError>
     where
-        F: FnMut(T, &SVector<T, N>),
+        T: RealField + Copy,
+        S: OdeSystem<T, N> + ?Sized,
+        F: FnMut(&AcceptedStep<'_, T, N>),
     {
         self.stats = Stats::default();
         let Some(start) = start(&self.options, system, (t0, &y0, t_end), 8)? else {
@@ -267,15 +293,45 @@ where
             let accepted = progress.record(controller.decide(step.err, h), last);
             (self.stats.steps, self.stats.rejected) = (progress.steps, progress.rejected);
             if accepted {
-                y = step.y_new;
-                system.rhs(progress.t, &y, &mut k1);
+                system.rhs(progress.t, &step.y_new, &mut k1);
                 self.stats.rhs_evals += 1;
-                observe(progress.t, &y);
+                let mut k = [k1; 13];
+                k[..12].copy_from_slice(&step.k);
+                on_step(&AcceptedStep {
+                    t_old: t,
+                    h,
+                    y_old: &y,
+                    y_new: &step.y_new,
+                    k,
+                });
+                y = step.y_new;
                 if last {
                     return Ok(y);
                 }
             }
         }
+    }
+}
+
+impl<T, const N: usize, S> Integrator<T, N, S> for Dop853
+where
+    T: RealField + Copy,
+    S: OdeSystem<T, N> + ?Sized,
+{
+    fn integrate_with<F>(
+        &mut self,
+        system: &S,
+        t0: T,
+        y0: SVector<T, N>,
+        t_end: T,
+        mut observe: F,
+    ) -> Result<SVector<T, N>, IntegrateError>
+    where
+        F: FnMut(T, &SVector<T, N>),
+    {
+        self.run(system, t0, y0, t_end, |step| {
+            observe(step.t_old + step.h, step.y_new)
+        })
     }
 }
 

@@ -251,7 +251,7 @@ impl Dopri5 {
 
 /// Checks that the output times are ascending, none before `t0`, and that `out` holds one
 /// state per time.
-fn check_outputs<T: RealField + Copy>(
+pub(crate) fn check_outputs<T: RealField + Copy>(
     t0: T,
     times: &[T],
     slots: usize,

@@ -12,12 +12,14 @@
 //! - [`SymplecticEuler`]: semi-implicit Euler, order 1, symplectic for separable mechanics;
 //! - [`Rk4`]: the classical fourth-order Runge–Kutta method;
 //! - [`Dopri5`]: Dormand–Prince 5(4), PI step control, FSAL and dense output;
-//! - [`Dop853`]: Dormand–Prince 8(5,3), Hairer's coefficients and error estimator;
+//! - [`Dop853`]: Dormand–Prince 8(5,3), Hairer's coefficients, error estimator and dense
+//!   output;
 //! - [`LieMidpoint`]: a geometric integrator for rigid-body rotation (4.50 with the quaternion
 //!   attitude) that conserves energy and |H| to round-off and keeps the quaternion unit.
 
 mod controller;
 mod dop853;
+mod dop853_dense;
 mod dopri5;
 mod error;
 mod euler;
@@ -28,6 +30,7 @@ mod symplectic_euler;
 
 pub use controller::AdaptiveOptions;
 pub use dop853::Dop853;
+pub use dop853_dense::Dop853Interpolant;
 pub use dopri5::{Dopri5, Dopri5Interpolant};
 pub use error::IntegrateError;
 pub use euler::Euler;
