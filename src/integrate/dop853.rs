@@ -159,34 +159,33 @@ pub struct Dop853 {
     stats: Stats,
 }
 
-/// The stages of one trial step, the candidate state, and the scaled error.
+/// The candidate state of one trial step and its scaled error (the stages stay in the
+/// caller's buffer).
 struct Trial<T: RealField + Copy, const N: usize> {
-    k: [SVector<T, N>; 12],
     y_new: SVector<T, N>,
     err: T,
 }
 
-/// Evaluates stages 2–12 of a step of size `h` from `(t, y)` with first stage `k1`, and the
-/// 8(5,3) error estimate in the norm of `tols = (rtol, atol)`.
+/// Evaluates stages 2–12 of a step of size `h` from `(t, y)` into `k` (whose first entry is the
+/// first stage, f(t, y)), and the 8(5,3) error estimate in the norm of `tols = (rtol, atol)`.
 fn trial<T, const N: usize, S>(
     system: &S,
     (t, h): (T, T),
     y: &SVector<T, N>,
-    k1: &SVector<T, N>,
     tols: (T, T),
+    k: &mut [SVector<T, N>; 12],
 ) -> Trial<T, N>
 where
     T: RealField + Copy,
     S: OdeSystem<T, N> + ?Sized,
 {
-    let mut k = [*k1; 12];
     for (s, row) in A.iter().enumerate() {
-        let ys = y + combine(row, &k) * h;
+        let ys = y + combine(row, &k[..]) * h;
         system.rhs(t + h * lit(C[s + 1]), &ys, &mut k[s + 1]);
     }
-    let increment = combine(&B, &k);
+    let increment = combine(&B, &k[..]);
     let y_new = y + increment * h;
-    let e5 = combine(&ER, &k);
+    let e5 = combine(&ER, &k[..]);
     let e3 =
         increment - (k[0] * lit::<T>(BHH[0]) + k[8] * lit::<T>(BHH[1]) + k[11] * lit::<T>(BHH[2]));
     let (rtol, atol) = tols;
@@ -203,7 +202,7 @@ where
         denominator = T::one();
     }
     let err = h.abs() * sum5 / (denominator * lit::<T>(N as f64)).sqrt();
-    Trial { k, y_new, err }
+    Trial { y_new, err }
 }
 
 impl Dop853 {
@@ -282,10 +281,12 @@ impl Dop853 {
         self.stats.rhs_evals = rhs_evals;
         let mut y = y0;
         let mut controller = PiController::new(&self.options, (0.125, 0.2));
+        let mut k = [SVector::<T, N>::zeros(); 12];
         loop {
             let last = progress.next_step()?;
             let (t, h) = (progress.t, progress.h);
-            let step = trial(system, (t, h), &y, &k1, tols);
+            k[0] = k1;
+            let step = trial(system, (t, h), &y, tols, &mut k);
             self.stats.rhs_evals += 11;
             if !step.err.is_finite() {
                 check_finite(&step.y_new, t + h)?;
@@ -295,14 +296,14 @@ impl Dop853 {
             if accepted {
                 system.rhs(progress.t, &step.y_new, &mut k1);
                 self.stats.rhs_evals += 1;
-                let mut k = [k1; 13];
-                k[..12].copy_from_slice(&step.k);
+                let (y_old, y_new, k, k13) = (&y, &step.y_new, &k, &k1);
                 on_step(&AcceptedStep {
                     t_old: t,
                     h,
-                    y_old: &y,
-                    y_new: &step.y_new,
+                    y_old,
+                    y_new,
                     k,
+                    k13,
                 });
                 y = step.y_new;
                 if last {

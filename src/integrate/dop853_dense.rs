@@ -175,13 +175,15 @@ impl<T: RealField + Copy, const N: usize> Dop853Interpolant<T, N> {
 }
 
 /// One accepted step as the dense output needs it: where it started, its size, the states at
-/// both ends, and its thirteen stages (the last is f(tₙ₊₁, yₙ₊₁)).
+/// both ends, its twelve stages and the thirteenth, f(tₙ₊₁, yₙ₊₁) (borrowed, so that a run
+/// without dense output copies nothing).
 pub(crate) struct AcceptedStep<'a, T: RealField + Copy, const N: usize> {
     pub(crate) t_old: T,
     pub(crate) h: T,
     pub(crate) y_old: &'a SVector<T, N>,
     pub(crate) y_new: &'a SVector<T, N>,
-    pub(crate) k: [SVector<T, N>; 13],
+    pub(crate) k: &'a [SVector<T, N>; 12],
+    pub(crate) k13: &'a SVector<T, N>,
 }
 
 /// Builds the interpolant of an accepted step, evaluating stages 14–16 (three RHS calls).
@@ -195,7 +197,8 @@ where
 {
     let (t, h, y) = (step.t_old, step.h, step.y_old);
     let mut k = [SVector::<T, N>::zeros(); 16];
-    k[..13].copy_from_slice(&step.k);
+    k[..12].copy_from_slice(step.k);
+    k[12] = *step.k13;
     for (s, row) in A_DENSE.iter().enumerate() {
         let ys = y + combine(row, &k) * h;
         system.rhs(t + h * lit(C_DENSE[s]), &ys, &mut k[13 + s]);
@@ -230,19 +233,19 @@ mod tests {
             SVector::<f64, 1>::new(1.0),
             SVector::<f64, 1>::new((-0.1f64).exp()),
         );
-        let mut k = [SVector::<f64, 1>::zeros(); 13];
+        let mut k = [SVector::<f64, 1>::zeros(); 12];
         k[0] = -y_old;
-        k[12] = -y_new;
-        let p = interpolant(
-            &decay,
-            &AcceptedStep {
-                t_old: 0.0,
-                h: 0.1,
-                y_old: &y_old,
-                y_new: &y_new,
-                k,
-            },
-        );
+        let k13 = -y_new;
+        let (t_old, h) = (0.0, 0.1);
+        let step = AcceptedStep {
+            t_old,
+            h,
+            y_old: &y_old,
+            y_new: &y_new,
+            k: &k,
+            k13: &k13,
+        };
+        let p = interpolant(&decay, &step);
         // 1e-15: the construction gives r₁ at θ = 0 and r₁ + r₂ at θ = 1 up to rounding.
         assert!((p.eval(0.0) - y_old).amax() < 1e-15);
         assert!((p.eval(0.1) - y_new).amax() < 1e-15);
