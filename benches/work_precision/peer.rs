@@ -3,12 +3,14 @@
 //! (a copy of N numbers per evaluation, small against an evaluation of these models). Its
 //! dense output at the end time is unreliable, so the end state is taken from its sparse
 //! output (one entry per accepted step), and its settings are Hairer's defaults, as ours.
+//! Each of its runs is timed alternately with the same run of ours, so that the ratio of the
+//! two times is not disturbed by a change of load on the machine between them.
 
-use eom::integrate::{OdeSystem, Stats};
+use eom::integrate::{AdaptiveOptions, Dop853, Dopri5, Integrator, OdeSystem, Stats};
 use nalgebra::SVector;
 use ode_solvers::{OutputType, System};
 
-use super::sweep::{Case, MAX_STEPS, RTOLS, Row, Setting, row_of, timed};
+use super::sweep::{Case, MAX_STEPS, RTOLS, Row, Setting, options, row_of, timed_pair};
 
 /// A system of this crate seen through the peer's trait.
 struct Peer<'a, S>(&'a S);
@@ -119,27 +121,34 @@ fn dop853<S: OdeSystem<f64, N>, const N: usize>(
     outcome(result, solver.y_out())
 }
 
-/// The peer's two methods over the tolerance sweep.
+/// The peer's two methods over the tolerance sweep, each timed alternately with ours.
 pub fn sweep_peer<S: OdeSystem<f64, N>, const N: usize>(case: &Case<N>, system: &S) -> Vec<Row> {
     let mut rows = Vec::new();
+    let t_end = case.t_end;
     for rtol in RTOLS {
         let setting = Setting::Rtol(rtol);
-        let ((end, stats), seconds) = timed(|| dopri5(case, system, rtol));
-        rows.push(row_of(
-            case,
-            ("ode_solvers Dopri5", setting),
-            end,
-            stats,
-            seconds,
-        ));
-        let ((end, stats), seconds) = timed(|| dop853(case, system, rtol));
-        rows.push(row_of(
-            case,
-            ("ode_solvers Dop853", setting),
-            end,
-            stats,
-            seconds,
-        ));
+        let (end, stats) = dopri5(case, system, rtol);
+        let mut ours = Dopri5::new(options(AdaptiveOptions::dopri5, rtol));
+        let (paired, seconds) = timed_pair(
+            || ours.integrate(system, 0.0, case.y0, t_end),
+            || dopri5(case, system, rtol),
+        );
+        let row = row_of(case, ("ode_solvers Dopri5", setting), end, stats, seconds);
+        rows.push(Row {
+            paired: Some(paired),
+            ..row
+        });
+        let (end, stats) = dop853(case, system, rtol);
+        let mut ours = Dop853::new(options(AdaptiveOptions::dop853, rtol));
+        let (paired, seconds) = timed_pair(
+            || ours.integrate(system, 0.0, case.y0, t_end),
+            || dop853(case, system, rtol),
+        );
+        let row = row_of(case, ("ode_solvers Dop853", setting), end, stats, seconds);
+        rows.push(Row {
+            paired: Some(paired),
+            ..row
+        });
     }
     rows
 }

@@ -42,6 +42,9 @@ pub struct Row {
     pub seconds: f64,
     /// Why the run failed, if it did.
     pub failure: Option<String>,
+    /// For a run of the peer: the best time of our own method on the same run and tolerance,
+    /// timed alternately with the peer's so that both see the same load on the machine.
+    pub paired: Option<f64>,
 }
 
 /// The sweep parameter of a run.
@@ -76,7 +79,7 @@ pub struct Case<'a, const M: usize> {
     pub judge: &'a dyn Fn(&SVector<f64, M>) -> (f64, f64),
 }
 
-/// Runs `run` once for the result, then again until 30 ms have passed (at most 100 times),
+/// Runs `run` once for the result, then again until 100 ms have passed (at most 1000 times),
 /// and returns the result with the best time of one run: the minimum is the least disturbed
 /// by other work on the machine.
 pub fn timed<R>(mut run: impl FnMut() -> R) -> (R, f64) {
@@ -84,8 +87,8 @@ pub fn timed<R>(mut run: impl FnMut() -> R) -> (R, f64) {
     let result = run();
     let mut best = start.elapsed().as_secs_f64();
     let budget = Instant::now();
-    for _ in 0..100 {
-        if budget.elapsed().as_secs_f64() > 0.03 {
+    for _ in 0..1000 {
+        if budget.elapsed().as_secs_f64() > 0.1 {
             break;
         }
         let start = Instant::now();
@@ -93,6 +96,25 @@ pub fn timed<R>(mut run: impl FnMut() -> R) -> (R, f64) {
         best = best.min(start.elapsed().as_secs_f64());
     }
     (result, best)
+}
+
+/// The best times of one run of `a` and of `b`, timed alternately for 200 ms (at most 2000
+/// rounds), so that a change of load on the machine affects both alike.
+pub fn timed_pair<A, B>(mut a: impl FnMut() -> A, mut b: impl FnMut() -> B) -> (f64, f64) {
+    let (mut best_a, mut best_b) = (f64::INFINITY, f64::INFINITY);
+    let budget = Instant::now();
+    for _ in 0..2000 {
+        if budget.elapsed().as_secs_f64() > 0.2 {
+            break;
+        }
+        let start = Instant::now();
+        std::hint::black_box(a());
+        best_a = best_a.min(start.elapsed().as_secs_f64());
+        let start = Instant::now();
+        std::hint::black_box(b());
+        best_b = best_b.min(start.elapsed().as_secs_f64());
+    }
+    (best_a, best_b)
 }
 
 /// Converts a state to the scalar type of a run.
@@ -155,11 +177,12 @@ pub fn row_of<const M: usize>(
         stats,
         seconds,
         failure,
+        paired: None,
     }
 }
 
 /// Adaptive options for a sweep point, with the harness's step limit.
-fn options(base: fn(f64, f64) -> AdaptiveOptions, rtol: f64) -> AdaptiveOptions {
+pub fn options(base: fn(f64, f64) -> AdaptiveOptions, rtol: f64) -> AdaptiveOptions {
     AdaptiveOptions {
         max_steps: MAX_STEPS,
         ..base(rtol, rtol)
