@@ -2,17 +2,17 @@
 //! body angular momentum (4.50) paired with a Cayley-map update of the attitude quaternion.
 //!
 //! # The method
-//! With H = [I]ω (4.15) and torque M in body axes, 4.50 reads Ḣ = H × ω + M. One step of size h:
+//! With H = \[I\]ω (4.15) and torque M in body axes, 4.50 reads Ḣ = H × ω + M. One step of size h:
 //!
-//! 1. solve H_m = Hₙ + (h/2)(H_m × ω_m + M(t + h/2, q_m, ω_m)) with ω_m = [I]⁻¹H_m by
+//! 1. solve H_m = Hₙ + (h/2)(H_m × ω_m + M(t + h/2, q_m, ω_m)) with ω_m = \[I\]⁻¹H_m by
 //!    fixed-point iteration to round-off, and set Hₙ₊₁ = 2H_m − Hₙ (the implicit midpoint rule);
 //! 2. qₙ₊₁ = qₙ ⊗ (1, hω_m/2) / √(1 + h²|ω_m|²/4), a rotation about ω_m by 2 atan(h|ω_m|/2):
 //!    the quaternion of the Cayley transform cay(h ω̂_m).
 //!
 //! # Why this method
 //! - Both invariants of torque-free motion are quadratic in H — |H|² and the kinetic energy
-//!   T = ½ H·[I]⁻¹H (4.32) — and the implicit midpoint rule conserves every quadratic invariant
-//!   exactly: (Hₙ₊₁ − Hₙ)·(Hₙ₊₁ + Hₙ) = 2h (H_m × ω_m)·H_m = 0, and likewise with [I]⁻¹H_m.
+//!   T = ½ H·\[I\]⁻¹H (4.32) — and the implicit midpoint rule conserves every quadratic invariant
+//!   exactly: (Hₙ₊₁ − Hₙ)·(Hₙ₊₁ + Hₙ) = 2h (H_m × ω_m)·H_m = 0, and likewise with \[I\]⁻¹H_m.
 //!   What is left is the round-off of the update, a random walk far below 1e-12 over 10⁶ steps.
 //!   A Lie–Poisson splitting (free rotations about the three axes in turn) conserves |H|
 //!   exactly too but the energy only to O(h²), which misses that target.
@@ -35,7 +35,7 @@ use super::{IntegrateError, Integrator, Statistics, Stats, lit, run_fixed, to_f6
 /// `[p, q, r, q0, q1, q2, q3]`: body angular velocity (4.1) and the scalar-first unit
 /// quaternion of the body-to-space rotation, with q̇ = ½ q ⊗ (0, ω).
 pub trait RigidRotation<T: RealField + Copy> {
-    /// The inertia tensor about G in body axes, chapter convention (4.12–4.15, H = [I]ω).
+    /// The inertia tensor about G in body axes, chapter convention (4.12–4.15, H = \[I\]ω).
     fn inertia(&self) -> Matrix3<T>;
 
     /// The external moment about G in body axes (4.50); zero by default (torque-free motion).

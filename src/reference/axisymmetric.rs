@@ -2,7 +2,7 @@
 //! precession, in closed form for the body rates and the attitude.
 //!
 //! Euler's equations give ṙ = 0, ṗ = −λq, q̇ = λp with λ = (I₃ − I₁) r / I₁, so the transverse
-//! rate turns in the body at λ: p + iq = (p₀ + iq₀) e^{iλt}. Since ω = [I]⁻¹H = H/I₁ − λ e₃,
+//! rate turns in the body at λ: p + iq = (p₀ + iq₀) e^{iλt}. Since ω = \[I\]⁻¹H = H/I₁ − λ e₃,
 //! with H fixed in space, the attitude is a rotation about the fixed H at Ω = |H|/I₁ composed
 //! with a rotation about the body axis e₃ at −λ: R(t) = Rot(ĥ, Ωt) R₀ Rot(e₃, −λt)
 //! (differentiate: Ṙ = R (Ω R⁻¹ĥ − λ e₃)^ = R ω̂).

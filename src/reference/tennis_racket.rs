@@ -142,7 +142,7 @@ impl ReferenceProblem<7> for TennisRacket {
         self.period()
     }
 
-    /// max(|ω − ωₑₓ|/|ω₀|, angle between R(q)[I]ωₑₓ(t) and H in space, in radians).
+    /// max(|ω − ωₑₓ|/|ω₀|, angle between R(q)\[I\]ωₑₓ(t) and H in space, in radians).
     fn error(&self, t: f64, y: &SVector<f64, 7>) -> f64 {
         let exact = self.rates(t);
         let w = Vector3::new(y[0], y[1], y[2]);

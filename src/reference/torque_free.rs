@@ -6,7 +6,7 @@
 //!   state `[p, q, r, q0, q1, q2, q3]` (scalar first). This is the "pruned" model: the products
 //!   of inertia are known to vanish and their terms are gone.
 //! - [`FullTensorBody`]: the general form 4.50–4.51 written with nalgebra,
-//!   ω̇ = [I]⁻¹(−ω × [I]ω), same state — the "full" model, which keeps every product of inertia.
+//!   ω̇ = \[I\]⁻¹(−ω × \[I\]ω), same state — the "full" model, which keeps every product of inertia.
 //! - [`EulerAngleBody`]: 4.52 with the Euler-angle kinematics 4.60, state
 //!   `[p, q, r, φ, θ, ψ]`; singular at θ = ±90°.
 
@@ -19,12 +19,12 @@ fn lit<T: RealField>(x: f64) -> T {
     nalgebra::convert(x)
 }
 
-/// The kinetic energy of rotation T = ½ ωᵀ[I]ω (4.32) for principal moments.
+/// The kinetic energy of rotation T = ½ ωᵀ\[I\]ω (4.32) for principal moments.
 pub fn energy(moments: &Vector3<f64>, omega: &Vector3<f64>) -> f64 {
     0.5 * moments.component_mul(omega).dot(omega)
 }
 
-/// The magnitude of the angular momentum |H| = |[I]ω| (4.15) for principal moments.
+/// The magnitude of the angular momentum |H| = |\[I\]ω| (4.15) for principal moments.
 pub fn momentum(moments: &Vector3<f64>, omega: &Vector3<f64>) -> f64 {
     moments.component_mul(omega).norm()
 }
@@ -81,7 +81,7 @@ pub struct FullTensorBody {
 }
 
 impl FullTensorBody {
-    /// The body with inertia tensor `inertia` (chapter convention, H = [I]ω), or `None` if it
+    /// The body with inertia tensor `inertia` (chapter convention, H = \[I\]ω), or `None` if it
     /// has no inverse.
     pub fn new(inertia: Matrix3<f64>) -> Option<Self> {
         Some(Self {
