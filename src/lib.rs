@@ -12,8 +12,10 @@ pub mod elliptic;
 pub mod energy;
 pub mod generic;
 mod inertia;
+pub mod integrate;
 pub mod mass;
 pub mod models;
+pub mod reference;
 pub mod swing;
 
 pub use inertia::{InertiaError, InertiaTensor};

@@ -1,0 +1,369 @@
+//! What the adaptive methods share: their options, the weighted error norm, Hairer's initial
+//! step, and the PI step-size controller.
+//!
+//! The controller is Gustafsson's PI controller as Hairer's DOPRI5/DOP853 codes use it
+//! (Hairer, Nørsett & Wanner, *Solving ODEs I*, §II.4): with the scaled error `err` of the
+//! step, the new step is `h · clamp(err^(−α) · err_prev^β / safety⁻¹, fac_min, fac_max)`, where
+//! α = 1/5 − 0.75β in DOPRI5 and α = 1/8 − 0.2β in DOP853, as in Hairer's codes. β = 0 is the
+//! classical (integral-only) controller.
+
+use nalgebra::{RealField, SVector};
+
+use super::{IntegrateError, OdeSystem, check_finite, check_interval, lit, to_f64};
+
+/// Tolerances and limits of an adaptive method.
+///
+/// A step is accepted when the root mean square of `errᵢ / (atol + rtol · max(|yᵢ|, |ŷᵢ|))`
+/// is at most one (Hairer's norm).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AdaptiveOptions {
+    /// Relative tolerance.
+    pub rtol: f64,
+    /// Absolute tolerance.
+    pub atol: f64,
+    /// The smallest step allowed; the run fails with [`IntegrateError::StepSizeTooSmall`]
+    /// below it (and always when a step no longer changes `t`).
+    pub h_min: f64,
+    /// The largest step allowed (`f64::INFINITY` for the length of the interval).
+    pub h_max: f64,
+    /// The initial step; `None` for Hairer's heuristic.
+    pub h0: Option<f64>,
+    /// The most steps (accepted plus rejected) a run may take.
+    pub max_steps: usize,
+    /// The PI controller's β (0.04 for DOPRI5 and 0 for DOP853 by default, as in Hairer's codes).
+    pub beta: f64,
+    /// Safety factor on the predicted step (0.9).
+    pub safety: f64,
+    /// The smallest ratio of successive steps (0.2 for DOPRI5, 0.333 for DOP853).
+    pub fac_min: f64,
+    /// The largest ratio of successive steps (10 for DOPRI5, 6 for DOP853).
+    pub fac_max: f64,
+}
+
+impl AdaptiveOptions {
+    /// Hairer's DOPRI5 defaults with the given tolerances.
+    pub fn dopri5(rtol: f64, atol: f64) -> Self {
+        Self {
+            rtol,
+            atol,
+            h_min: 0.0,
+            h_max: f64::INFINITY,
+            h0: None,
+            max_steps: 100_000,
+            beta: 0.04,
+            safety: 0.9,
+            fac_min: 0.2,
+            fac_max: 10.0,
+        }
+    }
+
+    /// Hairer's DOP853 defaults with the given tolerances.
+    pub fn dop853(rtol: f64, atol: f64) -> Self {
+        Self {
+            beta: 0.0,
+            fac_min: 0.333,
+            fac_max: 6.0,
+            ..Self::dopri5(rtol, atol)
+        }
+    }
+
+    /// Checks every field, naming the first one that is out of range.
+    pub(crate) fn validate(&self) -> Result<(), IntegrateError> {
+        let tol_ok = |v: f64| v.is_finite() && v >= 0.0;
+        for (name, value) in [("rtol", self.rtol), ("atol", self.atol)] {
+            if !tol_ok(value) {
+                return Err(IntegrateError::InvalidTolerance { name, value });
+            }
+        }
+        if self.rtol == 0.0 && self.atol == 0.0 {
+            return Err(IntegrateError::InvalidTolerance {
+                name: "rtol",
+                value: 0.0,
+            });
+        }
+        if !(self.h_min.is_finite() && self.h_min >= 0.0) {
+            return Err(IntegrateError::InvalidStep {
+                name: "h_min",
+                value: self.h_min,
+            });
+        }
+        if self.h_max.is_nan() || self.h_max <= 0.0 {
+            return Err(IntegrateError::InvalidStep {
+                name: "h_max",
+                value: self.h_max,
+            });
+        }
+        match self.h0 {
+            Some(h0) if !(h0.is_finite() && h0 > 0.0) => Err(IntegrateError::InvalidStep {
+                name: "h0",
+                value: h0,
+            }),
+            _ => Ok(()),
+        }
+    }
+}
+
+/// The weighted root-mean-square norm of `e` with weights `atol + rtol · max(|yᵢ|, |zᵢ|)`
+/// (Hairer's norm).
+pub(crate) fn scaled_rms<T: RealField + Copy, const N: usize>(
+    e: &SVector<T, N>,
+    y: &SVector<T, N>,
+    z: &SVector<T, N>,
+    (rtol, atol): (T, T),
+) -> T {
+    let mut sum = T::zero();
+    for i in 0..N {
+        let scale = atol + rtol * y[i].abs().max(z[i].abs());
+        // An exact zero error counts as zero even where the scale is zero (atol = 0 and a
+        // component that stays at zero), instead of 0/0.
+        let r = if e[i] == T::zero() {
+            T::zero()
+        } else {
+            e[i] / scale
+        };
+        sum += r * r;
+    }
+    (sum / lit::<T>(N as f64)).sqrt()
+}
+
+/// The weighted Euclidean norm of `e` with weights `atol + rtol · |yᵢ|` (Hairer's `hinit`
+/// uses this norm, not the RMS one of the error test).
+fn scaled_norm<T: RealField + Copy, const N: usize>(
+    e: &SVector<T, N>,
+    y: &SVector<T, N>,
+    tols: (T, T),
+) -> T {
+    scaled_rms(e, y, y, tols) * lit::<T>(N as f64).sqrt()
+}
+
+/// Hairer's initial step (`hinit` of DOPRI5/DOP853): a step that makes an explicit Euler step
+/// of the given order meet the tolerance, from ‖y₀‖, ‖f₀‖ and a difference estimate of ‖f′‖.
+/// Costs one RHS evaluation; `f0` is the derivative at `(t0, y0)`.
+pub(crate) fn initial_step<T, const N: usize, S>(
+    system: &S,
+    (t0, y0, f0): (T, &SVector<T, N>, &SVector<T, N>),
+    order: i32,
+    tols: (T, T),
+    h_max: T,
+) -> T
+where
+    T: RealField + Copy,
+    S: OdeSystem<T, N> + ?Sized,
+{
+    let d0 = scaled_norm(y0, y0, tols);
+    let d1 = scaled_norm(f0, y0, tols);
+    // Hairer compares the squared norms with 1e-10.
+    let tiny = lit::<T>(1e-5);
+    let fallback = lit::<T>(1e-6).min(h_max);
+    let mut h = if d0 <= tiny || d1 <= tiny {
+        lit(1e-6)
+    } else {
+        lit::<T>(0.01) * d0 / d1
+    };
+    // With atol = 0, a component that starts at zero but moves has zero weight and infinite
+    // scaled rate, so the estimate collapses to zero; take Hairer's fallback step instead.
+    h = if h > T::zero() && h.is_finite() {
+        h.min(h_max)
+    } else {
+        fallback
+    };
+    let y1 = y0 + f0 * h;
+    let mut f1 = SVector::<T, N>::zeros();
+    system.rhs(t0 + h, &y1, &mut f1);
+    let d2 = scaled_norm(&(f1 - f0), y0, tols) / h;
+    let d = d1.max(d2);
+    let h1 = if d <= lit(1e-15) {
+        (h * lit(1e-3)).max(lit(1e-6))
+    } else {
+        (lit::<T>(0.01) / d).powf(lit::<T>(1.0 / f64::from(order)))
+    };
+    let h = (h * lit(100.0)).min(h1).min(h_max);
+    if h > T::zero() && h.is_finite() {
+        h
+    } else {
+        fallback
+    }
+}
+
+/// What the controller decided about a step.
+pub(crate) enum Verdict<T> {
+    /// Keep the step; try the next one with this size.
+    Accept(T),
+    /// Redo the step with this size.
+    Reject(T),
+}
+
+/// The PI step-size controller, with the memory of the last accepted error.
+pub(crate) struct PiController<T> {
+    alpha: T,
+    beta: T,
+    safety: T,
+    fac_min: T,
+    fac_max: T,
+    err_prev: T,
+    rejected_last: bool,
+}
+
+impl<T: RealField + Copy> PiController<T> {
+    /// A controller with exponent α = `alpha0` − `beta_weight` · β (Hairer's (0.2, 0.75) for
+    /// DOPRI5, (0.125, 0.2) for DOP853).
+    pub(crate) fn new(options: &AdaptiveOptions, (alpha0, beta_weight): (f64, f64)) -> Self {
+        let alpha = alpha0 - beta_weight * options.beta;
+        Self {
+            alpha: lit(alpha),
+            beta: lit(options.beta),
+            safety: lit(options.safety),
+            fac_min: lit(options.fac_min),
+            fac_max: lit(options.fac_max),
+            err_prev: lit(1e-4),
+            rejected_last: false,
+        }
+    }
+
+    /// Accepts a step of size `h` with scaled error `err ≤ 1` and proposes the next size, or
+    /// rejects it and proposes a smaller one. After a rejection the step is not allowed to
+    /// grow (Hairer's rule, which avoids repeated rejections).
+    pub(crate) fn decide(&mut self, err: T, h: T) -> Verdict<T> {
+        let err_alpha = err.powf(self.alpha);
+        if err <= T::one() {
+            let fac = err_alpha / self.err_prev.powf(self.beta) / self.safety;
+            let mut h_new = h / fac
+                .max(T::one() / self.fac_max)
+                .min(T::one() / self.fac_min);
+            if self.rejected_last {
+                h_new = h_new.min(h);
+            }
+            self.err_prev = err.max(lit(1e-4));
+            self.rejected_last = false;
+            Verdict::Accept(h_new)
+        } else {
+            self.rejected_last = true;
+            Verdict::Reject(h / (T::one() / self.fac_min).min(err_alpha / self.safety))
+        }
+    }
+}
+
+/// The state of an adaptive run between steps: where it is, what it has spent, and the
+/// checks every step must pass.
+pub(crate) struct Progress<T> {
+    pub(crate) t: T,
+    pub(crate) t_end: T,
+    pub(crate) h: T,
+    pub(crate) steps: usize,
+    pub(crate) rejected: usize,
+    h_min: T,
+    h_max: T,
+    max_steps: usize,
+}
+
+impl<T: RealField + Copy> Progress<T> {
+    /// A run from `t0` to `t_end` with the limits of `options` and the first step `h`.
+    pub(crate) fn new(options: &AdaptiveOptions, t0: T, t_end: T, h: T) -> Self {
+        let h_max = if options.h_max.is_finite() {
+            lit(options.h_max)
+        } else {
+            t_end - t0
+        };
+        Self {
+            t: t0,
+            t_end,
+            h: h.min(h_max),
+            steps: 0,
+            rejected: 0,
+            h_min: lit(options.h_min),
+            h_max,
+            max_steps: options.max_steps,
+        }
+    }
+
+    /// The largest step allowed.
+    pub(crate) fn h_max(&self) -> T {
+        self.h_max
+    }
+
+    /// Checks the step budget and the step size, then shortens the step to land on `t_end`
+    /// when it would (nearly) reach it. Returns whether this is the last step.
+    pub(crate) fn next_step(&mut self) -> Result<bool, IntegrateError> {
+        if self.steps + self.rejected >= self.max_steps {
+            let (t, max_steps) = (to_f64(self.t), self.max_steps);
+            return Err(IntegrateError::MaxStepsExceeded { t, max_steps });
+        }
+        if self.h < self.h_min || self.t + self.h * lit(0.1) == self.t {
+            let (t, h, h_min) = (to_f64(self.t), to_f64(self.h), to_f64(self.h_min));
+            return Err(IntegrateError::StepSizeTooSmall { t, h, h_min });
+        }
+        let last = self.t + self.h * lit(1.01) >= self.t_end;
+        if last {
+            self.h = self.t_end - self.t;
+        }
+        Ok(last)
+    }
+
+    /// Applies the controller's verdict on the step just tried.
+    pub(crate) fn record(&mut self, verdict: Verdict<T>, last: bool) -> bool {
+        match verdict {
+            Verdict::Accept(h_new) => {
+                self.steps += 1;
+                self.t = if last { self.t_end } else { self.t + self.h };
+                self.h = h_new.min(self.h_max);
+                true
+            }
+            Verdict::Reject(h_new) => {
+                self.rejected += 1;
+                self.h = h_new;
+                false
+            }
+        }
+    }
+}
+
+/// What an adaptive run knows before its first step.
+pub(crate) struct Start<T: RealField + Copy, const N: usize> {
+    /// f(t0, y0), the first stage of the first step.
+    pub(crate) k1: SVector<T, N>,
+    /// The run's position, with the first step size.
+    pub(crate) progress: Progress<T>,
+    /// (rtol, atol) in the scalar type.
+    pub(crate) tols: (T, T),
+    /// The RHS evaluations spent so far (f0, and one more for the initial step heuristic).
+    pub(crate) rhs_evals: usize,
+}
+
+/// Checks the options, the interval and the initial state, evaluates f(t0, y0) and chooses
+/// the first step (given, or by Hairer's heuristic for a method of order `order`). `None`
+/// when there is nothing to integrate (`t_end = t0`).
+pub(crate) fn start<T, const N: usize, S>(
+    options: &AdaptiveOptions,
+    system: &S,
+    (t0, y0, t_end): (T, &SVector<T, N>, T),
+    order: i32,
+) -> Result<Option<Start<T, N>>, IntegrateError>
+where
+    T: RealField + Copy,
+    S: OdeSystem<T, N> + ?Sized,
+{
+    options.validate()?;
+    check_interval(t0, t_end)?;
+    check_finite(y0, t0)?;
+    if t_end == t0 {
+        return Ok(None);
+    }
+    let tols = (lit::<T>(options.rtol), lit::<T>(options.atol));
+    let mut k1 = SVector::zeros();
+    system.rhs(t0, y0, &mut k1);
+    let mut progress = Progress::new(options, t0, t_end, t_end - t0);
+    let (h, rhs_evals) = match options.h0 {
+        Some(h0) => (lit::<T>(h0).min(progress.h_max()), 1),
+        None => (
+            initial_step(system, (t0, y0, &k1), order, tols, progress.h_max()),
+            2,
+        ),
+    };
+    progress.h = h;
+    Ok(Some(Start {
+        k1,
+        progress,
+        tols,
+        rhs_evals,
+    }))
+}

@@ -1,0 +1,82 @@
+//! Why an integration stopped: each variant names the culprit (the parameter, the time, the
+//! state component), so that a failed run can be diagnosed from its message alone.
+
+use thiserror::Error;
+
+/// An integration that could not be carried out or could not be finished.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum IntegrateError {
+    /// A step size (`h`, `h_min`, `h_max`, `h0`) is zero, negative, NaN or infinite.
+    #[error("step size {name} = {value} must be positive and finite")]
+    InvalidStep {
+        /// The parameter, e.g. `"h"`.
+        name: &'static str,
+        /// Its value.
+        value: f64,
+    },
+    /// A tolerance is negative, NaN or infinite, or both tolerances are zero.
+    #[error(
+        "tolerance {name} = {value} must be finite and non-negative, and rtol, atol not both zero"
+    )]
+    InvalidTolerance {
+        /// `"rtol"` or `"atol"`.
+        name: &'static str,
+        /// Its value.
+        value: f64,
+    },
+    /// The integration interval is not finite or runs backwards.
+    #[error("integration interval [{t0}, {t_end}] must be finite with t_end ≥ t0")]
+    InvalidInterval {
+        /// The start time.
+        t0: f64,
+        /// The end time.
+        t_end: f64,
+    },
+    /// The step-size controller asked for a step below the minimum (the problem is stiff,
+    /// singular, or the tolerance is below what the precision can deliver).
+    #[error("step size {h} fell below the minimum {h_min} at t = {t}")]
+    StepSizeTooSmall {
+        /// The time reached.
+        t: f64,
+        /// The step the controller asked for.
+        h: f64,
+        /// The minimum step allowed.
+        h_min: f64,
+    },
+    /// The maximum number of steps (accepted plus rejected) was reached before `t_end`.
+    #[error("maximum number of steps {max_steps} exceeded at t = {t}")]
+    MaxStepsExceeded {
+        /// The time reached.
+        t: f64,
+        /// The limit.
+        max_steps: usize,
+    },
+    /// A state component became NaN or infinite (the right-hand side produced it).
+    #[error("state component {component} is not finite at t = {t}")]
+    NonFiniteState {
+        /// The index of the first non-finite component.
+        component: usize,
+        /// The time at which it appeared.
+        t: f64,
+    },
+    /// Dense output was asked for a number of times that differs from the room given for it.
+    #[error("{times} output times but room for {slots} states")]
+    OutputLength {
+        /// The number of output times.
+        times: usize,
+        /// The number of output slots.
+        slots: usize,
+    },
+    /// The inertia tensor given to a rotation integrator has no finite inverse.
+    #[error("inertia tensor is singular: [I]⁻¹ (for ω = [I]⁻¹H) does not exist")]
+    SingularInertia,
+    /// The implicit equation of a step did not converge (the step is too large for the
+    /// angular velocity: the fixed-point iteration contracts only while h·|ω| is small).
+    #[error("implicit step did not converge in {iterations} iterations at t = {t}")]
+    NotConverged {
+        /// The time at the start of the step.
+        t: f64,
+        /// The iterations spent.
+        iterations: usize,
+    },
+}
