@@ -65,8 +65,12 @@ macro_rules! run_generated {
 fn run_generic(tensor: &InertiaTensor, quaternion: bool, calls: usize) -> f64 {
     let body = RigidBody::<f64>::new(5.0, tensor).expect("valid body");
     let (f, m) = (Vector3::from(FORCE), Vector3::from(MOMENT));
-    let euler: Vec<SVector<f64, 12>> = (0..STATES).map(|i| SVector::from(state::<12>(i, false))).collect();
-    let quaternions: Vec<SVector<f64, 13>> = (0..STATES).map(|i| SVector::from(state::<13>(i, true))).collect();
+    let euler: Vec<SVector<f64, 12>> = (0..STATES)
+        .map(|i| SVector::from(state::<12>(i, false)))
+        .collect();
+    let quaternions: Vec<SVector<f64, 13>> = (0..STATES)
+        .map(|i| SVector::from(state::<13>(i, true)))
+        .collect();
     let mut sum = 0.0;
     for i in 0..calls {
         sum += if quaternion {
@@ -80,9 +84,16 @@ fn run_generic(tensor: &InertiaTensor, quaternion: bool, calls: usize) -> f64 {
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
-    let (form, variant) = (args.get(1).map_or("generated", |s| s), args.get(2).map_or("principal_euler", |s| s));
+    let (form, variant) = (
+        args.get(1).map_or("generated", |s| s),
+        args.get(2).map_or("principal_euler", |s| s),
+    );
     let calls: usize = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(1000);
-    let (full, xz, principal) = (tensor(0.3, -0.2, 0.5), tensor(0.0, 0.4, 0.0), tensor(0.0, 0.0, 0.0));
+    let (full, xz, principal) = (
+        tensor(0.3, -0.2, 0.5),
+        tensor(0.0, 0.4, 0.0),
+        tensor(0.0, 0.0, 0.0),
+    );
     let quaternion = variant.ends_with("quaternion");
     let body = match variant.split('_').next() {
         Some("full") => full,
@@ -93,7 +104,9 @@ fn main() {
         ("generic", _) => run_generic(&body, quaternion, calls),
         (_, "full_euler") => run_generated!(SpatialFullEuler<f64>, body, 12, false, calls),
         (_, "xz_euler") => run_generated!(SpatialXzEuler<f64>, body, 12, false, calls),
-        (_, "principal_euler") => run_generated!(SpatialPrincipalEuler<f64>, body, 12, false, calls),
+        (_, "principal_euler") => {
+            run_generated!(SpatialPrincipalEuler<f64>, body, 12, false, calls)
+        }
         (_, "full_quaternion") => run_generated!(SpatialFullQuaternion<f64>, body, 13, true, calls),
         (_, "xz_quaternion") => run_generated!(SpatialXzQuaternion<f64>, body, 13, true, calls),
         _ => run_generated!(SpatialPrincipalQuaternion<f64>, body, 13, true, calls),

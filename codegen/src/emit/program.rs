@@ -4,7 +4,7 @@
 //! parameters only and are hoisted into a struct computed once; runtime monomials are built as
 //! products of leaves (state, inputs, stages, sin, cos, sec of angles) with every prefix product
 //! shared, so `q*r` is computed once however many equations use it. One `sin_cos` per angle,
-//! and sec θ as the reciprocal of that same cosine.
+//! sec θ as the reciprocal of that same cosine, and each other reciprocal once.
 
 use crate::model::System;
 use crate::symbolic::{Atom, Expr, Monomial, Rational};
@@ -53,10 +53,12 @@ pub enum Step {
         /// The angle's variable.
         angle: String,
     },
-    /// `let sec_a = c_a.simd_recip();`
-    Secant {
-        /// The angle's variable.
-        angle: String,
+    /// `let name = of.simd_recip();` (sec θ from cos θ, 1/|q|² from |q|²)
+    Reciprocal {
+        /// The new variable.
+        name: String,
+        /// The variable inverted.
+        of: String,
     },
     /// `let name = left * right;`
     Product {
@@ -112,7 +114,7 @@ struct Builder<'a> {
     coefficient_index: BTreeMap<Expr, usize>,
     products: BTreeMap<Vec<String>, String>,
     angles_with_sin_cos: Vec<String>,
-    angles_with_secant: Vec<String>,
+    reciprocals: Vec<String>,
 }
 
 impl Program {
@@ -129,7 +131,7 @@ impl Program {
             coefficient_index: BTreeMap::new(),
             products: BTreeMap::new(),
             angles_with_sin_cos: vec![],
-            angles_with_secant: vec![],
+            reciprocals: vec![],
         };
         for (name, value) in &system.stages {
             b.sum_into(identifier(name), value);
@@ -164,10 +166,13 @@ impl Builder<'_> {
         name
     }
 
+    /// The variable of a monomial that is one runtime atom to the first power, if it is one.
     fn single_leaf(&mut self, monomial: &Monomial) -> Option<String> {
-        let leaves = self.leaves(monomial);
-        (leaves.len() == 1 && monomial.factors().all(|(a, _)| self.is_runtime(a)))
-            .then(|| leaves[0].clone())
+        let mut factors = monomial.factors();
+        match (factors.next(), factors.next()) {
+            (Some((atom, 1)), None) if self.is_runtime(atom) => self.leaves(monomial).pop(),
+            _ => None,
+        }
     }
 
     fn sum_into(&mut self, name: String, value: &Expr) {
@@ -250,10 +255,16 @@ impl Builder<'_> {
         let mut leaves = Vec::new();
         for (atom, power) in monomial.factors() {
             let leaf = match atom {
-                Atom::Symbol(s) => identifier(s),
+                Atom::Symbol(s) if power > 0 => identifier(s),
+                Atom::Symbol(s) => {
+                    self.reciprocal(&format!("inv_{}", identifier(s)), &identifier(s))
+                }
                 Atom::Sin(a) => format!("s_{}", self.sin_cos(a)),
                 Atom::Cos(a) if power > 0 => format!("c_{}", self.sin_cos(a)),
-                Atom::Cos(a) => format!("sec_{}", self.secant(a)),
+                Atom::Cos(a) => {
+                    let angle = self.sin_cos(a);
+                    self.reciprocal(&format!("sec_{angle}"), &format!("c_{angle}"))
+                }
             };
             leaves.extend(std::iter::repeat_n(leaf, power.unsigned_abs() as usize));
         }
@@ -270,14 +281,17 @@ impl Builder<'_> {
         var
     }
 
-    fn secant(&mut self, angle: &str) -> String {
-        let var = self.sin_cos(angle);
-        if !self.angles_with_secant.contains(&var) {
-            self.angles_with_secant.push(var.clone());
+    /// `1/of`, computed once.
+    fn reciprocal(&mut self, name: &str, of: &str) -> String {
+        if !self.reciprocals.iter().any(|r| r == name) {
+            self.reciprocals.push(name.to_owned());
             self.program.operations.div += 1;
-            self.program.steps.push(Step::Secant { angle: var.clone() });
+            self.program.steps.push(Step::Reciprocal {
+                name: name.to_owned(),
+                of: of.to_owned(),
+            });
         }
-        var
+        name.to_owned()
     }
 
     /// The product of a monomial's leaves, sharing every prefix already computed.

@@ -192,7 +192,7 @@ fn uses(program: &Program, var: &str) -> bool {
     program.outputs.iter().any(|o| o == var)
         || program.steps.iter().any(|step| match step {
             Step::SinCos { angle } => angle == var,
-            Step::Secant { angle } => var == format!("c_{angle}"),
+            Step::Reciprocal { of, .. } => of == var,
             Step::Product { left, right, .. } => left == var || right == var,
             Step::Sum { terms, .. } => terms.iter().any(|t| t.factor.as_deref() == Some(var)),
         })
@@ -216,9 +216,9 @@ fn step_tokens(program: &Program, step: &Step) -> TokenStream {
             let c = binding(program, &format!("c_{angle}"));
             quote! { let (#s, #c) = #a.simd_sin_cos(); }
         }
-        Step::Secant { angle } => {
-            let (sec, c) = (ident(&format!("sec_{angle}")), ident(&format!("c_{angle}")));
-            quote! { let #sec = #c.simd_recip(); }
+        Step::Reciprocal { name, of } => {
+            let (name, of) = (ident(name), ident(of));
+            quote! { let #name = #of.simd_recip(); }
         }
         Step::Product { name, left, right } => {
             let (name, left, right) = (ident(name), ident(left), ident(right));

@@ -76,14 +76,30 @@ pub struct System {
 impl System {
     /// The outputs with every stage substituted back: what the staged program computes.
     pub fn expanded_outputs(&self) -> Result<Vec<Expr>, SymbolicError> {
-        let mut outputs = self.outputs.clone();
-        for (symbol, definition) in self.stages.iter().rev() {
-            outputs = outputs
-                .iter()
-                .map(|o| o.subs(symbol, definition))
-                .collect::<Result<_, _>>()?;
+        (0..self.outputs.len())
+            .map(|i| self.expanded_output(i))
+            .collect()
+    }
+
+    /// One output with every stage substituted back.
+    pub fn expanded_output(&self, index: usize) -> Result<Expr, SymbolicError> {
+        self.stages.iter().rev().try_fold(
+            self.outputs[index].clone(),
+            |output, (symbol, definition)| output.subs(symbol, definition),
+        )
+    }
+
+    /// The system with symbols replaced in every stage and output (for checks at a point of a
+    /// parametrisation, e.g. the quaternion of Euler angles, where |q| = 1 identically).
+    pub fn substituted(&self, substitutions: &[(&str, Expr)]) -> Result<System, SymbolicError> {
+        let mut system = self.clone();
+        for (_, definition) in system.stages.iter_mut() {
+            *definition = definition.subs_all(substitutions)?;
         }
-        Ok(outputs)
+        for output in system.outputs.iter_mut() {
+            *output = output.subs_all(substitutions)?;
+        }
+        Ok(system)
     }
 
     /// True for a symbol that is a parameter or a reciprocal of parameters.

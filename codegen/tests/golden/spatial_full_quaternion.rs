@@ -34,23 +34,23 @@ pub struct Coefficients<T> {
     pub k4: T,
     /// `Izz`
     pub k5: T,
-    /// `1/2`
-    pub k6: T,
-    /// `M^-1`
-    pub k7: T,
-    /// `Iyy*Izz*inv_det - Iyz^2*inv_det`
-    pub k8: T,
-    /// `Ixy*Izz*inv_det - Ixz*Iyz*inv_det`
-    pub k9: T,
-    /// `Ixy*Iyz*inv_det - Ixz*Iyy*inv_det`
-    pub k10: T,
-    /// `Ixx*Izz*inv_det - Ixz^2*inv_det`
-    pub k11: T,
-    /// `Ixx*Iyz*inv_det - Ixy*Ixz*inv_det`
-    pub k12: T,
-    /// `Ixx*Iyy*inv_det - Ixy^2*inv_det`
-    pub k13: T,
     /// `2`
+    pub k6: T,
+    /// `1/2`
+    pub k7: T,
+    /// `M^-1`
+    pub k8: T,
+    /// `Iyy*Izz*inv_det - Iyz^2*inv_det`
+    pub k9: T,
+    /// `Ixy*Izz*inv_det - Ixz*Iyz*inv_det`
+    pub k10: T,
+    /// `Ixy*Iyz*inv_det - Ixz*Iyy*inv_det`
+    pub k11: T,
+    /// `Ixx*Izz*inv_det - Ixz^2*inv_det`
+    pub k12: T,
+    /// `Ixx*Iyz*inv_det - Ixy*Ixz*inv_det`
+    pub k13: T,
+    /// `Ixx*Iyy*inv_det - Ixy^2*inv_det`
     pub k14: T,
 }
 impl<T: SimdRealField + Copy> Coefficients<T> {
@@ -74,15 +74,15 @@ impl<T: SimdRealField + Copy> Coefficients<T> {
             k3: T::from_subset(&(iyy)),
             k4: T::from_subset(&(iyz)),
             k5: T::from_subset(&(izz)),
-            k6: T::from_subset(&(0.5)),
-            k7: T::from_subset(&(1.0 / (mass))),
-            k8: T::from_subset(&(iyy * izz * inv_det - iyz * iyz * inv_det)),
-            k9: T::from_subset(&(ixy * izz * inv_det - ixz * iyz * inv_det)),
-            k10: T::from_subset(&(ixy * iyz * inv_det - ixz * iyy * inv_det)),
-            k11: T::from_subset(&(ixx * izz * inv_det - ixz * ixz * inv_det)),
-            k12: T::from_subset(&(ixx * iyz * inv_det - ixy * ixz * inv_det)),
-            k13: T::from_subset(&(ixx * iyy * inv_det - ixy * ixy * inv_det)),
-            k14: T::from_subset(&(2.0)),
+            k6: T::from_subset(&(2.0)),
+            k7: T::from_subset(&(0.5)),
+            k8: T::from_subset(&(1.0 / (mass))),
+            k9: T::from_subset(&(iyy * izz * inv_det - iyz * iyz * inv_det)),
+            k10: T::from_subset(&(ixy * izz * inv_det - ixz * iyz * inv_det)),
+            k11: T::from_subset(&(ixy * iyz * inv_det - ixz * iyy * inv_det)),
+            k12: T::from_subset(&(ixx * izz * inv_det - ixz * ixz * inv_det)),
+            k13: T::from_subset(&(ixx * iyz * inv_det - ixy * ixz * inv_det)),
+            k14: T::from_subset(&(ixx * iyy * inv_det - ixy * ixy * inv_det)),
         }
     }
 }
@@ -107,9 +107,9 @@ pub const INPUTS: [&str; 6] = ["F_x", "F_y", "F_z", "M_x", "M_y", "M_z"];
 /// Operations per call of [`rhs`]: additions, multiplications, divisions, square roots,
 /// trigonometric calls (`sin_cos` counts once).
 pub const OPERATIONS: [(&str, u32); 5] = [
-    ("add", 51),
-    ("mul", 66),
-    ("div", 0),
+    ("add", 54),
+    ("mul", 71),
+    ("div", 1),
     ("sqrt", 0),
     ("trig", 0),
 ];
@@ -118,7 +118,7 @@ pub const OPERATIONS: [(&str, u32); 5] = [
 /// State: `[u, v, w, p, q, r, x, y, z, q0, q1, q2, q3]`; inputs: `[F_x, F_y, F_z, M_x, M_y, M_z]`.
 /// Returns the time derivative of the state.
 ///
-/// Cost per call: 51 add, 66 mul, 0 div, 0 sqrt, 0 trig (strategy: StagedMomentum).
+/// Cost per call: 54 add, 71 mul, 1 div, 0 sqrt, 0 trig (strategy: StagedMomentum).
 #[inline]
 pub fn rhs<T: SimdRealField + Copy>(
     k: &Coefficients<T>,
@@ -160,24 +160,34 @@ pub fn rhs<T: SimdRealField + Copy>(
     let q1_t_y = q1 * t_y;
     let q2_t_x = q2 * t_x;
     let s_z = q0_t_z + q1_t_y - q2_t_x;
-    let p_half = k.k6 * p;
-    let q_half = k.k6 * q;
-    let r_half = k.k6 * r;
+    let q0_q0 = q0 * q0;
+    let q1_q1 = q1 * q1;
+    let q2_q2 = q2 * q2;
+    let q3_q3 = q3 * q3;
+    let norm2 = q0_q0 + q1_q1 + q2_q2 + q3_q3;
+    let inv_norm2 = norm2.simd_recip();
+    let two_over_norm2 = k.k6 * inv_norm2;
+    let p_half = k.k7 * p;
+    let q_half = k.k7 * q;
+    let r_half = k.k7 * r;
     let q_w = q * w;
     let r_v = r * v;
-    let u_rate = k.k7 * f_x - q_w + r_v;
+    let u_rate = k.k8 * f_x - q_w + r_v;
     let p_w = p * w;
     let r_u = r * u;
-    let v_rate = k.k7 * f_y + p_w - r_u;
+    let v_rate = k.k8 * f_y + p_w - r_u;
     let p_v = p * v;
     let q_u = q * u;
-    let w_rate = k.k7 * f_z - p_v + q_u;
-    let p_rate = -k.k8 * b_x + k.k9 * b_y - k.k10 * b_z;
-    let q_rate = k.k9 * b_x - k.k11 * b_y + k.k12 * b_z;
-    let r_rate = -k.k10 * b_x + k.k12 * b_y - k.k13 * b_z;
-    let x_rate = k.k14 * s_x + u;
-    let y_rate = k.k14 * s_y + v;
-    let z_rate = k.k14 * s_z + w;
+    let w_rate = k.k8 * f_z - p_v + q_u;
+    let p_rate = -k.k9 * b_x + k.k10 * b_y - k.k11 * b_z;
+    let q_rate = k.k10 * b_x - k.k12 * b_y + k.k13 * b_z;
+    let r_rate = -k.k11 * b_x + k.k13 * b_y - k.k14 * b_z;
+    let s_x_two_over_norm2 = s_x * two_over_norm2;
+    let x_rate = s_x_two_over_norm2 + u;
+    let s_y_two_over_norm2 = s_y * two_over_norm2;
+    let y_rate = s_y_two_over_norm2 + v;
+    let s_z_two_over_norm2 = s_z * two_over_norm2;
+    let z_rate = s_z_two_over_norm2 + w;
     let p_half_q1 = p_half * q1;
     let q2_q_half = q2 * q_half;
     let q3_r_half = q3 * r_half;

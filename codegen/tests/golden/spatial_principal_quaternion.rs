@@ -16,23 +16,23 @@ pub struct Parameters {
 /// Every parameter-only coefficient of [`rhs`], computed once from [`Parameters`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Coefficients<T> {
-    /// `1/2`
-    pub k0: T,
-    /// `M^-1`
-    pub k1: T,
-    /// `Ixx^-1`
-    pub k2: T,
-    /// `Ixx^-1*Iyy - Ixx^-1*Izz`
-    pub k3: T,
-    /// `Iyy^-1`
-    pub k4: T,
-    /// `Ixx*Iyy^-1 - Iyy^-1*Izz`
-    pub k5: T,
-    /// `Izz^-1`
-    pub k6: T,
-    /// `Ixx*Izz^-1 - Iyy*Izz^-1`
-    pub k7: T,
     /// `2`
+    pub k0: T,
+    /// `1/2`
+    pub k1: T,
+    /// `M^-1`
+    pub k2: T,
+    /// `Ixx^-1`
+    pub k3: T,
+    /// `Ixx^-1*Iyy - Ixx^-1*Izz`
+    pub k4: T,
+    /// `Iyy^-1`
+    pub k5: T,
+    /// `Ixx*Iyy^-1 - Iyy^-1*Izz`
+    pub k6: T,
+    /// `Izz^-1`
+    pub k7: T,
+    /// `Ixx*Izz^-1 - Iyy*Izz^-1`
     pub k8: T,
 }
 impl<T: SimdRealField + Copy> Coefficients<T> {
@@ -44,15 +44,15 @@ impl<T: SimdRealField + Copy> Coefficients<T> {
         let iyy = parameters.iyy;
         let izz = parameters.izz;
         Self {
-            k0: T::from_subset(&(0.5)),
-            k1: T::from_subset(&(1.0 / (mass))),
-            k2: T::from_subset(&(1.0 / (ixx))),
-            k3: T::from_subset(&(iyy / (ixx) - izz / (ixx))),
-            k4: T::from_subset(&(1.0 / (iyy))),
-            k5: T::from_subset(&(ixx / (iyy) - izz / (iyy))),
-            k6: T::from_subset(&(1.0 / (izz))),
-            k7: T::from_subset(&(ixx / (izz) - iyy / (izz))),
-            k8: T::from_subset(&(2.0)),
+            k0: T::from_subset(&(2.0)),
+            k1: T::from_subset(&(0.5)),
+            k2: T::from_subset(&(1.0 / (mass))),
+            k3: T::from_subset(&(1.0 / (ixx))),
+            k4: T::from_subset(&(iyy / (ixx) - izz / (ixx))),
+            k5: T::from_subset(&(1.0 / (iyy))),
+            k6: T::from_subset(&(ixx / (iyy) - izz / (iyy))),
+            k7: T::from_subset(&(1.0 / (izz))),
+            k8: T::from_subset(&(ixx / (izz) - iyy / (izz))),
         }
     }
 }
@@ -77,9 +77,9 @@ pub const INPUTS: [&str; 6] = ["F_x", "F_y", "F_z", "M_x", "M_y", "M_z"];
 /// Operations per call of [`rhs`]: additions, multiplications, divisions, square roots,
 /// trigonometric calls (`sin_cos` counts once).
 pub const OPERATIONS: [(&str, u32); 5] = [
-    ("add", 32),
-    ("mul", 51),
-    ("div", 0),
+    ("add", 35),
+    ("mul", 56),
+    ("div", 1),
     ("sqrt", 0),
     ("trig", 0),
 ];
@@ -88,7 +88,7 @@ pub const OPERATIONS: [(&str, u32); 5] = [
 /// State: `[u, v, w, p, q, r, x, y, z, q0, q1, q2, q3]`; inputs: `[F_x, F_y, F_z, M_x, M_y, M_z]`.
 /// Returns the time derivative of the state.
 ///
-/// Cost per call: 32 add, 51 mul, 0 div, 0 sqrt, 0 trig (strategy: Expanded).
+/// Cost per call: 35 add, 56 mul, 1 div, 0 sqrt, 0 trig (strategy: Expanded).
 #[inline]
 pub fn rhs<T: SimdRealField + Copy>(
     k: &Coefficients<T>,
@@ -118,27 +118,37 @@ pub fn rhs<T: SimdRealField + Copy>(
     let q1_t_y = q1 * t_y;
     let q2_t_x = q2 * t_x;
     let s_z = q0_t_z + q1_t_y - q2_t_x;
-    let p_half = k.k0 * p;
-    let q_half = k.k0 * q;
-    let r_half = k.k0 * r;
+    let q0_q0 = q0 * q0;
+    let q1_q1 = q1 * q1;
+    let q2_q2 = q2 * q2;
+    let q3_q3 = q3 * q3;
+    let norm2 = q0_q0 + q1_q1 + q2_q2 + q3_q3;
+    let inv_norm2 = norm2.simd_recip();
+    let two_over_norm2 = k.k0 * inv_norm2;
+    let p_half = k.k1 * p;
+    let q_half = k.k1 * q;
+    let r_half = k.k1 * r;
     let q_w = q * w;
     let r_v = r * v;
-    let u_rate = k.k1 * f_x - q_w + r_v;
+    let u_rate = k.k2 * f_x - q_w + r_v;
     let p_w = p * w;
     let r_u = r * u;
-    let v_rate = k.k1 * f_y + p_w - r_u;
+    let v_rate = k.k2 * f_y + p_w - r_u;
     let p_v = p * v;
     let q_u = q * u;
-    let w_rate = k.k1 * f_z - p_v + q_u;
+    let w_rate = k.k2 * f_z - p_v + q_u;
     let q_r = q * r;
-    let p_rate = k.k2 * m_x + k.k3 * q_r;
+    let p_rate = k.k3 * m_x + k.k4 * q_r;
     let p_r = p * r;
-    let q_rate = k.k4 * m_y - k.k5 * p_r;
+    let q_rate = k.k5 * m_y - k.k6 * p_r;
     let p_q = p * q;
-    let r_rate = k.k6 * m_z + k.k7 * p_q;
-    let x_rate = k.k8 * s_x + u;
-    let y_rate = k.k8 * s_y + v;
-    let z_rate = k.k8 * s_z + w;
+    let r_rate = k.k7 * m_z + k.k8 * p_q;
+    let s_x_two_over_norm2 = s_x * two_over_norm2;
+    let x_rate = s_x_two_over_norm2 + u;
+    let s_y_two_over_norm2 = s_y * two_over_norm2;
+    let y_rate = s_y_two_over_norm2 + v;
+    let s_z_two_over_norm2 = s_z * two_over_norm2;
+    let z_rate = s_z_two_over_norm2 + w;
     let p_half_q1 = p_half * q1;
     let q2_q_half = q2 * q_half;
     let q3_r_half = q3 * r_half;

@@ -18,29 +18,29 @@ pub struct Parameters {
 /// Every parameter-only coefficient of [`rhs`], computed once from [`Parameters`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Coefficients<T> {
-    /// `1/2`
-    pub k0: T,
-    /// `M^-1`
-    pub k1: T,
-    /// `Iyy*Izz*inv_det`
-    pub k2: T,
-    /// `Ixz*Iyy*inv_det`
-    pub k3: T,
-    /// `Ixx*Ixz*Iyy*inv_det + Ixz*Iyy*Izz*inv_det - Ixz*Iyy^2*inv_det`
-    pub k4: T,
-    /// `Ixz^2*Iyy*inv_det + Iyy*Izz^2*inv_det - Iyy^2*Izz*inv_det`
-    pub k5: T,
-    /// `Ixx*Izz*inv_det - Ixz^2*inv_det`
-    pub k6: T,
-    /// `Ixx*Ixz^2*inv_det + Ixx*Izz^2*inv_det - Ixx^2*Izz*inv_det - Ixz^2*Izz*inv_det`
-    pub k7: T,
-    /// `Ixx*Ixz*Izz*inv_det - Ixz^3*inv_det`
-    pub k8: T,
-    /// `Ixx*Iyy*inv_det`
-    pub k9: T,
-    /// `Ixx*Iyy^2*inv_det - Ixx^2*Iyy*inv_det - Ixz^2*Iyy*inv_det`
-    pub k10: T,
     /// `2`
+    pub k0: T,
+    /// `1/2`
+    pub k1: T,
+    /// `M^-1`
+    pub k2: T,
+    /// `Iyy*Izz*inv_det`
+    pub k3: T,
+    /// `Ixz*Iyy*inv_det`
+    pub k4: T,
+    /// `Ixx*Ixz*Iyy*inv_det + Ixz*Iyy*Izz*inv_det - Ixz*Iyy^2*inv_det`
+    pub k5: T,
+    /// `Ixz^2*Iyy*inv_det + Iyy*Izz^2*inv_det - Iyy^2*Izz*inv_det`
+    pub k6: T,
+    /// `Ixx*Izz*inv_det - Ixz^2*inv_det`
+    pub k7: T,
+    /// `Ixx*Ixz^2*inv_det + Ixx*Izz^2*inv_det - Ixx^2*Izz*inv_det - Ixz^2*Izz*inv_det`
+    pub k8: T,
+    /// `Ixx*Ixz*Izz*inv_det - Ixz^3*inv_det`
+    pub k9: T,
+    /// `Ixx*Iyy*inv_det`
+    pub k10: T,
+    /// `Ixx*Iyy^2*inv_det - Ixx^2*Iyy*inv_det - Ixz^2*Iyy*inv_det`
     pub k11: T,
 }
 impl<T: SimdRealField + Copy> Coefficients<T> {
@@ -54,30 +54,30 @@ impl<T: SimdRealField + Copy> Coefficients<T> {
         let ixz = parameters.ixz;
         let inv_det = 1.0 / (ixx * iyy * izz - ixz * ixz * iyy);
         Self {
-            k0: T::from_subset(&(0.5)),
-            k1: T::from_subset(&(1.0 / (mass))),
-            k2: T::from_subset(&(iyy * izz * inv_det)),
-            k3: T::from_subset(&(ixz * iyy * inv_det)),
-            k4: T::from_subset(
+            k0: T::from_subset(&(2.0)),
+            k1: T::from_subset(&(0.5)),
+            k2: T::from_subset(&(1.0 / (mass))),
+            k3: T::from_subset(&(iyy * izz * inv_det)),
+            k4: T::from_subset(&(ixz * iyy * inv_det)),
+            k5: T::from_subset(
                 &(ixx * ixz * iyy * inv_det + ixz * iyy * izz * inv_det
                     - ixz * iyy * iyy * inv_det),
             ),
-            k5: T::from_subset(
+            k6: T::from_subset(
                 &(ixz * ixz * iyy * inv_det + iyy * izz * izz * inv_det
                     - iyy * iyy * izz * inv_det),
             ),
-            k6: T::from_subset(&(ixx * izz * inv_det - ixz * ixz * inv_det)),
-            k7: T::from_subset(
+            k7: T::from_subset(&(ixx * izz * inv_det - ixz * ixz * inv_det)),
+            k8: T::from_subset(
                 &(ixx * ixz * ixz * inv_det + ixx * izz * izz * inv_det
                     - ixx * ixx * izz * inv_det - ixz * ixz * izz * inv_det),
             ),
-            k8: T::from_subset(&(ixx * ixz * izz * inv_det - ixz * ixz * ixz * inv_det)),
-            k9: T::from_subset(&(ixx * iyy * inv_det)),
-            k10: T::from_subset(
+            k9: T::from_subset(&(ixx * ixz * izz * inv_det - ixz * ixz * ixz * inv_det)),
+            k10: T::from_subset(&(ixx * iyy * inv_det)),
+            k11: T::from_subset(
                 &(ixx * iyy * iyy * inv_det - ixx * ixx * iyy * inv_det
                     - ixz * ixz * iyy * inv_det),
             ),
-            k11: T::from_subset(&(2.0)),
         }
     }
 }
@@ -102,9 +102,9 @@ pub const INPUTS: [&str; 6] = ["F_x", "F_y", "F_z", "M_x", "M_y", "M_z"];
 /// Operations per call of [`rhs`]: additions, multiplications, divisions, square roots,
 /// trigonometric calls (`sin_cos` counts once).
 pub const OPERATIONS: [(&str, u32); 5] = [
-    ("add", 39),
-    ("mul", 59),
-    ("div", 0),
+    ("add", 42),
+    ("mul", 64),
+    ("div", 1),
     ("sqrt", 0),
     ("trig", 0),
 ];
@@ -113,7 +113,7 @@ pub const OPERATIONS: [(&str, u32); 5] = [
 /// State: `[u, v, w, p, q, r, x, y, z, q0, q1, q2, q3]`; inputs: `[F_x, F_y, F_z, M_x, M_y, M_z]`.
 /// Returns the time derivative of the state.
 ///
-/// Cost per call: 39 add, 59 mul, 0 div, 0 sqrt, 0 trig (strategy: Expanded).
+/// Cost per call: 42 add, 64 mul, 1 div, 0 sqrt, 0 trig (strategy: Expanded).
 #[inline]
 pub fn rhs<T: SimdRealField + Copy>(
     k: &Coefficients<T>,
@@ -143,29 +143,39 @@ pub fn rhs<T: SimdRealField + Copy>(
     let q1_t_y = q1 * t_y;
     let q2_t_x = q2 * t_x;
     let s_z = q0_t_z + q1_t_y - q2_t_x;
-    let p_half = k.k0 * p;
-    let q_half = k.k0 * q;
-    let r_half = k.k0 * r;
+    let q0_q0 = q0 * q0;
+    let q1_q1 = q1 * q1;
+    let q2_q2 = q2 * q2;
+    let q3_q3 = q3 * q3;
+    let norm2 = q0_q0 + q1_q1 + q2_q2 + q3_q3;
+    let inv_norm2 = norm2.simd_recip();
+    let two_over_norm2 = k.k0 * inv_norm2;
+    let p_half = k.k1 * p;
+    let q_half = k.k1 * q;
+    let r_half = k.k1 * r;
     let q_w = q * w;
     let r_v = r * v;
-    let u_rate = k.k1 * f_x - q_w + r_v;
+    let u_rate = k.k2 * f_x - q_w + r_v;
     let p_w = p * w;
     let r_u = r * u;
-    let v_rate = k.k1 * f_y + p_w - r_u;
+    let v_rate = k.k2 * f_y + p_w - r_u;
     let p_v = p * v;
     let q_u = q * u;
-    let w_rate = k.k1 * f_z - p_v + q_u;
+    let w_rate = k.k2 * f_z - p_v + q_u;
     let p_q = p * q;
     let q_r = q * r;
-    let p_rate = k.k2 * m_x - k.k3 * m_z - k.k4 * p_q - k.k5 * q_r;
+    let p_rate = k.k3 * m_x - k.k4 * m_z - k.k5 * p_q - k.k6 * q_r;
     let p_r = p * r;
     let p_p = p * p;
     let r_r = r * r;
-    let q_rate = k.k6 * m_y + k.k7 * p_r + k.k8 * p_p - k.k8 * r_r;
-    let r_rate = -k.k3 * m_x + k.k9 * m_z - k.k10 * p_q + k.k4 * q_r;
-    let x_rate = k.k11 * s_x + u;
-    let y_rate = k.k11 * s_y + v;
-    let z_rate = k.k11 * s_z + w;
+    let q_rate = k.k7 * m_y + k.k8 * p_r + k.k9 * p_p - k.k9 * r_r;
+    let r_rate = -k.k4 * m_x + k.k10 * m_z - k.k11 * p_q + k.k5 * q_r;
+    let s_x_two_over_norm2 = s_x * two_over_norm2;
+    let x_rate = s_x_two_over_norm2 + u;
+    let s_y_two_over_norm2 = s_y * two_over_norm2;
+    let y_rate = s_y_two_over_norm2 + v;
+    let s_z_two_over_norm2 = s_z * two_over_norm2;
+    let z_rate = s_z_two_over_norm2 + w;
     let p_half_q1 = p_half * q1;
     let q2_q_half = q2 * q_half;
     let q3_r_half = q3 * r_half;
