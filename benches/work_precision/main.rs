@@ -3,25 +3,38 @@
 //! exact solutions of `eom::reference`, with `ode_solvers`' Dopri5 and Dop853 as the peer.
 //!
 //! `cargo bench --bench work_precision` prints the Markdown report and writes it, with the
-//! plots, to `target/work_precision/`: `work_precision.md`, `work_precision.svg` (error
-//! against time, one panel per problem) and `tennis_racket_variants.svg`.
+//! plots, to `target/work_precision/` and to `docs/work_precision/` of the workspace (the
+//! copy the README shows): `work_precision.md`, `work_precision.svg` (error against time, one
+//! panel per problem) and `tennis_racket_variants.svg` (the tennis racket's model variants).
 //!
-//! To add a model, add one line to the list of its problem (a name and a system).
+//! The tennis racket is run in every model form: f64 and f32; quaternion and Euler-angle
+//! kinematics; the hand-written forms of `eom::reference::torque_free`, the generated models
+//! of `eom::models` and the generic nalgebra form `eom::generic::RigidBody`; pruned (principal
+//! axes) and full tensor (see `spatial` for how the 6-DOF models are fitted to the problem).
+//!
+//! To add a model, add one line to the list of its problem (a name and a system); to compare
+//! two models side by side in the report, add their names to `names::PAIRS`.
 
+mod names;
 mod peer;
 mod plot;
 mod report;
+mod spatial;
 mod sweep;
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
+use eom::generic::RigidBody;
+use eom::integrate::OdeSystem;
+use eom::models::{SpatialFullQuaternion, SpatialPrincipalEuler, SpatialPrincipalQuaternion};
 use eom::reference::torque_free::{EulerAngleBody, FullTensorBody};
 use eom::reference::{
     AxisymmetricTop, CompoundPendulum, PlanarTurn, ReferenceProblem, TennisRacket,
 };
-use nalgebra::{Matrix3, Quaternion, SVector, UnitQuaternion, Vector3};
+use nalgebra::{Matrix3, Quaternion, RealField, SVector, UnitQuaternion, Vector3};
 
 use report::BASE;
+use spatial::{MASS, TurnedAxes, euler, generic_euler, generic_quaternion, no_load, quaternion};
 use sweep::{Case, RTOLS, Row, sweep_geometric, sweep_runge_kutta};
 
 /// The largest relative change between two lists of conserved quantities.
@@ -88,7 +101,8 @@ fn planar_rows() -> Vec<Row> {
 }
 
 /// The tennis racket in every form: the base model (f64, principal axes 4.52, quaternion),
-/// in f32, with Euler-angle kinematics (4.60), and with the full-tensor form (4.51).
+/// in f32, with Euler-angle kinematics (4.60), with the full-tensor form (4.51), and through
+/// the generated spatial models and the generic nalgebra form.
 fn racket_rows() -> Vec<Row> {
     let attitude = UnitQuaternion::from_euler_angles(0.3, -0.2, 0.5);
     let racket =
@@ -100,7 +114,7 @@ fn racket_rows() -> Vec<Row> {
     let mut rows = sweep_runge_kutta::<f64, 7, _>(&case(BASE), &racket.body(), Some(0..3), &RTOLS);
     rows.extend(sweep_geometric::<f64, _>(&case(BASE), &racket.body()));
     rows.extend(peer::sweep_peer(&case(BASE), &racket.body()));
-    // The model variants, one line each (a generated model joins here when it exists).
+    // The hand-written model variants, one line each; the spatial models follow.
     rows.extend(sweep_runge_kutta::<f32, 7, _>(
         &case("f32"),
         &racket.body(),
@@ -118,15 +132,19 @@ fn racket_rows() -> Vec<Row> {
         &full,
     ));
     rows.extend(euler_angle_rows(&racket));
+    rows.extend(spatial_rows(&racket));
     rows
 }
 
-/// The tennis racket with Euler-angle kinematics: the state `[p, q, r, φ, θ, ψ]` is judged by
-/// turning the angles into the quaternion of Rz(ψ)Ry(θ)Rx(φ) (4.56).
-fn euler_angle_rows(racket: &TennisRacket) -> Vec<Row> {
-    let body = EulerAngleBody {
-        moments: racket.body().moments,
-    };
+/// The start state and the judge of the tennis racket with Euler-angle kinematics: the state
+/// `[p, q, r, φ, θ, ψ]` is judged by turning the angles into the quaternion of Rz(ψ)Ry(θ)Rx(φ)
+/// (4.56).
+fn euler_angle_judge(
+    racket: &TennisRacket,
+) -> (
+    SVector<f64, 6>,
+    impl Fn(&SVector<f64, 6>) -> (f64, f64) + '_,
+) {
     let y = racket.initial_state();
     let (roll, pitch, yaw) =
         UnitQuaternion::from_quaternion(Quaternion::new(y[3], y[4], y[5], y[6])).euler_angles();
@@ -138,30 +156,149 @@ fn euler_angle_rows(racket: &TennisRacket) -> Vec<Row> {
             e[0], e[1], e[2], q.w, q.i, q.j, q.k,
         ]))
     };
-    let case = Case {
+    (y0, judge)
+}
+
+/// The case of the tennis racket in a state layout other than its own.
+fn racket_case<'a, const M: usize>(
+    racket: &TennisRacket,
+    model: &str,
+    y0: SVector<f64, M>,
+    judge: &'a dyn Fn(&SVector<f64, M>) -> (f64, f64),
+) -> Case<'a, M> {
+    Case {
         problem: racket.name(),
-        model: "f64, Euler angles 4.60".into(),
+        model: model.into(),
         y0,
         t_end: racket.t_end(),
-        judge: &judge,
+        judge,
+    }
+}
+
+/// The tennis racket with Euler-angle kinematics: the hand-written form (4.52 with 4.60), the
+/// generated `SpatialPrincipalEuler` and the generic `RigidBody::rhs_euler`.
+fn euler_angle_rows(racket: &TennisRacket) -> Vec<Row> {
+    let (y0, judge) = euler_angle_judge(racket);
+    let case = |model: &str| racket_case(racket, model, y0, &judge);
+    let body = EulerAngleBody {
+        moments: racket.body().moments,
     };
-    sweep_runge_kutta::<f64, 6, _>(&case, &body, None, &RTOLS)
+    let tensor = spatial::principal_tensor(racket);
+    let generated = SpatialPrincipalEuler::<f64>::new(MASS, &tensor).expect("valid model");
+    let generic = RigidBody::<f64>::new(MASS, &tensor).expect("valid body");
+    let (f, m) = no_load::<f64>();
+    let mut rows = variant::<f64, 6>(&case("f64, Euler angles 4.60"), &body, &RTOLS);
+    let system = euler(|s| generated.rhs(s, &f, &m));
+    rows.extend(variant::<f64, 6>(
+        &case(names::GENERATED_EULER),
+        &system,
+        &RTOLS,
+    ));
+    let system = euler(generic_euler(generic));
+    rows.extend(variant::<f64, 6>(
+        &case(names::GENERIC_EULER),
+        &system,
+        &RTOLS,
+    ));
+    rows
+}
+
+/// Every Runge–Kutta method on one model variant, without symplectic Euler.
+fn variant<T: RealField + Copy, const M: usize>(
+    case: &Case<M>,
+    system: &impl OdeSystem<T, M>,
+    rtols: &[f64],
+) -> Vec<Row> {
+    sweep_runge_kutta::<T, M, _>(case, system, None, rtols)
+}
+
+/// The tennis racket through the generated spatial models and the generic nalgebra form in
+/// quaternion kinematics (see [`spatial`]); one line per model.
+fn spatial_rows(racket: &TennisRacket) -> Vec<Row> {
+    let judge = judge_of(racket);
+    let case = |model: &str| case_of(racket, model, &judge);
+    let tensor = spatial::principal_tensor(racket);
+    let pruned = SpatialPrincipalQuaternion::<f64>::new(MASS, &tensor).expect("valid model");
+    let full = SpatialFullQuaternion::<f64>::new(MASS, &tensor).expect("valid model");
+    let pruned32 = SpatialPrincipalQuaternion::<f32>::new(MASS, &tensor).expect("valid model");
+    let generic = RigidBody::<f64>::new(MASS, &tensor).expect("valid body");
+    let generic32 = RigidBody::<f32>::new(MASS, &tensor).expect("valid body");
+    let ((f, m), (f32_, m32)) = (no_load::<f64>(), no_load::<f32>());
+    let mut rows = Vec::new();
+    let system = quaternion(|s| pruned.rhs(s, &f, &m));
+    rows.extend(variant::<f64, 7>(&case(names::GENERATED), &system, &RTOLS));
+    let system = quaternion(generic_quaternion(generic));
+    rows.extend(variant::<f64, 7>(&case(names::GENERIC), &system, &RTOLS));
+    let system = quaternion(|s| full.rhs(s, &f, &m));
+    rows.extend(variant::<f64, 7>(
+        &case(names::GENERATED_FULL_ZERO),
+        &system,
+        &RTOLS,
+    ));
+    let system = quaternion(|s| pruned32.rhs(s, &f32_, &m32));
+    rows.extend(variant::<f32, 7>(
+        &case(names::GENERATED_F32),
+        &system,
+        &RTOLS[..4],
+    ));
+    let system = quaternion(generic_quaternion(generic32));
+    rows.extend(variant::<f32, 7>(
+        &case(names::GENERIC_F32),
+        &system,
+        &RTOLS[..4],
+    ));
+    rows.extend(turned_axes_rows(racket));
+    rows
+}
+
+/// The same racket in body axes turned from its principal axes: the full generated model and
+/// the generic form, judged after turning the end state back (see [`spatial::TurnedAxes`]).
+fn turned_axes_rows(racket: &TennisRacket) -> Vec<Row> {
+    let turned = TurnedAxes::new(racket);
+    let base = judge_of(racket);
+    let judge = |y: &SVector<f64, 7>| base(&turned.to_principal(y));
+    let y0 = turned.initial_state(racket);
+    let case = |model: &str| racket_case(racket, model, y0, &judge);
+    let full = SpatialFullQuaternion::<f64>::new(MASS, turned.tensor()).expect("valid model");
+    let generic = RigidBody::<f64>::new(MASS, turned.tensor()).expect("valid body");
+    let (f, m) = no_load::<f64>();
+    let system = quaternion(|s| full.rhs(s, &f, &m));
+    let mut rows = variant::<f64, 7>(&case(names::TURNED_GENERATED), &system, &RTOLS);
+    let system = quaternion(generic_quaternion(generic));
+    rows.extend(variant::<f64, 7>(
+        &case(names::TURNED_GENERIC),
+        &system,
+        &RTOLS,
+    ));
+    rows
+}
+
+/// Writes `text` to `name` in each of the output directories.
+fn write_all(dirs: &[PathBuf], name: &str, text: &str) {
+    for dir in dirs {
+        std::fs::write(dir.join(name), text).expect("write the report");
+    }
 }
 
 fn main() {
-    let out = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("target")
-        .join("work_precision");
-    std::fs::create_dir_all(&out).expect("create target/work_precision");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let out = root.join("target").join("work_precision");
+    let docs = root.join("docs").join("work_precision");
+    for dir in [&out, &docs] {
+        std::fs::create_dir_all(dir).expect("create the output directory");
+    }
     let mut rows = pendulum_rows();
     rows.extend(axisymmetric_rows());
     rows.extend(racket_rows());
     rows.extend(planar_rows());
     let markdown = report::markdown(&rows);
     println!("{markdown}");
-    std::fs::write(out.join("work_precision.md"), &markdown).expect("write the report");
+    write_all(&[out.clone(), docs.clone()], "work_precision.md", &markdown);
     let problems = ["pendulum", "axisymmetric", "tennis racket", "planar turn"];
     plot::problems(&rows, &problems, &out.join("work_precision.svg")).expect("plot the problems");
     plot::variants(&rows, &out.join("tennis_racket_variants.svg")).expect("plot the variants");
-    eprintln!("wrote {}", out.display());
+    for svg in ["work_precision.svg", "tennis_racket_variants.svg"] {
+        std::fs::copy(out.join(svg), docs.join(svg)).expect("copy the plot");
+    }
+    eprintln!("wrote {} and {}", out.display(), docs.display());
 }

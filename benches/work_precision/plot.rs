@@ -1,10 +1,11 @@
 //! The log–log plots of error against wall time: one panel per problem with every method on
-//! the base model and the peer, and one plot of the tennis racket's model variants.
+//! the base model and the peer, and one plot of the tennis racket's model variants (DOP853).
 
 use std::path::Path;
 
 use plotters::prelude::*;
 
+use super::names;
 use super::report::BASE;
 use super::sweep::Row;
 
@@ -138,26 +139,50 @@ pub fn problems(
     Ok(())
 }
 
-/// The plot of the tennis racket's variants for RK4 and DOPRI5.
+/// The models of a panel of the variant plot: (panel title, models).
+const PANELS: [(&str, &[&str]); 2] = [
+    (
+        "tennis racket, DOP853: form of the right-hand side",
+        &[
+            BASE,
+            "f64, full tensor 4.51",
+            names::GENERATED,
+            names::GENERIC,
+            names::GENERATED_FULL_ZERO,
+            names::TURNED_GENERATED,
+            names::TURNED_GENERIC,
+        ],
+    ),
+    (
+        "tennis racket, DOP853: precision and kinematics",
+        &[
+            BASE,
+            "f32",
+            names::GENERATED_F32,
+            names::GENERIC_F32,
+            "f64, Euler angles 4.60",
+            names::GENERATED_EULER,
+            names::GENERIC_EULER,
+        ],
+    ),
+];
+
+/// The plot of the tennis racket's variants with DOP853, in two panels.
 pub fn variants(rows: &[Row], path: &Path) -> Result<(), Box<dyn std::error::Error>> {
-    let root = SVGBackend::new(path, (1000, 700)).into_drawing_area();
+    let root = SVGBackend::new(path, (1400, 650)).into_drawing_area();
     root.fill(&WHITE)?;
-    let mut models: Vec<&str> = Vec::new();
-    for r in rows.iter().filter(|r| r.problem == "tennis racket") {
-        if !models.contains(&r.model.as_str()) {
-            models.push(&r.model);
-        }
+    for (area, (title, models)) in root.split_evenly((1, 2)).iter().zip(PANELS) {
+        let series: Vec<(String, Vec<(f64, f64)>)> = models
+            .iter()
+            .map(|&model| {
+                let p = points(rows, |r| {
+                    r.problem == "tennis racket" && r.model == model && r.method == "DOP853"
+                });
+                (model.to_string(), p)
+            })
+            .collect();
+        panel(area, title, &series)?;
     }
-    let mut series = Vec::new();
-    for model in models {
-        for method in ["RK4", "DOPRI5"] {
-            let p = points(rows, |r| {
-                r.problem == "tennis racket" && r.model == model && r.method == method
-            });
-            series.push((format!("{method}, {model}"), p));
-        }
-    }
-    panel(&root, "tennis racket: model variants", &series)?;
     root.present()?;
     Ok(())
 }

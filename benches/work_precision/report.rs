@@ -3,6 +3,7 @@
 
 use std::fmt::Write;
 
+use super::names::PAIRS;
 use super::sweep::{Row, Setting};
 
 /// The model name of the base form of each problem (f64, principal axes, quaternion kinematics
@@ -109,12 +110,63 @@ fn peer_table(rows: &[Row], out: &mut String) {
     }
 }
 
-/// The variants of the tennis racket (every model other than the base one).
+/// The settings the variant table shows: two step counts of RK4, two tolerances of the
+/// Dormand–Prince methods.
+fn shown(r: &Row) -> bool {
+    match (r.method, r.setting) {
+        ("RK4", Setting::Steps(n)) => n == 1_000 || n == 10_000,
+        ("DOPRI5" | "DOP853", Setting::Rtol(rtol)) => rtol == 1e-6 || rtol == 1e-9,
+        _ => false,
+    }
+}
+
+/// The variants of the tennis racket at a few settings, every model.
 fn variant_table(rows: &[Row], out: &mut String) {
     out.push_str(HEADER);
     let racket = rows.iter().filter(|r| r.problem == "tennis racket");
-    for r in racket.filter(|r| r.model != BASE || r.method == "RK4" || r.method == "DOPRI5") {
+    for r in racket.filter(|r| shown(r)) {
         let _ = writeln!(out, "{}", line(r));
+    }
+}
+
+/// Every run of the tennis racket's variants (every model but the base one).
+fn variant_runs(rows: &[Row], out: &mut String) {
+    out.push_str(HEADER);
+    let racket = rows.iter().filter(|r| r.problem == "tennis racket");
+    for r in racket.filter(|r| r.model != BASE) {
+        let _ = writeln!(out, "{}", line(r));
+    }
+}
+
+/// The pairs of [`PAIRS`] side by side: RK4 at every step count, DOP853 at every tolerance
+/// both ran; ratios are A/B.
+fn pair_table(rows: &[Row], out: &mut String) {
+    out.push_str("| comparison (A / B) | method | setting | error A | error B | RHS evals A/B | time A/B | time A [µs] |\n|---|---|---|---|---|---|---|---|\n");
+    let racket = |model: &'static str| {
+        rows.iter().filter(move |r| {
+            r.problem == "tennis racket"
+                && r.model == model
+                && (r.method == "RK4" || r.method == "DOP853")
+        })
+    };
+    for (what, a_model, b_model) in PAIRS {
+        for a in racket(a_model) {
+            let Some(b) = racket(b_model).find(|b| b.method == a.method && b.setting == a.setting)
+            else {
+                continue;
+            };
+            let evals = ratio(a.stats.rhs_evals as f64, b.stats.rhs_evals as f64);
+            let _ = writeln!(
+                out,
+                "| {what} | {} | {} | {} | {} | {evals} | {} | {:.1} |",
+                a.method,
+                a.setting,
+                sci(a.error),
+                sci(b.error),
+                ratio(a.seconds, b.seconds),
+                a.seconds * 1e6
+            );
+        }
     }
 }
 
@@ -155,9 +207,13 @@ pub fn markdown(rows: &[Row]) -> String {
     guide(rows, &mut out);
     out.push_str("\n## Our Dormand–Prince methods against ode_solvers, per tolerance\n");
     peer_table(rows, &mut out);
+    out.push_str("\n## Tennis racket: one difference at a time\n\nEach pair differs in one thing; ratios are A/B (time: best of repeated runs of each). The spatial models are integrated in the racket's own state layout with the translation at rest (see `benches/work_precision/spatial.rs`). \"Turned axes\": the same racket described in body axes turned from its principal axes, so every product of inertia is non-zero; its end state is turned back before judging.\n\n");
+    pair_table(rows, &mut out);
     out.push_str("\n## Tennis racket: precision, kinematics, and model form\n\n");
     variant_table(rows, &mut out);
     out.push_str("\n## Every run\n");
     problem_tables(rows, &mut out);
+    out.push_str("\n### tennis racket, every variant\n\n");
+    variant_runs(rows, &mut out);
     out
 }
