@@ -207,7 +207,7 @@ fn bad_inputs_fail_with_errors_that_name_the_culprit() {
     fails_naming(
         &["--model", "spatial", "--symmetry", "principal"],
         TILTED,
-        "Ixz = 0",
+        "inertia Ixz = -0.1 must be zero for the principal",
     );
     fails_naming(&spatial, "{not json", "parsing the input JSON");
     let pitched = TILTED.replace("\"theta\": 0.2", "\"theta\": 1.5707963267948966");
