@@ -103,3 +103,11 @@ fn symbolic_inverse_times_matrix_is_identity() {
     });
     assert_eq!(m.inverse().unwrap().mul_mat(&m), Mat3::identity());
 }
+
+#[test]
+fn coefficient_of_takes_exactly_the_first_power() {
+    let e = parse("a*x + b*x*x + c + d/x + x.sin()").unwrap();
+    assert_eq!(e.coefficient_of("x"), parse("a").unwrap());
+    assert_eq!(e.coefficient_of_power("x", 0), parse("c + x.sin()").unwrap());
+    assert_eq!(e.coefficient_of_power("x", -1), parse("d").unwrap());
+}

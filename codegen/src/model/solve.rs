@@ -92,8 +92,12 @@ fn verify(
         let residual = match &solution.reciprocal {
             None => lhs,
             Some(r) => {
-                let without = lhs.subs(&r.symbol, &Expr::zero()).unwrap_or_default();
-                &without * det + lhs.coefficient_of(&r.symbol)
+                // lhs is affine in d = 1/det, A + B d, which vanishes at d = 1/det iff
+                // A det + B = 0; any other power of d is left in the residual.
+                let a = lhs.coefficient_of_power(&r.symbol, 0);
+                let b = lhs.coefficient_of(&r.symbol);
+                let affine = &a + &(&b * &Expr::symbol(&r.symbol));
+                &(&a * det + b) + &(&lhs - &affine)
             }
         };
         if !residual.is_zero() {

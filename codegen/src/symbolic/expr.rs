@@ -259,11 +259,24 @@ impl Expr {
             })
     }
 
-    /// The coefficient of `symbol¹`, treating the expression as linear in it.
+    /// The coefficient of `symbol¹`: the terms in which the symbol appears to exactly the first
+    /// power, with the symbol removed.
     pub fn coefficient_of(&self, symbol: &str) -> Expr {
-        self.diff(symbol)
-            .subs(symbol, &Expr::zero())
-            .unwrap_or_default()
+        self.coefficient_of_power(symbol, 1)
+    }
+
+    /// The terms in which `symbol` appears to exactly `power` (0: not at all), with the symbol
+    /// removed. Sin and cos of the symbol count as other atoms.
+    pub fn coefficient_of_power(&self, symbol: &str, power: i32) -> Expr {
+        let atom = Atom::Symbol(symbol.to_owned());
+        let mut result = Expr::zero();
+        for (monomial, coefficient) in self.terms() {
+            let (rest, p) = monomial.without(&atom);
+            if p == power {
+                result.add_term(coefficient.clone(), rest);
+            }
+        }
+        result
     }
 
     /// Evaluates at a point, for numeric cross-checks; `value` gives each symbol's value.
