@@ -108,6 +108,9 @@ fn symbolic_inverse_times_matrix_is_identity() {
 fn coefficient_of_takes_exactly_the_first_power() {
     let e = parse("a*x + b*x*x + c + d/x + x.sin()").unwrap();
     assert_eq!(e.coefficient_of("x"), parse("a").unwrap());
-    assert_eq!(e.coefficient_of_power("x", 0), parse("c + x.sin()").unwrap());
+    assert_eq!(
+        e.coefficient_of_power("x", 0),
+        parse("c + x.sin()").unwrap()
+    );
     assert_eq!(e.coefficient_of_power("x", -1), parse("d").unwrap());
 }
