@@ -4,7 +4,7 @@
 
 use eom::InertiaTensor;
 use eom::models::{SpatialFullEuler, SpatialXzQuaternion};
-use num_dual::{Dual64, DualNum};
+use num_dual::Dual64;
 
 const FORCE: [f64; 3] = [1.0, -2.0, 0.5];
 const MOMENT: [f64; 3] = [0.1, 0.3, -0.2];
