@@ -9,7 +9,7 @@ mod families;
 mod solve;
 mod system;
 
-pub use solve::{Solution, adjugate, determinant, solve_linear};
+pub use solve::{Solution, solve_linear};
 pub use system::{ModelError, Parameter, Reciprocal, Stage, System};
 
 /// Which products of inertia the body has.

@@ -7,7 +7,7 @@
 //! substituting it back: A·a + rest must vanish once that symbol is 1/det.
 
 use super::system::{ModelError, Reciprocal};
-use crate::symbolic::Expr;
+use crate::symbolic::{Expr, adjugate, determinant};
 
 /// The solved accelerations `a = −A⁻¹ rest`, as the inverse entries and the rest terms, so
 /// that callers may expand the product or stage the rest terms.
@@ -109,51 +109,4 @@ fn verify(
         }
     }
     Ok(())
-}
-
-fn minor(m: &[Vec<Expr>], row: usize, col: usize) -> Vec<Vec<Expr>> {
-    m.iter()
-        .enumerate()
-        .filter(|(r, _)| *r != row)
-        .map(|(_, line)| {
-            line.iter()
-                .enumerate()
-                .filter(|(c, _)| *c != col)
-                .map(|(_, e)| e.clone())
-                .collect()
-        })
-        .collect()
-}
-
-/// The determinant by cofactor expansion (the systems here are at most 3×3).
-pub fn determinant(m: &[Vec<Expr>]) -> Expr {
-    match m.len() {
-        0 => Expr::int(1),
-        1 => m[0][0].clone(),
-        _ => (0..m.len())
-            .map(|c| {
-                let term = &m[0][c] * &determinant(&minor(m, 0, c));
-                if c % 2 == 0 { term } else { -term }
-            })
-            .sum(),
-    }
-}
-
-/// The adjugate (transposed cofactor matrix).
-pub fn adjugate(m: &[Vec<Expr>]) -> Vec<Vec<Expr>> {
-    let n = m.len();
-    (0..n)
-        .map(|r| {
-            (0..n)
-                .map(|c| {
-                    let cofactor = determinant(&minor(m, c, r));
-                    if (r + c) % 2 == 0 {
-                        cofactor
-                    } else {
-                        -cofactor
-                    }
-                })
-                .collect()
-        })
-        .collect()
 }

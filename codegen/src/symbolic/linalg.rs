@@ -99,24 +99,59 @@ impl Mat3 {
         Self::from_fn(|r, c| (0..3).map(|k| &self.0[r][k] * &other.0[k][c]).sum())
     }
 
-    /// The determinant, by cofactor expansion along the first row.
-    pub fn determinant(&self) -> Expr {
-        (0..3).map(|c| &self.0[0][c] * &self.cofactor(0, c)).sum()
-    }
-
-    /// The cofactor C_rc = (−1)^(r+c) · minor(r, c).
-    pub fn cofactor(&self, r: usize, c: usize) -> Expr {
-        let rows: Vec<usize> = (0..3).filter(|&i| i != r).collect();
-        let cols: Vec<usize> = (0..3).filter(|&j| j != c).collect();
-        let m = |i: usize, j: usize| &self.0[rows[i]][cols[j]];
-        let minor = m(0, 0) * m(1, 1) - m(0, 1) * m(1, 0);
-        if (r + c) % 2 == 0 { minor } else { -minor }
-    }
-
     /// The inverse, adj / det, when the determinant is an invertible monomial.
     pub fn inverse(&self) -> Result<Mat3, super::SymbolicError> {
-        let det = self.determinant();
-        let inverse_det = det.reciprocal()?;
-        Ok(Self::from_fn(|r, c| &self.cofactor(c, r) * &inverse_det))
+        let rows: Vec<Vec<Expr>> = self.0.iter().map(|row| row.to_vec()).collect();
+        let inverse_det = determinant(&rows).reciprocal()?;
+        let adjugate = adjugate(&rows);
+        Ok(Self::from_fn(|r, c| &adjugate[r][c] * &inverse_det))
     }
+}
+
+fn minor(m: &[Vec<Expr>], row: usize, col: usize) -> Vec<Vec<Expr>> {
+    m.iter()
+        .enumerate()
+        .filter(|(r, _)| *r != row)
+        .map(|(_, line)| {
+            line.iter()
+                .enumerate()
+                .filter(|(c, _)| *c != col)
+                .map(|(_, e)| e.clone())
+                .collect()
+        })
+        .collect()
+}
+
+/// The determinant of a square matrix given by rows, by cofactor expansion (the matrices
+/// here are at most 3×3).
+pub fn determinant(m: &[Vec<Expr>]) -> Expr {
+    match m.len() {
+        0 => Expr::int(1),
+        1 => m[0][0].clone(),
+        _ => (0..m.len())
+            .map(|c| {
+                let term = &m[0][c] * &determinant(&minor(m, 0, c));
+                if c % 2 == 0 { term } else { -term }
+            })
+            .sum(),
+    }
+}
+
+/// The adjugate (transposed cofactor matrix) of a square matrix given by rows.
+pub fn adjugate(m: &[Vec<Expr>]) -> Vec<Vec<Expr>> {
+    let n = m.len();
+    (0..n)
+        .map(|r| {
+            (0..n)
+                .map(|c| {
+                    let cofactor = determinant(&minor(m, c, r));
+                    if (r + c) % 2 == 0 {
+                        cofactor
+                    } else {
+                        -cofactor
+                    }
+                })
+                .collect()
+        })
+        .collect()
 }
