@@ -14,7 +14,7 @@ use eom::generic::{
     EulerState, Pendulum, PlanarBody, PlanarMidship, RigidBody, check_pitch,
     euler_state_to_quaternion_state,
 };
-use eom::models;
+use eom::models::{self, Symmetry};
 use nalgebra::{Matrix3, Vector2, Vector3, Vector6};
 use serde::de::DeserializeOwned;
 use serde::ser::{Serialize, SerializeMap, Serializer};
@@ -57,17 +57,6 @@ enum Model {
     PlanarSpace,
     /// Spatial 6-DOF, 4.49 + 4.51 with Euler angles or a quaternion.
     Spatial,
-}
-
-/// Which products of inertia a spatial body may have.
-#[derive(Clone, Copy, ValueEnum)]
-enum Symmetry {
-    /// All products free (4.51).
-    Full,
-    /// Symmetric about the xz-plane: `Ixy = Iyz = 0`, `Ixz` free.
-    Xz,
-    /// Principal axes: all products zero (4.52).
-    Principal,
 }
 
 /// How a spatial body's attitude is carried.

@@ -10,6 +10,7 @@ use simba::simd::SimdRealField;
 
 /// Which products of inertia a spatial model keeps.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "cli", derive(clap::ValueEnum))]
 pub enum Symmetry {
     /// All products (4.51).
     Full,
