@@ -298,7 +298,7 @@ impl Expr {
 }
 
 /// The exact rational as the nearest-ish f64 (numerator and denominator are small here).
-pub fn rational_to_f64(r: &Rational) -> f64 {
+fn rational_to_f64(r: &Rational) -> f64 {
     use num_traits::ToPrimitive;
     r.to_f64().unwrap_or(f64::NAN)
 }

@@ -9,7 +9,7 @@ mod monomial;
 mod parse;
 
 pub use atom::Atom;
-pub use expr::{Expr, Rational, SymbolicError, rational_to_f64};
+pub use expr::{Expr, Rational, SymbolicError};
 pub use linalg::{Mat3, Vec3, adjugate, determinant};
 pub use monomial::Monomial;
 pub use parse::{parse, parse_tree, symbol_name, to_expr};

@@ -42,14 +42,6 @@ impl Monomial {
         self.powers.is_empty()
     }
 
-    /// Total degree in the given symbols (plain symbols only).
-    pub fn degree_in(&self, symbols: &[&str]) -> i32 {
-        self.factors()
-            .filter(|(a, _)| matches!(a, Atom::Symbol(s) if symbols.contains(&s.as_str())))
-            .map(|(_, e)| e)
-            .sum()
-    }
-
     /// Multiplies in one atom to a power, dropping it if the power cancels.
     pub fn multiply_atom(&mut self, atom: Atom, power: i32) {
         let entry = self.powers.entry(atom).or_insert(0);
