@@ -3,7 +3,11 @@
 //! equation and printing the residual; so does a model whose emitted form does not compose
 //! back to the proved equations.
 
-use eom_codegen::{check, emit, model::Model};
+use eom_codegen::{
+    check,
+    emit::{self, Trig},
+    model::Model,
+};
 use std::path::PathBuf;
 
 fn main() {
@@ -15,6 +19,17 @@ fn main() {
     }
     let out_dir = PathBuf::from(std::env::var_os("OUT_DIR").expect("cargo sets OUT_DIR"));
     if let Err(error) = emit::emit_into(&out_dir, &Model::all()) {
+        fail(&format!("a model could not be emitted:\n  {error}"));
+    }
+    // Every model again with the platform's sin and cos, so that the benches can show what
+    // the emitted sin_cos kernel is worth on its own.
+    let std_trig = out_dir.join("std_trig");
+    let emitted = std::fs::create_dir_all(&std_trig)
+        .map_err(|e| e.to_string())
+        .and_then(|()| {
+            emit::emit_into_with(&std_trig, &Model::all(), Trig::Std).map_err(|e| e.to_string())
+        });
+    if let Err(error) = emitted {
         fail(&format!("a model could not be emitted:\n  {error}"));
     }
 }

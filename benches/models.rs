@@ -1,6 +1,7 @@
 //! Generated against generic, in one run: ns per right-hand-side call for every variant,
-//! f32 against f64, and a batch of 4096 bodies stepped with f64 scalars against
-//! `WideF64x4` lanes.
+//! f32 against f64, the trigonometric models also as emitted with the platform's sin and cos
+//! (`generated_std_trig_f64`, to show the emitted `sin_cos` kernel's share), and a batch of
+//! 4096 bodies stepped with f64 scalars against `WideF64x4` lanes.
 //!
 //! `cargo bench --bench models`; ratios are read from `target/criterion/*/*/new/estimates.json`
 //! (see the README for the table of one run).
@@ -74,6 +75,28 @@ macro_rules! bench_spatial {
     }};
 }
 
+/// The same model emitted with the platform's sin and cos (`generated::std_trig`), called with
+/// the same coefficients and input as the typed model.
+macro_rules! bench_std_trig {
+    ($group:expr, $name:literal, $module:ident, $tensor:expr, $state:expr, { $($field:ident: $value:ident),* }) => {{
+        use generated::std_trig::$module as emitted;
+        let tensor = $tensor;
+        let state = $state;
+        let parameters = emitted::Parameters {
+            mass: 5.0,
+            ixx: tensor.ixx(),
+            iyy: tensor.iyy(),
+            izz: tensor.izz(),
+            $($field: tensor.$value(),)*
+        };
+        let k = emitted::Coefficients::<f64>::new(&parameters);
+        let input: [f64; 6] = [FORCE, MOMENT].concat().try_into().unwrap();
+        $group.bench_function(BenchmarkId::new("generated_std_trig_f64", $name), |b| {
+            b.iter(|| emitted::rhs(&k, black_box(&state), black_box(&input)))
+        });
+    }};
+}
+
 fn spatial(c: &mut Criterion) {
     let mut group = c.benchmark_group("spatial_rhs");
     bench_spatial!(
@@ -84,6 +107,7 @@ fn spatial(c: &mut Criterion) {
         EULER_STATE,
         rhs_euler
     );
+    bench_std_trig!(group, "full_euler", spatial_full_euler, full_tensor(), EULER_STATE, { ixy: ixy, iyz: iyz, ixz: izx });
     bench_spatial!(
         group,
         "xz_euler",
@@ -92,6 +116,7 @@ fn spatial(c: &mut Criterion) {
         EULER_STATE,
         rhs_euler
     );
+    bench_std_trig!(group, "xz_euler", spatial_xz_euler, xz_tensor(), EULER_STATE, { ixz: izx });
     bench_spatial!(
         group,
         "principal_euler",
@@ -99,6 +124,14 @@ fn spatial(c: &mut Criterion) {
         principal_tensor(),
         EULER_STATE,
         rhs_euler
+    );
+    bench_std_trig!(
+        group,
+        "principal_euler",
+        spatial_principal_euler,
+        principal_tensor(),
+        EULER_STATE,
+        {}
     );
     bench_spatial!(
         group,
@@ -140,6 +173,16 @@ fn planar(c: &mut Criterion) {
     group.bench_function(BenchmarkId::new("generic_f64", "at_g"), |b| {
         b.iter(|| body.rhs_body_at_g(black_box(&x), black_box(&l)))
     });
+    {
+        use generated::std_trig::planar_at_g as emitted;
+        let k = emitted::Coefficients::<f64>::new(&emitted::Parameters {
+            mass: 5.0,
+            izz: 4.0,
+        });
+        group.bench_function(BenchmarkId::new("generated_std_trig_f64", "at_g"), |b| {
+            b.iter(|| emitted::rhs(&k, black_box(&state), black_box(&load)))
+        });
+    }
     let midship = models::PlanarMidship::<f64>::new(5.0, 4.0, 0.3).unwrap();
     let generic_midship = PlanarMidship::<f64>::new(5.0, 4.0, 0.3).unwrap();
     group.bench_function(BenchmarkId::new("generated_f64", "midship"), |b| {
@@ -148,6 +191,17 @@ fn planar(c: &mut Criterion) {
     group.bench_function(BenchmarkId::new("generic_f64", "midship"), |b| {
         b.iter(|| generic_midship.rhs_body_at_midship(black_box(&x), black_box(&l)))
     });
+    {
+        use generated::std_trig::planar_midship as emitted;
+        let k = emitted::Coefficients::<f64>::new(&emitted::Parameters {
+            mass: 5.0,
+            izz: 4.0,
+            x_g: 0.3,
+        });
+        group.bench_function(BenchmarkId::new("generated_std_trig_f64", "midship"), |b| {
+            b.iter(|| emitted::rhs(&k, black_box(&state), black_box(&load)))
+        });
+    }
     let space = models::PlanarSpaceFixed::<f64>::new(5.0, 4.0).unwrap();
     group.bench_function(BenchmarkId::new("generated_f64", "space_fixed"), |b| {
         b.iter(|| space.rhs(black_box(&state), black_box(&load)))
@@ -164,6 +218,19 @@ fn planar(c: &mut Criterion) {
     group.bench_function(BenchmarkId::new("generic_f64", "pendulum"), |b| {
         b.iter(|| generic_pendulum.rhs(black_box(&theta), black_box(0.0)))
     });
+    {
+        use generated::std_trig::pendulum as emitted;
+        let k = emitted::Coefficients::<f64>::new(&emitted::Parameters {
+            i0: 2.0,
+            mass: 1.0,
+            g: 9.81,
+            h: 0.5,
+        });
+        group.bench_function(
+            BenchmarkId::new("generated_std_trig_f64", "pendulum"),
+            |b| b.iter(|| emitted::rhs(&k, black_box(&[0.3, 0.1]), black_box(&[0.0]))),
+        );
+    }
     group.finish();
 }
 

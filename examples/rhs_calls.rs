@@ -1,20 +1,23 @@
-//! Calls one right-hand side many times, for counting instructions per call with callgrind,
-//! which is repeatable where wall time on a shared machine is not:
+//! Calls one right-hand side many times, for counting the instructions of one call with
+//! callgrind, which is repeatable where wall time on a shared machine is not:
 //!
 //! ```sh
 //! cargo build --release --example rhs_calls
-//! valgrind --tool=callgrind --callgrind-out-file=/dev/null target/release/examples/rhs_calls generated principal_euler 2000
+//! valgrind --tool=callgrind --toggle-collect='*measured*' --callgrind-out-file=/dev/null \
+//!     target/release/examples/rhs_calls generated principal_euler 1000
 //! ```
-//! The difference between two call counts, divided by the difference in calls, is the cost of
-//! one call. `form` is `generated` or `generic`; `variant` is `{full,xz,principal}_{euler,quaternion}`.
+//!
+//! Each call goes through one `#[inline(never)]` function, `measured`, so collecting only
+//! inside it counts the right-hand side and nothing of the loop around it: the total divided
+//! by the number of calls is the cost of one call. `form` is `generated`, `std_trig` (the
+//! generated model emitted with the platform's sin and cos; trigonometric models only) or
+//! `generic`; `model` is `pendulum`, `planar_at_g`, `planar_midship`, `planar_space_fixed` or
+//! `{full,xz,principal}_{euler,quaternion}`.
 
 use eom::InertiaTensor;
-use eom::generic::RigidBody;
-use eom::models::{
-    SpatialFullEuler, SpatialFullQuaternion, SpatialPrincipalEuler, SpatialPrincipalQuaternion,
-    SpatialXzEuler, SpatialXzQuaternion,
-};
-use nalgebra::{Matrix3, Rotation3, SVector, Vector3};
+use eom::generic::{PlanarBody, PlanarMidship, RigidBody};
+use eom::models::{self, generated::std_trig};
+use nalgebra::{Matrix3, Rotation3, SVector, Vector2, Vector3};
 use std::hint::black_box;
 
 /// Distinct states, built before the calls so that their cost does not depend on the count.
@@ -22,6 +25,41 @@ const STATES: usize = 64;
 
 const FORCE: [f64; 3] = [10.0, -2.0, 1.0];
 const MOMENT: [f64; 3] = [0.5, 0.2, -0.3];
+const INPUT: [f64; 6] = [10.0, -2.0, 1.0, 0.5, 0.2, -0.3];
+const LOAD: [f64; 3] = [10.0, -2.0, 0.5];
+
+/// The one function whose instructions are counted: it calls `f` once.
+#[inline(never)]
+fn measured<R>(f: impl Fn() -> R) -> R {
+    f()
+}
+
+/// The sum of an output's entries, so that every output is consumed.
+trait Total {
+    fn total(&self) -> f64;
+}
+
+impl<const N: usize> Total for [f64; N] {
+    fn total(&self) -> f64 {
+        self.iter().sum()
+    }
+}
+
+impl<const N: usize> Total for SVector<f64, N> {
+    fn total(&self) -> f64 {
+        self.sum()
+    }
+}
+
+/// Calls `f` on each of `states` in turn, `calls` times in all, consuming every output.
+fn run<S, R: Total>(states: &[S], calls: usize, f: impl Fn(&S) -> R) -> f64 {
+    let mut sum = 0.0;
+    for i in 0..calls {
+        let state = black_box(&states[i % states.len()]);
+        sum += black_box(measured(|| f(state))).total();
+    }
+    sum
+}
 
 /// Principal moments 2, 3, 4 turned by `roll, pitch, yaw`: products where the rotation puts them.
 fn tensor(roll: f64, pitch: f64, yaw: f64) -> InertiaTensor {
@@ -34,13 +72,21 @@ fn tensor(roll: f64, pitch: f64, yaw: f64) -> InertiaTensor {
     InertiaTensor::from_matrix(m).expect("a physical tensor")
 }
 
-/// The state of call `i`: a little different each time, so nothing is hoisted out of the loop;
-/// every output is consumed, so nothing is dropped as dead code.
-fn state<const N: usize>(i: usize, quaternion: bool) -> [f64; N] {
+/// The tensor of a symmetry class: `full`, `xz` or `principal`.
+fn class_tensor(model: &str) -> InertiaTensor {
+    match model.split('_').next() {
+        Some("full") => tensor(0.3, -0.2, 0.5),
+        Some("xz") => tensor(0.0, 0.4, 0.0),
+        _ => tensor(0.0, 0.0, 0.0),
+    }
+}
+
+/// The state of call `i`: a little different each time, so nothing is hoisted out of the loop.
+fn spatial_state<const N: usize>(i: usize) -> [f64; N] {
     let s = 1e-6 * i as f64;
     let mut x = [0.0; N];
     x[..6].copy_from_slice(&[1.0 + s, 0.2, -0.1, 0.3, -0.2, 0.5]);
-    if quaternion {
+    if N == 13 {
         let q = nalgebra::UnitQuaternion::from_euler_angles(0.1 + s, 0.2, 0.3);
         x[9..13].copy_from_slice(&[q.w, q.i, q.j, q.k]);
     } else {
@@ -49,67 +95,181 @@ fn state<const N: usize>(i: usize, quaternion: bool) -> [f64; N] {
     x
 }
 
-macro_rules! run_generated {
-    ($model:ty, $tensor:expr, $n:literal, $quaternion:expr, $calls:expr) => {{
+fn states<const N: usize>(make: impl Fn(usize) -> [f64; N]) -> Vec<[f64; N]> {
+    (0..STATES).map(make).collect()
+}
+
+fn planar_state(i: usize) -> [f64; 6] {
+    [1.0 + 1e-6 * i as f64, 0.2, 0.1, 0.0, 0.0, 0.3]
+}
+
+fn pendulum_state(i: usize) -> [f64; 2] {
+    [0.3 + 1e-6 * i as f64, 0.1]
+}
+
+macro_rules! spatial_generated {
+    ($model:ty, $tensor:expr, $n:literal, $calls:expr) => {{
         let model = <$model>::new(5.0, &$tensor).expect("valid body");
-        let states: Vec<[f64; $n]> = (0..STATES).map(|i| state::<$n>(i, $quaternion)).collect();
-        let mut sum = 0.0;
-        for i in 0..$calls {
-            let output = model.rhs(black_box(&states[i % STATES]), &FORCE, &MOMENT);
-            sum += black_box(output).iter().sum::<f64>();
-        }
-        sum
+        run(&states(spatial_state::<$n>), $calls, |x| {
+            model.rhs(x, &FORCE, &MOMENT)
+        })
     }};
 }
 
-fn run_generic(tensor: &InertiaTensor, quaternion: bool, calls: usize) -> f64 {
-    let body = RigidBody::<f64>::new(5.0, tensor).expect("valid body");
+macro_rules! spatial_std_trig {
+    ($module:ident, $tensor:expr, $calls:expr, { $($field:ident: $value:ident),* }) => {{
+        let tensor = $tensor;
+        let k = std_trig::$module::Coefficients::<f64>::new(&std_trig::$module::Parameters {
+            mass: 5.0,
+            ixx: tensor.ixx(),
+            iyy: tensor.iyy(),
+            izz: tensor.izz(),
+            $($field: tensor.$value(),)*
+        });
+        run(&states(spatial_state::<12>), $calls, |x| {
+            std_trig::$module::rhs(&k, x, &INPUT)
+        })
+    }};
+}
+
+fn generated(model: &str, calls: usize) -> Option<f64> {
+    let tensor = class_tensor(model);
+    Some(match model {
+        "pendulum" => {
+            let p = models::Pendulum::<f64>::new(2.0, 1.0, 9.81, 0.5).ok()?;
+            run(&states(pendulum_state), calls, |x| p.rhs(x, 0.0))
+        }
+        "planar_at_g" => {
+            let p = models::PlanarAtG::<f64>::new(5.0, 4.0).ok()?;
+            run(&states(planar_state), calls, |x| p.rhs(x, &LOAD))
+        }
+        "planar_midship" => {
+            let p = models::PlanarMidship::<f64>::new(5.0, 4.0, 0.3).ok()?;
+            run(&states(planar_state), calls, |x| p.rhs(x, &LOAD))
+        }
+        "planar_space_fixed" => {
+            let p = models::PlanarSpaceFixed::<f64>::new(5.0, 4.0).ok()?;
+            run(&states(planar_state), calls, |x| p.rhs(x, &LOAD))
+        }
+        "full_euler" => spatial_generated!(models::SpatialFullEuler<f64>, tensor, 12, calls),
+        "xz_euler" => spatial_generated!(models::SpatialXzEuler<f64>, tensor, 12, calls),
+        "principal_euler" => {
+            spatial_generated!(models::SpatialPrincipalEuler<f64>, tensor, 12, calls)
+        }
+        "full_quaternion" => {
+            spatial_generated!(models::SpatialFullQuaternion<f64>, tensor, 13, calls)
+        }
+        "xz_quaternion" => spatial_generated!(models::SpatialXzQuaternion<f64>, tensor, 13, calls),
+        "principal_quaternion" => {
+            spatial_generated!(models::SpatialPrincipalQuaternion<f64>, tensor, 13, calls)
+        }
+        _ => return None,
+    })
+}
+
+fn generated_std_trig(model: &str, calls: usize) -> Option<f64> {
+    let tensor = class_tensor(model);
+    Some(match model {
+        "pendulum" => {
+            let module = &std_trig::pendulum::Parameters {
+                i0: 2.0,
+                mass: 1.0,
+                g: 9.81,
+                h: 0.5,
+            };
+            let k = std_trig::pendulum::Coefficients::<f64>::new(module);
+            run(&states(pendulum_state), calls, |x| {
+                std_trig::pendulum::rhs(&k, x, &[0.0])
+            })
+        }
+        "planar_at_g" => {
+            let parameters = std_trig::planar_at_g::Parameters {
+                mass: 5.0,
+                izz: 4.0,
+            };
+            let k = std_trig::planar_at_g::Coefficients::<f64>::new(&parameters);
+            run(&states(planar_state), calls, |x| {
+                std_trig::planar_at_g::rhs(&k, x, &LOAD)
+            })
+        }
+        "planar_midship" => {
+            let parameters = std_trig::planar_midship::Parameters {
+                mass: 5.0,
+                izz: 4.0,
+                x_g: 0.3,
+            };
+            let k = std_trig::planar_midship::Coefficients::<f64>::new(&parameters);
+            run(&states(planar_state), calls, |x| {
+                std_trig::planar_midship::rhs(&k, x, &LOAD)
+            })
+        }
+        "full_euler" => {
+            spatial_std_trig!(spatial_full_euler, tensor, calls, { ixy: ixy, iyz: iyz, ixz: izx })
+        }
+        "xz_euler" => spatial_std_trig!(spatial_xz_euler, tensor, calls, { ixz: izx }),
+        "principal_euler" => spatial_std_trig!(spatial_principal_euler, tensor, calls, {}),
+        _ => return None,
+    })
+}
+
+fn generic(model: &str, calls: usize) -> Option<f64> {
+    let load = Vector3::from(LOAD);
     let (f, m) = (Vector3::from(FORCE), Vector3::from(MOMENT));
-    let euler: Vec<SVector<f64, 12>> = (0..STATES)
-        .map(|i| SVector::from(state::<12>(i, false)))
-        .collect();
-    let quaternions: Vec<SVector<f64, 13>> = (0..STATES)
-        .map(|i| SVector::from(state::<13>(i, true)))
-        .collect();
-    let mut sum = 0.0;
-    for i in 0..calls {
-        sum += if quaternion {
-            black_box(body.rhs_quaternion(black_box(&quaternions[i % STATES]), &f, &m)).sum()
-        } else {
-            black_box(body.rhs_euler(black_box(&euler[i % STATES]), &f, &m)).sum()
-        };
-    }
-    sum
+    let planar = |i| SVector::<f64, 6>::from(planar_state(i));
+    let spatial = |i| SVector::<f64, 12>::from(spatial_state::<12>(i));
+    let spatial_q = |i| SVector::<f64, 13>::from(spatial_state::<13>(i));
+    Some(match model {
+        "pendulum" => {
+            let p = eom::generic::Pendulum::<f64>::new(2.0, 1.0, 9.81, 0.5).ok()?;
+            let xs: Vec<_> = (0..STATES)
+                .map(|i| Vector2::from(pendulum_state(i)))
+                .collect();
+            run(&xs, calls, |x| p.rhs(x, 0.0))
+        }
+        "planar_at_g" | "planar_space_fixed" => {
+            let p = PlanarBody::<f64>::new(5.0, 4.0).ok()?;
+            let xs: Vec<_> = (0..STATES).map(planar).collect();
+            if model == "planar_at_g" {
+                run(&xs, calls, |x| p.rhs_body_at_g(x, &load))
+            } else {
+                run(&xs, calls, |x| p.rhs_space_fixed(x, &load))
+            }
+        }
+        "planar_midship" => {
+            let p = PlanarMidship::<f64>::new(5.0, 4.0, 0.3).ok()?;
+            let xs: Vec<_> = (0..STATES).map(planar).collect();
+            run(&xs, calls, |x| p.rhs_body_at_midship(x, &load))
+        }
+        _ if model.ends_with("_euler") => {
+            let body = RigidBody::<f64>::new(5.0, &class_tensor(model)).ok()?;
+            let xs: Vec<_> = (0..STATES).map(spatial).collect();
+            run(&xs, calls, |x| body.rhs_euler(x, &f, &m))
+        }
+        _ if model.ends_with("_quaternion") => {
+            let body = RigidBody::<f64>::new(5.0, &class_tensor(model)).ok()?;
+            let xs: Vec<_> = (0..STATES).map(spatial_q).collect();
+            run(&xs, calls, |x| body.rhs_quaternion(x, &f, &m))
+        }
+        _ => return None,
+    })
 }
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
-    let (form, variant) = (
-        args.get(1).map_or("generated", |s| s),
-        args.get(2).map_or("principal_euler", |s| s),
-    );
+    let form = args.get(1).map_or("generated", String::as_str);
+    let model = args.get(2).map_or("principal_euler", String::as_str);
     let calls: usize = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(1000);
-    let (full, xz, principal) = (
-        tensor(0.3, -0.2, 0.5),
-        tensor(0.0, 0.4, 0.0),
-        tensor(0.0, 0.0, 0.0),
-    );
-    let quaternion = variant.ends_with("quaternion");
-    let body = match variant.split('_').next() {
-        Some("full") => full,
-        Some("xz") => xz,
-        _ => principal,
+    let sum = match form {
+        "generated" => generated(model, calls),
+        "std_trig" => generated_std_trig(model, calls),
+        "generic" => generic(model, calls),
+        _ => None,
     };
-    let sum = match (form, variant) {
-        ("generic", _) => run_generic(&body, quaternion, calls),
-        (_, "full_euler") => run_generated!(SpatialFullEuler<f64>, body, 12, false, calls),
-        (_, "xz_euler") => run_generated!(SpatialXzEuler<f64>, body, 12, false, calls),
-        (_, "principal_euler") => {
-            run_generated!(SpatialPrincipalEuler<f64>, body, 12, false, calls)
+    match sum {
+        Some(sum) => println!("{form} {model}: {calls} calls (checksum {sum:.6})"),
+        None => {
+            eprintln!("usage: rhs_calls generated|std_trig|generic MODEL [CALLS]; see the source");
+            std::process::exit(2);
         }
-        (_, "full_quaternion") => run_generated!(SpatialFullQuaternion<f64>, body, 13, true, calls),
-        (_, "xz_quaternion") => run_generated!(SpatialXzQuaternion<f64>, body, 13, true, calls),
-        _ => run_generated!(SpatialPrincipalQuaternion<f64>, body, 13, true, calls),
-    };
-    println!("{form} {variant}: {calls} calls (checksum {sum:.6})");
+    }
 }

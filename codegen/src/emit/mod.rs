@@ -8,8 +8,10 @@
 
 mod program;
 mod rust;
+mod trig;
 
 pub use program::{Operations, Program, identifier};
+pub use trig::Trig;
 
 use crate::model::{Model, ModelError, Strategy};
 use std::path::{Path, PathBuf};
@@ -65,6 +67,22 @@ pub struct Generated {
 /// assert_eq!(generated.operations.trig, 3); // one sin_cos per Euler angle
 /// ```
 pub fn generate(model: Model) -> Result<Generated, EmitError> {
+    generate_with(model, Trig::Kernel)
+}
+
+/// Generates one model's source with the chosen sine and cosine ([`Trig::Std`] keeps the
+/// scalar's own `simd_sin_cos`, for comparison or for bit-for-bit agreement with the platform).
+///
+/// ```
+/// use eom_codegen::emit::{Trig, generate_with};
+/// use eom_codegen::model::Model;
+/// let kernel = generate_with(Model::Pendulum, Trig::Kernel).unwrap();
+/// let std = generate_with(Model::Pendulum, Trig::Std).unwrap();
+/// assert!(kernel.source.contains("sin_cos(theta)"));
+/// assert!(std.source.contains("theta.simd_sin_cos()"));
+/// assert_eq!(kernel.operations, std.operations);
+/// ```
+pub fn generate_with(model: Model, trig: Trig) -> Result<Generated, EmitError> {
     let mut best: Option<(Strategy, crate::model::System, Program)> = None;
     for &strategy in model.strategies() {
         let system = model.system(strategy)?;
@@ -77,12 +95,13 @@ pub fn generate(model: Model) -> Result<Generated, EmitError> {
         }
     }
     let (strategy, system, program) = best.expect("every model has a strategy");
-    let source = rust::source(&system, &program, &format!("{strategy:?}")).map_err(|source| {
-        EmitError::Syntax {
-            model: system.name.clone(),
-            source,
-        }
-    })?;
+    let source =
+        rust::source(&system, &program, &format!("{strategy:?}"), trig).map_err(|source| {
+            EmitError::Syntax {
+                model: system.name.clone(),
+                source,
+            }
+        })?;
     Ok(Generated {
         model,
         name: system.name,
@@ -116,10 +135,19 @@ pub fn write_if_changed(path: &Path, contents: &str) -> Result<bool, EmitError> 
 /// // then, in the crate: mod auv { include!(concat!(env!("OUT_DIR"), "/spatial_xz_quaternion.rs")); }
 /// ```
 pub fn emit_into(out_dir: &Path, models: &[Model]) -> Result<Vec<Generated>, EmitError> {
+    emit_into_with(out_dir, models, Trig::Kernel)
+}
+
+/// [`emit_into`] with the chosen sine and cosine (see [`generate_with`]).
+pub fn emit_into_with(
+    out_dir: &Path,
+    models: &[Model],
+    trig: Trig,
+) -> Result<Vec<Generated>, EmitError> {
     models
         .iter()
         .map(|&model| {
-            let generated = generate(model)?;
+            let generated = generate_with(model, trig)?;
             write_if_changed(
                 &out_dir.join(format!("{}.rs", generated.name)),
                 &generated.source,

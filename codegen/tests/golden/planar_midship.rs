@@ -74,7 +74,7 @@ pub fn rhs<T: SimdRealField + Copy>(
     let r_u = r * u;
     let v_rate = k.k2 * f_y - k.k3 * m_z - r_u;
     let r_rate = -k.k3 * f_y + k.k4 * m_z;
-    let (s_psi, c_psi) = psi.simd_sin_cos();
+    let (s_psi, c_psi) = sin_cos(psi);
     let u_c_psi = u * c_psi;
     let v_s_psi = v * s_psi;
     let x_rate = u_c_psi - v_s_psi;
@@ -82,4 +82,105 @@ pub fn rhs<T: SimdRealField + Copy>(
     let v_c_psi = v * c_psi;
     let y_rate = u_s_psi + v_c_psi;
     [u_rate, v_rate, r_rate, x_rate, y_rate, r]
+}
+/// `(sin x, cos x)` as [`rhs`] computes them.
+///
+/// For `f64` and `f32` (widened to f64, rounded once at the end) this is the kernel in
+/// the private module `sin_cos_kernel`: one argument reduction shared by both, within
+/// 2 ulp of the platform's `sin` and `cos`. Every other scalar (SIMD lanes, dual numbers) uses its
+/// own `simd_sin_cos`.
+#[inline]
+pub fn sin_cos<T: SimdRealField + Copy>(x: T) -> (T, T) {
+    let scalar: &dyn core::any::Any = &x;
+    let wide = if let Some(&x) = scalar.downcast_ref::<f64>() {
+        x
+    } else if let Some(&x) = scalar.downcast_ref::<f32>() {
+        f64::from(x)
+    } else {
+        return x.simd_sin_cos();
+    };
+    let (s, c) = sin_cos_kernel::sin_cos(wide);
+    (T::from_subset(&s), T::from_subset(&c))
+}
+/// Sine and cosine of an `f64` from one argument reduction.
+///
+/// `k = round(2x/π)`; `r = x − k·π/2` in three steps, π/2 split Cody–Waite style so
+/// that the first two products are exact; the minimax polynomials of fdlibm's
+/// `__kernel_sin` and `__kernel_cos` on |r| ≤ π/4; the quadrant `k mod 4`, read from the
+/// low bits of the rounding sum (those of k, two's complement), orders the pair and
+/// flips sign bits. NaN, infinities and |x| > [`LIMIT`] go to the platform's `sin_cos`.
+mod sin_cos_kernel {
+    /// 1.5·2⁵²: adding and subtracting it rounds an f64 below 2⁵¹ to an integer. Bits `0x4338000000000000`.
+    const ROUNDER: f64 = 6755399441055744.0;
+    /// The first 33 bits of π/2: `k·PIO2_1` is exact for |k| ≤ 2¹⁹. Bits `0x3FF921FB54400000`.
+    const PIO2_1: f64 = 1.5707963267341256;
+    /// The next 33 bits of π/2: `k·PIO2_2` is exact too. Bits `0x3DD0B4611A600000`.
+    const PIO2_2: f64 = 6.077100506303966e-11;
+    /// π/2 − PIO2_1 − PIO2_2. Bits `0x3BA3198A2E037073`.
+    const PIO2_2T: f64 = 2.0222662487959506e-21;
+    /// Below 2¹⁹·π/2, so that |k| ≤ 2¹⁹ and the products above stay exact. Bits `0x412921FA00000000`.
+    const LIMIT: f64 = 823549.0;
+    /// 2⁻²⁷: below it sin x rounds to x and cos x to 1. Bits `0x3E40000000000000`.
+    const TINY: f64 = 7.450580596923828e-9;
+    /// fdlibm `__kernel_sin`, r³. Bits `0xBFC5555555555549`.
+    const S1: f64 = -0.16666666666666632;
+    /// fdlibm `__kernel_sin`, r⁵. Bits `0x3F8111111110F8A6`.
+    const S2: f64 = 0.00833333333332249;
+    /// fdlibm `__kernel_sin`, r⁷. Bits `0xBF2A01A019C161D5`.
+    const S3: f64 = -1.984126982985795e-4;
+    /// fdlibm `__kernel_sin`, r⁹. Bits `0x3EC71DE357B1FE7D`.
+    const S4: f64 = 2.7557313707070068e-6;
+    /// fdlibm `__kernel_sin`, r¹¹. Bits `0xBE5AE5E68A2B9CEB`.
+    const S5: f64 = -2.5050760253406863e-8;
+    /// fdlibm `__kernel_sin`, r¹³. Bits `0x3DE5D93A5ACFD57C`.
+    const S6: f64 = 1.58969099521155e-10;
+    /// fdlibm `__kernel_cos`, r⁴. Bits `0x3FA555555555554C`.
+    const C1: f64 = 0.0416666666666666;
+    /// fdlibm `__kernel_cos`, r⁶. Bits `0xBF56C16C16C15177`.
+    const C2: f64 = -0.001388888888887411;
+    /// fdlibm `__kernel_cos`, r⁸. Bits `0x3EFA01A019CB1590`.
+    const C3: f64 = 2.480158728947673e-5;
+    /// fdlibm `__kernel_cos`, r¹⁰. Bits `0xBE927E4F809C52AD`.
+    const C4: f64 = -2.7557314351390663e-7;
+    /// fdlibm `__kernel_cos`, r¹². Bits `0x3E21EE9EBDB4B1C4`.
+    const C5: f64 = 2.087572321298175e-9;
+    /// fdlibm `__kernel_cos`, r¹⁴. Bits `0xBDA8FAE9BE8838D4`.
+    const C6: f64 = -1.1359647557788195e-11;
+    /// `(sin x, cos x)`.
+    #[inline]
+    pub fn sin_cos(x: f64) -> (f64, f64) {
+        let magnitude = x.abs();
+        if magnitude.is_nan() || magnitude > LIMIT {
+            return x.sin_cos();
+        }
+        if magnitude < TINY {
+            return (x, 1.0);
+        }
+        let shifted = x * core::f64::consts::FRAC_2_PI + ROUNDER;
+        let quadrant = shifted.to_bits();
+        let k = shifted - ROUNDER;
+        let r = ((x - k * PIO2_1) - k * PIO2_2) - k * PIO2_2T;
+        let (s, c) = (sin_reduced(r), cos_reduced(r));
+        let (s, c) = if quadrant & 1 == 0 { (s, c) } else { (c, s) };
+        let sin_sign = (quadrant & 2) << 62;
+        let cos_sign = (quadrant.wrapping_add(1) & 2) << 62;
+        (f64::from_bits(s.to_bits() ^ sin_sign), f64::from_bits(c.to_bits() ^ cos_sign))
+    }
+    /// sin r for |r| ≤ π/4: `r + r³ (S1 + r² P(r²))`.
+    #[inline]
+    fn sin_reduced(r: f64) -> f64 {
+        let z = r * r;
+        let p = S2 + z * (S3 + z * (S4 + z * (S5 + z * S6)));
+        r + z * r * (S1 + z * p)
+    }
+    /// cos r for |r| ≤ π/4: `1 − r²/2 + r⁴ Q(r²)`, with the rounding error of
+    /// `1 − r²/2` added back.
+    #[inline]
+    fn cos_reduced(r: f64) -> f64 {
+        let z = r * r;
+        let q = C1 + z * (C2 + z * (C3 + z * (C4 + z * (C5 + z * C6))));
+        let half_z = 0.5 * z;
+        let head = 1.0 - half_z;
+        head + (((1.0 - head) - half_z) + z * z * q)
+    }
 }

@@ -1,0 +1,245 @@
+//! The sine and cosine the generated code calls.
+//!
+//! In the trigonometric models the three `sin_cos` of the Euler angles (or the one of the
+//! heading) cost more than all the arithmetic around them, and the platform's `sin` and `cos`
+//! each reduce the argument and branch on its size again. So the emitter writes, next to
+//! `rhs`, one kernel that does both from a single argument reduction: `k = round(2x/π)`, the
+//! remainder `r = x − k·π/2` in three steps (Cody–Waite: π/2 split into two 33-bit parts
+//! whose products with `k` are exact, and a tail), then the minimax polynomials of fdlibm's
+//! `__kernel_sin` and `__kernel_cos` on `|r| ≤ π/4` (Sun Microsystems, 1993; the same
+//! coefficients as musl and openlibm), and the quadrant `k mod 4` picks signs and order.
+//!
+//! The kernel runs on `f64` and `f32` scalars (f32 is widened and the result rounded once).
+//! Any other scalar — SIMD lanes, dual numbers — keeps its own `simd_sin_cos`: lanes have a
+//! vectorised one already, and the rounding trick would drop a dual number's derivative.
+//! Arguments beyond `2¹⁹·π/2`, where the two-part products stop being exact, and NaN or
+//! infinite ones go to the platform's `sin_cos` unchanged.
+//!
+//! The constants are written here as IEEE-754 bit patterns, the form fdlibm documents them
+//! in, and emitted as the shortest decimal that round-trips.
+
+use proc_macro2::{Literal, TokenStream};
+use quote::quote;
+
+/// Which sine and cosine the generated `rhs` calls.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash)]
+pub enum Trig {
+    /// The emitted kernel (one shared reduction, fdlibm's polynomials) for `f64` and `f32`,
+    /// the scalar's own `simd_sin_cos` for every other scalar.
+    #[default]
+    Kernel,
+    /// The scalar's own `simd_sin_cos` everywhere: the platform's `sin` and `cos` for `f64`.
+    Std,
+}
+
+/// The constants of the kernel: name, IEEE-754 bits, and what it is.
+const CONSTANTS: [(&str, u64, &str); 17] = [
+    (
+        "ROUNDER",
+        0x4338_0000_0000_0000,
+        "1.5·2⁵²: adding and subtracting it rounds an f64 below 2⁵¹ to an integer.",
+    ),
+    (
+        "PIO2_1",
+        0x3FF9_21FB_5440_0000,
+        "The first 33 bits of π/2: `k·PIO2_1` is exact for |k| ≤ 2¹⁹.",
+    ),
+    (
+        "PIO2_2",
+        0x3DD0_B461_1A60_0000,
+        "The next 33 bits of π/2: `k·PIO2_2` is exact too.",
+    ),
+    ("PIO2_2T", 0x3BA3_198A_2E03_7073, "π/2 − PIO2_1 − PIO2_2."),
+    (
+        "LIMIT",
+        0x4129_21FA_0000_0000,
+        "Below 2¹⁹·π/2, so that |k| ≤ 2¹⁹ and the products above stay exact.",
+    ),
+    (
+        "TINY",
+        0x3E40_0000_0000_0000,
+        "2⁻²⁷: below it sin x rounds to x and cos x to 1.",
+    ),
+    ("S1", 0xBFC5_5555_5555_5549, "fdlibm `__kernel_sin`, r³."),
+    ("S2", 0x3F81_1111_1110_F8A6, "fdlibm `__kernel_sin`, r⁵."),
+    ("S3", 0xBF2A_01A0_19C1_61D5, "fdlibm `__kernel_sin`, r⁷."),
+    ("S4", 0x3EC7_1DE3_57B1_FE7D, "fdlibm `__kernel_sin`, r⁹."),
+    ("S5", 0xBE5A_E5E6_8A2B_9CEB, "fdlibm `__kernel_sin`, r¹¹."),
+    ("S6", 0x3DE5_D93A_5ACF_D57C, "fdlibm `__kernel_sin`, r¹³."),
+    ("C1", 0x3FA5_5555_5555_554C, "fdlibm `__kernel_cos`, r⁴."),
+    ("C2", 0xBF56_C16C_16C1_5177, "fdlibm `__kernel_cos`, r⁶."),
+    ("C3", 0x3EFA_01A0_19CB_1590, "fdlibm `__kernel_cos`, r⁸."),
+    ("C4", 0xBE92_7E4F_809C_52AD, "fdlibm `__kernel_cos`, r¹⁰."),
+    ("C5", 0x3E21_EE9E_BDB4_B1C4, "fdlibm `__kernel_cos`, r¹²."),
+];
+
+/// fdlibm `__kernel_cos`, r¹⁴ (kept apart so the table above stays one line per entry).
+const C6: u64 = 0xBDA8_FAE9_BE88_38D4;
+
+fn constant_items() -> TokenStream {
+    let entries = CONSTANTS
+        .iter()
+        .copied()
+        .chain([("C6", C6, "fdlibm `__kernel_cos`, r¹⁴.")]);
+    let items = entries.map(|(name, bits, doc)| {
+        let ident = super::rust::ident(name);
+        let value = float_literal(f64::from_bits(bits));
+        let doc = format!(" {doc} Bits `{bits:#018X}`.");
+        quote! { #[doc = #doc] const #ident: f64 = #value; }
+    });
+    quote! { #(#items)* }
+}
+
+/// A float literal that reads well: exponent form below 10⁻³, where positional form would
+/// start with a run of zeros; both are the shortest decimal that round-trips.
+fn float_literal(value: f64) -> Literal {
+    if value != 0.0 && value.abs() < 1e-3 {
+        format!("{value:e}")
+            .parse()
+            .expect("an f64 in exponent form is a literal")
+    } else {
+        Literal::f64_unsuffixed(value)
+    }
+}
+
+/// The kernel's items: the public `sin_cos` that `rhs` calls, and its private `f64` module.
+pub fn kernel_items() -> TokenStream {
+    let constants = constant_items();
+    quote! {
+        /// `(sin x, cos x)` as [`rhs`] computes them.
+        ///
+        /// For `f64` and `f32` (widened to f64, rounded once at the end) this is the kernel in
+        /// the private module `sin_cos_kernel`: one argument reduction shared by both, within
+        /// 2 ulp of the platform's `sin` and `cos`. Every other scalar (SIMD lanes, dual numbers) uses its
+        /// own `simd_sin_cos`.
+        #[inline]
+        pub fn sin_cos<T: SimdRealField + Copy>(x: T) -> (T, T) {
+            let scalar: &dyn core::any::Any = &x;
+            let wide = if let Some(&x) = scalar.downcast_ref::<f64>() {
+                x
+            } else if let Some(&x) = scalar.downcast_ref::<f32>() {
+                f64::from(x)
+            } else {
+                return x.simd_sin_cos();
+            };
+            let (s, c) = sin_cos_kernel::sin_cos(wide);
+            (T::from_subset(&s), T::from_subset(&c))
+        }
+
+        /// Sine and cosine of an `f64` from one argument reduction.
+        ///
+        /// `k = round(2x/π)`; `r = x − k·π/2` in three steps, π/2 split Cody–Waite style so
+        /// that the first two products are exact; the minimax polynomials of fdlibm's
+        /// `__kernel_sin` and `__kernel_cos` on |r| ≤ π/4; the quadrant `k mod 4`, read from the
+        /// low bits of the rounding sum (those of k, two's complement), orders the pair and
+        /// flips sign bits. NaN, infinities and |x| > [`LIMIT`] go to the platform's `sin_cos`.
+        mod sin_cos_kernel {
+            #constants
+
+            /// `(sin x, cos x)`.
+            #[inline]
+            pub fn sin_cos(x: f64) -> (f64, f64) {
+                let magnitude = x.abs();
+                if magnitude.is_nan() || magnitude > LIMIT {
+                    return x.sin_cos();
+                }
+                if magnitude < TINY {
+                    return (x, 1.0);
+                }
+                let shifted = x * core::f64::consts::FRAC_2_PI + ROUNDER;
+                let quadrant = shifted.to_bits();
+                let k = shifted - ROUNDER;
+                let r = ((x - k * PIO2_1) - k * PIO2_2) - k * PIO2_2T;
+                let (s, c) = (sin_reduced(r), cos_reduced(r));
+                let (s, c) = if quadrant & 1 == 0 { (s, c) } else { (c, s) };
+                let sin_sign = (quadrant & 2) << 62;
+                let cos_sign = (quadrant.wrapping_add(1) & 2) << 62;
+                (
+                    f64::from_bits(s.to_bits() ^ sin_sign),
+                    f64::from_bits(c.to_bits() ^ cos_sign),
+                )
+            }
+
+            /// sin r for |r| ≤ π/4: `r + r³ (S1 + r² P(r²))`.
+            #[inline]
+            fn sin_reduced(r: f64) -> f64 {
+                let z = r * r;
+                let p = S2 + z * (S3 + z * (S4 + z * (S5 + z * S6)));
+                r + z * r * (S1 + z * p)
+            }
+
+            /// cos r for |r| ≤ π/4: `1 − r²/2 + r⁴ Q(r²)`, with the rounding error of
+            /// `1 − r²/2` added back.
+            #[inline]
+            fn cos_reduced(r: f64) -> f64 {
+                let z = r * r;
+                let q = C1 + z * (C2 + z * (C3 + z * (C4 + z * (C5 + z * C6))));
+                let half_z = 0.5 * z;
+                let head = 1.0 - half_z;
+                head + (((1.0 - head) - half_z) + z * z * q)
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn constant(name: &str) -> f64 {
+        let bits = CONSTANTS
+            .iter()
+            .map(|&(n, bits, _)| (n, bits))
+            .chain([("C6", C6)])
+            .find(|&(n, _)| n == name)
+            .map(|(_, bits)| bits)
+            .unwrap_or_else(|| panic!("no constant {name}"));
+        f64::from_bits(bits)
+    }
+
+    /// The bit patterns against the decimal values fdlibm prints beside them (its `invpio2`
+    /// is the standard library's 2/π, which the kernel uses).
+    #[test]
+    fn constants_match_fdlibm_decimals() {
+        assert_eq!(
+            std::f64::consts::FRAC_2_PI,
+            "6.36619772367581382433e-01".parse::<f64>().unwrap()
+        );
+        let decimals = [
+            ("PIO2_1", "1.57079632673412561417e+00"),
+            ("PIO2_2", "6.07710050630396597660e-11"),
+            ("PIO2_2T", "2.02226624879595063154e-21"),
+            ("S1", "-1.66666666666666324348e-01"),
+            ("S2", "8.33333333332248946124e-03"),
+            ("S3", "-1.98412698298579493134e-04"),
+            ("S4", "2.75573137070700676789e-06"),
+            ("S5", "-2.50507602534068634195e-08"),
+            ("S6", "1.58969099521155010221e-10"),
+            ("C1", "4.16666666666666019037e-02"),
+            ("C2", "-1.38888888888741095749e-03"),
+            ("C3", "2.48015872894767294178e-05"),
+            ("C4", "-2.75573143513906633035e-07"),
+            ("C5", "2.08757232129817482790e-09"),
+            ("C6", "-1.13596475577881948265e-11"),
+        ];
+        for (name, decimal) in decimals {
+            assert_eq!(constant(name), decimal.parse::<f64>().unwrap(), "{name}");
+        }
+    }
+
+    /// The reduction's exactness rests on these: PIO2_1 and PIO2_2 have at most 33
+    /// significant bits, the split sums to π/2, and |k| stays within 2¹⁹ below LIMIT.
+    #[test]
+    fn reduction_constants_keep_the_products_exact() {
+        for name in ["PIO2_1", "PIO2_2"] {
+            let mantissa = constant(name).to_bits() & ((1 << 52) - 1);
+            assert!(mantissa.trailing_zeros() >= 52 - 32, "{name}");
+        }
+        let sum = constant("PIO2_1") + constant("PIO2_2") + constant("PIO2_2T");
+        assert_eq!(sum, std::f64::consts::FRAC_PI_2);
+        let k_max = (constant("LIMIT") * std::f64::consts::FRAC_2_PI).round();
+        assert!(k_max <= f64::from(1 << 19));
+        assert_eq!(constant("ROUNDER"), 1.5 * 2f64.powi(52));
+        assert_eq!(constant("TINY"), 2f64.powi(-27));
+    }
+}
