@@ -3,7 +3,9 @@
 use super::solve::{Solution, solve_linear};
 use super::system::{ModelError, Parameter, Stage, System};
 use super::{Kinematics, Strategy, Symmetry};
-use crate::derivation::kinematics::{body_to_space, euler_rate_matrix, rotation_z};
+use crate::derivation::kinematics::{
+    body_to_space, euler_rate_matrix, rotation_x, rotation_y, rotation_z,
+};
 use crate::derivation::quaternion::{
     Quaternion, body_to_space_half_angles, quaternion_of_euler_angles, quaternion_rates,
 };
@@ -259,32 +261,34 @@ fn momentum_stages(name: &str, products: &[&str]) -> Result<(Vec<Stage>, Vec<Exp
     Ok((stages, rest))
 }
 
-/// Euler-angle kinematics: E·v through its nine entries (4.57), rates by 4.60 through ω in
-/// the frame before the roll, ω₃ = Rx(φ)ω: θ̇ = ω₃y, φ̇ = p + ω₃z tan θ, ψ̇ = ω₃z sec θ.
+/// Euler-angle kinematics. The track E·v (4.57) is turned one elementary rotation at a time,
+/// Rz(ψ)(Ry(θ)(Rx(φ) v)): 12 multiplications, where forming the nine entries of E and then E·v
+/// takes 24. The rates follow 4.60 through ω in the frame before the roll, ω₃ = Rx(φ)ω:
+/// θ̇ = ω₃y, ψ̇ = ω₃z sec θ and φ̇ = p + ψ̇ sin θ (= p + ω₃z tan θ, sharing the product).
 fn euler_kinematics() -> (Vec<Stage>, Vec<Expr>) {
-    let e = body_to_space();
     let mut stages: Vec<Stage> = Vec::new();
-    for r in 0..3 {
-        for c in 0..3 {
-            stages.push((format!("e{}{}", r + 1, c + 1), e.0[r][c].clone()));
-        }
-    }
-    let v = symbols(&["u", "v", "w"]);
-    let mut outputs: Vec<Expr> = (0..3)
-        .map(|r| {
-            (0..3)
-                .map(|c| Expr::symbol(&format!("e{}{}", r + 1, c + 1)) * &v[c])
-                .sum()
-        })
-        .collect();
+    let u = Expr::symbol("u");
+    let rolled = rotation_x("phi").mul_vec(&Vec3::symbols(["u", "v", "w"]));
+    stages.push(("rolled_y".into(), rolled.0[1].clone()));
+    stages.push(("rolled_z".into(), rolled.0[2].clone()));
+    let rolled = Vec3([u, Expr::symbol("rolled_y"), Expr::symbol("rolled_z")]);
+    let pitched = rotation_y("theta").mul_vec(&rolled);
+    stages.push(("pitched_x".into(), pitched.0[0].clone()));
+    stages.push(("pitched_z".into(), pitched.0[2].clone()));
+    let pitched = Vec3::symbols(["pitched_x", "rolled_y", "pitched_z"]);
+    let mut outputs = rotation_z("psi").mul_vec(&pitched).0.to_vec();
     let (q, r) = (Expr::symbol("q"), Expr::symbol("r"));
     let (s, c) = (Expr::sin("phi"), Expr::cos("phi"));
     stages.push(("omega3_y".into(), &q * &c - &r * &s));
     stages.push(("omega3_z".into(), &q * &s + &r * &c));
-    let omega3_z = Expr::symbol("omega3_z");
-    outputs.push(Expr::symbol("p") + &omega3_z * &Expr::tan("theta"));
+    stages.push((
+        "heading_rate".into(),
+        Expr::symbol("omega3_z") * Expr::sec("theta"),
+    ));
+    let heading_rate = Expr::symbol("heading_rate");
+    outputs.push(Expr::symbol("p") + &heading_rate * &Expr::sin("theta"));
     outputs.push(Expr::symbol("omega3_y"));
-    outputs.push(&omega3_z * &Expr::sec("theta"));
+    outputs.push(heading_rate);
     (stages, outputs)
 }
 

@@ -95,8 +95,8 @@ pub const INPUTS: [&str; 6] = ["F_x", "F_y", "F_z", "M_x", "M_y", "M_z"];
 /// Operations per call of [`rhs`]: additions, multiplications, divisions, square roots,
 /// trigonometric calls (`sin_cos` counts once).
 pub const OPERATIONS: [(&str, u32); 5] = [
-    ("add", 31),
-    ("mul", 57),
+    ("add", 25),
+    ("mul", 44),
     ("div", 1),
     ("sqrt", 0),
     ("trig", 3),
@@ -106,7 +106,7 @@ pub const OPERATIONS: [(&str, u32); 5] = [
 /// State: `[u, v, w, p, q, r, x, y, z, phi, theta, psi]`; inputs: `[F_x, F_y, F_z, M_x, M_y, M_z]`.
 /// Returns the time derivative of the state.
 ///
-/// Cost per call: 31 add, 57 mul, 1 div, 0 sqrt, 3 trig (strategy: Expanded).
+/// Cost per call: 25 add, 44 mul, 1 div, 0 sqrt, 3 trig (strategy: Expanded).
 /// Singular at θ = ±90°, where sec θ is infinite (4.60).
 #[inline]
 pub fn rhs<T: SimdRealField + Copy>(
@@ -116,39 +116,29 @@ pub fn rhs<T: SimdRealField + Copy>(
 ) -> [T; 12] {
     let [u, v, w, p, q, r, _, _, _, phi, theta, psi] = *state;
     let [f_x, f_y, f_z, m_x, m_y, m_z] = *input;
-    let (s_psi, c_psi) = sin_cos(psi);
-    let (s_theta, c_theta) = sin_cos(theta);
-    let c_psi_c_theta = c_psi * c_theta;
-    let e11 = c_psi_c_theta;
     let (s_phi, c_phi) = sin_cos(phi);
-    let s_phi_s_theta = s_phi * s_theta;
-    let s_phi_s_theta_c_psi = s_phi_s_theta * c_psi;
-    let s_psi_c_phi = s_psi * c_phi;
-    let e12 = s_phi_s_theta_c_psi - s_psi_c_phi;
-    let s_phi_s_psi = s_phi * s_psi;
-    let s_theta_c_phi = s_theta * c_phi;
-    let s_theta_c_phi_c_psi = s_theta_c_phi * c_psi;
-    let e13 = s_phi_s_psi + s_theta_c_phi_c_psi;
-    let s_psi_c_theta = s_psi * c_theta;
-    let e21 = s_psi_c_theta;
-    let s_phi_s_psi_s_theta = s_phi_s_psi * s_theta;
-    let c_phi_c_psi = c_phi * c_psi;
-    let e22 = s_phi_s_psi_s_theta + c_phi_c_psi;
-    let s_phi_c_psi = s_phi * c_psi;
-    let s_psi_s_theta = s_psi * s_theta;
-    let s_psi_s_theta_c_phi = s_psi_s_theta * c_phi;
-    let e23 = -s_phi_c_psi + s_psi_s_theta_c_phi;
-    let e31 = -s_theta;
-    let s_phi_c_theta = s_phi * c_theta;
-    let e32 = s_phi_c_theta;
-    let c_phi_c_theta = c_phi * c_theta;
-    let e33 = c_phi_c_theta;
+    let v_c_phi = v * c_phi;
+    let w_s_phi = w * s_phi;
+    let rolled_y = v_c_phi - w_s_phi;
+    let v_s_phi = v * s_phi;
+    let w_c_phi = w * c_phi;
+    let rolled_z = v_s_phi + w_c_phi;
+    let (s_theta, c_theta) = sin_cos(theta);
+    let rolled_z_s_theta = rolled_z * s_theta;
+    let u_c_theta = u * c_theta;
+    let pitched_x = rolled_z_s_theta + u_c_theta;
+    let rolled_z_c_theta = rolled_z * c_theta;
+    let u_s_theta = u * s_theta;
+    let pitched_z = rolled_z_c_theta - u_s_theta;
     let q_c_phi = q * c_phi;
     let r_s_phi = r * s_phi;
     let omega3_y = q_c_phi - r_s_phi;
     let q_s_phi = q * s_phi;
     let r_c_phi = r * c_phi;
     let omega3_z = q_s_phi + r_c_phi;
+    let sec_theta = c_theta.simd_recip();
+    let omega3_z_sec_theta = omega3_z * sec_theta;
+    let heading_rate = omega3_z_sec_theta;
     let q_w = q * w;
     let r_v = r * v;
     let u_rate = k.k0 * f_x - q_w + r_v;
@@ -166,24 +156,15 @@ pub fn rhs<T: SimdRealField + Copy>(
     let r_r = r * r;
     let q_rate = k.k5 * m_y + k.k6 * p_r + k.k7 * p_p - k.k7 * r_r;
     let r_rate = -k.k2 * m_x + k.k8 * m_z - k.k9 * p_q + k.k3 * q_r;
-    let e11_u = e11 * u;
-    let e12_v = e12 * v;
-    let e13_w = e13 * w;
-    let x_rate = e11_u + e12_v + e13_w;
-    let e21_u = e21 * u;
-    let e22_v = e22 * v;
-    let e23_w = e23 * w;
-    let y_rate = e21_u + e22_v + e23_w;
-    let e31_u = e31 * u;
-    let e32_v = e32 * v;
-    let e33_w = e33 * w;
-    let z_rate = e31_u + e32_v + e33_w;
-    let sec_theta = c_theta.simd_recip();
-    let omega3_z_s_theta = omega3_z * s_theta;
-    let omega3_z_s_theta_sec_theta = omega3_z_s_theta * sec_theta;
-    let phi_rate = omega3_z_s_theta_sec_theta + p;
-    let omega3_z_sec_theta = omega3_z * sec_theta;
-    let psi_rate = omega3_z_sec_theta;
+    let (s_psi, c_psi) = sin_cos(psi);
+    let pitched_x_c_psi = pitched_x * c_psi;
+    let rolled_y_s_psi = rolled_y * s_psi;
+    let x_rate = pitched_x_c_psi - rolled_y_s_psi;
+    let pitched_x_s_psi = pitched_x * s_psi;
+    let rolled_y_c_psi = rolled_y * c_psi;
+    let y_rate = pitched_x_s_psi + rolled_y_c_psi;
+    let heading_rate_s_theta = heading_rate * s_theta;
+    let phi_rate = heading_rate_s_theta + p;
     [
         u_rate,
         v_rate,
@@ -193,10 +174,10 @@ pub fn rhs<T: SimdRealField + Copy>(
         r_rate,
         x_rate,
         y_rate,
-        z_rate,
+        pitched_z,
         phi_rate,
         omega3_y,
-        psi_rate,
+        heading_rate,
     ]
 }
 /// `(sin x, cos x)` as [`rhs`] computes them.
