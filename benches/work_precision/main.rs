@@ -41,7 +41,7 @@ use eom::reference::{
 use nalgebra::{Matrix3, Quaternion, RealField, SVector, UnitQuaternion, Vector3};
 
 use report::BASE;
-use spatial::{MASS, TurnedAxes, euler, generic_euler, generic_quaternion, no_load, quaternion};
+use spatial::{MASS, TurnedAxes, euler, generic_euler, generic_quaternion, quaternion};
 use sweep::{Case, RTOLS, Row, sweep_geometric, sweep_runge_kutta};
 
 /// The largest relative change between two lists of conserved quantities.
@@ -191,9 +191,8 @@ fn euler_angle_rows(racket: &TennisRacket) -> Vec<Row> {
     let tensor = spatial::principal_tensor(racket);
     let generated = SpatialPrincipalEuler::<f64>::new(MASS, &tensor).expect("valid model");
     let generic = RigidBody::<f64>::new(MASS, &tensor).expect("valid body");
-    let (f, m) = no_load::<f64>();
     let mut rows = variant::<f64, 6>(&case("f64, Euler angles 4.60"), &body, &RTOLS);
-    let system = euler(|s| generated.rhs(s, &f, &m));
+    let system = euler(|s, f, m| generated.rhs(s, f, m));
     rows.extend(variant::<f64, 6>(
         &case(names::GENERATED_EULER),
         &system,
@@ -228,19 +227,18 @@ fn spatial_rows(racket: &TennisRacket) -> Vec<Row> {
     let pruned32 = SpatialPrincipalQuaternion::<f32>::new(MASS, &tensor).expect("valid model");
     let generic = RigidBody::<f64>::new(MASS, &tensor).expect("valid body");
     let generic32 = RigidBody::<f32>::new(MASS, &tensor).expect("valid body");
-    let ((f, m), (f32_, m32)) = (no_load::<f64>(), no_load::<f32>());
     let mut rows = Vec::new();
-    let system = quaternion(|s| pruned.rhs(s, &f, &m));
+    let system = quaternion(|s, f, m| pruned.rhs(s, f, m));
     rows.extend(variant::<f64, 7>(&case(names::GENERATED), &system, &RTOLS));
     let system = quaternion(generic_quaternion(generic));
     rows.extend(variant::<f64, 7>(&case(names::GENERIC), &system, &RTOLS));
-    let system = quaternion(|s| full.rhs(s, &f, &m));
+    let system = quaternion(|s, f, m| full.rhs(s, f, m));
     rows.extend(variant::<f64, 7>(
         &case(names::GENERATED_FULL_ZERO),
         &system,
         &RTOLS,
     ));
-    let system = quaternion(|s| pruned32.rhs(s, &f32_, &m32));
+    let system = quaternion(|s, f, m| pruned32.rhs(s, f, m));
     rows.extend(variant::<f32, 7>(
         &case(names::GENERATED_F32),
         &system,
@@ -267,10 +265,9 @@ fn turned_axes_rows(racket: &TennisRacket, only: Option<&str>) -> Vec<Row> {
     let case = |model: &str| racket_case(racket, model, y0, &judge);
     let full = SpatialFullQuaternion::<f64>::new(MASS, turned.tensor()).expect("valid model");
     let generic = RigidBody::<f64>::new(MASS, turned.tensor()).expect("valid body");
-    let (f, m) = no_load::<f64>();
     let mut rows = Vec::new();
     if only != Some("generic") {
-        let system = quaternion(|s| full.rhs(s, &f, &m));
+        let system = quaternion(|s, f, m| full.rhs(s, f, m));
         rows.extend(variant::<f64, 7>(
             &case(names::TURNED_GENERATED),
             &system,
