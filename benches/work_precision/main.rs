@@ -12,6 +12,13 @@
 //! of `eom::models` and the generic nalgebra form `eom::generic::RigidBody`; pruned (principal
 //! axes) and full tensor (see `spatial` for how the 6-DOF models are fitted to the problem).
 //!
+//! `cargo bench --bench work_precision -- turned` runs only the racket in turned axes (the
+//! generated full model beside the generic form) and prints its report without writing any
+//! file; `-- turned generated` or `-- turned generic` runs one form alone. With
+//! `WORK_PRECISION_REPS=n` every run is repeated exactly `n` times after the first instead of
+//! for a time budget, so that a profiler (`perf stat`, callgrind) sees a known number of RHS
+//! calls: the RHS evals column times `n + 1`.
+//!
 //! To add a model, add one line to the list of its problem (a name and a system); to compare
 //! two models side by side in the report, add their names to `names::PAIRS`.
 
@@ -34,7 +41,7 @@ use eom::reference::{
 use nalgebra::{Matrix3, Quaternion, RealField, SVector, UnitQuaternion, Vector3};
 
 use report::BASE;
-use spatial::{MASS, TurnedAxes, euler, generic_euler, generic_quaternion, no_load, quaternion};
+use spatial::{MASS, TurnedAxes, euler, generic_euler, generic_quaternion, quaternion};
 use sweep::{Case, RTOLS, Row, sweep_geometric, sweep_runge_kutta};
 
 /// The largest relative change between two lists of conserved quantities.
@@ -104,9 +111,7 @@ fn planar_rows() -> Vec<Row> {
 /// in f32, with Euler-angle kinematics (4.60), with the full-tensor form (4.51), and through
 /// the generated spatial models and the generic nalgebra form.
 fn racket_rows() -> Vec<Row> {
-    let attitude = UnitQuaternion::from_euler_angles(0.3, -0.2, 0.5);
-    let racket =
-        TennisRacket::new(Vector3::new(1.0, 2.0, 3.0), 1.0, 0.1, attitude).expect("valid racket");
+    let racket = tennis_racket();
     let moments = racket.body().moments;
     let judge = judge_of(&racket);
     let case = |model: &str| case_of(&racket, model, &judge);
@@ -186,9 +191,8 @@ fn euler_angle_rows(racket: &TennisRacket) -> Vec<Row> {
     let tensor = spatial::principal_tensor(racket);
     let generated = SpatialPrincipalEuler::<f64>::new(MASS, &tensor).expect("valid model");
     let generic = RigidBody::<f64>::new(MASS, &tensor).expect("valid body");
-    let (f, m) = no_load::<f64>();
     let mut rows = variant::<f64, 6>(&case("f64, Euler angles 4.60"), &body, &RTOLS);
-    let system = euler(|s| generated.rhs(s, &f, &m));
+    let system = euler(|s, f, m| generated.rhs(s, f, m));
     rows.extend(variant::<f64, 6>(
         &case(names::GENERATED_EULER),
         &system,
@@ -223,19 +227,18 @@ fn spatial_rows(racket: &TennisRacket) -> Vec<Row> {
     let pruned32 = SpatialPrincipalQuaternion::<f32>::new(MASS, &tensor).expect("valid model");
     let generic = RigidBody::<f64>::new(MASS, &tensor).expect("valid body");
     let generic32 = RigidBody::<f32>::new(MASS, &tensor).expect("valid body");
-    let ((f, m), (f32_, m32)) = (no_load::<f64>(), no_load::<f32>());
     let mut rows = Vec::new();
-    let system = quaternion(|s| pruned.rhs(s, &f, &m));
+    let system = quaternion(|s, f, m| pruned.rhs(s, f, m));
     rows.extend(variant::<f64, 7>(&case(names::GENERATED), &system, &RTOLS));
     let system = quaternion(generic_quaternion(generic));
     rows.extend(variant::<f64, 7>(&case(names::GENERIC), &system, &RTOLS));
-    let system = quaternion(|s| full.rhs(s, &f, &m));
+    let system = quaternion(|s, f, m| full.rhs(s, f, m));
     rows.extend(variant::<f64, 7>(
         &case(names::GENERATED_FULL_ZERO),
         &system,
         &RTOLS,
     ));
-    let system = quaternion(|s| pruned32.rhs(s, &f32_, &m32));
+    let system = quaternion(|s, f, m| pruned32.rhs(s, f, m));
     rows.extend(variant::<f32, 7>(
         &case(names::GENERATED_F32),
         &system,
@@ -247,13 +250,14 @@ fn spatial_rows(racket: &TennisRacket) -> Vec<Row> {
         &system,
         &RTOLS[..4],
     ));
-    rows.extend(turned_axes_rows(racket));
+    rows.extend(turned_axes_rows(racket, None));
     rows
 }
 
 /// The same racket in body axes turned from its principal axes: the full generated model and
-/// the generic form, judged after turning the end state back (see [`spatial::TurnedAxes`]).
-fn turned_axes_rows(racket: &TennisRacket) -> Vec<Row> {
+/// the generic form, judged after turning the end state back (see [`spatial::TurnedAxes`]);
+/// `only` (`"generated"` or `"generic"`) keeps one of the two.
+fn turned_axes_rows(racket: &TennisRacket, only: Option<&str>) -> Vec<Row> {
     let turned = TurnedAxes::new(racket);
     let base = judge_of(racket);
     let judge = |y: &SVector<f64, 7>| base(&turned.to_principal(y));
@@ -261,15 +265,23 @@ fn turned_axes_rows(racket: &TennisRacket) -> Vec<Row> {
     let case = |model: &str| racket_case(racket, model, y0, &judge);
     let full = SpatialFullQuaternion::<f64>::new(MASS, turned.tensor()).expect("valid model");
     let generic = RigidBody::<f64>::new(MASS, turned.tensor()).expect("valid body");
-    let (f, m) = no_load::<f64>();
-    let system = quaternion(|s| full.rhs(s, &f, &m));
-    let mut rows = variant::<f64, 7>(&case(names::TURNED_GENERATED), &system, &RTOLS);
-    let system = quaternion(generic_quaternion(generic));
-    rows.extend(variant::<f64, 7>(
-        &case(names::TURNED_GENERIC),
-        &system,
-        &RTOLS,
-    ));
+    let mut rows = Vec::new();
+    if only != Some("generic") {
+        let system = quaternion(|s, f, m| full.rhs(s, f, m));
+        rows.extend(variant::<f64, 7>(
+            &case(names::TURNED_GENERATED),
+            &system,
+            &RTOLS,
+        ));
+    }
+    if only != Some("generated") {
+        let system = quaternion(generic_quaternion(generic));
+        rows.extend(variant::<f64, 7>(
+            &case(names::TURNED_GENERIC),
+            &system,
+            &RTOLS,
+        ));
+    }
     rows
 }
 
@@ -280,7 +292,23 @@ fn write_all(dirs: &[PathBuf], name: &str, text: &str) {
     }
 }
 
+/// The racket of [`racket_rows`].
+fn tennis_racket() -> TennisRacket {
+    let attitude = UnitQuaternion::from_euler_angles(0.3, -0.2, 0.5);
+    TennisRacket::new(Vector3::new(1.0, 2.0, 3.0), 1.0, 0.1, attitude).expect("valid racket")
+}
+
 fn main() {
+    // `-- turned [generated|generic]` profiles one comparison (see the module docs).
+    let args: Vec<String> = std::env::args()
+        .skip(1)
+        .filter(|a| !a.starts_with('-'))
+        .collect();
+    if args.first().is_some_and(|a| a == "turned") {
+        let rows = turned_axes_rows(&tennis_racket(), args.get(1).map(String::as_str));
+        println!("{}", report::markdown(&rows));
+        return;
+    }
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let out = root.join("target").join("work_precision");
     let docs = root.join("docs").join("work_precision");

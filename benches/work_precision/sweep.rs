@@ -79,16 +79,21 @@ pub struct Case<'a, const M: usize> {
     pub judge: &'a dyn Fn(&SVector<f64, M>) -> (f64, f64),
 }
 
+/// The fixed number of repetitions of every run that `WORK_PRECISION_REPS` asks for, if any.
+fn fixed_repetitions() -> Option<usize> {
+    std::env::var("WORK_PRECISION_REPS").ok()?.parse().ok()
+}
+
 /// Runs `run` once for the result, then again until 100 ms have passed (at most 1000 times),
 /// and returns the result with the best time of one run: the minimum is the least disturbed
-/// by other work on the machine.
+/// by other work on the machine. With `WORK_PRECISION_REPS=n` the repetitions are exactly `n`.
 pub fn timed<R>(mut run: impl FnMut() -> R) -> (R, f64) {
     let start = Instant::now();
     let result = run();
     let mut best = start.elapsed().as_secs_f64();
-    let budget = Instant::now();
-    for _ in 0..1000 {
-        if budget.elapsed().as_secs_f64() > 0.1 {
+    let (fixed, budget) = (fixed_repetitions(), Instant::now());
+    for _ in 0..fixed.unwrap_or(1000) {
+        if fixed.is_none() && budget.elapsed().as_secs_f64() > 0.1 {
             break;
         }
         let start = Instant::now();
