@@ -174,9 +174,12 @@ fn rhs_function(system: &System, program: &Program, strategy: &str, trig: Trig) 
         .iter()
         .map(|step| step_tokens(program, step, trig));
     let outputs = program.outputs.iter().map(|o| ident(o));
+    // Always inlined: the full spatial models are above the compiler's inlining threshold,
+    // and called out of line from an integrator's stage loop they pass state, input and
+    // output through memory on every call, which cost more than the arithmetic saved.
     quote! {
         #(#[doc = #doc])*
-        #[inline]
+        #[inline(always)]
         pub fn rhs<T: SimdRealField + Copy>(k: &Coefficients<T>, state: &[T; #n], input: &[T; #m]) -> [T; #n] {
             let [#(#state),*] = *state;
             let [#(#inputs),*] = *input;

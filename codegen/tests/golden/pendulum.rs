@@ -54,7 +54,7 @@ pub const OPERATIONS: [(&str, u32); 5] = [
 /// Returns the time derivative of the state.
 ///
 /// Cost per call: 1 add, 2 mul, 0 div, 0 sqrt, 1 trig (strategy: Expanded).
-#[inline]
+#[inline(always)]
 pub fn rhs<T: SimdRealField + Copy>(
     k: &Coefficients<T>,
     state: &[T; 2],

@@ -113,7 +113,7 @@ pub const OPERATIONS: [(&str, u32); 5] = [
 ///
 /// Cost per call: 37 add, 51 mul, 1 div, 0 sqrt, 3 trig (strategy: StagedMomentum).
 /// Singular at θ = ±90°, where sec θ is infinite (4.60).
-#[inline]
+#[inline(always)]
 pub fn rhs<T: SimdRealField + Copy>(
     k: &Coefficients<T>,
     state: &[T; 12],

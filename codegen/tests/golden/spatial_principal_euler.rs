@@ -83,7 +83,7 @@ pub const OPERATIONS: [(&str, u32); 5] = [
 ///
 /// Cost per call: 18 add, 36 mul, 1 div, 0 sqrt, 3 trig (strategy: Expanded).
 /// Singular at θ = ±90°, where sec θ is infinite (4.60).
-#[inline]
+#[inline(always)]
 pub fn rhs<T: SimdRealField + Copy>(
     k: &Coefficients<T>,
     state: &[T; 12],

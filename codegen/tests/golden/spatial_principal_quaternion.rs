@@ -89,7 +89,7 @@ pub const OPERATIONS: [(&str, u32); 5] = [
 /// Returns the time derivative of the state.
 ///
 /// Cost per call: 35 add, 56 mul, 1 div, 0 sqrt, 0 trig (strategy: Expanded).
-#[inline]
+#[inline(always)]
 pub fn rhs<T: SimdRealField + Copy>(
     k: &Coefficients<T>,
     state: &[T; 13],
