@@ -157,8 +157,8 @@ pub fn rhs<T: SimdRealField + Copy>(
 ///
 /// For `f64` and `f32` (widened to f64, rounded once at the end) this is the kernel in
 /// the private module `sin_cos_kernel`: one argument reduction shared by both, within
-/// 2 ulp of the platform's `sin` and `cos`. Every other scalar (SIMD lanes, dual numbers) uses its
-/// own `simd_sin_cos`.
+/// 2 ulp of the platform's `sin` and `cos`. Every other scalar (SIMD lanes, dual
+/// numbers) uses its own `simd_sin_cos`.
 #[inline]
 pub fn sin_cos<T: SimdRealField + Copy>(x: T) -> (T, T) {
     let scalar: &dyn core::any::Any = &x;
@@ -216,15 +216,15 @@ mod sin_cos_kernel {
     const C5: f64 = 2.087572321298175e-9;
     /// fdlibm `__kernel_cos`, r¹⁴. Bits `0xBDA8FAE9BE8838D4`.
     const C6: f64 = -1.1359647557788195e-11;
-    /// `(sin x, cos x)`.
+    /// The sign bit of an f64.
+    const SIGN_BIT: u64 = 1 << 63;
+    /// `(sin x, cos x)`. One unsigned comparison of the bits of |x|, which order as
+    /// the magnitudes do, sends tiny, huge, infinite and NaN arguments elsewhere.
     #[inline]
     pub fn sin_cos(x: f64) -> (f64, f64) {
-        let magnitude = x.abs();
-        if magnitude.is_nan() || magnitude > LIMIT {
-            return x.sin_cos();
-        }
-        if magnitude < TINY {
-            return (x, 1.0);
+        let magnitude = x.to_bits() & !SIGN_BIT;
+        if magnitude.wrapping_sub(TINY.to_bits()) > LIMIT.to_bits() - TINY.to_bits() {
+            return outside_the_kernel(x);
         }
         let shifted = x * core::f64::consts::FRAC_2_PI + ROUNDER;
         let quadrant = shifted.to_bits();
@@ -232,25 +232,35 @@ mod sin_cos_kernel {
         let r = ((x - k * PIO2_1) - k * PIO2_2) - k * PIO2_2T;
         let (s, c) = (sin_reduced(r), cos_reduced(r));
         let (s, c) = if quadrant & 1 == 0 { (s, c) } else { (c, s) };
-        let sin_sign = (quadrant & 2) << 62;
-        let cos_sign = (quadrant.wrapping_add(1) & 2) << 62;
+        let sin_sign = (quadrant << 62) & SIGN_BIT;
+        let cos_sign = (quadrant.wrapping_add(1) << 62) & SIGN_BIT;
         (f64::from_bits(s.to_bits() ^ sin_sign), f64::from_bits(c.to_bits() ^ cos_sign))
     }
-    /// sin r for |r| ≤ π/4: `r + r³ (S1 + r² P(r²))`.
+    /// |x| below [`TINY`], where sin x rounds to x and cos x to 1; otherwise beyond
+    /// [`LIMIT`], infinite or NaN, for the platform.
+    #[cold]
+    #[inline(never)]
+    fn outside_the_kernel(x: f64) -> (f64, f64) {
+        if x.abs() < TINY { (x, 1.0) } else { x.sin_cos() }
+    }
+    /// sin r for |r| ≤ π/4: `r + r³ P(r²)`, P of degree 5 in pairs (Estrin's scheme),
+    /// so that the chain of dependent operations is four deep instead of seven.
     #[inline]
     fn sin_reduced(r: f64) -> f64 {
         let z = r * r;
-        let p = S2 + z * (S3 + z * (S4 + z * (S5 + z * S6)));
-        r + z * r * (S1 + z * p)
+        let w = z * z;
+        let p = (S1 + z * S2) + w * ((S3 + z * S4) + w * (S5 + z * S6));
+        r + z * r * p
     }
     /// cos r for |r| ≤ π/4: `1 − r²/2 + r⁴ Q(r²)`, with the rounding error of
-    /// `1 − r²/2` added back.
+    /// `1 − r²/2` added back; Q in pairs as in [`sin_reduced`].
     #[inline]
     fn cos_reduced(r: f64) -> f64 {
         let z = r * r;
-        let q = C1 + z * (C2 + z * (C3 + z * (C4 + z * (C5 + z * C6))));
+        let w = z * z;
+        let q = (C1 + z * C2) + w * ((C3 + z * C4) + w * (C5 + z * C6));
         let half_z = 0.5 * z;
         let head = 1.0 - half_z;
-        head + (((1.0 - head) - half_z) + z * z * q)
+        head + (((1.0 - head) - half_z) + w * q)
     }
 }
