@@ -4,10 +4,16 @@
 //! Every generated module carries the same emitted kernel (the golden files show the source);
 //! these tests exercise the pendulum's copy.
 
-use eom::models::generated::pendulum::sin_cos;
+use eom::models::generated::pendulum;
 use num_dual::Dual64;
 use simba::simd::{SimdComplexField, WideF64x4};
 use std::f64::consts::FRAC_PI_2;
+
+/// The kernel on one angle.
+fn sin_cos<T: simba::simd::SimdRealField + Copy>(x: T) -> (T, T) {
+    let [pair] = pendulum::sin_cos([x]);
+    pair
+}
 
 /// The largest argument the kernel reduces itself (its `LIMIT`); beyond it the platform's.
 const LIMIT: f64 = 823_549.0;
@@ -130,4 +136,28 @@ fn dual_numbers_and_lanes_use_their_own_functions() {
     assert_eq!(s.eps, 0.7f64.cos());
     let lanes = WideF64x4::from([0.1, -2.0, 40.0, 1e3]);
     assert_eq!(sin_cos(lanes), lanes.simd_sin_cos());
+}
+
+/// Several angles in one call give what each gives alone, also when some of them take the cold
+/// path (tiny, huge, NaN) and the others do not.
+#[test]
+fn angles_together_equal_angles_alone() {
+    let mixed = [0.3, -2.5, 1e7, f64::NAN, -1e-12, 700.0];
+    let together = pendulum::sin_cos(mixed);
+    for (x, pair) in mixed.into_iter().zip(together) {
+        let alone = sin_cos(x);
+        assert!(
+            pair.0.to_bits() == alone.0.to_bits() && pair.1.to_bits() == alone.1.to_bits(),
+            "x = {x:e}: {pair:?} together, {alone:?} alone"
+        );
+    }
+    let three: Vec<f64> = uniform(300, 0x51ED_2701)
+        .map(|u| (2.0 * u - 1.0) * 50.0)
+        .collect();
+    for angles in three.chunks_exact(3) {
+        let together = pendulum::sin_cos([angles[0], angles[1], angles[2]]);
+        for (x, pair) in angles.iter().zip(together) {
+            assert_eq!(pair, sin_cos(*x), "x = {x:e}");
+        }
+    }
 }

@@ -50,12 +50,17 @@ fn euler_variants_call_sin_cos_once_per_angle_and_never_tan() {
     for model in Model::all() {
         let generated = generate(model).unwrap();
         if generated.name.ends_with("_euler") {
+            // One kernel call for the three angles, each angle's pair bound once.
             assert_eq!(
-                generated.source.matches("= sin_cos(").count(),
-                3,
+                generated.source.matches("= sin_cos([").count(),
+                1,
                 "{}",
                 generated.name
             );
+            for angle in ["phi", "theta", "psi"] {
+                let pair = format!("(s_{angle}, c_{angle})");
+                assert_eq!(generated.source.matches(&pair).count(), 1, "{pair}");
+            }
             assert!(!generated.source.contains("tan("), "{}", generated.name);
             assert_eq!(generated.operations.trig, 3);
         }

@@ -78,7 +78,7 @@ pub fn generate(model: Model) -> Result<Generated, EmitError> {
 /// use eom_codegen::model::Model;
 /// let kernel = generate_with(Model::Pendulum, Trig::Kernel).unwrap();
 /// let std = generate_with(Model::Pendulum, Trig::Std).unwrap();
-/// assert!(kernel.source.contains("sin_cos(theta)"));
+/// assert!(kernel.source.contains("sin_cos([theta])"));
 /// assert!(std.source.contains("theta.simd_sin_cos()"));
 /// assert_eq!(kernel.operations, std.operations);
 /// ```

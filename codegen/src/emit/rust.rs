@@ -230,7 +230,7 @@ fn step_tokens(program: &Program, step: &Step, trig: Trig) -> TokenStream {
             let s = binding(program, &format!("s_{angle}"));
             let c = binding(program, &format!("c_{angle}"));
             match trig {
-                Trig::Kernel => quote! { let (#s, #c) = sin_cos(#a); },
+                Trig::Kernel => kernel_call(program, angle),
                 Trig::Std => quote! { let (#s, #c) = #a.simd_sin_cos(); },
             }
         }
@@ -248,6 +248,29 @@ fn step_tokens(program: &Program, step: &Step, trig: Trig) -> TokenStream {
             quote! { let #name = #sum; }
         }
     }
+}
+
+/// With the kernel, the first angle's step computes every angle's sine and cosine in one
+/// call (so the kernel can pair them in SIMD registers); the later angles' steps are empty.
+fn kernel_call(program: &Program, angle: &str) -> TokenStream {
+    let angles: Vec<&str> = program
+        .steps
+        .iter()
+        .filter_map(|step| match step {
+            Step::SinCos { angle } => Some(angle.as_str()),
+            _ => None,
+        })
+        .collect();
+    if angles.first() != Some(&angle) {
+        return TokenStream::new();
+    }
+    let pairs = angles.iter().map(|a| {
+        let s = binding(program, &format!("s_{a}"));
+        let c = binding(program, &format!("c_{a}"));
+        quote! { (#s, #c) }
+    });
+    let arguments = angles.iter().map(|a| ident(a));
+    quote! { let [#(#pairs),*] = sin_cos([#(#arguments),*]); }
 }
 
 fn term_tokens(term: &Term) -> TokenStream {

@@ -61,7 +61,7 @@ pub fn rhs<T: SimdRealField + Copy>(
     let r_u = r * u;
     let v_rate = k.k0 * f_y - r_u;
     let r_rate = k.k1 * m_z;
-    let (s_psi, c_psi) = sin_cos(psi);
+    let [(s_psi, c_psi)] = sin_cos([psi]);
     let u_c_psi = u * c_psi;
     let v_s_psi = v * s_psi;
     let x_rate = u_c_psi - v_s_psi;
@@ -70,32 +70,44 @@ pub fn rhs<T: SimdRealField + Copy>(
     let y_rate = u_s_psi + v_c_psi;
     [u_rate, v_rate, r_rate, x_rate, y_rate, r]
 }
-/// `(sin x, cos x)` as [`rhs`] computes them.
+/// `(sin a, cos a)` of every angle in `angles`, as [`rhs`] computes them.
 ///
 /// For `f64` and `f32` (widened to f64, rounded once at the end) this is the kernel in
-/// the private module `sin_cos_kernel`: one argument reduction shared by both, within
-/// 2 ulp of the platform's `sin` and `cos`. Every other scalar (SIMD lanes, dual
-/// numbers) uses its own `simd_sin_cos`.
+/// the private module `sin_cos_kernel`: one argument reduction shared by sine and
+/// cosine, within 2 ulp of the platform's `sin` and `cos`, the angles side by side so
+/// that the compiler can pair them in SIMD registers. Every other scalar (SIMD lanes,
+/// dual numbers) uses its own `simd_sin_cos`.
 #[inline]
-pub fn sin_cos<T: SimdRealField + Copy>(x: T) -> (T, T) {
-    let scalar: &dyn core::any::Any = &x;
-    let wide = if let Some(&x) = scalar.downcast_ref::<f64>() {
-        x
-    } else if let Some(&x) = scalar.downcast_ref::<f32>() {
-        f64::from(x)
+pub fn sin_cos<T: SimdRealField + Copy, const N: usize>(angles: [T; N]) -> [(T, T); N] {
+    let scalars: &dyn core::any::Any = &angles;
+    let mut wide = [0.0; N];
+    if let Some(angles) = scalars.downcast_ref::<[f64; N]>() {
+        wide = *angles;
+    } else if let Some(angles) = scalars.downcast_ref::<[f32; N]>() {
+        for (wide, &angle) in wide.iter_mut().zip(angles) {
+            *wide = f64::from(angle);
+        }
     } else {
-        return x.simd_sin_cos();
-    };
-    let (s, c) = sin_cos_kernel::sin_cos(wide);
-    (T::from_subset(&s), T::from_subset(&c))
+        let mut pairs = [(angles[0], angles[0]); N];
+        for (pair, angle) in pairs.iter_mut().zip(angles) {
+            *pair = angle.simd_sin_cos();
+        }
+        return pairs;
+    }
+    let mut pairs = [(angles[0], angles[0]); N];
+    for (pair, (s, c)) in pairs.iter_mut().zip(sin_cos_kernel::sin_cos(wide)) {
+        *pair = (T::from_subset(&s), T::from_subset(&c));
+    }
+    pairs
 }
-/// Sine and cosine of an `f64` from one argument reduction.
+/// Sine and cosine of `f64` angles from one argument reduction each.
 ///
 /// `k = round(2x/π)`; `r = x − k·π/2` in three steps, π/2 split Cody–Waite style so
 /// that the first two products are exact; the minimax polynomials of fdlibm's
 /// `__kernel_sin` and `__kernel_cos` on |r| ≤ π/4; the quadrant `k mod 4`, read from the
 /// low bits of the rounding sum (those of k, two's complement), orders the pair and
-/// flips sign bits. NaN, infinities and |x| > [`LIMIT`] go to the platform's `sin_cos`.
+/// flips sign bits. Tiny arguments, NaN, infinities and
+/// |x| > [`LIMIT`] take a cold path.
 mod sin_cos_kernel {
     /// 1.5·2⁵²: adding and subtracting it rounds an f64 below 2⁵¹ to an integer. Bits `0x4338000000000000`.
     const ROUNDER: f64 = 6755399441055744.0;
@@ -135,34 +147,77 @@ mod sin_cos_kernel {
     const C6: f64 = -1.1359647557788195e-11;
     /// The sign bit of an f64.
     const SIGN_BIT: u64 = 1 << 63;
-    /// `(sin x, cos x)`. One unsigned comparison of the bits of |x|, which order as
-    /// the magnitudes do, sends tiny, huge, infinite and NaN arguments elsewhere.
+    /// `(sin x, cos x)` of every `x`. One unsigned comparison of the bits of each |x|,
+    /// which order as the magnitudes do, tells whether all are in the kernel's range.
     #[inline]
-    pub fn sin_cos(x: f64) -> (f64, f64) {
-        let magnitude = x.to_bits() & !SIGN_BIT;
-        if magnitude.wrapping_sub(TINY.to_bits()) > LIMIT.to_bits() - TINY.to_bits() {
-            return outside_the_kernel(x);
+    pub fn sin_cos<const N: usize>(x: [f64; N]) -> [(f64, f64); N] {
+        let outside = x
+            .iter()
+            .fold(
+                false,
+                |outside, &x| {
+                    let magnitude = x.to_bits() & !SIGN_BIT;
+                    outside
+                        | (magnitude.wrapping_sub(TINY.to_bits())
+                            > LIMIT.to_bits() - TINY.to_bits())
+                },
+            );
+        let mut pairs = [(0.0, 0.0); N];
+        for (pair, &x) in pairs.iter_mut().zip(&x) {
+            *pair = if outside {
+                one_at_a_time(x)
+            } else if N == 1 {
+                in_range(x, Placement::Branch)
+            } else {
+                in_range(x, Placement::Masks)
+            };
         }
+        pairs
+    }
+    /// How [`in_range`] puts the pair in its quadrant. With several angles, by bit
+    /// masks, which the compiler can pair in SIMD registers; with one, by a branch, so
+    /// that a model that reads only the sine (the pendulum) evaluates the cosine's
+    /// polynomial only in the quadrants that need it.
+    #[derive(Clone, Copy, PartialEq)]
+    enum Placement {
+        Masks,
+        Branch,
+    }
+    /// One angle in the kernel's range: reduce, evaluate, place in its quadrant.
+    #[inline(always)]
+    fn in_range(x: f64, placement: Placement) -> (f64, f64) {
         let shifted = x * core::f64::consts::FRAC_2_PI + ROUNDER;
         let quadrant = shifted.to_bits();
         let k = shifted - ROUNDER;
         let r = ((x - k * PIO2_1) - k * PIO2_2) - k * PIO2_2T;
-        let (s, c) = (sin_reduced(r), cos_reduced(r));
-        let (s, c) = if quadrant & 1 == 0 { (s, c) } else { (c, s) };
+        let (s, c) = (sin_reduced(r).to_bits(), cos_reduced(r).to_bits());
+        let (s, c) = if placement == Placement::Branch {
+            if quadrant & 1 == 0 { (s, c) } else { (c, s) }
+        } else {
+            let swap = 0u64.wrapping_sub(quadrant & 1);
+            ((s & !swap) | (c & swap), (c & !swap) | (s & swap))
+        };
         let sin_sign = (quadrant << 62) & SIGN_BIT;
         let cos_sign = (quadrant.wrapping_add(1) << 62) & SIGN_BIT;
-        (f64::from_bits(s.to_bits() ^ sin_sign), f64::from_bits(c.to_bits() ^ cos_sign))
+        (f64::from_bits(s ^ sin_sign), f64::from_bits(c ^ cos_sign))
     }
-    /// |x| below [`TINY`], where sin x rounds to x and cos x to 1; otherwise beyond
-    /// [`LIMIT`], infinite or NaN, for the platform.
+    /// Any angle: tiny ones, where sin x rounds to x and cos x to 1; NaN, infinite and
+    /// beyond [`LIMIT`] ones, for the platform; the others through the kernel.
     #[cold]
     #[inline(never)]
-    fn outside_the_kernel(x: f64) -> (f64, f64) {
-        if x.abs() < TINY { (x, 1.0) } else { x.sin_cos() }
+    fn one_at_a_time(x: f64) -> (f64, f64) {
+        let magnitude = x.abs();
+        if magnitude < TINY {
+            (x, 1.0)
+        } else if magnitude <= LIMIT {
+            in_range(x, Placement::Branch)
+        } else {
+            x.sin_cos()
+        }
     }
     /// sin r for |r| ≤ π/4: `r + r³ P(r²)`, P of degree 5 in pairs (Estrin's scheme),
     /// so that the chain of dependent operations is four deep instead of seven.
-    #[inline]
+    #[inline(always)]
     fn sin_reduced(r: f64) -> f64 {
         let z = r * r;
         let w = z * z;
@@ -171,7 +226,7 @@ mod sin_cos_kernel {
     }
     /// cos r for |r| ≤ π/4: `1 − r²/2 + r⁴ Q(r²)`, with the rounding error of
     /// `1 − r²/2` added back; Q in pairs as in [`sin_reduced`].
-    #[inline]
+    #[inline(always)]
     fn cos_reduced(r: f64) -> f64 {
         let z = r * r;
         let w = z * z;
