@@ -90,7 +90,7 @@ pub fn rhs<T: SimdRealField + Copy>(
 /// cosine, within 2 ulp of the platform's `sin` and `cos`, the angles side by side so
 /// that the compiler can pair them in SIMD registers. Every other scalar (SIMD lanes,
 /// dual numbers) uses its own `simd_sin_cos`.
-#[inline]
+#[inline(always)]
 pub fn sin_cos<T: SimdRealField + Copy, const N: usize>(angles: [T; N]) -> [(T, T); N] {
     let scalars: &dyn core::any::Any = &angles;
     let mut wide = [0.0; N];
@@ -162,7 +162,7 @@ mod sin_cos_kernel {
     const SIGN_BIT: u64 = 1 << 63;
     /// `(sin x, cos x)` of every `x`. One unsigned comparison of the bits of each |x|,
     /// which order as the magnitudes do, tells whether all are in the kernel's range.
-    #[inline]
+    #[inline(always)]
     pub fn sin_cos<const N: usize>(x: [f64; N]) -> [(f64, f64); N] {
         let outside = x
             .iter()
