@@ -48,7 +48,9 @@ pub struct Term {
 /// One `let` of the generated function.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum Step {
-    /// `let (s_a, c_a) = a.simd_sin_cos();`
+    /// The sine and cosine of an angle: with the emitted kernel, one `sin_cos([…])` call for
+    /// all of a program's angles; with [`Trig::Std`](super::Trig::Std),
+    /// `let (s_a, c_a) = a.simd_sin_cos();`.
     SinCos {
         /// The angle's variable.
         angle: String,

@@ -6,9 +6,11 @@
 //! `rhs`, one kernel that does both from a single argument reduction: `k = round(2x/π)`, the
 //! remainder `r = x − k·π/2` in three steps (Cody–Waite: π/2 split into two 33-bit parts
 //! whose products with `k` are exact, and a tail), then the minimax polynomials of fdlibm's
-//! `__kernel_sin` and `__kernel_cos` on `|r| ≤ π/4` (evaluated in pairs, Estrin's scheme, for a
-//! short chain of dependent operations) (Sun Microsystems, 1993; the same
-//! coefficients as musl and openlibm), and the quadrant `k mod 4` picks signs and order.
+//! `__kernel_sin` and `__kernel_cos` on `|r| ≤ π/4` (Sun Microsystems, 1993; the same
+//! coefficients as musl and openlibm), evaluated in pairs (Estrin's scheme) for a short chain
+//! of dependent operations, and the quadrant `k mod 4` picks signs and order. A model's angles
+//! go through one call side by side, so the compiler can pair them in SIMD registers; a single
+//! angle within ±π/4 skips the reduction.
 //!
 //! The kernel runs on `f64` and `f32` scalars (f32 is widened and the result rounded once).
 //! Any other scalar — SIMD lanes, dual numbers — keeps its own `simd_sin_cos`: lanes have a
@@ -125,13 +127,13 @@ pub fn kernel_items() -> TokenStream {
                     *wide = f64::from(angle);
                 }
             } else {
-                let mut pairs = [(angles[0], angles[0]); N];
+                let mut pairs = [(T::zero(), T::zero()); N];
                 for (pair, angle) in pairs.iter_mut().zip(angles) {
                     *pair = angle.simd_sin_cos();
                 }
                 return pairs;
             }
-            let mut pairs = [(angles[0], angles[0]); N];
+            let mut pairs = [(T::zero(), T::zero()); N];
             for (pair, (s, c)) in pairs.iter_mut().zip(sin_cos_kernel::sin_cos(wide)) {
                 *pair = (T::from_subset(&s), T::from_subset(&c));
             }

@@ -212,13 +212,13 @@ pub fn sin_cos<T: SimdRealField + Copy, const N: usize>(angles: [T; N]) -> [(T, 
             *wide = f64::from(angle);
         }
     } else {
-        let mut pairs = [(angles[0], angles[0]); N];
+        let mut pairs = [(T::zero(), T::zero()); N];
         for (pair, angle) in pairs.iter_mut().zip(angles) {
             *pair = angle.simd_sin_cos();
         }
         return pairs;
     }
-    let mut pairs = [(angles[0], angles[0]); N];
+    let mut pairs = [(T::zero(), T::zero()); N];
     for (pair, (s, c)) in pairs.iter_mut().zip(sin_cos_kernel::sin_cos(wide)) {
         *pair = (T::from_subset(&s), T::from_subset(&c));
     }
