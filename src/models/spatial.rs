@@ -138,7 +138,7 @@ macro_rules! spatial_model {
                 generated::$module::rhs(&self.coefficients, state, &input)
             }
 
-            /// Kinetic energy ½Mv·v + ½ωᵀ[I]ω (4.32).
+            /// Kinetic energy ½Mv·v + ½ωᵀ\[I\]ω (4.32).
             pub fn kinetic_energy(&self, state: &[T; $n]) -> T {
                 self.body.kinetic_energy(state)
             }

@@ -1,7 +1,7 @@
 //! Section 4.6: spatial (6-DOF) motion, 4.47–4.52.
 //!
 //! Translation is M([dv/dt] + ω × v) = F (4.48); rotation is [dH/dt] + ω × H = M (4.50)
-//! with H = [I]ω and the full symmetric tensor, so every product-of-inertia term of 4.51 is
+//! with H = \[I\]ω and the full symmetric tensor, so every product-of-inertia term of 4.51 is
 //! computed, not copied. The symmetric cases follow by setting products to zero.
 
 use super::{AXES, omega, rates_of};
@@ -16,7 +16,7 @@ pub fn inertia_tensor() -> Mat3 {
     Mat3::symmetric([["Ixx", "Ixy", "Ixz"], ["", "Iyy", "Iyz"], ["", "", "Izz"]])
 }
 
-/// [I][dω/dt] + ω × ([I]ω): the left side of 4.50 in body axes.
+/// \[I\]\[dω/dt\] + ω × (\[I\]ω): the left side of 4.50 in body axes.
 pub fn euler_equations() -> Result<Vec3, SymbolicError> {
     let tensor = inertia_tensor();
     let h = tensor.mul_vec(&omega());

@@ -38,9 +38,9 @@ pub enum Kinematics {
 pub enum Strategy {
     /// Every acceleration expanded into monomials of the rates, coefficients hoisted.
     Expanded,
-    /// The bias terms (ω×[I]ω − M) staged, then multiplied by the inverse inertia.
+    /// The bias terms (ω×\[I\]ω − M) staged, then multiplied by the inverse inertia.
     StagedBias,
-    /// H = [I]ω staged, then ω×H − M, then the inverse inertia.
+    /// H = \[I\]ω staged, then ω×H − M, then the inverse inertia.
     StagedMomentum,
 }
 
