@@ -16,12 +16,11 @@
 //! The time of a run includes the
 //! model's full 6-DOF evaluation (translation included, as a user of the model pays it) and
 //! the adapter's copies, which are the same for the generated and the generic forms. "Full"
-//! is enforced, not assumed: the optimiser inlines some forms into the integrator (the
-//! generic one, built of small functions) and calls others out of line (the generated full
-//! tensor, one function above its inlining threshold), and an inlined form whose translation
-//! outputs are discarded would have them removed as dead code, its position rate (a square
-//! root and a division) included. So the zero inputs are hidden from the optimiser and every
-//! output is kept (see [`at_rest`]).
+//! is enforced, not assumed: the optimiser inlines the forms into the integrator (the generic
+//! one is built of small functions, the generated `rhs` is marked always-inline), and an
+//! inlined form whose translation outputs are discarded would have them removed as dead code,
+//! the generic position rate (a square root and a division) included. So the zero inputs are
+//! hidden from the optimiser and every output is kept (see [`at_rest`]).
 //!
 //! Full against pruned. The fair comparison is the same physical body: the racket in its
 //! principal axes with the pruned model (`SpatialPrincipalQuaternion`, products known to be
