@@ -171,13 +171,13 @@ fn generated_std_trig(model: &str, calls: usize) -> Option<f64> {
     let tensor = class_tensor(model);
     Some(match model {
         "pendulum" => {
-            let module = &std_trig::pendulum::Parameters {
+            let parameters = std_trig::pendulum::Parameters {
                 i0: 2.0,
                 mass: 1.0,
                 g: 9.81,
                 h: 0.5,
             };
-            let k = std_trig::pendulum::Coefficients::<f64>::new(module);
+            let k = std_trig::pendulum::Coefficients::<f64>::new(&parameters);
             run(&states(pendulum_state), calls, |x| {
                 std_trig::pendulum::rhs(&k, x, &[0.0])
             })

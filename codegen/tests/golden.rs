@@ -46,6 +46,14 @@ fn generating_twice_gives_the_same_bytes() {
 }
 
 #[test]
+fn models_with_angles_are_exactly_those_with_trigonometry() {
+    for model in Model::all() {
+        let trig = generate(model).unwrap().operations.trig;
+        assert_eq!(model.has_angles(), trig > 0, "{}", model.name());
+    }
+}
+
+#[test]
 fn euler_variants_call_sin_cos_once_per_angle_and_never_tan() {
     for model in Model::all() {
         let generated = generate(model).unwrap();

@@ -118,6 +118,19 @@ impl Model {
         }
     }
 
+    /// Whether the model's state holds angles, so that its right-hand side takes their sine
+    /// and cosine: the pendulum, the body-fixed planar models and the Euler-angle variants.
+    pub fn has_angles(&self) -> bool {
+        !matches!(
+            self,
+            Model::PlanarSpaceFixed
+                | Model::Spatial {
+                    kinematics: Kinematics::Quaternion,
+                    ..
+                }
+        )
+    }
+
     /// The strategies worth trying for this model.
     pub fn strategies(&self) -> &'static [Strategy] {
         match self {
