@@ -16,9 +16,12 @@
 
 use eom::InertiaTensor;
 use eom::generic::{PlanarBody, PlanarMidship, RigidBody};
-use eom::models::{self, generated::std_trig};
-use nalgebra::{Matrix3, Rotation3, SVector, Vector2, Vector3};
+use eom::models::{self, FromBody, generated::std_trig};
+use nalgebra::{SVector, Vector2, Vector3};
 use std::hint::black_box;
+
+#[path = "../benches/models/bodies.rs"]
+mod bodies;
 
 /// Distinct states, built before the calls so that their cost does not depend on the count.
 const STATES: usize = 64;
@@ -61,23 +64,12 @@ fn run<S, R: Total>(states: &[S], calls: usize, f: impl Fn(&S) -> R) -> f64 {
     sum
 }
 
-/// Principal moments 2, 3, 4 turned by `roll, pitch, yaw`: products where the rotation puts them.
-fn tensor(roll: f64, pitch: f64, yaw: f64) -> InertiaTensor {
-    let r = Rotation3::from_euler_angles(roll, pitch, yaw).into_inner();
-    let mut m = r * Matrix3::from_diagonal(&Vector3::new(2.0, 3.0, 4.0)) * r.transpose();
-    m = (m + m.transpose()) * 0.5;
-    if roll == 0.0 && yaw == 0.0 {
-        (m[(0, 1)], m[(1, 0)], m[(1, 2)], m[(2, 1)]) = (0.0, 0.0, 0.0, 0.0);
-    }
-    InertiaTensor::from_matrix(m).expect("a physical tensor")
-}
-
 /// The tensor of a symmetry class: `full`, `xz` or `principal`.
 fn class_tensor(model: &str) -> InertiaTensor {
     match model.split('_').next() {
-        Some("full") => tensor(0.3, -0.2, 0.5),
-        Some("xz") => tensor(0.0, 0.4, 0.0),
-        _ => tensor(0.0, 0.0, 0.0),
+        Some("full") => bodies::full_tensor(),
+        Some("xz") => bodies::xz_tensor(),
+        _ => bodies::principal_tensor(),
     }
 }
 
@@ -117,15 +109,9 @@ macro_rules! spatial_generated {
 }
 
 macro_rules! spatial_std_trig {
-    ($module:ident, $tensor:expr, $calls:expr, { $($field:ident: $value:ident),* }) => {{
-        let tensor = $tensor;
-        let k = std_trig::$module::Coefficients::<f64>::new(&std_trig::$module::Parameters {
-            mass: 5.0,
-            ixx: tensor.ixx(),
-            iyy: tensor.iyy(),
-            izz: tensor.izz(),
-            $($field: tensor.$value(),)*
-        });
+    ($module:ident, $tensor:expr, $calls:expr) => {{
+        let parameters = std_trig::$module::Parameters::from_body(5.0, &$tensor);
+        let k = std_trig::$module::Coefficients::<f64>::new(&parameters);
         run(&states(spatial_state::<12>), $calls, |x| {
             std_trig::$module::rhs(&k, x, &INPUT)
         })
@@ -203,11 +189,9 @@ fn generated_std_trig(model: &str, calls: usize) -> Option<f64> {
                 std_trig::planar_midship::rhs(&k, x, &LOAD)
             })
         }
-        "full_euler" => {
-            spatial_std_trig!(spatial_full_euler, tensor, calls, { ixy: ixy, iyz: iyz, ixz: izx })
-        }
-        "xz_euler" => spatial_std_trig!(spatial_xz_euler, tensor, calls, { ixz: izx }),
-        "principal_euler" => spatial_std_trig!(spatial_principal_euler, tensor, calls, {}),
+        "full_euler" => spatial_std_trig!(spatial_full_euler, tensor, calls),
+        "xz_euler" => spatial_std_trig!(spatial_xz_euler, tensor, calls),
+        "principal_euler" => spatial_std_trig!(spatial_principal_euler, tensor, calls),
         _ => return None,
     })
 }

@@ -8,37 +8,18 @@
 //! in CPU cycles (`spatial_rhs_cycles`, `planar_rhs_cycles`), which a shared machine disturbs
 //! far less.
 
+mod bodies;
 #[cfg(target_os = "linux")]
 mod cycles;
 
+use bodies::{full_tensor, principal_tensor, xz_tensor};
 use criterion::measurement::Measurement;
 use criterion::{BenchmarkId, Criterion, Throughput};
-use eom::InertiaTensor;
 use eom::generic::{PlanarBody, PlanarMidship, RigidBody};
-use eom::models::{self, generated};
+use eom::models::{self, FromBody, generated};
 use nalgebra::{SVector, Vector2, Vector3};
 use simba::simd::WideF64x4;
 use std::hint::black_box;
-
-/// A tensor with every product non-zero, physical (principal moments 2, 3, 4 rotated).
-fn full_tensor() -> InertiaTensor {
-    let r = nalgebra::Rotation3::from_euler_angles(0.3, -0.2, 0.5).into_inner();
-    let m = r * nalgebra::Matrix3::from_diagonal(&Vector3::new(2.0, 3.0, 4.0)) * r.transpose();
-    InertiaTensor::from_matrix(m).expect("a physical tensor")
-}
-
-/// Principal moments 2, 3, 4 rotated about y only: I_xy = I_yz = 0.
-fn xz_tensor() -> InertiaTensor {
-    let r = nalgebra::Rotation3::from_euler_angles(0.0, 0.4, 0.0).into_inner();
-    let m = r * nalgebra::Matrix3::from_diagonal(&Vector3::new(2.0, 3.0, 4.0)) * r.transpose();
-    let mut m = m;
-    (m[(0, 1)], m[(1, 0)], m[(1, 2)], m[(2, 1)]) = (0.0, 0.0, 0.0, 0.0);
-    InertiaTensor::from_matrix(m).expect("a physical tensor")
-}
-
-fn principal_tensor() -> InertiaTensor {
-    InertiaTensor::new(2.0, 3.0, 4.0, 0.0, 0.0, 0.0).expect("a physical tensor")
-}
 
 const EULER_STATE: [f64; 12] = [1.0, 0.2, -0.1, 0.3, -0.2, 0.5, 0.0, 0.0, 0.0, 0.1, 0.2, 0.3];
 const FORCE: [f64; 3] = [10.0, -2.0, 1.0];
@@ -84,18 +65,10 @@ macro_rules! bench_spatial {
 /// The same model emitted with the platform's sin and cos (`generated::std_trig`), called with
 /// the same coefficients and input as the typed model.
 macro_rules! bench_std_trig {
-    ($group:expr, $name:literal, $module:ident, $tensor:expr, $state:expr, { $($field:ident: $value:ident),* }) => {{
+    ($group:expr, $name:literal, $module:ident, $tensor:expr, $state:expr) => {{
         use generated::std_trig::$module as emitted;
-        let tensor = $tensor;
         let state = $state;
-        let parameters = emitted::Parameters {
-            mass: 5.0,
-            ixx: tensor.ixx(),
-            iyy: tensor.iyy(),
-            izz: tensor.izz(),
-            $($field: tensor.$value(),)*
-        };
-        let k = emitted::Coefficients::<f64>::new(&parameters);
+        let k = emitted::Coefficients::<f64>::new(&emitted::Parameters::from_body(5.0, &$tensor));
         let input: [f64; 6] = [FORCE, MOMENT].concat().try_into().unwrap();
         $group.bench_function(BenchmarkId::new("generated_std_trig_f64", $name), |b| {
             b.iter(|| emitted::rhs(&k, black_box(&state), black_box(&input)))
@@ -113,7 +86,13 @@ fn spatial<M: Measurement>(c: &mut Criterion<M>, suffix: &str) {
         EULER_STATE,
         rhs_euler
     );
-    bench_std_trig!(group, "full_euler", spatial_full_euler, full_tensor(), EULER_STATE, { ixy: ixy, iyz: iyz, ixz: izx });
+    bench_std_trig!(
+        group,
+        "full_euler",
+        spatial_full_euler,
+        full_tensor(),
+        EULER_STATE
+    );
     bench_spatial!(
         group,
         "xz_euler",
@@ -122,7 +101,13 @@ fn spatial<M: Measurement>(c: &mut Criterion<M>, suffix: &str) {
         EULER_STATE,
         rhs_euler
     );
-    bench_std_trig!(group, "xz_euler", spatial_xz_euler, xz_tensor(), EULER_STATE, { ixz: izx });
+    bench_std_trig!(
+        group,
+        "xz_euler",
+        spatial_xz_euler,
+        xz_tensor(),
+        EULER_STATE
+    );
     bench_spatial!(
         group,
         "principal_euler",
@@ -136,8 +121,7 @@ fn spatial<M: Measurement>(c: &mut Criterion<M>, suffix: &str) {
         "principal_euler",
         spatial_principal_euler,
         principal_tensor(),
-        EULER_STATE,
-        {}
+        EULER_STATE
     );
     bench_spatial!(
         group,

@@ -26,8 +26,8 @@ mod spatial;
 pub use pendulum::Pendulum;
 pub use planar::{PlanarAtG, PlanarMidship, PlanarSpaceFixed};
 pub use spatial::{
-    SpatialFullEuler, SpatialFullQuaternion, SpatialPrincipalEuler, SpatialPrincipalQuaternion,
-    SpatialXzEuler, SpatialXzQuaternion, Symmetry,
+    FromBody, SpatialFullEuler, SpatialFullQuaternion, SpatialPrincipalEuler,
+    SpatialPrincipalQuaternion, SpatialXzEuler, SpatialXzQuaternion, Symmetry,
 };
 
 /// Converts a validated f64 parameter to the scalar type.

@@ -102,8 +102,49 @@ impl<T: SimdRealField + Copy> Body<T> {
     }
 }
 
+/// An emitted spatial `Parameters` struct, filled from a mass and an inertia tensor.
+///
+/// Each symmetry class emits only the products it keeps, named as the chapter names them
+/// (`ixy`, `iyz`, `ixz`, with the sign of 4.14). This is the one place that maps a tensor's
+/// entries onto those fields; it is implemented for every emitted spatial module, the
+/// platform-trig copies in [`generated::std_trig`] included, so that code calling an emitted
+/// module directly builds its parameters as the typed models do. It does not validate: build
+/// the typed model (e.g. [`SpatialFullEuler::new`]) for that.
+pub trait FromBody {
+    /// The parameters of a body of `mass` and `inertia` (about G, body axes).
+    fn from_body(mass: f64, inertia: &InertiaTensor) -> Self;
+}
+
+macro_rules! from_body {
+    ($($($module:ident)::+ { $($field:ident: $value:ident),* };)*) => {$(
+        impl FromBody for $($module)::+::Parameters {
+            fn from_body(mass: f64, inertia: &InertiaTensor) -> Self {
+                Self {
+                    mass,
+                    ixx: inertia.ixx(),
+                    iyy: inertia.iyy(),
+                    izz: inertia.izz(),
+                    $($field: inertia.$value(),)*
+                }
+            }
+        }
+    )*};
+}
+
+from_body! {
+    generated::spatial_full_euler { ixy: ixy, iyz: iyz, ixz: izx };
+    generated::spatial_full_quaternion { ixy: ixy, iyz: iyz, ixz: izx };
+    generated::spatial_xz_euler { ixz: izx };
+    generated::spatial_xz_quaternion { ixz: izx };
+    generated::spatial_principal_euler {};
+    generated::spatial_principal_quaternion {};
+    generated::std_trig::spatial_full_euler { ixy: ixy, iyz: iyz, ixz: izx };
+    generated::std_trig::spatial_xz_euler { ixz: izx };
+    generated::std_trig::spatial_principal_euler {};
+}
+
 macro_rules! spatial_model {
-    ($name:ident, $module:ident, $symmetry:expr, $n:literal, $kinematics:literal, { $($field:ident: $value:ident),* }) => {
+    ($name:ident, $module:ident, $symmetry:expr, $n:literal, $kinematics:literal) => {
         #[doc = concat!("Spatial 6-DOF motion, ", stringify!($symmetry), " inertia, ", $kinematics, ".")]
         ///
         /// Validates the mass and the symmetry class of the tensor, computes the generated
@@ -120,13 +161,7 @@ macro_rules! spatial_model {
                 let mass = check_mass(mass)?;
                 check_symmetry(inertia, $symmetry)?;
                 check_invertible(inertia)?;
-                let parameters = generated::$module::Parameters {
-                    mass,
-                    ixx: inertia.ixx(),
-                    iyy: inertia.iyy(),
-                    izz: inertia.izz(),
-                    $($field: inertia.$value(),)*
-                };
+                let parameters = generated::$module::Parameters::from_body(mass, inertia);
                 let coefficients = generated::$module::Coefficients::new(&parameters);
                 Ok(Self { coefficients, body: Body::new(mass, inertia) })
             }
@@ -146,23 +181,45 @@ macro_rules! spatial_model {
     };
 }
 
-spatial_model!(SpatialFullEuler, spatial_full_euler, Symmetry::Full, 12, "Euler angles", { ixy: ixy, iyz: iyz, ixz: izx });
-spatial_model!(SpatialFullQuaternion, spatial_full_quaternion, Symmetry::Full, 13, "unit quaternion", { ixy: ixy, iyz: iyz, ixz: izx });
-spatial_model!(SpatialXzEuler, spatial_xz_euler, Symmetry::Xz, 12, "Euler angles", { ixz: izx });
-spatial_model!(SpatialXzQuaternion, spatial_xz_quaternion, Symmetry::Xz, 13, "unit quaternion", { ixz: izx });
+spatial_model!(
+    SpatialFullEuler,
+    spatial_full_euler,
+    Symmetry::Full,
+    12,
+    "Euler angles"
+);
+spatial_model!(
+    SpatialFullQuaternion,
+    spatial_full_quaternion,
+    Symmetry::Full,
+    13,
+    "unit quaternion"
+);
+spatial_model!(
+    SpatialXzEuler,
+    spatial_xz_euler,
+    Symmetry::Xz,
+    12,
+    "Euler angles"
+);
+spatial_model!(
+    SpatialXzQuaternion,
+    spatial_xz_quaternion,
+    Symmetry::Xz,
+    13,
+    "unit quaternion"
+);
 spatial_model!(
     SpatialPrincipalEuler,
     spatial_principal_euler,
     Symmetry::Principal,
     12,
-    "Euler angles",
-    {}
+    "Euler angles"
 );
 spatial_model!(
     SpatialPrincipalQuaternion,
     spatial_principal_quaternion,
     Symmetry::Principal,
     13,
-    "unit quaternion",
-    {}
+    "unit quaternion"
 );
