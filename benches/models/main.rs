@@ -1,7 +1,9 @@
 //! Generated against generic, in one run: ns per right-hand-side call for every variant,
 //! f32 against f64, the trigonometric models also as emitted with the platform's sin and cos
 //! (`generated_std_trig_f64`, to show the emitted `sin_cos` kernel's share), and a batch of
-//! 4096 bodies stepped with f64 scalars against `WideF64x4` lanes.
+//! 4096 bodies stepped with f64 scalars against `WideF64x4` lanes. The Euler variants run at
+//! two attitudes: roll, pitch and heading within ±π/4, and all three beyond it
+//! (`*_large_angles`), since the emitted `sin_cos` skips the argument reduction for the first.
 //!
 //! `cargo bench --bench models`; ratios are read from `target/criterion/*/*/new/estimates.json`
 //! (see the README for the table of one run). The per-call groups run twice: in wall time, and
@@ -22,6 +24,11 @@ use simba::simd::WideF64x4;
 use std::hint::black_box;
 
 const EULER_STATE: [f64; 12] = [1.0, 0.2, -0.1, 0.3, -0.2, 0.5, 0.0, 0.0, 0.0, 0.1, 0.2, 0.3];
+/// The same motion with roll, pitch and heading all beyond ±π/4, where the emitted `sin_cos`
+/// reduces every angle instead of evaluating it as it is.
+const LARGE_ANGLES_STATE: [f64; 12] = [
+    1.0, 0.2, -0.1, 0.3, -0.2, 0.5, 0.0, 0.0, 0.0, 1.0, -0.9, 2.5,
+];
 const FORCE: [f64; 3] = [10.0, -2.0, 1.0];
 const MOMENT: [f64; 3] = [0.5, 0.2, -0.3];
 
@@ -33,7 +40,8 @@ fn quaternion_state() -> [f64; 13] {
     x
 }
 
-macro_rules! bench_spatial {
+/// Generated against generic, f64, one model at one state.
+macro_rules! bench_against_generic {
     ($group:expr, $name:literal, $model:ty, $tensor:expr, $state:expr, $generic:ident) => {{
         let tensor = $tensor;
         let state = $state;
@@ -41,8 +49,21 @@ macro_rules! bench_spatial {
         $group.bench_function(BenchmarkId::new("generated_f64", $name), |b| {
             b.iter(|| model.rhs(black_box(&state), black_box(&FORCE), black_box(&MOMENT)))
         });
-        let model32 = <$model>::new(5.0, &tensor).unwrap();
-        let state32 = state.map(|x| x as f32);
+        let body = RigidBody::<f64>::new(5.0, &tensor).unwrap();
+        let x = SVector::from(state);
+        let (f, m) = (Vector3::from(FORCE), Vector3::from(MOMENT));
+        $group.bench_function(BenchmarkId::new("generic_f64", $name), |b| {
+            b.iter(|| body.$generic(black_box(&x), black_box(&f), black_box(&m)))
+        });
+    }};
+}
+
+/// Generated against generic, and the generated model in f32.
+macro_rules! bench_spatial {
+    ($group:expr, $name:literal, $model:ty, $tensor:expr, $state:expr, $generic:ident) => {{
+        bench_against_generic!($group, $name, $model, $tensor, $state, $generic);
+        let model32 = <$model>::new(5.0, &$tensor).unwrap();
+        let state32 = $state.map(|x| x as f32);
         let (force32, moment32) = (FORCE.map(|x| x as f32), MOMENT.map(|x| x as f32));
         $group.bench_function(BenchmarkId::new("generated_f32", $name), |b| {
             b.iter(|| {
@@ -52,12 +73,6 @@ macro_rules! bench_spatial {
                     black_box(&moment32),
                 )
             })
-        });
-        let body = RigidBody::<f64>::new(5.0, &tensor).unwrap();
-        let x = SVector::from(state);
-        let (f, m) = (Vector3::from(FORCE), Vector3::from(MOMENT));
-        $group.bench_function(BenchmarkId::new("generic_f64", $name), |b| {
-            b.iter(|| body.$generic(black_box(&x), black_box(&f), black_box(&m)))
         });
     }};
 }
@@ -122,6 +137,30 @@ fn spatial<M: Measurement>(c: &mut Criterion<M>, suffix: &str) {
         spatial_principal_euler,
         principal_tensor(),
         EULER_STATE
+    );
+    bench_against_generic!(
+        group,
+        "full_euler_large_angles",
+        models::SpatialFullEuler<_>,
+        full_tensor(),
+        LARGE_ANGLES_STATE,
+        rhs_euler
+    );
+    bench_against_generic!(
+        group,
+        "xz_euler_large_angles",
+        models::SpatialXzEuler<_>,
+        xz_tensor(),
+        LARGE_ANGLES_STATE,
+        rhs_euler
+    );
+    bench_against_generic!(
+        group,
+        "principal_euler_large_angles",
+        models::SpatialPrincipalEuler<_>,
+        principal_tensor(),
+        LARGE_ANGLES_STATE,
+        rhs_euler
     );
     bench_spatial!(
         group,

@@ -9,8 +9,12 @@
 //! `__kernel_sin` and `__kernel_cos` on `|r| ≤ π/4` (Sun Microsystems, 1993; the same
 //! coefficients as musl and openlibm), evaluated in pairs (Estrin's scheme) for a short chain
 //! of dependent operations, and the quadrant `k mod 4` picks signs and order. A model's angles
-//! go through one call side by side, so the compiler can pair them in SIMD registers; a single
-//! angle within ±π/4 skips the reduction.
+//! go through one call side by side, so the compiler can pair them in SIMD registers. An angle
+//! within ±π/4 skips the reduction, as the platform's `sin` and `cos` do below about 0.86: the
+//! roll and pitch of a ship or an aircraft in ordinary motion stay there, and the reduction is
+//! a third of the chain of dependent operations that an integrator's stages wait on. The test
+//! is a branch per angle, which only varying angles that cross ±π/4 from call to call would
+//! mispredict.
 //!
 //! The kernel runs on `f64` and `f32` scalars (f32 is widened and the result rounded once).
 //! Any other scalar — SIMD lanes, dual numbers — keeps its own `simd_sin_cos`: lanes have a
@@ -175,21 +179,21 @@ pub fn kernel_items() -> TokenStream {
                 pairs
             }
 
-            /// How [`in_range`] puts the pair in its quadrant. With several angles, by bit
-            /// masks, which the compiler can pair in SIMD registers; with one, by branches: an
-            /// angle within ±π/4 skips the reduction (a shorter chain of dependent operations,
-            /// which an integrator's stages wait on), and a model that reads only the sine (the
-            /// pendulum) evaluates the cosine's polynomial only in the quadrants that need it.
+            /// How [`in_range`] puts a reduced pair in its quadrant. With several angles, by bit
+            /// masks, which the compiler can pair in SIMD registers; with one, by branches, so
+            /// that a model that reads only the sine (the pendulum) evaluates the cosine's
+            /// polynomial only in the quadrants that need it.
             #[derive(Clone, Copy, PartialEq)]
             enum Placement {
                 Masks,
                 Branch,
             }
 
-            /// One angle in the kernel's range: reduce, evaluate, place in its quadrant.
+            /// One angle in the kernel's range: within ±π/4 evaluate it as it is; beyond, reduce,
+            /// evaluate, place in its quadrant.
             #[inline(always)]
             fn in_range(x: f64, placement: Placement) -> (f64, f64) {
-                if placement == Placement::Branch && x.abs() <= core::f64::consts::FRAC_PI_4 {
+                if x.abs() <= core::f64::consts::FRAC_PI_4 {
                     return (sin_reduced(x), cos_reduced(x));
                 }
                 let shifted = x * core::f64::consts::FRAC_2_PI + ROUNDER;

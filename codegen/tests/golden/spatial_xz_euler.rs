@@ -286,20 +286,20 @@ mod sin_cos_kernel {
         }
         pairs
     }
-    /// How [`in_range`] puts the pair in its quadrant. With several angles, by bit
-    /// masks, which the compiler can pair in SIMD registers; with one, by branches: an
-    /// angle within ±π/4 skips the reduction (a shorter chain of dependent operations,
-    /// which an integrator's stages wait on), and a model that reads only the sine (the
-    /// pendulum) evaluates the cosine's polynomial only in the quadrants that need it.
+    /// How [`in_range`] puts a reduced pair in its quadrant. With several angles, by bit
+    /// masks, which the compiler can pair in SIMD registers; with one, by branches, so
+    /// that a model that reads only the sine (the pendulum) evaluates the cosine's
+    /// polynomial only in the quadrants that need it.
     #[derive(Clone, Copy, PartialEq)]
     enum Placement {
         Masks,
         Branch,
     }
-    /// One angle in the kernel's range: reduce, evaluate, place in its quadrant.
+    /// One angle in the kernel's range: within ±π/4 evaluate it as it is; beyond, reduce,
+    /// evaluate, place in its quadrant.
     #[inline(always)]
     fn in_range(x: f64, placement: Placement) -> (f64, f64) {
-        if placement == Placement::Branch && x.abs() <= core::f64::consts::FRAC_PI_4 {
+        if x.abs() <= core::f64::consts::FRAC_PI_4 {
             return (sin_reduced(x), cos_reduced(x));
         }
         let shifted = x * core::f64::consts::FRAC_2_PI + ROUNDER;
