@@ -71,16 +71,20 @@ pub struct Jacobi {
 /// ```
 pub fn jacobi(u: f64, m: f64) -> Result<Jacobi, EllipticError> {
     check_parameter(m)?;
-    let mut a = vec![1.0_f64];
-    let mut c = vec![m.sqrt()];
+    // The AGM sequences a_i, c_i, kept on the stack: a reference solution is evaluated at
+    // every output time of a long run, so it should not allocate.
+    let mut a = [0.0_f64; MAX_AGM_STEPS];
+    let mut c = [0.0_f64; MAX_AGM_STEPS];
+    (a[0], c[0]) = (1.0, m.sqrt());
     let mut b = (1.0 - m).sqrt();
-    while c.len() < MAX_AGM_STEPS && c[c.len() - 1].abs() > f64::EPSILON * a[a.len() - 1] {
-        let (an, bn) = (a[a.len() - 1], b);
-        a.push(0.5 * (an + bn));
-        c.push(0.5 * (an - bn));
+    let mut n = 0;
+    while n + 1 < MAX_AGM_STEPS && c[n].abs() > f64::EPSILON * a[n] {
+        let (an, bn) = (a[n], b);
+        n += 1;
+        a[n] = 0.5 * (an + bn);
+        c[n] = 0.5 * (an - bn);
         b = (an * bn).sqrt();
     }
-    let n = a.len() - 1;
     let mut phi = 2f64.powi(n as i32) * a[n] * u;
     for i in (1..=n).rev() {
         phi = 0.5 * (phi + (c[i] / a[i] * phi.sin()).asin());
