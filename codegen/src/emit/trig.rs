@@ -10,7 +10,7 @@
 //! coefficients as musl and openlibm), evaluated in pairs (Estrin's scheme) for a short chain
 //! of dependent operations, and the quadrant `k mod 4` picks signs and order. A model's angles
 //! go through one call side by side, so the compiler can pair them in SIMD registers. An angle
-//! within ±π/4 skips the reduction, as the platform's `sin` and `cos` do below about 0.86: the
+//! within ±π/4 skips the reduction, as fdlibm's own `sin` and `cos` do: the
 //! roll and pitch of a ship or an aircraft in ordinary motion stay there, and the reduction is
 //! a third of the chain of dependent operations that an integrator's stages wait on. The test
 //! is a branch per angle, which only varying angles that cross ±π/4 from call to call would
