@@ -157,33 +157,21 @@ fn generated_std_trig(model: &str, calls: usize) -> Option<f64> {
     let tensor = class_tensor(model);
     Some(match model {
         "pendulum" => {
-            let parameters = std_trig::pendulum::Parameters {
-                i0: 2.0,
-                mass: 1.0,
-                g: 9.81,
-                h: 0.5,
-            };
+            let parameters = bodies::pendulum();
             let k = std_trig::pendulum::Coefficients::<f64>::new(&parameters);
             run(&states(pendulum_state), calls, |x| {
                 std_trig::pendulum::rhs(&k, x, &[0.0])
             })
         }
         "planar_at_g" => {
-            let parameters = std_trig::planar_at_g::Parameters {
-                mass: 5.0,
-                izz: 4.0,
-            };
+            let parameters = bodies::planar_at_g();
             let k = std_trig::planar_at_g::Coefficients::<f64>::new(&parameters);
             run(&states(planar_state), calls, |x| {
                 std_trig::planar_at_g::rhs(&k, x, &LOAD)
             })
         }
         "planar_midship" => {
-            let parameters = std_trig::planar_midship::Parameters {
-                mass: 5.0,
-                izz: 4.0,
-                x_g: 0.3,
-            };
+            let parameters = bodies::planar_midship();
             let k = std_trig::planar_midship::Coefficients::<f64>::new(&parameters);
             run(&states(planar_state), calls, |x| {
                 std_trig::planar_midship::rhs(&k, x, &LOAD)

@@ -61,9 +61,10 @@ macro_rules! bench_against_generic {
 /// Generated against generic, and the generated model in f32.
 macro_rules! bench_spatial {
     ($group:expr, $name:literal, $model:ty, $tensor:expr, $state:expr, $generic:ident) => {{
-        bench_against_generic!($group, $name, $model, $tensor, $state, $generic);
-        let model32 = <$model>::new(5.0, &$tensor).unwrap();
-        let state32 = $state.map(|x| x as f32);
+        let (tensor, state) = ($tensor, $state);
+        bench_against_generic!($group, $name, $model, tensor, state, $generic);
+        let model32 = <$model>::new(5.0, &tensor).unwrap();
+        let state32 = state.map(|x| x as f32);
         let (force32, moment32) = (FORCE.map(|x| x as f32), MOMENT.map(|x| x as f32));
         $group.bench_function(BenchmarkId::new("generated_f32", $name), |b| {
             b.iter(|| {
@@ -204,10 +205,7 @@ fn planar<M: Measurement>(c: &mut Criterion<M>, suffix: &str) {
     });
     {
         use generated::std_trig::planar_at_g as emitted;
-        let k = emitted::Coefficients::<f64>::new(&emitted::Parameters {
-            mass: 5.0,
-            izz: 4.0,
-        });
+        let k = emitted::Coefficients::<f64>::new(&bodies::planar_at_g());
         group.bench_function(BenchmarkId::new("generated_std_trig_f64", "at_g"), |b| {
             b.iter(|| emitted::rhs(&k, black_box(&state), black_box(&load)))
         });
@@ -222,11 +220,7 @@ fn planar<M: Measurement>(c: &mut Criterion<M>, suffix: &str) {
     });
     {
         use generated::std_trig::planar_midship as emitted;
-        let k = emitted::Coefficients::<f64>::new(&emitted::Parameters {
-            mass: 5.0,
-            izz: 4.0,
-            x_g: 0.3,
-        });
+        let k = emitted::Coefficients::<f64>::new(&bodies::planar_midship());
         group.bench_function(BenchmarkId::new("generated_std_trig_f64", "midship"), |b| {
             b.iter(|| emitted::rhs(&k, black_box(&state), black_box(&load)))
         });
@@ -249,12 +243,7 @@ fn planar<M: Measurement>(c: &mut Criterion<M>, suffix: &str) {
     });
     {
         use generated::std_trig::pendulum as emitted;
-        let k = emitted::Coefficients::<f64>::new(&emitted::Parameters {
-            i0: 2.0,
-            mass: 1.0,
-            g: 9.81,
-            h: 0.5,
-        });
+        let k = emitted::Coefficients::<f64>::new(&bodies::pendulum());
         group.bench_function(
             BenchmarkId::new("generated_std_trig_f64", "pendulum"),
             |b| b.iter(|| emitted::rhs(&k, black_box(&[0.3, 0.1]), black_box(&[0.0]))),
