@@ -60,13 +60,13 @@ fn euler_variants_call_sin_cos_once_per_angle_and_never_tan() {
         if generated.name.ends_with("_euler") {
             // One kernel call for the three angles, each angle's pair bound once.
             assert_eq!(
-                generated.source.matches("= sin_cos([").count(),
+                generated.source.matches("= eom_kernel::sin_cos([").count(),
                 1,
                 "{}",
                 generated.name
             );
             for angle in ["phi", "theta", "psi"] {
-                let pair = format!("(s_{angle}, c_{angle})");
+                let pair = format!("(sin_{angle}, cos_{angle})");
                 assert_eq!(generated.source.matches(&pair).count(), 1, "{pair}");
             }
             assert!(!generated.source.contains("tan("), "{}", generated.name);

@@ -16,6 +16,16 @@ pub(super) fn equations() -> Result<Vec<Equation>, SymbolicError> {
     ])
 }
 
+/// T = ½Mv_G·v_G + ½ω·([I]ω) in the symbols of the tensor the models use (`Ixx … Izz`, 4.12,
+/// symmetric): the form the generated models emit, proved equal to 4.32 below.
+pub fn rigid_body_kinetic_energy() -> Result<Expr, SymbolicError> {
+    let v_g = Vec3::symbols(["u", "v", "w"]);
+    let h = super::spatial::inertia_tensor().mul_vec(&omega());
+    let twice = &v_g.dot(&v_g) * &Expr::symbol("M") + omega().dot(&h);
+    Ok(&twice * &parse("1/2")?)
+}
+
+
 /// T = ½∫ v·v dm with v = v_G + ω × r (4.5, 4.30), against ½Mv_G² + ½ωᵀ[I]ω and ½ω·H (4.32).
 fn kinetic_energy() -> Result<Equation, SymbolicError> {
     let v_g = Vec3::symbols(["u", "v", "w"]);
@@ -32,12 +42,19 @@ fn kinetic_energy() -> Result<Equation, SymbolicError> {
         components: vec![
             Component::new("½∫v·v dm", derived, KINETIC_ENERGY, &tensor),
             Component::new("½Mv_G² + ½ω·H_G", via_momentum, KINETIC_ENERGY, &tensor),
+            Component::new(
+                "½Mv_G² + ½ω·[I]ω as the models emit it",
+                rigid_body_kinetic_energy()?.subs_all(&tensor_pairs(&tensor))?,
+                KINETIC_ENERGY,
+                &tensor,
+            ),
         ],
     })
 }
 
-/// T = ½M v_G² + ½ I_G θ̇² with v_G = θ̇k × r_G and I_G = I₀ − M h² (4.29), against ½ I₀ θ̇².
-fn pendulum_kinetic_energy() -> Result<Equation, SymbolicError> {
+/// The pendulum's kinetic energy from ½Mv_G² + ½I_Gθ̇² (v_G = θ̇k × r_G, I_G = I₀ − Mh², 4.29):
+/// the form its model emits, proved equal to ½I₀θ̇² (4.34) below.
+pub fn pendulum_kinetic_energy_form() -> Result<Expr, SymbolicError> {
     let rate = Vec3::new(Expr::zero(), Expr::zero(), Expr::symbol("theta_dot"));
     let h = Expr::symbol("h");
     let r_g = Vec3::new(
@@ -48,12 +65,26 @@ fn pendulum_kinetic_energy() -> Result<Equation, SymbolicError> {
     let v_g = rate.cross(&r_g);
     let i_g = parse("I0 - M*h.powi(2)")?;
     let theta_dot_sq = parse("theta_dot.powi(2)")?;
-    let derived = &(&v_g.dot(&v_g) * &Expr::symbol("M") + &i_g * &theta_dot_sq) * &parse("1/2")?;
+    Ok(&(&v_g.dot(&v_g) * &Expr::symbol("M") + &i_g * &theta_dot_sq) * &parse("1/2")?)
+}
+
+/// T = ½M v_G² + ½ I_G θ̇² with v_G = θ̇k × r_G and I_G = I₀ − M h² (4.29), against ½ I₀ θ̇².
+fn pendulum_kinetic_energy() -> Result<Equation, SymbolicError> {
+    let derived = pendulum_kinetic_energy_form()?;
     Ok(Equation {
         number: "4.34",
         description: "pendulum: T = ½Mv_G² + ½I_Gθ̇² = ½I₀θ̇²",
-        components: vec![Component::new("T", derived, "I0*theta_dot.powi(2)/2", &[])],
+        components: vec![
+            Component::new("T", derived, "I0*theta_dot.powi(2)/2", &[]),
+        ],
     })
+}
+
+fn tensor_pairs(definitions: &[crate::check::Definition]) -> Vec<(&str, Expr)> {
+    definitions
+        .iter()
+        .map(|(symbol, value)| (symbol.as_str(), value.clone()))
+        .collect()
 }
 
 /// d/dt(½I₀θ̇² − Mgh cos θ) vanishes once θ̈ is taken from 4.24.

@@ -5,7 +5,7 @@
 //! reference texts the checker compares against.
 
 mod body_integral;
-mod energy;
+pub mod energy;
 pub mod kinematics;
 mod momentum;
 pub mod pendulum;

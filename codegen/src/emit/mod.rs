@@ -1,17 +1,17 @@
 //! Emission: from a model to formatted, deterministic Rust source.
 //!
 //! For each model the emitter builds the system with every strategy the model allows, turns
-//! each into a straight-line program, keeps the cheapest by operation count, and formats it.
+//! each into a straight-line program ([`program`]), keeps the cheapest by operation count,
+//! proves that it folds back to the system exactly ([`fold`]), and formats it ([`rust`]).
 //! The same model always gives the same bytes: nothing here iterates a hash map, reads the
 //! clock or the environment. [`write_if_changed`] leaves a file untouched when its bytes are
 //! already right, so Cargo does not rebuild for nothing.
 
-mod program;
+pub mod fold;
+pub mod program;
 mod rust;
-mod trig;
 
 pub use program::{Operations, Program, identifier};
-pub use trig::Trig;
 
 use crate::model::{Model, ModelError, Strategy};
 use std::path::{Path, PathBuf};
@@ -56,7 +56,7 @@ pub struct Generated {
     pub source: String,
 }
 
-/// Generates one model's source.
+/// Generates one model's source, after proving that the program folds back to the system.
 ///
 /// ```
 /// use eom_codegen::emit::generate;
@@ -64,49 +64,35 @@ pub struct Generated {
 /// let model = Model::Spatial { symmetry: Symmetry::Principal, kinematics: Kinematics::Euler };
 /// let generated = generate(model).unwrap();
 /// assert!(generated.source.contains("pub fn rhs<T: SimdRealField + Copy>"));
+/// assert_eq!(generated.source.matches("eom_kernel::sin_cos(").count(), 1); // one call, three angles
 /// assert_eq!(generated.operations.trig, 3); // one sin_cos per Euler angle
 /// ```
 pub fn generate(model: Model) -> Result<Generated, EmitError> {
-    generate_with(model, Trig::Kernel)
-}
-
-/// Generates one model's source with the chosen sine and cosine ([`Trig::Std`] keeps the
-/// scalar's own `simd_sin_cos`, for comparison or for bit-for-bit agreement with the platform).
-///
-/// ```
-/// use eom_codegen::emit::{Trig, generate_with};
-/// use eom_codegen::model::Model;
-/// let kernel = generate_with(Model::Pendulum, Trig::Kernel).unwrap();
-/// let std = generate_with(Model::Pendulum, Trig::Std).unwrap();
-/// assert!(kernel.source.contains("sin_cos([theta])"));
-/// assert!(std.source.contains("theta.simd_sin_cos()"));
-/// assert_eq!(kernel.operations, std.operations);
-/// ```
-pub fn generate_with(model: Model, trig: Trig) -> Result<Generated, EmitError> {
-    let mut best: Option<(Strategy, crate::model::System, Program)> = None;
+    let mut best: Option<(Strategy, crate::model::System, Program, Operations)> = None;
     for &strategy in model.strategies() {
         let system = model.system(strategy)?;
         let program = Program::build(&system);
+        let operations = program.operations(&program.rhs);
         let better = best
             .as_ref()
-            .is_none_or(|(_, _, p)| program.operations.cost() < p.operations.cost());
+            .is_none_or(|(_, _, _, o)| operations.cost() < o.cost());
         if better {
-            best = Some((strategy, system, program));
+            best = Some((strategy, system, program, operations));
         }
     }
-    let (strategy, system, program) = best.expect("every model has a strategy");
-    let source =
-        rust::source(&system, &program, &format!("{strategy:?}"), trig).map_err(|source| {
-            EmitError::Syntax {
-                model: system.name.clone(),
-                source,
-            }
-        })?;
+    let (strategy, system, program, operations) = best.expect("every model has a strategy");
+    fold::verify(&system, &program)?;
+    let source = rust::source(&system, &program, &format!("{strategy:?}")).map_err(|source| {
+        EmitError::Syntax {
+            model: system.name.clone(),
+            source,
+        }
+    })?;
     Ok(Generated {
         model,
         name: system.name,
         strategy,
-        operations: program.operations,
+        operations,
         source,
     })
 }
@@ -135,19 +121,10 @@ pub fn write_if_changed(path: &Path, contents: &str) -> Result<bool, EmitError> 
 /// // then, in the crate: mod auv { include!(concat!(env!("OUT_DIR"), "/spatial_xz_quaternion.rs")); }
 /// ```
 pub fn emit_into(out_dir: &Path, models: &[Model]) -> Result<Vec<Generated>, EmitError> {
-    emit_into_with(out_dir, models, Trig::Kernel)
-}
-
-/// [`emit_into`] with the chosen sine and cosine (see [`generate_with`]).
-pub fn emit_into_with(
-    out_dir: &Path,
-    models: &[Model],
-    trig: Trig,
-) -> Result<Vec<Generated>, EmitError> {
     models
         .iter()
         .map(|&model| {
-            let generated = generate_with(model, trig)?;
+            let generated = generate(model)?;
             write_if_changed(
                 &out_dir.join(format!("{}.rs", generated.name)),
                 &generated.source,

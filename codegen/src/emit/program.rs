@@ -1,17 +1,79 @@
-//! The straight-line program: what the generated function computes, in order.
+//! The straight-line program: what a generated function computes, as an arena of hash-consed
+//! nodes.
 //!
-//! Each stage and output is a sum of `coefficient × runtime monomial`. Coefficients depend on
-//! parameters only and are hoisted into a struct computed once; runtime monomials are built as
-//! products of leaves (state, inputs, stages, sin, cos, sec of angles) with every prefix product
-//! shared, so `q*r` is computed once however many equations use it. One `sin_cos` per angle,
-//! sec θ as the reciprocal of that same cosine, and each other reciprocal once.
+//! Every value is a [`Node`] stored once and addressed by its [`Id`]; a node's operands always
+//! have smaller ids than the node itself (children before parents, the shape of egg's
+//! `RecExpr`), so a program is evaluated, folded back or emitted in one pass over the ids.
+//! Structural sharing is automatic: asking for a node that exists returns its id, so a product
+//! or a term that two equations use is computed once whatever its name would be.
+//!
+//! The builder turns each stage and output of a [`System`] (a sum of `coefficient ×
+//! runtime monomial`) into nodes in four moves:
+//! 1. parameter-only coefficients are hoisted into a struct computed once per parameter set
+//!    (exact constants such as ½ stay inline);
+//! 2. terms of one sum that share a coefficient (up to sign) are factored, `k·a − k·b = k·(a − b)`;
+//! 3. products are shared over the whole program, not along one monomial order: the pair of
+//!    factors that occurs in the most monomials becomes a node of its own, again and again
+//!    (so `q·r` and `p·q·r` share `q·r` whichever order the monomials list their atoms in);
+//! 4. each sum starts with a positive term where it has one, so a negation is paid only by a
+//!    sum whose terms are all negative.
+//!
+//! Nothing here is trusted: [`super::fold`] folds the finished program back into the canonical
+//! form and proves it equal to the system before any code is written.
 
 use crate::model::System;
 use crate::symbolic::{Atom, Expr, Monomial, Rational};
 use num_traits::{One, Signed};
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, HashMap};
 
-/// Counts of the operations one call performs (`sin_cos` counts as one trigonometric call).
+/// The index of a node in its program's arena.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct Id(pub u32);
+
+impl Id {
+    /// The position in the arena.
+    pub fn index(self) -> usize {
+        self.0 as usize
+    }
+}
+
+/// One value of the program.
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub enum Node {
+    /// A state or input entry, by its symbol.
+    Variable(String),
+    /// A hoisted parameter-only coefficient, by its index in [`Program::coefficients`].
+    Coefficient(usize),
+    /// An exact constant, written inline.
+    Constant(Rational),
+    /// The sine of an angle (a [`Node::Variable`]).
+    Sin(Id),
+    /// The cosine of an angle (a [`Node::Variable`]).
+    Cos(Id),
+    /// `1 / x`.
+    Recip(Id),
+    /// `−x`.
+    Neg(Id),
+    /// `a + b`.
+    Add(Id, Id),
+    /// `a − b`.
+    Sub(Id, Id),
+    /// `a · b`.
+    Mul(Id, Id),
+}
+
+impl Node {
+    /// The operands, in order.
+    pub fn children(&self) -> Vec<Id> {
+        match *self {
+            Node::Variable(_) | Node::Coefficient(_) | Node::Constant(_) => vec![],
+            Node::Sin(a) | Node::Cos(a) | Node::Recip(a) | Node::Neg(a) => vec![a],
+            Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) => vec![a, b],
+        }
+    }
+}
+
+/// Counts of the operations one call performs (`sin_cos` of one angle counts as one call).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub struct Operations {
     /// Additions, subtractions and negations.
@@ -34,72 +96,49 @@ impl Operations {
     }
 }
 
-/// One term of a sum: ± coefficient × factor (either may be absent, not both).
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Term {
-    /// Subtract rather than add.
-    pub negative: bool,
-    /// Index into the hoisted coefficients.
-    pub coefficient: Option<usize>,
-    /// A runtime variable.
-    pub factor: Option<String>,
-}
-
-/// One `let` of the generated function.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub enum Step {
-    /// The sine and cosine of an angle: with the emitted kernel, one `sin_cos([…])` call for
-    /// all of a program's angles; with [`Trig::Std`](super::Trig::Std),
-    /// `let (s_a, c_a) = a.simd_sin_cos();`.
-    SinCos {
-        /// The angle's variable.
-        angle: String,
-    },
-    /// `let name = of.simd_recip();` (sec θ from cos θ, 1/|q|² from |q|²)
-    Reciprocal {
-        /// The new variable.
-        name: String,
-        /// The variable inverted.
-        of: String,
-    },
-    /// `let name = left * right;`
-    Product {
-        /// The new variable.
-        name: String,
-        /// Left factor.
-        left: String,
-        /// Right factor.
-        right: String,
-    },
-    /// `let name = Σ terms;`
-    Sum {
-        /// The new variable.
-        name: String,
-        /// The terms, in canonical order.
-        terms: Vec<Term>,
-    },
-}
-
-/// A hoisted coefficient: a parameter expression computed once.
+/// A hoisted coefficient: a parameter expression computed once per parameter set.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Coefficient {
-    /// The field name, `k0`, `k1`, …
+    /// The field name, after what the coefficient multiplies where it is first used
+    /// (`p_dot_q_r`: the coefficient of q·r in ṗ), or after the parameter it inverts
+    /// (`inv_mass`).
     pub name: String,
+    /// Where it is first used, for the doc comment: `q·r in ṗ`.
+    pub role: String,
     /// The value in parameters.
     pub value: Expr,
 }
 
-/// The straight-line program of one system.
+/// A value with a name of its own in the generated code: a stage of the system, or a state's
+/// time derivative.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Named {
+    /// The Rust identifier.
+    pub name: String,
+    /// The node.
+    pub id: Id,
+}
+
+/// One generated function: its named stages and its outputs.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Function {
+    /// The staged intermediates, in the system's order.
+    pub stages: Vec<Named>,
+    /// One node per output.
+    pub outputs: Vec<Named>,
+}
+
+/// The arena and the functions computed from it.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Program {
+    /// The nodes; every operand precedes its user.
+    pub nodes: Vec<Node>,
     /// Hoisted coefficients in order of first use.
     pub coefficients: Vec<Coefficient>,
-    /// The computation, in order.
-    pub steps: Vec<Step>,
-    /// The variable holding each output.
-    pub outputs: Vec<String>,
-    /// What a call costs.
-    pub operations: Operations,
+    /// The right-hand side.
+    pub rhs: Function,
+    /// The kinetic energy, where the system has one.
+    pub kinetic_energy: Option<Function>,
 }
 
 /// The Rust identifier of a symbol in generated code.
@@ -110,95 +149,229 @@ pub fn identifier(symbol: &str) -> String {
     }
 }
 
-struct Builder<'a> {
-    system: &'a System,
-    program: Program,
-    coefficient_index: BTreeMap<Expr, usize>,
-    products: BTreeMap<Vec<String>, String>,
-    angles_with_sin_cos: Vec<String>,
-    reciprocals: Vec<String>,
+/// The name of a state's time derivative in generated code.
+pub fn rate_name(state: &str) -> String {
+    format!("{}_rate", identifier(state))
 }
 
 impl Program {
-    /// Builds the program of a system.
+    /// Builds the program of a system: its right-hand side and, where it has one, its
+    /// kinetic energy.
     pub fn build(system: &System) -> Program {
-        let mut b = Builder {
-            system,
-            program: Program {
-                coefficients: vec![],
-                steps: vec![],
-                outputs: vec![],
-                operations: Operations::default(),
-            },
-            coefficient_index: BTreeMap::new(),
-            products: BTreeMap::new(),
-            angles_with_sin_cos: vec![],
-            reciprocals: vec![],
-        };
-        for (name, value) in &system.stages {
-            b.sum_into(identifier(name), value);
+        let mut builder = Builder::new(system);
+        let rhs = builder.function(&system.stages, &rhs_outputs(system));
+        let kinetic_energy = system.kinetic_energy.as_ref().map(|energy| {
+            let target = Target {
+                name: "t".into(),
+                display: "the kinetic energy T".into(),
+            };
+            builder.function(&[], &[("kinetic_energy".into(), target, energy.clone())])
+        });
+        Program {
+            nodes: builder.nodes,
+            coefficients: builder.coefficients,
+            rhs,
+            kinetic_energy,
         }
-        for (state, value) in system.state.iter().zip(&system.outputs) {
-            let output = b.output(state, value);
-            b.program.outputs.push(output);
+    }
+
+    /// The node with this id.
+    pub fn node(&self, id: Id) -> &Node {
+        &self.nodes[id.index()]
+    }
+
+    /// How many times each node is an operand within the part of the arena that `function`
+    /// reaches (named values count once more, as the generated code reads them by name).
+    pub fn uses(&self, function: &Function) -> Vec<u32> {
+        let reached = self.reached(function);
+        let mut uses = vec![0; self.nodes.len()];
+        for (index, node) in self.nodes.iter().enumerate() {
+            if reached[index] {
+                for child in node.children() {
+                    uses[child.index()] += 1;
+                }
+            }
         }
-        b.program
+        for named in function.stages.iter().chain(&function.outputs) {
+            uses[named.id.index()] += 1;
+        }
+        uses
+    }
+
+    /// Which nodes `function` needs.
+    pub fn reached(&self, function: &Function) -> Vec<bool> {
+        let mut reached = vec![false; self.nodes.len()];
+        for named in &function.outputs {
+            reached[named.id.index()] = true;
+        }
+        for index in (0..self.nodes.len()).rev() {
+            if reached[index] {
+                for child in self.nodes[index].children() {
+                    reached[child.index()] = true;
+                }
+            }
+        }
+        reached
+    }
+
+    /// What one call of `function` costs.
+    pub fn operations(&self, function: &Function) -> Operations {
+        let reached = self.reached(function);
+        let mut operations = Operations::default();
+        for (node, _) in self.nodes.iter().zip(&reached).filter(|(_, r)| **r) {
+            match node {
+                Node::Add(..) | Node::Sub(..) | Node::Neg(_) => operations.add += 1,
+                Node::Mul(..) => operations.mul += 1,
+                Node::Recip(_) => operations.div += 1,
+                Node::Sin(_) | Node::Cos(_) => {}
+                Node::Variable(_) | Node::Coefficient(_) | Node::Constant(_) => {}
+            }
+        }
+        operations.trig = self.angles(function).len() as u32;
+        operations
+    }
+
+    /// The angles whose sine or cosine `function` reads, in order of their ids.
+    pub fn angles(&self, function: &Function) -> Vec<Id> {
+        let reached = self.reached(function);
+        let mut angles: Vec<Id> = Vec::new();
+        for (node, _) in self.nodes.iter().zip(&reached).filter(|(_, r)| **r) {
+            if let Node::Sin(a) | Node::Cos(a) = node
+                && !angles.contains(a)
+            {
+                angles.push(*a);
+            }
+        }
+        angles.sort();
+        angles
     }
 }
 
-impl Builder<'_> {
-    fn is_runtime(&self, atom: &Atom) -> bool {
-        match atom {
-            Atom::Symbol(s) => !self.system.is_parameter(s),
-            Atom::Sin(_) | Atom::Cos(_) => true,
+/// What a sum computes, for naming the coefficients it hoists: `p_dot` and `dp/dt`.
+struct Target {
+    name: String,
+    display: String,
+}
+
+/// The system's outputs as (name, target, value): `u_rate`, `u_dot`, …
+fn rhs_outputs(system: &System) -> Vec<(String, Target, Expr)> {
+    system
+        .state
+        .iter()
+        .zip(&system.outputs)
+        .map(|(state, value)| {
+            let target = Target {
+                name: format!("{}_dot", identifier(state)),
+                display: format!("d{state}/dt"),
+            };
+            (rate_name(state), target, value.clone())
+        })
+        .collect()
+}
+
+/// One term of a sum on its way into the arena: ± coefficient × monomial of runtime leaves.
+struct Term {
+    negative: bool,
+    coefficient: Option<Id>,
+    leaves: Vec<Id>,
+}
+
+struct Builder<'a> {
+    system: &'a System,
+    nodes: Vec<Node>,
+    index: HashMap<Node, Id>,
+    coefficients: Vec<Coefficient>,
+    coefficient_index: BTreeMap<Expr, usize>,
+    stage_ids: BTreeMap<String, Id>,
+}
+
+impl<'a> Builder<'a> {
+    fn new(system: &'a System) -> Self {
+        Builder {
+            system,
+            nodes: Vec::new(),
+            index: HashMap::new(),
+            coefficients: Vec::new(),
+            coefficient_index: BTreeMap::new(),
+            stage_ids: BTreeMap::new(),
         }
     }
 
-    /// An output that is a single runtime variable needs no `let`.
-    fn output(&mut self, state: &str, value: &Expr) -> String {
-        let mut terms = value.terms();
-        if let (Some((monomial, c)), None) = (terms.next(), terms.next())
-            && c.is_one()
-            && let Some(var) = self.single_leaf(monomial)
-        {
-            return var;
+    /// The id of `node`, adding it if it is new. Products are stored with their operands in
+    /// id order, so `a·b` and `b·a` are one node.
+    fn add(&mut self, node: Node) -> Id {
+        let node = match node {
+            Node::Mul(a, b) if b < a => Node::Mul(b, a),
+            other => other,
+        };
+        if let Some(&id) = self.index.get(&node) {
+            return id;
         }
-        let name = format!("{}_rate", identifier(state));
-        self.sum_into(name.clone(), value);
-        name
+        let id = Id(self.nodes.len() as u32);
+        self.nodes.push(node.clone());
+        self.index.insert(node, id);
+        id
     }
 
-    /// The variable of a monomial that is one runtime atom to the first power, if it is one.
-    fn single_leaf(&mut self, monomial: &Monomial) -> Option<String> {
-        let mut factors = monomial.factors();
-        match (factors.next(), factors.next()) {
-            (Some((atom, 1)), None) if self.is_runtime(atom) => self.leaves(monomial).pop(),
-            _ => None,
+    /// Builds the stages and the outputs of one function. Products are shared across all of
+    /// its sums, so they are collected first and multiplied out together.
+    fn function(
+        &mut self,
+        stages: &[(String, Expr)],
+        outputs: &[(String, Target, Expr)],
+    ) -> Function {
+        let mut function = Function {
+            stages: vec![],
+            outputs: vec![],
+        };
+        // Stages are built one after another: a later stage reads an earlier one as a leaf.
+        for (name, value) in stages {
+            let target = Target {
+                name: identifier(name),
+                display: format!("the stage {}", identifier(name)),
+            };
+            let sums = [self.terms(&target, value)];
+            let id = self.sums(sums)[0];
+            self.stage_ids.insert(name.clone(), id);
+            function.stages.push(Named {
+                name: identifier(name),
+                id,
+            });
         }
+        let sums: Vec<Vec<Term>> = outputs
+            .iter()
+            .map(|(_, target, value)| self.terms(target, value))
+            .collect();
+        let ids = self.sums(sums);
+        for ((name, _, _), id) in outputs.iter().zip(ids) {
+            function.outputs.push(Named {
+                name: name.clone(),
+                id,
+            });
+        }
+        function
     }
 
-    fn sum_into(&mut self, name: String, value: &Expr) {
+    /// The terms of one sum: grouped by runtime monomial, coefficients hoisted.
+    fn terms(&mut self, target: &Target, value: &Expr) -> Vec<Term> {
         let mut groups: BTreeMap<Monomial, Expr> = BTreeMap::new();
         for (monomial, coefficient) in value.terms() {
             let (runtime, parameter) = self.split(monomial);
             let entry = groups.entry(runtime).or_default();
             *entry = &*entry + &Expr::term(coefficient.clone(), parameter);
         }
-        let mut terms: Vec<Term> = groups
-            .iter()
-            .filter(|(_, c)| !c.is_zero())
-            .map(|(runtime, coefficient)| self.term(runtime, coefficient))
-            .collect();
-        if terms.is_empty() {
-            let zero = self.hoist(Expr::zero());
-            terms.push(Term {
-                negative: false,
-                coefficient: Some(zero),
-                factor: None,
-            });
+        groups
+            .into_iter()
+            .filter(|(_, coefficient)| !coefficient.is_zero())
+            .map(|(runtime, coefficient)| self.term(target, &runtime, &coefficient))
+            .collect()
+    }
+
+    fn is_runtime(&self, atom: &Atom) -> bool {
+        match atom {
+            Atom::Symbol(s) => !self.system.is_parameter(s),
+            Atom::Sin(_) | Atom::Cos(_) => true,
         }
-        self.count_sum(&terms);
-        self.program.steps.push(Step::Sum { name, terms });
     }
 
     fn split(&self, monomial: &Monomial) -> (Monomial, Monomial) {
@@ -214,7 +387,7 @@ impl Builder<'_> {
         (runtime, parameter)
     }
 
-    fn term(&mut self, runtime: &Monomial, coefficient: &Expr) -> Term {
+    fn term(&mut self, target: &Target, runtime: &Monomial, coefficient: &Expr) -> Term {
         let negative = coefficient
             .terms()
             .next()
@@ -224,106 +397,335 @@ impl Builder<'_> {
         } else {
             coefficient.clone()
         };
-        let factor = (!runtime.is_one()).then(|| self.product(runtime));
-        let unit = magnitude
-            .as_constant()
-            .is_some_and(|c: Rational| c.is_one());
-        let coefficient = (!unit || factor.is_none()).then(|| self.hoist(magnitude));
-        if coefficient.is_some() && factor.is_some() {
-            self.program.operations.mul += 1;
-        }
+        let leaves = self.leaves(runtime);
+        let coefficient = match magnitude.as_constant() {
+            Some(c) if c.is_one() && !leaves.is_empty() => None,
+            Some(c) => Some(self.add(Node::Constant(c))),
+            None => Some(self.hoist(magnitude, target, runtime)),
+        };
         Term {
             negative,
             coefficient,
-            factor,
+            leaves,
         }
     }
 
-    fn hoist(&mut self, value: Expr) -> usize {
+    fn hoist(&mut self, value: Expr, target: &Target, runtime: &Monomial) -> Id {
         if let Some(&index) = self.coefficient_index.get(&value) {
-            return index;
+            return self.add(Node::Coefficient(index));
         }
-        let index = self.program.coefficients.len();
-        let name = format!("k{index}");
-        self.program.coefficients.push(Coefficient {
+        let index = self.coefficients.len();
+        let (name, role) = self.describe(&value, target, runtime);
+        let name = unique(&name, self.coefficients.iter().map(|c| c.name.as_str()));
+        self.coefficients.push(Coefficient {
             name,
+            role,
             value: value.clone(),
         });
         self.coefficient_index.insert(value, index);
-        index
+        self.add(Node::Coefficient(index))
     }
 
-    fn leaves(&mut self, monomial: &Monomial) -> Vec<String> {
+    /// A coefficient's field name and what it is: a parameter's own name where it is one
+    /// (`mass`, `inv_mass`, `half_ixx`), the chapter's name where the system gives one
+    /// (`inv_inertia_xy`), else what it multiplies where it is first used (`p_dot_q_r`).
+    fn describe(&self, value: &Expr, target: &Target, runtime: &Monomial) -> (String, String) {
+        let role = if runtime.is_one() {
+            format!("The constant term of {}", target.display)
+        } else {
+            format!("The coefficient of {runtime} in {}", target.display)
+        };
+        if let Some(name) = parameter_name(value) {
+            return (name, "A parameter, or its reciprocal or half".into());
+        }
+        let negated = -value;
+        let named = self
+            .system
+            .coefficient_names
+            .iter()
+            .find(|n| n.value == *value || n.value == negated);
+        if let Some(named) = named {
+            return (named.name.clone(), named.description.clone());
+        }
+        let what = runtime_name(runtime);
+        let name = if what.is_empty() {
+            format!("{}_constant", target.name)
+        } else {
+            format!("{}_{what}", target.name)
+        };
+        (name, role)
+    }
+
+    /// The runtime leaves of a monomial, one per unit of power.
+    fn leaves(&mut self, monomial: &Monomial) -> Vec<Id> {
         let mut leaves = Vec::new();
         for (atom, power) in monomial.factors() {
-            let leaf = match atom {
-                Atom::Symbol(s) if power > 0 => identifier(s),
-                Atom::Symbol(s) => {
-                    self.reciprocal(&format!("inv_{}", identifier(s)), &identifier(s))
+            let base = match atom {
+                Atom::Symbol(s) => self.symbol(s),
+                Atom::Sin(a) => {
+                    let angle = self.symbol(a);
+                    self.add(Node::Sin(angle))
                 }
-                Atom::Sin(a) => format!("s_{}", self.sin_cos(a)),
-                Atom::Cos(a) if power > 0 => format!("c_{}", self.sin_cos(a)),
                 Atom::Cos(a) => {
-                    let angle = self.sin_cos(a);
-                    self.reciprocal(&format!("sec_{angle}"), &format!("c_{angle}"))
+                    let angle = self.symbol(a);
+                    self.add(Node::Cos(angle))
                 }
+            };
+            let leaf = if power > 0 {
+                base
+            } else {
+                self.add(Node::Recip(base))
             };
             leaves.extend(std::iter::repeat_n(leaf, power.unsigned_abs() as usize));
         }
+        leaves.sort();
         leaves
     }
 
-    fn sin_cos(&mut self, angle: &str) -> String {
-        let var = identifier(angle);
-        if !self.angles_with_sin_cos.contains(&var) {
-            self.angles_with_sin_cos.push(var.clone());
-            self.program.operations.trig += 1;
-            self.program.steps.push(Step::SinCos { angle: var.clone() });
+    /// A stage by its node, anything else as a variable.
+    fn symbol(&mut self, symbol: &str) -> Id {
+        match self.stage_ids.get(symbol) {
+            Some(&id) => id,
+            None => self.add(Node::Variable(symbol.to_owned())),
         }
-        var
     }
 
-    /// `1/of`, computed once.
-    fn reciprocal(&mut self, name: &str, of: &str) -> String {
-        if !self.reciprocals.iter().any(|r| r == name) {
-            self.reciprocals.push(name.to_owned());
-            self.program.operations.div += 1;
-            self.program.steps.push(Step::Reciprocal {
-                name: name.to_owned(),
-                of: of.to_owned(),
-            });
-        }
-        name.to_owned()
+    /// Builds a batch of sums whose products are shared: factor coefficients, share pairs,
+    /// multiply out, add up.
+    fn sums(&mut self, sums: impl IntoIterator<Item = Vec<Term>>) -> Vec<Id> {
+        let factored: Vec<Vec<Factored>> = sums.into_iter().map(factor).collect();
+        let mut monomials: Vec<Vec<Id>> = factored
+            .iter()
+            .flatten()
+            .flat_map(|f| f.parts.iter().map(|(_, leaves)| leaves.clone()))
+            .filter(|leaves| leaves.len() >= 2)
+            .collect();
+        monomials.sort();
+        monomials.dedup();
+        let shared = self.share_pairs(monomials);
+        factored
+            .iter()
+            .map(|sum| {
+                let terms: Vec<(bool, Id)> = sum
+                    .iter()
+                    .map(|f| self.factored_term(f, &shared))
+                    .collect();
+                self.signed_sum(&terms)
+            })
+            .collect()
     }
 
-    /// The product of a monomial's leaves, sharing every prefix already computed.
-    fn product(&mut self, monomial: &Monomial) -> String {
-        let leaves = self.leaves(monomial);
-        let mut current = leaves[0].clone();
-        for end in 2..=leaves.len() {
-            let prefix = leaves[..end].to_vec();
-            if let Some(existing) = self.products.get(&prefix) {
-                current = existing.clone();
+    /// Greedy pair sharing: while some pair of factors occurs in two or more of the distinct
+    /// monomials, the most frequent pair (ties to the smallest ids, so the result depends on
+    /// nothing but the input) becomes a product node and replaces the pair wherever it occurs.
+    /// Returns each original monomial's final list of factors.
+    fn share_pairs(&mut self, monomials: Vec<Vec<Id>>) -> BTreeMap<Vec<Id>, Vec<Id>> {
+        let mut current = monomials.clone();
+        loop {
+            let mut counts: BTreeMap<(Id, Id), u32> = BTreeMap::new();
+            for leaves in &current {
+                let mut pairs: Vec<(Id, Id)> = Vec::new();
+                for i in 0..leaves.len() {
+                    for j in i + 1..leaves.len() {
+                        pairs.push((leaves[i], leaves[j]));
+                    }
+                }
+                pairs.sort();
+                pairs.dedup();
+                for pair in pairs {
+                    *counts.entry(pair).or_default() += 1;
+                }
+            }
+            let best = counts
+                .iter()
+                .filter(|(_, n)| **n >= 2)
+                .max_by(|(p, n), (q, m)| n.cmp(m).then(q.cmp(p)));
+            let Some((&(a, b), _)) = best else { break };
+            let product = self.add(Node::Mul(a, b));
+            for leaves in current.iter_mut() {
+                if let Some(replaced) = replace_pair(leaves, a, b, product) {
+                    *leaves = replaced;
+                }
+            }
+        }
+        monomials.into_iter().zip(current).collect()
+    }
+
+    /// The product of a monomial's leaves, after pair sharing.
+    fn product(&mut self, leaves: &[Id], shared: &BTreeMap<Vec<Id>, Vec<Id>>) -> Option<Id> {
+        let factors = shared.get(leaves).map_or(leaves, Vec::as_slice);
+        let (&first, rest) = factors.split_first()?;
+        Some(
+            rest.iter()
+                .fold(first, |acc, &leaf| self.add(Node::Mul(acc, leaf))),
+        )
+    }
+
+    /// One factored term: coefficient × (± monomial ± monomial …), with its sign.
+    fn factored_term(
+        &mut self,
+        term: &Factored,
+        shared: &BTreeMap<Vec<Id>, Vec<Id>>,
+    ) -> (bool, Id) {
+        let parts: Vec<(bool, Option<Id>)> = term
+            .parts
+            .iter()
+            .map(|(negative, leaves)| (*negative, self.product(leaves, shared)))
+            .collect();
+        let (negative, value) = self.unsigned_term(term.coefficient, &parts);
+        (negative != term.negative, value)
+    }
+
+    /// coefficient × (± monomial ± …), as (sign, magnitude).
+    fn unsigned_term(&mut self, coefficient: Option<Id>, parts: &[(bool, Option<Id>)]) -> (bool, Id) {
+        match (coefficient, parts) {
+            (None, [(negative, Some(product))]) => (*negative, *product),
+            (Some(k), [(negative, None)]) => (*negative, k),
+            (Some(k), [(negative, Some(product))]) => (*negative, self.add(Node::Mul(k, *product))),
+            (Some(k), _) => {
+                let inner: Vec<(bool, Id)> = parts
+                    .iter()
+                    .map(|&(negative, product)| (negative, product.expect("factored terms have a monomial")))
+                    .collect();
+                let (negative, sum) = self.sum_keeping_sign(&inner);
+                (negative, self.add(Node::Mul(k, sum)))
+            }
+            (None, _) => unreachable!("a term has a coefficient or a monomial"),
+        }
+    }
+
+    /// Σ ±terms, starting with a positive term where there is one.
+    fn signed_sum(&mut self, terms: &[(bool, Id)]) -> Id {
+        if terms.is_empty() {
+            return self.add(Node::Constant(num_traits::Zero::zero()));
+        }
+        let (negative, sum) = self.sum_keeping_sign(terms);
+        if negative {
+            self.add(Node::Neg(sum))
+        } else {
+            sum
+        }
+    }
+
+    /// Σ ±terms as (sign, magnitude): with every term negative, −(a + b + …) is returned as
+    /// `(true, a + b + …)` so a caller that multiplies can carry the sign on instead.
+    fn sum_keeping_sign(&mut self, terms: &[(bool, Id)]) -> (bool, Id) {
+        let start = terms.iter().position(|(negative, _)| !negative);
+        let all_negative = start.is_none();
+        let start = start.unwrap_or(0);
+        let mut sum = terms[start].1;
+        for (i, &(negative, term)) in terms.iter().enumerate() {
+            if i == start {
                 continue;
             }
-            let name = prefix.join("_");
-            self.program.operations.mul += 1;
-            self.program.steps.push(Step::Product {
-                name: name.clone(),
-                left: current,
-                right: leaves[end - 1].clone(),
+            let subtract = negative != all_negative;
+            sum = self.add(if subtract {
+                Node::Sub(sum, term)
+            } else {
+                Node::Add(sum, term)
             });
-            self.products.insert(prefix, name.clone());
-            current = name;
         }
-        current
+        (all_negative, sum)
     }
+}
 
-    fn count_sum(&mut self, terms: &[Term]) {
-        let n = terms.len() as u32;
-        self.program.operations.add += n.saturating_sub(1);
-        if terms.first().is_some_and(|t| t.negative) {
-            self.program.operations.add += 1;
+/// A term after factoring: ± coefficient × Σ ± monomials (one part when nothing was shared).
+struct Factored {
+    negative: bool,
+    coefficient: Option<Id>,
+    parts: Vec<(bool, Vec<Id>)>,
+}
+
+/// Terms of one sum that share a coefficient (up to sign) become one term, `k·(a − b)`; the
+/// first term of each group keeps its place, and `k·(−a − b)` is written `−k·(a + b)`.
+fn factor(terms: Vec<Term>) -> Vec<Factored> {
+    let mut factored: Vec<Factored> = Vec::new();
+    for term in terms {
+        let group = match term.coefficient {
+            Some(k) if !term.leaves.is_empty() => factored
+                .iter_mut()
+                .find(|f| f.coefficient == Some(k) && f.parts.iter().all(|(_, l)| !l.is_empty())),
+            _ => None,
+        };
+        match group {
+            Some(group) => group.parts.push((term.negative, term.leaves)),
+            None => factored.push(Factored {
+                negative: false,
+                coefficient: term.coefficient,
+                parts: vec![(term.negative, term.leaves)],
+            }),
         }
     }
+    for group in &mut factored {
+        if group.parts.iter().all(|(negative, _)| *negative) {
+            group.negative = true;
+            for part in &mut group.parts {
+                part.0 = false;
+            }
+        }
+    }
+    factored
+}
+
+/// `leaves` with one `a` and one `b` replaced by `product`, if it holds both.
+fn replace_pair(leaves: &[Id], a: Id, b: Id, product: Id) -> Option<Vec<Id>> {
+    let mut rest = leaves.to_vec();
+    let i = rest.iter().position(|&x| x == a)?;
+    rest.remove(i);
+    let j = rest.iter().position(|&x| x == b)?;
+    rest.remove(j);
+    rest.push(product);
+    rest.sort();
+    Some(rest)
+}
+
+/// A monomial of runtime atoms as an identifier fragment: `q_r`, `sin_theta`, `sec_theta`.
+fn runtime_name(monomial: &Monomial) -> String {
+    let mut parts = Vec::new();
+    for (atom, power) in monomial.factors() {
+        let base = match atom {
+            Atom::Symbol(s) => identifier(s),
+            Atom::Sin(a) => format!("sin_{}", identifier(a)),
+            Atom::Cos(a) if power < 0 => format!("sec_{}", identifier(a)),
+            Atom::Cos(a) => format!("cos_{}", identifier(a)),
+        };
+        let base = match (atom, power < 0) {
+            (Atom::Symbol(_), true) => format!("inv_{base}"),
+            _ => base,
+        };
+        parts.extend(std::iter::repeat_n(base, power.unsigned_abs() as usize));
+    }
+    parts.join("_")
+}
+
+/// The name of a coefficient that is one parameter, its reciprocal or its half: `mass`,
+/// `inv_mass`, `half_mass`.
+fn parameter_name(value: &Expr) -> Option<String> {
+    let mut terms = value.terms();
+    let (Some((monomial, c)), None) = (terms.next(), terms.next()) else {
+        return None;
+    };
+    let mut factors = monomial.factors();
+    let (Some((Atom::Symbol(s), power)), None) = (factors.next(), factors.next()) else {
+        return None;
+    };
+    let half = Rational::new(1.into(), 2.into());
+    match (power, c) {
+        (1, c) if c.is_one() => Some(identifier(s)),
+        (-1, c) if c.is_one() => Some(format!("inv_{}", identifier(s))),
+        (1, c) if *c == half => Some(format!("half_{}", identifier(s))),
+        _ => None,
+    }
+}
+
+/// `name`, or `name_2`, `name_3`, … if it is taken.
+pub(super) fn unique<'a>(name: &str, taken: impl Iterator<Item = &'a str> + Clone) -> String {
+    let free = |candidate: &str| taken.clone().all(|t| t != candidate);
+    if free(name) {
+        return name.to_owned();
+    }
+    (2..)
+        .map(|n| format!("{name}_{n}"))
+        .find(|candidate| free(candidate))
+        .expect("some suffix is free")
 }

@@ -1,7 +1,7 @@
 //! The builders: each family's system from the proved derivations.
 
 use super::solve::{Solution, solve_linear};
-use super::system::{ModelError, Parameter, Stage, System};
+use super::system::{CoefficientName, Group, ModelError, Parameter, Stage, System};
 use super::{Kinematics, Strategy, Symmetry};
 use crate::derivation::kinematics::{
     body_to_space, euler_rate_matrix, rotation_x, rotation_y, rotation_z,
@@ -9,6 +9,7 @@ use crate::derivation::kinematics::{
 use crate::derivation::quaternion::{
     Quaternion, body_to_space_half_angles, quaternion_of_euler_angles, quaternion_rates,
 };
+use crate::derivation::energy::{pendulum_kinetic_energy_form, rigid_body_kinetic_energy};
 use crate::derivation::{pendulum as pendulum_eq, planar, spatial as spatial_eq};
 use crate::symbolic::{Expr, SymbolicError, Vec3};
 
@@ -85,6 +86,13 @@ pub fn pendulum() -> Result<System, ModelError> {
         inputs: vec!["M_O"],
         stages: vec![],
         outputs: vec![Expr::symbol("theta_dot"), solved(&solution)[0].clone()],
+        groups: vec![Group {
+            first: 0,
+            comment: "4.24: I₀θ̈ = −Mgh sin θ + M_O",
+        }],
+        kinetic_energy: Some(pendulum_kinetic_energy_form().map_err(symbolic(name))?),
+        energy_formula: Some("T = ½I₀θ̇² (4.34)"),
+        coefficient_names: vec![],
     })
 }
 
@@ -95,13 +103,42 @@ fn track() -> [Expr; 2] {
     [x, y]
 }
 
-fn planar_body_fixed(
-    name: &str,
-    title: &str,
-    residuals: &[Expr; 3],
+/// T = ½M(u_G² + v_G²) + ½I_zz r²: 4.32 in the plane, with the velocity of G given.
+fn planar_kinetic_energy(name: &str, u_g: Expr, v_g: Expr, r: Expr) -> Result<Expr, ModelError> {
+    let in_plane = [
+        ("w", Expr::zero()),
+        ("p", Expr::zero()),
+        ("q", Expr::zero()),
+        ("u", u_g),
+        ("v", v_g),
+        ("r", r),
+    ];
+    rigid_body_kinetic_energy()
+        .and_then(|t| t.subs_all(&in_plane))
+        .map_err(symbolic(name))
+}
+
+/// What differs between the two body-fixed planar models: the equation, and where G is.
+struct BodyFixed<'a> {
+    name: &'a str,
+    title: &'a str,
     equations: Vec<&'static str>,
     parameters: Vec<Parameter>,
-) -> Result<System, ModelError> {
+    dynamics: &'static str,
+    kinetic_energy: Expr,
+    energy_formula: &'static str,
+}
+
+fn planar_body_fixed(model: BodyFixed, residuals: &[Expr; 3]) -> Result<System, ModelError> {
+    let BodyFixed {
+        name,
+        title,
+        equations,
+        parameters,
+        dynamics,
+        kinetic_energy,
+        energy_formula,
+    } = model;
     let solution = solve_linear(name, residuals, &["u_dot", "v_dot", "r_dot"], "inv_det")?;
     let mut outputs = solved(&solution);
     outputs.extend(track());
@@ -111,24 +148,42 @@ fn planar_body_fixed(
         title: title.into(),
         equations,
         parameters,
-        reciprocals: solution.reciprocal.into_iter().collect(),
+        reciprocals: solution.reciprocal.clone().into_iter().collect(),
         state: vec!["u", "v", "r", "X", "Y", "psi"],
         inputs: vec!["F_x", "F_y", "M_z"],
         stages: vec![],
         outputs,
+        groups: vec![
+            Group {
+                first: 0,
+                comment: dynamics,
+            },
+            Group {
+                first: 3,
+                comment: "4.44: the track in space-fixed axes, and the heading",
+            },
+        ],
+        kinetic_energy: Some(kinetic_energy),
+        energy_formula: Some(energy_formula),
+        coefficient_names: inverse_names(&solution, "inv_mass_matrix", "M", &["u", "v", "r"]),
     })
 }
 
 /// Planar, body-fixed axes at G: 4.43 with the track 4.44.
 pub fn planar_at_g() -> Result<System, ModelError> {
-    let residuals = planar::residuals_at_g().map_err(symbolic("planar_at_g"))?;
-    planar_body_fixed(
-        "planar_at_g",
-        "Planar motion in body axes at G",
-        &residuals,
-        vec!["4.43", "4.44"],
-        vec![MASS, IZZ],
-    )
+    let name = "planar_at_g";
+    let residuals = planar::residuals_at_g().map_err(symbolic(name))?;
+    let [u, v, r] = ["u", "v", "r"].map(Expr::symbol);
+    let model = BodyFixed {
+        name,
+        title: "Planar motion in body axes at G",
+        equations: vec!["4.43", "4.44"],
+        parameters: vec![MASS, IZZ],
+        dynamics: "4.43: surge, sway and yaw at G, body axes",
+        kinetic_energy: planar_kinetic_energy(name, u, v, r)?,
+        energy_formula: "T = ½M(u² + v²) + ½I_zz r²",
+    };
+    planar_body_fixed(model, &residuals)
 }
 
 /// Planar, body-fixed axes at midship with G at (x_G, 0, 0): 4.46 with 4.44.
@@ -140,13 +195,19 @@ pub fn planar_midship() -> Result<System, ModelError> {
         symbol: "x_G",
         doc: "x_G, the position of G ahead of midship (4.45)",
     };
-    planar_body_fixed(
+    let [u, v, r] = ["u", "v", "r"].map(Expr::symbol);
+    // 4.45: G moves with the midship velocity plus ω × r_G = (0, x_G r, 0).
+    let v_g = &v + &(&Expr::symbol("x_G") * &r);
+    let model = BodyFixed {
         name,
-        "Planar motion in body axes at midship",
-        &residuals,
-        vec!["4.45", "4.46", "4.44"],
-        vec![MASS, IZZ, x_g],
-    )
+        title: "Planar motion in body axes at midship",
+        equations: vec!["4.45", "4.46", "4.44"],
+        parameters: vec![MASS, IZZ, x_g],
+        dynamics: "4.46: surge, sway and yaw at midship, body axes",
+        kinetic_energy: planar_kinetic_energy(name, u, v_g, r)?,
+        energy_formula: "T = ½M(u² + (v + x_G r)²) + ½I_zz r², G moving at (u, v + x_G r)",
+    };
+    planar_body_fixed(model, &residuals)
 }
 
 /// Planar, space-fixed axes: 4.39.
@@ -166,6 +227,24 @@ pub fn planar_space_fixed() -> Result<System, ModelError> {
         inputs: vec!["F_X", "F_Y", "M_z"],
         stages: vec![],
         outputs,
+        groups: vec![
+            Group {
+                first: 0,
+                comment: "the position and the heading",
+            },
+            Group {
+                first: 3,
+                comment: "4.39: Newton's and Euler's equations in space-fixed axes",
+            },
+        ],
+        kinetic_energy: Some(planar_kinetic_energy(
+            name,
+            Expr::symbol("X_dot"),
+            Expr::symbol("Y_dot"),
+            Expr::symbol("psi_dot"),
+        )?),
+        energy_formula: Some("T = ½M(Ẋ² + Ẏ²) + ½I_zz ψ̇²"),
+        coefficient_names: vec![],
     })
 }
 
@@ -405,16 +484,31 @@ pub fn spatial(
     outputs.extend(kinematic_outputs);
     let mut all_state = vec!["u", "v", "w", "p", "q", "r", "x", "y", "z"];
     all_state.extend(state);
+    let zeros: Vec<(&str, Expr)> = zero_products(symmetry)
+        .iter()
+        .map(|p| (*p, Expr::zero()))
+        .collect();
+    let kinetic_energy = rigid_body_kinetic_energy()
+        .and_then(|t| t.subs_all(&zeros))
+        .map_err(&err)?;
     let system = System {
         name: name.clone(),
         title: format!("Spatial 6-DOF motion, {symmetry:?} inertia, {kinematics:?} kinematics"),
         equations,
         parameters: inertia_parameters(symmetry),
-        reciprocals: rotation_solution.reciprocal.into_iter().collect(),
+        reciprocals: rotation_solution.reciprocal.clone().into_iter().collect(),
         state: all_state,
         inputs: vec!["F_x", "F_y", "F_z", "M_x", "M_y", "M_z"],
         stages,
         outputs,
+        groups: spatial_groups(symmetry, kinematics),
+        kinetic_energy: Some(kinetic_energy),
+        energy_formula: Some(match symmetry {
+            Symmetry::Full => "T = ½M(u² + v² + w²) + ½ωᵀ[I]ω",
+            Symmetry::Xz => "T = ½M(u² + v² + w²) + ½ωᵀ[I]ω with I_xy = I_yz = 0",
+            Symmetry::Principal => "T = ½M(u² + v² + w²) + ½(I_xx p² + I_yy q² + I_zz r²)",
+        }),
+        coefficient_names: inverse_names(&rotation_solution, "inv_inertia", "I", &["x", "y", "z"]),
     };
     let mut checks: Vec<(usize, Expr)> = expected.into_iter().enumerate().collect();
     if kinematics == Kinematics::Quaternion {
@@ -424,4 +518,63 @@ pub fn spatial(
     }
     verify_outputs(&system, &checks)?;
     Ok(system)
+}
+
+fn spatial_groups(symmetry: Symmetry, kinematics: Kinematics) -> Vec<Group> {
+    let rotation = match symmetry {
+        Symmetry::Full => "4.51: Euler's equations with all products of inertia",
+        Symmetry::Xz => "4.51 with I_xy = I_yz = 0: Euler's equations, xz-plane symmetry",
+        Symmetry::Principal => "4.52: Euler's equations in principal axes",
+    };
+    let (position, attitude) = match kinematics {
+        Kinematics::Euler => (
+            "4.57: the position rates in space axes, E·v one rotation at a time",
+            "4.60: the Euler-angle rates",
+        ),
+        Kinematics::Quaternion => (
+            "4.57 by the quaternion: v + 2(q₀t + q_v × t)/|q|², t = q_v × v",
+            "4.60 by the quaternion: q̇ = ½ q ⊗ (0, ω)",
+        ),
+    };
+    vec![
+        Group {
+            first: 0,
+            comment: "4.49: translation about G, body axes",
+        },
+        Group {
+            first: 3,
+            comment: rotation,
+        },
+        Group {
+            first: 6,
+            comment: position,
+        },
+        Group {
+            first: 9,
+            comment: attitude,
+        },
+    ]
+}
+
+/// The entries of a solved system's inverse matrix, named `{prefix}_{row}{column}`.
+fn inverse_names(
+    solution: &Solution,
+    prefix: &str,
+    matrix: &str,
+    axes: &[&str],
+) -> Vec<CoefficientName> {
+    let mut names = Vec::new();
+    for (i, row) in solution.inverse.iter().enumerate() {
+        for (j, value) in row.iter().enumerate().skip(i) {
+            if value.is_zero() {
+                continue;
+            }
+            names.push(CoefficientName {
+                value: value.clone(),
+                name: format!("{prefix}_{}{}", axes[i], axes[j]),
+                description: format!("The entry ([{matrix}]⁻¹)_{}{} (up to sign)", axes[i], axes[j]),
+            });
+        }
+    }
+    names
 }

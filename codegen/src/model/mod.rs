@@ -10,7 +10,7 @@ mod solve;
 mod system;
 
 pub use solve::{Solution, solve_linear};
-pub use system::{ModelError, Parameter, Reciprocal, Stage, System};
+pub use system::{CoefficientName, Group, ModelError, Parameter, Reciprocal, Stage, System};
 
 /// Which products of inertia the body has.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]

@@ -50,6 +50,16 @@ pub struct Parameter {
 /// A named intermediate computed at every call, before the outputs.
 pub type Stage = (String, Expr);
 
+/// A run of outputs that come from one equation: the generated code puts `comment` above the
+/// first of them.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Group {
+    /// The index of the first output of the run.
+    pub first: usize,
+    /// What the outputs are and the equation they come from: `4.49: translation, body axes`.
+    pub comment: &'static str,
+}
+
 /// The system `d(state)/dt = outputs(parameters, state, inputs)`.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct System {
@@ -71,6 +81,27 @@ pub struct System {
     pub stages: Vec<Stage>,
     /// The derivative of each state symbol, in state order.
     pub outputs: Vec<Expr>,
+    /// The outputs grouped by equation, in order.
+    pub groups: Vec<Group>,
+    /// The kinetic energy of the state, from the proved 4.32.
+    pub kinetic_energy: Option<Expr>,
+    /// The energy's formula in the model's own symbols, for the generated comment.
+    pub energy_formula: Option<&'static str>,
+    /// Names for parameter expressions that have one in the chapter (the entries of an
+    /// inverse mass matrix or inertia tensor): a hoisted coefficient equal to one of them, up
+    /// to sign, takes its name and description.
+    pub coefficient_names: Vec<CoefficientName>,
+}
+
+/// A parameter expression with a name of its own (see [`System::coefficient_names`]).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct CoefficientName {
+    /// The value.
+    pub value: Expr,
+    /// The Rust identifier: `inv_inertia_xy`.
+    pub name: String,
+    /// What it is, for the doc comment: `([I]⁻¹)_xy`.
+    pub description: String,
 }
 
 impl System {

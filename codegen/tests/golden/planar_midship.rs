@@ -14,30 +14,38 @@ pub struct Parameters {
 /// Every parameter-only coefficient of [`rhs`], computed once from [`Parameters`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Coefficients<T> {
-    /// `M^-1`
-    pub k0: T,
-    /// `x_G`
-    pub k1: T,
-    /// `Izz^-1*x_G^2 + M^-1`
-    pub k2: T,
-    /// `Izz^-1*x_G`
-    pub k3: T,
-    /// `Izz^-1`
-    pub k4: T,
+    /// A parameter, or its reciprocal or half: `M^-1`.
+    pub inv_mass: T,
+    /// A parameter, or its reciprocal or half: `x_G`.
+    pub x_g: T,
+    /// The entry ([M]⁻¹)_vv (up to sign): `Izz^-1*x_G^2 + M^-1`.
+    pub inv_mass_matrix_vv: T,
+    /// The entry ([M]⁻¹)_vr (up to sign): `Izz^-1*x_G`.
+    pub inv_mass_matrix_vr: T,
+    /// A parameter, or its reciprocal or half: `Izz^-1`.
+    pub inv_izz: T,
+    /// The coefficient of r*v in the kinetic energy T: `M*x_G`.
+    pub t_r_v: T,
+    /// The coefficient of r^2 in the kinetic energy T: `1/2*Izz + 1/2*M*x_G^2`.
+    pub t_r_r: T,
+    /// A parameter, or its reciprocal or half: `1/2*M`.
+    pub half_mass: T,
 }
 impl<T: SimdRealField + Copy> Coefficients<T> {
     /// Computes the coefficients (in f64, then converted to `T`).
-    #[allow(unused_variables)]
     pub fn new(parameters: &Parameters) -> Self {
         let mass = parameters.mass;
         let izz = parameters.izz;
         let x_g = parameters.x_g;
         Self {
-            k0: T::from_subset(&(1.0 / (mass))),
-            k1: T::from_subset(&(x_g)),
-            k2: T::from_subset(&(x_g * x_g / (izz) + 1.0 / (mass))),
-            k3: T::from_subset(&(x_g / (izz))),
-            k4: T::from_subset(&(1.0 / (izz))),
+            inv_mass: T::from_subset(&(1.0 / (mass))),
+            x_g: T::from_subset(&(x_g)),
+            inv_mass_matrix_vv: T::from_subset(&(x_g * x_g / (izz) + 1.0 / (mass))),
+            inv_mass_matrix_vr: T::from_subset(&(x_g / (izz))),
+            inv_izz: T::from_subset(&(1.0 / (izz))),
+            t_r_v: T::from_subset(&(mass * x_g)),
+            t_r_r: T::from_subset(&(0.5 * izz + 0.5 * mass * x_g * x_g)),
+            half_mass: T::from_subset(&(0.5 * mass)),
         }
     }
 }
@@ -46,9 +54,9 @@ pub const STATE: [&str; 6] = ["u", "v", "r", "X", "Y", "psi"];
 /// The input layout: the symbol of each entry of the input array.
 pub const INPUTS: [&str; 3] = ["F_x", "F_y", "M_z"];
 /// Operations per call of [`rhs`]: additions, multiplications, divisions, square roots,
-/// trigonometric calls (`sin_cos` counts once).
+/// trigonometric calls (`sin_cos` of one angle counts once).
 pub const OPERATIONS: [(&str, u32); 5] = [
-    ("add", 8),
+    ("add", 7),
     ("mul", 13),
     ("div", 0),
     ("sqrt", 0),
@@ -59,7 +67,7 @@ pub const OPERATIONS: [(&str, u32); 5] = [
 /// State: `[u, v, r, X, Y, psi]`; inputs: `[F_x, F_y, M_z]`.
 /// Returns the time derivative of the state.
 ///
-/// Cost per call: 8 add, 13 mul, 0 div, 0 sqrt, 1 trig (strategy: Expanded).
+/// Cost per call: 7 add, 13 mul, 0 div, 0 sqrt, 1 trig (strategy: Expanded).
 #[inline(always)]
 pub fn rhs<T: SimdRealField + Copy>(
     k: &Coefficients<T>,
@@ -68,188 +76,23 @@ pub fn rhs<T: SimdRealField + Copy>(
 ) -> [T; 6] {
     let [u, v, r, _, _, psi] = *state;
     let [f_x, f_y, m_z] = *input;
-    let r_v = r * v;
-    let r_r = r * r;
-    let u_rate = k.k0 * f_x + r_v + k.k1 * r_r;
-    let r_u = r * u;
-    let v_rate = k.k2 * f_y - k.k3 * m_z - r_u;
-    let r_rate = -k.k3 * f_y + k.k4 * m_z;
-    let [(s_psi, c_psi)] = sin_cos([psi]);
-    let u_c_psi = u * c_psi;
-    let v_s_psi = v * s_psi;
-    let x_rate = u_c_psi - v_s_psi;
-    let u_s_psi = u * s_psi;
-    let v_c_psi = v * c_psi;
-    let y_rate = u_s_psi + v_c_psi;
+    let [(sin_psi, cos_psi)] = eom_kernel::sin_cos([psi]);
+    // 4.46: surge, sway and yaw at midship, body axes
+    let u_rate = k.inv_mass * f_x + r * v + k.x_g * (r * r);
+    let v_rate = k.inv_mass_matrix_vv * f_y - k.inv_mass_matrix_vr * m_z - r * u;
+    let r_rate = k.inv_izz * m_z - k.inv_mass_matrix_vr * f_y;
+    // 4.44: the track in space-fixed axes, and the heading
+    let x_rate = u * cos_psi - v * sin_psi;
+    let y_rate = u * sin_psi + v * cos_psi;
     [u_rate, v_rate, r_rate, x_rate, y_rate, r]
 }
-/// `(sin a, cos a)` of every angle in `angles`, as [`rhs`] computes them.
-///
-/// For `f64` and `f32` (widened to f64, rounded once at the end) this is the kernel in
-/// the private module `sin_cos_kernel`: one argument reduction shared by sine and
-/// cosine, within 2 ulp of the platform's `sin` and `cos`, the angles side by side so
-/// that the compiler can pair them in SIMD registers. Every other scalar (SIMD lanes,
-/// dual numbers) uses its own `simd_sin_cos`.
-#[inline(always)]
-pub fn sin_cos<T: SimdRealField + Copy, const N: usize>(angles: [T; N]) -> [(T, T); N] {
-    let scalars: &dyn core::any::Any = &angles;
-    let mut wide = [0.0; N];
-    if let Some(angles) = scalars.downcast_ref::<[f64; N]>() {
-        wide = *angles;
-    } else if let Some(angles) = scalars.downcast_ref::<[f32; N]>() {
-        for (wide, &angle) in wide.iter_mut().zip(angles) {
-            *wide = f64::from(angle);
-        }
-    } else {
-        let mut pairs = [(T::zero(), T::zero()); N];
-        for (pair, angle) in pairs.iter_mut().zip(angles) {
-            *pair = angle.simd_sin_cos();
-        }
-        return pairs;
-    }
-    let mut pairs = [(T::zero(), T::zero()); N];
-    for (pair, (s, c)) in pairs.iter_mut().zip(sin_cos_kernel::sin_cos(wide)) {
-        *pair = (T::from_subset(&s), T::from_subset(&c));
-    }
-    pairs
-}
-/// Sine and cosine of `f64` angles from one argument reduction each.
-///
-/// `k = round(2x/π)`; `r = x − k·π/2` in three steps, π/2 split Cody–Waite style so
-/// that the first two products are exact; the minimax polynomials of fdlibm's
-/// `__kernel_sin` and `__kernel_cos` on |r| ≤ π/4; the quadrant `k mod 4`, read from the
-/// low bits of the rounding sum (those of k, two's complement), orders the pair and
-/// flips sign bits. Tiny arguments, NaN, infinities and
-/// |x| > [`LIMIT`] take a cold path.
-mod sin_cos_kernel {
-    /// 1.5·2⁵²: adding and subtracting it rounds an f64 below 2⁵¹ to an integer. Bits `0x4338000000000000`.
-    const ROUNDER: f64 = 6755399441055744.0;
-    /// The first 33 bits of π/2: `k·PIO2_1` is exact for |k| ≤ 2¹⁹. Bits `0x3FF921FB54400000`.
-    const PIO2_1: f64 = 1.5707963267341256;
-    /// The next 33 bits of π/2: `k·PIO2_2` is exact too. Bits `0x3DD0B4611A600000`.
-    const PIO2_2: f64 = 6.077100506303966e-11;
-    /// π/2 − PIO2_1 − PIO2_2. Bits `0x3BA3198A2E037073`.
-    const PIO2_2T: f64 = 2.0222662487959506e-21;
-    /// Below 2¹⁹·π/2, so that |k| ≤ 2¹⁹ and the products above stay exact. Bits `0x412921FA00000000`.
-    const LIMIT: f64 = 823549.0;
-    /// 2⁻²⁷: below it sin x rounds to x and cos x to 1. Bits `0x3E40000000000000`.
-    const TINY: f64 = 7.450580596923828e-9;
-    /// fdlibm `__kernel_sin`, r³. Bits `0xBFC5555555555549`.
-    const S1: f64 = -0.16666666666666632;
-    /// fdlibm `__kernel_sin`, r⁵. Bits `0x3F8111111110F8A6`.
-    const S2: f64 = 0.00833333333332249;
-    /// fdlibm `__kernel_sin`, r⁷. Bits `0xBF2A01A019C161D5`.
-    const S3: f64 = -1.984126982985795e-4;
-    /// fdlibm `__kernel_sin`, r⁹. Bits `0x3EC71DE357B1FE7D`.
-    const S4: f64 = 2.7557313707070068e-6;
-    /// fdlibm `__kernel_sin`, r¹¹. Bits `0xBE5AE5E68A2B9CEB`.
-    const S5: f64 = -2.5050760253406863e-8;
-    /// fdlibm `__kernel_sin`, r¹³. Bits `0x3DE5D93A5ACFD57C`.
-    const S6: f64 = 1.58969099521155e-10;
-    /// fdlibm `__kernel_cos`, r⁴. Bits `0x3FA555555555554C`.
-    const C1: f64 = 0.0416666666666666;
-    /// fdlibm `__kernel_cos`, r⁶. Bits `0xBF56C16C16C15177`.
-    const C2: f64 = -0.001388888888887411;
-    /// fdlibm `__kernel_cos`, r⁸. Bits `0x3EFA01A019CB1590`.
-    const C3: f64 = 2.480158728947673e-5;
-    /// fdlibm `__kernel_cos`, r¹⁰. Bits `0xBE927E4F809C52AD`.
-    const C4: f64 = -2.7557314351390663e-7;
-    /// fdlibm `__kernel_cos`, r¹². Bits `0x3E21EE9EBDB4B1C4`.
-    const C5: f64 = 2.087572321298175e-9;
-    /// fdlibm `__kernel_cos`, r¹⁴. Bits `0xBDA8FAE9BE8838D4`.
-    const C6: f64 = -1.1359647557788195e-11;
-    /// The sign bit of an f64.
-    const SIGN_BIT: u64 = 1 << 63;
-    /// `(sin x, cos x)` of every `x`. One unsigned comparison of the bits of each |x|,
-    /// which order as the magnitudes do, tells whether all are in the kernel's range.
-    #[inline(always)]
-    pub fn sin_cos<const N: usize>(x: [f64; N]) -> [(f64, f64); N] {
-        let outside = x
-            .iter()
-            .fold(
-                false,
-                |outside, &x| {
-                    let magnitude = x.to_bits() & !SIGN_BIT;
-                    outside
-                        | (magnitude.wrapping_sub(TINY.to_bits())
-                            > LIMIT.to_bits() - TINY.to_bits())
-                },
-            );
-        let mut pairs = [(0.0, 0.0); N];
-        for (pair, &x) in pairs.iter_mut().zip(&x) {
-            *pair = if outside {
-                one_at_a_time(x)
-            } else if N == 1 {
-                in_range(x, Placement::Branch)
-            } else {
-                in_range(x, Placement::Masks)
-            };
-        }
-        pairs
-    }
-    /// How [`in_range`] puts a reduced pair in its quadrant. With several angles, by bit
-    /// masks, which the compiler can pair in SIMD registers; with one, by branches, so
-    /// that a model that reads only the sine (the pendulum) evaluates the cosine's
-    /// polynomial only in the quadrants that need it.
-    #[derive(Clone, Copy, PartialEq)]
-    enum Placement {
-        Masks,
-        Branch,
-    }
-    /// One angle in the kernel's range: within ±π/4 evaluate it as it is; beyond, reduce,
-    /// evaluate, place in its quadrant.
-    #[inline(always)]
-    fn in_range(x: f64, placement: Placement) -> (f64, f64) {
-        if x.abs() <= core::f64::consts::FRAC_PI_4 {
-            return (sin_reduced(x), cos_reduced(x));
-        }
-        let shifted = x * core::f64::consts::FRAC_2_PI + ROUNDER;
-        let quadrant = shifted.to_bits();
-        let k = shifted - ROUNDER;
-        let r = ((x - k * PIO2_1) - k * PIO2_2) - k * PIO2_2T;
-        let (s, c) = (sin_reduced(r).to_bits(), cos_reduced(r).to_bits());
-        let (s, c) = if placement == Placement::Branch {
-            if quadrant & 1 == 0 { (s, c) } else { (c, s) }
-        } else {
-            let swap = 0u64.wrapping_sub(quadrant & 1);
-            ((s & !swap) | (c & swap), (c & !swap) | (s & swap))
-        };
-        let sin_sign = (quadrant << 62) & SIGN_BIT;
-        let cos_sign = (quadrant.wrapping_add(1) << 62) & SIGN_BIT;
-        (f64::from_bits(s ^ sin_sign), f64::from_bits(c ^ cos_sign))
-    }
-    /// Any angle: tiny ones, where sin x rounds to x and cos x to 1; NaN, infinite and
-    /// beyond [`LIMIT`] ones, for the platform; the others through the kernel.
-    #[cold]
-    #[inline(never)]
-    fn one_at_a_time(x: f64) -> (f64, f64) {
-        let magnitude = x.abs();
-        if magnitude < TINY {
-            (x, 1.0)
-        } else if magnitude <= LIMIT {
-            in_range(x, Placement::Branch)
-        } else {
-            x.sin_cos()
-        }
-    }
-    /// sin r for |r| ≤ π/4: `r + r³ P(r²)`, P of degree 5 in pairs (Estrin's scheme),
-    /// so that the chain of dependent operations is four deep instead of seven.
-    #[inline(always)]
-    fn sin_reduced(r: f64) -> f64 {
-        let z = r * r;
-        let w = z * z;
-        let p = (S1 + z * S2) + w * ((S3 + z * S4) + w * (S5 + z * S6));
-        r + z * r * p
-    }
-    /// cos r for |r| ≤ π/4: `1 − r²/2 + r⁴ Q(r²)`, with the rounding error of
-    /// `1 − r²/2` added back; Q in pairs as in [`sin_reduced`].
-    #[inline(always)]
-    fn cos_reduced(r: f64) -> f64 {
-        let z = r * r;
-        let w = z * z;
-        let q = (C1 + z * C2) + w * ((C3 + z * C4) + w * (C5 + z * C6));
-        let half_z = 0.5 * z;
-        let head = 1.0 - half_z;
-        head + (((1.0 - head) - half_z) + w * q)
-    }
+/// The kinetic energy of the state (4.32), from the proved form. Cost per call: 3 add, 7 mul.
+#[inline]
+pub fn kinetic_energy<T: SimdRealField + Copy>(
+    k: &Coefficients<T>,
+    state: &[T; 6],
+) -> T {
+    let [u, v, r, _, _, _] = *state;
+    // T = ½M(u² + (v + x_G r)²) + ½I_zz r², G moving at (u, v + x_G r) (4.32, with what the model's state and symmetry make zero left out)
+    k.t_r_v * (r * v) + k.t_r_r * (r * r) + k.half_mass * (u * u + v * v)
 }

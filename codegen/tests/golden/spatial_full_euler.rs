@@ -22,36 +22,43 @@ pub struct Parameters {
 /// Every parameter-only coefficient of [`rhs`], computed once from [`Parameters`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Coefficients<T> {
-    /// `Ixx`
-    pub k0: T,
-    /// `Ixy`
-    pub k1: T,
-    /// `Ixz`
-    pub k2: T,
-    /// `Iyy`
-    pub k3: T,
-    /// `Iyz`
-    pub k4: T,
-    /// `Izz`
-    pub k5: T,
-    /// `M^-1`
-    pub k6: T,
-    /// `Iyy*Izz*inv_det - Iyz^2*inv_det`
-    pub k7: T,
-    /// `Ixy*Izz*inv_det - Ixz*Iyz*inv_det`
-    pub k8: T,
-    /// `Ixy*Iyz*inv_det - Ixz*Iyy*inv_det`
-    pub k9: T,
-    /// `Ixx*Izz*inv_det - Ixz^2*inv_det`
-    pub k10: T,
-    /// `Ixx*Iyz*inv_det - Ixy*Ixz*inv_det`
-    pub k11: T,
-    /// `Ixx*Iyy*inv_det - Ixy^2*inv_det`
-    pub k12: T,
+    /// A parameter, or its reciprocal or half: `Ixx`.
+    pub ixx: T,
+    /// A parameter, or its reciprocal or half: `Ixy`.
+    pub ixy: T,
+    /// A parameter, or its reciprocal or half: `Ixz`.
+    pub ixz: T,
+    /// A parameter, or its reciprocal or half: `Iyy`.
+    pub iyy: T,
+    /// A parameter, or its reciprocal or half: `Iyz`.
+    pub iyz: T,
+    /// A parameter, or its reciprocal or half: `Izz`.
+    pub izz: T,
+    /// A parameter, or its reciprocal or half: `M^-1`.
+    pub inv_mass: T,
+    /// The entry ([I]⁻¹)_xx (up to sign): `Iyy*Izz*inv_det - Iyz^2*inv_det`.
+    pub inv_inertia_xx: T,
+    /// The entry ([I]⁻¹)_xy (up to sign): `Ixy*Izz*inv_det - Ixz*Iyz*inv_det`.
+    pub inv_inertia_xy: T,
+    /// The entry ([I]⁻¹)_xz (up to sign): `Ixy*Iyz*inv_det - Ixz*Iyy*inv_det`.
+    pub inv_inertia_xz: T,
+    /// The entry ([I]⁻¹)_yy (up to sign): `Ixx*Izz*inv_det - Ixz^2*inv_det`.
+    pub inv_inertia_yy: T,
+    /// The entry ([I]⁻¹)_yz (up to sign): `Ixx*Iyz*inv_det - Ixy*Ixz*inv_det`.
+    pub inv_inertia_yz: T,
+    /// The entry ([I]⁻¹)_zz (up to sign): `Ixx*Iyy*inv_det - Ixy^2*inv_det`.
+    pub inv_inertia_zz: T,
+    /// A parameter, or its reciprocal or half: `1/2*Ixx`.
+    pub half_ixx: T,
+    /// A parameter, or its reciprocal or half: `1/2*Iyy`.
+    pub half_iyy: T,
+    /// A parameter, or its reciprocal or half: `1/2*Izz`.
+    pub half_izz: T,
+    /// A parameter, or its reciprocal or half: `1/2*M`.
+    pub half_mass: T,
 }
 impl<T: SimdRealField + Copy> Coefficients<T> {
     /// Computes the coefficients (in f64, then converted to `T`).
-    #[allow(unused_variables)]
     pub fn new(parameters: &Parameters) -> Self {
         let mass = parameters.mass;
         let ixx = parameters.ixx;
@@ -64,19 +71,23 @@ impl<T: SimdRealField + Copy> Coefficients<T> {
             / (ixx * iyy * izz - ixx * iyz * iyz + 2.0 * ixy * ixz * iyz
                 - ixy * ixy * izz - ixz * ixz * iyy);
         Self {
-            k0: T::from_subset(&(ixx)),
-            k1: T::from_subset(&(ixy)),
-            k2: T::from_subset(&(ixz)),
-            k3: T::from_subset(&(iyy)),
-            k4: T::from_subset(&(iyz)),
-            k5: T::from_subset(&(izz)),
-            k6: T::from_subset(&(1.0 / (mass))),
-            k7: T::from_subset(&(iyy * izz * inv_det - iyz * iyz * inv_det)),
-            k8: T::from_subset(&(ixy * izz * inv_det - ixz * iyz * inv_det)),
-            k9: T::from_subset(&(ixy * iyz * inv_det - ixz * iyy * inv_det)),
-            k10: T::from_subset(&(ixx * izz * inv_det - ixz * ixz * inv_det)),
-            k11: T::from_subset(&(ixx * iyz * inv_det - ixy * ixz * inv_det)),
-            k12: T::from_subset(&(ixx * iyy * inv_det - ixy * ixy * inv_det)),
+            ixx: T::from_subset(&(ixx)),
+            ixy: T::from_subset(&(ixy)),
+            ixz: T::from_subset(&(ixz)),
+            iyy: T::from_subset(&(iyy)),
+            iyz: T::from_subset(&(iyz)),
+            izz: T::from_subset(&(izz)),
+            inv_mass: T::from_subset(&(1.0 / (mass))),
+            inv_inertia_xx: T::from_subset(&(iyy * izz * inv_det - iyz * iyz * inv_det)),
+            inv_inertia_xy: T::from_subset(&(ixy * izz * inv_det - ixz * iyz * inv_det)),
+            inv_inertia_xz: T::from_subset(&(ixy * iyz * inv_det - ixz * iyy * inv_det)),
+            inv_inertia_yy: T::from_subset(&(ixx * izz * inv_det - ixz * ixz * inv_det)),
+            inv_inertia_yz: T::from_subset(&(ixx * iyz * inv_det - ixy * ixz * inv_det)),
+            inv_inertia_zz: T::from_subset(&(ixx * iyy * inv_det - ixy * ixy * inv_det)),
+            half_ixx: T::from_subset(&(0.5 * ixx)),
+            half_iyy: T::from_subset(&(0.5 * iyy)),
+            half_izz: T::from_subset(&(0.5 * izz)),
+            half_mass: T::from_subset(&(0.5 * mass)),
         }
     }
 }
@@ -98,9 +109,9 @@ pub const STATE: [&str; 12] = [
 /// The input layout: the symbol of each entry of the input array.
 pub const INPUTS: [&str; 6] = ["F_x", "F_y", "F_z", "M_x", "M_y", "M_z"];
 /// Operations per call of [`rhs`]: additions, multiplications, divisions, square roots,
-/// trigonometric calls (`sin_cos` counts once).
+/// trigonometric calls (`sin_cos` of one angle counts once).
 pub const OPERATIONS: [(&str, u32); 5] = [
-    ("add", 37),
+    ("add", 33),
     ("mul", 51),
     ("div", 1),
     ("sqrt", 0),
@@ -111,7 +122,7 @@ pub const OPERATIONS: [(&str, u32); 5] = [
 /// State: `[u, v, w, p, q, r, x, y, z, phi, theta, psi]`; inputs: `[F_x, F_y, F_z, M_x, M_y, M_z]`.
 /// Returns the time derivative of the state.
 ///
-/// Cost per call: 37 add, 51 mul, 1 div, 0 sqrt, 3 trig (strategy: StagedMomentum).
+/// Cost per call: 33 add, 51 mul, 1 div, 0 sqrt, 3 trig (strategy: StagedMomentum).
 /// Singular at θ = ±90°, where sec θ is infinite (4.60).
 #[inline(always)]
 pub fn rhs<T: SimdRealField + Copy>(
@@ -121,64 +132,41 @@ pub fn rhs<T: SimdRealField + Copy>(
 ) -> [T; 12] {
     let [u, v, w, p, q, r, _, _, _, phi, theta, psi] = *state;
     let [f_x, f_y, f_z, m_x, m_y, m_z] = *input;
-    let h_x = k.k0 * p + k.k1 * q + k.k2 * r;
-    let h_y = k.k1 * p + k.k3 * q + k.k4 * r;
-    let h_z = k.k2 * p + k.k4 * q + k.k5 * r;
-    let h_y_r = h_y * r;
-    let h_z_q = h_z * q;
-    let b_x = -h_y_r + h_z_q - m_x;
-    let h_x_r = h_x * r;
-    let h_z_p = h_z * p;
-    let b_y = h_x_r - h_z_p - m_y;
-    let h_x_q = h_x * q;
-    let h_y_p = h_y * p;
-    let b_z = -h_x_q + h_y_p - m_z;
-    let [(s_phi, c_phi), (s_theta, c_theta), (s_psi, c_psi)] = sin_cos([
+    let [(sin_phi, cos_phi), (sin_theta, cos_theta), (sin_psi, cos_psi)] = eom_kernel::sin_cos([
         phi,
         theta,
         psi,
     ]);
-    let v_c_phi = v * c_phi;
-    let w_s_phi = w * s_phi;
-    let rolled_y = v_c_phi - w_s_phi;
-    let v_s_phi = v * s_phi;
-    let w_c_phi = w * c_phi;
-    let rolled_z = v_s_phi + w_c_phi;
-    let rolled_z_s_theta = rolled_z * s_theta;
-    let u_c_theta = u * c_theta;
-    let pitched_x = rolled_z_s_theta + u_c_theta;
-    let rolled_z_c_theta = rolled_z * c_theta;
-    let u_s_theta = u * s_theta;
-    let pitched_z = rolled_z_c_theta - u_s_theta;
-    let q_c_phi = q * c_phi;
-    let r_s_phi = r * s_phi;
-    let omega3_y = q_c_phi - r_s_phi;
-    let q_s_phi = q * s_phi;
-    let r_c_phi = r * c_phi;
-    let omega3_z = q_s_phi + r_c_phi;
-    let sec_theta = c_theta.simd_recip();
-    let omega3_z_sec_theta = omega3_z * sec_theta;
-    let heading_rate = omega3_z_sec_theta;
-    let q_w = q * w;
-    let r_v = r * v;
-    let u_rate = k.k6 * f_x - q_w + r_v;
-    let p_w = p * w;
-    let r_u = r * u;
-    let v_rate = k.k6 * f_y + p_w - r_u;
-    let p_v = p * v;
-    let q_u = q * u;
-    let w_rate = k.k6 * f_z - p_v + q_u;
-    let p_rate = -k.k7 * b_x + k.k8 * b_y - k.k9 * b_z;
-    let q_rate = k.k8 * b_x - k.k10 * b_y + k.k11 * b_z;
-    let r_rate = -k.k9 * b_x + k.k11 * b_y - k.k12 * b_z;
-    let pitched_x_c_psi = pitched_x * c_psi;
-    let rolled_y_s_psi = rolled_y * s_psi;
-    let x_rate = pitched_x_c_psi - rolled_y_s_psi;
-    let pitched_x_s_psi = pitched_x * s_psi;
-    let rolled_y_c_psi = rolled_y * c_psi;
-    let y_rate = pitched_x_s_psi + rolled_y_c_psi;
-    let heading_rate_s_theta = heading_rate * s_theta;
-    let phi_rate = heading_rate_s_theta + p;
+    // 4.49: translation about G, body axes
+    let u_rate = k.inv_mass * f_x - q * w + r * v;
+    let v_rate = k.inv_mass * f_y + p * w - r * u;
+    let w_rate = k.inv_mass * f_z - p * v + q * u;
+    // 4.51: Euler's equations with all products of inertia
+    let h_x = k.ixx * p + k.ixy * q + k.ixz * r;
+    let h_z = k.ixz * p + k.iyz * q + k.izz * r;
+    let b_y = r * h_x - p * h_z - m_y;
+    let h_y = k.ixy * p + k.iyy * q + k.iyz * r;
+    let b_x = q * h_z - r * h_y - m_x;
+    let b_z = p * h_y - q * h_x - m_z;
+    let p_rate = k.inv_inertia_xy * b_y - k.inv_inertia_xx * b_x
+        - k.inv_inertia_xz * b_z;
+    let q_rate = k.inv_inertia_xy * b_x - k.inv_inertia_yy * b_y
+        + k.inv_inertia_yz * b_z;
+    let r_rate = k.inv_inertia_yz * b_y - k.inv_inertia_xz * b_x
+        - k.inv_inertia_zz * b_z;
+    // 4.57: the position rates in space axes, E·v one rotation at a time
+    let rolled_z = v * sin_phi + w * cos_phi;
+    let pitched_x = rolled_z * sin_theta + u * cos_theta;
+    let rolled_y = v * cos_phi - w * sin_phi;
+    let x_rate = pitched_x * cos_psi - rolled_y * sin_psi;
+    let y_rate = pitched_x * sin_psi + rolled_y * cos_psi;
+    let pitched_z = rolled_z * cos_theta - u * sin_theta;
+    // 4.60: the Euler-angle rates
+    let omega3_z = q * sin_phi + r * cos_phi;
+    let sec_theta = cos_theta.simd_recip();
+    let heading_rate = omega3_z * sec_theta;
+    let phi_rate = heading_rate * sin_theta + p;
+    let omega3_y = q * cos_phi - r * sin_phi;
     [
         u_rate,
         v_rate,
@@ -194,173 +182,15 @@ pub fn rhs<T: SimdRealField + Copy>(
         heading_rate,
     ]
 }
-/// `(sin a, cos a)` of every angle in `angles`, as [`rhs`] computes them.
-///
-/// For `f64` and `f32` (widened to f64, rounded once at the end) this is the kernel in
-/// the private module `sin_cos_kernel`: one argument reduction shared by sine and
-/// cosine, within 2 ulp of the platform's `sin` and `cos`, the angles side by side so
-/// that the compiler can pair them in SIMD registers. Every other scalar (SIMD lanes,
-/// dual numbers) uses its own `simd_sin_cos`.
-#[inline(always)]
-pub fn sin_cos<T: SimdRealField + Copy, const N: usize>(angles: [T; N]) -> [(T, T); N] {
-    let scalars: &dyn core::any::Any = &angles;
-    let mut wide = [0.0; N];
-    if let Some(angles) = scalars.downcast_ref::<[f64; N]>() {
-        wide = *angles;
-    } else if let Some(angles) = scalars.downcast_ref::<[f32; N]>() {
-        for (wide, &angle) in wide.iter_mut().zip(angles) {
-            *wide = f64::from(angle);
-        }
-    } else {
-        let mut pairs = [(T::zero(), T::zero()); N];
-        for (pair, angle) in pairs.iter_mut().zip(angles) {
-            *pair = angle.simd_sin_cos();
-        }
-        return pairs;
-    }
-    let mut pairs = [(T::zero(), T::zero()); N];
-    for (pair, (s, c)) in pairs.iter_mut().zip(sin_cos_kernel::sin_cos(wide)) {
-        *pair = (T::from_subset(&s), T::from_subset(&c));
-    }
-    pairs
-}
-/// Sine and cosine of `f64` angles from one argument reduction each.
-///
-/// `k = round(2x/π)`; `r = x − k·π/2` in three steps, π/2 split Cody–Waite style so
-/// that the first two products are exact; the minimax polynomials of fdlibm's
-/// `__kernel_sin` and `__kernel_cos` on |r| ≤ π/4; the quadrant `k mod 4`, read from the
-/// low bits of the rounding sum (those of k, two's complement), orders the pair and
-/// flips sign bits. Tiny arguments, NaN, infinities and
-/// |x| > [`LIMIT`] take a cold path.
-mod sin_cos_kernel {
-    /// 1.5·2⁵²: adding and subtracting it rounds an f64 below 2⁵¹ to an integer. Bits `0x4338000000000000`.
-    const ROUNDER: f64 = 6755399441055744.0;
-    /// The first 33 bits of π/2: `k·PIO2_1` is exact for |k| ≤ 2¹⁹. Bits `0x3FF921FB54400000`.
-    const PIO2_1: f64 = 1.5707963267341256;
-    /// The next 33 bits of π/2: `k·PIO2_2` is exact too. Bits `0x3DD0B4611A600000`.
-    const PIO2_2: f64 = 6.077100506303966e-11;
-    /// π/2 − PIO2_1 − PIO2_2. Bits `0x3BA3198A2E037073`.
-    const PIO2_2T: f64 = 2.0222662487959506e-21;
-    /// Below 2¹⁹·π/2, so that |k| ≤ 2¹⁹ and the products above stay exact. Bits `0x412921FA00000000`.
-    const LIMIT: f64 = 823549.0;
-    /// 2⁻²⁷: below it sin x rounds to x and cos x to 1. Bits `0x3E40000000000000`.
-    const TINY: f64 = 7.450580596923828e-9;
-    /// fdlibm `__kernel_sin`, r³. Bits `0xBFC5555555555549`.
-    const S1: f64 = -0.16666666666666632;
-    /// fdlibm `__kernel_sin`, r⁵. Bits `0x3F8111111110F8A6`.
-    const S2: f64 = 0.00833333333332249;
-    /// fdlibm `__kernel_sin`, r⁷. Bits `0xBF2A01A019C161D5`.
-    const S3: f64 = -1.984126982985795e-4;
-    /// fdlibm `__kernel_sin`, r⁹. Bits `0x3EC71DE357B1FE7D`.
-    const S4: f64 = 2.7557313707070068e-6;
-    /// fdlibm `__kernel_sin`, r¹¹. Bits `0xBE5AE5E68A2B9CEB`.
-    const S5: f64 = -2.5050760253406863e-8;
-    /// fdlibm `__kernel_sin`, r¹³. Bits `0x3DE5D93A5ACFD57C`.
-    const S6: f64 = 1.58969099521155e-10;
-    /// fdlibm `__kernel_cos`, r⁴. Bits `0x3FA555555555554C`.
-    const C1: f64 = 0.0416666666666666;
-    /// fdlibm `__kernel_cos`, r⁶. Bits `0xBF56C16C16C15177`.
-    const C2: f64 = -0.001388888888887411;
-    /// fdlibm `__kernel_cos`, r⁸. Bits `0x3EFA01A019CB1590`.
-    const C3: f64 = 2.480158728947673e-5;
-    /// fdlibm `__kernel_cos`, r¹⁰. Bits `0xBE927E4F809C52AD`.
-    const C4: f64 = -2.7557314351390663e-7;
-    /// fdlibm `__kernel_cos`, r¹². Bits `0x3E21EE9EBDB4B1C4`.
-    const C5: f64 = 2.087572321298175e-9;
-    /// fdlibm `__kernel_cos`, r¹⁴. Bits `0xBDA8FAE9BE8838D4`.
-    const C6: f64 = -1.1359647557788195e-11;
-    /// The sign bit of an f64.
-    const SIGN_BIT: u64 = 1 << 63;
-    /// `(sin x, cos x)` of every `x`. One unsigned comparison of the bits of each |x|,
-    /// which order as the magnitudes do, tells whether all are in the kernel's range.
-    #[inline(always)]
-    pub fn sin_cos<const N: usize>(x: [f64; N]) -> [(f64, f64); N] {
-        let outside = x
-            .iter()
-            .fold(
-                false,
-                |outside, &x| {
-                    let magnitude = x.to_bits() & !SIGN_BIT;
-                    outside
-                        | (magnitude.wrapping_sub(TINY.to_bits())
-                            > LIMIT.to_bits() - TINY.to_bits())
-                },
-            );
-        let mut pairs = [(0.0, 0.0); N];
-        for (pair, &x) in pairs.iter_mut().zip(&x) {
-            *pair = if outside {
-                one_at_a_time(x)
-            } else if N == 1 {
-                in_range(x, Placement::Branch)
-            } else {
-                in_range(x, Placement::Masks)
-            };
-        }
-        pairs
-    }
-    /// How [`in_range`] puts a reduced pair in its quadrant. With several angles, by bit
-    /// masks, which the compiler can pair in SIMD registers; with one, by branches, so
-    /// that a model that reads only the sine (the pendulum) evaluates the cosine's
-    /// polynomial only in the quadrants that need it.
-    #[derive(Clone, Copy, PartialEq)]
-    enum Placement {
-        Masks,
-        Branch,
-    }
-    /// One angle in the kernel's range: within ±π/4 evaluate it as it is; beyond, reduce,
-    /// evaluate, place in its quadrant.
-    #[inline(always)]
-    fn in_range(x: f64, placement: Placement) -> (f64, f64) {
-        if x.abs() <= core::f64::consts::FRAC_PI_4 {
-            return (sin_reduced(x), cos_reduced(x));
-        }
-        let shifted = x * core::f64::consts::FRAC_2_PI + ROUNDER;
-        let quadrant = shifted.to_bits();
-        let k = shifted - ROUNDER;
-        let r = ((x - k * PIO2_1) - k * PIO2_2) - k * PIO2_2T;
-        let (s, c) = (sin_reduced(r).to_bits(), cos_reduced(r).to_bits());
-        let (s, c) = if placement == Placement::Branch {
-            if quadrant & 1 == 0 { (s, c) } else { (c, s) }
-        } else {
-            let swap = 0u64.wrapping_sub(quadrant & 1);
-            ((s & !swap) | (c & swap), (c & !swap) | (s & swap))
-        };
-        let sin_sign = (quadrant << 62) & SIGN_BIT;
-        let cos_sign = (quadrant.wrapping_add(1) << 62) & SIGN_BIT;
-        (f64::from_bits(s ^ sin_sign), f64::from_bits(c ^ cos_sign))
-    }
-    /// Any angle: tiny ones, where sin x rounds to x and cos x to 1; NaN, infinite and
-    /// beyond [`LIMIT`] ones, for the platform; the others through the kernel.
-    #[cold]
-    #[inline(never)]
-    fn one_at_a_time(x: f64) -> (f64, f64) {
-        let magnitude = x.abs();
-        if magnitude < TINY {
-            (x, 1.0)
-        } else if magnitude <= LIMIT {
-            in_range(x, Placement::Branch)
-        } else {
-            x.sin_cos()
-        }
-    }
-    /// sin r for |r| ≤ π/4: `r + r³ P(r²)`, P of degree 5 in pairs (Estrin's scheme),
-    /// so that the chain of dependent operations is four deep instead of seven.
-    #[inline(always)]
-    fn sin_reduced(r: f64) -> f64 {
-        let z = r * r;
-        let w = z * z;
-        let p = (S1 + z * S2) + w * ((S3 + z * S4) + w * (S5 + z * S6));
-        r + z * r * p
-    }
-    /// cos r for |r| ≤ π/4: `1 − r²/2 + r⁴ Q(r²)`, with the rounding error of
-    /// `1 − r²/2` added back; Q in pairs as in [`sin_reduced`].
-    #[inline(always)]
-    fn cos_reduced(r: f64) -> f64 {
-        let z = r * r;
-        let w = z * z;
-        let q = (C1 + z * C2) + w * ((C3 + z * C4) + w * (C5 + z * C6));
-        let half_z = 0.5 * z;
-        let head = 1.0 - half_z;
-        head + (((1.0 - head) - half_z) + w * q)
-    }
+/// The kinetic energy of the state (4.32), from the proved form. Cost per call: 8 add, 16 mul.
+#[inline]
+pub fn kinetic_energy<T: SimdRealField + Copy>(
+    k: &Coefficients<T>,
+    state: &[T; 12],
+) -> T {
+    let [u, v, w, p, q, r, _, _, _, _, _, _] = *state;
+    // T = ½M(u² + v² + w²) + ½ωᵀ[I]ω (4.32, with what the model's state and symmetry make zero left out)
+    k.ixy * (p * q) + k.ixz * (p * r) + k.half_ixx * (p * p) + k.iyz * (q * r)
+        + k.half_iyy * (q * q) + k.half_izz * (r * r)
+        + k.half_mass * (u * u + v * v + w * w)
 }

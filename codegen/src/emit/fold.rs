@@ -1,0 +1,178 @@
+//! The proof carried to the emitted code: a program, folded back into the canonical form, must
+//! equal the system it was built from, exactly.
+//!
+//! Every node is folded once, in id order (operands first), into an [`Expr`]: a variable is its
+//! symbol, a hoisted coefficient its parameter expression, sin and cos their atoms, a
+//! reciprocal of a monomial its inverse (sec θ = cos⁻¹θ). The one reciprocal that is not a
+//! monomial, 1/|q|² of the quaternion track, is folded as the reciprocal of the stage's symbol:
+//! the stage itself is checked like every other value, and the outputs are compared with the
+//! system's outputs with every other stage substituted back. Each stage and each output must
+//! then equal the system's, term by term; the kinetic energy likewise.
+//!
+//! Because the comparison is exact, any change to one operation — a swapped operand, a flipped
+//! sign, a dropped term, a wrong coefficient — leaves a residual and stops the build with the
+//! model's name and the output that differs (`tests/program_check.rs` tries every such mutant).
+
+use super::program::{Function, Node, Program};
+use crate::model::{ModelError, System};
+use crate::symbolic::{Expr, SymbolicError};
+
+/// Checks that `program` computes exactly the stages, outputs and kinetic energy of `system`.
+pub fn verify(system: &System, program: &Program) -> Result<(), ModelError> {
+    let fail = |what: String, residual: &Expr| ModelError::Verification {
+        model: system.name.clone(),
+        what,
+        residual: residual.to_string(),
+    };
+    let symbolic = |source: SymbolicError| ModelError::Symbolic {
+        model: system.name.clone(),
+        source,
+    };
+    let opaque = opaque_stages(system, program);
+    let folded = fold(system, program, &opaque).map_err(symbolic)?;
+    for ((name, definition), named) in system.stages.iter().zip(&program.rhs.stages) {
+        let wanted = expand(system, definition, &opaque).map_err(symbolic)?;
+        let residual = &folded[named.id.index()] - &wanted;
+        if !residual.is_zero() {
+            return Err(fail(format!("the emitted stage {name} differs"), &residual));
+        }
+    }
+    check_count(system, &program.rhs, system.stages.len(), system.outputs.len())?;
+    for ((state, output), named) in system
+        .state
+        .iter()
+        .zip(&system.outputs)
+        .zip(&program.rhs.outputs)
+    {
+        let wanted = expand(system, output, &opaque).map_err(symbolic)?;
+        let residual = &folded[named.id.index()] - &wanted;
+        if !residual.is_zero() {
+            return Err(fail(
+                format!("the emitted rate of {state} differs from the proved form"),
+                &residual,
+            ));
+        }
+    }
+    match (&system.kinetic_energy, &program.kinetic_energy) {
+        (None, None) => Ok(()),
+        (Some(wanted), Some(function)) => {
+            let residual = &folded[function.outputs[0].id.index()] - wanted;
+            if residual.is_zero() {
+                Ok(())
+            } else {
+                Err(fail(
+                    "the emitted kinetic energy differs from 4.32".into(),
+                    &residual,
+                ))
+            }
+        }
+        _ => Err(fail(
+            "the program and the system disagree on having a kinetic energy".into(),
+            &Expr::zero(),
+        )),
+    }
+}
+
+fn check_count(
+    system: &System,
+    function: &Function,
+    stages: usize,
+    outputs: usize,
+) -> Result<(), ModelError> {
+    if function.stages.len() == stages && function.outputs.len() == outputs {
+        return Ok(());
+    }
+    Err(ModelError::Verification {
+        model: system.name.clone(),
+        what: format!(
+            "the program has {} stages and {} outputs, the system {stages} and {outputs}",
+            function.stages.len(),
+            function.outputs.len()
+        ),
+        residual: String::new(),
+    })
+}
+
+/// The stages whose reciprocal the program takes although they are not monomials: they stay
+/// symbols in the folded form.
+fn opaque_stages(system: &System, program: &Program) -> Vec<String> {
+    let mut opaque = Vec::new();
+    for node in &program.nodes {
+        if let Node::Recip(of) = node
+            && let Some((name, _)) = system
+                .stages
+                .iter()
+                .zip(&program.rhs.stages)
+                .find(|(_, named)| named.id == *of)
+                .map(|((name, value), _)| (name, value))
+            && !opaque.contains(name)
+        {
+            opaque.push(name.clone());
+        }
+    }
+    opaque
+}
+
+/// A value of the system with every stage but the opaque ones substituted back.
+fn expand(system: &System, value: &Expr, opaque: &[String]) -> Result<Expr, SymbolicError> {
+    system
+        .stages
+        .iter()
+        .rev()
+        .filter(|(name, _)| !opaque.contains(name))
+        .try_fold(value.clone(), |value, (name, definition)| {
+            value.subs(name, definition)
+        })
+}
+
+/// Every node of the program as an expression, by id.
+pub fn fold(
+    system: &System,
+    program: &Program,
+    opaque: &[String],
+) -> Result<Vec<Expr>, SymbolicError> {
+    let mut folded: Vec<Expr> = Vec::with_capacity(program.nodes.len());
+    for node in &program.nodes {
+        let value = match node {
+            Node::Variable(symbol) => Expr::symbol(symbol),
+            Node::Coefficient(index) => program.coefficients[*index].value.clone(),
+            Node::Constant(c) => Expr::constant(c.clone()),
+            Node::Sin(angle) => Expr::sin(&angle_name(program, *angle)),
+            Node::Cos(angle) => Expr::cos(&angle_name(program, *angle)),
+            Node::Recip(of) => reciprocal(system, program, &folded, *of, opaque)?,
+            Node::Neg(a) => -&folded[a.index()],
+            Node::Add(a, b) => &folded[a.index()] + &folded[b.index()],
+            Node::Sub(a, b) => &folded[a.index()] - &folded[b.index()],
+            Node::Mul(a, b) => &folded[a.index()] * &folded[b.index()],
+        };
+        folded.push(value);
+    }
+    Ok(folded)
+}
+
+fn angle_name(program: &Program, angle: super::program::Id) -> String {
+    match program.node(angle) {
+        Node::Variable(symbol) => symbol.clone(),
+        other => format!("<not an angle: {other:?}>"),
+    }
+}
+
+/// 1/x: the inverse of a monomial, or the reciprocal symbol of an opaque stage.
+fn reciprocal(
+    system: &System,
+    program: &Program,
+    folded: &[Expr],
+    of: super::program::Id,
+    opaque: &[String],
+) -> Result<Expr, SymbolicError> {
+    let stage = system
+        .stages
+        .iter()
+        .zip(&program.rhs.stages)
+        .find(|(_, named)| named.id == of)
+        .map(|((name, _), _)| name);
+    match stage {
+        Some(name) if opaque.contains(name) => Expr::symbol(name).pow(-1),
+        _ => folded[of.index()].reciprocal(),
+    }
+}
