@@ -1,36 +1,16 @@
-//! Proves every equation of the chapter, then emits every model variant `eom` ships into
-//! `OUT_DIR`. A derivation that does not match the book's form stops the build, naming the
-//! equation and printing the residual; so does a model whose emitted form does not compose
-//! back to the proved equations.
-
-use eom_codegen::{
-    check,
-    emit::{self, Trig},
-    model::Model,
-};
-use std::path::PathBuf;
+//! Proves every equation of the chapter, then emits every model variant `eom` ships, and the
+//! catalog that lists them, into `OUT_DIR`. A derivation that does not match the book's form
+//! stops the build, naming the equation and printing the residual; so does a model whose
+//! emitted program does not fold back to the proved equations.
 
 fn main() {
     println!("cargo::rerun-if-changed=build.rs");
-    if let Err(error) = check::check_all() {
-        fail(&format!(
-            "an equation of motion failed its proof:\n  {error}"
-        ));
+    if let Err(error) = eom_codegen::check::check_all() {
+        fail(&format!("an equation of motion failed its proof:\n  {error}"));
     }
-    let out_dir = PathBuf::from(std::env::var_os("OUT_DIR").expect("cargo sets OUT_DIR"));
-    if let Err(error) = emit::emit_into(&out_dir, &Model::all()) {
-        fail(&format!("a model could not be emitted:\n  {error}"));
-    }
-    // The models with angles again, with the platform's sin and cos, so that the benches can
-    // show what the emitted sin_cos kernel is worth on its own.
-    let std_trig = out_dir.join("std_trig");
-    let with_angles: Vec<Model> = Model::all().into_iter().filter(Model::has_angles).collect();
-    let emitted = std::fs::create_dir_all(&std_trig)
-        .map_err(|e| e.to_string())
-        .and_then(|()| {
-            emit::emit_into_with(&std_trig, &with_angles, Trig::Std).map_err(|e| e.to_string())
-        });
-    if let Err(error) = emitted {
+    let out_dir = std::path::PathBuf::from(std::env::var_os("OUT_DIR").expect("cargo sets OUT_DIR"));
+    let models = eom_codegen::model::Model::all();
+    if let Err(error) = eom_codegen::emit::emit_with_catalog(&out_dir, &models) {
         fail(&format!("a model could not be emitted:\n  {error}"));
     }
 }

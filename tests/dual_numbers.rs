@@ -3,11 +3,11 @@
 //! differences of the f64 functions.
 
 use eom::InertiaTensor;
-use eom::models::{SpatialFullEuler, SpatialXzQuaternion};
+use eom::models::{Model, SpatialFullEuler, SpatialXzQuaternion};
 use num_dual::Dual64;
 
-const FORCE: [f64; 3] = [1.0, -2.0, 0.5];
-const MOMENT: [f64; 3] = [0.1, 0.3, -0.2];
+/// Force `[F_x, F_y, F_z]` and moment `[M_x, M_y, M_z]` about G, body axes.
+const INPUT: [f64; 6] = [1.0, -2.0, 0.5, 0.1, 0.3, -0.2];
 
 fn tensor() -> InertiaTensor {
     InertiaTensor::new(2.0, 3.0, 4.0, 0.1, -0.05, 0.2).unwrap()
@@ -31,13 +31,12 @@ fn euler_rates_differentiate_exactly_with_respect_to_pitch() {
     let dual_model = SpatialFullEuler::<Dual64>::new(5.0, &tensor()).unwrap();
     let mut dual_state = state.map(Dual64::from);
     dual_state[10] = Dual64::from(state[10]).derivative();
-    let lift = |v: [f64; 3]| v.map(Dual64::from);
-    let derivative = dual_model.rhs(&dual_state, &lift(FORCE), &lift(MOMENT));
+    let derivative = dual_model.rhs(&dual_state, &INPUT.map(Dual64::from));
     let h = 1e-6;
     let shifted = |dx: f64| {
         let mut s = state;
         s[10] += dx;
-        model.rhs(&s, &FORCE, &MOMENT)
+        model.rhs(&s, &INPUT)
     };
     let (plus, minus) = (shifted(h), shifted(-h));
     for i in 0..12 {
@@ -46,7 +45,7 @@ fn euler_rates_differentiate_exactly_with_respect_to_pitch() {
             (plus[i] - minus[i]) / (2.0 * h),
             &format!("d rate[{i}] / dθ"),
         );
-        assert_eq!(derivative[i].re, model.rhs(&state, &FORCE, &MOMENT)[i]);
+        assert_eq!(derivative[i].re, model.rhs(&state, &INPUT)[i]);
     }
 }
 
@@ -61,16 +60,12 @@ fn quaternion_model_differentiates_with_respect_to_the_roll_rate() {
     let dual_model = SpatialXzQuaternion::<Dual64>::new(5.0, &tensor).unwrap();
     let mut dual_state = state.map(Dual64::from);
     dual_state[3] = Dual64::from(state[3]).derivative();
-    let derivative = dual_model.rhs(
-        &dual_state,
-        &FORCE.map(Dual64::from),
-        &MOMENT.map(Dual64::from),
-    );
+    let derivative = dual_model.rhs(&dual_state, &INPUT.map(Dual64::from));
     let h = 1e-6;
     let shifted = |dx: f64| {
         let mut s = state;
         s[3] += dx;
-        model.rhs(&s, &FORCE, &MOMENT)
+        model.rhs(&s, &INPUT)
     };
     let (plus, minus) = (shifted(h), shifted(-h));
     for i in 0..13 {

@@ -11,15 +11,15 @@
 mod common;
 
 use common::{
-    Class, PendulumCase, Pitch, PlanarCase, Spatial, SpatialCase, at_g_scale, generated, generic,
+    Symmetry, PendulumCase, Pitch, PlanarCase, Spatial, SpatialCase, at_g_scale, generated, generic,
     inverse_scale, midship_scale, pendulum_case, pendulum_scale, planar_case, relative_gap,
     space_fixed_scale, spatial_case, spatial_scale,
 };
 use eom::InertiaTensor;
 use eom::generic::{self, ModelError};
 use eom::models::{
-    Pendulum, PlanarAtG, PlanarMidship, PlanarSpaceFixed, SpatialFullEuler, SpatialFullQuaternion,
-    SpatialPrincipalEuler, SpatialPrincipalQuaternion, SpatialXzEuler, SpatialXzQuaternion,
+    Model, Pendulum, PlanarAtG, PlanarMidship, PlanarSpaceFixed, SpatialFullEuler,
+    SpatialFullQuaternion, SpatialPrincipalQuaternion, SpatialXzEuler, SpatialXzQuaternion,
 };
 use nalgebra::{Quaternion, UnitQuaternion, Vector3, Vector6};
 
@@ -95,7 +95,7 @@ fn pendulum_gap(case: &PendulumCase) -> f64 {
     let (i0, m, g, h) = (case.i0, case.mass, case.g, case.h);
     let ours = Pendulum::<f64>::new(i0, m, g, h)
         .unwrap()
-        .rhs(&case.state, case.moment);
+        .rhs(&case.state, &[case.moment]);
     let theirs = generic::Pendulum::<f64>::new(i0, m, g, h).unwrap();
     let theirs = theirs.rhs(&case.state.into(), case.moment);
     relative_gap(&ours, theirs.as_slice(), &pendulum_scale(case))
@@ -171,51 +171,71 @@ fn pendulum_f32_gap(case: &PendulumCase) -> f64 {
     };
     let single = Pendulum::<f32>::new(i0, m, g, h)
         .unwrap()
-        .rhs(&state, moment);
+        .rhs(&state, &[moment]);
     let double = Pendulum::<f64>::new(i0, m, g, h).unwrap();
-    let double = double.rhs(&rounded.state, rounded.moment);
+    let double = double.rhs(&rounded.state, &[rounded.moment]);
     let gap = relative_gap(&single.map(f64::from), &double, &pendulum_scale(&rounded));
     gap / f64::from(f32::EPSILON)
 }
-
-use Class::{Full, Principal, Xz};
-use Pitch::{NearVertical, Random};
-type FullEuler = SpatialFullEuler<f64>;
-type FullQuaternion = SpatialFullQuaternion<f64>;
-type XzEuler = SpatialXzEuler<f64>;
-type XzQuaternion = SpatialXzQuaternion<f64>;
-type PrincipalEuler = SpatialPrincipalEuler<f64>;
-type PrincipalQuaternion = SpatialPrincipalQuaternion<f64>;
 
 properties! {
     pendulum_matches_generic: pendulum_case(), pendulum_gap, F64_TOLERANCE;
     planar_at_g_matches_generic: planar_case(), at_g_gap, F64_TOLERANCE;
     planar_midship_matches_generic: planar_case(), midship_gap, F64_TOLERANCE;
     planar_space_fixed_matches_generic: planar_case(), space_fixed_gap, F64_TOLERANCE;
-    full_euler_matches_generic: spatial_case(Full, Random), spatial_gap::<FullEuler>, F64_TOLERANCE;
-    full_euler_matches_generic_near_vertical: spatial_case(Full, NearVertical), spatial_gap::<FullEuler>, F64_TOLERANCE;
-    full_quaternion_matches_generic: spatial_case(Full, Random), spatial_gap::<FullQuaternion>, F64_TOLERANCE;
-    xz_euler_matches_generic: spatial_case(Xz, Random), spatial_gap::<XzEuler>, F64_TOLERANCE;
-    xz_euler_matches_generic_near_vertical: spatial_case(Xz, NearVertical), spatial_gap::<XzEuler>, F64_TOLERANCE;
-    xz_quaternion_matches_generic: spatial_case(Xz, Random), spatial_gap::<XzQuaternion>, F64_TOLERANCE;
-    principal_euler_matches_generic: spatial_case(Principal, Random), spatial_gap::<PrincipalEuler>, F64_TOLERANCE;
-    principal_euler_matches_generic_near_vertical: spatial_case(Principal, NearVertical), spatial_gap::<PrincipalEuler>, F64_TOLERANCE;
-    principal_quaternion_matches_generic: spatial_case(Principal, Random), spatial_gap::<PrincipalQuaternion>, F64_TOLERANCE;
-    xz_euler_equals_full_euler_without_ixy_iyz: spatial_case(Xz, NearVertical), pruned_gap::<XzEuler, FullEuler>, PRUNED_TOLERANCE;
-    principal_euler_equals_full_euler_without_products: spatial_case(Principal, Random), pruned_gap::<PrincipalEuler, FullEuler>, PRUNED_TOLERANCE;
-    principal_euler_equals_xz_euler_without_ixz: spatial_case(Principal, Random), pruned_gap::<PrincipalEuler, XzEuler>, PRUNED_TOLERANCE;
-    xz_quaternion_equals_full_quaternion_without_ixy_iyz: spatial_case(Xz, Random), pruned_gap::<XzQuaternion, FullQuaternion>, PRUNED_TOLERANCE;
-    principal_quaternion_equals_full_quaternion_without_products: spatial_case(Principal, Random), pruned_gap::<PrincipalQuaternion, FullQuaternion>, PRUNED_TOLERANCE;
-    full_euler_f32_matches_f64: spatial_case(Full, Random), f32_gap::<SpatialFullEuler<f32>, FullEuler>, F32_TOLERANCE;
-    full_euler_f32_matches_f64_near_vertical: spatial_case(Full, NearVertical), f32_gap::<SpatialFullEuler<f32>, FullEuler>, F32_TOLERANCE;
-    full_quaternion_f32_matches_f64: spatial_case(Full, Random), f32_gap::<SpatialFullQuaternion<f32>, FullQuaternion>, F32_TOLERANCE;
-    xz_euler_f32_matches_f64: spatial_case(Xz, NearVertical), f32_gap::<SpatialXzEuler<f32>, XzEuler>, F32_TOLERANCE;
-    xz_quaternion_f32_matches_f64: spatial_case(Xz, Random), f32_gap::<SpatialXzQuaternion<f32>, XzQuaternion>, F32_TOLERANCE;
-    principal_euler_f32_matches_f64: spatial_case(Principal, NearVertical), f32_gap::<SpatialPrincipalEuler<f32>, PrincipalEuler>, F32_TOLERANCE;
-    principal_quaternion_f32_matches_f64: spatial_case(Principal, Random), f32_gap::<SpatialPrincipalQuaternion<f32>, PrincipalQuaternion>, F32_TOLERANCE;
     planar_f32_matches_f64: planar_case(), planar_f32_gap, F32_TOLERANCE;
     pendulum_f32_matches_f64: pendulum_case(), pendulum_f32_gap, F32_TOLERANCE;
 }
+
+/// The full-tensor variant of a kinematics, which a pruned variant is compared with.
+macro_rules! full_variant {
+    (Euler) => {
+        SpatialFullEuler<f64>
+    };
+    (Quaternion) => {
+        SpatialFullQuaternion<f64>
+    };
+}
+
+/// For every spatial variant of the catalog, a module of properties: generated against
+/// generic at random attitudes and near pitch ±90°, f32 against f64 likewise, the variant
+/// against the full one on a body of its class, and the refusal of a tensor whose
+/// determinant leaves f64.
+macro_rules! spatial_properties {
+    ($($module:ident => $type:ident {
+        family: $family:ident $(($symmetry:ident, $kinematics:ident))?,
+        state: $n:literal, inputs: $m:literal, title: $title:literal
+    },)*) => {$($(
+        mod $module {
+            use super::*;
+            type Model64 = eom::models::$type<f64>;
+            type Model32 = eom::models::$type<f32>;
+            const CLASS: Symmetry = Symmetry::$symmetry;
+
+            properties! {
+                matches_generic: spatial_case(CLASS, Pitch::Random), spatial_gap::<Model64>, F64_TOLERANCE;
+                matches_generic_near_vertical: spatial_case(CLASS, Pitch::NearVertical), spatial_gap::<Model64>, F64_TOLERANCE;
+                f32_matches_f64: spatial_case(CLASS, Pitch::Random), f32_gap::<Model32, Model64>, F32_TOLERANCE;
+                f32_matches_f64_near_vertical: spatial_case(CLASS, Pitch::NearVertical), f32_gap::<Model32, Model64>, F32_TOLERANCE;
+                equals_the_full_variant_on_a_body_of_its_class: spatial_case(CLASS, Pitch::Random), pruned_gap::<Model64, full_variant!($kinematics)>, PRUNED_TOLERANCE;
+            }
+
+            #[test]
+            fn refuses_a_tensor_whose_determinant_leaves_f64_as_the_generic_form_does() {
+                // Valid tensors (1, 1.5, 2)·s of the class whose determinant underflows
+                // (s = 1e-110) or overflows (s = 1e110): 1/det would make every rate NaN.
+                for s in [1e-110, 1e110] {
+                    let products = if CLASS == Symmetry::Principal { 0.0 } else { 0.1 * s };
+                    let tensor = InertiaTensor::new(s, 1.5 * s, 2.0 * s, 0.0, 0.0, products).unwrap();
+                    assert!(generic::RigidBody::<f64>::new(1.0, &tensor).is_err(), "s = {s:e}");
+                    assert!(refuses_singular::<Model64>(&tensor), "s = {s:e}");
+                }
+            }
+        }
+    )?)*};
+}
+
+eom::for_each_model!(spatial_properties);
 
 #[test]
 fn xz_variants_refuse_a_tensor_with_ixy_and_name_it() {
@@ -280,39 +300,6 @@ fn refuses_singular<S: Spatial<f64>>(tensor: &InertiaTensor) -> bool {
     )
 }
 
-#[test]
-fn spatial_models_refuse_a_tensor_whose_determinant_leaves_f64_as_the_generic_form_does() {
-    // Valid tensors (1, 1.5, 2)·s whose determinant underflows (s = 1e-110) or overflows
-    // (s = 1e110): 1/det would make every rate NaN.
-    for s in [1e-110, 1e110] {
-        let xz = InertiaTensor::new(s, 1.5 * s, 2.0 * s, 0.0, 0.0, 0.1 * s).unwrap();
-        let principal = InertiaTensor::new(s, 1.5 * s, 2.0 * s, 0.0, 0.0, 0.0).unwrap();
-        let generic_refuses = |t| generic::RigidBody::<f64>::new(1.0, t).is_err();
-        assert!(
-            generic_refuses(&xz) && generic_refuses(&principal),
-            "s = {s:e}"
-        );
-        assert!(refuses_singular::<SpatialFullEuler<f64>>(&xz), "s = {s:e}");
-        assert!(
-            refuses_singular::<SpatialFullQuaternion<f64>>(&xz),
-            "s = {s:e}"
-        );
-        assert!(refuses_singular::<SpatialXzEuler<f64>>(&xz), "s = {s:e}");
-        assert!(
-            refuses_singular::<SpatialXzQuaternion<f64>>(&xz),
-            "s = {s:e}"
-        );
-        assert!(
-            refuses_singular::<SpatialPrincipalEuler<f64>>(&principal),
-            "s = {s:e}"
-        );
-        assert!(
-            refuses_singular::<SpatialPrincipalQuaternion<f64>>(&principal),
-            "s = {s:e}"
-        );
-    }
-}
-
 /// A quaternion that has drifted off the unit sphere (as integrators let it) still gives the
 /// track of the attitude it represents: the generated position rate is the sandwich
 /// q v q* / |q|², the generic one normalises first.
@@ -329,7 +316,8 @@ fn quaternion_track_is_independent_of_the_quaternion_length() {
         *c *= 1.0 + 1e-3;
     }
     let (f, m) = ([1.0, 2.0, 3.0], [0.1, 0.2, 0.3]);
-    let (a, b) = (model.rhs(&unit, &f, &m), model.rhs(&drifted, &f, &m));
+    let input = [f[0], f[1], f[2], m[0], m[1], m[2]];
+    let (a, b) = (model.rhs(&unit, &input), model.rhs(&drifted, &input));
     // Both are f64 evaluations of one rotation of |v| ≈ 1.2: a few ulps.
     for i in 6..9 {
         assert!(

@@ -264,15 +264,14 @@ fn impossible_pendulums_are_refused() {
 #[test]
 fn swing_test_recovers_kappa_g_from_an_integrated_swing() {
     use eom::integrate::{AdaptiveOptions, Dop853};
+    use eom::models::{Constant, Model};
     use nalgebra::SVector;
     let amplitude = f64::to_radians(15.0);
     let p = pendulum();
     let model =
         eom::models::Pendulum::<f64>::new(p.inertia_pivot(), MASS, STANDARD_GRAVITY, PIVOT_TO_CG)
             .unwrap();
-    let system = |_t: f64, y: &SVector<f64, 2>, dy: &mut SVector<f64, 2>| {
-        *dy = SVector::from(model.rhs(&[y[0], y[1]], 0.0));
-    };
+    let system = model.driven_by(Constant::zero());
     let period = p.period(amplitude).unwrap();
     let times: Vec<f64> = (1..1237)
         .map(|i| i as f64 * 8.3 * period / 1236.0)

@@ -8,13 +8,12 @@
 //! of inertia that the chosen symmetry class says is zero) is an error naming it.
 
 use anyhow::{Context, Result, bail};
-use clap::ValueEnum;
 use eom::InertiaTensor;
 use eom::generic::{
     EulerState, Pendulum, PlanarBody, PlanarMidship, RigidBody, check_pitch,
     euler_state_to_quaternion_state,
 };
-use eom::models::{self, Symmetry};
+use eom::models::{self, AnyModel, Family, Kinematics, Model as _, Symmetry};
 use nalgebra::{Matrix3, Vector2, Vector3, Vector6};
 use serde::de::DeserializeOwned;
 use serde::ser::{Serialize, SerializeMap, Serializer};
@@ -30,53 +29,29 @@ const MIN_COS_PITCH: f64 = 1e-12;
 /// Options of `eom eval`.
 #[derive(clap::Args)]
 pub struct Args {
-    /// Which equations to evaluate.
-    #[arg(long, value_enum)]
-    model: Model,
+    /// Which equations to evaluate: the model family.
+    #[arg(long, value_parser = super::values::family())]
+    model: Family,
     /// Symmetry class of a spatial body; the products it says are zero must be zero.
-    #[arg(long, value_enum, default_value = "full")]
+    #[arg(long, value_parser = super::values::symmetry(), default_value = "full")]
     symmetry: Symmetry,
     /// Attitude kinematics of a spatial body.
-    #[arg(long, value_enum, default_value = "euler")]
+    #[arg(long, value_parser = super::values::kinematics(), default_value = "euler")]
     kinematics: Kinematics,
     /// The JSON input file, or `-` for standard input.
     #[arg(long)]
     input: PathBuf,
 }
 
-/// The model families.
-#[derive(Clone, Copy, ValueEnum)]
-enum Model {
-    /// Compound pendulum, 4.24.
-    Pendulum,
-    /// Planar, body-fixed at G, 4.43 + 4.44.
-    PlanarG,
-    /// Planar, body-fixed at midship, 4.46 + 4.44.
-    PlanarMidship,
-    /// Planar, space-fixed, 4.39.
-    PlanarSpace,
-    /// Spatial 6-DOF, 4.49 + 4.51 with Euler angles or a quaternion.
-    Spatial,
-}
-
-/// How a spatial body's attitude is carried.
-#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
-enum Kinematics {
-    /// Euler angles (4.57, 4.60).
-    Euler,
-    /// Unit quaternion, `q̇ = ½ q ⊗ (0, ω)`.
-    Quaternion,
-}
-
 /// Evaluates the chosen model and prints the derivative.
 pub fn run(args: Args) -> Result<()> {
     let text = read_input(&args.input)?;
     let derivative = match args.model {
-        Model::Pendulum => pendulum(&parse(&text)?)?,
-        Model::PlanarG => planar_g(&parse(&text)?)?,
-        Model::PlanarMidship => planar_midship(&parse(&text)?)?,
-        Model::PlanarSpace => planar_space(&parse(&text)?)?,
-        Model::Spatial => spatial(&parse(&text)?, args.symmetry, args.kinematics)?,
+        Family::Pendulum => pendulum(&parse(&text)?)?,
+        Family::PlanarAtG => planar_g(&parse(&text)?)?,
+        Family::PlanarMidship => planar_midship(&parse(&text)?)?,
+        Family::PlanarSpaceFixed => planar_space(&parse(&text)?)?,
+        Family::Spatial => spatial(&parse(&text)?, args.symmetry, args.kinematics)?,
     };
     let all = derivative.generated.iter().chain(&derivative.generic);
     if let Some((key, value)) = all.into_iter().find(|(_, x)| !x.is_finite()) {
@@ -160,7 +135,7 @@ fn pendulum(input: &PendulumInput) -> Result<Evaluation> {
     let state = [input.state.theta, input.state.theta_dot];
     let keys = ["theta_dot", "theta_ddot"];
     Ok(Evaluation {
-        generated: named(&keys, &generated.rhs(&state, input.moment)),
+        generated: named(&keys, &generated.rhs(&state, &[input.moment])),
         generic: named(
             &keys,
             model.rhs(&Vector2::from(state), input.moment).as_slice(),
@@ -329,8 +304,9 @@ fn spatial(input: &SpatialInput, symmetry: Symmetry, kinematics: Kinematics) -> 
     let (mut generated, mut generic) = (Vec::new(), Vec::new());
     if pitch.is_ok() {
         let euler: [f64; 12] = state.into();
-        let g = generated_spatial_euler(
+        let g = generated_spatial(
             symmetry,
+            Kinematics::Euler,
             input.mass,
             &tensor,
             &euler,
@@ -346,8 +322,9 @@ fn spatial(input: &SpatialInput, symmetry: Symmetry, kinematics: Kinematics) -> 
     if kinematics == Kinematics::Quaternion {
         let x = euler_state_to_quaternion_state(&state);
         let quaternion: [f64; 13] = x.into();
-        let g = generated_spatial_quaternion(
+        let g = generated_spatial(
             symmetry,
+            Kinematics::Quaternion,
             input.mass,
             &tensor,
             &quaternion,
@@ -368,42 +345,19 @@ fn spatial(input: &SpatialInput, symmetry: Symmetry, kinematics: Kinematics) -> 
     Ok(Evaluation { generated, generic })
 }
 
-/// The generated Euler-angle variant of the symmetry class.
-fn generated_spatial_euler(
+/// The generated variant of the symmetry class and kinematics, at `state`.
+fn generated_spatial(
     symmetry: Symmetry,
+    kinematics: Kinematics,
     mass: f64,
     tensor: &InertiaTensor,
-    state: &[f64; 12],
+    state: &[f64],
     force: &[f64; 3],
     moment: &[f64; 3],
-) -> Result<[f64; 12]> {
-    Ok(match symmetry {
-        Symmetry::Full => models::SpatialFullEuler::new(mass, tensor)?.rhs(state, force, moment),
-        Symmetry::Xz => models::SpatialXzEuler::new(mass, tensor)?.rhs(state, force, moment),
-        Symmetry::Principal => {
-            models::SpatialPrincipalEuler::new(mass, tensor)?.rhs(state, force, moment)
-        }
-    })
-}
-
-/// The generated quaternion variant of the symmetry class.
-fn generated_spatial_quaternion(
-    symmetry: Symmetry,
-    mass: f64,
-    tensor: &InertiaTensor,
-    state: &[f64; 13],
-    force: &[f64; 3],
-    moment: &[f64; 3],
-) -> Result<[f64; 13]> {
-    Ok(match symmetry {
-        Symmetry::Full => {
-            models::SpatialFullQuaternion::new(mass, tensor)?.rhs(state, force, moment)
-        }
-        Symmetry::Xz => models::SpatialXzQuaternion::new(mass, tensor)?.rhs(state, force, moment),
-        Symmetry::Principal => {
-            models::SpatialPrincipalQuaternion::new(mass, tensor)?.rhs(state, force, moment)
-        }
-    })
+) -> Result<Vec<f64>> {
+    let model = AnyModel::spatial(symmetry, kinematics, mass, tensor)?;
+    let input = [force[0], force[1], force[2], moment[0], moment[1], moment[2]];
+    Ok(model.rhs(state, &input)?)
 }
 
 fn spatial_state(s: &SpatialState) -> EulerState<f64> {

@@ -5,6 +5,7 @@ mod eval;
 mod mass;
 mod models;
 mod swing;
+mod values;
 
 use clap::Subcommand;
 

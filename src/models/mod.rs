@@ -1,10 +1,15 @@
-//! The generated models behind a typed, validated API.
+//! The generated models behind one trait and a validated constructor each.
 //!
-//! Each type validates its parameters once (finite numbers, mass > 0, a physical inertia
-//! tensor, products of inertia zero where the symmetry class prunes them), computes the
-//! generated coefficients once, and then offers `rhs` — the generated right-hand side — and the
-//! kinetic energy (4.32). All are generic over the scalar `T: SimdRealField + Copy`: `f32`,
-//! `f64`, `simba::simd::WideF64x4` lanes, or dual numbers.
+//! The catalog of variants is written once, in `eom-codegen` (`Model::all`); the build script
+//! emits from it every model's code ([`generated`]), the list [`CATALOG`], the runtime's
+//! [`Symmetry`], [`Kinematics`] and [`Family`], and the macro `for_each_model!`, from which
+//! the typed models below are written. Each typed model validates its parameters once
+//! (finite numbers, mass > 0, a physical inertia tensor, products of inertia zero where the
+//! symmetry class prunes them), computes the generated coefficients once, and implements
+//! [`Model`]: the state and input layouts, `rhs` and the kinetic energy (4.32), generic over
+//! the scalar `T: SimdRealField + Copy` (`f32`, `f64`, `simba::simd::WideF64x4` lanes, dual
+//! numbers). [`Model::driven_by`] turns a model and its [`Loads`] into an
+//! [`OdeSystem`](crate::integrate::OdeSystem).
 //!
 //! | type | state | inputs |
 //! |---|---|---|
@@ -18,19 +23,20 @@
 //! The Euler-angle variants are singular at θ = ±90° (4.60 divides by cos θ); use a
 //! quaternion variant for attitudes that may get there.
 
-pub mod generated;
+mod info;
+mod model;
 mod pendulum;
 mod planar;
+
+pub use info::{ModelInfo, Operations};
+pub use model::{Constant, Driven, Loads, Model};
+
+include!(concat!(env!("OUT_DIR"), "/catalog.rs"));
+
+mod any;
 mod spatial;
+mod typed;
 
-pub use pendulum::Pendulum;
-pub use planar::{PlanarAtG, PlanarMidship, PlanarSpaceFixed};
-pub use spatial::{
-    FromBody, SpatialFullEuler, SpatialFullQuaternion, SpatialPrincipalEuler,
-    SpatialPrincipalQuaternion, SpatialXzEuler, SpatialXzQuaternion, Symmetry,
-};
-
-/// Converts a validated f64 parameter to the scalar type.
-fn scalar<T: simba::simd::SimdRealField>(value: f64) -> T {
-    T::from_subset(&value)
-}
+pub use any::{AnyModel, LayoutError, Visitor};
+pub use spatial::{FromBody, PRODUCT_TOLERANCE};
+pub use typed::*;

@@ -1,45 +1,31 @@
-//! The spatial 6-DOF models (4.49 with 4.51 and kinematics) from the generated code, one type
-//! per symmetry class and kinematics.
+//! What the spatial models (4.49 with 4.51 and kinematics) check before they are built, and
+//! how a body's tensor fills an emitted `Parameters`.
 
 use super::generated;
-use super::scalar;
+use super::Symmetry;
 use crate::InertiaTensor;
 use crate::generic::ModelError;
 use crate::generic::error::check_mass;
-use simba::simd::SimdRealField;
 
-/// Which products of inertia a spatial model keeps.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[cfg_attr(feature = "cli", derive(clap::ValueEnum))]
-pub enum Symmetry {
-    /// All products (4.51).
-    Full,
-    /// Symmetric about the xz-plane: I_xy = I_yz = 0 (ships, aircraft, AUVs).
-    Xz,
-    /// Principal axes: all products zero (4.52).
-    Principal,
+/// Validates a body for a spatial model of `symmetry`: M > 0, the products the class prunes
+/// zero, and a tensor that can be inverted in f64. Returns the mass.
+pub(super) fn validate(
+    mass: f64,
+    inertia: &InertiaTensor,
+    symmetry: Symmetry,
+) -> Result<f64, ModelError> {
+    let mass = check_mass(mass)?;
+    check_symmetry(inertia, symmetry)?;
+    check_invertible(inertia)?;
+    Ok(mass)
 }
 
-impl Symmetry {
-    fn pruned(self) -> &'static [&'static str] {
-        match self {
-            Symmetry::Full => &[],
-            Symmetry::Xz => &["Ixy", "Iyz"],
-            Symmetry::Principal => &["Ixy", "Iyz", "Ixz"],
-        }
-    }
+/// The relative size below which a product of inertia counts as zero: 1e-12 of the largest
+/// moment, which allows round-off of a computed tensor and is far below any product that
+/// changes the motion measurably.
+pub const PRODUCT_TOLERANCE: f64 = 1e-12;
 
-    fn name(self) -> &'static str {
-        match self {
-            Symmetry::Full => "full",
-            Symmetry::Xz => "xz",
-            Symmetry::Principal => "principal",
-        }
-    }
-}
-
-/// A product that the class prunes must vanish. "Vanish" allows round-off of a computed tensor:
-/// 1e-12 of the largest moment, far below any product that changes the motion measurably.
+/// A product that the class prunes must vanish, to [`PRODUCT_TOLERANCE`].
 fn check_symmetry(inertia: &InertiaTensor, symmetry: Symmetry) -> Result<(), ModelError> {
     let scale = inertia.ixx().max(inertia.iyy()).max(inertia.izz());
     for &field in symmetry.pruned() {
@@ -48,7 +34,7 @@ fn check_symmetry(inertia: &InertiaTensor, symmetry: Symmetry) -> Result<(), Mod
             "Iyz" => inertia.iyz(),
             _ => inertia.izx(),
         };
-        if value.abs() > 1e-12 * scale {
+        if value.abs() > PRODUCT_TOLERANCE * scale {
             return Err(ModelError::SymmetryClass {
                 field,
                 value,
@@ -71,73 +57,50 @@ fn check_invertible(inertia: &InertiaTensor) -> Result<(), ModelError> {
     }
 }
 
-/// What every spatial variant keeps beside its coefficients: for the kinetic energy.
-#[derive(Debug, Clone, Copy, PartialEq)]
-struct Body<T> {
-    mass: T,
-    inertia: [[T; 3]; 3],
-}
-
-impl<T: SimdRealField + Copy> Body<T> {
-    fn new(mass: f64, inertia: &InertiaTensor) -> Self {
-        let m = inertia.matrix();
-        Self {
-            mass: scalar(mass),
-            inertia: std::array::from_fn(|r| std::array::from_fn(|c| scalar(m[(r, c)]))),
-        }
-    }
-
-    /// T = ½M v·v + ½ωᵀ[I]ω (4.32), from the first six entries of the state.
-    fn kinetic_energy(&self, state: &[T]) -> T {
-        let (v, w) = (&state[0..3], &state[3..6]);
-        let translation = self.mass * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-        let rotation = (0..3)
-            .map(|r| {
-                w[r] * (self.inertia[r][0] * w[0]
-                    + self.inertia[r][1] * w[1]
-                    + self.inertia[r][2] * w[2])
-            })
-            .fold(T::zero(), |a, b| a + b);
-        (translation + rotation) * scalar(0.5)
-    }
-}
-
 /// An emitted spatial `Parameters` struct, filled from a mass and an inertia tensor.
 ///
 /// Each symmetry class emits only the products it keeps, named as the chapter names them
 /// (`ixy`, `iyz`, `ixz`, with the sign of 4.14). This is the one place that maps a tensor's
-/// entries onto those fields; it is implemented for every emitted spatial module, the
-/// platform-trig copies in [`generated::std_trig`] included, so that code calling an emitted
-/// module directly builds its parameters as the typed models do. It does not validate: build
-/// the typed model (e.g. [`SpatialFullEuler::new`]) for that.
+/// entries onto those fields. It does not validate: build the typed model (e.g.
+/// [`SpatialFullEuler::new`](super::SpatialFullEuler::new)) for that.
 ///
 /// ```
 /// use eom::InertiaTensor;
-/// use eom::models::{FromBody, SpatialPrincipalEuler, generated::std_trig};
+/// use eom::models::{FromBody, Model, SpatialPrincipalEuler, generated};
 ///
 /// let inertia = InertiaTensor::new(2.0, 3.0, 4.0, 0.0, 0.0, 0.0).unwrap();
 /// let typed = SpatialPrincipalEuler::<f64>::new(5.0, &inertia).unwrap();
-/// // The same model emitted with the platform's sin and cos, called directly.
-/// let emitted = std_trig::spatial_principal_euler::Parameters::from_body(5.0, &inertia);
-/// let k = std_trig::spatial_principal_euler::Coefficients::<f64>::new(&emitted);
+/// let emitted = generated::spatial_principal_euler::Parameters::from_body(5.0, &inertia);
+/// let k = generated::spatial_principal_euler::Coefficients::<f64>::new(&emitted);
 /// let state = [1.0, 0.2, -0.1, 0.3, -0.2, 0.5, 0.0, 0.0, 0.0, 0.1, 0.2, 0.3];
-/// let (force, moment) = ([10.0, -2.0, 1.0], [0.5, 0.2, -0.3]);
-/// let input = [force[0], force[1], force[2], moment[0], moment[1], moment[2]];
-/// let direct = std_trig::spatial_principal_euler::rhs(&k, &state, &input);
-/// // The typed model's sin and cos are within 2 ulp of the platform's; the rates then agree
-/// // to a few ulp of their size.
-/// for (a, b) in typed.rhs(&state, &force, &moment).iter().zip(&direct) {
-///     assert!((a - b).abs() <= 1e-14 * b.abs().max(1.0));
-/// }
+/// let input = [10.0, -2.0, 1.0, 0.5, 0.2, -0.3];
+/// let direct = generated::spatial_principal_euler::rhs(&k, &state, &input);
+/// assert_eq!(typed.rhs(&state, &input), direct);
 /// ```
 pub trait FromBody {
     /// The parameters of a body of `mass` and `inertia` (about G, body axes).
     fn from_body(mass: f64, inertia: &InertiaTensor) -> Self;
 }
 
+/// `FromBody` for every spatial module of the catalog: the fields follow the symmetry class.
 macro_rules! from_body {
-    ($($($module:ident)::+ { $($field:ident: $value:ident),* };)*) => {$(
-        impl FromBody for $($module)::+::Parameters {
+    ($($module:ident => $type:ident {
+        family: $family:ident $(($symmetry:ident, $kinematics:ident))?,
+        state: $n:literal, inputs: $m:literal, title: $title:literal
+    },)*) => {
+        $($(from_body!(@impl $module, $symmetry, $kinematics);)?)*
+    };
+    (@impl $module:ident, Full, $kinematics:ident) => {
+        from_body!(@fields $module { ixy: ixy, iyz: iyz, ixz: izx });
+    };
+    (@impl $module:ident, Xz, $kinematics:ident) => {
+        from_body!(@fields $module { ixz: izx });
+    };
+    (@impl $module:ident, Principal, $kinematics:ident) => {
+        from_body!(@fields $module {});
+    };
+    (@fields $module:ident { $($field:ident: $value:ident),* }) => {
+        impl FromBody for generated::$module::Parameters {
             fn from_body(mass: f64, inertia: &InertiaTensor) -> Self {
                 Self {
                     mass,
@@ -148,98 +111,7 @@ macro_rules! from_body {
                 }
             }
         }
-    )*};
-}
-
-from_body! {
-    generated::spatial_full_euler { ixy: ixy, iyz: iyz, ixz: izx };
-    generated::spatial_full_quaternion { ixy: ixy, iyz: iyz, ixz: izx };
-    generated::spatial_xz_euler { ixz: izx };
-    generated::spatial_xz_quaternion { ixz: izx };
-    generated::spatial_principal_euler {};
-    generated::spatial_principal_quaternion {};
-    generated::std_trig::spatial_full_euler { ixy: ixy, iyz: iyz, ixz: izx };
-    generated::std_trig::spatial_xz_euler { ixz: izx };
-    generated::std_trig::spatial_principal_euler {};
-}
-
-macro_rules! spatial_model {
-    ($name:ident, $module:ident, $symmetry:expr, $n:literal, $kinematics:literal) => {
-        #[doc = concat!("Spatial 6-DOF motion, ", stringify!($symmetry), " inertia, ", $kinematics, ".")]
-        ///
-        /// Validates the mass and the symmetry class of the tensor, computes the generated
-        /// coefficients once, then [`Self::rhs`] evaluates the generated right-hand side.
-        #[derive(Debug, Clone, Copy, PartialEq)]
-        pub struct $name<T> {
-            coefficients: generated::$module::Coefficients<T>,
-            body: Body<T>,
-        }
-
-        impl<T: SimdRealField + Copy> $name<T> {
-            /// Validates M > 0 and that the products this class prunes are zero.
-            pub fn new(mass: f64, inertia: &InertiaTensor) -> Result<Self, ModelError> {
-                let mass = check_mass(mass)?;
-                check_symmetry(inertia, $symmetry)?;
-                check_invertible(inertia)?;
-                let parameters = generated::$module::Parameters::from_body(mass, inertia);
-                let coefficients = generated::$module::Coefficients::new(&parameters);
-                Ok(Self { coefficients, body: Body::new(mass, inertia) })
-            }
-
-            /// The time derivative of the state for a force and a moment about G, body axes.
-            #[inline]
-            pub fn rhs(&self, state: &[T; $n], force: &[T; 3], moment: &[T; 3]) -> [T; $n] {
-                let input = [force[0], force[1], force[2], moment[0], moment[1], moment[2]];
-                generated::$module::rhs(&self.coefficients, state, &input)
-            }
-
-            /// Kinetic energy ½Mv·v + ½ωᵀ\[I\]ω (4.32).
-            pub fn kinetic_energy(&self, state: &[T; $n]) -> T {
-                self.body.kinetic_energy(state)
-            }
-        }
     };
 }
 
-spatial_model!(
-    SpatialFullEuler,
-    spatial_full_euler,
-    Symmetry::Full,
-    12,
-    "Euler angles"
-);
-spatial_model!(
-    SpatialFullQuaternion,
-    spatial_full_quaternion,
-    Symmetry::Full,
-    13,
-    "unit quaternion"
-);
-spatial_model!(
-    SpatialXzEuler,
-    spatial_xz_euler,
-    Symmetry::Xz,
-    12,
-    "Euler angles"
-);
-spatial_model!(
-    SpatialXzQuaternion,
-    spatial_xz_quaternion,
-    Symmetry::Xz,
-    13,
-    "unit quaternion"
-);
-spatial_model!(
-    SpatialPrincipalEuler,
-    spatial_principal_euler,
-    Symmetry::Principal,
-    12,
-    "Euler angles"
-);
-spatial_model!(
-    SpatialPrincipalQuaternion,
-    spatial_principal_quaternion,
-    Symmetry::Principal,
-    13,
-    "unit quaternion"
-);
+for_each_model!(from_body);

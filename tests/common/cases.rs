@@ -6,25 +6,10 @@ use eom::InertiaTensor;
 use nalgebra::{Matrix3, Quaternion, Rotation3, UnitQuaternion, Vector3};
 use proptest::prelude::*;
 
-/// Which products of inertia a random tensor has.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Class {
-    /// All three products non-zero: principal axes rotated at random.
-    Full,
-    /// Only I_xz: principal axes rotated about y, so I_xy = I_yz = 0 exactly.
-    Xz,
-    /// No products: principal axes along the body axes.
-    Principal,
-}
-
-/// How the attitude is carried.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Kinematics {
-    /// `[φ, θ, ψ]`, 4.57 and 4.60.
-    Euler,
-    /// `[q0, q1, q2, q3]`, scalar first.
-    Quaternion,
-}
+/// Which products of inertia a random tensor has (all three: principal axes rotated at
+/// random; only I_xz: rotated about y; none), and how the attitude is carried: the catalog's
+/// own enums.
+pub use eom::models::{Kinematics, Symmetry};
 
 /// Where the pitch of a random Euler attitude lies.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -91,19 +76,19 @@ pub fn principal_moments() -> impl Strategy<Value = [f64; 3]> {
 
 /// A physical inertia tensor of the class: principal moments turned by a random rotation
 /// (about y only for the xz class, none for the principal class).
-pub fn inertia_tensor(class: Class) -> impl Strategy<Value = InertiaTensor> {
+pub fn inertia_tensor(class: Symmetry) -> impl Strategy<Value = InertiaTensor> {
     (principal_moments(), unit_quaternion(), -3.2..3.2f64).prop_map(move |(m, q, angle)| {
         let rotation = match class {
-            Class::Full => q.to_rotation_matrix(),
-            Class::Xz => Rotation3::from_axis_angle(&Vector3::y_axis(), angle),
-            Class::Principal => Rotation3::identity(),
+            Symmetry::Full => q.to_rotation_matrix(),
+            Symmetry::Xz => Rotation3::from_axis_angle(&Vector3::y_axis(), angle),
+            Symmetry::Principal => Rotation3::identity(),
         };
         let r = rotation.matrix();
         let i = r * Matrix3::from_diagonal(&Vector3::from(m)) * r.transpose();
         let (ixy, iyz, izx) = match class {
-            Class::Full => (i[(0, 1)], i[(1, 2)], i[(2, 0)]),
-            Class::Xz => (0.0, 0.0, i[(2, 0)]),
-            Class::Principal => (0.0, 0.0, 0.0),
+            Symmetry::Full => (i[(0, 1)], i[(1, 2)], i[(2, 0)]),
+            Symmetry::Xz => (0.0, 0.0, i[(2, 0)]),
+            Symmetry::Principal => (0.0, 0.0, 0.0),
         };
         InertiaTensor::new(i[(0, 0)], i[(1, 1)], i[(2, 2)], ixy, iyz, izx)
             .expect("principal moments satisfying the triangle inequality, rotated")
@@ -161,7 +146,7 @@ impl SpatialCase {
 
 /// Random spatial cases for a tensor class and a pitch range. The force and the moment are
 /// M·a and I_max·α with a and α over several decades, so that no term always dominates.
-pub fn spatial_case(class: Class, pitch: Pitch) -> impl Strategy<Value = SpatialCase> {
+pub fn spatial_case(class: Symmetry, pitch: Pitch) -> impl Strategy<Value = SpatialCase> {
     let theta = match pitch {
         Pitch::Random => {
             let limit = std::f64::consts::FRAC_PI_2 - 1e-3;

@@ -14,10 +14,7 @@
 
 use eom::InertiaTensor;
 use eom::generic::{EulerState, ModelError, QuaternionState, RigidBody};
-use eom::models::{
-    SpatialFullEuler, SpatialFullQuaternion, SpatialPrincipalEuler, SpatialPrincipalQuaternion,
-    SpatialXzEuler, SpatialXzQuaternion,
-};
+use eom::models::Model;
 use nalgebra::SimdRealField;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestRunner};
@@ -86,31 +83,33 @@ pub trait Spatial<T>: Sized {
     fn kinetic(&self, state: &[T]) -> T;
 }
 
+/// [`Spatial`] for every spatial model of the catalog.
 macro_rules! spatial {
-    ($ty:ident, $kinematics:ident) => {
-        impl<T: SimdRealField + Copy> Spatial<T> for $ty<T> {
-            const NAME: &'static str = stringify!($ty);
+    ($($module:ident => $type:ident {
+        family: $family:ident $(($symmetry:ident, $kinematics:ident))?,
+        state: $n:literal, inputs: $m:literal, title: $title:literal
+    },)*) => {$($(
+        impl<T: SimdRealField + Copy> Spatial<T> for eom::models::$type<T> {
+            const NAME: &'static str = stringify!($module);
             const KINEMATICS: Kinematics = Kinematics::$kinematics;
             fn build(mass: f64, tensor: &InertiaTensor) -> Result<Self, ModelError> {
-                $ty::new(mass, tensor)
+                Self::new(mass, tensor)
             }
             fn eval(&self, state: &[T], force: &[T; 3], moment: &[T; 3]) -> Vec<T> {
                 let state = state.try_into().expect("state of the variant's length");
-                self.rhs(state, force, moment).to_vec()
+                let input = [force[0], force[1], force[2], moment[0], moment[1], moment[2]];
+                self.rhs(state, &input).to_vec()
             }
             fn kinetic(&self, state: &[T]) -> T {
                 self.kinetic_energy(state.try_into().expect("state of the variant's length"))
             }
         }
-    };
+        // Every spatial variant has a symmetry class.
+        const _: eom::models::Symmetry = eom::models::Symmetry::$symmetry;
+    )?)*};
 }
 
-spatial!(SpatialFullEuler, Euler);
-spatial!(SpatialFullQuaternion, Quaternion);
-spatial!(SpatialXzEuler, Euler);
-spatial!(SpatialXzQuaternion, Quaternion);
-spatial!(SpatialPrincipalEuler, Euler);
-spatial!(SpatialPrincipalQuaternion, Quaternion);
+eom::for_each_model!(spatial);
 
 /// The generated model of type `S` evaluated in f64 at the case.
 pub fn generated<S: Spatial<f64>>(case: &SpatialCase) -> Vec<f64> {

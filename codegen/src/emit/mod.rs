@@ -7,6 +7,7 @@
 //! clock or the environment. [`write_if_changed`] leaves a file untouched when its bytes are
 //! already right, so Cargo does not rebuild for nothing.
 
+mod catalog;
 pub mod fold;
 pub mod program;
 mod rust;
@@ -48,6 +49,12 @@ pub struct Generated {
     pub model: Model,
     /// Its name (and the file stem).
     pub name: String,
+    /// A one-line title.
+    pub title: String,
+    /// How many entries the state has.
+    pub state_len: usize,
+    /// How many inputs the model takes.
+    pub inputs_len: usize,
     /// The strategy that gave the fewest operations.
     pub strategy: Strategy,
     /// The cost of one call.
@@ -91,6 +98,9 @@ pub fn generate(model: Model) -> Result<Generated, EmitError> {
     Ok(Generated {
         model,
         name: system.name,
+        title: format!("{} (equations {}).", system.title, system.equations.join(", ")),
+        state_len: system.state.len(),
+        inputs_len: system.inputs.len(),
         strategy,
         operations,
         source,
@@ -132,4 +142,16 @@ pub fn emit_into(out_dir: &Path, models: &[Model]) -> Result<Vec<Generated>, Emi
             Ok(generated)
         })
         .collect()
+}
+
+/// Generates each model into `out_dir/<name>.rs` and the catalog of them all into
+/// `out_dir/catalog.rs` (the call `eom`'s own build script makes; see [`catalog`]).
+pub fn emit_with_catalog(out_dir: &Path, models: &[Model]) -> Result<Vec<Generated>, EmitError> {
+    let generated = emit_into(out_dir, models)?;
+    let source = catalog::source(&generated).map_err(|source| EmitError::Syntax {
+        model: "catalog".into(),
+        source,
+    })?;
+    write_if_changed(&out_dir.join("catalog.rs"), &source)?;
+    Ok(generated)
 }

@@ -283,13 +283,6 @@ fn inertia_parameters(symmetry: Symmetry) -> Vec<Parameter> {
     parameters
 }
 
-fn zero_products(symmetry: Symmetry) -> &'static [&'static str] {
-    match symmetry {
-        Symmetry::Full => &[],
-        Symmetry::Xz => &["Ixy", "Iyz"],
-        Symmetry::Principal => &["Ixy", "Iyz", "Ixz"],
-    }
-}
 
 /// The rotational part: stages and the three angular accelerations, by strategy.
 fn rotation(
@@ -298,7 +291,7 @@ fn rotation(
     strategy: Strategy,
 ) -> Result<(Vec<Stage>, Vec<Expr>, Solution), ModelError> {
     let err = symbolic(name);
-    let products = zero_products(symmetry);
+    let products = symmetry.pruned();
     let lhs = spatial_eq::euler_equations().map_err(&err)?;
     let lhs = spatial_eq::without_products(&lhs, products).map_err(&err)?;
     let moments = Vec3::symbols(["M_x", "M_y", "M_z"]);
@@ -484,7 +477,7 @@ pub fn spatial(
     outputs.extend(kinematic_outputs);
     let mut all_state = vec!["u", "v", "w", "p", "q", "r", "x", "y", "z"];
     all_state.extend(state);
-    let zeros: Vec<(&str, Expr)> = zero_products(symmetry)
+    let zeros: Vec<(&str, Expr)> = symmetry.pruned()
         .iter()
         .map(|p| (*p, Expr::zero()))
         .collect();

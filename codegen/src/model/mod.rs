@@ -13,6 +13,9 @@ pub use solve::{Solution, solve_linear};
 pub use system::{CoefficientName, Group, ModelError, Parameter, Reciprocal, Stage, System};
 
 /// Which products of inertia the body has.
+///
+/// This is the one definition: `eom`'s build script emits the runtime's copy of this enum
+/// (and of [`Kinematics`]) from it, with the same variants, names and docs.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Symmetry {
     /// All products of inertia (4.51).
@@ -23,6 +26,41 @@ pub enum Symmetry {
     Principal,
 }
 
+impl Symmetry {
+    /// Every class, from the most general to the most pruned.
+    pub const ALL: [Symmetry; 3] = [Symmetry::Full, Symmetry::Xz, Symmetry::Principal];
+
+    /// The name in model names, scene files and on the command line: `full`, `xz`,
+    /// `principal`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Symmetry::Full => "full",
+            Symmetry::Xz => "xz",
+            Symmetry::Principal => "principal",
+        }
+    }
+
+    /// What the class means, for docs and help.
+    pub fn doc(self) -> &'static str {
+        match self {
+            Symmetry::Full => "All products of inertia (4.51).",
+            Symmetry::Xz => {
+                "Symmetric about the xz-plane: I_xy = I_yz = 0, I_xz free (ships, aircraft, AUVs)."
+            }
+            Symmetry::Principal => "Principal axes: every product zero (4.52).",
+        }
+    }
+
+    /// The products of inertia the class sets to zero, as the chapter names them.
+    pub fn pruned(self) -> &'static [&'static str] {
+        match self {
+            Symmetry::Full => &[],
+            Symmetry::Xz => &["Ixy", "Iyz"],
+            Symmetry::Principal => &["Ixy", "Iyz", "Ixz"],
+        }
+    }
+}
+
 /// How the attitude is carried.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Kinematics {
@@ -30,6 +68,79 @@ pub enum Kinematics {
     Euler,
     /// A unit quaternion (q0, q1, q2, q3), scalar first: q̇ = ½ q ⊗ (0, ω).
     Quaternion,
+}
+
+impl Kinematics {
+    /// Both ways, Euler angles first.
+    pub const ALL: [Kinematics; 2] = [Kinematics::Euler, Kinematics::Quaternion];
+
+    /// The name in model names, scene files and on the command line: `euler`, `quaternion`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Kinematics::Euler => "euler",
+            Kinematics::Quaternion => "quaternion",
+        }
+    }
+
+    /// What it means, for docs and help.
+    pub fn doc(self) -> &'static str {
+        match self {
+            Kinematics::Euler => {
+                "Euler angles (φ, θ, ψ): position by 4.57, attitude by 4.60; singular at θ = ±90°."
+            }
+            Kinematics::Quaternion => {
+                "A quaternion (q0, q1, q2, q3), scalar first: q̇ = ½ q ⊗ (0, ω); no singularity."
+            }
+        }
+    }
+}
+
+/// A model family: what a scene's `family` key names.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Family {
+    /// The compound pendulum.
+    Pendulum,
+    /// Planar, body axes at G.
+    PlanarAtG,
+    /// Planar, body axes at midship.
+    PlanarMidship,
+    /// Planar, space-fixed axes.
+    PlanarSpaceFixed,
+    /// Spatial 6-DOF.
+    Spatial,
+}
+
+impl Family {
+    /// Every family, in catalog order.
+    pub const ALL: [Family; 5] = [
+        Family::Pendulum,
+        Family::PlanarAtG,
+        Family::PlanarMidship,
+        Family::PlanarSpaceFixed,
+        Family::Spatial,
+    ];
+
+    /// The name in scene files and on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Family::Pendulum => "pendulum",
+            Family::PlanarAtG => "planar-g",
+            Family::PlanarMidship => "planar-midship",
+            Family::PlanarSpaceFixed => "planar-space",
+            Family::Spatial => "spatial",
+        }
+    }
+
+    /// What it is, for docs and help.
+    pub fn doc(self) -> &'static str {
+        match self {
+            Family::Pendulum => "Compound pendulum, 4.24.",
+            Family::PlanarAtG => "Planar, body-fixed axes at G, 4.43 + 4.44.",
+            Family::PlanarMidship => "Planar, body-fixed axes at midship, 4.46 + 4.44.",
+            Family::PlanarSpaceFixed => "Planar, space-fixed axes, 4.39.",
+            Family::Spatial => "Spatial 6-DOF, 4.49 + 4.51 with Euler angles or a quaternion.",
+        }
+    }
 }
 
 /// How the rotational accelerations of a spatial model are computed; the emitter builds each
@@ -82,8 +193,8 @@ impl Model {
             Model::PlanarMidship,
             Model::PlanarSpaceFixed,
         ];
-        for symmetry in [Symmetry::Full, Symmetry::Xz, Symmetry::Principal] {
-            for kinematics in [Kinematics::Euler, Kinematics::Quaternion] {
+        for symmetry in Symmetry::ALL {
+            for kinematics in Kinematics::ALL {
                 all.push(Model::Spatial {
                     symmetry,
                     kinematics,
@@ -103,18 +214,32 @@ impl Model {
             Model::Spatial {
                 symmetry,
                 kinematics,
-            } => {
-                let s = match symmetry {
-                    Symmetry::Full => "full",
-                    Symmetry::Xz => "xz",
-                    Symmetry::Principal => "principal",
-                };
-                let k = match kinematics {
-                    Kinematics::Euler => "euler",
-                    Kinematics::Quaternion => "quaternion",
-                };
-                format!("spatial_{s}_{k}")
-            }
+            } => format!("spatial_{}_{}", symmetry.name(), kinematics.name()),
+        }
+    }
+
+    /// The name of the model's type in `eom::models`: `Pendulum`, `SpatialXzQuaternion`, …
+    pub fn type_name(&self) -> String {
+        self.name()
+            .split('_')
+            .map(|word| {
+                let mut chars = word.chars();
+                chars
+                    .next()
+                    .map(|first| first.to_ascii_uppercase().to_string() + chars.as_str())
+                    .unwrap_or_default()
+            })
+            .collect()
+    }
+
+    /// The family the model belongs to.
+    pub fn family(&self) -> Family {
+        match self {
+            Model::Pendulum => Family::Pendulum,
+            Model::PlanarAtG => Family::PlanarAtG,
+            Model::PlanarMidship => Family::PlanarMidship,
+            Model::PlanarSpaceFixed => Family::PlanarSpaceFixed,
+            Model::Spatial { .. } => Family::Spatial,
         }
     }
 

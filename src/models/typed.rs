@@ -1,0 +1,91 @@
+//! The typed models: one type per variant of the catalog, each built from validated
+//! parameters and implementing [`Model`].
+//!
+//! The types are written by one macro over the catalog (`for_each_model!`); what differs
+//! between families is only what `new` takes and checks.
+
+use super::model::Model;
+use super::{FromBody, generated, pendulum, planar, spatial};
+use crate::InertiaTensor;
+use crate::generic::ModelError;
+use simba::simd::SimdRealField;
+
+macro_rules! typed_models {
+    ($($module:ident => $type:ident {
+        family: $family:ident $(($symmetry:ident, $kinematics:ident))?,
+        state: $n:literal, inputs: $m:literal, title: $title:literal
+    },)*) => {$(
+        #[doc = concat!(" ", $title)]
+        ///
+        #[doc = concat!(" State `", stringify!($n), "` entries ([`Model::STATE`]), inputs `", stringify!($m), "` ([`Model::INPUTS`]); the generated code is [`generated::", stringify!($module), "`].")]
+        #[derive(Debug, Clone, Copy, PartialEq)]
+        pub struct $type<T> {
+            coefficients: generated::$module::Coefficients<T>,
+        }
+
+        impl<T: SimdRealField + Copy> $type<T> {
+            typed_models!(@new $module, $family $(($symmetry, $kinematics))?);
+
+            /// The model of already validated parameters.
+            fn from_parameters(parameters: &generated::$module::Parameters) -> Self {
+                Self { coefficients: generated::$module::Coefficients::new(parameters) }
+            }
+
+            /// The coefficients the generated code reads, computed once from the parameters.
+            pub fn coefficients(&self) -> &generated::$module::Coefficients<T> {
+                &self.coefficients
+            }
+        }
+
+        impl<T: SimdRealField + Copy> Model<T, $n, $m> for $type<T> {
+            const NAME: &'static str = stringify!($module);
+            const STATE: [&'static str; $n] = generated::$module::STATE;
+            const INPUTS: [&'static str; $m] = generated::$module::INPUTS;
+
+            #[inline(always)]
+            fn rhs(&self, state: &[T; $n], input: &[T; $m]) -> [T; $n] {
+                generated::$module::rhs(&self.coefficients, state, input)
+            }
+
+            #[inline]
+            fn kinetic_energy(&self, state: &[T; $n]) -> T {
+                generated::$module::kinetic_energy(&self.coefficients, state)
+            }
+        }
+    )*};
+    (@new $module:ident, Pendulum) => {
+        /// Validates I₀ > 0 (about the pivot), M > 0, g finite, h ≥ 0 and I₀ ≥ M h² (4.29).
+        pub fn new(i0: f64, mass: f64, g: f64, h: f64) -> Result<Self, ModelError> {
+            Ok(Self::from_parameters(&pendulum::validate(i0, mass, g, h)?))
+        }
+    };
+    (@new $module:ident, PlanarAtG) => {
+        /// Validates M > 0 and I_zz > 0.
+        pub fn new(mass: f64, izz: f64) -> Result<Self, ModelError> {
+            let (mass, izz) = planar::validate(mass, izz)?;
+            Ok(Self::from_parameters(&generated::$module::Parameters { mass, izz }))
+        }
+    };
+    (@new $module:ident, PlanarSpaceFixed) => {
+        typed_models!(@new $module, PlanarAtG);
+    };
+    (@new $module:ident, PlanarMidship) => {
+        /// Validates M > 0, I_zz > 0 (about G) and a finite x_G (G ahead of midship).
+        pub fn new(mass: f64, izz: f64, x_g: f64) -> Result<Self, ModelError> {
+            let (mass, izz) = planar::validate(mass, izz)?;
+            let x_g = planar::validate_x_g(x_g)?;
+            Ok(Self::from_parameters(&generated::$module::Parameters { mass, izz, x_g }))
+        }
+    };
+    (@new $module:ident, Spatial($symmetry:ident, $kinematics:ident)) => {
+        /// Validates M > 0, an invertible tensor, and that the products of inertia this
+        /// symmetry class prunes are zero (to [`PRODUCT_TOLERANCE`](super::PRODUCT_TOLERANCE)
+        /// of the largest moment).
+        pub fn new(mass: f64, inertia: &InertiaTensor) -> Result<Self, ModelError> {
+            let mass = spatial::validate(mass, inertia, super::Symmetry::$symmetry)?;
+            Ok(Self::from_parameters(&generated::$module::Parameters::from_body(mass, inertia)))
+        }
+    };
+}
+
+for_each_model!(typed_models);
