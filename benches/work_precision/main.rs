@@ -41,7 +41,11 @@ use eom::reference::{
 use nalgebra::{Matrix3, Quaternion, RealField, SVector, UnitQuaternion, Vector3};
 
 use report::BASE;
-use spatial::{MASS, TurnedAxes, euler, generic_euler, generic_quaternion, quaternion};
+use eom::models::{Constant, Model};
+use spatial::{
+    MASS, TurnedAxes, euler_state, generic_euler, generic_quaternion, quaternion_state,
+    rotation_of_euler, rotation_of_quaternion,
+};
 use sweep::{Case, RTOLS, Row, sweep_geometric, sweep_runge_kutta};
 
 /// The largest relative change between two lists of conserved quantities.
@@ -192,16 +196,18 @@ fn euler_angle_rows(racket: &TennisRacket) -> Vec<Row> {
     let generated = SpatialPrincipalEuler::<f64>::new(MASS, &tensor).expect("valid model");
     let generic = RigidBody::<f64>::new(MASS, &tensor).expect("valid body");
     let mut rows = variant::<f64, 6>(&case("f64, Euler angles 4.60"), &body, &RTOLS);
-    let system = euler(|s, f, m| generated.rhs(s, f, m));
-    rows.extend(variant::<f64, 6>(
+    // The spatial models in their own 12-state, judged on its rotational part.
+    let whole = |y: &SVector<f64, 12>| judge(&rotation_of_euler(y));
+    let case = |model: &str| racket_case(racket, model, euler_state(&y0), &whole);
+    let system = generated.driven_by(Constant::zero());
+    rows.extend(variant::<f64, 12>(
         &case(names::GENERATED_EULER),
         &system,
         &RTOLS,
     ));
-    let system = euler(generic_euler(generic));
-    rows.extend(variant::<f64, 6>(
+    rows.extend(variant::<f64, 12>(
         &case(names::GENERIC_EULER),
-        &system,
+        &generic_euler(generic),
         &RTOLS,
     ));
     rows
@@ -217,10 +223,12 @@ fn variant<T: RealField + Copy, const M: usize>(
 }
 
 /// The tennis racket through the generated spatial models and the generic nalgebra form in
-/// quaternion kinematics (see [`spatial`]); one line per model.
+/// quaternion kinematics, each in its own 13-state (see [`spatial`]); one line per model.
 fn spatial_rows(racket: &TennisRacket) -> Vec<Row> {
-    let judge = judge_of(racket);
-    let case = |model: &str| case_of(racket, model, &judge);
+    let base = judge_of(racket);
+    let judge = |y: &SVector<f64, 13>| base(&rotation_of_quaternion(y));
+    let y0 = quaternion_state(&racket.initial_state());
+    let case = |model: &str| racket_case(racket, model, y0, &judge);
     let tensor = spatial::principal_tensor(racket);
     let pruned = SpatialPrincipalQuaternion::<f64>::new(MASS, &tensor).expect("valid model");
     let full = SpatialFullQuaternion::<f64>::new(MASS, &tensor).expect("valid model");
@@ -228,26 +236,28 @@ fn spatial_rows(racket: &TennisRacket) -> Vec<Row> {
     let generic = RigidBody::<f64>::new(MASS, &tensor).expect("valid body");
     let generic32 = RigidBody::<f32>::new(MASS, &tensor).expect("valid body");
     let mut rows = Vec::new();
-    let system = quaternion(|s, f, m| pruned.rhs(s, f, m));
-    rows.extend(variant::<f64, 7>(&case(names::GENERATED), &system, &RTOLS));
-    let system = quaternion(generic_quaternion(generic));
-    rows.extend(variant::<f64, 7>(&case(names::GENERIC), &system, &RTOLS));
-    let system = quaternion(|s, f, m| full.rhs(s, f, m));
-    rows.extend(variant::<f64, 7>(
+    let system = pruned.driven_by(Constant::zero());
+    rows.extend(variant::<f64, 13>(&case(names::GENERATED), &system, &RTOLS));
+    rows.extend(variant::<f64, 13>(
+        &case(names::GENERIC),
+        &generic_quaternion(generic),
+        &RTOLS,
+    ));
+    let system = full.driven_by(Constant::zero());
+    rows.extend(variant::<f64, 13>(
         &case(names::GENERATED_FULL_ZERO),
         &system,
         &RTOLS,
     ));
-    let system = quaternion(|s, f, m| pruned32.rhs(s, f, m));
-    rows.extend(variant::<f32, 7>(
+    let system = pruned32.driven_by(Constant::zero());
+    rows.extend(variant::<f32, 13>(
         &case(names::GENERATED_F32),
         &system,
         &RTOLS[..4],
     ));
-    let system = quaternion(generic_quaternion(generic32));
-    rows.extend(variant::<f32, 7>(
+    rows.extend(variant::<f32, 13>(
         &case(names::GENERIC_F32),
-        &system,
+        &generic_quaternion(generic32),
         &RTOLS[..4],
     ));
     rows.extend(turned_axes_rows(racket, None));
@@ -260,25 +270,24 @@ fn spatial_rows(racket: &TennisRacket) -> Vec<Row> {
 fn turned_axes_rows(racket: &TennisRacket, only: Option<&str>) -> Vec<Row> {
     let turned = TurnedAxes::new(racket);
     let base = judge_of(racket);
-    let judge = |y: &SVector<f64, 7>| base(&turned.to_principal(y));
-    let y0 = turned.initial_state(racket);
+    let judge = |y: &SVector<f64, 13>| base(&turned.to_principal(&rotation_of_quaternion(y)));
+    let y0 = quaternion_state(&turned.initial_state(racket));
     let case = |model: &str| racket_case(racket, model, y0, &judge);
     let full = SpatialFullQuaternion::<f64>::new(MASS, turned.tensor()).expect("valid model");
     let generic = RigidBody::<f64>::new(MASS, turned.tensor()).expect("valid body");
     let mut rows = Vec::new();
     if only != Some("generic") {
-        let system = quaternion(|s, f, m| full.rhs(s, f, m));
-        rows.extend(variant::<f64, 7>(
+        let system = full.driven_by(Constant::zero());
+        rows.extend(variant::<f64, 13>(
             &case(names::TURNED_GENERATED),
             &system,
             &RTOLS,
         ));
     }
     if only != Some("generated") {
-        let system = quaternion(generic_quaternion(generic));
-        rows.extend(variant::<f64, 7>(
+        rows.extend(variant::<f64, 13>(
             &case(names::TURNED_GENERIC),
-            &system,
+            &generic_quaternion(generic),
             &RTOLS,
         ));
     }
