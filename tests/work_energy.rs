@@ -204,7 +204,8 @@ properties! {
 macro_rules! spatial_properties {
     ($($module:ident => $type:ident {
         family: $family:ident $(($symmetry:ident, $kinematics:ident))?,
-        state: $n:literal, inputs: $m:literal, title: $title:literal
+        state: $n:literal, inputs: $m:literal, title: $title:literal,
+        parameters: [$($parameter:ident),*]
     },)*) => {$($(
         mod $module {
             use super::*;

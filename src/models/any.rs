@@ -23,7 +23,8 @@ pub trait Visitor {
 macro_rules! any_model {
     ($($module:ident => $type:ident {
         family: $family:ident $(($symmetry:ident, $kinematics:ident))?,
-        state: $n:literal, inputs: $m:literal, title: $title:literal
+        state: $n:literal, inputs: $m:literal, title: $title:literal,
+        parameters: [$($parameter:ident),*]
     },)*) => {
         /// Every typed model of the catalog over `f64`, one variant each.
         #[derive(Debug, Clone, Copy, PartialEq)]

@@ -82,36 +82,32 @@ pub trait FromBody {
     fn from_body(mass: f64, inertia: &InertiaTensor) -> Self;
 }
 
-/// `FromBody` for every spatial module of the catalog: the fields follow the symmetry class.
+/// `FromBody` for every spatial module of the catalog: each emitted field takes the tensor
+/// entry of its name.
 macro_rules! from_body {
     ($($module:ident => $type:ident {
         family: $family:ident $(($symmetry:ident, $kinematics:ident))?,
-        state: $n:literal, inputs: $m:literal, title: $title:literal
+        state: $n:literal, inputs: $m:literal, title: $title:literal,
+        parameters: [$($parameter:ident),*]
     },)*) => {
-        $($(from_body!(@impl $module, $symmetry, $kinematics);)?)*
+        $(from_body!(@impl $module [$($parameter),*] $($symmetry)?);)*
     };
-    (@impl $module:ident, Full, $kinematics:ident) => {
-        from_body!(@fields $module { ixy: ixy, iyz: iyz, ixz: izx });
-    };
-    (@impl $module:ident, Xz, $kinematics:ident) => {
-        from_body!(@fields $module { ixz: izx });
-    };
-    (@impl $module:ident, Principal, $kinematics:ident) => {
-        from_body!(@fields $module {});
-    };
-    (@fields $module:ident { $($field:ident: $value:ident),* }) => {
+    // Spatial models only: they are the ones with a symmetry class.
+    (@impl $module:ident [$($parameter:ident),*]) => {};
+    (@impl $module:ident [$($parameter:ident),*] $symmetry:ident) => {
         impl FromBody for generated::$module::Parameters {
             fn from_body(mass: f64, inertia: &InertiaTensor) -> Self {
-                Self {
-                    mass,
-                    ixx: inertia.ixx(),
-                    iyy: inertia.iyy(),
-                    izz: inertia.izz(),
-                    $($field: inertia.$value(),)*
-                }
+                Self { $($parameter: from_body!(@entry $parameter, mass, inertia),)* }
             }
         }
     };
+    (@entry mass, $mass:ident, $inertia:ident) => { $mass };
+    (@entry ixx, $mass:ident, $inertia:ident) => { $inertia.ixx() };
+    (@entry iyy, $mass:ident, $inertia:ident) => { $inertia.iyy() };
+    (@entry izz, $mass:ident, $inertia:ident) => { $inertia.izz() };
+    (@entry ixy, $mass:ident, $inertia:ident) => { $inertia.ixy() };
+    (@entry iyz, $mass:ident, $inertia:ident) => { $inertia.iyz() };
+    (@entry ixz, $mass:ident, $inertia:ident) => { $inertia.izx() };
 }
 
 for_each_model!(from_body);

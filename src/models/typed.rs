@@ -13,7 +13,8 @@ use simba::simd::SimdRealField;
 macro_rules! typed_models {
     ($($module:ident => $type:ident {
         family: $family:ident $(($symmetry:ident, $kinematics:ident))?,
-        state: $n:literal, inputs: $m:literal, title: $title:literal
+        state: $n:literal, inputs: $m:literal, title: $title:literal,
+        parameters: [$($parameter:ident),*]
     },)*) => {$(
         #[doc = concat!(" ", $title)]
         ///

@@ -87,7 +87,8 @@ pub trait Spatial<T>: Sized {
 macro_rules! spatial {
     ($($module:ident => $type:ident {
         family: $family:ident $(($symmetry:ident, $kinematics:ident))?,
-        state: $n:literal, inputs: $m:literal, title: $title:literal
+        state: $n:literal, inputs: $m:literal, title: $title:literal,
+        parameters: [$($parameter:ident),*]
     },)*) => {$($(
         impl<T: SimdRealField + Copy> Spatial<T> for eom::models::$type<T> {
             const NAME: &'static str = stringify!($module);

@@ -71,7 +71,7 @@ fn catalog_tokens(generated: &[Generated]) -> TokenStream {
         pub const CATALOG: [ModelInfo; #count] = [#(#entries),*];
 
         /// Calls the macro named by its argument once, with one item per model of the catalog:
-        /// `module => Type { family: …, state: N, inputs: M, title: "…" }`, where a spatial family is
+        /// `module => Type { family: …, state: N, inputs: M, title: "…", parameters: [mass, …] }`, where a spatial family is
         /// written `Spatial(Symmetry, Kinematics)`. The typed models, `eom eval`, the tests
         /// and the benches build their per-model code with it, so that a new variant needs no
         /// edit outside the catalog.
@@ -212,5 +212,11 @@ fn macro_item_tokens(generated: &Generated) -> TokenStream {
     let n = Literal::usize_unsuffixed(generated.state_len);
     let m = Literal::usize_unsuffixed(generated.inputs_len);
     let title = &generated.title;
-    quote! { #module => #type_name { family: #family, state: #n, inputs: #m, title: #title }, }
+    let parameters = generated.parameters.iter().map(|p| ident(p));
+    quote! {
+        #module => #type_name {
+            family: #family, state: #n, inputs: #m, title: #title,
+            parameters: [#(#parameters),*]
+        },
+    }
 }

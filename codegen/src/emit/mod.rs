@@ -55,6 +55,8 @@ pub struct Generated {
     pub state_len: usize,
     /// How many inputs the model takes.
     pub inputs_len: usize,
+    /// The fields of its `Parameters`, in order.
+    pub parameters: Vec<String>,
     /// The strategy that gave the fewest operations.
     pub strategy: Strategy,
     /// The cost of one call.
@@ -101,6 +103,11 @@ pub fn generate(model: Model) -> Result<Generated, EmitError> {
         title: format!("{} (equations {}).", system.title, system.equations.join(", ")),
         state_len: system.state.len(),
         inputs_len: system.inputs.len(),
+        parameters: system
+            .parameters
+            .iter()
+            .map(|p| identifier(p.symbol))
+            .collect(),
         strategy,
         operations,
         source,
