@@ -17,5 +17,7 @@ pub mod mass;
 pub mod models;
 pub mod reference;
 pub mod swing;
+mod validate;
 
 pub use inertia::{InertiaError, InertiaTensor};
+pub use validate::ParameterError;

@@ -3,9 +3,8 @@
 //! State `[θ, θ̇]`. The two parameter-only coefficients, `M g h / I₀` and `1 / I₀`, are
 //! computed once in [`Pendulum::new`]; a call costs one `sin` and a few multiplications.
 
-use super::error::{
-    ModelError, check_finite, check_mass, check_non_negative, check_positive, check_steiner,
-};
+use super::error::{ModelError, check_steiner};
+use crate::validate::{finite, non_negative, positive};
 use nalgebra::{RealField, SVector, Vector2};
 
 /// A compound pendulum swinging about a fixed horizontal axis through the pivot O (4.24).
@@ -34,10 +33,10 @@ impl<T: RealField + Copy> Pendulum<T> {
     /// assert!(Pendulum::<f64>::new(-2.0, 3.0, 9.81, 0.5).is_err());
     /// ```
     pub fn new(i0: f64, mass: f64, g: f64, h: f64) -> Result<Self, ModelError> {
-        let i0 = check_positive("I0", i0)?;
-        let mass = check_mass(mass)?;
-        let g = check_finite("g", g)?;
-        let h = check_non_negative("h", h)?;
+        let i0 = positive("i0", i0)?;
+        let mass = positive("mass", mass)?;
+        let g = finite("g", g)?;
+        let h = non_negative("h", h)?;
         check_steiner(i0, mass, h)?;
         Ok(Self {
             i0: nalgebra::convert(i0),

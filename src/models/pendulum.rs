@@ -3,9 +3,8 @@
 use super::generated::pendulum as generated;
 use super::scalar;
 use crate::generic::ModelError;
-use crate::generic::error::{
-    check_finite, check_mass, check_non_negative, check_positive, check_steiner,
-};
+use crate::generic::error::check_steiner;
+use crate::validate::{finite, non_negative, positive};
 use simba::simd::SimdRealField;
 
 /// The compound pendulum I₀θ̈ = −Mgh sin θ + M_O, state `[θ, θ̇]`.
@@ -27,10 +26,10 @@ impl<T: SimdRealField + Copy> Pendulum<T> {
     /// Validates I₀ > 0 (about the pivot), M > 0, g finite, h ≥ 0 and I₀ ≥ M h² (4.29).
     pub fn new(i0: f64, mass: f64, g: f64, h: f64) -> Result<Self, ModelError> {
         let parameters = generated::Parameters {
-            i0: check_positive("I0", i0)?,
-            mass: check_mass(mass)?,
-            g: check_finite("g", g)?,
-            h: check_non_negative("h", h)?,
+            i0: positive("i0", i0)?,
+            mass: positive("mass", mass)?,
+            g: finite("g", g)?,
+            h: non_negative("h", h)?,
         };
         check_steiner(i0, mass, h)?;
         Ok(Self {

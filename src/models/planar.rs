@@ -3,7 +3,7 @@
 use super::generated::{planar_at_g, planar_midship, planar_space_fixed};
 use super::scalar;
 use crate::generic::ModelError;
-use crate::generic::error::{check_finite, check_mass, check_positive};
+use crate::validate::{finite, positive};
 use simba::simd::SimdRealField;
 
 /// Planar motion in body axes at G (4.43, 4.44): state `[u, v, r, X, Y, ψ]`, inputs
@@ -19,8 +19,8 @@ impl<T: SimdRealField + Copy> PlanarAtG<T> {
     /// Validates M > 0 and I_zz > 0.
     pub fn new(mass: f64, izz: f64) -> Result<Self, ModelError> {
         let parameters = planar_at_g::Parameters {
-            mass: check_mass(mass)?,
-            izz: check_positive("Izz", izz)?,
+            mass: positive("mass", mass)?,
+            izz: positive("izz", izz)?,
         };
         Ok(Self {
             coefficients: planar_at_g::Coefficients::new(&parameters),
@@ -56,9 +56,9 @@ impl<T: SimdRealField + Copy> PlanarMidship<T> {
     /// Validates M > 0, I_zz > 0 (about G) and a finite x_G.
     pub fn new(mass: f64, izz: f64, x_g: f64) -> Result<Self, ModelError> {
         let parameters = planar_midship::Parameters {
-            mass: check_mass(mass)?,
-            izz: check_positive("Izz", izz)?,
-            x_g: check_finite("x_G", x_g)?,
+            mass: positive("mass", mass)?,
+            izz: positive("izz", izz)?,
+            x_g: finite("x_g", x_g)?,
         };
         let coefficients = planar_midship::Coefficients::new(&parameters);
         Ok(Self {
@@ -96,8 +96,8 @@ impl<T: SimdRealField + Copy> PlanarSpaceFixed<T> {
     /// Validates M > 0 and I_zz > 0.
     pub fn new(mass: f64, izz: f64) -> Result<Self, ModelError> {
         let parameters = planar_space_fixed::Parameters {
-            mass: check_mass(mass)?,
-            izz: check_positive("Izz", izz)?,
+            mass: positive("mass", mass)?,
+            izz: positive("izz", izz)?,
         };
         let coefficients = planar_space_fixed::Coefficients::new(&parameters);
         Ok(Self {

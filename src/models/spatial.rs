@@ -5,7 +5,7 @@ use super::generated;
 use super::scalar;
 use crate::InertiaTensor;
 use crate::generic::ModelError;
-use crate::generic::error::check_mass;
+use crate::validate::positive;
 use simba::simd::SimdRealField;
 
 /// Which products of inertia a spatial model keeps.
@@ -178,7 +178,7 @@ macro_rules! spatial_model {
         impl<T: SimdRealField + Copy> $name<T> {
             /// Validates M > 0 and that the products this class prunes are zero.
             pub fn new(mass: f64, inertia: &InertiaTensor) -> Result<Self, ModelError> {
-                let mass = check_mass(mass)?;
+                let mass = positive("mass", mass)?;
                 check_symmetry(inertia, $symmetry)?;
                 check_invertible(inertia)?;
                 let parameters = generated::$module::Parameters::from_body(mass, inertia);
