@@ -11,7 +11,9 @@
 //! `T = T₀ · (2/π) K(m)`. [`SwingTest::solve`] removes that factor before applying 4.28, and
 //! [`CompoundPendulum::released_from`] gives the exact large-amplitude motion used to check it.
 
+use crate::ParameterError;
 use crate::elliptic::{complete_k, jacobi};
+use crate::validate::positive;
 use std::f64::consts::{FRAC_2_PI, PI};
 use thiserror::Error;
 
@@ -21,14 +23,10 @@ pub const STANDARD_GRAVITY: f64 = 9.806_65;
 /// Why a swing test or a pendulum cannot be evaluated.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum SwingError {
-    /// A quantity that must be positive is zero, negative, NaN or infinite.
-    #[error("{field} must be positive and finite, got {value}")]
-    NotPositive {
-        /// The quantity, e.g. `"period"`.
-        field: &'static str,
-        /// Its value.
-        value: f64,
-    },
+    /// A quantity that must be positive (the period, the mass, `pivot_to_cg`, gravity) is zero,
+    /// negative, NaN or infinite; the error names it.
+    #[error(transparent)]
+    Parameter(#[from] ParameterError),
     /// The amplitude is negative, NaN, or so large that the body would go over the top.
     #[error("amplitude θ₀ = {degrees}° must be at least 0° and below 180°")]
     AmplitudeOutOfRange {
@@ -74,14 +72,6 @@ pub enum SwingError {
         /// How many were found.
         found: usize,
     },
-}
-
-fn positive(field: &'static str, value: f64) -> Result<f64, SwingError> {
-    if value.is_finite() && value > 0.0 {
-        Ok(value)
-    } else {
-        Err(SwingError::NotPositive { field, value })
-    }
 }
 
 /// The ratio `T / T₀ = (2/π) K(sin²(θ₀/2))` of the period at amplitude θ₀ (radians) to the

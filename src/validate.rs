@@ -2,7 +2,7 @@
 //! or non-zero, and the one error that says which and why.
 //!
 //! Every constructor that takes physical numbers — the models, the generic forms, the
-//! pendulum parameters, the reference problems, the mass properties, the swing test — checks
+//! reference problems, the mass properties, the inertia tensor, the swing test — checks
 //! them here, once, so that what runs afterwards never meets a NaN mass or a negative moment
 //! of inertia, and so that every refusal reads the same way: the field as the caller named it,
 //! what it must be, and what it was.
@@ -11,7 +11,10 @@ use thiserror::Error;
 
 /// A scalar input outside its domain: `field` must be `requirement`, and was `value`.
 ///
-/// The models and the generic forms wrap it in [`crate::generic::ModelError::Parameter`].
+/// The errors of the models and the generic forms ([`crate::generic::ModelError`]), of the
+/// mass properties ([`crate::mass::MassError`]), of the swing test ([`crate::swing::SwingError`])
+/// and of the inertia tensor ([`crate::InertiaError`]) wrap it beside their own variants; the
+/// reference problems return it as it is.
 ///
 /// ```
 /// use eom::generic::{ModelError, PlanarBody};
@@ -56,6 +59,16 @@ pub(crate) fn finite(field: &'static str, value: f64) -> Result<f64, ParameterEr
     require(value.is_finite(), field, value, "finite")
 }
 
+/// Returns `value` if it is finite and not zero (of either sign).
+pub(crate) fn non_zero(field: &'static str, value: f64) -> Result<f64, ParameterError> {
+    require(
+        value.is_finite() && value != 0.0,
+        field,
+        value,
+        "non-zero and finite",
+    )
+}
+
 /// Returns `value` if `holds`, else the error naming `field` and `requirement`.
 pub(crate) fn require(
     holds: bool,
@@ -98,6 +111,7 @@ mod tests {
                 finite_value && value >= 0.0
             );
             assert_eq!(finite("x", value).is_ok(), finite_value);
+            assert_eq!(non_zero("x", value).is_ok(), finite_value && value != 0.0);
         }
     }
 

@@ -2,9 +2,10 @@
 //! come from: each satisfies its differential equation (by finite differences), starts where
 //! the problem starts, and conserves what the flow conserves. None of this uses an integrator.
 
+use eom::ParameterError;
 use eom::integrate::OdeSystem;
 use eom::reference::{
-    AxisymmetricTop, CompoundPendulum, PlanarTurn, ReferenceError, ReferenceProblem, TennisRacket,
+    AxisymmetricTop, CompoundPendulum, PlanarTurn, ReferenceProblem, TennisRacket,
 };
 use nalgebra::{SVector, UnitQuaternion, Vector3};
 
@@ -173,9 +174,7 @@ fn planar_turn_speed_relative_to_the_steady_turn_is_constant() {
 
 #[test]
 fn reference_problems_reject_impossible_parameters_naming_them() {
-    let named = |e: ReferenceError| match e {
-        ReferenceError::NotPositive { name, .. } | ReferenceError::OutOfRange { name, .. } => name,
-    };
+    let named = |e: ParameterError| e.field;
     let bad_mass = CompoundPendulum::new(2.0, -1.0, 9.81, 0.5, 1.0).unwrap_err();
     assert_eq!(named(bad_mass), "mass");
     let over_the_top = CompoundPendulum::new(2.0, 1.0, 9.81, 0.5, 4.0).unwrap_err();

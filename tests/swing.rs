@@ -1,6 +1,7 @@
 //! The compound pendulum (4.24–4.29), its exact large-amplitude motion, its energy (4.33–4.35)
 //! and the swing test that recovers κ_G from a measured period.
 
+use eom::ParameterError;
 use eom::energy::{pendulum_kinetic_energy, pendulum_potential_energy};
 use eom::swing::{
     CompoundPendulum, STANDARD_GRAVITY, SwingError, SwingTest, measure_period, period_factor,
@@ -190,7 +191,7 @@ fn bad_swing_arguments_name_the_fault() {
     for (test, field) in cases {
         let err = test.solve().unwrap_err();
         assert!(
-            matches!(err, SwingError::NotPositive { field: f, .. } if f == field),
+            matches!(err, SwingError::Parameter(ref e) if e.field == field),
             "{err}"
         );
     }
@@ -250,10 +251,10 @@ fn impossible_pendulums_are_refused() {
     let err = CompoundPendulum::new(1.0, 1.0, 0.1, 0.0).unwrap_err();
     assert!(matches!(
         err,
-        SwingError::NotPositive {
+        SwingError::Parameter(ParameterError {
             field: "gravity",
             ..
-        }
+        })
     ));
     assert!(pendulum().released_from(std::f64::consts::PI).is_err());
 }

@@ -9,9 +9,11 @@
 
 use nalgebra::{RealField, SVector};
 
-use super::{ReferenceError, ReferenceProblem, positive};
+use super::ReferenceProblem;
+use crate::ParameterError;
 use crate::elliptic::{complete_k, jacobi};
 use crate::integrate::OdeSystem;
+use crate::validate::positive;
 
 /// A compound pendulum released from rest at a large angle; state `[θ, θ̇]`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -27,22 +29,22 @@ pub struct CompoundPendulum {
 impl CompoundPendulum {
     /// A pendulum with moment of inertia `i0` about the pivot, mass `mass`, gravity `g`,
     /// pivot-to-G distance `h` (4.24), released from rest at `theta0` with 0 < θ₀ < π.
-    pub fn new(i0: f64, mass: f64, g: f64, h: f64, theta0: f64) -> Result<Self, ReferenceError> {
+    pub fn new(i0: f64, mass: f64, g: f64, h: f64, theta0: f64) -> Result<Self, ParameterError> {
         let mgh = positive("mass", mass)? * positive("g", g)? * positive("h", h)?;
         let i0 = positive("i0", i0)?;
         if !(theta0 > 0.0 && theta0 < std::f64::consts::PI) {
-            let range = "0 < θ₀ < π (the pendulum must swing, not go over the top)";
-            return Err(ReferenceError::OutOfRange {
-                name: "theta0",
+            let requirement = "between 0 and π (the pendulum must swing, not go over the top)";
+            return Err(ParameterError {
+                field: "theta0",
                 value: theta0,
-                range,
+                requirement,
             });
         }
         let k = (0.5 * theta0).sin();
-        let quarter = complete_k(k * k).map_err(|_| ReferenceError::OutOfRange {
-            name: "theta0",
+        let quarter = complete_k(k * k).map_err(|_| ParameterError {
+            field: "theta0",
             value: theta0,
-            range: "too close to π for K(m) in f64",
+            requirement: "far enough from π for K(m) in f64",
         })?;
         Ok(Self {
             i0,
