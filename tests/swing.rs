@@ -268,9 +268,10 @@ fn swing_test_recovers_kappa_g_from_an_integrated_swing() {
     use nalgebra::SVector;
     let amplitude = f64::to_radians(15.0);
     let p = pendulum();
-    let model =
-        eom::models::Pendulum::<f64>::new(p.inertia_pivot(), MASS, STANDARD_GRAVITY, PIVOT_TO_CG)
+    let parameters =
+        eom::PendulumParameters::new(p.inertia_pivot(), MASS, STANDARD_GRAVITY, PIVOT_TO_CG)
             .unwrap();
+    let model = eom::models::Pendulum::<f64>::new(&parameters);
     let system = |_t: f64, y: &SVector<f64, 2>, dy: &mut SVector<f64, 2>| {
         *dy = SVector::from(model.rhs(&[y[0], y[1]], 0.0));
     };

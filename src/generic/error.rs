@@ -50,19 +50,3 @@ pub enum ModelError {
         limit: f64,
     },
 }
-
-/// Relative slack in the check `I₀ ≥ M h²`: a simple pendulum has `I₀ = M h²` exactly, and
-/// the product computed by the caller may exceed `I₀` by a few ulps.
-const STEINER_SLACK: f64 = 1e-12;
-
-/// Refuses `I₀ < M h²` (4.29: the moment about G, `I_G = I₀ − M h²`, cannot be negative),
-/// with a relative slack for a simple pendulum computed in floating point.
-pub(crate) fn check_steiner(i0: f64, mass: f64, h: f64) -> Result<(), ParameterError> {
-    crate::validate::require(
-        i0 >= mass * h * h * (1.0 - STEINER_SLACK),
-        "i0",
-        i0,
-        "at least mass · h² (4.29: I_G = I₀ − M h² cannot be negative)",
-    )?;
-    Ok(())
-}
