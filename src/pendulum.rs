@@ -6,7 +6,9 @@
 //! pivot, `M` the mass, `g` gravity and `M_O` an applied moment about the pivot.
 //!
 //! One [`PendulumParameters`] feeds each pendulum role: the generic form
-//! ([`crate::generic::Pendulum`]) and the generated model ([`crate::models::Pendulum`]).
+//! ([`crate::generic::Pendulum`]), the generated model ([`crate::models::Pendulum`]), the exact
+//! large-amplitude solution ([`crate::reference::LargeSwing`]) and the swing test's model of a
+//! body on the rig ([`crate::swing::SwungBody`]).
 //!
 //! # Conventions
 //!

@@ -2,7 +2,8 @@
 //! written from the mathematics, so that the integrators are judged against answers that owe
 //! nothing to an integrator.
 //!
-//! - [`CompoundPendulum`]: 4.24 at large amplitude, solved by Jacobi's sn (period 4K(m)/ω₀);
+//! - [`LargeSwing`]: the compound pendulum 4.24 released from rest at a large angle, solved by
+//!   Jacobi's sn and cn (period 4K(m)/ω₀);
 //! - [`AxisymmetricTop`]: torque-free rotation of a symmetric body (4.52 with I₁ = I₂), steady
 //!   precession in closed form, attitude included;
 //! - [`TennisRacket`]: torque-free rotation near the intermediate axis (the Dzhanibekov flip),
@@ -18,13 +19,13 @@
 //! and the principal-axes form with Euler-angle kinematics 4.60.
 
 mod axisymmetric;
-mod pendulum;
+mod large_swing;
 mod planar_turn;
 mod tennis_racket;
 pub mod torque_free;
 
 pub use axisymmetric::AxisymmetricTop;
-pub use pendulum::CompoundPendulum;
+pub use large_swing::LargeSwing;
 pub use planar_turn::PlanarTurn;
 pub use tennis_racket::TennisRacket;
 
