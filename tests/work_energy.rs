@@ -181,7 +181,12 @@ fn pendulum_power_gap(case: &PendulumCase) -> f64 {
 fn kinetic_energy_gap<S: Spatial<f64>>(case: &SpatialCase) -> f64 {
     let model = S::build(case.mass, &case.tensor).unwrap();
     let ours = model.kinetic(&case.state(S::KINEMATICS));
-    let theirs = kinetic_energy(case.mass, &case.velocity, &case.tensor, &case.omega);
+    let theirs = kinetic_energy(
+        case.mass,
+        &case.velocity,
+        &case.tensor.matrix(),
+        &case.omega,
+    );
     // Both are sums of positive terms (ωᵀ[I]ω adds products of either sign, bounded by the
     // absolute form): relative to that, a dozen roundings.
     let terms = 0.5 * case.mass * case.velocity.norm_squared()

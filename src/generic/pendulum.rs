@@ -5,6 +5,7 @@
 //! costs one `sin` and a few multiplications.
 
 use crate::PendulumParameters;
+use crate::energy::{pendulum_kinetic_energy, pendulum_potential_energy};
 use nalgebra::{RealField, SVector, Vector2};
 
 /// A compound pendulum swinging about a fixed horizontal axis through the pivot O (4.24).
@@ -59,11 +60,19 @@ impl<T: RealField + Copy> Pendulum<T> {
     }
 
     /// The energy `½ I₀ θ̇² + M g h (1 − cos θ)` of 4.34–4.35, constant without an applied
-    /// moment.
+    /// moment (by [`pendulum_kinetic_energy`] and [`pendulum_potential_energy`]).
+    ///
+    /// ```
+    /// use eom::{PendulumParameters, generic::Pendulum};
+    /// let p = Pendulum::<f64>::new(&PendulumParameters::new(2.0, 3.0, 9.81, 0.5).unwrap());
+    /// // At rest, level with the pivot: U = M g h; at the bottom moving at 1 rad/s: T = ½ I₀.
+    /// let level = p.energy(&nalgebra::Vector2::new(std::f64::consts::FRAC_PI_2, 0.0));
+    /// assert!((level - 3.0 * 9.81 * 0.5).abs() < 1e-14);
+    /// assert_eq!(p.energy(&nalgebra::Vector2::new(0.0, 1.0)), 1.0);
+    /// ```
     pub fn energy(&self, state: &SVector<T, 2>) -> T {
-        let half: T = nalgebra::convert(0.5);
-        half * self.i0 * state[1] * state[1]
-            + self.mass * self.g * self.h * (T::one() - state[0].cos())
+        pendulum_kinetic_energy(self.i0, state[1])
+            + pendulum_potential_energy(self.mass, self.g, self.h, state[0])
     }
 
     /// The moment of inertia about the pivot, `I₀`.

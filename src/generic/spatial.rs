@@ -158,11 +158,10 @@ impl<T: RealField + Copy> RigidBody<T> {
         self.inertia * omega
     }
 
-    /// The kinetic energy, 4.32: `T = ½ M v·v + ½ ωᵀ [I] ω`.
+    /// The kinetic energy, 4.32: `T = ½ M v·v + ½ ωᵀ [I] ω` (by [`crate::energy::kinetic_energy`]).
     #[inline]
     pub fn kinetic_energy(&self, velocity: &Vector3<T>, omega: &Vector3<T>) -> T {
-        let half: T = nalgebra::convert(0.5);
-        half * (self.mass * velocity.norm_squared() + omega.dot(&self.angular_momentum(omega)))
+        crate::energy::kinetic_energy(self.mass, velocity, &self.inertia, omega)
     }
 
     /// The mass `M`.

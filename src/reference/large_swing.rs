@@ -16,6 +16,7 @@ use nalgebra::{RealField, SVector};
 
 use super::ReferenceProblem;
 use crate::elliptic::{complete_k, jacobi};
+use crate::energy::{pendulum_kinetic_energy, pendulum_potential_energy};
 use crate::integrate::OdeSystem;
 use crate::validate::require;
 use crate::{ParameterError, PendulumParameters};
@@ -107,8 +108,9 @@ impl LargeSwing {
 
     /// The energy ½I₀θ̇² + Mgh(1 − cos θ) (4.34–4.35).
     pub fn energy(&self, y: &SVector<f64, 2>) -> f64 {
-        0.5 * self.parameters.i0() * y[1] * y[1]
-            + self.parameters.restoring_moment() * (1.0 - y[0].cos())
+        let p = &self.parameters;
+        pendulum_kinetic_energy(p.i0(), y[1])
+            + pendulum_potential_energy(p.mass(), p.g(), p.h(), y[0])
     }
 }
 
