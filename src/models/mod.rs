@@ -1,7 +1,8 @@
 //! The generated models behind a typed, validated API.
 //!
 //! Each type validates its parameters once (finite numbers, mass > 0, a physical inertia
-//! tensor, products of inertia zero where the symmetry class prunes them), computes the
+//! tensor, products of inertia zero where the symmetry class prunes them; the pendulum takes
+//! them already validated as a [`crate::PendulumParameters`]), computes the
 //! generated coefficients once, and then offers `rhs` — the generated right-hand side — and the
 //! kinetic energy (4.32). All are generic over the scalar `T: SimdRealField + Copy`: `f32`,
 //! `f64`, `simba::simd::WideF64x4` lanes, or dual numbers.
