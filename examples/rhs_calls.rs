@@ -14,9 +14,9 @@
 //! `generic`; `model` is `pendulum`, `planar_at_g`, `planar_midship`, `planar_space_fixed` or
 //! `{full,xz,principal}_{euler,quaternion}`.
 
-use eom::InertiaTensor;
 use eom::generic::{PlanarBody, PlanarMidship, RigidBody};
 use eom::models::{self, FromBody, generated::std_trig};
+use eom::{InertiaTensor, PendulumParameters};
 use nalgebra::{SVector, Vector2, Vector3};
 use std::hint::black_box;
 
@@ -73,6 +73,11 @@ fn class_tensor(model: &str) -> InertiaTensor {
     }
 }
 
+/// The pendulum of the benches: I₀ = 2, M = 1, g = 9.81, h = 0.5.
+fn pendulum_parameters() -> Option<PendulumParameters> {
+    PendulumParameters::new(2.0, 1.0, 9.81, 0.5).ok()
+}
+
 /// The state of call `i`: a little different each time, so nothing is hoisted out of the loop.
 fn spatial_state<const N: usize>(i: usize) -> [f64; N] {
     let s = 1e-6 * i as f64;
@@ -122,7 +127,7 @@ fn generated(model: &str, calls: usize) -> Option<f64> {
     let tensor = class_tensor(model);
     Some(match model {
         "pendulum" => {
-            let p = models::Pendulum::<f64>::new(2.0, 1.0, 9.81, 0.5).ok()?;
+            let p = models::Pendulum::<f64>::new(&pendulum_parameters()?);
             run(&states(pendulum_state), calls, |x| p.rhs(x, 0.0))
         }
         "planar_at_g" => {
@@ -192,7 +197,7 @@ fn generic(model: &str, calls: usize) -> Option<f64> {
     let spatial_q = |i| SVector::<f64, 13>::from(spatial_state::<13>(i));
     Some(match model {
         "pendulum" => {
-            let p = eom::generic::Pendulum::<f64>::new(2.0, 1.0, 9.81, 0.5).ok()?;
+            let p = eom::generic::Pendulum::<f64>::new(&pendulum_parameters()?);
             let xs: Vec<_> = (0..STATES)
                 .map(|i| Vector2::from(pendulum_state(i)))
                 .collect();

@@ -3,27 +3,35 @@
 //! Without dissipation `E = T + U` is constant (4.33), and with forces the rate of change of
 //! the kinetic energy is their power. A model or an integrator that breaks either has a bug, so
 //! these plain formulas are what the tests hold the generated code to.
+//!
+//! They are the crate's one runtime definition of each energy: the generic forms, the
+//! reference problems and the torque-free bodies call them. (The generated models in
+//! [`crate::models`] compute their own, to be emitted by the generator with the rest of the
+//! model, and the tests hold those to these.) The kinetic and pendulum energies are generic over
+//! the scalar `T: RealField + Copy`, as the generic forms are.
 
-use crate::InertiaTensor;
-use nalgebra::Vector3;
+use nalgebra::{Matrix3, RealField, Vector3};
 
 /// The kinetic energy of a rigid body, `T = ½ M v_G² + ½ ωᵀ [I_G] ω` (4.32), from the velocity
-/// of G and the angular velocity, both in body axes, and the tensor about G.
+/// of G and the angular velocity, both in body axes, and the matrix of the tensor about G
+/// ([`InertiaTensor::matrix`](crate::InertiaTensor::matrix)).
 ///
 /// ```
 /// use eom::{InertiaTensor, energy::kinetic_energy};
 /// use nalgebra::Vector3;
 /// let inertia = InertiaTensor::new(2.0, 3.0, 4.0, 0.0, 0.0, 0.0).unwrap();
-/// let t = kinetic_energy(5.0, &Vector3::new(1.0, 0.0, 0.0), &inertia, &Vector3::new(0.0, 0.0, 2.0));
+/// let (v, omega) = (Vector3::new(1.0, 0.0, 0.0), Vector3::new(0.0, 0.0, 2.0));
+/// let t = kinetic_energy(5.0, &v, &inertia.matrix(), &omega);
 /// assert_eq!(t, 0.5 * 5.0 * 1.0 + 0.5 * 4.0 * 4.0);
 /// ```
-pub fn kinetic_energy(
-    mass: f64,
-    velocity_g: &Vector3<f64>,
-    inertia: &InertiaTensor,
-    omega: &Vector3<f64>,
-) -> f64 {
-    0.5 * mass * velocity_g.norm_squared() + 0.5 * omega.dot(&(inertia.matrix() * omega))
+pub fn kinetic_energy<T: RealField + Copy>(
+    mass: T,
+    velocity_g: &Vector3<T>,
+    inertia: &Matrix3<T>,
+    omega: &Vector3<T>,
+) -> T {
+    let half: T = nalgebra::convert(0.5);
+    half * (mass * velocity_g.norm_squared() + omega.dot(&(inertia * omega)))
 }
 
 /// The potential energy of gravity, `U = −M g·r_G`, for a gravity vector `g` and G at `r_G`,
@@ -35,18 +43,24 @@ pub fn gravity_potential_energy(mass: f64, gravity: &Vector3<f64>, centre: &Vect
     -mass * gravity.dot(centre)
 }
 
-/// The kinetic energy of a compound pendulum, `T = ½ I₀ θ̇²` (4.34).
-pub fn pendulum_kinetic_energy(inertia_pivot: f64, rate: f64) -> f64 {
-    0.5 * inertia_pivot * rate * rate
+/// The kinetic energy of a compound pendulum, `T = ½ I₀ θ̇²` (4.34), for the moment of inertia
+/// about the pivot `i0` and the rate `θ̇`.
+pub fn pendulum_kinetic_energy<T: RealField + Copy>(i0: T, rate: T) -> T {
+    let half: T = nalgebra::convert(0.5);
+    half * i0 * rate * rate
 }
 
-/// The potential energy of a compound pendulum, `U = M g h (1 − cos θ)` (4.34), zero at rest.
+/// The potential energy of a compound pendulum, `U = M g h (1 − cos θ)` (4.34), zero at rest,
+/// for the mass, gravity and pivot-to-G distance in the order of
+/// [`PendulumParameters::new`](crate::PendulumParameters::new).
 ///
 /// It is computed as `2 M g h sin²(θ/2)`, the same quantity without the cancellation of
 /// `1 − cos θ` at small angles.
-pub fn pendulum_potential_energy(mass: f64, gravity: f64, pivot_to_cg: f64, angle: f64) -> f64 {
-    let half = (0.5 * angle).sin();
-    2.0 * mass * gravity * pivot_to_cg * half * half
+pub fn pendulum_potential_energy<T: RealField + Copy>(mass: T, g: T, h: T, angle: T) -> T {
+    let half_angle: T = nalgebra::convert(0.5);
+    let two: T = nalgebra::convert(2.0);
+    let sine = (half_angle * angle).sin();
+    two * mass * g * h * sine * sine
 }
 
 #[cfg(test)]
@@ -75,7 +89,7 @@ mod tests {
             .iter()
             .map(|&(m, r)| 0.5 * m * (v_g + omega.cross(&(r - g))).norm_squared())
             .sum();
-        let formula = kinetic_energy(body.mass(), &v_g, &body.inertia(), &omega);
+        let formula = kinetic_energy(body.mass(), &v_g, &body.inertia().matrix(), &omega);
         // Relative 1e-14: two sums of a dozen terms of order ten.
         assert!((formula - particles).abs() < 1e-14 * particles);
     }
@@ -99,5 +113,6 @@ mod tests {
             assert!((computed - direct).abs() < tolerance * direct);
         }
         assert_eq!(pendulum_kinetic_energy(4.0, 0.5), 0.5);
+        assert_eq!(pendulum_kinetic_energy(4.0_f32, 0.5), 0.5);
     }
 }

@@ -5,20 +5,17 @@
 //! Every tensor `eom` accepts passes through [`InertiaTensor::new`] or
 //! [`InertiaTensor::from_matrix`], which refuse a tensor that no rigid body can have.
 
+use crate::ParameterError;
+use crate::validate::finite;
 use nalgebra::{Matrix3, SymmetricEigen};
 use thiserror::Error;
 
 /// Why a tensor is not the inertia tensor of any rigid body.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum InertiaError {
-    /// A component is NaN or infinite.
-    #[error("inertia component {field} is not finite ({value})")]
-    NotFinite {
-        /// The component, e.g. `"Ixy"`.
-        field: &'static str,
-        /// Its value.
-        value: f64,
-    },
+    /// A component is NaN or infinite (the error names it, e.g. `"Ixy"`).
+    #[error("inertia component {0}")]
+    NotFinite(ParameterError),
     /// The matrix differs from its transpose.
     #[error("inertia tensor is not symmetric: {upper} = {a} but {lower} = {b}")]
     NotSymmetric {
@@ -152,12 +149,7 @@ impl InertiaTensor {
 fn check_finite(m: &Matrix3<f64>) -> Result<(), InertiaError> {
     for r in 0..3 {
         for c in 0..3 {
-            if !m[(r, c)].is_finite() {
-                return Err(InertiaError::NotFinite {
-                    field: NAMES[r][c],
-                    value: m[(r, c)],
-                });
-            }
+            finite(NAMES[r][c], m[(r, c)]).map_err(InertiaError::NotFinite)?;
         }
     }
     Ok(())
@@ -233,7 +225,11 @@ mod tests {
     #[test]
     fn nan_component_is_named() {
         let err = InertiaTensor::new(1.0, 1.0, 1.0, f64::NAN, 0.0, 0.0).unwrap_err();
-        assert!(matches!(err, InertiaError::NotFinite { field: "Ixy", .. }));
+        assert!(matches!(err, InertiaError::NotFinite(ref e) if e.field == "Ixy"));
+        assert_eq!(
+            err.to_string(),
+            "inertia component Ixy must be finite, got NaN"
+        );
     }
 
     #[test]

@@ -15,7 +15,11 @@ mod inertia;
 pub mod integrate;
 pub mod mass;
 pub mod models;
+mod pendulum;
 pub mod reference;
 pub mod swing;
+mod validate;
 
 pub use inertia::{InertiaError, InertiaTensor};
+pub use pendulum::PendulumParameters;
+pub use validate::ParameterError;

@@ -1,5 +1,5 @@
-//! The compound pendulum (4.24–4.29) and the swing test that uses it to measure a model's
-//! radius of gyration.
+//! The swing test: a model's radius of gyration from the period of its swing as a compound
+//! pendulum (4.24–4.29).
 //!
 //! A body swinging about a horizontal pivot O, with G at distance h below it, obeys
 //! `I₀ θ̈ = −M g h sin θ` (4.24). For small swings its period is `T₀ = 2π √(I₀ / (M g h))`
@@ -9,26 +9,26 @@
 //! The chapter stops at small swings. A real swing has a finite amplitude θ₀, and its period is
 //! longer: exactly `T = 4 K(m) / ω₀` with `m = sin²(θ₀/2)` and `ω₀ = √(M g h / I₀)`, that is
 //! `T = T₀ · (2/π) K(m)`. [`SwingTest::solve`] removes that factor before applying 4.28, and
-//! [`CompoundPendulum::released_from`] gives the exact large-amplitude motion used to check it.
+//! [`SwungBody`] gives the period and the exact large-amplitude motion
+//! ([`crate::reference::LargeSwing`]) of a body of known parameters, to check it.
 
-use crate::elliptic::{complete_k, jacobi};
+use crate::elliptic::complete_k;
+use crate::reference::LargeSwing;
+use crate::validate::positive;
+use crate::{ParameterError, PendulumParameters};
 use std::f64::consts::{FRAC_2_PI, PI};
 use thiserror::Error;
 
 /// Standard gravity, 9.80665 m/s².
 pub const STANDARD_GRAVITY: f64 = 9.806_65;
 
-/// Why a swing test or a pendulum cannot be evaluated.
+/// Why a swing test or a swung body cannot be evaluated.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum SwingError {
-    /// A quantity that must be positive is zero, negative, NaN or infinite.
-    #[error("{field} must be positive and finite, got {value}")]
-    NotPositive {
-        /// The quantity, e.g. `"period"`.
-        field: &'static str,
-        /// Its value.
-        value: f64,
-    },
+    /// A measured quantity (the period, the mass, `pivot_to_cg`, gravity) is not positive and
+    /// finite, or a swung body has no period (`g` or `h` not positive); the error names it.
+    #[error(transparent)]
+    Parameter(#[from] ParameterError),
     /// The amplitude is negative, NaN, or so large that the body would go over the top.
     #[error("amplitude θ₀ = {degrees}° must be at least 0° and below 180°")]
     AmplitudeOutOfRange {
@@ -76,14 +76,6 @@ pub enum SwingError {
     },
 }
 
-fn positive(field: &'static str, value: f64) -> Result<f64, SwingError> {
-    if value.is_finite() && value > 0.0 {
-        Ok(value)
-    } else {
-        Err(SwingError::NotPositive { field, value })
-    }
-}
-
 /// The ratio `T / T₀ = (2/π) K(sin²(θ₀/2))` of the period at amplitude θ₀ (radians) to the
 /// small-amplitude period of 4.27.
 ///
@@ -105,71 +97,48 @@ pub fn period_factor(amplitude: f64) -> Result<f64, SwingError> {
     Ok(FRAC_2_PI * k)
 }
 
-/// A compound pendulum: moment of inertia `I₀` about the pivot, mass `M`, pivot-to-G distance
-/// `h` and gravity `g` (4.24).
+/// A body hung on the swing-test rig: the motion and the period that a swing test would time
+/// on a pendulum of known parameters — the forward model that [`SwingTest::solve`] inverts.
+///
+/// ```
+/// use eom::PendulumParameters;
+/// use eom::swing::{STANDARD_GRAVITY, SwungBody};
+/// // κ_G = 0.25 m, hung 0.12 m from G, 20 kg.
+/// let parameters = PendulumParameters::from_gyradius(0.25, 20.0, STANDARD_GRAVITY, 0.12).unwrap();
+/// let body = SwungBody::new(&parameters).unwrap();
+/// // A perfect measurement at 15° gives κ_G back through 4.28 and 4.29.
+/// let result = body.measurement(15f64.to_radians()).unwrap().solve().unwrap();
+/// assert!((result.kappa_g - 0.25).abs() < 1e-14);
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct CompoundPendulum {
-    inertia_pivot: f64,
-    mass: f64,
-    pivot_to_cg: f64,
-    gravity: f64,
+pub struct SwungBody {
+    parameters: PendulumParameters,
+    omega0: f64,
 }
 
-impl CompoundPendulum {
-    /// Builds the pendulum; every argument must be positive and finite, and `I₀ ≥ M h²`
-    /// (the moment about G, 4.29, cannot be negative).
-    pub fn new(
-        inertia_pivot: f64,
-        mass: f64,
-        pivot_to_cg: f64,
-        gravity: f64,
-    ) -> Result<Self, SwingError> {
-        let pendulum = Self {
-            inertia_pivot: positive("inertia_pivot", inertia_pivot)?,
-            mass: positive("mass", mass)?,
-            pivot_to_cg: positive("pivot_to_cg", pivot_to_cg)?,
-            gravity: positive("gravity", gravity)?,
-        };
-        if inertia_pivot <= mass * pivot_to_cg * pivot_to_cg {
-            return Err(SwingError::ImaginaryGyradius {
-                kappa: (inertia_pivot / mass).sqrt(),
-                pivot_to_cg,
-            });
-        }
-        Ok(pendulum)
+impl SwungBody {
+    /// The body of `parameters` on the rig. It must swing: `g > 0` and `h > 0`, or the error
+    /// names whichever is not (see [`PendulumParameters::natural_frequency`]).
+    pub fn new(parameters: &PendulumParameters) -> Result<Self, SwingError> {
+        Ok(Self {
+            parameters: *parameters,
+            omega0: parameters.natural_frequency()?,
+        })
     }
 
-    /// The pendulum of a body with radius of gyration `κ_G` about G, swung at distance `h`
-    /// from G: `I₀ = M (κ_G² + h²)` (4.29).
-    pub fn from_gyradius(
-        kappa_g: f64,
-        mass: f64,
-        pivot_to_cg: f64,
-        gravity: f64,
-    ) -> Result<Self, SwingError> {
-        let kappa_g = positive("kappa_g", kappa_g)?;
-        let h = positive("pivot_to_cg", pivot_to_cg)?;
-        Self::new(mass * (kappa_g * kappa_g + h * h), mass, h, gravity)
-    }
-
-    /// `I₀`, the moment of inertia about the pivot.
-    pub fn inertia_pivot(&self) -> f64 {
-        self.inertia_pivot
-    }
-
-    /// `M g h`, the restoring moment per unit of sin θ (4.24).
-    pub fn restoring_moment(&self) -> f64 {
-        self.mass * self.gravity * self.pivot_to_cg
+    /// The parameters of the body on the rig.
+    pub fn parameters(&self) -> &PendulumParameters {
+        &self.parameters
     }
 
     /// `ω₀ = √(M g h / I₀)`, the small-amplitude angular frequency (4.27).
     pub fn natural_frequency(&self) -> f64 {
-        (self.restoring_moment() / self.inertia_pivot).sqrt()
+        self.omega0
     }
 
     /// The small-amplitude period `T₀ = 2π √(I₀ / (M g h))` (4.27).
     pub fn small_amplitude_period(&self) -> f64 {
-        2.0 * PI / self.natural_frequency()
+        2.0 * PI / self.omega0
     }
 
     /// The exact period at amplitude θ₀ (radians): `T = T₀ (2/π) K(sin²(θ₀/2))`.
@@ -178,57 +147,21 @@ impl CompoundPendulum {
     }
 
     /// The exact motion after release from rest at θ = θ₀ (radians) at t = 0.
-    pub fn released_from(&self, amplitude: f64) -> Result<ExactSwing, SwingError> {
+    pub fn released_from(&self, amplitude: f64) -> Result<LargeSwing, SwingError> {
         period_factor(amplitude)?;
-        let k = (0.5 * amplitude).sin();
-        let m = k * k;
-        let quarter = complete_k(m).map_err(|_| SwingError::AmplitudeOutOfRange {
-            degrees: amplitude.to_degrees(),
-        })?;
-        Ok(ExactSwing {
-            omega0: self.natural_frequency(),
-            k,
-            m,
-            quarter,
+        Ok(LargeSwing::new(&self.parameters, amplitude)?)
+    }
+
+    /// What a perfect swing test at amplitude θ₀ (radians) records: the exact period, with the
+    /// body's `h`, `M` and `g`.
+    pub fn measurement(&self, amplitude: f64) -> Result<SwingTest, SwingError> {
+        Ok(SwingTest {
+            period: self.period(amplitude)?,
+            pivot_to_cg: self.parameters.h(),
+            mass: self.parameters.mass(),
+            gravity: self.parameters.g(),
+            amplitude,
         })
-    }
-}
-
-/// The exact large-amplitude motion of a compound pendulum released from rest at θ₀.
-///
-/// With `k = sin(θ₀/2)`, `m = k²` and `u = ω₀ t + K(m)`:
-/// `sin(θ/2) = k sn(u | m)` and `θ̇ = 2 k ω₀ cn(u | m)`.
-/// At t = 0, sn(K) = 1 gives θ = θ₀ and cn(K) = 0 gives θ̇ = 0. Differentiating,
-/// `½ cos(θ/2) θ̇ = k ω₀ cn dn` and `cos(θ/2) = √(1 − k² sn²) = dn`, which gives θ̇; then
-/// `½ I₀ θ̇² + M g h (1 − cos θ) = 2 M g h k² (cn² + sn²) = M g h (1 − cos θ₀)`, the energy
-/// integral 4.35 with `I₀ ω₀² = M g h`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ExactSwing {
-    omega0: f64,
-    k: f64,
-    m: f64,
-    quarter: f64,
-}
-
-impl ExactSwing {
-    /// θ(t), in radians.
-    pub fn angle(&self, t: f64) -> f64 {
-        2.0 * (self.k * self.jacobi(t).sn).asin()
-    }
-
-    /// θ̇(t), in radians per unit time.
-    pub fn rate(&self, t: f64) -> f64 {
-        2.0 * self.k * self.omega0 * self.jacobi(t).cn
-    }
-
-    /// The exact period `4 K(m) / ω₀`.
-    pub fn period(&self) -> f64 {
-        4.0 * self.quarter / self.omega0
-    }
-
-    fn jacobi(&self, t: f64) -> crate::elliptic::Jacobi {
-        // m = sin²(θ₀/2) with θ₀ checked to lie in [0, π), so 0 ≤ m < 1 and jacobi cannot fail.
-        jacobi(self.omega0 * t + self.quarter, self.m).expect("m checked in released_from")
     }
 }
 

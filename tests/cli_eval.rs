@@ -187,7 +187,7 @@ fn bad_inputs_fail_with_errors_that_name_the_culprit() {
     fails_naming(
         &spatial,
         &PRINCIPAL.replace("\"mass\": 2.0", "\"mass\": -2"),
-        "mass M = -2",
+        "mass must be positive and finite, got -2",
     );
     fails_naming(
         &spatial,
@@ -221,7 +221,11 @@ fn bad_inputs_fail_with_errors_that_name_the_culprit() {
     );
     let pendulum =
         r#"{"i0": 1, "mass": 1, "g": 9.81, "h": 2, "state": {"theta": 0, "theta_dot": 0}}"#;
-    fails_naming(&["--model", "pendulum"], pendulum, "I0");
+    fails_naming(
+        &["--model", "pendulum"],
+        pendulum,
+        "i0 must be at least mass · h²",
+    );
     let planar = r#"{"mass": 1, "izz": 1, "force": [0, 0], "moment": 0,
         "state": {"u": 0, "v": 0, "r": 0, "x": 0, "y": 0, "psi": 0}}"#;
     fails_naming(&["--model", "planar-midship"], planar, "x_g");

@@ -15,12 +15,12 @@ use common::{
     inverse_scale, midship_scale, pendulum_case, pendulum_scale, planar_case, relative_gap,
     space_fixed_scale, spatial_case, spatial_scale,
 };
-use eom::InertiaTensor;
 use eom::generic::{self, ModelError};
 use eom::models::{
     Model, Pendulum, PlanarAtG, PlanarMidship, PlanarSpaceFixed, SpatialFullEuler,
     SpatialFullQuaternion, SpatialPrincipalQuaternion, SpatialXzEuler, SpatialXzQuaternion,
 };
+use eom::{InertiaTensor, PendulumParameters};
 use nalgebra::{Quaternion, UnitQuaternion, Vector3, Vector6};
 
 /// Relative 1e-12 of the size of the terms: two f64 forms of one formula. Each evaluates an
@@ -92,11 +92,9 @@ fn f32_gap<S32: Spatial<f32>, S64: Spatial<f64>>(case: &SpatialCase) -> f64 {
 }
 
 fn pendulum_gap(case: &PendulumCase) -> f64 {
-    let (i0, m, g, h) = (case.i0, case.mass, case.g, case.h);
-    let ours = Pendulum::<f64>::new(i0, m, g, h)
-        .unwrap()
-        .rhs(&case.state, &[case.moment]);
-    let theirs = generic::Pendulum::<f64>::new(i0, m, g, h).unwrap();
+    let parameters = case.parameters();
+    let ours = Pendulum::<f64>::new(&parameters).rhs(&case.state, &[case.moment]);
+    let theirs = generic::Pendulum::<f64>::new(&parameters);
     let theirs = theirs.rhs(&case.state.into(), case.moment);
     relative_gap(&ours, theirs.as_slice(), &pendulum_scale(case))
 }
@@ -161,7 +159,7 @@ fn planar_f32_gap(case: &PlanarCase) -> f64 {
 }
 
 fn pendulum_f32_gap(case: &PendulumCase) -> f64 {
-    let (i0, m, g, h) = (case.i0, case.mass, case.g, case.h);
+    let parameters = case.parameters();
     let state = case.state.map(|x| x as f32);
     let moment = case.moment as f32;
     let rounded = PendulumCase {
@@ -169,11 +167,8 @@ fn pendulum_f32_gap(case: &PendulumCase) -> f64 {
         moment: f64::from(moment),
         ..case.clone()
     };
-    let single = Pendulum::<f32>::new(i0, m, g, h)
-        .unwrap()
-        .rhs(&state, &[moment]);
-    let double = Pendulum::<f64>::new(i0, m, g, h).unwrap();
-    let double = double.rhs(&rounded.state, &[rounded.moment]);
+    let single = Pendulum::<f32>::new(&parameters).rhs(&state, &[moment]);
+    let double = Pendulum::<f64>::new(&parameters).rhs(&rounded.state, &[rounded.moment]);
     let gap = relative_gap(&single.map(f64::from), &double, &pendulum_scale(&rounded));
     gap / f64::from(f32::EPSILON)
 }
@@ -282,15 +277,16 @@ fn pruned_variants_name_the_product_they_cannot_carry() {
 }
 
 #[test]
-fn pendulum_model_refuses_a_pivot_inertia_below_m_h_squared_as_the_generic_form_does() {
+fn both_pendulum_forms_take_one_parameter_set_which_refuses_a_pivot_inertia_below_m_h_squared() {
     // I₀ = 1 < M h² = 4: I_G = I₀ − M h² would be negative (4.29).
-    let ours = Pendulum::<f64>::new(1.0, 1.0, 9.81, 2.0).unwrap_err();
-    let theirs = generic::Pendulum::<f64>::new(1.0, 1.0, 9.81, 2.0).unwrap_err();
-    assert!(matches!(ours, ModelError::Parameter { field: "I0", .. }));
-    assert_eq!(ours, theirs);
-    // A simple pendulum, I₀ = M h² exactly, is accepted by both.
-    assert!(Pendulum::<f64>::new(4.0, 1.0, 9.81, 2.0).is_ok());
-    assert!(generic::Pendulum::<f64>::new(4.0, 1.0, 9.81, 2.0).is_ok());
+    let err = PendulumParameters::new(1.0, 1.0, 9.81, 2.0).unwrap_err();
+    assert_eq!(err.field, "i0");
+    // A simple pendulum, I₀ = M h² exactly, is accepted, and both forms are built from it.
+    let simple = PendulumParameters::new(4.0, 1.0, 9.81, 2.0).unwrap();
+    let ours = Pendulum::<f64>::new(&simple).rhs(&[1.0, 0.0], &[0.0]);
+    let theirs = generic::Pendulum::<f64>::new(&simple).rhs(&[1.0, 0.0].into(), 0.0);
+    // g/h sin 1, one rounding apart.
+    assert!((ours[1] - theirs[1]).abs() <= 4.0 * f64::EPSILON * theirs[1].abs());
 }
 
 /// `S::new` on `tensor` must fail as the generic form does, with `SingularInertia`.

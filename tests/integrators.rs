@@ -5,18 +5,18 @@
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 
+use eom::PendulumParameters;
 use eom::integrate::{
     AdaptiveOptions, Dop853, Dopri5, Euler, IntegrateError, Integrator, LieMidpoint, Rk4,
     Statistics, SymplecticEuler,
 };
 use eom::reference::torque_free::PrincipalBody;
-use eom::reference::{
-    AxisymmetricTop, CompoundPendulum, PlanarTurn, ReferenceProblem, TennisRacket,
-};
+use eom::reference::{AxisymmetricTop, LargeSwing, PlanarTurn, ReferenceProblem, TennisRacket};
 use nalgebra::{Quaternion, SVector, UnitQuaternion, Vector1, Vector2, Vector3};
 
-fn pendulum() -> CompoundPendulum {
-    CompoundPendulum::new(2.0, 3.0, 9.81, 0.5, 150f64.to_radians()).unwrap()
+fn pendulum() -> LargeSwing {
+    let parameters = PendulumParameters::new(2.0, 3.0, 9.81, 0.5).unwrap();
+    LargeSwing::new(&parameters, 150f64.to_radians()).unwrap()
 }
 
 fn racket() -> TennisRacket {

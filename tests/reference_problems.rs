@@ -3,9 +3,8 @@
 //! the problem starts, and conserves what the flow conserves. None of this uses an integrator.
 
 use eom::integrate::OdeSystem;
-use eom::reference::{
-    AxisymmetricTop, CompoundPendulum, PlanarTurn, ReferenceError, ReferenceProblem, TennisRacket,
-};
+use eom::reference::{AxisymmetricTop, LargeSwing, PlanarTurn, ReferenceProblem, TennisRacket};
+use eom::{ParameterError, PendulumParameters};
 use nalgebra::{SVector, UnitQuaternion, Vector3};
 
 /// The largest relative mismatch between the central difference of `exact` and the RHS of
@@ -28,9 +27,13 @@ fn derivative_mismatch<const N: usize>(
     worst
 }
 
-fn pendulum() -> CompoundPendulum {
+fn pendulum_parameters() -> PendulumParameters {
+    PendulumParameters::new(2.0, 3.0, 9.81, 0.5).unwrap()
+}
+
+fn pendulum() -> LargeSwing {
     // θ₀ = 150°: far outside the small-angle regime (the period is 1.76× that of 4.27).
-    CompoundPendulum::new(2.0, 3.0, 9.81, 0.5, 150f64.to_radians()).unwrap()
+    LargeSwing::new(&pendulum_parameters(), 150f64.to_radians()).unwrap()
 }
 
 fn racket() -> TennisRacket {
@@ -60,6 +63,9 @@ fn pendulum_starts_at_rest_at_theta0_and_returns_after_one_period() {
     // up to the rounding of 4K.
     assert!((p.exact(0.0) - p.initial_state()).amax() < 1e-12);
     assert!((p.exact(p.period()) - p.initial_state()).amax() < 1e-12);
+    // Released from rest, it first swings towards θ = 0.
+    let just_after = p.exact(1e-3 * p.period());
+    assert!(just_after[0] < p.theta0() && just_after[1] < 0.0);
     // Half a period later it is at rest on the other side.
     let half = p.exact(0.5 * p.period());
     assert!((half[0] + 150f64.to_radians()).abs() < 1e-12 && half[1].abs() < 1e-10);
@@ -68,7 +74,7 @@ fn pendulum_starts_at_rest_at_theta0_and_returns_after_one_period() {
 #[test]
 fn pendulum_period_tends_to_4_27_at_small_amplitude() {
     // At θ₀ = 1e-3, 4K(m)/ω₀ = (2π/ω₀)(1 + θ₀²/16 + …): relative excess 6.25e-8.
-    let p = CompoundPendulum::new(2.0, 3.0, 9.81, 0.5, 1e-3).unwrap();
+    let p = LargeSwing::new(&pendulum_parameters(), 1e-3).unwrap();
     let small = std::f64::consts::TAU / p.omega0();
     let excess = p.period() / small - 1.0;
     assert!((excess - 6.25e-8).abs() < 1e-11, "excess {excess}");
@@ -173,13 +179,13 @@ fn planar_turn_speed_relative_to_the_steady_turn_is_constant() {
 
 #[test]
 fn reference_problems_reject_impossible_parameters_naming_them() {
-    let named = |e: ReferenceError| match e {
-        ReferenceError::NotPositive { name, .. } | ReferenceError::OutOfRange { name, .. } => name,
-    };
-    let bad_mass = CompoundPendulum::new(2.0, -1.0, 9.81, 0.5, 1.0).unwrap_err();
+    let named = |e: ParameterError| e.field;
+    let bad_mass = PendulumParameters::new(2.0, -1.0, 9.81, 0.5).unwrap_err();
     assert_eq!(named(bad_mass), "mass");
-    let over_the_top = CompoundPendulum::new(2.0, 1.0, 9.81, 0.5, 4.0).unwrap_err();
+    let over_the_top = LargeSwing::new(&pendulum_parameters(), 4.0).unwrap_err();
     assert_eq!(named(over_the_top), "theta0");
+    let upside_down = PendulumParameters::new(2.0, 1.0, -9.81, 0.5).unwrap();
+    assert_eq!(named(LargeSwing::new(&upside_down, 1.0).unwrap_err()), "g");
     let unordered = TennisRacket::new(
         Vector3::new(2.0, 1.0, 3.0),
         1.0,

@@ -3,16 +3,19 @@
 
 use eom::energy::{pendulum_kinetic_energy, pendulum_potential_energy};
 use eom::swing::{
-    CompoundPendulum, STANDARD_GRAVITY, SwingError, SwingTest, measure_period, period_factor,
+    STANDARD_GRAVITY, SwingError, SwingTest, SwungBody, measure_period, period_factor,
 };
+use eom::{ParameterError, PendulumParameters};
 
 /// A model-ship-like body: κ_G = 0.25 m, swung 0.12 m from G, 20 kg.
 const KAPPA_G: f64 = 0.25;
 const PIVOT_TO_CG: f64 = 0.12;
 const MASS: f64 = 20.0;
 
-fn pendulum() -> CompoundPendulum {
-    CompoundPendulum::from_gyradius(KAPPA_G, MASS, PIVOT_TO_CG, STANDARD_GRAVITY).unwrap()
+fn pendulum() -> SwungBody {
+    let parameters =
+        PendulumParameters::from_gyradius(KAPPA_G, MASS, STANDARD_GRAVITY, PIVOT_TO_CG).unwrap();
+    SwungBody::new(&parameters).unwrap()
 }
 
 fn swing_test(period: f64, amplitude: f64) -> SwingTest {
@@ -28,7 +31,9 @@ fn swing_test(period: f64, amplitude: f64) -> SwingTest {
 #[test]
 fn small_amplitude_period_inverts_4_27_through_4_28_and_4_29() {
     let p = pendulum();
-    let result = swing_test(p.small_amplitude_period(), 0.0).solve().unwrap();
+    let test = p.measurement(0.0).unwrap();
+    assert_eq!(test, swing_test(p.small_amplitude_period(), 0.0));
+    let result = test.solve().unwrap();
     let i0 = MASS * (KAPPA_G * KAPPA_G + PIVOT_TO_CG * PIVOT_TO_CG);
     // Relative 1e-14: a square root, a division and a subtraction of nearby squares.
     assert!((result.kappa_g - KAPPA_G).abs() < 1e-14 * KAPPA_G);
@@ -61,11 +66,11 @@ fn exact_swing_satisfies_4_24() {
         let h = 1e-5;
         for i in 0..40 {
             let t = 0.037 * i as f64;
-            let acceleration = (swing.rate(t + h) - swing.rate(t - h)) / (2.0 * h);
-            let rate = (swing.angle(t + h) - swing.angle(t - h)) / (2.0 * h);
+            let difference = (swing.exact(t + h) - swing.exact(t - h)) / (2.0 * h);
+            let [angle, rate] = swing.exact(t).into();
             let scale = omega0_squared;
-            assert!((acceleration + omega0_squared * swing.angle(t).sin()).abs() < 1e-8 * scale);
-            assert!((rate - swing.rate(t)).abs() < 1e-8 * p.natural_frequency());
+            assert!((difference[1] + omega0_squared * angle.sin()).abs() < 1e-8 * scale);
+            assert!((difference[0] - rate).abs() < 1e-8 * p.natural_frequency());
         }
     }
 }
@@ -76,27 +81,28 @@ fn exact_swing_starts_at_rest_and_has_the_elliptic_period() {
     let amplitude = f64::to_radians(120.0);
     let swing = p.released_from(amplitude).unwrap();
     // Absolute 1e-7: if sn(K) misses 1 by a few ulps, asin near 1 turns that into √(2ε) ≈ 2e-8.
-    assert!((swing.angle(0.0) - amplitude).abs() < 1e-7);
-    assert!(swing.rate(0.0).abs() < 1e-12);
+    let [angle, rate] = swing.exact(0.0).into();
+    assert!((angle - amplitude).abs() < 1e-7);
+    assert!(rate.abs() < 1e-12);
     let period = swing.period();
     assert!((period - p.period(amplitude).unwrap()).abs() < 1e-14 * period);
     // The body passes the bottom at T/4 and 3T/4, moving in opposite directions.
-    assert!(swing.angle(0.25 * period).abs() < 1e-13);
-    assert!(swing.angle(0.75 * period).abs() < 1e-13);
-    assert!(swing.rate(0.25 * period) < 0.0 && swing.rate(0.75 * period) > 0.0);
+    let (quarter, three_quarters) = (swing.exact(0.25 * period), swing.exact(0.75 * period));
+    assert!(quarter[0].abs() < 1e-13 && three_quarters[0].abs() < 1e-13);
+    assert!(quarter[1] < 0.0 && three_quarters[1] > 0.0);
 }
 
 #[test]
 fn energy_is_conserved_along_the_exact_swing_4_33_to_4_35() {
     let p = pendulum();
-    let i0 = p.inertia_pivot();
+    let i0 = p.parameters().i0();
     for degrees in [1.0, 30.0, 90.0, 170.0] {
         let amplitude = f64::to_radians(degrees);
         let swing = p.released_from(amplitude).unwrap();
         let initial = pendulum_potential_energy(MASS, STANDARD_GRAVITY, PIVOT_TO_CG, amplitude);
         for i in 0..200 {
             let t = 0.0173 * i as f64;
-            let (angle, rate) = (swing.angle(t), swing.rate(t));
+            let [angle, rate] = swing.exact(t).into();
             let kinetic = pendulum_kinetic_energy(i0, rate);
             let potential = pendulum_potential_energy(MASS, STANDARD_GRAVITY, PIVOT_TO_CG, angle);
             // Relative 1e-14: U = 2Mgh sin²(θ/2) = 2Mgh k² sn² and T = 2Mgh k² cn², so the sum
@@ -117,7 +123,7 @@ fn sampled_swing(amplitude: f64) -> (Vec<f64>, Vec<f64>, f64) {
     let times: Vec<f64> = (0..1237)
         .map(|i| i as f64 * 8.3 * period / 1236.0)
         .collect();
-    let angles = times.iter().map(|&t| swing.angle(t)).collect();
+    let angles = times.iter().map(|&t| swing.exact(t)[0]).collect();
     (times, angles, period)
 }
 
@@ -190,7 +196,7 @@ fn bad_swing_arguments_name_the_fault() {
     for (test, field) in cases {
         let err = test.solve().unwrap_err();
         assert!(
-            matches!(err, SwingError::NotPositive { field: f, .. } if f == field),
+            matches!(err, SwingError::Parameter(ref e) if e.field == field),
             "{err}"
         );
     }
@@ -245,15 +251,13 @@ fn bad_samples_name_the_fault() {
 #[test]
 fn impossible_pendulums_are_refused() {
     // I₀ < M h² would make I_G negative (4.29).
-    let err = CompoundPendulum::new(1.0, 10.0, 1.0, STANDARD_GRAVITY).unwrap_err();
-    assert!(matches!(err, SwingError::ImaginaryGyradius { .. }));
-    let err = CompoundPendulum::new(1.0, 1.0, 0.1, 0.0).unwrap_err();
+    let err = PendulumParameters::new(1.0, 10.0, STANDARD_GRAVITY, 1.0).unwrap_err();
+    assert_eq!(err.field, "i0");
+    // Without gravity the body does not swing: there is no period to time.
+    let weightless = PendulumParameters::new(1.0, 1.0, 0.0, 0.1).unwrap();
     assert!(matches!(
-        err,
-        SwingError::NotPositive {
-            field: "gravity",
-            ..
-        }
+        SwungBody::new(&weightless).unwrap_err(),
+        SwingError::Parameter(ParameterError { field: "g", .. })
     ));
     assert!(pendulum().released_from(std::f64::consts::PI).is_err());
 }
@@ -268,9 +272,7 @@ fn swing_test_recovers_kappa_g_from_an_integrated_swing() {
     use nalgebra::SVector;
     let amplitude = f64::to_radians(15.0);
     let p = pendulum();
-    let model =
-        eom::models::Pendulum::<f64>::new(p.inertia_pivot(), MASS, STANDARD_GRAVITY, PIVOT_TO_CG)
-            .unwrap();
+    let model = eom::models::Pendulum::<f64>::new(p.parameters());
     let system = model.driven_by(Constant::zero());
     let period = p.period(amplitude).unwrap();
     let times: Vec<f64> = (1..1237)

@@ -164,9 +164,7 @@ fn space_fixed_power_gap(case: &PlanarCase) -> f64 {
 /// I₀ θ̇ θ̈ + M g h sin θ θ̇ against the power of the applied moment, M_O θ̇.
 fn pendulum_power_gap(case: &PendulumCase) -> f64 {
     let (i0, m, g, h) = (case.i0, case.mass, case.g, case.h);
-    let rate = Pendulum::<f64>::new(i0, m, g, h)
-        .unwrap()
-        .rhs(&case.state, &[case.moment]);
+    let rate = Pendulum::<f64>::new(&case.parameters()).rhs(&case.state, &[case.moment]);
     let [theta, theta_dot] = case.state;
     let d_energy = i0 * theta_dot * rate[1] + m * g * h * theta.sin() * theta_dot;
     let power = case.moment * theta_dot;
@@ -180,7 +178,12 @@ fn pendulum_power_gap(case: &PendulumCase) -> f64 {
 fn kinetic_energy_gap<S: Spatial<f64>>(case: &SpatialCase) -> f64 {
     let model = S::build(case.mass, &case.tensor).unwrap();
     let ours = model.kinetic(&case.state(S::KINEMATICS));
-    let theirs = kinetic_energy(case.mass, &case.velocity, &case.tensor, &case.omega);
+    let theirs = kinetic_energy(
+        case.mass,
+        &case.velocity,
+        &case.tensor.matrix(),
+        &case.omega,
+    );
     // Both are sums of positive terms (ωᵀ[I]ω adds products of either sign, bounded by the
     // absolute form): relative to that, a dozen roundings.
     let terms = 0.5 * case.mass * case.velocity.norm_squared()

@@ -48,7 +48,7 @@ pub fn planar_midship() -> std_trig::planar_midship::Parameters {
     }
 }
 
-/// The pendulum: I₀ = 2, M = 1, g = 9.81, h = 0.5 (`Pendulum::new(2.0, 1.0, 9.81, 0.5)`).
+/// The pendulum: I₀ = 2, M = 1, g = 9.81, h = 0.5 (`PendulumParameters::new(2.0, 1.0, 9.81, 0.5)`).
 pub fn pendulum() -> std_trig::pendulum::Parameters {
     std_trig::pendulum::Parameters {
         i0: 2.0,

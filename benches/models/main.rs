@@ -232,8 +232,9 @@ fn planar<M: Measurement>(c: &mut Criterion<M>, suffix: &str) {
     group.bench_function(BenchmarkId::new("generic_f64", "space_fixed"), |b| {
         b.iter(|| body.rhs_space_fixed(black_box(&x), black_box(&l)))
     });
-    let pendulum = models::Pendulum::<f64>::new(2.0, 1.0, 9.81, 0.5).unwrap();
-    let generic_pendulum = eom::generic::Pendulum::<f64>::new(2.0, 1.0, 9.81, 0.5).unwrap();
+    let parameters = eom::PendulumParameters::new(2.0, 1.0, 9.81, 0.5).unwrap();
+    let pendulum = models::Pendulum::<f64>::new(&parameters);
+    let generic_pendulum = eom::generic::Pendulum::<f64>::new(&parameters);
     let theta = Vector2::new(0.3, 0.1);
     group.bench_function(BenchmarkId::new("generated_f64", "pendulum"), |b| {
         b.iter(|| pendulum.rhs(black_box(&[0.3, 0.1]), black_box(0.0)))

@@ -31,13 +31,12 @@ mod sweep;
 
 use std::path::{Path, PathBuf};
 
+use eom::PendulumParameters;
 use eom::generic::RigidBody;
 use eom::integrate::OdeSystem;
 use eom::models::{SpatialFullQuaternion, SpatialPrincipalEuler, SpatialPrincipalQuaternion};
 use eom::reference::torque_free::{EulerAngleBody, FullTensorBody};
-use eom::reference::{
-    AxisymmetricTop, CompoundPendulum, PlanarTurn, ReferenceProblem, TennisRacket,
-};
+use eom::reference::{AxisymmetricTop, LargeSwing, PlanarTurn, ReferenceProblem, TennisRacket};
 use nalgebra::{Matrix3, Quaternion, RealField, SVector, UnitQuaternion, Vector3};
 
 use report::BASE;
@@ -81,8 +80,8 @@ fn case_of<'a, const N: usize>(
 }
 
 fn pendulum_rows() -> Vec<Row> {
-    let p =
-        CompoundPendulum::new(2.0, 3.0, 9.81, 0.5, 150f64.to_radians()).expect("valid pendulum");
+    let parameters = PendulumParameters::new(2.0, 3.0, 9.81, 0.5).expect("valid pendulum");
+    let p = LargeSwing::new(&parameters, 150f64.to_radians()).expect("a swing below π");
     let judge = judge_of(&p);
     let case = case_of(&p, BASE, &judge);
     let mut rows = sweep_runge_kutta::<f64, 2, _>(&case, &p, Some(1..2), &RTOLS);

@@ -8,12 +8,12 @@
 //! of inertia that the chosen symmetry class says is zero) is an error naming it.
 
 use anyhow::{Context, Result, bail};
-use eom::InertiaTensor;
 use eom::generic::{
     EulerState, Pendulum, PlanarBody, PlanarMidship, RigidBody, check_pitch,
     euler_state_to_quaternion_state,
 };
 use eom::models::{self, AnyModel, Family, Kinematics, Model as _, Symmetry};
+use eom::{InertiaTensor, PendulumParameters};
 use nalgebra::{Matrix3, Vector2, Vector3, Vector6};
 use serde::de::DeserializeOwned;
 use serde::ser::{Serialize, SerializeMap, Serializer};
@@ -130,8 +130,9 @@ struct PendulumState {
 }
 
 fn pendulum(input: &PendulumInput) -> Result<Evaluation> {
-    let model = Pendulum::<f64>::new(input.i0, input.mass, input.g, input.h)?;
-    let generated = models::Pendulum::<f64>::new(input.i0, input.mass, input.g, input.h)?;
+    let parameters = PendulumParameters::new(input.i0, input.mass, input.g, input.h)?;
+    let model = Pendulum::<f64>::new(&parameters);
+    let generated = models::Pendulum::<f64>::new(&parameters);
     let state = [input.state.theta, input.state.theta_dot];
     let keys = ["theta_dot", "theta_ddot"];
     Ok(Evaluation {

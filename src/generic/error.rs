@@ -1,32 +1,20 @@
-//! Why a parameter set is refused, and the checks that refuse it.
+//! Why a parameter set is refused.
 //!
-//! Every generic model validates its `f64` parameters once, in its constructor, so that the
-//! right-hand sides never meet a NaN mass or a negative moment of inertia and never need to
-//! check anything in the hot path.
+//! Every generic model validates its `f64` parameters once, in its constructor, with the
+//! crate's one set of checks ([`ParameterError`]), so that the right-hand sides never meet a
+//! NaN mass or a negative moment of inertia and never need to check anything in the hot path.
 
-use crate::InertiaError;
+use crate::{InertiaError, ParameterError};
 use thiserror::Error;
 
 /// Why a model cannot be built from the parameters given, or why a state is outside the
 /// domain of a formulation.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum ModelError {
-    /// The mass `M` is NaN, infinite, zero or negative.
-    #[error("mass M = {value} must be finite and positive")]
-    Mass {
-        /// The value given.
-        value: f64,
-    },
-    /// A scalar parameter other than the mass breaks its requirement.
-    #[error("parameter {field} = {value} must be {requirement}")]
-    Parameter {
-        /// The parameter, named as in the chapter (`"I0"`, `"g"`, `"h"`, `"Izz"`, `"x_G"`).
-        field: &'static str,
-        /// The value given.
-        value: f64,
-        /// What it must be, e.g. `"finite and positive"`.
-        requirement: &'static str,
-    },
+    /// A scalar parameter breaks its requirement (its message names the parameter as the
+    /// constructor's argument does: `"mass"`, `"izz"`, `"x_g"`, …).
+    #[error(transparent)]
+    Parameter(#[from] ParameterError),
     /// The inertia tensor is not that of a rigid body (its message names the failed check).
     #[error(transparent)]
     Inertia(#[from] InertiaError),
@@ -61,69 +49,4 @@ pub enum ModelError {
         /// The smallest `|cos θ|` the caller accepts.
         limit: f64,
     },
-}
-
-/// Refuses a mass that is not finite and positive.
-pub(crate) fn check_mass(value: f64) -> Result<f64, ModelError> {
-    if value.is_finite() && value > 0.0 {
-        Ok(value)
-    } else {
-        Err(ModelError::Mass { value })
-    }
-}
-
-/// Refuses a parameter that is not finite and strictly positive.
-pub(crate) fn check_positive(field: &'static str, value: f64) -> Result<f64, ModelError> {
-    if value.is_finite() && value > 0.0 {
-        Ok(value)
-    } else {
-        Err(ModelError::Parameter {
-            field,
-            value,
-            requirement: "finite and positive",
-        })
-    }
-}
-
-/// Refuses a parameter that is not finite and non-negative.
-pub(crate) fn check_non_negative(field: &'static str, value: f64) -> Result<f64, ModelError> {
-    if value.is_finite() && value >= 0.0 {
-        Ok(value)
-    } else {
-        Err(ModelError::Parameter {
-            field,
-            value,
-            requirement: "finite and non-negative",
-        })
-    }
-}
-
-/// Refuses a parameter that is NaN or infinite (its sign is free).
-pub(crate) fn check_finite(field: &'static str, value: f64) -> Result<f64, ModelError> {
-    if value.is_finite() {
-        Ok(value)
-    } else {
-        Err(ModelError::Parameter {
-            field,
-            value,
-            requirement: "finite",
-        })
-    }
-}
-
-/// Relative slack in the check `I₀ ≥ M h²`: a simple pendulum has `I₀ = M h²` exactly, and
-/// the product computed by the caller may exceed `I₀` by a few ulps.
-const STEINER_SLACK: f64 = 1e-12;
-
-/// Refuses `I₀ < M h²` (4.29: the moment about G, `I_G = I₀ − M h²`, cannot be negative),
-/// with a relative slack for a simple pendulum computed in floating point.
-pub(crate) fn check_steiner(i0: f64, mass: f64, h: f64) -> Result<(), ModelError> {
-    if i0 < mass * h * h * (1.0 - STEINER_SLACK) {
-        return Err(ModelError::Parameter {
-            field: "I0",
-            value: i0,
-            requirement: "at least M h² (4.29: I_G = I0 − M h² is not negative)",
-        });
-    }
-    Ok(())
 }

@@ -6,8 +6,10 @@
 //! positive for every valid body, so it is inverted once, in [`PlanarMidship::new`], and a
 //! call solves for the accelerations with one 2×2 product.
 
-use super::error::{ModelError, check_finite, check_mass, check_positive};
+use super::error::ModelError;
 use super::planar::track;
+use crate::ParameterError;
+use crate::validate::{finite, positive};
 use nalgebra::{Matrix2, RealField, SVector, Vector2, Vector3, Vector6};
 
 /// A rigid body in planar motion, body axes at midship, G on the x axis at `x_G`.
@@ -32,15 +34,17 @@ impl<T: RealField + Copy> PlanarMidship<T> {
     /// assert!(PlanarMidship::<f64>::new(1.0, 2.0, f64::NAN).is_err());
     /// ```
     pub fn new(mass: f64, izz: f64, x_g: f64) -> Result<Self, ModelError> {
-        let mass = check_mass(mass)?;
-        let izz = check_positive("Izz", izz)?;
-        let x_g = check_finite("x_G", x_g)?;
+        let mass = positive("mass", mass)?;
+        let izz = positive("izz", izz)?;
+        let x_g = finite("x_g", x_g)?;
         let mass_matrix = Matrix2::new(mass, mass * x_g, mass * x_g, izz + mass * x_g * x_g);
-        let inverse = mass_matrix.try_inverse().ok_or(ModelError::Parameter {
-            field: "x_G",
-            value: x_g,
-            requirement: "small enough that the sway–yaw mass matrix can be inverted",
-        })?;
+        let Some(inverse) = mass_matrix.try_inverse() else {
+            return Err(ModelError::Parameter(ParameterError {
+                field: "x_g",
+                value: x_g,
+                requirement: "small enough that the sway–yaw mass matrix can be inverted",
+            }));
+        };
         Ok(Self {
             mass: nalgebra::convert(mass),
             x_g: nalgebra::convert(x_g),

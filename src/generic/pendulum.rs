@@ -1,11 +1,11 @@
 //! The compound pendulum of 4.24, written directly: `I₀ θ̈ = −M g h sin θ + M_applied`.
 //!
-//! State `[θ, θ̇]`. The two parameter-only coefficients, `M g h / I₀` and `1 / I₀`, are
-//! computed once in [`Pendulum::new`]; a call costs one `sin` and a few multiplications.
+//! State `[θ, θ̇]` (conventions in [`PendulumParameters`]). The two parameter-only
+//! coefficients, `M g h / I₀` and `1 / I₀`, are computed once in [`Pendulum::new`]; a call
+//! costs one `sin` and a few multiplications.
 
-use super::error::{
-    ModelError, check_finite, check_mass, check_non_negative, check_positive, check_steiner,
-};
+use crate::PendulumParameters;
+use crate::energy::{pendulum_kinetic_energy, pendulum_potential_energy};
 use nalgebra::{RealField, SVector, Vector2};
 
 /// A compound pendulum swinging about a fixed horizontal axis through the pivot O (4.24).
@@ -22,31 +22,30 @@ pub struct Pendulum<T> {
 }
 
 impl<T: RealField + Copy> Pendulum<T> {
-    /// Validates the parameters once: the moment of inertia about the pivot `I₀ > 0`, the mass
-    /// `M > 0`, gravity `g` finite, the pivot-to-G distance `h ≥ 0`, and `I₀ ≥ M h²` (4.29:
-    /// the moment about G, `I_G = I₀ − M h²`, cannot be negative).
+    /// The pendulum of `parameters`, already validated (see [`PendulumParameters::new`]).
     ///
     /// ```
-    /// use eom::generic::Pendulum;
-    /// let p = Pendulum::<f64>::new(2.0, 3.0, 9.81, 0.5).unwrap();
+    /// use eom::{PendulumParameters, generic::Pendulum};
+    /// let parameters = PendulumParameters::new(2.0, 3.0, 9.81, 0.5).unwrap();
+    /// let p = Pendulum::<f64>::new(&parameters);
     /// let rate = p.rhs(&nalgebra::Vector2::new(0.0, 1.0), 0.0);
     /// assert_eq!(rate, nalgebra::Vector2::new(1.0, 0.0));
-    /// assert!(Pendulum::<f64>::new(-2.0, 3.0, 9.81, 0.5).is_err());
     /// ```
-    pub fn new(i0: f64, mass: f64, g: f64, h: f64) -> Result<Self, ModelError> {
-        let i0 = check_positive("I0", i0)?;
-        let mass = check_mass(mass)?;
-        let g = check_finite("g", g)?;
-        let h = check_non_negative("h", h)?;
-        check_steiner(i0, mass, h)?;
-        Ok(Self {
+    pub fn new(parameters: &PendulumParameters) -> Self {
+        let (i0, mass, g, h) = (
+            parameters.i0(),
+            parameters.mass(),
+            parameters.g(),
+            parameters.h(),
+        );
+        Self {
             i0: nalgebra::convert(i0),
             mass: nalgebra::convert(mass),
             g: nalgebra::convert(g),
             h: nalgebra::convert(h),
-            stiffness: nalgebra::convert(mass * g * h / i0),
+            stiffness: nalgebra::convert(parameters.restoring_moment() / i0),
             inv_i0: nalgebra::convert(1.0 / i0),
-        })
+        }
     }
 
     /// The time derivative of `[θ, θ̇]`: `[θ̇, −(M g h / I₀) sin θ + moment / I₀]` (4.24), with
@@ -61,11 +60,19 @@ impl<T: RealField + Copy> Pendulum<T> {
     }
 
     /// The energy `½ I₀ θ̇² + M g h (1 − cos θ)` of 4.34–4.35, constant without an applied
-    /// moment.
+    /// moment (by [`pendulum_kinetic_energy`] and [`pendulum_potential_energy`]).
+    ///
+    /// ```
+    /// use eom::{PendulumParameters, generic::Pendulum};
+    /// let p = Pendulum::<f64>::new(&PendulumParameters::new(2.0, 3.0, 9.81, 0.5).unwrap());
+    /// // At rest, level with the pivot: U = M g h; at the bottom moving at 1 rad/s: T = ½ I₀.
+    /// let level = p.energy(&nalgebra::Vector2::new(std::f64::consts::FRAC_PI_2, 0.0));
+    /// assert!((level - 3.0 * 9.81 * 0.5).abs() < 1e-14);
+    /// assert_eq!(p.energy(&nalgebra::Vector2::new(0.0, 1.0)), 1.0);
+    /// ```
     pub fn energy(&self, state: &SVector<T, 2>) -> T {
-        let half: T = nalgebra::convert(0.5);
-        half * self.i0 * state[1] * state[1]
-            + self.mass * self.g * self.h * (T::one() - state[0].cos())
+        pendulum_kinetic_energy(self.i0, state[1])
+            + pendulum_potential_energy(self.mass, self.g, self.h, state[0])
     }
 
     /// The moment of inertia about the pivot, `I₀`.

@@ -5,7 +5,8 @@
 //! both; `1/M` and `1/I_zz` are computed once. The forms are kept apart because they integrate
 //! different states, and because comparing them is one of the checks on both.
 
-use super::error::{ModelError, check_mass, check_positive};
+use super::error::ModelError;
+use crate::validate::positive;
 use nalgebra::{RealField, SVector, Vector3, Vector6};
 
 /// A rigid body moving in the horizontal plane, origin of the body axes at G.
@@ -29,8 +30,8 @@ impl<T: RealField + Copy> PlanarBody<T> {
     /// assert_eq!(dx, nalgebra::Vector6::new(0.0, 0.0, 0.5, 0.0, 0.0, 0.0));
     /// ```
     pub fn new(mass: f64, izz: f64) -> Result<Self, ModelError> {
-        let mass = check_mass(mass)?;
-        let izz = check_positive("Izz", izz)?;
+        let mass = positive("mass", mass)?;
+        let izz = positive("izz", izz)?;
         Ok(Self {
             mass: nalgebra::convert(mass),
             izz: nalgebra::convert(izz),

@@ -14,13 +14,14 @@
 //! out the expansion is exactly the symbolic work the generator is checked on, so the generic
 //! form keeps nalgebra's rotation and stays independent of it.
 
-use super::error::{ModelError, check_mass};
+use super::error::ModelError;
 use super::kinematics::{body_to_space, euler_rates, quaternion_rate};
 use super::state::{
     ATTITUDE, EulerState, POSITION, QuaternionState, RATES, VELOCITY, attitude_quaternion, rates,
     velocity,
 };
 use crate::InertiaTensor;
+use crate::validate::positive;
 use nalgebra::{Matrix3, RealField, UnitQuaternion, Vector3};
 
 /// A rigid body for the spatial equations: mass, inertia tensor about G in body axes
@@ -47,7 +48,7 @@ impl<T: RealField + Copy> RigidBody<T> {
     /// assert!(RigidBody::<f64>::new(f64::NAN, &tensor).is_err());
     /// ```
     pub fn new(mass: f64, inertia: &InertiaTensor) -> Result<Self, ModelError> {
-        let mass = check_mass(mass)?;
+        let mass = positive("mass", mass)?;
         let matrix = inertia.matrix();
         // A determinant that overflows gives a "successful" inverse of NaNs; refuse it too.
         let determinant = matrix.determinant();
@@ -67,7 +68,7 @@ impl<T: RealField + Copy> RigidBody<T> {
     /// [`InertiaTensor::from_matrix`]) and then builds the body as [`new`](Self::new) does;
     /// an impossible tensor gives [`ModelError::Inertia`] naming the failed condition.
     pub fn from_matrix(mass: f64, inertia: Matrix3<f64>) -> Result<Self, ModelError> {
-        check_mass(mass)?;
+        positive("mass", mass)?;
         Self::new(mass, &InertiaTensor::from_matrix(inertia)?)
     }
 
@@ -157,11 +158,10 @@ impl<T: RealField + Copy> RigidBody<T> {
         self.inertia * omega
     }
 
-    /// The kinetic energy, 4.32: `T = ½ M v·v + ½ ωᵀ [I] ω`.
+    /// The kinetic energy, 4.32: `T = ½ M v·v + ½ ωᵀ [I] ω` (by [`crate::energy::kinetic_energy`]).
     #[inline]
     pub fn kinetic_energy(&self, velocity: &Vector3<T>, omega: &Vector3<T>) -> T {
-        let half: T = nalgebra::convert(0.5);
-        half * (self.mass * velocity.norm_squared() + omega.dot(&self.angular_momentum(omega)))
+        crate::energy::kinetic_energy(self.mass, velocity, &self.inertia, omega)
     }
 
     /// The mass `M`.

@@ -6,10 +6,11 @@
 //! moving the total back to G would give the same number in exact arithmetic, but would lose
 //! digits to cancellation when the parts sit far from the origin.
 
-use super::error::{MassError, finite3, positive};
+use super::error::{MassError, finite3};
 use super::properties::MassProperties;
 use super::steiner::steiner_shift;
 use crate::InertiaTensor;
+use crate::validate::positive;
 use nalgebra::{Matrix3, Vector3};
 
 /// One part already placed in body axes: its mass, its G and its tensor about its G (zero for a

@@ -27,6 +27,7 @@ use super::mesh::{Mesh, MeshError, MeshMass};
 use super::primitives::{ellipsoid, hollow_cylinder, solid_box, solid_cylinder, sphere};
 use super::properties::{MassProperties, rotation_from_degrees};
 use crate::InertiaTensor;
+use crate::validate::positive;
 use nalgebra::Vector3;
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
@@ -297,7 +298,7 @@ fn part(raw: &RawPart, base: &Path) -> Result<BodyPart, PartError> {
     let offset = Vector3::from(raw.offset);
     let (mass, centre, solid) = match kind {
         Kind::Point => {
-            let mass = super::error::positive("mass", raw.need("mass", raw.mass)?)?;
+            let mass = positive("mass", raw.need("mass", raw.mass)?).map_err(MassError::from)?;
             super::error::finite3(["offset[0]", "offset[1]", "offset[2]"], &offset)?;
             (mass, offset, None)
         }

@@ -12,9 +12,10 @@
 //! an error that names the edge. Several closed shells are allowed: a shell wound inwards inside
 //! another is a cavity, whose volume and moments the sum subtracts.
 
-use super::error::{MassError, positive};
+use super::error::MassError;
 use super::properties::MassProperties;
 use crate::InertiaTensor;
+use crate::validate::positive;
 use nalgebra::{Matrix3, Vector3};
 use std::collections::BTreeMap;
 use std::io::{Read, Seek, Write};
@@ -194,9 +195,10 @@ impl Mesh {
             return Err(MeshError::ZeroVolume);
         }
         let density = match mass {
-            MeshMass::Density(rho) => positive("density", rho)?,
-            MeshMass::Total(total) => positive("mass", total)? / moments.volume,
-        };
+            MeshMass::Density(rho) => positive("density", rho),
+            MeshMass::Total(total) => positive("mass", total).map(|m| m / moments.volume),
+        }
+        .map_err(MassError::from)?;
         let centre = moments.first / moments.volume;
         let second_about_g =
             (moments.second - centre * centre.transpose() * moments.volume) * density;

@@ -7,9 +7,10 @@
 //! (along x), breadth B (along y) and depth D (along z), so that an ellipsoid has semi-axes
 //! `a = L/2`, `b = B/2`, `c = D/2`. A cylinder's axis is its own x axis, as a hull's is.
 
-use super::error::{MassError, positive};
+use super::error::MassError;
 use super::properties::MassProperties;
 use crate::InertiaTensor;
+use crate::validate::{non_negative, positive};
 use nalgebra::Vector3;
 
 fn centred(mass: f64, moments: [f64; 3]) -> Result<MassProperties, MassError> {
@@ -83,12 +84,7 @@ pub fn hollow_cylinder(
     let mass = positive("mass", mass)?;
     let outer = positive("radius", outer_radius)?;
     let length = positive("length", length)?;
-    if inner_radius.is_nan() || inner_radius < 0.0 {
-        return Err(MassError::Negative {
-            field: "inner_radius",
-            value: inner_radius,
-        });
-    }
+    let inner_radius = non_negative("inner_radius", inner_radius)?;
     if inner_radius > outer {
         return Err(MassError::InnerRadiusTooLarge {
             inner: inner_radius,

@@ -1,10 +1,11 @@
 //! The mass properties of one rigid body: its mass, its centre of gravity G and its inertia
 //! tensor about G, checked once so that everything downstream can trust them.
 
-use super::error::{MassError, finite3, positive};
+use super::error::{MassError, finite3};
 use super::gyration::{PrincipalAxes, radii_of_gyration};
 use super::steiner::steiner;
 use crate::InertiaTensor;
+use crate::validate::positive;
 use nalgebra::{Rotation3, Vector3};
 
 /// Mass `M`, centre of gravity `r_G` (in body axes) and inertia tensor about G (chapter

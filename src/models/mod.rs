@@ -5,7 +5,8 @@
 //! [`Symmetry`], [`Kinematics`] and [`Family`], and the macro `for_each_model!`, from which
 //! the typed models below are written. Each typed model validates its parameters once
 //! (finite numbers, mass > 0, a physical inertia tensor, products of inertia zero where the
-//! symmetry class prunes them), computes the generated coefficients once, and implements
+//! symmetry class prunes them; the pendulum takes them already validated as a
+//! [`crate::PendulumParameters`]), computes the generated coefficients once, and implements
 //! [`Model`]: the state and input layouts, `rhs` and the kinetic energy (4.32), generic over
 //! the scalar `T: SimdRealField + Copy` (`f32`, `f64`, `simba::simd::WideF64x4` lanes, dual
 //! numbers). [`Model::driven_by`] turns a model and its [`Loads`] into an

@@ -5,7 +5,7 @@ use super::generated;
 use super::Symmetry;
 use crate::InertiaTensor;
 use crate::generic::ModelError;
-use crate::generic::error::check_mass;
+use crate::validate::positive;
 
 /// Validates a body for a spatial model of `symmetry`: M > 0, the products the class prunes
 /// zero, and a tensor that can be inverted in f64. Returns the mass.
@@ -14,7 +14,7 @@ pub(super) fn validate(
     inertia: &InertiaTensor,
     symmetry: Symmetry,
 ) -> Result<f64, ModelError> {
-    let mass = check_mass(mass)?;
+    let mass = positive("mass", mass)?;
     check_symmetry(inertia, symmetry)?;
     check_invertible(inertia)?;
     Ok(mass)

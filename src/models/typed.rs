@@ -55,9 +55,10 @@ macro_rules! typed_models {
         }
     )*};
     (@new $module:ident, Pendulum) => {
-        /// Validates I₀ > 0 (about the pivot), M > 0, g finite, h ≥ 0 and I₀ ≥ M h² (4.29).
-        pub fn new(i0: f64, mass: f64, g: f64, h: f64) -> Result<Self, ModelError> {
-            Ok(Self::from_parameters(&pendulum::validate(i0, mass, g, h)?))
+        /// The pendulum of `parameters`, already validated (see
+        /// [`PendulumParameters::new`](crate::PendulumParameters::new)).
+        pub fn new(parameters: &crate::PendulumParameters) -> Self {
+            Self::from_parameters(&pendulum::emitted(parameters))
         }
     };
     (@new $module:ident, PlanarAtG) => {

@@ -10,7 +10,9 @@
 use nalgebra::{Quaternion, SVector, Unit, UnitQuaternion, Vector3};
 
 use super::torque_free::{PrincipalBody, energy, momentum};
-use super::{ReferenceError, ReferenceProblem, attitude_angle, positive};
+use super::{ReferenceProblem, attitude_angle};
+use crate::ParameterError;
+use crate::validate::positive;
 
 /// A torque-free axisymmetric body; state `[p, q, r, q0, q1, q2, q3]`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -31,14 +33,14 @@ impl AxisymmetricTop {
         i3: f64,
         omega0: Vector3<f64>,
         attitude0: UnitQuaternion<f64>,
-    ) -> Result<Self, ReferenceError> {
+    ) -> Result<Self, ParameterError> {
         let moments = Vector3::new(positive("i1", i1)?, i1, positive("i3", i3)?);
         let h_body = moments.component_mul(&omega0);
-        let axis =
-            Unit::try_new(attitude0 * h_body, 1e-300).ok_or(ReferenceError::NotPositive {
-                name: "|omega0|",
-                value: omega0.norm(),
-            })?;
+        let axis = Unit::try_new(attitude0 * h_body, 1e-300).ok_or(ParameterError {
+            field: "|omega0|",
+            value: omega0.norm(),
+            requirement: "large enough that the angular momentum has a direction",
+        })?;
         Ok(Self {
             body: PrincipalBody { moments },
             omega0,

@@ -2,7 +2,8 @@
 //! written from the mathematics, so that the integrators are judged against answers that owe
 //! nothing to an integrator.
 //!
-//! - [`CompoundPendulum`]: 4.24 at large amplitude, solved by Jacobi's sn (period 4K(m)/ω₀);
+//! - [`LargeSwing`]: the compound pendulum 4.24 released from rest at a large angle, solved by
+//!   Jacobi's sn and cn (period 4K(m)/ω₀);
 //! - [`AxisymmetricTop`]: torque-free rotation of a symmetric body (4.52 with I₁ = I₂), steady
 //!   precession in closed form, attitude included;
 //! - [`TennisRacket`]: torque-free rotation near the intermediate axis (the Dzhanibekov flip),
@@ -10,23 +11,25 @@
 //! - [`PlanarTurn`]: 4.43–4.44 at constant yaw rate under a constant body-fixed force, a linear
 //!   system whose velocities and track are known exactly.
 //!
+//! Each constructor refuses a parameter outside the range where its closed form holds with a
+//! [`crate::ParameterError`] naming it.
+//!
 //! The torque-free bodies come in three forms of the same equations ([`torque_free`]): the
 //! principal-axes form 4.52 with quaternion kinematics, the full-tensor form 4.51 with nalgebra,
 //! and the principal-axes form with Euler-angle kinematics 4.60.
 
 mod axisymmetric;
-mod pendulum;
+mod large_swing;
 mod planar_turn;
 mod tennis_racket;
 pub mod torque_free;
 
 pub use axisymmetric::AxisymmetricTop;
-pub use pendulum::CompoundPendulum;
+pub use large_swing::LargeSwing;
 pub use planar_turn::PlanarTurn;
 pub use tennis_racket::TennisRacket;
 
 use nalgebra::{Quaternion, SVector, UnitQuaternion};
-use thiserror::Error;
 
 /// A problem with a known answer, in the state layout of its own right-hand side.
 pub trait ReferenceProblem<const N: usize> {
@@ -41,38 +44,6 @@ pub trait ReferenceProblem<const N: usize> {
     fn error(&self, t: f64, y: &SVector<f64, N>) -> f64;
     /// The quantities the exact flow conserves, evaluated at `y` (their drift is reported).
     fn invariants(&self, y: &SVector<f64, N>) -> Vec<f64>;
-}
-
-/// Why a reference problem cannot be built from the given parameters.
-#[derive(Debug, Clone, PartialEq, Error)]
-pub enum ReferenceError {
-    /// A parameter that must be positive and finite is not.
-    #[error("{name} = {value} must be positive and finite")]
-    NotPositive {
-        /// The parameter.
-        name: &'static str,
-        /// Its value.
-        value: f64,
-    },
-    /// A parameter is outside the range where the closed form holds.
-    #[error("{name} = {value} is outside its range: {range}")]
-    OutOfRange {
-        /// The parameter.
-        name: &'static str,
-        /// Its value.
-        value: f64,
-        /// The range, in words.
-        range: &'static str,
-    },
-}
-
-/// Checks that a parameter is positive and finite.
-fn positive(name: &'static str, value: f64) -> Result<f64, ReferenceError> {
-    if value.is_finite() && value > 0.0 {
-        Ok(value)
-    } else {
-        Err(ReferenceError::NotPositive { name, value })
-    }
 }
 
 /// The angle (radians) of the rotation between two attitudes, 2 atan2(|δ⃗|, |δ₀|) with

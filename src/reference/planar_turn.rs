@@ -9,8 +9,10 @@
 
 use nalgebra::{Complex, RealField, SVector};
 
-use super::{ReferenceError, ReferenceProblem, positive};
+use super::ReferenceProblem;
+use crate::ParameterError;
 use crate::integrate::OdeSystem;
+use crate::validate::{non_zero, positive};
 
 /// A body turning at constant yaw rate under a constant body-fixed force; state
 /// `[u, v, ψ, X, Y]`.
@@ -26,21 +28,15 @@ pub struct PlanarTurn {
 impl PlanarTurn {
     /// A body of mass `mass` at yaw rate `r` (non-zero) under the body-fixed force
     /// `(fx, fy)`, starting with body velocity `(u0, v0)` at heading 0 from the origin.
+    /// `r = 0` is refused: it is uniform acceleration, not a turn.
     pub fn new(
         mass: f64,
         r: f64,
         (fx, fy): (f64, f64),
         (u0, v0): (f64, f64),
-    ) -> Result<Self, ReferenceError> {
+    ) -> Result<Self, ParameterError> {
         let mass = positive("mass", mass)?;
-        if !(r.is_finite() && r != 0.0) {
-            let range = "non-zero and finite (r = 0 is uniform acceleration, not a turn)";
-            return Err(ReferenceError::OutOfRange {
-                name: "r",
-                value: r,
-                range,
-            });
-        }
+        let r = non_zero("r", r)?;
         let f = Complex::new(fx, fy) / mass;
         Ok(Self {
             r,

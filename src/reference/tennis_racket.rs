@@ -21,9 +21,11 @@
 
 use nalgebra::{Quaternion, SVector, UnitQuaternion, Vector3};
 
+use super::ReferenceProblem;
 use super::torque_free::{PrincipalBody, energy, momentum};
-use super::{ReferenceError, ReferenceProblem, positive};
+use crate::ParameterError;
 use crate::elliptic::{complete_k, jacobi};
+use crate::validate::{non_zero, positive, require};
 
 /// A torque-free asymmetric body near its intermediate axis; state `[p, q, r, q0, q1, q2, q3]`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -46,24 +48,18 @@ impl TennisRacket {
         omega2: f64,
         omega3: f64,
         attitude0: UnitQuaternion<f64>,
-    ) -> Result<Self, ReferenceError> {
+    ) -> Result<Self, ParameterError> {
         let [i1, i2, i3] = [moments.x, moments.y, moments.z];
         positive("I1", i1)?;
-        let order = "I₁ < I₂ < I₃";
         let ordered = i1 < i2 && i2 < i3 && i3.is_finite();
-        if !ordered {
-            return Err(ReferenceError::OutOfRange {
-                name: "I2",
-                value: i2,
-                range: order,
-            });
-        }
-        for (name, value) in [("omega2", omega2), ("omega3", omega3)] {
-            if !(value.is_finite() && value != 0.0) {
-                let range = "non-zero and finite";
-                return Err(ReferenceError::OutOfRange { name, value, range });
-            }
-        }
+        require(
+            ordered,
+            "I2",
+            i2,
+            "between I₁ and I₃ (I₁ < I₂ < I₃, all finite)",
+        )?;
+        non_zero("omega2", omega2)?;
+        non_zero("omega3", omega3)?;
         let omega0 = Vector3::new(0.0, omega2, omega3);
         let w2 = omega0.component_mul(&omega0);
         let above = i2 * (i3 - i2) * w2.y + i1 * (i3 - i1) * w2.x; // 2TI₃ − H²
@@ -74,10 +70,10 @@ impl TennisRacket {
             (below / (i3 * (i3 - i1))).sqrt(),
         );
         let m = (i2 - i1) * above / ((i3 - i2) * below);
-        let quarter = complete_k(m).map_err(|_| ReferenceError::OutOfRange {
-            name: "omega3",
+        let quarter = complete_k(m).map_err(|_| ParameterError {
+            field: "omega3",
             value: omega3,
-            range: "too close to the separatrix for K(m) in f64",
+            requirement: "far enough from the separatrix for K(m) in f64",
         })?;
         Ok(Self {
             body: PrincipalBody { moments },

@@ -19,9 +19,11 @@ fn lit<T: RealField>(x: f64) -> T {
     nalgebra::convert(x)
 }
 
-/// The kinetic energy of rotation T = ½ ωᵀ\[I\]ω (4.32) for principal moments.
+/// The kinetic energy of rotation T = ½ ωᵀ\[I\]ω (4.32) for principal moments: 4.32 of
+/// [`crate::energy::kinetic_energy`] with G at rest.
 pub fn energy(moments: &Vector3<f64>, omega: &Vector3<f64>) -> f64 {
-    0.5 * moments.component_mul(omega).dot(omega)
+    let inertia = Matrix3::from_diagonal(moments);
+    crate::energy::kinetic_energy(0.0, &Vector3::zeros(), &inertia, omega)
 }
 
 /// The magnitude of the angular momentum |H| = |\[I\]ω| (4.15) for principal moments.

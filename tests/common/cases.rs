@@ -2,7 +2,7 @@
 //! with the extremes mixed in: inertia ratios up to 10⁶ (the thin rod), rates up to 10³ rad/s,
 //! pitch within 1e-6 rad of ±90°.
 
-use eom::InertiaTensor;
+use eom::{InertiaTensor, PendulumParameters};
 use nalgebra::{Matrix3, Quaternion, Rotation3, UnitQuaternion, Vector3};
 use proptest::prelude::*;
 
@@ -256,6 +256,14 @@ pub struct PendulumCase {
     pub state: [f64; 2],
     /// The applied moment about the pivot.
     pub moment: f64,
+}
+
+impl PendulumCase {
+    /// The validated parameter set that every pendulum form is built from.
+    pub fn parameters(&self) -> PendulumParameters {
+        PendulumParameters::new(self.i0, self.mass, self.g, self.h)
+            .expect("I₀ > M h² by construction")
+    }
 }
 
 /// Random pendulums and states.
