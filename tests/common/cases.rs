@@ -75,21 +75,30 @@ pub fn principal_moments() -> impl Strategy<Value = [f64; 3]> {
 }
 
 /// A physical inertia tensor of the class: principal moments turned by a random rotation
-/// (about y only for the xz class, none for the principal class).
+/// when the class keeps every product, about the one axis that leaves exactly the kept
+/// product when it keeps one (about y for the xz class), not at all when it keeps none. The
+/// class is read from what it prunes, so a new class needs no edit here.
 pub fn inertia_tensor(class: Symmetry) -> impl Strategy<Value = InertiaTensor> {
     (principal_moments(), unit_quaternion(), -3.2..3.2f64).prop_map(move |(m, q, angle)| {
-        let rotation = match class {
-            Symmetry::Full => q.to_rotation_matrix(),
-            Symmetry::Xz => Rotation3::from_axis_angle(&Vector3::y_axis(), angle),
-            Symmetry::Principal => Rotation3::identity(),
+        let kept: Vec<&str> = ["Ixy", "Iyz", "Ixz"]
+            .into_iter()
+            .filter(|p| !class.pruned().contains(p))
+            .collect();
+        let rotation = match kept.as_slice() {
+            [] => Rotation3::identity(),
+            ["Ixy"] => Rotation3::from_axis_angle(&Vector3::z_axis(), angle),
+            ["Iyz"] => Rotation3::from_axis_angle(&Vector3::x_axis(), angle),
+            ["Ixz"] => Rotation3::from_axis_angle(&Vector3::y_axis(), angle),
+            _ => q.to_rotation_matrix(),
         };
         let r = rotation.matrix();
         let i = r * Matrix3::from_diagonal(&Vector3::from(m)) * r.transpose();
-        let (ixy, iyz, izx) = match class {
-            Symmetry::Full => (i[(0, 1)], i[(1, 2)], i[(2, 0)]),
-            Symmetry::Xz => (0.0, 0.0, i[(2, 0)]),
-            Symmetry::Principal => (0.0, 0.0, 0.0),
-        };
+        let keep = |name: &str, value: f64| if kept.contains(&name) { value } else { 0.0 };
+        let (ixy, iyz, izx) = (
+            keep("Ixy", i[(0, 1)]),
+            keep("Iyz", i[(1, 2)]),
+            keep("Ixz", i[(2, 0)]),
+        );
         InertiaTensor::new(i[(0, 0)], i[(1, 1)], i[(2, 2)], ixy, iyz, izx)
             .expect("principal moments satisfying the triangle inequality, rotated")
     })
