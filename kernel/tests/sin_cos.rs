@@ -1,17 +1,17 @@
-//! The sine and cosine the generated models call (`eom_codegen::emit::Trig::Kernel`), against
-//! the platform's `sin` and `cos`.
+//! The kernel against the platform's `sin` and `cos`: [`eom_kernel::sin_cos`] as the generated
+//! models call it, on f64, f32, dual numbers and SIMD lanes.
 //!
-//! Every generated module carries the same emitted kernel (the golden files show the source);
-//! these tests exercise the pendulum's copy.
+//! With the feature `platform-trig`, `sin_cos` calls the platform's functions instead, so these
+//! checks would not be of the kernel; `tests/platform_trig.rs` checks that switch.
+#![cfg(not(feature = "platform-trig"))]
 
-use eom::models::generated::pendulum;
 use num_dual::Dual64;
 use simba::simd::{SimdComplexField, WideF64x4};
 use std::f64::consts::FRAC_PI_2;
 
 /// The kernel on one angle.
 fn sin_cos<T: simba::simd::SimdRealField + Copy>(x: T) -> (T, T) {
-    let [pair] = pendulum::sin_cos([x]);
+    let [pair] = eom_kernel::sin_cos([x]);
     pair
 }
 
@@ -142,9 +142,9 @@ fn dual_numbers_and_lanes_use_their_own_functions() {
 /// path (tiny, huge, NaN) and the others do not.
 #[test]
 fn angles_together_equal_angles_alone() {
-    assert_eq!(pendulum::sin_cos::<f64, 0>([]), []);
+    assert_eq!(eom_kernel::sin_cos::<f64, 0>([]), []);
     let mixed = [0.3, -2.5, 1e7, f64::NAN, -1e-12, 700.0];
-    let together = pendulum::sin_cos(mixed);
+    let together = eom_kernel::sin_cos(mixed);
     for (x, pair) in mixed.into_iter().zip(together) {
         let alone = sin_cos(x);
         assert!(
@@ -159,7 +159,7 @@ fn angles_together_equal_angles_alone() {
         .map(|(i, u)| (2.0 * u - 1.0) * if i < 300 { 1.5 } else { 50.0 })
         .collect();
     for angles in three.chunks_exact(3) {
-        let together = pendulum::sin_cos([angles[0], angles[1], angles[2]]);
+        let together = eom_kernel::sin_cos([angles[0], angles[1], angles[2]]);
         for (x, pair) in angles.iter().zip(together) {
             assert_eq!(pair, sin_cos(*x), "x = {x:e}");
         }

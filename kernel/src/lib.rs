@@ -1,0 +1,87 @@
+//! # eom-kernel — the sine and cosine the generated models call
+//!
+//! In the trigonometric models the three `sin_cos` of the Euler angles (or the one of the
+//! heading) cost more than all the arithmetic around them, and the platform's `sin` and `cos`
+//! each reduce the argument and branch on its size again. So the generated `rhs` calls one
+//! kernel that does both from a single argument reduction: `k = round(2x/π)`, the remainder
+//! `r = x − k·π/2` in three steps (Cody–Waite: π/2 split into two 33-bit parts whose products
+//! with `k` are exact, and a tail), then the minimax polynomials of fdlibm's `__kernel_sin`
+//! and `__kernel_cos` on `|r| ≤ π/4` (Sun Microsystems, 1993; the same coefficients as musl
+//! and openlibm), evaluated in pairs (Estrin's scheme) for a short chain of dependent
+//! operations, and the quadrant `k mod 4` picks signs and order. A model's angles go through
+//! one call side by side, so the compiler can pair them in SIMD registers. An angle within
+//! ±π/4 skips the reduction, as fdlibm's own `sin` and `cos` do: the roll and pitch of a ship
+//! or an aircraft in ordinary motion stay there, and the reduction is a third of the chain of
+//! dependent operations that an integrator's stages wait on. The test is a branch per angle,
+//! which only varying angles that cross ±π/4 from call to call would mispredict.
+//!
+//! The kernel runs on `f64` and `f32` scalars (f32 is widened and the result rounded once).
+//! Any other scalar — SIMD lanes, dual numbers — keeps its own `simd_sin_cos`: lanes have a
+//! vectorised one already, and the rounding trick would drop a dual number's derivative.
+//! Arguments beyond `2¹⁹·π/2`, where the two-part products stop being exact, and NaN or
+//! infinite ones go to the platform's `sin_cos` unchanged.
+//!
+//! The kernel lives here, as ordinary Rust, rather than in the emitter: every generated model
+//! calls this one copy as `eom_kernel::sin_cos`, and the compiler, clippy, rustfmt and the
+//! tests see it where it is written. Everything on its path is `#[inline(always)]`, so it is
+//! compiled into each `rhs` as if it were written there.
+//!
+//! ```
+//! let [(s, c), (s2, c2)] = eom_kernel::sin_cos([0.5_f64, 2.0]);
+//! assert!((s - 0.5_f64.sin()).abs() <= f64::EPSILON && (c - 0.5_f64.cos()).abs() <= f64::EPSILON);
+//! assert!((s2 - 2.0_f64.sin()).abs() <= f64::EPSILON && (c2 - 2.0_f64.cos()).abs() <= f64::EPSILON);
+//! ```
+//!
+//! ## Feature `platform-trig`
+//!
+//! With it, [`sin_cos`] calls each scalar's own `simd_sin_cos` for every scalar, `f64` and
+//! `f32` included: the platform's `sin` and `cos`, bit for bit. Build a model with and without
+//! it to price the kernel inside that model (`eom` forwards the feature), or turn it on when
+//! results must match the platform's to the last bit. [`sin_cos_f64`] stays the kernel.
+#![deny(missing_docs)]
+
+mod kernel;
+
+pub use kernel::sin_cos as sin_cos_f64;
+
+use core::any::Any;
+use simba::simd::SimdRealField;
+
+/// `(sin a, cos a)` of every angle in `angles`, as the generated `rhs` computes them.
+///
+/// For `f64` and `f32` (widened to f64, rounded once at the end) this is the kernel,
+/// [`sin_cos_f64`]: one argument reduction shared by sine and cosine, within 2 ulp of the
+/// platform's `sin` and `cos`, the angles side by side so that the compiler can pair them in
+/// SIMD registers. Every other scalar (SIMD lanes, dual numbers) uses its own `simd_sin_cos`,
+/// and so does every scalar with the feature `platform-trig`.
+#[inline(always)]
+pub fn sin_cos<T: SimdRealField + Copy, const N: usize>(angles: [T; N]) -> [(T, T); N] {
+    let scalars: &dyn Any = &angles;
+    let mut wide = [0.0; N];
+    if cfg!(feature = "platform-trig") {
+        return each_own(angles);
+    } else if let Some(angles) = scalars.downcast_ref::<[f64; N]>() {
+        wide = *angles;
+    } else if let Some(angles) = scalars.downcast_ref::<[f32; N]>() {
+        for (wide, &angle) in wide.iter_mut().zip(angles) {
+            *wide = f64::from(angle);
+        }
+    } else {
+        return each_own(angles);
+    }
+    let mut pairs = [(T::zero(), T::zero()); N];
+    for (pair, (s, c)) in pairs.iter_mut().zip(sin_cos_f64(wide)) {
+        *pair = (T::from_subset(&s), T::from_subset(&c));
+    }
+    pairs
+}
+
+/// Each angle's own `simd_sin_cos`.
+#[inline(always)]
+fn each_own<T: SimdRealField + Copy, const N: usize>(angles: [T; N]) -> [(T, T); N] {
+    let mut pairs = [(T::zero(), T::zero()); N];
+    for (pair, angle) in pairs.iter_mut().zip(angles) {
+        *pair = angle.simd_sin_cos();
+    }
+    pairs
+}
