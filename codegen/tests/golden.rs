@@ -60,7 +60,7 @@ fn euler_variants_call_sin_cos_once_per_angle_and_never_tan() {
         if generated.name.ends_with("_euler") {
             // One kernel call for the three angles, each angle's pair bound once.
             assert_eq!(
-                generated.source.matches("= sin_cos([").count(),
+                generated.source.matches("= eom_kernel::sin_cos([").count(),
                 1,
                 "{}",
                 generated.name

@@ -5,6 +5,9 @@
 //! coefficient, computed once), `STATE` and `INPUTS` (the array layouts), `OPERATIONS` (the
 //! cost of one call) and `rhs`, generic over simba's `SimdRealField`. The typed wrappers in
 //! [`crate::models`] validate the parameters; call these directly only with validated ones.
+//!
+//! The models with angles call [`eom_kernel::sin_cos`] for all of their angles at once; the
+//! feature `platform-trig` makes that the platform's sine and cosine.
 
 macro_rules! generated_modules {
     ($($name:ident: $doc:literal,)*) => {

@@ -70,15 +70,17 @@ pub fn generate(model: Model) -> Result<Generated, EmitError> {
     generate_with(model, Trig::Kernel)
 }
 
-/// Generates one model's source with the chosen sine and cosine ([`Trig::Std`] keeps the
-/// scalar's own `simd_sin_cos`, for comparison or for bit-for-bit agreement with the platform).
+/// Generates one model's source with the chosen sine and cosine ([`Trig::Kernel`] calls
+/// `eom_kernel::sin_cos`; [`Trig::Std`] keeps the scalar's own `simd_sin_cos`, for a crate
+/// that does not depend on `eom-kernel`).
 ///
 /// ```
 /// use eom_codegen::emit::{Trig, generate_with};
 /// use eom_codegen::model::Model;
 /// let kernel = generate_with(Model::Pendulum, Trig::Kernel).unwrap();
 /// let std = generate_with(Model::Pendulum, Trig::Std).unwrap();
-/// assert!(kernel.source.contains("sin_cos([theta])"));
+/// assert!(kernel.source.contains("= eom_kernel::sin_cos([theta]);"));
+/// assert!(!kernel.source.contains("fn sin_cos")); // the kernel is in eom-kernel, not here
 /// assert!(std.source.contains("theta.simd_sin_cos()"));
 /// assert_eq!(kernel.operations, std.operations);
 /// ```
@@ -124,7 +126,8 @@ pub fn write_if_changed(path: &Path, contents: &str) -> Result<bool, EmitError> 
     Ok(true)
 }
 
-/// Generates each model into `out_dir/<name>.rs` (the call for a user's `build.rs`).
+/// Generates each model into `out_dir/<name>.rs` (the call for a user's `build.rs`). The crate
+/// that includes a model with angles depends on `eom-kernel`, whose `sin_cos` its `rhs` calls.
 ///
 /// ```no_run
 /// // build.rs

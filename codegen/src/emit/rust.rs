@@ -7,7 +7,7 @@
 //! no inner attributes, so the file can be `include!`d inside a module.
 
 use super::program::{Coefficient, Operations, Program, Step, Term, identifier};
-use super::trig::{self, Trig};
+use super::trig::Trig;
 use crate::model::System;
 use crate::symbolic::{Atom, Expr, Rational};
 use num_traits::{One, Signed};
@@ -39,15 +39,12 @@ fn file_tokens(system: &System, program: &Program, strategy: &str, trig: Trig) -
     let coefficients = coefficients_struct(system, program);
     let constants = constants(system, &program.operations);
     let rhs = rhs_function(system, program, strategy, trig);
-    let has_trig = program.operations.trig > 0;
-    let kernel = (has_trig && trig == Trig::Kernel).then(trig::kernel_items);
     quote! {
         use simba::simd::SimdRealField;
         #parameters
         #coefficients
         #constants
         #rhs
-        #kernel
     }
 }
 
@@ -270,7 +267,7 @@ fn kernel_call(program: &Program, angle: &str) -> TokenStream {
         quote! { (#s, #c) }
     });
     let arguments = angles.iter().map(|a| ident(a));
-    quote! { let [#(#pairs),*] = sin_cos([#(#arguments),*]); }
+    quote! { let [#(#pairs),*] = eom_kernel::sin_cos([#(#arguments),*]); }
 }
 
 fn term_tokens(term: &Term) -> TokenStream {
