@@ -3,11 +3,7 @@
 //! equation and printing the residual; so does a model whose emitted form does not compose
 //! back to the proved equations.
 
-use eom_codegen::{
-    check,
-    emit::{self, Trig},
-    model::Model,
-};
+use eom_codegen::{check, emit, model::Model};
 use std::path::PathBuf;
 
 fn main() {
@@ -19,18 +15,6 @@ fn main() {
     }
     let out_dir = PathBuf::from(std::env::var_os("OUT_DIR").expect("cargo sets OUT_DIR"));
     if let Err(error) = emit::emit_into(&out_dir, &Model::all()) {
-        fail(&format!("a model could not be emitted:\n  {error}"));
-    }
-    // The models with angles again, with the platform's sin and cos, so that the benches can
-    // show what the emitted sin_cos kernel is worth on its own.
-    let std_trig = out_dir.join("std_trig");
-    let with_angles: Vec<Model> = Model::all().into_iter().filter(Model::has_angles).collect();
-    let emitted = std::fs::create_dir_all(&std_trig)
-        .map_err(|e| e.to_string())
-        .and_then(|()| {
-            emit::emit_into_with(&std_trig, &with_angles, Trig::Std).map_err(|e| e.to_string())
-        });
-    if let Err(error) = emitted {
         fail(&format!("a model could not be emitted:\n  {error}"));
     }
 }

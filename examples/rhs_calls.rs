@@ -9,14 +9,15 @@
 //!
 //! Each call goes through one `#[inline(never)]` function, `measured`, so collecting only
 //! inside it counts the right-hand side and nothing of the loop around it: the total divided
-//! by the number of calls is the cost of one call. `form` is `generated`, `std_trig` (the
-//! generated model emitted with the platform's sin and cos; trigonometric models only) or
-//! `generic`; `model` is `pendulum`, `planar_at_g`, `planar_midship`, `planar_space_fixed` or
-//! `{full,xz,principal}_{euler,quaternion}`.
+//! by the number of calls is the cost of one call. `form` is `generated` or `generic`; `model`
+//! is `pendulum`, `planar_at_g`, `planar_midship`, `planar_space_fixed` or
+//! `{full,xz,principal}_{euler,quaternion}`. Built with `--features platform-trig`, the
+//! generated models call the platform's sin and cos instead of `eom_kernel::sin_cos`: the
+//! difference between the two builds is the kernel's share.
 
 use eom::InertiaTensor;
 use eom::generic::{PlanarBody, PlanarMidship, RigidBody};
-use eom::models::{self, FromBody, generated::std_trig};
+use eom::models;
 use nalgebra::{SVector, Vector2, Vector3};
 use std::hint::black_box;
 
@@ -28,7 +29,6 @@ const STATES: usize = 64;
 
 const FORCE: [f64; 3] = [10.0, -2.0, 1.0];
 const MOMENT: [f64; 3] = [0.5, 0.2, -0.3];
-const INPUT: [f64; 6] = [10.0, -2.0, 1.0, 0.5, 0.2, -0.3];
 const LOAD: [f64; 3] = [10.0, -2.0, 0.5];
 
 /// The one function whose instructions are counted: it calls `f` once.
@@ -108,16 +108,6 @@ macro_rules! spatial_generated {
     }};
 }
 
-macro_rules! spatial_std_trig {
-    ($module:ident, $tensor:expr, $calls:expr) => {{
-        let parameters = std_trig::$module::Parameters::from_body(5.0, &$tensor);
-        let k = std_trig::$module::Coefficients::<f64>::new(&parameters);
-        run(&states(spatial_state::<12>), $calls, |x| {
-            std_trig::$module::rhs(&k, x, &INPUT)
-        })
-    }};
-}
-
 fn generated(model: &str, calls: usize) -> Option<f64> {
     let tensor = class_tensor(model);
     Some(match model {
@@ -149,37 +139,6 @@ fn generated(model: &str, calls: usize) -> Option<f64> {
         "principal_quaternion" => {
             spatial_generated!(models::SpatialPrincipalQuaternion<f64>, tensor, 13, calls)
         }
-        _ => return None,
-    })
-}
-
-fn generated_std_trig(model: &str, calls: usize) -> Option<f64> {
-    let tensor = class_tensor(model);
-    Some(match model {
-        "pendulum" => {
-            let parameters = bodies::pendulum();
-            let k = std_trig::pendulum::Coefficients::<f64>::new(&parameters);
-            run(&states(pendulum_state), calls, |x| {
-                std_trig::pendulum::rhs(&k, x, &[0.0])
-            })
-        }
-        "planar_at_g" => {
-            let parameters = bodies::planar_at_g();
-            let k = std_trig::planar_at_g::Coefficients::<f64>::new(&parameters);
-            run(&states(planar_state), calls, |x| {
-                std_trig::planar_at_g::rhs(&k, x, &LOAD)
-            })
-        }
-        "planar_midship" => {
-            let parameters = bodies::planar_midship();
-            let k = std_trig::planar_midship::Coefficients::<f64>::new(&parameters);
-            run(&states(planar_state), calls, |x| {
-                std_trig::planar_midship::rhs(&k, x, &LOAD)
-            })
-        }
-        "full_euler" => spatial_std_trig!(spatial_full_euler, tensor, calls),
-        "xz_euler" => spatial_std_trig!(spatial_xz_euler, tensor, calls),
-        "principal_euler" => spatial_std_trig!(spatial_principal_euler, tensor, calls),
         _ => return None,
     })
 }
@@ -233,14 +192,13 @@ fn main() {
     let calls: usize = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(1000);
     let sum = match form {
         "generated" => generated(model, calls),
-        "std_trig" => generated_std_trig(model, calls),
         "generic" => generic(model, calls),
         _ => None,
     };
     match sum {
         Some(sum) => println!("{form} {model}: {calls} calls (checksum {sum:.6})"),
         None => {
-            eprintln!("usage: rhs_calls generated|std_trig|generic MODEL [CALLS]; see the source");
+            eprintln!("usage: rhs_calls generated|generic MODEL [CALLS]; see the source");
             std::process::exit(2);
         }
     }

@@ -1,9 +1,10 @@
 //! Generated against generic, in one run: ns per right-hand-side call for every variant,
-//! f32 against f64, the trigonometric models also as emitted with the platform's sin and cos
-//! (`generated_std_trig_f64`, to show the emitted `sin_cos` kernel's share), and a batch of
-//! 4096 bodies stepped with f64 scalars against `WideF64x4` lanes. The Euler variants run at
-//! two attitudes: roll, pitch and heading within ±π/4, and all three beyond it
-//! (`*_large_angles`), since the emitted `sin_cos` skips the argument reduction for the first.
+//! f32 against f64, and a batch of 4096 bodies stepped with f64 scalars against `WideF64x4`
+//! lanes. The Euler variants run at two attitudes: roll, pitch and heading within ±π/4, and
+//! all three beyond it (`*_large_angles`), since `eom_kernel::sin_cos` skips the argument
+//! reduction for the first. To show the kernel's share, run it again with
+//! `--features platform-trig`, which makes the generated models call the platform's sin and
+//! cos.
 //!
 //! `cargo bench --bench models`; ratios are read from `target/criterion/*/*/new/estimates.json`
 //! (see the README for the table of one run). The per-call groups run twice: in wall time, and
@@ -18,7 +19,7 @@ use bodies::{full_tensor, principal_tensor, xz_tensor};
 use criterion::measurement::Measurement;
 use criterion::{BenchmarkId, Criterion, Throughput};
 use eom::generic::{PlanarBody, PlanarMidship, RigidBody};
-use eom::models::{self, FromBody, generated};
+use eom::models::{self, generated};
 use nalgebra::{SVector, Vector2, Vector3};
 use simba::simd::WideF64x4;
 use std::hint::black_box;
@@ -78,20 +79,6 @@ macro_rules! bench_spatial {
     }};
 }
 
-/// The same model emitted with the platform's sin and cos (`generated::std_trig`), called with
-/// the same coefficients and input as the typed model.
-macro_rules! bench_std_trig {
-    ($group:expr, $name:literal, $module:ident, $tensor:expr, $state:expr) => {{
-        use generated::std_trig::$module as emitted;
-        let state = $state;
-        let k = emitted::Coefficients::<f64>::new(&emitted::Parameters::from_body(5.0, &$tensor));
-        let input: [f64; 6] = [FORCE, MOMENT].concat().try_into().unwrap();
-        $group.bench_function(BenchmarkId::new("generated_std_trig_f64", $name), |b| {
-            b.iter(|| emitted::rhs(&k, black_box(&state), black_box(&input)))
-        });
-    }};
-}
-
 fn spatial<M: Measurement>(c: &mut Criterion<M>, suffix: &str) {
     let mut group = c.benchmark_group(format!("spatial_rhs{suffix}"));
     bench_spatial!(
@@ -102,13 +89,6 @@ fn spatial<M: Measurement>(c: &mut Criterion<M>, suffix: &str) {
         EULER_STATE,
         rhs_euler
     );
-    bench_std_trig!(
-        group,
-        "full_euler",
-        spatial_full_euler,
-        full_tensor(),
-        EULER_STATE
-    );
     bench_spatial!(
         group,
         "xz_euler",
@@ -117,13 +97,6 @@ fn spatial<M: Measurement>(c: &mut Criterion<M>, suffix: &str) {
         EULER_STATE,
         rhs_euler
     );
-    bench_std_trig!(
-        group,
-        "xz_euler",
-        spatial_xz_euler,
-        xz_tensor(),
-        EULER_STATE
-    );
     bench_spatial!(
         group,
         "principal_euler",
@@ -131,13 +104,6 @@ fn spatial<M: Measurement>(c: &mut Criterion<M>, suffix: &str) {
         principal_tensor(),
         EULER_STATE,
         rhs_euler
-    );
-    bench_std_trig!(
-        group,
-        "principal_euler",
-        spatial_principal_euler,
-        principal_tensor(),
-        EULER_STATE
     );
     bench_against_generic!(
         group,
@@ -203,13 +169,6 @@ fn planar<M: Measurement>(c: &mut Criterion<M>, suffix: &str) {
     group.bench_function(BenchmarkId::new("generic_f64", "at_g"), |b| {
         b.iter(|| body.rhs_body_at_g(black_box(&x), black_box(&l)))
     });
-    {
-        use generated::std_trig::planar_at_g as emitted;
-        let k = emitted::Coefficients::<f64>::new(&bodies::planar_at_g());
-        group.bench_function(BenchmarkId::new("generated_std_trig_f64", "at_g"), |b| {
-            b.iter(|| emitted::rhs(&k, black_box(&state), black_box(&load)))
-        });
-    }
     let midship = models::PlanarMidship::<f64>::new(5.0, 4.0, 0.3).unwrap();
     let generic_midship = PlanarMidship::<f64>::new(5.0, 4.0, 0.3).unwrap();
     group.bench_function(BenchmarkId::new("generated_f64", "midship"), |b| {
@@ -218,13 +177,6 @@ fn planar<M: Measurement>(c: &mut Criterion<M>, suffix: &str) {
     group.bench_function(BenchmarkId::new("generic_f64", "midship"), |b| {
         b.iter(|| generic_midship.rhs_body_at_midship(black_box(&x), black_box(&l)))
     });
-    {
-        use generated::std_trig::planar_midship as emitted;
-        let k = emitted::Coefficients::<f64>::new(&bodies::planar_midship());
-        group.bench_function(BenchmarkId::new("generated_std_trig_f64", "midship"), |b| {
-            b.iter(|| emitted::rhs(&k, black_box(&state), black_box(&load)))
-        });
-    }
     let space = models::PlanarSpaceFixed::<f64>::new(5.0, 4.0).unwrap();
     group.bench_function(BenchmarkId::new("generated_f64", "space_fixed"), |b| {
         b.iter(|| space.rhs(black_box(&state), black_box(&load)))
@@ -241,14 +193,6 @@ fn planar<M: Measurement>(c: &mut Criterion<M>, suffix: &str) {
     group.bench_function(BenchmarkId::new("generic_f64", "pendulum"), |b| {
         b.iter(|| generic_pendulum.rhs(black_box(&theta), black_box(0.0)))
     });
-    {
-        use generated::std_trig::pendulum as emitted;
-        let k = emitted::Coefficients::<f64>::new(&bodies::pendulum());
-        group.bench_function(
-            BenchmarkId::new("generated_std_trig_f64", "pendulum"),
-            |b| b.iter(|| emitted::rhs(&k, black_box(&[0.3, 0.1]), black_box(&[0.0]))),
-        );
-    }
     group.finish();
 }
 

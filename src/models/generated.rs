@@ -38,29 +38,3 @@ generated_modules! {
     spatial_principal_euler: "Spatial 6-DOF, principal axes (4.52), Euler angles.",
     spatial_principal_quaternion: "Spatial 6-DOF, principal axes (4.52), unit quaternion.",
 }
-
-/// The trigonometric models emitted with the platform's sine and cosine
-/// (`eom_codegen::emit::Trig::Std`) instead of the emitted `sin_cos` kernel: the same
-/// equations and operation counts, kept so the benches can measure the kernel's share.
-pub mod std_trig {
-    macro_rules! std_trig_modules {
-        ($($name:ident,)*) => {
-            $(
-                #[doc = concat!("[`", stringify!($name), "`](super::", stringify!($name), ") with the platform's `sin_cos`.")]
-                #[allow(clippy::let_and_return, clippy::redundant_locals)]
-                pub mod $name {
-                    include!(concat!(env!("OUT_DIR"), "/std_trig/", stringify!($name), ".rs"));
-                }
-            )*
-        };
-    }
-
-    std_trig_modules! {
-        pendulum,
-        planar_at_g,
-        planar_midship,
-        spatial_full_euler,
-        spatial_xz_euler,
-        spatial_principal_euler,
-    }
-}

@@ -106,29 +106,24 @@ impl<T: SimdRealField + Copy> Body<T> {
 ///
 /// Each symmetry class emits only the products it keeps, named as the chapter names them
 /// (`ixy`, `iyz`, `ixz`, with the sign of 4.14). This is the one place that maps a tensor's
-/// entries onto those fields; it is implemented for every emitted spatial module, the
-/// platform-trig copies in [`generated::std_trig`] included, so that code calling an emitted
-/// module directly builds its parameters as the typed models do. It does not validate: build
-/// the typed model (e.g. [`SpatialFullEuler::new`]) for that.
+/// entries onto those fields; it is implemented for every emitted spatial module, so that code
+/// calling an emitted module directly builds its parameters as the typed models do. It does
+/// not validate: build the typed model (e.g. [`SpatialFullEuler::new`]) for that.
 ///
 /// ```
 /// use eom::InertiaTensor;
-/// use eom::models::{FromBody, SpatialPrincipalEuler, generated::std_trig};
+/// use eom::models::{FromBody, SpatialPrincipalEuler, generated::spatial_principal_euler};
 ///
 /// let inertia = InertiaTensor::new(2.0, 3.0, 4.0, 0.0, 0.0, 0.0).unwrap();
 /// let typed = SpatialPrincipalEuler::<f64>::new(5.0, &inertia).unwrap();
-/// // The same model emitted with the platform's sin and cos, called directly.
-/// let emitted = std_trig::spatial_principal_euler::Parameters::from_body(5.0, &inertia);
-/// let k = std_trig::spatial_principal_euler::Coefficients::<f64>::new(&emitted);
+/// // The emitted module, called directly with parameters from the same body.
+/// let emitted = spatial_principal_euler::Parameters::from_body(5.0, &inertia);
+/// let k = spatial_principal_euler::Coefficients::<f64>::new(&emitted);
 /// let state = [1.0, 0.2, -0.1, 0.3, -0.2, 0.5, 0.0, 0.0, 0.0, 0.1, 0.2, 0.3];
 /// let (force, moment) = ([10.0, -2.0, 1.0], [0.5, 0.2, -0.3]);
 /// let input = [force[0], force[1], force[2], moment[0], moment[1], moment[2]];
-/// let direct = std_trig::spatial_principal_euler::rhs(&k, &state, &input);
-/// // The typed model's sin and cos are within 2 ulp of the platform's; the rates then agree
-/// // to a few ulp of their size.
-/// for (a, b) in typed.rhs(&state, &force, &moment).iter().zip(&direct) {
-///     assert!((a - b).abs() <= 1e-14 * b.abs().max(1.0));
-/// }
+/// let direct = spatial_principal_euler::rhs(&k, &state, &input);
+/// assert_eq!(typed.rhs(&state, &force, &moment), direct);
 /// ```
 pub trait FromBody {
     /// The parameters of a body of `mass` and `inertia` (about G, body axes).
@@ -158,9 +153,6 @@ from_body! {
     generated::spatial_xz_quaternion { ixz: izx };
     generated::spatial_principal_euler {};
     generated::spatial_principal_quaternion {};
-    generated::std_trig::spatial_full_euler { ixy: ixy, iyz: iyz, ixz: izx };
-    generated::std_trig::spatial_xz_euler { ixz: izx };
-    generated::std_trig::spatial_principal_euler {};
 }
 
 macro_rules! spatial_model {
