@@ -9,13 +9,14 @@
 //!
 //! Each call goes through one `#[inline(never)]` function, `measured`, so collecting only
 //! inside it counts the right-hand side and nothing of the loop around it: the total divided
-//! by the number of calls is the cost of one call. `form` is `generated`, `std_trig` (the
-//! generated model emitted with the platform's sin and cos; trigonometric models only) or
-//! `generic`; `model` is `pendulum`, `planar_at_g`, `planar_midship`, `planar_space_fixed` or
-//! `{full,xz,principal}_{euler,quaternion}`.
+//! by the number of calls is the cost of one call. `form` is `generated` or `generic`; `model`
+//! is a model of the catalog (`eom models`), the spatial ones with or without their
+//! `spatial_` prefix (`principal_euler`); the generated side has one arm per catalog entry. Built with `--features platform-trig`, the
+//! generated models call the platform's sin and cos instead of `eom_kernel::sin_cos`: the
+//! difference between the two builds is the kernel's share.
 
 use eom::generic::{PlanarBody, PlanarMidship, RigidBody};
-use eom::models::{self, FromBody, generated::std_trig};
+use eom::models::{self, Model, ModelInfo, Symmetry};
 use eom::{InertiaTensor, PendulumParameters};
 use nalgebra::{SVector, Vector2, Vector3};
 use std::hint::black_box;
@@ -28,7 +29,6 @@ const STATES: usize = 64;
 
 const FORCE: [f64; 3] = [10.0, -2.0, 1.0];
 const MOMENT: [f64; 3] = [0.5, 0.2, -0.3];
-const INPUT: [f64; 6] = [10.0, -2.0, 1.0, 0.5, 0.2, -0.3];
 const LOAD: [f64; 3] = [10.0, -2.0, 0.5];
 
 /// The one function whose instructions are counted: it calls `f` once.
@@ -64,18 +64,17 @@ fn run<S, R: Total>(states: &[S], calls: usize, f: impl Fn(&S) -> R) -> f64 {
     sum
 }
 
-/// The tensor of a symmetry class: `full`, `xz` or `principal`.
+/// The tensor of a spatial model's symmetry class (`full_euler` → the full tensor).
 fn class_tensor(model: &str) -> InertiaTensor {
-    match model.split('_').next() {
-        Some("full") => bodies::full_tensor(),
-        Some("xz") => bodies::xz_tensor(),
-        _ => bodies::principal_tensor(),
-    }
+    let symmetry = catalog_entry(model)
+        .and_then(|info| info.symmetry)
+        .unwrap_or(Symmetry::Principal);
+    bodies::tensor_of(symmetry)
 }
 
-/// The pendulum of the benches: I₀ = 2, M = 1, g = 9.81, h = 0.5.
-fn pendulum_parameters() -> Option<PendulumParameters> {
-    PendulumParameters::new(2.0, 1.0, 9.81, 0.5).ok()
+/// The catalog's entry of `model`, named with or without its `spatial_` prefix.
+fn catalog_entry(model: &str) -> Option<&'static ModelInfo> {
+    ModelInfo::find(model).or_else(|| ModelInfo::find(&format!("spatial_{model}")))
 }
 
 /// The state of call `i`: a little different each time, so nothing is hoisted out of the loop.
@@ -104,90 +103,52 @@ fn pendulum_state(i: usize) -> [f64; 2] {
     [0.3 + 1e-6 * i as f64, 0.1]
 }
 
-macro_rules! spatial_generated {
-    ($model:ty, $tensor:expr, $n:literal, $calls:expr) => {{
-        let model = <$model>::new(5.0, &$tensor).expect("valid body");
-        run(&states(spatial_state::<$n>), $calls, |x| {
-            model.rhs(x, &FORCE, &MOMENT)
-        })
-    }};
+/// The pendulum every form measures.
+fn pendulum() -> PendulumParameters {
+    PendulumParameters::new(2.0, 1.0, 9.81, 0.5).expect("a physical pendulum")
 }
 
-macro_rules! spatial_std_trig {
-    ($module:ident, $tensor:expr, $calls:expr) => {{
-        let parameters = std_trig::$module::Parameters::from_body(5.0, &$tensor);
-        let k = std_trig::$module::Coefficients::<f64>::new(&parameters);
-        run(&states(spatial_state::<12>), $calls, |x| {
-            std_trig::$module::rhs(&k, x, &INPUT)
-        })
-    }};
+/// Calls the generated model named `model` (a catalog name, spatial ones with or without
+/// their `spatial_` prefix): one arm per catalog entry, written by `for_each_model!`, each
+/// with its inputs as literals, as the generic side has them, so that the compiler folds them
+/// into both alike.
+macro_rules! generated_calls {
+    ($($module:ident => $type:ident {
+        family: $family:ident $(($symmetry:ident, $kinematics:ident))?,
+        state: $n:literal, inputs: $m:literal, title: $title:literal,
+        parameters: [$($parameter:ident),*]
+    },)*) => {
+        fn generated(model: &str, calls: usize) -> Option<f64> {
+            let name = catalog_entry(model)?.name;
+            $(
+                if name == stringify!($module) {
+                    let model = generated_calls!(@model $type, $family $(($symmetry))?);
+                    return Some(run(
+                        &states(generated_calls!(@state $family $(($kinematics))?)),
+                        calls,
+                        |x| model.rhs(x, &generated_calls!(@input $family)),
+                    ));
+                }
+            )*
+            None
+        }
+    };
+    (@model $type:ident, Pendulum) => { models::$type::<f64>::new(&pendulum()) };
+    (@model $type:ident, PlanarMidship) => { models::$type::<f64>::new(5.0, 4.0, 0.3).ok()? };
+    (@model $type:ident, Spatial($symmetry:ident)) => {
+        models::$type::<f64>::new(5.0, &bodies::tensor_of(Symmetry::$symmetry)).ok()?
+    };
+    (@model $type:ident, $planar:ident) => { models::$type::<f64>::new(5.0, 4.0).ok()? };
+    (@state Pendulum) => { pendulum_state };
+    (@state Spatial(Euler)) => { spatial_state::<12> };
+    (@state Spatial(Quaternion)) => { spatial_state::<13> };
+    (@state $planar:ident) => { planar_state };
+    (@input Pendulum) => { [0.0] };
+    (@input Spatial) => { [FORCE[0], FORCE[1], FORCE[2], MOMENT[0], MOMENT[1], MOMENT[2]] };
+    (@input $planar:ident) => { LOAD };
 }
 
-fn generated(model: &str, calls: usize) -> Option<f64> {
-    let tensor = class_tensor(model);
-    Some(match model {
-        "pendulum" => {
-            let p = models::Pendulum::<f64>::new(&pendulum_parameters()?);
-            run(&states(pendulum_state), calls, |x| p.rhs(x, 0.0))
-        }
-        "planar_at_g" => {
-            let p = models::PlanarAtG::<f64>::new(5.0, 4.0).ok()?;
-            run(&states(planar_state), calls, |x| p.rhs(x, &LOAD))
-        }
-        "planar_midship" => {
-            let p = models::PlanarMidship::<f64>::new(5.0, 4.0, 0.3).ok()?;
-            run(&states(planar_state), calls, |x| p.rhs(x, &LOAD))
-        }
-        "planar_space_fixed" => {
-            let p = models::PlanarSpaceFixed::<f64>::new(5.0, 4.0).ok()?;
-            run(&states(planar_state), calls, |x| p.rhs(x, &LOAD))
-        }
-        "full_euler" => spatial_generated!(models::SpatialFullEuler<f64>, tensor, 12, calls),
-        "xz_euler" => spatial_generated!(models::SpatialXzEuler<f64>, tensor, 12, calls),
-        "principal_euler" => {
-            spatial_generated!(models::SpatialPrincipalEuler<f64>, tensor, 12, calls)
-        }
-        "full_quaternion" => {
-            spatial_generated!(models::SpatialFullQuaternion<f64>, tensor, 13, calls)
-        }
-        "xz_quaternion" => spatial_generated!(models::SpatialXzQuaternion<f64>, tensor, 13, calls),
-        "principal_quaternion" => {
-            spatial_generated!(models::SpatialPrincipalQuaternion<f64>, tensor, 13, calls)
-        }
-        _ => return None,
-    })
-}
-
-fn generated_std_trig(model: &str, calls: usize) -> Option<f64> {
-    let tensor = class_tensor(model);
-    Some(match model {
-        "pendulum" => {
-            let parameters = bodies::pendulum();
-            let k = std_trig::pendulum::Coefficients::<f64>::new(&parameters);
-            run(&states(pendulum_state), calls, |x| {
-                std_trig::pendulum::rhs(&k, x, &[0.0])
-            })
-        }
-        "planar_at_g" => {
-            let parameters = bodies::planar_at_g();
-            let k = std_trig::planar_at_g::Coefficients::<f64>::new(&parameters);
-            run(&states(planar_state), calls, |x| {
-                std_trig::planar_at_g::rhs(&k, x, &LOAD)
-            })
-        }
-        "planar_midship" => {
-            let parameters = bodies::planar_midship();
-            let k = std_trig::planar_midship::Coefficients::<f64>::new(&parameters);
-            run(&states(planar_state), calls, |x| {
-                std_trig::planar_midship::rhs(&k, x, &LOAD)
-            })
-        }
-        "full_euler" => spatial_std_trig!(spatial_full_euler, tensor, calls),
-        "xz_euler" => spatial_std_trig!(spatial_xz_euler, tensor, calls),
-        "principal_euler" => spatial_std_trig!(spatial_principal_euler, tensor, calls),
-        _ => return None,
-    })
-}
+eom::for_each_model!(generated_calls);
 
 fn generic(model: &str, calls: usize) -> Option<f64> {
     let load = Vector3::from(LOAD);
@@ -197,7 +158,7 @@ fn generic(model: &str, calls: usize) -> Option<f64> {
     let spatial_q = |i| SVector::<f64, 13>::from(spatial_state::<13>(i));
     Some(match model {
         "pendulum" => {
-            let p = eom::generic::Pendulum::<f64>::new(&pendulum_parameters()?);
+            let p = eom::generic::Pendulum::<f64>::new(&pendulum());
             let xs: Vec<_> = (0..STATES)
                 .map(|i| Vector2::from(pendulum_state(i)))
                 .collect();
@@ -238,14 +199,13 @@ fn main() {
     let calls: usize = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(1000);
     let sum = match form {
         "generated" => generated(model, calls),
-        "std_trig" => generated_std_trig(model, calls),
         "generic" => generic(model, calls),
         _ => None,
     };
     match sum {
         Some(sum) => println!("{form} {model}: {calls} calls (checksum {sum:.6})"),
         None => {
-            eprintln!("usage: rhs_calls generated|std_trig|generic MODEL [CALLS]; see the source");
+            eprintln!("usage: rhs_calls generated|generic MODEL [CALLS]; see the source");
             std::process::exit(2);
         }
     }

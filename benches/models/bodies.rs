@@ -1,11 +1,9 @@
-//! The bodies the per-call measurements use: for the spatial models one per symmetry class
-//! (principal moments 2, 3 and 4 turned so that each class's products are non-zero), and the
-//! planar body and the pendulum, as parameters of their platform-trig variants. Shared by the
-//! models bench and `examples/rhs_calls.rs`, so that wall time, cycles and instruction counts
-//! price the same calls.
+//! The bodies the per-call measurements use, one per symmetry class: principal moments 2, 3
+//! and 4 turned so that each class's products are non-zero. Shared by the models bench and
+//! `examples/rhs_calls.rs`, so that wall time, cycles and instruction counts price the same
+//! calls.
 
 use eom::InertiaTensor;
-use eom::models::generated::std_trig;
 use nalgebra::{Matrix3, Rotation3, Vector3};
 
 /// diag(2, 3, 4) turned by the Euler angles `roll, pitch, yaw`.
@@ -31,29 +29,15 @@ pub fn principal_tensor() -> InertiaTensor {
     InertiaTensor::new(2.0, 3.0, 4.0, 0.0, 0.0, 0.0).expect("a physical tensor")
 }
 
-/// The planar body at G: M = 5, I_zz = 4 (`PlanarAtG::new(5.0, 4.0)`).
-pub fn planar_at_g() -> std_trig::planar_at_g::Parameters {
-    std_trig::planar_at_g::Parameters {
-        mass: 5.0,
-        izz: 4.0,
-    }
-}
-
-/// The same body with G 0.3 ahead of midship (`PlanarMidship::new(5.0, 4.0, 0.3)`).
-pub fn planar_midship() -> std_trig::planar_midship::Parameters {
-    std_trig::planar_midship::Parameters {
-        mass: 5.0,
-        izz: 4.0,
-        x_g: 0.3,
-    }
-}
-
-/// The pendulum: I₀ = 2, M = 1, g = 9.81, h = 0.5 (`PendulumParameters::new(2.0, 1.0, 9.81, 0.5)`).
-pub fn pendulum() -> std_trig::pendulum::Parameters {
-    std_trig::pendulum::Parameters {
-        i0: 2.0,
-        mass: 1.0,
-        g: 9.81,
-        h: 0.5,
+/// The body of a symmetry class: the turned tensor above, with every product the class prunes
+/// exactly zero (turned about the one axis that leaves exactly the kept product when the class
+/// keeps one).
+pub fn tensor_of(class: eom::models::Symmetry) -> InertiaTensor {
+    let pruned = class.pruned();
+    match pruned.len() {
+        0 => full_tensor(),
+        3 => principal_tensor(),
+        _ if pruned.contains(&"Ixy") && pruned.contains(&"Iyz") => xz_tensor(),
+        _ => panic!("no test body for the class {}", class.name()),
     }
 }

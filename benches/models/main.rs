@@ -1,9 +1,10 @@
 //! Generated against generic, in one run: ns per right-hand-side call for every variant,
-//! f32 against f64, the trigonometric models also as emitted with the platform's sin and cos
-//! (`generated_std_trig_f64`, to show the emitted `sin_cos` kernel's share), and a batch of
-//! 4096 bodies stepped with f64 scalars against `WideF64x4` lanes. The Euler variants run at
-//! two attitudes: roll, pitch and heading within ±π/4, and all three beyond it
-//! (`*_large_angles`), since the emitted `sin_cos` skips the argument reduction for the first.
+//! f32 against f64, and a batch of 4096 bodies stepped with f64 scalars against `WideF64x4`
+//! lanes. The Euler variants run at two attitudes: roll, pitch and heading within ±π/4, and
+//! all three beyond it (`*_large_angles`), since `eom_kernel::sin_cos` skips the argument
+//! reduction for the first. To show the kernel's share, run it again with
+//! `--features platform-trig`, which makes the generated models call the platform's sin and
+//! cos.
 //!
 //! `cargo bench --bench models`; ratios are read from `target/criterion/*/*/new/estimates.json`
 //! (see the README for the table of one run). The per-call groups run twice: in wall time, and
@@ -14,11 +15,11 @@ mod bodies;
 #[cfg(target_os = "linux")]
 mod cycles;
 
-use bodies::{full_tensor, principal_tensor, xz_tensor};
+use bodies::tensor_of;
 use criterion::measurement::Measurement;
 use criterion::{BenchmarkId, Criterion, Throughput};
 use eom::generic::{PlanarBody, PlanarMidship, RigidBody};
-use eom::models::{self, FromBody, generated};
+use eom::models::{self, Model, generated};
 use nalgebra::{SVector, Vector2, Vector3};
 use simba::simd::WideF64x4;
 use std::hint::black_box;
@@ -31,6 +32,8 @@ const LARGE_ANGLES_STATE: [f64; 12] = [
 ];
 const FORCE: [f64; 3] = [10.0, -2.0, 1.0];
 const MOMENT: [f64; 3] = [0.5, 0.2, -0.3];
+/// [`FORCE`] and [`MOMENT`] as a spatial model's inputs.
+const INPUT: [f64; 6] = [10.0, -2.0, 1.0, 0.5, 0.2, -0.3];
 
 fn quaternion_state() -> [f64; 13] {
     let q = nalgebra::UnitQuaternion::from_euler_angles(0.1, 0.2, 0.3);
@@ -42,12 +45,12 @@ fn quaternion_state() -> [f64; 13] {
 
 /// Generated against generic, f64, one model at one state.
 macro_rules! bench_against_generic {
-    ($group:expr, $name:literal, $model:ty, $tensor:expr, $state:expr, $generic:ident) => {{
+    ($group:expr, $name:expr, $model:ty, $tensor:expr, $state:expr, $generic:ident) => {{
         let tensor = $tensor;
         let state = $state;
         let model = <$model>::new(5.0, &tensor).unwrap();
         $group.bench_function(BenchmarkId::new("generated_f64", $name), |b| {
-            b.iter(|| model.rhs(black_box(&state), black_box(&FORCE), black_box(&MOMENT)))
+            b.iter(|| model.rhs(black_box(&state), black_box(&INPUT)))
         });
         let body = RigidBody::<f64>::new(5.0, &tensor).unwrap();
         let x = SVector::from(state);
@@ -60,135 +63,47 @@ macro_rules! bench_against_generic {
 
 /// Generated against generic, and the generated model in f32.
 macro_rules! bench_spatial {
-    ($group:expr, $name:literal, $model:ty, $tensor:expr, $state:expr, $generic:ident) => {{
+    ($group:expr, $name:expr, $model:ty, $tensor:expr, $state:expr, $generic:ident) => {{
         let (tensor, state) = ($tensor, $state);
         bench_against_generic!($group, $name, $model, tensor, state, $generic);
         let model32 = <$model>::new(5.0, &tensor).unwrap();
         let state32 = state.map(|x| x as f32);
-        let (force32, moment32) = (FORCE.map(|x| x as f32), MOMENT.map(|x| x as f32));
+        let input32 = INPUT.map(|x| x as f32);
         $group.bench_function(BenchmarkId::new("generated_f32", $name), |b| {
-            b.iter(|| {
-                model32.rhs(
-                    black_box(&state32),
-                    black_box(&force32),
-                    black_box(&moment32),
-                )
-            })
+            b.iter(|| model32.rhs(black_box(&state32), black_box(&input32)))
         });
     }};
 }
 
-/// The same model emitted with the platform's sin and cos (`generated::std_trig`), called with
-/// the same coefficients and input as the typed model.
-macro_rules! bench_std_trig {
-    ($group:expr, $name:literal, $module:ident, $tensor:expr, $state:expr) => {{
-        use generated::std_trig::$module as emitted;
-        let state = $state;
-        let k = emitted::Coefficients::<f64>::new(&emitted::Parameters::from_body(5.0, &$tensor));
-        let input: [f64; 6] = [FORCE, MOMENT].concat().try_into().unwrap();
-        $group.bench_function(BenchmarkId::new("generated_std_trig_f64", $name), |b| {
-            b.iter(|| emitted::rhs(&k, black_box(&state), black_box(&input)))
-        });
-    }};
+/// Every spatial variant of the catalog, named without its `spatial_` prefix; the Euler
+/// variants also at large angles.
+macro_rules! spatial_benches {
+    ($($module:ident => $type:ident {
+        family: $family:ident $(($symmetry:ident, $kinematics:ident))?,
+        state: $n:literal, inputs: $m:literal, title: $title:literal,
+        parameters: [$($parameter:ident),*]
+    },)*) => {
+        fn spatial<M: Measurement>(c: &mut Criterion<M>, suffix: &str) {
+            let mut group = c.benchmark_group(format!("spatial_rhs{suffix}"));
+            $($(
+                let name = stringify!($module).trim_start_matches("spatial_");
+                let tensor = tensor_of(models::Symmetry::$symmetry);
+                spatial_benches!(@variant group, name, models::$type<_>, tensor, $kinematics);
+            )?)*
+            group.finish();
+        }
+    };
+    (@variant $group:ident, $name:ident, $model:ty, $tensor:ident, Euler) => {
+        bench_spatial!($group, $name, $model, $tensor.clone(), EULER_STATE, rhs_euler);
+        let large = format!("{}_large_angles", $name);
+        bench_against_generic!($group, &large, $model, $tensor, LARGE_ANGLES_STATE, rhs_euler);
+    };
+    (@variant $group:ident, $name:ident, $model:ty, $tensor:ident, Quaternion) => {
+        bench_spatial!($group, $name, $model, $tensor, quaternion_state(), rhs_quaternion);
+    };
 }
 
-fn spatial<M: Measurement>(c: &mut Criterion<M>, suffix: &str) {
-    let mut group = c.benchmark_group(format!("spatial_rhs{suffix}"));
-    bench_spatial!(
-        group,
-        "full_euler",
-        models::SpatialFullEuler<_>,
-        full_tensor(),
-        EULER_STATE,
-        rhs_euler
-    );
-    bench_std_trig!(
-        group,
-        "full_euler",
-        spatial_full_euler,
-        full_tensor(),
-        EULER_STATE
-    );
-    bench_spatial!(
-        group,
-        "xz_euler",
-        models::SpatialXzEuler<_>,
-        xz_tensor(),
-        EULER_STATE,
-        rhs_euler
-    );
-    bench_std_trig!(
-        group,
-        "xz_euler",
-        spatial_xz_euler,
-        xz_tensor(),
-        EULER_STATE
-    );
-    bench_spatial!(
-        group,
-        "principal_euler",
-        models::SpatialPrincipalEuler<_>,
-        principal_tensor(),
-        EULER_STATE,
-        rhs_euler
-    );
-    bench_std_trig!(
-        group,
-        "principal_euler",
-        spatial_principal_euler,
-        principal_tensor(),
-        EULER_STATE
-    );
-    bench_against_generic!(
-        group,
-        "full_euler_large_angles",
-        models::SpatialFullEuler<_>,
-        full_tensor(),
-        LARGE_ANGLES_STATE,
-        rhs_euler
-    );
-    bench_against_generic!(
-        group,
-        "xz_euler_large_angles",
-        models::SpatialXzEuler<_>,
-        xz_tensor(),
-        LARGE_ANGLES_STATE,
-        rhs_euler
-    );
-    bench_against_generic!(
-        group,
-        "principal_euler_large_angles",
-        models::SpatialPrincipalEuler<_>,
-        principal_tensor(),
-        LARGE_ANGLES_STATE,
-        rhs_euler
-    );
-    bench_spatial!(
-        group,
-        "full_quaternion",
-        models::SpatialFullQuaternion<_>,
-        full_tensor(),
-        quaternion_state(),
-        rhs_quaternion
-    );
-    bench_spatial!(
-        group,
-        "xz_quaternion",
-        models::SpatialXzQuaternion<_>,
-        xz_tensor(),
-        quaternion_state(),
-        rhs_quaternion
-    );
-    bench_spatial!(
-        group,
-        "principal_quaternion",
-        models::SpatialPrincipalQuaternion<_>,
-        principal_tensor(),
-        quaternion_state(),
-        rhs_quaternion
-    );
-    group.finish();
-}
+eom::for_each_model!(spatial_benches);
 
 fn planar<M: Measurement>(c: &mut Criterion<M>, suffix: &str) {
     let mut group = c.benchmark_group(format!("planar_rhs{suffix}"));
@@ -203,13 +118,6 @@ fn planar<M: Measurement>(c: &mut Criterion<M>, suffix: &str) {
     group.bench_function(BenchmarkId::new("generic_f64", "at_g"), |b| {
         b.iter(|| body.rhs_body_at_g(black_box(&x), black_box(&l)))
     });
-    {
-        use generated::std_trig::planar_at_g as emitted;
-        let k = emitted::Coefficients::<f64>::new(&bodies::planar_at_g());
-        group.bench_function(BenchmarkId::new("generated_std_trig_f64", "at_g"), |b| {
-            b.iter(|| emitted::rhs(&k, black_box(&state), black_box(&load)))
-        });
-    }
     let midship = models::PlanarMidship::<f64>::new(5.0, 4.0, 0.3).unwrap();
     let generic_midship = PlanarMidship::<f64>::new(5.0, 4.0, 0.3).unwrap();
     group.bench_function(BenchmarkId::new("generated_f64", "midship"), |b| {
@@ -218,13 +126,6 @@ fn planar<M: Measurement>(c: &mut Criterion<M>, suffix: &str) {
     group.bench_function(BenchmarkId::new("generic_f64", "midship"), |b| {
         b.iter(|| generic_midship.rhs_body_at_midship(black_box(&x), black_box(&l)))
     });
-    {
-        use generated::std_trig::planar_midship as emitted;
-        let k = emitted::Coefficients::<f64>::new(&bodies::planar_midship());
-        group.bench_function(BenchmarkId::new("generated_std_trig_f64", "midship"), |b| {
-            b.iter(|| emitted::rhs(&k, black_box(&state), black_box(&load)))
-        });
-    }
     let space = models::PlanarSpaceFixed::<f64>::new(5.0, 4.0).unwrap();
     group.bench_function(BenchmarkId::new("generated_f64", "space_fixed"), |b| {
         b.iter(|| space.rhs(black_box(&state), black_box(&load)))
@@ -237,19 +138,11 @@ fn planar<M: Measurement>(c: &mut Criterion<M>, suffix: &str) {
     let generic_pendulum = eom::generic::Pendulum::<f64>::new(&parameters);
     let theta = Vector2::new(0.3, 0.1);
     group.bench_function(BenchmarkId::new("generated_f64", "pendulum"), |b| {
-        b.iter(|| pendulum.rhs(black_box(&[0.3, 0.1]), black_box(0.0)))
+        b.iter(|| pendulum.rhs(black_box(&[0.3, 0.1]), black_box(&[0.0])))
     });
     group.bench_function(BenchmarkId::new("generic_f64", "pendulum"), |b| {
         b.iter(|| generic_pendulum.rhs(black_box(&theta), black_box(0.0)))
     });
-    {
-        use generated::std_trig::pendulum as emitted;
-        let k = emitted::Coefficients::<f64>::new(&bodies::pendulum());
-        group.bench_function(
-            BenchmarkId::new("generated_std_trig_f64", "pendulum"),
-            |b| b.iter(|| emitted::rhs(&k, black_box(&[0.3, 0.1]), black_box(&[0.0]))),
-        );
-    }
     group.finish();
 }
 
@@ -270,7 +163,7 @@ fn batch(c: &mut Criterion) {
     };
     let k64 = generated::spatial_xz_euler::Coefficients::<f64>::new(&parameters);
     let mut scalar_states: Vec<[f64; 12]> = (0..BODIES).map(perturbed).collect();
-    let input = [FORCE, MOMENT].concat().try_into().unwrap();
+    let input = INPUT;
     group.bench_function("f64", |b| {
         b.iter(|| {
             for x in scalar_states.iter_mut() {
