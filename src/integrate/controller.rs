@@ -1,5 +1,5 @@
-//! What the adaptive methods share: their options, the weighted error norm, Hairer's initial
-//! step, and the PI step-size controller.
+//! What the adaptive methods share besides their stepping loop (`adaptive.rs`): their
+//! options, the weighted error norm, Hairer's initial step, and the PI step-size controller.
 //!
 //! The controller is Gustafsson's PI controller as Hairer's DOPRI5/DOP853 codes use it
 //! (Hairer, Nørsett & Wanner, *Solving ODEs I*, §II.4): with the scaled error `err` of the
@@ -9,7 +9,7 @@
 
 use nalgebra::{RealField, SVector};
 
-use super::{IntegrateError, OdeSystem, check_finite, check_interval, lit, to_f64};
+use super::{IntegrateError, OdeSystem, lit};
 
 /// Tolerances and limits of an adaptive method.
 ///
@@ -241,129 +241,4 @@ impl<T: RealField + Copy> PiController<T> {
             Verdict::Reject(h / (T::one() / self.fac_min).min(err_alpha / self.safety))
         }
     }
-}
-
-/// The state of an adaptive run between steps: where it is, what it has spent, and the
-/// checks every step must pass.
-pub(crate) struct Progress<T> {
-    pub(crate) t: T,
-    pub(crate) t_end: T,
-    pub(crate) h: T,
-    pub(crate) steps: usize,
-    pub(crate) rejected: usize,
-    h_min: T,
-    h_max: T,
-    max_steps: usize,
-}
-
-impl<T: RealField + Copy> Progress<T> {
-    /// A run from `t0` to `t_end` with the limits of `options` and the first step `h`.
-    pub(crate) fn new(options: &AdaptiveOptions, t0: T, t_end: T, h: T) -> Self {
-        let h_max = if options.h_max.is_finite() {
-            lit(options.h_max)
-        } else {
-            t_end - t0
-        };
-        Self {
-            t: t0,
-            t_end,
-            h: h.min(h_max),
-            steps: 0,
-            rejected: 0,
-            h_min: lit(options.h_min),
-            h_max,
-            max_steps: options.max_steps,
-        }
-    }
-
-    /// The largest step allowed.
-    pub(crate) fn h_max(&self) -> T {
-        self.h_max
-    }
-
-    /// Checks the step budget and the step size, then shortens the step to land on `t_end`
-    /// when it would (nearly) reach it. Returns whether this is the last step.
-    pub(crate) fn next_step(&mut self) -> Result<bool, IntegrateError> {
-        if self.steps + self.rejected >= self.max_steps {
-            let (t, max_steps) = (to_f64(self.t), self.max_steps);
-            return Err(IntegrateError::MaxStepsExceeded { t, max_steps });
-        }
-        if self.h < self.h_min || self.t + self.h * lit(0.1) == self.t {
-            let (t, h, h_min) = (to_f64(self.t), to_f64(self.h), to_f64(self.h_min));
-            return Err(IntegrateError::StepSizeTooSmall { t, h, h_min });
-        }
-        let last = self.t + self.h * lit(1.01) >= self.t_end;
-        if last {
-            self.h = self.t_end - self.t;
-        }
-        Ok(last)
-    }
-
-    /// Applies the controller's verdict on the step just tried.
-    pub(crate) fn record(&mut self, verdict: Verdict<T>, last: bool) -> bool {
-        match verdict {
-            Verdict::Accept(h_new) => {
-                self.steps += 1;
-                self.t = if last { self.t_end } else { self.t + self.h };
-                self.h = h_new.min(self.h_max);
-                true
-            }
-            Verdict::Reject(h_new) => {
-                self.rejected += 1;
-                self.h = h_new;
-                false
-            }
-        }
-    }
-}
-
-/// What an adaptive run knows before its first step.
-pub(crate) struct Start<T: RealField + Copy, const N: usize> {
-    /// f(t0, y0), the first stage of the first step.
-    pub(crate) k1: SVector<T, N>,
-    /// The run's position, with the first step size.
-    pub(crate) progress: Progress<T>,
-    /// (rtol, atol) in the scalar type.
-    pub(crate) tols: (T, T),
-    /// The RHS evaluations spent so far (f0, and one more for the initial step heuristic).
-    pub(crate) rhs_evals: usize,
-}
-
-/// Checks the options, the interval and the initial state, evaluates f(t0, y0) and chooses
-/// the first step (given, or by Hairer's heuristic for a method of order `order`). `None`
-/// when there is nothing to integrate (`t_end = t0`).
-pub(crate) fn start<T, const N: usize, S>(
-    options: &AdaptiveOptions,
-    system: &S,
-    (t0, y0, t_end): (T, &SVector<T, N>, T),
-    order: i32,
-) -> Result<Option<Start<T, N>>, IntegrateError>
-where
-    T: RealField + Copy,
-    S: OdeSystem<T, N> + ?Sized,
-{
-    options.validate()?;
-    check_interval(t0, t_end)?;
-    check_finite(y0, t0)?;
-    if t_end == t0 {
-        return Ok(None);
-    }
-    let tols = (lit::<T>(options.rtol), lit::<T>(options.atol));
-    let mut k1 = SVector::zeros();
-    system.rhs(t0, y0, &mut k1);
-    let mut progress = Progress::new(options, t0, t_end, t_end - t0);
-    let (h, rhs_evals) = match options.h0 {
-        Some(h0) => (lit::<T>(h0).min(progress.h_max()), 1),
-        None => (
-            initial_step(system, (t0, y0, &k1), order, tols, progress.h_max()),
-            2,
-        ),
-    };
-    progress.h = h;
-    Ok(Some(Start {
-        k1,
-        progress,
-        tols,
-        rhs_evals,
-    }))
 }

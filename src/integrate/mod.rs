@@ -16,7 +16,12 @@
 //!   output;
 //! - [`LieMidpoint`]: a geometric integrator for rigid-body rotation (4.50 with the quaternion
 //!   attitude) that conserves energy and |H| to round-off and keeps the quaternion unit.
+//!
+//! Two drivers step them, so that what a run checks and counts is written once: `run_fixed`
+//! (below) cuts the interval into equal steps for the fixed-step methods, and `adaptive.rs`
+//! runs the embedded pairs Dopri5 and Dop853, which are their tableaux and error estimates.
 
+mod adaptive;
 mod controller;
 mod dop853;
 mod dop853_dense;
