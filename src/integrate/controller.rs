@@ -30,13 +30,14 @@ pub struct AdaptiveOptions {
     pub h0: Option<f64>,
     /// The most steps (accepted plus rejected) a run may take.
     pub max_steps: usize,
-    /// The PI controller's β (0.04 for DOPRI5 and 0 for DOP853 by default, as in Hairer's codes).
+    /// The PI controller's β in [0, 0.2] (0.04 for DOPRI5 and 0 for DOP853 by default, as in
+    /// Hairer's codes, which refuse β > 0.2).
     pub beta: f64,
-    /// Safety factor on the predicted step (0.9).
+    /// Safety factor on the predicted step, in (0, 1] (0.9).
     pub safety: f64,
-    /// The smallest ratio of successive steps (0.2 for DOPRI5, 0.333 for DOP853).
+    /// The smallest ratio of successive steps, in (0, 1] (0.2 for DOPRI5, 0.333 for DOP853).
     pub fac_min: f64,
-    /// The largest ratio of successive steps (10 for DOPRI5, 6 for DOP853).
+    /// The largest ratio of successive steps, at least 1 (10 for DOPRI5, 6 for DOP853).
     pub fac_max: f64,
 }
 
@@ -69,6 +70,13 @@ impl AdaptiveOptions {
 
     /// Checks every field, naming the first one that is out of range.
     pub(crate) fn validate(&self) -> Result<(), IntegrateError> {
+        self.validate_tolerances()?;
+        self.validate_steps()?;
+        self.validate_controller()
+    }
+
+    /// Both tolerances finite and non-negative, not both zero.
+    fn validate_tolerances(&self) -> Result<(), IntegrateError> {
         let tol_ok = |v: f64| v.is_finite() && v >= 0.0;
         for (name, value) in [("rtol", self.rtol), ("atol", self.atol)] {
             if !tol_ok(value) {
@@ -81,6 +89,11 @@ impl AdaptiveOptions {
                 value: 0.0,
             });
         }
+        Ok(())
+    }
+
+    /// `h_min` finite and non-negative, `h_max` positive, `h0` (if given) positive and finite.
+    fn validate_steps(&self) -> Result<(), IntegrateError> {
         if !(self.h_min.is_finite() && self.h_min >= 0.0) {
             return Err(IntegrateError::InvalidStep {
                 name: "h_min",
@@ -99,6 +112,26 @@ impl AdaptiveOptions {
                 value: h0,
             }),
             _ => Ok(()),
+        }
+    }
+
+    /// The controller's parameters in the ranges their documentation gives; outside them the
+    /// controller still runs but steers badly (negative steps, steps that never grow), and
+    /// the run would fail later under a name that hides the culprit.
+    fn validate_controller(&self) -> Result<(), IntegrateError> {
+        let in_unit = |v: f64| v > 0.0 && v <= 1.0;
+        let beta_ok = (0.0..=0.2).contains(&self.beta);
+        let checks = [
+            ("beta", self.beta, beta_ok, "[0, 0.2]"),
+            ("safety", self.safety, in_unit(self.safety), "(0, 1]"),
+            ("fac_min", self.fac_min, in_unit(self.fac_min), "(0, 1]"),
+            ("fac_max", self.fac_max, self.fac_max >= 1.0, "[1, ∞]"),
+        ];
+        match checks.into_iter().find(|&(_, _, ok, _)| !ok) {
+            None => Ok(()),
+            Some((name, value, _, range)) => {
+                Err(IntegrateError::InvalidController { name, value, range })
+            }
         }
     }
 }
@@ -240,5 +273,49 @@ impl<T: RealField + Copy> PiController<T> {
             self.rejected_last = true;
             Verdict::Reject(h / (T::one() / self.fac_min).min(err_alpha / self.safety))
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn controller_parameters_out_of_range_are_named() {
+        type Set = fn(&mut AdaptiveOptions, f64);
+        let cases: [(&str, Set, [f64; 3]); 4] = [
+            ("beta", |o, v| o.beta = v, [-0.01, 0.3, f64::NAN]),
+            ("safety", |o, v| o.safety = v, [0.0, 1.5, f64::NAN]),
+            ("fac_min", |o, v| o.fac_min = v, [0.0, 2.0, f64::NAN]),
+            ("fac_max", |o, v| o.fac_max = v, [0.5, -1.0, f64::NAN]),
+        ];
+        for (field, set, values) in cases {
+            for value in values {
+                let mut options = AdaptiveOptions::dop853(1e-6, 1e-6);
+                set(&mut options, value);
+                match options.validate() {
+                    Err(IntegrateError::InvalidController { name, .. }) => assert_eq!(name, field),
+                    other => panic!("{field} = {value}: {other:?}"),
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn hairers_defaults_and_the_range_ends_are_valid() {
+        for options in [
+            AdaptiveOptions::dopri5(1e-6, 0.0),
+            AdaptiveOptions::dop853(0.0, 1e-6),
+        ] {
+            assert_eq!(options.validate(), Ok(()));
+        }
+        let edges = AdaptiveOptions {
+            beta: 0.2,
+            safety: 1.0,
+            fac_min: 1.0,
+            fac_max: f64::INFINITY,
+            ..AdaptiveOptions::dopri5(1e-6, 1e-6)
+        };
+        assert_eq!(edges.validate(), Ok(()));
     }
 }
