@@ -142,21 +142,27 @@ pub(crate) fn scaled_rms<T: RealField + Copy, const N: usize>(
     e: &SVector<T, N>,
     y: &SVector<T, N>,
     z: &SVector<T, N>,
-    (rtol, atol): (T, T),
+    tols: (T, T),
 ) -> T {
     let mut sum = T::zero();
     for i in 0..N {
-        let scale = atol + rtol * y[i].abs().max(z[i].abs());
-        // An exact zero error counts as zero even where the scale is zero (atol = 0 and a
-        // component that stays at zero), instead of 0/0.
-        let r = if e[i] == T::zero() {
-            T::zero()
-        } else {
-            e[i] / scale
-        };
+        let r = in_units_of(e[i], weight(y[i], z[i], tols));
         sum += r * r;
     }
     (sum / lit::<T>(N as f64)).sqrt()
+}
+
+/// Hairer's weight `atol + rtol · max(|y|, |z|)` of a component whose values at both ends of
+/// the step are `y` and `z`.
+pub(crate) fn weight<T: RealField + Copy>(y: T, z: T, (rtol, atol): (T, T)) -> T {
+    atol + rtol * y.abs().max(z.abs())
+}
+
+/// The error `e` of a component in units of its weight `w`.
+pub(crate) fn in_units_of<T: RealField + Copy>(e: T, w: T) -> T {
+    // An exact zero error counts as zero even where the weight is zero (atol = 0 and a
+    // component that stays at zero), instead of 0/0.
+    if e == T::zero() { T::zero() } else { e / w }
 }
 
 /// The weighted Euclidean norm of `e` with weights `atol + rtol · |yᵢ|` (Hairer's `hinit`

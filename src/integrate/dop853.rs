@@ -17,6 +17,7 @@
 use nalgebra::{RealField, SVector};
 
 use super::adaptive::{self, AcceptedStep, EmbeddedPair, combine};
+use super::controller::{in_units_of, weight};
 use super::dop853_dense::interpolant;
 use super::{AdaptiveOptions, IntegrateError, Integrator, OdeSystem, Statistics, Stats, lit};
 
@@ -202,18 +203,17 @@ impl EmbeddedPair<12> for Dop853 {
         increment: &SVector<T, N>,
         h: T,
         (y, y_new): (&SVector<T, N>, &SVector<T, N>),
-        (rtol, atol): (T, T),
+        tols: (T, T),
     ) -> T {
         let e5 = combine(&ER, k);
         let e3 = increment
             - (k[0] * lit::<T>(BHH[0]) + k[8] * lit::<T>(BHH[1]) + k[11] * lit::<T>(BHH[2]));
         let (mut sum5, mut sum3) = (T::zero(), T::zero());
         for i in 0..N {
-            let scale = atol + rtol * y[i].abs().max(y_new[i].abs());
-            // Exact zeros count as zero where the scale is zero (atol = 0), instead of 0/0.
-            let ratio = |e: T| if e == T::zero() { e } else { e / scale };
-            sum5 += ratio(e5[i]) * ratio(e5[i]);
-            sum3 += ratio(e3[i]) * ratio(e3[i]);
+            let w = weight(y[i], y_new[i], tols);
+            let (r5, r3) = (in_units_of(e5[i], w), in_units_of(e3[i], w));
+            sum5 += r5 * r5;
+            sum3 += r3 * r3;
         }
         let mut denominator = sum5 + lit::<T>(0.01) * sum3;
         if denominator <= T::zero() {
