@@ -8,9 +8,6 @@
 //! counting of RHS evaluations are Hairer's for both. So a method is an [`EmbeddedPair`] — its
 //! tableau and what is genuinely its own — and [`run`] is the loop that steps every pair: a
 //! fix to the loop reaches every method, and a new pair is its coefficients.
-//!
-//! The driver computes what the two methods computed before it, in the same order, so their
-//! results are bit for bit what they were.
 
 use nalgebra::{RealField, SVector};
 
@@ -73,7 +70,8 @@ pub(crate) struct AcceptedStep<'a, T: RealField + Copy, const N: usize, const S:
     pub(crate) k_new: &'a SVector<T, N>,
 }
 
-/// Σ wⱼ kⱼ over the stages whose weight is non-zero.
+/// Σ wⱼ kⱼ over the stages whose weight is non-zero (many of Dop853's coefficients are zero,
+/// and skipping them saves their multiply-adds).
 pub(crate) fn combine<T: RealField + Copy, const N: usize>(
     w: &[f64],
     k: &[SVector<T, N>],
