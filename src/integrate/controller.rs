@@ -1,5 +1,5 @@
-//! What the adaptive methods share: their options, the weighted error norm, Hairer's initial
-//! step, and the PI step-size controller.
+//! What the adaptive methods share besides their stepping loop (`adaptive.rs`): their
+//! options, the weighted error norm, Hairer's initial step, and the PI step-size controller.
 //!
 //! The controller is Gustafsson's PI controller as Hairer's DOPRI5/DOP853 codes use it
 //! (Hairer, Nørsett & Wanner, *Solving ODEs I*, §II.4): with the scaled error `err` of the
@@ -9,7 +9,7 @@
 
 use nalgebra::{RealField, SVector};
 
-use super::{IntegrateError, OdeSystem, check_finite, check_interval, lit, to_f64};
+use super::{IntegrateError, OdeSystem, lit};
 
 /// Tolerances and limits of an adaptive method.
 ///
@@ -30,13 +30,14 @@ pub struct AdaptiveOptions {
     pub h0: Option<f64>,
     /// The most steps (accepted plus rejected) a run may take.
     pub max_steps: usize,
-    /// The PI controller's β (0.04 for DOPRI5 and 0 for DOP853 by default, as in Hairer's codes).
+    /// The PI controller's β in [0, 0.2] (0.04 for DOPRI5 and 0 for DOP853 by default, as in
+    /// Hairer's codes, which refuse β > 0.2).
     pub beta: f64,
-    /// Safety factor on the predicted step (0.9).
+    /// Safety factor on the predicted step, in (0, 1] (0.9).
     pub safety: f64,
-    /// The smallest ratio of successive steps (0.2 for DOPRI5, 0.333 for DOP853).
+    /// The smallest ratio of successive steps, in (0, 1] (0.2 for DOPRI5, 0.333 for DOP853).
     pub fac_min: f64,
-    /// The largest ratio of successive steps (10 for DOPRI5, 6 for DOP853).
+    /// The largest ratio of successive steps, at least 1 (10 for DOPRI5, 6 for DOP853).
     pub fac_max: f64,
 }
 
@@ -69,6 +70,13 @@ impl AdaptiveOptions {
 
     /// Checks every field, naming the first one that is out of range.
     pub(crate) fn validate(&self) -> Result<(), IntegrateError> {
+        self.validate_tolerances()?;
+        self.validate_steps()?;
+        self.validate_controller()
+    }
+
+    /// Both tolerances finite and non-negative, not both zero.
+    fn validate_tolerances(&self) -> Result<(), IntegrateError> {
         let tol_ok = |v: f64| v.is_finite() && v >= 0.0;
         for (name, value) in [("rtol", self.rtol), ("atol", self.atol)] {
             if !tol_ok(value) {
@@ -81,6 +89,11 @@ impl AdaptiveOptions {
                 value: 0.0,
             });
         }
+        Ok(())
+    }
+
+    /// `h_min` finite and non-negative, `h_max` positive, `h0` (if given) positive and finite.
+    fn validate_steps(&self) -> Result<(), IntegrateError> {
         if !(self.h_min.is_finite() && self.h_min >= 0.0) {
             return Err(IntegrateError::InvalidStep {
                 name: "h_min",
@@ -101,6 +114,26 @@ impl AdaptiveOptions {
             _ => Ok(()),
         }
     }
+
+    /// The controller's parameters in the ranges their documentation gives; outside them the
+    /// controller still runs but steers badly (negative steps, steps that never grow), and
+    /// the run would fail later under a name that hides the culprit.
+    fn validate_controller(&self) -> Result<(), IntegrateError> {
+        let in_unit = |v: f64| v > 0.0 && v <= 1.0;
+        let beta_ok = (0.0..=0.2).contains(&self.beta);
+        let checks = [
+            ("beta", self.beta, beta_ok, "[0, 0.2]"),
+            ("safety", self.safety, in_unit(self.safety), "(0, 1]"),
+            ("fac_min", self.fac_min, in_unit(self.fac_min), "(0, 1]"),
+            ("fac_max", self.fac_max, self.fac_max >= 1.0, "[1, ∞]"),
+        ];
+        match checks.into_iter().find(|&(_, _, ok, _)| !ok) {
+            None => Ok(()),
+            Some((name, value, _, range)) => {
+                Err(IntegrateError::InvalidController { name, value, range })
+            }
+        }
+    }
 }
 
 /// The weighted root-mean-square norm of `e` with weights `atol + rtol · max(|yᵢ|, |zᵢ|)`
@@ -109,21 +142,27 @@ pub(crate) fn scaled_rms<T: RealField + Copy, const N: usize>(
     e: &SVector<T, N>,
     y: &SVector<T, N>,
     z: &SVector<T, N>,
-    (rtol, atol): (T, T),
+    tols: (T, T),
 ) -> T {
     let mut sum = T::zero();
     for i in 0..N {
-        let scale = atol + rtol * y[i].abs().max(z[i].abs());
-        // An exact zero error counts as zero even where the scale is zero (atol = 0 and a
-        // component that stays at zero), instead of 0/0.
-        let r = if e[i] == T::zero() {
-            T::zero()
-        } else {
-            e[i] / scale
-        };
+        let r = in_units_of(e[i], weight(y[i], z[i], tols));
         sum += r * r;
     }
     (sum / lit::<T>(N as f64)).sqrt()
+}
+
+/// Hairer's weight `atol + rtol · max(|y|, |z|)` of a component whose values at both ends of
+/// the step are `y` and `z`.
+pub(crate) fn weight<T: RealField + Copy>(y: T, z: T, (rtol, atol): (T, T)) -> T {
+    atol + rtol * y.abs().max(z.abs())
+}
+
+/// The error `e` of a component in units of its weight `w`.
+pub(crate) fn in_units_of<T: RealField + Copy>(e: T, w: T) -> T {
+    // An exact zero error counts as zero even where the weight is zero (atol = 0 and a
+    // component that stays at zero), instead of 0/0.
+    if e == T::zero() { T::zero() } else { e / w }
 }
 
 /// The weighted Euclidean norm of `e` with weights `atol + rtol · |yᵢ|` (Hairer's `hinit`
@@ -243,127 +282,46 @@ impl<T: RealField + Copy> PiController<T> {
     }
 }
 
-/// The state of an adaptive run between steps: where it is, what it has spent, and the
-/// checks every step must pass.
-pub(crate) struct Progress<T> {
-    pub(crate) t: T,
-    pub(crate) t_end: T,
-    pub(crate) h: T,
-    pub(crate) steps: usize,
-    pub(crate) rejected: usize,
-    h_min: T,
-    h_max: T,
-    max_steps: usize,
-}
+#[cfg(test)]
+mod tests {
+    use super::*;
 
-impl<T: RealField + Copy> Progress<T> {
-    /// A run from `t0` to `t_end` with the limits of `options` and the first step `h`.
-    pub(crate) fn new(options: &AdaptiveOptions, t0: T, t_end: T, h: T) -> Self {
-        let h_max = if options.h_max.is_finite() {
-            lit(options.h_max)
-        } else {
-            t_end - t0
+    #[test]
+    fn controller_parameters_out_of_range_are_named() {
+        type Set = fn(&mut AdaptiveOptions, f64);
+        let cases: [(&str, Set, [f64; 3]); 4] = [
+            ("beta", |o, v| o.beta = v, [-0.01, 0.3, f64::NAN]),
+            ("safety", |o, v| o.safety = v, [0.0, 1.5, f64::NAN]),
+            ("fac_min", |o, v| o.fac_min = v, [0.0, 2.0, f64::NAN]),
+            ("fac_max", |o, v| o.fac_max = v, [0.5, -1.0, f64::NAN]),
+        ];
+        for (field, set, values) in cases {
+            for value in values {
+                let mut options = AdaptiveOptions::dop853(1e-6, 1e-6);
+                set(&mut options, value);
+                match options.validate() {
+                    Err(IntegrateError::InvalidController { name, .. }) => assert_eq!(name, field),
+                    other => panic!("{field} = {value}: {other:?}"),
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn hairers_defaults_and_the_range_ends_are_valid() {
+        for options in [
+            AdaptiveOptions::dopri5(1e-6, 0.0),
+            AdaptiveOptions::dop853(0.0, 1e-6),
+        ] {
+            assert_eq!(options.validate(), Ok(()));
+        }
+        let edges = AdaptiveOptions {
+            beta: 0.2,
+            safety: 1.0,
+            fac_min: 1.0,
+            fac_max: f64::INFINITY,
+            ..AdaptiveOptions::dopri5(1e-6, 1e-6)
         };
-        Self {
-            t: t0,
-            t_end,
-            h: h.min(h_max),
-            steps: 0,
-            rejected: 0,
-            h_min: lit(options.h_min),
-            h_max,
-            max_steps: options.max_steps,
-        }
+        assert_eq!(edges.validate(), Ok(()));
     }
-
-    /// The largest step allowed.
-    pub(crate) fn h_max(&self) -> T {
-        self.h_max
-    }
-
-    /// Checks the step budget and the step size, then shortens the step to land on `t_end`
-    /// when it would (nearly) reach it. Returns whether this is the last step.
-    pub(crate) fn next_step(&mut self) -> Result<bool, IntegrateError> {
-        if self.steps + self.rejected >= self.max_steps {
-            let (t, max_steps) = (to_f64(self.t), self.max_steps);
-            return Err(IntegrateError::MaxStepsExceeded { t, max_steps });
-        }
-        if self.h < self.h_min || self.t + self.h * lit(0.1) == self.t {
-            let (t, h, h_min) = (to_f64(self.t), to_f64(self.h), to_f64(self.h_min));
-            return Err(IntegrateError::StepSizeTooSmall { t, h, h_min });
-        }
-        let last = self.t + self.h * lit(1.01) >= self.t_end;
-        if last {
-            self.h = self.t_end - self.t;
-        }
-        Ok(last)
-    }
-
-    /// Applies the controller's verdict on the step just tried.
-    pub(crate) fn record(&mut self, verdict: Verdict<T>, last: bool) -> bool {
-        match verdict {
-            Verdict::Accept(h_new) => {
-                self.steps += 1;
-                self.t = if last { self.t_end } else { self.t + self.h };
-                self.h = h_new.min(self.h_max);
-                true
-            }
-            Verdict::Reject(h_new) => {
-                self.rejected += 1;
-                self.h = h_new;
-                false
-            }
-        }
-    }
-}
-
-/// What an adaptive run knows before its first step.
-pub(crate) struct Start<T: RealField + Copy, const N: usize> {
-    /// f(t0, y0), the first stage of the first step.
-    pub(crate) k1: SVector<T, N>,
-    /// The run's position, with the first step size.
-    pub(crate) progress: Progress<T>,
-    /// (rtol, atol) in the scalar type.
-    pub(crate) tols: (T, T),
-    /// The RHS evaluations spent so far (f0, and one more for the initial step heuristic).
-    pub(crate) rhs_evals: usize,
-}
-
-/// Checks the options, the interval and the initial state, evaluates f(t0, y0) and chooses
-/// the first step (given, or by Hairer's heuristic for a method of order `order`). `None`
-/// when there is nothing to integrate (`t_end = t0`).
-pub(crate) fn start<T, const N: usize, S>(
-    options: &AdaptiveOptions,
-    system: &S,
-    (t0, y0, t_end): (T, &SVector<T, N>, T),
-    order: i32,
-) -> Result<Option<Start<T, N>>, IntegrateError>
-where
-    T: RealField + Copy,
-    S: OdeSystem<T, N> + ?Sized,
-{
-    options.validate()?;
-    check_interval(t0, t_end)?;
-    check_finite(y0, t0)?;
-    if t_end == t0 {
-        return Ok(None);
-    }
-    let tols = (lit::<T>(options.rtol), lit::<T>(options.atol));
-    let mut k1 = SVector::zeros();
-    system.rhs(t0, y0, &mut k1);
-    let mut progress = Progress::new(options, t0, t_end, t_end - t0);
-    let (h, rhs_evals) = match options.h0 {
-        Some(h0) => (lit::<T>(h0).min(progress.h_max()), 1),
-        None => (
-            initial_step(system, (t0, y0, &k1), order, tols, progress.h_max()),
-            2,
-        ),
-    };
-    progress.h = h;
-    Ok(Some(Start {
-        k1,
-        progress,
-        tols,
-        rhs_evals,
-    }))
 }

@@ -10,17 +10,16 @@
 //! more stages per accepted step, only when asked for) is in [`Dop853::solve_at`].
 //!
 //! The coefficients are Hairer's published constants; the tests check the tableau's row sums
-//! and order conditions and the method's order of convergence.
+//! and order conditions and the method's order of convergence. The stepping loop is the one
+//! every embedded pair shares (`adaptive.rs`); this file holds the tableau and the 8(5,3)
+//! estimate, `dop853_dense.rs` the dense output.
 
 use nalgebra::{RealField, SVector};
 
-use super::controller::{PiController, Start, start};
-use super::dop853_dense::{AcceptedStep, Dop853Interpolant, combine, interpolant};
-use super::dopri5::check_outputs;
-use super::lit;
-use super::{
-    AdaptiveOptions, IntegrateError, Integrator, OdeSystem, Statistics, Stats, check_finite,
-};
+use super::adaptive::{self, AcceptedStep, EmbeddedPair, combine};
+use super::controller::{in_units_of, weight};
+use super::dop853_dense::interpolant;
+use super::{AdaptiveOptions, IntegrateError, Integrator, OdeSystem, Statistics, Stats, lit};
 
 /// The rows aᵢⱼ of stages 2–12 (Hairer's `dop853.f`).
 const A: [&[f64]; 11] = [
@@ -159,52 +158,6 @@ pub struct Dop853 {
     stats: Stats,
 }
 
-/// The candidate state of one trial step and its scaled error (the stages stay in the
-/// caller's buffer).
-struct Trial<T: RealField + Copy, const N: usize> {
-    y_new: SVector<T, N>,
-    err: T,
-}
-
-/// Evaluates stages 2–12 of a step of size `h` from `(t, y)` into `k` (whose first entry is the
-/// first stage, f(t, y)), and the 8(5,3) error estimate in the norm of `tols = (rtol, atol)`.
-fn trial<T, const N: usize, S>(
-    system: &S,
-    (t, h): (T, T),
-    y: &SVector<T, N>,
-    tols: (T, T),
-    k: &mut [SVector<T, N>; 12],
-) -> Trial<T, N>
-where
-    T: RealField + Copy,
-    S: OdeSystem<T, N> + ?Sized,
-{
-    for (s, row) in A.iter().enumerate() {
-        let ys = y + combine(row, &k[..]) * h;
-        system.rhs(t + h * lit(C[s + 1]), &ys, &mut k[s + 1]);
-    }
-    let increment = combine(&B, &k[..]);
-    let y_new = y + increment * h;
-    let e5 = combine(&ER, &k[..]);
-    let e3 =
-        increment - (k[0] * lit::<T>(BHH[0]) + k[8] * lit::<T>(BHH[1]) + k[11] * lit::<T>(BHH[2]));
-    let (rtol, atol) = tols;
-    let (mut sum5, mut sum3) = (T::zero(), T::zero());
-    for i in 0..N {
-        let scale = atol + rtol * y[i].abs().max(y_new[i].abs());
-        // Exact zeros count as zero where the scale is zero (atol = 0), instead of 0/0.
-        let ratio = |e: T| if e == T::zero() { e } else { e / scale };
-        sum5 += ratio(e5[i]) * ratio(e5[i]);
-        sum3 += ratio(e3[i]) * ratio(e3[i]);
-    }
-    let mut denominator = sum5 + lit::<T>(0.01) * sum3;
-    if denominator <= T::zero() {
-        denominator = T::one();
-    }
-    let err = h.abs() * sum5 / (denominator * lit::<T>(N as f64)).sqrt();
-    Trial { y_new, err }
-}
-
 impl Dop853 {
     /// A method with the given options (see [`AdaptiveOptions::dop853`] for Hairer's defaults).
     pub fn new(options: AdaptiveOptions) -> Self {
@@ -230,87 +183,56 @@ impl Dop853 {
         T: RealField + Copy,
         S: OdeSystem<T, N> + ?Sized,
     {
-        check_outputs(t0, times, out.len())?;
-        let Some(&t_end) = times.last() else {
-            return Ok(());
-        };
-        let mut next = times.iter().take_while(|&&t| t <= t0).count();
-        out[..next].fill(y0);
-        let mut extra = 0;
-        let y_end = self.run(system, t0, y0, t_end, |step| {
-            if next < times.len() && times[next] <= step.t_old + step.h {
-                let p: Dop853Interpolant<T, N> = interpolant(system, step);
-                extra += 3;
-                while next < times.len() && times[next] <= step.t_old + step.h {
-                    out[next] = p.eval(times[next]);
-                    next += 1;
-                }
-            }
-        })?;
-        self.stats.rhs_evals += extra;
-        // Times equal to t_end that rounding kept out of the last step get the end state.
-        out[next..].fill(y_end);
-        Ok(())
+        let run_state = (&self.options, &mut self.stats);
+        adaptive::solve_at::<Self, 12, T, N>(run_state, system, (t0, y0), times, out)
+    }
+}
+
+impl EmbeddedPair<12> for Dop853 {
+    const ORDER: i32 = 8;
+    const ALPHA: (f64, f64) = (0.125, 0.2);
+    const C: [f64; 12] = C;
+    const A: &'static [&'static [f64]] = &A;
+    const B: [f64; 12] = B;
+    const FSAL: bool = false;
+    const DENSE_RHS: usize = 3;
+
+    /// Hairer's 8(5,3) estimate: `|h| · e₅ / √(N · (e₅² + 0.01 e₃²))` in the weighted RMS norm.
+    fn error<T: RealField + Copy, const N: usize>(
+        k: &[SVector<T, N>; 12],
+        increment: &SVector<T, N>,
+        h: T,
+        (y, y_new): (&SVector<T, N>, &SVector<T, N>),
+        tols: (T, T),
+    ) -> T {
+        let e5 = combine(&ER, k);
+        let e3 = increment
+            - (k[0] * lit::<T>(BHH[0]) + k[8] * lit::<T>(BHH[1]) + k[11] * lit::<T>(BHH[2]));
+        let (mut sum5, mut sum3) = (T::zero(), T::zero());
+        for i in 0..N {
+            let w = weight(y[i], y_new[i], tols);
+            let (r5, r3) = (in_units_of(e5[i], w), in_units_of(e3[i], w));
+            sum5 += r5 * r5;
+            sum3 += r3 * r3;
+        }
+        let mut denominator = sum5 + lit::<T>(0.01) * sum3;
+        if denominator <= T::zero() {
+            denominator = T::one();
+        }
+        h.abs() * sum5 / (denominator * lit::<T>(N as f64)).sqrt()
     }
 
-    /// The stepping loop shared by [`Integrator::integrate_with`] and [`Dop853::solve_at`]:
-    /// `on_step` sees every accepted step with its thirteen stages.
-    fn run<T, const N: usize, S, F>(
-        &mut self,
-        system: &S,
-        t0: T,
-        y0: SVector<T, N>,
-        t_end: T,
-        mut on_step: F,
-    ) -> Result<SVector<T, N>, IntegrateError>
+    /// Hairer's seventh-order extension, three more stages (see [`interpolant`]).
+    fn dense_output<T, const N: usize, Sys>(
+        system: &Sys,
+        step: &AcceptedStep<'_, T, N, 12>,
+    ) -> impl Fn(T) -> SVector<T, N>
     where
         T: RealField + Copy,
-        S: OdeSystem<T, N> + ?Sized,
-        F: FnMut(&AcceptedStep<'_, T, N>),
+        Sys: OdeSystem<T, N> + ?Sized,
     {
-        self.stats = Stats::default();
-        let Some(start) = start(&self.options, system, (t0, &y0, t_end), 8)? else {
-            return Ok(y0);
-        };
-        let Start {
-            mut k1,
-            mut progress,
-            tols,
-            rhs_evals,
-        } = start;
-        self.stats.rhs_evals = rhs_evals;
-        let mut y = y0;
-        let mut controller = PiController::new(&self.options, (0.125, 0.2));
-        let mut k = [SVector::<T, N>::zeros(); 12];
-        loop {
-            let last = progress.next_step()?;
-            let (t, h) = (progress.t, progress.h);
-            k[0] = k1;
-            let step = trial(system, (t, h), &y, tols, &mut k);
-            self.stats.rhs_evals += 11;
-            if !step.err.is_finite() {
-                check_finite(&step.y_new, t + h)?;
-            }
-            let accepted = progress.record(controller.decide(step.err, h), last);
-            (self.stats.steps, self.stats.rejected) = (progress.steps, progress.rejected);
-            if accepted {
-                system.rhs(progress.t, &step.y_new, &mut k1);
-                self.stats.rhs_evals += 1;
-                let (y_old, y_new, k, k13) = (&y, &step.y_new, &k, &k1);
-                on_step(&AcceptedStep {
-                    t_old: t,
-                    h,
-                    y_old,
-                    y_new,
-                    k,
-                    k13,
-                });
-                y = step.y_new;
-                if last {
-                    return Ok(y);
-                }
-            }
-        }
+        let interpolant = interpolant(system, step);
+        move |t| interpolant.eval(t)
     }
 }
 
@@ -325,14 +247,13 @@ where
         t0: T,
         y0: SVector<T, N>,
         t_end: T,
-        mut observe: F,
+        observe: F,
     ) -> Result<SVector<T, N>, IntegrateError>
     where
         F: FnMut(T, &SVector<T, N>),
     {
-        self.run(system, t0, y0, t_end, |step| {
-            observe(step.t_old + step.h, step.y_new)
-        })
+        let run_state = (&self.options, &mut self.stats);
+        adaptive::integrate::<Self, 12, T, N>(run_state, system, (t0, y0, t_end), observe)
     }
 }
 

@@ -9,6 +9,7 @@
 
 use nalgebra::{RealField, SVector};
 
+use super::adaptive::{AcceptedStep, combine};
 use super::{OdeSystem, lit};
 
 /// The rows aᵢⱼ of the extra stages 14–16 over stages 1–15 (Hairer's `dop853.f`; stage 13
@@ -141,20 +142,6 @@ const D: [[f64; 16]; 4] = [
     ],
 ];
 
-/// Σ wⱼ kⱼ over the stages whose weight is non-zero.
-pub(crate) fn combine<T: RealField + Copy, const N: usize>(
-    w: &[f64],
-    k: &[SVector<T, N>],
-) -> SVector<T, N> {
-    let mut sum = SVector::<T, N>::zeros();
-    for (wj, kj) in w.iter().zip(k) {
-        if *wj != 0.0 {
-            sum.axpy(lit(*wj), kj, T::one());
-        }
-    }
-    sum
-}
-
 /// The continuous extension of one accepted DOP853 step, a polynomial of degree seven in θ.
 #[derive(Debug, Clone, Copy)]
 pub struct Dop853Interpolant<T: RealField + Copy, const N: usize> {
@@ -174,22 +161,10 @@ impl<T: RealField + Copy, const N: usize> Dop853Interpolant<T, N> {
     }
 }
 
-/// One accepted step as the dense output needs it: where it started, its size, the states at
-/// both ends, its twelve stages and the thirteenth, f(tₙ₊₁, yₙ₊₁) (borrowed, so that a run
-/// without dense output copies nothing).
-pub(crate) struct AcceptedStep<'a, T: RealField + Copy, const N: usize> {
-    pub(crate) t_old: T,
-    pub(crate) h: T,
-    pub(crate) y_old: &'a SVector<T, N>,
-    pub(crate) y_new: &'a SVector<T, N>,
-    pub(crate) k: &'a [SVector<T, N>; 12],
-    pub(crate) k13: &'a SVector<T, N>,
-}
-
 /// Builds the interpolant of an accepted step, evaluating stages 14–16 (three RHS calls).
 pub(crate) fn interpolant<T, const N: usize, S>(
     system: &S,
-    step: &AcceptedStep<'_, T, N>,
+    step: &AcceptedStep<'_, T, N, 12>,
 ) -> Dop853Interpolant<T, N>
 where
     T: RealField + Copy,
@@ -198,7 +173,7 @@ where
     let (t, h, y) = (step.t_old, step.h, step.y_old);
     let mut k = [SVector::<T, N>::zeros(); 16];
     k[..12].copy_from_slice(step.k);
-    k[12] = *step.k13;
+    k[12] = *step.k_new;
     for (s, row) in A_DENSE.iter().enumerate() {
         let ys = y + combine(row, &k) * h;
         system.rhs(t + h * lit(C_DENSE[s]), &ys, &mut k[13 + s]);
@@ -243,7 +218,7 @@ mod tests {
             y_old: &y_old,
             y_new: &y_new,
             k: &k,
-            k13: &k13,
+            k_new: &k13,
         };
         let p = interpolant(&decay, &step);
         // 1e-15: the construction gives r₁ at θ = 0 and r₁ + r₂ at θ = 1 up to rounding.

@@ -9,14 +9,15 @@
 //! - Dense output: Hairer's fourth-order continuous extension (the five coefficients of his
 //!   `CONTD5`), built from the stages already computed, so output at any time costs no RHS
 //!   evaluation; see [`Dopri5::solve_at`].
+//!
+//! The stepping loop is the one every embedded pair shares (`adaptive.rs`); this file holds
+//! the tableau, the error estimate and the dense output.
 
 use nalgebra::{RealField, SVector};
 
-use super::controller::{PiController, Start, scaled_rms, start};
-use super::{
-    AdaptiveOptions, IntegrateError, Integrator, OdeSystem, Statistics, Stats, check_finite,
-};
-use super::{lit, to_f64};
+use super::adaptive::{self, AcceptedStep, EmbeddedPair, combine};
+use super::controller::scaled_rms;
+use super::{AdaptiveOptions, IntegrateError, Integrator, OdeSystem, Statistics, Stats};
 
 /// The nodes cᵢ.
 const C: [f64; 7] = [0.0, 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0, 1.0, 1.0];
@@ -38,13 +39,14 @@ const A6: [f64; 5] = [
     49.0 / 176.0,
     -5103.0 / 18656.0,
 ];
-const B: [f64; 6] = [
+const B: [f64; 7] = [
     35.0 / 384.0,
     0.0,
     500.0 / 1113.0,
     125.0 / 192.0,
     -2187.0 / 6784.0,
     11.0 / 84.0,
+    0.0,
 ];
 
 /// The error weights eᵢ = bᵢ − b̂ᵢ (fifth minus fourth order), stage 2 has weight zero.
@@ -69,20 +71,6 @@ const D: [f64; 7] = [
     69997945.0 / 29380423.0,
 ];
 
-/// Σ wᵢ kᵢ over the stages whose weight is given.
-fn combine<T: RealField + Copy, const N: usize>(
-    w: &[f64],
-    k: &[SVector<T, N>; 7],
-) -> SVector<T, N> {
-    let mut sum = SVector::<T, N>::zeros();
-    for (wi, ki) in w.iter().zip(k) {
-        if *wi != 0.0 {
-            sum.axpy(lit(*wi), ki, T::one());
-        }
-    }
-    sum
-}
-
 /// The adaptive Dormand–Prince 5(4) method.
 ///
 /// ```
@@ -98,56 +86,6 @@ fn combine<T: RealField + Copy, const N: usize>(
 pub struct Dopri5 {
     options: AdaptiveOptions,
     stats: Stats,
-}
-
-/// The continuous extension over one accepted step from `t_old` to `t_old + h`: a polynomial
-/// of degree four in θ = (t − t_old)/h, y(θ) = r₁ + θ(r₂ + (1−θ)(r₃ + θ(r₄ + (1−θ) r₅))).
-#[derive(Debug, Clone, Copy)]
-pub struct Dopri5Interpolant<T: RealField + Copy, const N: usize> {
-    t_old: T,
-    h: T,
-    r: [SVector<T, N>; 5],
-}
-
-impl<T: RealField + Copy, const N: usize> Dopri5Interpolant<T, N> {
-    /// The interpolated state at `t` (meant for `t` within the step; outside it extrapolates).
-    pub fn eval(&self, t: T) -> SVector<T, N> {
-        let theta = (t - self.t_old) / self.h;
-        let theta1 = T::one() - theta;
-        let [r1, r2, r3, r4, r5] = &self.r;
-        r1 + (r2 + (r3 + (r4 + r5 * theta1) * theta) * theta1) * theta
-    }
-}
-
-/// One trial step: the stages, the candidate state and its error estimate.
-struct Trial<T: RealField + Copy, const N: usize> {
-    k: [SVector<T, N>; 7],
-    y_new: SVector<T, N>,
-    err: SVector<T, N>,
-}
-
-/// Evaluates stages 2–7 of a step of size `h` from `(t, y)` with first stage `k1`.
-fn trial<T, const N: usize, S>(
-    system: &S,
-    t: T,
-    h: T,
-    y: &SVector<T, N>,
-    k1: &SVector<T, N>,
-) -> Trial<T, N>
-where
-    T: RealField + Copy,
-    S: OdeSystem<T, N> + ?Sized,
-{
-    let mut k = [*k1; 7];
-    let rows: [&[f64]; 5] = [&A2, &A3, &A4, &A5, &A6];
-    for (s, row) in rows.iter().enumerate() {
-        let ys = y + combine(row, &k) * h;
-        system.rhs(t + h * lit(C[s + 1]), &ys, &mut k[s + 1]);
-    }
-    let y_new = y + combine(&B, &k) * h;
-    system.rhs(t + h, &y_new, &mut k[6]);
-    let err = combine(&E, &k) * h;
-    Trial { k, y_new, err }
 }
 
 impl Dopri5 {
@@ -174,118 +112,75 @@ impl Dopri5 {
         T: RealField + Copy,
         S: OdeSystem<T, N> + ?Sized,
     {
-        check_outputs(t0, times, out.len())?;
-        let Some(&t_end) = times.last() else {
-            return Ok(());
-        };
-        let mut next = 0;
-        while next < times.len() && times[next] <= t0 {
-            out[next] = y0;
-            next += 1;
-        }
-        let y_end = self.run(system, t0, y0, t_end, |t_old, h, y_old, trial| {
-            let interpolant = dense(t_old, h, y_old, trial);
-            while next < times.len() && times[next] <= t_old + h {
-                out[next] = interpolant.eval(times[next]);
-                next += 1;
-            }
-        })?;
-        // Times equal to t_end that rounding kept out of the last step get the end state.
-        for slot in &mut out[next..times.len()] {
-            *slot = y_end;
-        }
-        Ok(())
-    }
-
-    /// The stepping loop shared by [`Integrator::integrate_with`] and [`Dopri5::solve_at`]:
-    /// `on_step(t_old, h, y_old, trial)` is called after every accepted step.
-    fn run<T, const N: usize, S, F>(
-        &mut self,
-        system: &S,
-        t0: T,
-        y0: SVector<T, N>,
-        t_end: T,
-        mut on_step: F,
-    ) -> Result<SVector<T, N>, IntegrateError>
-    where
-        T: RealField + Copy,
-        S: OdeSystem<T, N> + ?Sized,
-        F: FnMut(T, T, &SVector<T, N>, &Trial<T, N>),
-    {
-        self.stats = Stats::default();
-        let Some(start) = start(&self.options, system, (t0, &y0, t_end), 5)? else {
-            return Ok(y0);
-        };
-        let Start {
-            mut k1,
-            mut progress,
-            tols,
-            rhs_evals,
-        } = start;
-        self.stats.rhs_evals = rhs_evals;
-        let mut y = y0;
-        let mut controller = PiController::new(&self.options, (0.2, 0.75));
-        loop {
-            let last = progress.next_step()?;
-            let (t, h) = (progress.t, progress.h);
-            let step = trial(system, t, h, &y, &k1);
-            self.stats.rhs_evals += 6;
-            let err = scaled_rms(&step.err, &y, &step.y_new, tols);
-            if !err.is_finite() {
-                check_finite(&step.y_new, t + h)?;
-            }
-            let verdict = controller.decide(err, h);
-            let accepted = progress.record(verdict, last);
-            (self.stats.steps, self.stats.rejected) = (progress.steps, progress.rejected);
-            if accepted {
-                on_step(t, h, &y, &step);
-                y = step.y_new;
-                k1 = step.k[6];
-                if last {
-                    return Ok(y);
-                }
-            }
-        }
+        let run_state = (&self.options, &mut self.stats);
+        adaptive::solve_at::<Self, 7, T, N>(run_state, system, (t0, y0), times, out)
     }
 }
 
-/// Checks that the output times are ascending, none before `t0`, and that `out` holds one
-/// state per time.
-pub(crate) fn check_outputs<T: RealField + Copy>(
-    t0: T,
-    times: &[T],
-    slots: usize,
-) -> Result<(), IntegrateError> {
-    if slots != times.len() {
-        return Err(IntegrateError::OutputLength {
-            times: times.len(),
-            slots,
-        });
+impl EmbeddedPair<7> for Dopri5 {
+    const ORDER: i32 = 5;
+    const ALPHA: (f64, f64) = (0.2, 0.75);
+    const C: [f64; 7] = C;
+    const A: &'static [&'static [f64]] = &[&A2, &A3, &A4, &A5, &A6];
+    const B: [f64; 7] = B;
+    const FSAL: bool = true;
+    const DENSE_RHS: usize = 0;
+
+    /// The weighted RMS norm of h Σ eᵢkᵢ.
+    fn error<T: RealField + Copy, const N: usize>(
+        k: &[SVector<T, N>; 7],
+        _increment: &SVector<T, N>,
+        h: T,
+        (y, y_new): (&SVector<T, N>, &SVector<T, N>),
+        tols: (T, T),
+    ) -> T {
+        scaled_rms(&(combine(&E, k) * h), y, y_new, tols)
     }
-    let mut previous = t0;
-    for &t in times {
-        if !t.is_finite() || t < previous {
-            let (t0, t_end) = (to_f64(previous), to_f64(t));
-            return Err(IntegrateError::InvalidInterval { t0, t_end });
-        }
-        previous = t;
+
+    /// Hairer's `CONTD5` extension, from the stages already computed.
+    fn dense_output<T, const N: usize, Sys>(
+        _system: &Sys,
+        step: &AcceptedStep<'_, T, N, 7>,
+    ) -> impl Fn(T) -> SVector<T, N>
+    where
+        T: RealField + Copy,
+        Sys: OdeSystem<T, N> + ?Sized,
+    {
+        let interpolant = dense(step);
+        move |t| interpolant.eval(t)
     }
-    Ok(())
+}
+
+/// The continuous extension over one accepted step from `t_old` to `t_old + h`: a polynomial
+/// of degree four in θ = (t − t_old)/h, y(θ) = r₁ + θ(r₂ + (1−θ)(r₃ + θ(r₄ + (1−θ) r₅))).
+#[derive(Debug, Clone, Copy)]
+pub struct Dopri5Interpolant<T: RealField + Copy, const N: usize> {
+    t_old: T,
+    h: T,
+    r: [SVector<T, N>; 5],
+}
+
+impl<T: RealField + Copy, const N: usize> Dopri5Interpolant<T, N> {
+    /// The interpolated state at `t` (meant for `t` within the step; outside it extrapolates).
+    pub fn eval(&self, t: T) -> SVector<T, N> {
+        let theta = (t - self.t_old) / self.h;
+        let theta1 = T::one() - theta;
+        let [r1, r2, r3, r4, r5] = &self.r;
+        r1 + (r2 + (r3 + (r4 + r5 * theta1) * theta) * theta1) * theta
+    }
 }
 
 /// The continuous extension of an accepted step (Hairer's `CONTD5` coefficients).
 fn dense<T: RealField + Copy, const N: usize>(
-    t_old: T,
-    h: T,
-    y_old: &SVector<T, N>,
-    trial: &Trial<T, N>,
+    step: &AcceptedStep<'_, T, N, 7>,
 ) -> Dopri5Interpolant<T, N> {
-    let r2 = trial.y_new - y_old;
-    let r3 = trial.k[0] * h - r2;
-    let r4 = r2 - trial.k[6] * h - r3;
-    let r5 = combine(&D, &trial.k) * h;
+    let (h, y_old, k) = (step.h, step.y_old, step.k);
+    let r2 = step.y_new - y_old;
+    let r3 = k[0] * h - r2;
+    let r4 = r2 - k[6] * h - r3;
+    let r5 = combine(&D, k) * h;
     Dopri5Interpolant {
-        t_old,
+        t_old: step.t_old,
         h,
         r: [*y_old, r2, r3, r4, r5],
     }
@@ -302,14 +197,13 @@ where
         t0: T,
         y0: SVector<T, N>,
         t_end: T,
-        mut observe: F,
+        observe: F,
     ) -> Result<SVector<T, N>, IntegrateError>
     where
         F: FnMut(T, &SVector<T, N>),
     {
-        self.run(system, t0, y0, t_end, |t, h, _, trial| {
-            observe(t + h, &trial.y_new)
-        })
+        let run_state = (&self.options, &mut self.stats);
+        adaptive::integrate::<Self, 7, T, N>(run_state, system, (t0, y0, t_end), observe)
     }
 }
 
@@ -348,9 +242,8 @@ mod tests {
 
     #[test]
     fn fifth_order_weights_satisfy_quadrature_and_tree_conditions() {
-        let b: Vec<f64> = B.iter().copied().chain([0.0]).collect();
         for k in 1..=5 {
-            let s: f64 = b.iter().zip(C).map(|(bi, ci)| bi * ci.powi(k - 1)).sum();
+            let s: f64 = B.iter().zip(C).map(|(bi, ci)| bi * ci.powi(k - 1)).sum();
             assert!((s - 1.0 / f64::from(k)).abs() < TOL, "Σ b c^{}", k - 1);
         }
         // Σᵢⱼ bᵢ aᵢⱼ cⱼ^k = 1/((k+1)(k+2)) for k = 0..3 (the trees of order up to 5 with a
@@ -360,7 +253,7 @@ mod tests {
             let mut s = 0.0;
             for (i, row) in a.iter().enumerate() {
                 for (j, aij) in row.iter().enumerate() {
-                    s += b[i] * aij * C[j].powi(k);
+                    s += B[i] * aij * C[j].powi(k);
                 }
             }
             let expected = 1.0 / f64::from((k + 1) * (k + 2));
@@ -371,9 +264,7 @@ mod tests {
     #[test]
     fn fourth_order_weights_satisfy_quadrature_conditions() {
         // b̂ = b − e (with b₇ = 0) integrates polynomials of degree ≤ 3 exactly.
-        let b_hat: Vec<f64> = (0..7)
-            .map(|i| B.get(i).copied().unwrap_or(0.0) - E[i])
-            .collect();
+        let b_hat: Vec<f64> = B.iter().zip(E).map(|(b, e)| b - e).collect();
         for k in 1..=4 {
             let s: f64 = b_hat
                 .iter()
@@ -393,9 +284,20 @@ mod tests {
         // construction; 1e-15 is a few ulps of values of order one).
         let decay = |_t: f64, y: &SVector<f64, 1>, dy: &mut SVector<f64, 1>| *dy = -*y;
         let y = SVector::<f64, 1>::new(1.0);
-        let trial = trial(&decay, 0.0, 0.1, &y, &(-y));
-        let p = dense(0.0, 0.1, &y, &trial);
+        let mut k = [-y; 7];
+        let (y_new, _) =
+            adaptive::trial::<Dopri5, 7, f64, 1, _>(&decay, (0.0, 0.1), &y, (1.0, 1.0), &mut k);
+        let (y_old, k, k_new) = (&y, &k, &k[6]);
+        let step = AcceptedStep {
+            t_old: 0.0,
+            h: 0.1,
+            y_old,
+            y_new: &y_new,
+            k,
+            k_new,
+        };
+        let p = dense(&step);
         assert!((p.eval(0.0)[0] - 1.0).abs() < 1e-15);
-        assert!((p.eval(0.1)[0] - trial.y_new[0]).abs() < 1e-15);
+        assert!((p.eval(0.1)[0] - y_new[0]).abs() < 1e-15);
     }
 }

@@ -24,6 +24,17 @@ pub enum IntegrateError {
         /// Its value.
         value: f64,
     },
+    /// A parameter of the step-size controller (`beta`, `safety`, `fac_min`, `fac_max`) is out
+    /// of its range.
+    #[error("step-size controller parameter {name} = {value} must lie in {range}")]
+    InvalidController {
+        /// The parameter, e.g. `"safety"`.
+        name: &'static str,
+        /// Its value.
+        value: f64,
+        /// The range it must lie in, e.g. `"(0, 1]"`.
+        range: &'static str,
+    },
     /// The integration interval is not finite or runs backwards.
     #[error("integration interval [{t0}, {t_end}] must be finite with t_end ≥ t0")]
     InvalidInterval {

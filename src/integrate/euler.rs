@@ -5,7 +5,7 @@
 
 use nalgebra::{RealField, SVector};
 
-use super::{IntegrateError, Integrator, OdeSystem, Statistics, Stats, run_fixed, uniform_steps};
+use super::{IntegrateError, Integrator, OdeSystem, Statistics, Stats, run_fixed};
 
 /// The explicit Euler method with a fixed step.
 #[derive(Debug, Clone)]
@@ -41,19 +41,13 @@ where
     where
         F: FnMut(T, &SVector<T, N>),
     {
-        let (n, h) = uniform_steps(self.h, t0, t_end)?;
-        self.stats = Stats {
-            steps: n,
-            rejected: 0,
-            rhs_evals: n,
-        };
         let mut dy = SVector::<T, N>::zeros();
         let step = |t: T, h: T, y: &mut SVector<T, N>| {
             system.rhs(t, y, &mut dy);
             y.axpy(h, &dy, T::one());
-            Ok(())
+            Ok(1)
         };
-        run_fixed(t0, y0, (n, h), step, observe)
+        run_fixed(self.h, &mut self.stats, (t0, y0, t_end), step, observe)
     }
 }
 

@@ -29,7 +29,7 @@
 
 use nalgebra::{Matrix3, Quaternion, RealField, SVector, Vector3};
 
-use super::{IntegrateError, Integrator, Statistics, Stats, lit, run_fixed, to_f64, uniform_steps};
+use super::{IntegrateError, Integrator, Statistics, Stats, lit, run_fixed, to_f64};
 
 /// A rigid body whose rotation the [`LieMidpoint`] method can integrate. The state is
 /// `[p, q, r, q0, q1, q2, q3]`: body angular velocity (4.1) and the scalar-first unit
@@ -71,14 +71,33 @@ fn cayley<T: RealField + Copy>(omega: &Vector3<T>, h: T) -> Quaternion<T> {
     Quaternion::new(scale, v.x * scale, v.y * scale, v.z * scale)
 }
 
-/// The constant parts of a run: the inverse inertia and the iteration limit.
+/// The constant parts of a run: the inertia, its inverse and the iteration limit.
 struct Body<'a, T: RealField + Copy, S: ?Sized> {
     system: &'a S,
+    inertia: Matrix3<T>,
     inverse: Matrix3<T>,
     max_iterations: usize,
 }
 
-impl<T: RealField + Copy, S: RigidRotation<T> + ?Sized> Body<'_, T, S> {
+impl<'a, T: RealField + Copy, S: RigidRotation<T> + ?Sized> Body<'a, T, S> {
+    /// The body of `system`, with its inverse inertia made exactly symmetric: the midpoint
+    /// rule conserves ½ H·\[I\]⁻¹H only for a symmetric \[I\]⁻¹, and a computed inverse is
+    /// symmetric only up to rounding.
+    fn new(system: &'a S, max_iterations: usize) -> Result<Self, IntegrateError> {
+        let inertia = system.inertia();
+        let inverse = inertia
+            .try_inverse()
+            .filter(|m| m.iter().all(|v| v.is_finite()));
+        let inverse = inverse.ok_or(IntegrateError::SingularInertia)?;
+        let inverse = (inverse + inverse.transpose()) * lit::<T>(0.5);
+        Ok(Self {
+            system,
+            inertia,
+            inverse,
+            max_iterations,
+        })
+    }
+
     /// Solves the midpoint equation of one step by fixed-point iteration and returns H_m, ω_m
     /// and the iterations spent.
     fn midpoint(
@@ -125,34 +144,19 @@ where
     where
         F: FnMut(T, &SVector<T, 7>),
     {
-        let (n, h) = uniform_steps(self.h, t0, t_end)?;
-        self.stats = Stats::default();
-        let inertia = system.inertia();
-        let inverse = inertia
-            .try_inverse()
-            .filter(|m| m.iter().all(|v| v.is_finite()));
-        let inverse = inverse.ok_or(IntegrateError::SingularInertia)?;
-        let inverse = (inverse + inverse.transpose()) * lit::<T>(0.5);
-        let body = Body {
-            system,
-            inverse,
-            max_iterations: self.max_iterations,
-        };
-        let mut momentum = inertia * y0.fixed_rows::<3>(0);
+        let body = Body::new(system, self.max_iterations)?;
+        let mut momentum = body.inertia * y0.fixed_rows::<3>(0);
         let mut q = Quaternion::new(y0[3], y0[4], y0[5], y0[6]);
-        let stats = &mut self.stats;
         let step = |t: T, h: T, y: &mut SVector<T, 7>| {
             let (h_m, iterations) = body.midpoint(t, h, &q, &momentum)?;
             let omega = body.inverse * h_m;
             momentum = h_m * lit::<T>(2.0) - momentum;
             q *= cayley(&omega, h);
-            stats.steps += 1;
-            stats.rhs_evals += iterations;
             let w = body.inverse * momentum;
             *y = SVector::<T, 7>::from([w.x, w.y, w.z, q.w, q.i, q.j, q.k]);
-            Ok(())
+            Ok(iterations)
         };
-        run_fixed(t0, y0, (n, h), step, observe)
+        run_fixed(self.h, &mut self.stats, (t0, y0, t_end), step, observe)
     }
 }
 

@@ -16,7 +16,12 @@
 //!   output;
 //! - [`LieMidpoint`]: a geometric integrator for rigid-body rotation (4.50 with the quaternion
 //!   attitude) that conserves energy and |H| to round-off and keeps the quaternion unit.
+//!
+//! Two drivers step them, so that what a run checks and counts is written once: `run_fixed`
+//! (below) cuts the interval into equal steps for the fixed-step methods, and `adaptive.rs`
+//! runs the embedded pairs Dopri5 and Dop853, which are their tableaux and error estimates.
 
+mod adaptive;
 mod controller;
 mod dop853;
 mod dop853_dense;
@@ -150,7 +155,7 @@ pub(crate) fn check_finite<T: RealField + Copy, const N: usize>(
 /// A fixed step `h` as it is used: the interval is cut into `n = ⌈(t_end − t0)/h⌉` equal steps
 /// (a relative slack of 1e-9 keeps `h` that divides the interval from gaining a sliver step),
 /// so the last step lands on `t_end` and the step used never exceeds `h`.
-pub(crate) fn uniform_steps<T: RealField + Copy>(
+fn uniform_steps<T: RealField + Copy>(
     h: f64,
     t0: T,
     t_end: T,
@@ -177,27 +182,59 @@ pub(crate) fn uniform_steps<T: RealField + Copy>(
     Ok((n, (t_end - t0) / lit::<T>(n as f64)))
 }
 
-/// Drives a fixed-step method: `n` uniform steps from `t0`, each made by `step(t, h, y)`,
-/// with a finiteness check and an observer call after each; a failed step ends the run.
-pub(crate) fn run_fixed<T, const N: usize, F, O>(
-    t0: T,
-    y0: SVector<T, N>,
-    (n, h): (usize, T),
-    mut step: F,
-    mut observe: O,
-) -> Result<SVector<T, N>, IntegrateError>
-where
-    T: RealField + Copy,
-    F: FnMut(T, T, &mut SVector<T, N>) -> Result<(), IntegrateError>,
-    O: FnMut(T, &SVector<T, N>),
-{
+/// Drives a fixed-step method from `t0` to `t_end` in the uniform steps of at most `h` that
+/// [`uniform_steps`] makes. Each step is made by `step(t, h, y)`, which returns the RHS
+/// evaluations it spent; after each come a finiteness check and an observer call, and a
+/// failed step ends the run. `stats` counts the run as it goes, so a failed run reports the
+/// steps it completed.
+pub(crate) fn run_fixed<T: RealField + Copy, const N: usize>(
+    h: f64,
+    stats: &mut Stats,
+    (t0, y0, t_end): (T, SVector<T, N>, T),
+    mut step: impl FnMut(T, T, &mut SVector<T, N>) -> Result<usize, IntegrateError>,
+    mut observe: impl FnMut(T, &SVector<T, N>),
+) -> Result<SVector<T, N>, IntegrateError> {
+    *stats = Stats::default();
+    let (n, h) = uniform_steps(h, t0, t_end)?;
     let mut y = y0;
     for k in 0..n {
         let t = t0 + h * lit::<T>(k as f64);
-        step(t, h, &mut y)?;
+        stats.rhs_evals += step(t, h, &mut y)?;
         let t_next = t0 + h * lit::<T>((k + 1) as f64);
         check_finite(&y, t_next)?;
+        stats.steps += 1;
         observe(t_next, &y);
     }
     Ok(y)
+}
+
+#[cfg(test)]
+mod tests {
+    use std::cell::Cell;
+
+    use nalgebra::Vector2;
+
+    use super::*;
+
+    #[test]
+    fn a_failed_fixed_step_run_counts_what_it_did() {
+        // ẏ₁ = y₁², y₁(0) = 1 blows up at t = 1; explicit Euler overflows some steps later.
+        // The statistics must agree with the steps observed and the RHS calls made (the
+        // failed step's call included), not claim the whole interval.
+        let calls = Cell::new(0usize);
+        let blow_up = |_t: f64, y: &Vector2<f64>, dy: &mut Vector2<f64>| {
+            calls.set(calls.get() + 1);
+            *dy = Vector2::new(0.0, y[1] * y[1]);
+        };
+        let mut observed = 0;
+        let mut euler = Euler::new(0.1);
+        let run = euler.integrate_with(&blow_up, 0.0, Vector2::new(0.0, 1.0), 100.0, |_, _| {
+            observed += 1
+        });
+        assert!(matches!(run, Err(IntegrateError::NonFiniteState { .. })));
+        let stats = euler.stats();
+        assert!(observed > 10 && observed < 100);
+        assert_eq!((stats.steps, stats.rhs_evals), (observed, observed + 1));
+        assert_eq!(calls.get(), stats.rhs_evals);
+    }
 }

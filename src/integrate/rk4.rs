@@ -6,9 +6,7 @@
 
 use nalgebra::{RealField, SVector};
 
-use super::{
-    IntegrateError, Integrator, OdeSystem, Statistics, Stats, lit, run_fixed, uniform_steps,
-};
+use super::{IntegrateError, Integrator, OdeSystem, Statistics, Stats, lit, run_fixed};
 
 /// The classical fourth-order Runge–Kutta method with a fixed step.
 #[derive(Debug, Clone)]
@@ -65,17 +63,11 @@ where
     where
         F: FnMut(T, &SVector<T, N>),
     {
-        let (n, h) = uniform_steps(self.h, t0, t_end)?;
-        self.stats = Stats {
-            steps: n,
-            rejected: 0,
-            rhs_evals: 4 * n,
-        };
         let step = |t: T, h: T, y: &mut SVector<T, N>| {
             rk4_step(system, t, h, y);
-            Ok(())
+            Ok(4)
         };
-        run_fixed(t0, y0, (n, h), step, observe)
+        run_fixed(self.h, &mut self.stats, (t0, y0, t_end), step, observe)
     }
 }
 

@@ -12,7 +12,7 @@ use std::ops::Range;
 
 use nalgebra::{RealField, SVector};
 
-use super::{IntegrateError, Integrator, OdeSystem, Statistics, Stats, run_fixed, uniform_steps};
+use super::{IntegrateError, Integrator, OdeSystem, Statistics, Stats, run_fixed};
 
 /// The semi-implicit Euler method with a fixed step and a range of "kick" components.
 #[derive(Debug, Clone)]
@@ -51,12 +51,6 @@ where
     where
         F: FnMut(T, &SVector<T, N>),
     {
-        let (n, h) = uniform_steps(self.h, t0, t_end)?;
-        self.stats = Stats {
-            steps: n,
-            rejected: 0,
-            rhs_evals: 2 * n,
-        };
         let kick = self.kick.start.min(N)..self.kick.end.min(N);
         let mut dy = SVector::<T, N>::zeros();
         let step = |t: T, h: T, y: &mut SVector<T, N>| {
@@ -68,9 +62,9 @@ where
             for i in (0..N).filter(|i| !kick.contains(i)) {
                 y[i] += h * dy[i];
             }
-            Ok(())
+            Ok(2)
         };
-        run_fixed(t0, y0, (n, h), step, observe)
+        run_fixed(self.h, &mut self.stats, (t0, y0, t_end), step, observe)
     }
 }
 
