@@ -227,6 +227,7 @@ class Counter:
     """
 
     add: int = 0
+    negations: int = 0  # how many of `add` are negations
     mul: int = 0
     div: int = 0
     sqrt: int = 0
@@ -244,6 +245,7 @@ class Counter:
             self.add += len(terms) - 1
             if all(self.negative(t) for t in terms):
                 self.add += 1
+                self.negations += 1
             for t in terms:
                 self.expression(t, in_add=True)
         elif isinstance(e, sp.Mul):
@@ -279,6 +281,7 @@ class Counter:
             numerator_count = len(numerator)
             if coefficient == -1 and not in_add:
                 self.add += 1
+                self.negations += 1
         self.mul += max(numerator_count - 1, 0)
         if denominator:
             self.mul += len(denominator) - 1
@@ -486,6 +489,35 @@ def table() -> str:
     return "\n".join(lines)
 
 
+def eom_negations(variant: str) -> tuple[int, int] | None:
+    """eom's negations: sums whose first term is negative, each one addition in its count;
+    and how many of them have a positive term that could have led instead."""
+    path = GOLDEN / f"{variant}.rs"
+    if not path.exists():
+        return None
+    sums = re.findall(r"^\s+let \w+ = (-[^;]*);", path.read_text(), flags=re.M)
+    return len(sums), sum(1 for s in sums if "+" in s)
+
+
+def negation_table() -> str:
+    lines = [
+        "| variant | eom negations (avoidable by reordering) | SymPy built | SymPy hoisted "
+        "| unit-q built | unit-q hoisted |",
+        "|---|---:|---:|---:|---:|---:|",
+    ]
+    for symmetry, kinematics in variants():
+        variant = f"spatial_{symmetry}_{kinematics}"
+        eom = eom_negations(variant)
+        eom_cell = "?" if eom is None else f"{eom[0]} ({eom[1]})"
+        cells = [str(counts(symmetry, kinematics, route, "normalised").negations) for route in ROUTES]
+        if kinematics == "quaternion":
+            cells += [str(counts(symmetry, kinematics, route, "unit").negations) for route in ROUTES]
+        else:
+            cells += ["-", "-"]
+        lines.append("| " + " | ".join([variant, eom_cell, *cells]) + " |")
+    return "\n".join(lines)
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--emit", action="store_true", help="rewrite c/<variant>.c")
@@ -493,6 +525,8 @@ def main(argv=None) -> int:
 
     print(f"SymPy {sp.__version__}, Python {sys.version.split()[0]}\n")
     print(table())
+    print("\nNegations, each counted as one addition above:\n")
+    print(negation_table())
     if args.emit:
         (HERE / "c").mkdir(exist_ok=True)
         for symmetry, kinematics in variants():
