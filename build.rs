@@ -6,9 +6,12 @@
 fn main() {
     println!("cargo::rerun-if-changed=build.rs");
     if let Err(error) = eom_codegen::check::check_all() {
-        fail(&format!("an equation of motion failed its proof:\n  {error}"));
+        fail(&format!(
+            "an equation of motion failed its proof:\n  {error}"
+        ));
     }
-    let out_dir = std::path::PathBuf::from(std::env::var_os("OUT_DIR").expect("cargo sets OUT_DIR"));
+    let out_dir =
+        std::path::PathBuf::from(std::env::var_os("OUT_DIR").expect("cargo sets OUT_DIR"));
     let models = eom_codegen::model::Model::all();
     if let Err(error) = eom_codegen::emit::emit_with_catalog(&out_dir, &models) {
         fail(&format!("a model could not be emitted:\n  {error}"));

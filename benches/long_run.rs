@@ -51,16 +51,22 @@ impl Drift {
 /// translation (u = v = w = 0, x = y = z = 0), which no load changes.
 fn spatial_state(y: &SVector<f64, 7>) -> SVector<f64, 13> {
     let mut state = SVector::<f64, 13>::zeros();
-    state.fixed_rows_mut::<3>(3).copy_from(&y.fixed_rows::<3>(0));
-    state.fixed_rows_mut::<4>(9).copy_from(&y.fixed_rows::<4>(3));
+    state
+        .fixed_rows_mut::<3>(3)
+        .copy_from(&y.fixed_rows::<3>(0));
+    state
+        .fixed_rows_mut::<4>(9)
+        .copy_from(&y.fixed_rows::<4>(3));
     state
 }
 
 /// The racket's `[p, q, r, q0, q1, q2, q3]` of a spatial model's 13-state.
 fn racket_state(state: &SVector<f64, 13>) -> SVector<f64, 7> {
     let mut y = SVector::<f64, 7>::zeros();
-    y.fixed_rows_mut::<3>(0).copy_from(&state.fixed_rows::<3>(3));
-    y.fixed_rows_mut::<4>(3).copy_from(&state.fixed_rows::<4>(9));
+    y.fixed_rows_mut::<3>(0)
+        .copy_from(&state.fixed_rows::<3>(3));
+    y.fixed_rows_mut::<4>(3)
+        .copy_from(&state.fixed_rows::<4>(9));
     y
 }
 
@@ -80,12 +86,18 @@ fn long_run<const N: usize, S: ?Sized, I: Integrator<f64, N, S>>(
     let mut count = 0usize;
     let clock = Instant::now();
     let end = method
-        .integrate_with(system, 0.0, place(&racket.initial_state()), t_end, |_, y| {
-            count += 1;
-            if count % 100 == 0 {
-                drift.observe(racket, &start, &project(y));
-            }
-        })
+        .integrate_with(
+            system,
+            0.0,
+            place(&racket.initial_state()),
+            t_end,
+            |_, y| {
+                count += 1;
+                if count % 100 == 0 {
+                    drift.observe(racket, &start, &project(y));
+                }
+            },
+        )
         .expect("the long run completes");
     let seconds = clock.elapsed().as_secs_f64();
     drift.observe(racket, &start, &project(&end));

@@ -11,9 +11,9 @@
 mod common;
 
 use common::{
-    Symmetry, PendulumCase, Pitch, PlanarCase, Spatial, SpatialCase, at_g_scale, generated, generic,
-    inverse_scale, midship_scale, pendulum_case, pendulum_scale, planar_case, relative_gap,
-    space_fixed_scale, spatial_case, spatial_scale,
+    PendulumCase, Pitch, PlanarCase, Spatial, SpatialCase, Symmetry, at_g_scale, generated,
+    generic, inverse_scale, midship_scale, pendulum_case, pendulum_scale, planar_case,
+    relative_gap, space_fixed_scale, spatial_case, spatial_scale,
 };
 use eom::generic::{self, ModelError};
 use eom::models::{

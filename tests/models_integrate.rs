@@ -121,7 +121,9 @@ fn a_load_closure_does_the_work_the_kinetic_energy_gains() {
     let loads = |t: f64, y: &[f64; 13]| [-0.4 * y[0], 1.0, 0.0, 0.2 * t.cos(), 0.0, -0.1];
     let power = |t: f64, y: &[f64; 13]| {
         let l = loads(t, y);
-        (0..3).map(|i| l[i] * y[i] + l[3 + i] * y[3 + i]).sum::<f64>()
+        (0..3)
+            .map(|i| l[i] * y[i] + l[3 + i] * y[3 + i])
+            .sum::<f64>()
     };
     let start: [f64; 13] = spatial_start(Kinematics::Quaternion);
     let system = model.driven_by(loads);
@@ -137,7 +139,8 @@ fn a_load_closure_does_the_work_the_kinetic_energy_gains() {
         work += 0.5 * (p + p0) * (t - t0);
         (t0, p0) = (t, p);
     }
-    let gained = model.kinetic_energy(&states.last().unwrap().data.0[0]) - model.kinetic_energy(&start);
+    let gained =
+        model.kinetic_energy(&states.last().unwrap().data.0[0]) - model.kinetic_energy(&start);
     println!("gained {gained:.9}, work {work:.9}");
     // The trapezoidal rule on steps of 1e-3 errs by ~h²/12 · |P''| · T ≈ 3e-7 · |P''|, with
     // |P''| of order the power times the rates squared (~4): a few 1e-7 of the work (5e-8

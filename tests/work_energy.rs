@@ -10,7 +10,7 @@
 mod common;
 
 use common::{
-    Symmetry, Kinematics, PendulumCase, Pitch, PlanarCase, Spatial, SpatialCase, at_g_scale,
+    Kinematics, PendulumCase, Pitch, PlanarCase, Spatial, SpatialCase, Symmetry, at_g_scale,
     generated, inverse_scale, midship_scale, pendulum_case, pendulum_scale, planar_case,
     space_fixed_scale, spatial_case, spatial_scale,
 };

@@ -39,8 +39,8 @@ use eom::reference::torque_free::{EulerAngleBody, FullTensorBody};
 use eom::reference::{AxisymmetricTop, LargeSwing, PlanarTurn, ReferenceProblem, TennisRacket};
 use nalgebra::{Matrix3, Quaternion, RealField, SVector, UnitQuaternion, Vector3};
 
-use report::BASE;
 use eom::models::{Constant, Model};
+use report::BASE;
 use spatial::{
     MASS, TurnedAxes, euler_state, generic_euler, generic_quaternion, quaternion_state,
     rotation_of_euler, rotation_of_quaternion,

@@ -34,16 +34,22 @@ pub const MASS: f64 = 1.0;
 /// translation, from the reference problem's `[p, q, r, q0, q1, q2, q3]`.
 pub fn quaternion_state(y: &SVector<f64, 7>) -> SVector<f64, 13> {
     let mut state = SVector::<f64, 13>::zeros();
-    state.fixed_rows_mut::<3>(3).copy_from(&y.fixed_rows::<3>(0));
-    state.fixed_rows_mut::<4>(9).copy_from(&y.fixed_rows::<4>(3));
+    state
+        .fixed_rows_mut::<3>(3)
+        .copy_from(&y.fixed_rows::<3>(0));
+    state
+        .fixed_rows_mut::<4>(9)
+        .copy_from(&y.fixed_rows::<4>(3));
     state
 }
 
 /// The reference problem's `[p, q, r, q0, q1, q2, q3]` of a spatial quaternion state.
 pub fn rotation_of_quaternion(state: &SVector<f64, 13>) -> SVector<f64, 7> {
     let mut y = SVector::<f64, 7>::zeros();
-    y.fixed_rows_mut::<3>(0).copy_from(&state.fixed_rows::<3>(3));
-    y.fixed_rows_mut::<4>(3).copy_from(&state.fixed_rows::<4>(9));
+    y.fixed_rows_mut::<3>(0)
+        .copy_from(&state.fixed_rows::<3>(3));
+    y.fixed_rows_mut::<4>(3)
+        .copy_from(&state.fixed_rows::<4>(9));
     y
 }
 
@@ -51,16 +57,22 @@ pub fn rotation_of_quaternion(state: &SVector<f64, 13>) -> SVector<f64, 7> {
 /// from `[p, q, r, φ, θ, ψ]`.
 pub fn euler_state(y: &SVector<f64, 6>) -> SVector<f64, 12> {
     let mut state = SVector::<f64, 12>::zeros();
-    state.fixed_rows_mut::<3>(3).copy_from(&y.fixed_rows::<3>(0));
-    state.fixed_rows_mut::<3>(9).copy_from(&y.fixed_rows::<3>(3));
+    state
+        .fixed_rows_mut::<3>(3)
+        .copy_from(&y.fixed_rows::<3>(0));
+    state
+        .fixed_rows_mut::<3>(9)
+        .copy_from(&y.fixed_rows::<3>(3));
     state
 }
 
 /// `[p, q, r, φ, θ, ψ]` of a spatial Euler-angle state.
 pub fn rotation_of_euler(state: &SVector<f64, 12>) -> SVector<f64, 6> {
     let mut y = SVector::<f64, 6>::zeros();
-    y.fixed_rows_mut::<3>(0).copy_from(&state.fixed_rows::<3>(3));
-    y.fixed_rows_mut::<3>(3).copy_from(&state.fixed_rows::<3>(9));
+    y.fixed_rows_mut::<3>(0)
+        .copy_from(&state.fixed_rows::<3>(3));
+    y.fixed_rows_mut::<3>(3)
+        .copy_from(&state.fixed_rows::<3>(9));
     y
 }
 

@@ -357,7 +357,9 @@ fn generated_spatial(
     moment: &[f64; 3],
 ) -> Result<Vec<f64>> {
     let model = AnyModel::spatial(symmetry, kinematics, mass, tensor)?;
-    let input = [force[0], force[1], force[2], moment[0], moment[1], moment[2]];
+    let input = [
+        force[0], force[1], force[2], moment[0], moment[1], moment[2],
+    ];
     Ok(model.rhs(state, &input)?)
 }
 

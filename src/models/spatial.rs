@@ -1,8 +1,8 @@
 //! What the spatial models (4.49 with 4.51 and kinematics) check before they are built, and
 //! how a body's tensor fills an emitted `Parameters`.
 
-use super::generated;
 use super::Symmetry;
+use super::generated;
 use crate::InertiaTensor;
 use crate::generic::ModelError;
 use crate::validate::positive;

@@ -25,7 +25,6 @@ pub fn rigid_body_kinetic_energy() -> Result<Expr, SymbolicError> {
     Ok(&twice * &parse("1/2")?)
 }
 
-
 /// T = ½∫ v·v dm with v = v_G + ω × r (4.5, 4.30), against ½Mv_G² + ½ωᵀ[I]ω and ½ω·H (4.32).
 fn kinetic_energy() -> Result<Equation, SymbolicError> {
     let v_g = Vec3::symbols(["u", "v", "w"]);
@@ -74,9 +73,7 @@ fn pendulum_kinetic_energy() -> Result<Equation, SymbolicError> {
     Ok(Equation {
         number: "4.34",
         description: "pendulum: T = ½Mv_G² + ½I_Gθ̇² = ½I₀θ̇²",
-        components: vec![
-            Component::new("T", derived, "I0*theta_dot.powi(2)/2", &[]),
-        ],
+        components: vec![Component::new("T", derived, "I0*theta_dot.powi(2)/2", &[])],
     })
 }
 

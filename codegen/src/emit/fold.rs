@@ -37,7 +37,12 @@ pub fn verify(system: &System, program: &Program) -> Result<(), ModelError> {
             return Err(fail(format!("the emitted stage {name} differs"), &residual));
         }
     }
-    check_count(system, &program.rhs, system.stages.len(), system.outputs.len())?;
+    check_count(
+        system,
+        &program.rhs,
+        system.stages.len(),
+        system.outputs.len(),
+    )?;
     for ((state, output), named) in system
         .state
         .iter()

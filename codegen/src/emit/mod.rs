@@ -100,7 +100,11 @@ pub fn generate(model: Model) -> Result<Generated, EmitError> {
     Ok(Generated {
         model,
         name: system.name,
-        title: format!("{} (equations {}).", system.title, system.equations.join(", ")),
+        title: format!(
+            "{} (equations {}).",
+            system.title,
+            system.equations.join(", ")
+        ),
         state_len: system.state.len(),
         inputs_len: system.inputs.len(),
         parameters: system

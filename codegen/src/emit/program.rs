@@ -506,10 +506,8 @@ impl<'a> Builder<'a> {
         factored
             .iter()
             .map(|sum| {
-                let terms: Vec<(bool, Id)> = sum
-                    .iter()
-                    .map(|f| self.factored_term(f, &shared))
-                    .collect();
+                let terms: Vec<(bool, Id)> =
+                    sum.iter().map(|f| self.factored_term(f, &shared)).collect();
                 self.signed_sum(&terms)
             })
             .collect()
@@ -577,7 +575,11 @@ impl<'a> Builder<'a> {
     }
 
     /// coefficient × (± monomial ± …), as (sign, magnitude).
-    fn unsigned_term(&mut self, coefficient: Option<Id>, parts: &[(bool, Option<Id>)]) -> (bool, Id) {
+    fn unsigned_term(
+        &mut self,
+        coefficient: Option<Id>,
+        parts: &[(bool, Option<Id>)],
+    ) -> (bool, Id) {
         match (coefficient, parts) {
             (None, [(negative, Some(product))]) => (*negative, *product),
             (Some(k), [(negative, None)]) => (*negative, k),
@@ -585,7 +587,9 @@ impl<'a> Builder<'a> {
             (Some(k), _) => {
                 let inner: Vec<(bool, Id)> = parts
                     .iter()
-                    .map(|&(negative, product)| (negative, product.expect("factored terms have a monomial")))
+                    .map(|&(negative, product)| {
+                        (negative, product.expect("factored terms have a monomial"))
+                    })
                     .collect();
                 let (negative, sum) = self.sum_keeping_sign(&inner);
                 (negative, self.add(Node::Mul(k, sum)))

@@ -3,13 +3,13 @@
 use super::solve::{Solution, solve_linear};
 use super::system::{CoefficientName, Group, ModelError, Parameter, Stage, System};
 use super::{Kinematics, Strategy, Symmetry};
+use crate::derivation::energy::{pendulum_kinetic_energy_form, rigid_body_kinetic_energy};
 use crate::derivation::kinematics::{
     body_to_space, euler_rate_matrix, rotation_x, rotation_y, rotation_z,
 };
 use crate::derivation::quaternion::{
     Quaternion, body_to_space_half_angles, quaternion_of_euler_angles, quaternion_rates,
 };
-use crate::derivation::energy::{pendulum_kinetic_energy_form, rigid_body_kinetic_energy};
 use crate::derivation::{pendulum as pendulum_eq, planar, spatial as spatial_eq};
 use crate::symbolic::{Expr, SymbolicError, Vec3};
 
@@ -283,7 +283,6 @@ fn inertia_parameters(symmetry: Symmetry) -> Vec<Parameter> {
     parameters
 }
 
-
 /// The rotational part: stages and the three angular accelerations, by strategy.
 fn rotation(
     name: &str,
@@ -477,7 +476,8 @@ pub fn spatial(
     outputs.extend(kinematic_outputs);
     let mut all_state = vec!["u", "v", "w", "p", "q", "r", "x", "y", "z"];
     all_state.extend(state);
-    let zeros: Vec<(&str, Expr)> = symmetry.pruned()
+    let zeros: Vec<(&str, Expr)> = symmetry
+        .pruned()
         .iter()
         .map(|p| (*p, Expr::zero()))
         .collect();
@@ -565,7 +565,10 @@ fn inverse_names(
             names.push(CoefficientName {
                 value: value.clone(),
                 name: format!("{prefix}_{}{}", axes[i], axes[j]),
-                description: format!("The entry ([{matrix}]⁻¹)_{}{} (up to sign)", axes[i], axes[j]),
+                description: format!(
+                    "The entry ([{matrix}]⁻¹)_{}{} (up to sign)",
+                    axes[i], axes[j]
+                ),
             });
         }
     }

@@ -62,13 +62,13 @@ pub fn rhs<T: SimdRealField + Copy>(
     let [u, v, r, _, _, psi] = *state;
     let [f_x, f_y, m_z] = *input;
     let [(sin_psi, cos_psi)] = eom_kernel::sin_cos([psi]);
+    // 4.44: the track in space-fixed axes, and the heading
+    let x_rate = u * cos_psi - v * sin_psi;
+    let y_rate = u * sin_psi + v * cos_psi;
     // 4.43: surge, sway and yaw at G, body axes
     let u_rate = k.inv_mass * f_x + r * v;
     let v_rate = k.inv_mass * f_y - r * u;
     let r_rate = k.inv_izz * m_z;
-    // 4.44: the track in space-fixed axes, and the heading
-    let x_rate = u * cos_psi - v * sin_psi;
-    let y_rate = u * sin_psi + v * cos_psi;
     [u_rate, v_rate, r_rate, x_rate, y_rate, r]
 }
 /// The kinetic energy of the state (4.32), from the proved form. Cost per call: 2 add, 5 mul.

@@ -77,13 +77,13 @@ pub fn rhs<T: SimdRealField + Copy>(
     let [u, v, r, _, _, psi] = *state;
     let [f_x, f_y, m_z] = *input;
     let [(sin_psi, cos_psi)] = eom_kernel::sin_cos([psi]);
+    // 4.44: the track in space-fixed axes, and the heading
+    let x_rate = u * cos_psi - v * sin_psi;
+    let y_rate = u * sin_psi + v * cos_psi;
     // 4.46: surge, sway and yaw at midship, body axes
     let u_rate = k.inv_mass * f_x + r * v + k.x_g * (r * r);
     let v_rate = k.inv_mass_matrix_vv * f_y - k.inv_mass_matrix_vr * m_z - r * u;
     let r_rate = k.inv_izz * m_z - k.inv_mass_matrix_vr * f_y;
-    // 4.44: the track in space-fixed axes, and the heading
-    let x_rate = u * cos_psi - v * sin_psi;
-    let y_rate = u * sin_psi + v * cos_psi;
     [u_rate, v_rate, r_rate, x_rate, y_rate, r]
 }
 /// The kinetic energy of the state (4.32), from the proved form. Cost per call: 3 add, 7 mul.

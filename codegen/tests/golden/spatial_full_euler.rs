@@ -137,6 +137,19 @@ pub fn rhs<T: SimdRealField + Copy>(
         theta,
         psi,
     ]);
+    // 4.57: the position rates in space axes, E·v one rotation at a time
+    let rolled_z = v * sin_phi + w * cos_phi;
+    let pitched_x = rolled_z * sin_theta + u * cos_theta;
+    let rolled_y = v * cos_phi - w * sin_phi;
+    let x_rate = pitched_x * cos_psi - rolled_y * sin_psi;
+    let y_rate = pitched_x * sin_psi + rolled_y * cos_psi;
+    let pitched_z = rolled_z * cos_theta - u * sin_theta;
+    // 4.60: the Euler-angle rates
+    let omega3_z = q * sin_phi + r * cos_phi;
+    let sec_theta = cos_theta.simd_recip();
+    let heading_rate = omega3_z * sec_theta;
+    let phi_rate = heading_rate * sin_theta + p;
+    let omega3_y = q * cos_phi - r * sin_phi;
     // 4.49: translation about G, body axes
     let u_rate = k.inv_mass * f_x - q * w + r * v;
     let v_rate = k.inv_mass * f_y + p * w - r * u;
@@ -154,19 +167,6 @@ pub fn rhs<T: SimdRealField + Copy>(
         + k.inv_inertia_yz * b_z;
     let r_rate = k.inv_inertia_yz * b_y - k.inv_inertia_xz * b_x
         - k.inv_inertia_zz * b_z;
-    // 4.57: the position rates in space axes, E·v one rotation at a time
-    let rolled_z = v * sin_phi + w * cos_phi;
-    let pitched_x = rolled_z * sin_theta + u * cos_theta;
-    let rolled_y = v * cos_phi - w * sin_phi;
-    let x_rate = pitched_x * cos_psi - rolled_y * sin_psi;
-    let y_rate = pitched_x * sin_psi + rolled_y * cos_psi;
-    let pitched_z = rolled_z * cos_theta - u * sin_theta;
-    // 4.60: the Euler-angle rates
-    let omega3_z = q * sin_phi + r * cos_phi;
-    let sec_theta = cos_theta.simd_recip();
-    let heading_rate = omega3_z * sec_theta;
-    let phi_rate = heading_rate * sin_theta + p;
-    let omega3_y = q * cos_phi - r * sin_phi;
     [
         u_rate,
         v_rate,

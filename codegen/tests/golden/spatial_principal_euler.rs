@@ -107,14 +107,6 @@ pub fn rhs<T: SimdRealField + Copy>(
         theta,
         psi,
     ]);
-    // 4.49: translation about G, body axes
-    let u_rate = k.inv_mass * f_x - q * w + r * v;
-    let v_rate = k.inv_mass * f_y + p * w - r * u;
-    let w_rate = k.inv_mass * f_z - p * v + q * u;
-    // 4.52: Euler's equations in principal axes
-    let p_rate = k.inv_ixx * m_x + k.p_dot_q_r * (q * r);
-    let q_rate = k.inv_iyy * m_y - k.q_dot_p_r * (p * r);
-    let r_rate = k.inv_izz * m_z + k.r_dot_p_q * (p * q);
     // 4.57: the position rates in space axes, E·v one rotation at a time
     let rolled_z = v * sin_phi + w * cos_phi;
     let pitched_x = rolled_z * sin_theta + u * cos_theta;
@@ -128,6 +120,14 @@ pub fn rhs<T: SimdRealField + Copy>(
     let heading_rate = omega3_z * sec_theta;
     let phi_rate = heading_rate * sin_theta + p;
     let omega3_y = q * cos_phi - r * sin_phi;
+    // 4.49: translation about G, body axes
+    let u_rate = k.inv_mass * f_x - q * w + r * v;
+    let v_rate = k.inv_mass * f_y + p * w - r * u;
+    let w_rate = k.inv_mass * f_z - p * v + q * u;
+    // 4.52: Euler's equations in principal axes
+    let p_rate = k.inv_ixx * m_x + k.p_dot_q_r * (q * r);
+    let q_rate = k.inv_iyy * m_y - k.q_dot_p_r * (p * r);
+    let r_rate = k.inv_izz * m_z + k.r_dot_p_q * (p * q);
     [
         u_rate,
         v_rate,

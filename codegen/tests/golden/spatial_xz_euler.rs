@@ -137,19 +137,6 @@ pub fn rhs<T: SimdRealField + Copy>(
         theta,
         psi,
     ]);
-    // 4.49: translation about G, body axes
-    let u_rate = k.inv_mass * f_x - q * w + r * v;
-    let v_rate = k.inv_mass * f_y + p * w - r * u;
-    let w_rate = k.inv_mass * f_z - p * v + q * u;
-    // 4.51 with I_xy = I_yz = 0: Euler's equations, xz-plane symmetry
-    let p_q = p * q;
-    let q_r = q * r;
-    let p_rate = k.inv_inertia_xx * m_x - k.inv_inertia_xz * m_z - k.p_dot_p_q * p_q
-        - k.p_dot_q_r * q_r;
-    let q_rate = k.inv_inertia_yy * m_y + k.q_dot_p_r * (p * r)
-        + k.q_dot_p_p * (p * p - r * r);
-    let r_rate = k.inv_inertia_zz * m_z - k.inv_inertia_xz * m_x - k.r_dot_p_q * p_q
-        + k.p_dot_p_q * q_r;
     // 4.57: the position rates in space axes, E·v one rotation at a time
     let rolled_z = v * sin_phi + w * cos_phi;
     let pitched_x = rolled_z * sin_theta + u * cos_theta;
@@ -163,6 +150,19 @@ pub fn rhs<T: SimdRealField + Copy>(
     let heading_rate = omega3_z * sec_theta;
     let phi_rate = heading_rate * sin_theta + p;
     let omega3_y = q * cos_phi - r * sin_phi;
+    // 4.49: translation about G, body axes
+    let u_rate = k.inv_mass * f_x - q * w + r * v;
+    let v_rate = k.inv_mass * f_y + p * w - r * u;
+    let w_rate = k.inv_mass * f_z - p * v + q * u;
+    // 4.51 with I_xy = I_yz = 0: Euler's equations, xz-plane symmetry
+    let p_q = p * q;
+    let q_r = q * r;
+    let p_rate = k.inv_inertia_xx * m_x - k.inv_inertia_xz * m_z - k.p_dot_p_q * p_q
+        - k.p_dot_q_r * q_r;
+    let q_rate = k.inv_inertia_yy * m_y + k.q_dot_p_r * (p * r)
+        + k.q_dot_p_p * (p * p - r * r);
+    let r_rate = k.inv_inertia_zz * m_z - k.inv_inertia_xz * m_x - k.r_dot_p_q * p_q
+        + k.p_dot_p_q * q_r;
     [
         u_rate,
         v_rate,
