@@ -35,8 +35,7 @@ mod symplectic_euler;
 
 pub use controller::AdaptiveOptions;
 pub use dop853::Dop853;
-pub use dop853_dense::Dop853Interpolant;
-pub use dopri5::{Dopri5, Dopri5Interpolant};
+pub use dopri5::Dopri5;
 pub use error::IntegrateError;
 pub use euler::Euler;
 pub use lie_midpoint::{LieMidpoint, RigidRotation};

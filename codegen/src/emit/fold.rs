@@ -14,17 +14,17 @@
 //! model's name and the output that differs (`tests/program_check.rs` tries every such mutant).
 
 use super::program::{Function, Node, Program};
-use crate::model::{ModelError, System};
+use crate::model::{BuildError, System};
 use crate::symbolic::{Expr, SymbolicError};
 
 /// Checks that `program` computes exactly the stages, outputs and kinetic energy of `system`.
-pub fn verify(system: &System, program: &Program) -> Result<(), ModelError> {
-    let fail = |what: String, residual: &Expr| ModelError::Verification {
+pub fn verify(system: &System, program: &Program) -> Result<(), BuildError> {
+    let fail = |what: String, residual: &Expr| BuildError::Verification {
         model: system.name.clone(),
         what,
         residual: residual.to_string(),
     };
-    let symbolic = |source: SymbolicError| ModelError::Symbolic {
+    let symbolic = |source: SymbolicError| BuildError::Symbolic {
         model: system.name.clone(),
         source,
     };
@@ -83,11 +83,11 @@ fn check_count(
     function: &Function,
     stages: usize,
     outputs: usize,
-) -> Result<(), ModelError> {
+) -> Result<(), BuildError> {
     if function.stages.len() == stages && function.outputs.len() == outputs {
         return Ok(());
     }
-    Err(ModelError::Verification {
+    Err(BuildError::Verification {
         model: system.name.clone(),
         what: format!(
             "the program has {} stages and {} outputs, the system {stages} and {outputs}",

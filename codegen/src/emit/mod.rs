@@ -14,7 +14,7 @@ mod rust;
 
 pub use program::{Operations, Program, identifier};
 
-use crate::model::{Model, ModelError, Strategy};
+use crate::model::{BuildError, Model, Strategy};
 use std::path::{Path, PathBuf};
 use thiserror::Error;
 
@@ -23,7 +23,7 @@ use thiserror::Error;
 pub enum EmitError {
     /// The model could not be built or did not verify.
     #[error(transparent)]
-    Model(#[from] ModelError),
+    Model(#[from] BuildError),
     /// The generated tokens did not parse as a Rust file (a bug in the emitter).
     #[error("generated code for {model} is not valid Rust: {source}")]
     Syntax {

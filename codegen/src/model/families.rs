@@ -1,7 +1,7 @@
 //! The builders: each family's system from the proved derivations.
 
 use super::solve::{Solution, solve_linear};
-use super::system::{CoefficientName, Group, ModelError, Parameter, Stage, System};
+use super::system::{BuildError, CoefficientName, Group, Parameter, Stage, System};
 use super::{Kinematics, Strategy, Symmetry};
 use crate::derivation::energy::{pendulum_kinetic_energy_form, rigid_body_kinetic_energy};
 use crate::derivation::kinematics::{
@@ -22,8 +22,8 @@ const IZZ: Parameter = Parameter {
     doc: "moment of inertia I_zz about G (4.13)",
 };
 
-fn symbolic(model: &str) -> impl Fn(SymbolicError) -> ModelError + '_ {
-    move |source| ModelError::Symbolic {
+fn symbolic(model: &str) -> impl Fn(SymbolicError) -> BuildError + '_ {
+    move |source| BuildError::Symbolic {
         model: model.into(),
         source,
     }
@@ -39,7 +39,7 @@ fn solved(solution: &Solution) -> Vec<Expr> {
 
 /// Checks that the staged program composes back to the proved outputs, for the listed
 /// output indices.
-fn verify_outputs(system: &System, expected: &[(usize, Expr)]) -> Result<(), ModelError> {
+fn verify_outputs(system: &System, expected: &[(usize, Expr)]) -> Result<(), BuildError> {
     for (index, wanted) in expected {
         let computed = system
             .expanded_output(*index)
@@ -47,7 +47,7 @@ fn verify_outputs(system: &System, expected: &[(usize, Expr)]) -> Result<(), Mod
         let residual = &computed - wanted;
         let state = system.state[*index];
         if !residual.is_zero() {
-            return Err(ModelError::Verification {
+            return Err(BuildError::Verification {
                 model: system.name.clone(),
                 what: format!("the staged rate of {state} differs from the proved form"),
                 residual: residual.to_string(),
@@ -58,7 +58,7 @@ fn verify_outputs(system: &System, expected: &[(usize, Expr)]) -> Result<(), Mod
 }
 
 /// Compound pendulum: 4.24 with an applied moment M_O about the pivot.
-pub fn pendulum() -> Result<System, ModelError> {
+pub fn pendulum() -> Result<System, BuildError> {
     let name = "pendulum";
     let residual = pendulum_eq::residual() - Expr::symbol("M_O");
     let solution = solve_linear(name, &[residual], &["theta_ddot"], "inv_det")?;
@@ -104,7 +104,7 @@ fn track() -> [Expr; 2] {
 }
 
 /// T = ½M(u_G² + v_G²) + ½I_zz r²: 4.32 in the plane, with the velocity of G given.
-fn planar_kinetic_energy(name: &str, u_g: Expr, v_g: Expr, r: Expr) -> Result<Expr, ModelError> {
+fn planar_kinetic_energy(name: &str, u_g: Expr, v_g: Expr, r: Expr) -> Result<Expr, BuildError> {
     let in_plane = [
         ("w", Expr::zero()),
         ("p", Expr::zero()),
@@ -129,7 +129,7 @@ struct BodyFixed<'a> {
     energy_formula: &'static str,
 }
 
-fn planar_body_fixed(model: BodyFixed, residuals: &[Expr; 3]) -> Result<System, ModelError> {
+fn planar_body_fixed(model: BodyFixed, residuals: &[Expr; 3]) -> Result<System, BuildError> {
     let BodyFixed {
         name,
         title,
@@ -170,7 +170,7 @@ fn planar_body_fixed(model: BodyFixed, residuals: &[Expr; 3]) -> Result<System, 
 }
 
 /// Planar, body-fixed axes at G: 4.43 with the track 4.44.
-pub fn planar_at_g() -> Result<System, ModelError> {
+pub fn planar_at_g() -> Result<System, BuildError> {
     let name = "planar_at_g";
     let residuals = planar::residuals_at_g().map_err(symbolic(name))?;
     let [u, v, r] = ["u", "v", "r"].map(Expr::symbol);
@@ -187,7 +187,7 @@ pub fn planar_at_g() -> Result<System, ModelError> {
 }
 
 /// Planar, body-fixed axes at midship with G at (x_G, 0, 0): 4.46 with 4.44.
-pub fn planar_midship() -> Result<System, ModelError> {
+pub fn planar_midship() -> Result<System, BuildError> {
     let name = "planar_midship";
     let at_g = planar::residuals_at_g().map_err(symbolic(name))?;
     let residuals = planar::residuals_at_midship(&at_g).map_err(symbolic(name))?;
@@ -211,7 +211,7 @@ pub fn planar_midship() -> Result<System, ModelError> {
 }
 
 /// Planar, space-fixed axes: 4.39.
-pub fn planar_space_fixed() -> Result<System, ModelError> {
+pub fn planar_space_fixed() -> Result<System, BuildError> {
     let name = "planar_space_fixed";
     let residuals = planar::space_fixed_residuals().map_err(symbolic(name))?;
     let solution = solve_linear(name, &residuals, &["X_ddot", "Y_ddot", "r_dot"], "inv_det")?;
@@ -288,7 +288,7 @@ fn rotation(
     name: &str,
     symmetry: Symmetry,
     strategy: Strategy,
-) -> Result<(Vec<Stage>, Vec<Expr>, Solution), ModelError> {
+) -> Result<(Vec<Stage>, Vec<Expr>, Solution), BuildError> {
     let err = symbolic(name);
     let products = symmetry.pruned();
     let lhs = spatial_eq::euler_equations().map_err(&err)?;
@@ -315,7 +315,7 @@ fn stage_all(names: &[&str], values: &[Expr]) -> (Vec<Stage>, Vec<Expr>) {
 }
 
 /// H = [I]ω, then ω × H − M: the structure of 4.50.
-fn momentum_stages(name: &str, products: &[&str]) -> Result<(Vec<Stage>, Vec<Expr>), ModelError> {
+fn momentum_stages(name: &str, products: &[&str]) -> Result<(Vec<Stage>, Vec<Expr>), BuildError> {
     let zeros: Vec<(&str, Expr)> = products.iter().map(|p| (*p, Expr::zero())).collect();
     let tensor = spatial_eq::inertia_tensor();
     let omega = Vec3::symbols(["p", "q", "r"]);
@@ -363,7 +363,7 @@ fn euler_kinematics() -> (Vec<Stage>, Vec<Expr>) {
     (stages, outputs)
 }
 
-fn euler_kinematics_expected(name: &str) -> Result<Vec<Expr>, ModelError> {
+fn euler_kinematics_expected(name: &str) -> Result<Vec<Expr>, BuildError> {
     let v = Vec3::symbols(["u", "v", "w"]);
     let mut expected = body_to_space().mul_vec(&v).0.to_vec();
     let inverse = euler_rate_matrix().inverse().map_err(symbolic(name))?;
@@ -374,7 +374,7 @@ fn euler_kinematics_expected(name: &str) -> Result<Vec<Expr>, ModelError> {
 /// Quaternion kinematics: v + 2(q₀t + q_v × t)/|q|² with t = q_v × v — the sandwich
 /// q ⊗ (0, v) ⊗ q* / |q|², exact for a quaternion of any length, so a drifting integrator does
 /// not scale the track — and q̇ = ½ q ⊗ (0, ω) with the half rates staged.
-fn quaternion_kinematics(name: &str) -> Result<(Vec<Stage>, Vec<Expr>), ModelError> {
+fn quaternion_kinematics(name: &str) -> Result<(Vec<Stage>, Vec<Expr>), BuildError> {
     let q_v = Vec3::symbols(["q1", "q2", "q3"]);
     let v = Vec3::symbols(["u", "v", "w"]);
     let (mut stages, t) = stage_all(&["t_x", "t_y", "t_z"], &q_v.cross(&v).0);
@@ -403,7 +403,7 @@ fn quaternion_kinematics(name: &str) -> Result<(Vec<Stage>, Vec<Expr>), ModelErr
 
 /// The quaternion position rate equals E·v for every unit quaternion: both sides are
 /// evaluated at q(φ, θ, ψ) in half angles, where |q| = 1 holds identically.
-fn verify_quaternion_position(system: &System) -> Result<(), ModelError> {
+fn verify_quaternion_position(system: &System) -> Result<(), BuildError> {
     let err = symbolic(&system.name);
     let q = quaternion_of_euler_angles();
     let at_euler: Vec<(&str, Expr)> = ["q0", "q1", "q2", "q3"].into_iter().zip(q.0).collect();
@@ -416,7 +416,7 @@ fn verify_quaternion_position(system: &System) -> Result<(), ModelError> {
     for i in 0..3 {
         let residual = &expanded[6 + i] - &e_v.0[i];
         if !residual.is_zero() {
-            return Err(ModelError::Verification {
+            return Err(BuildError::Verification {
                 model: system.name.clone(),
                 what: "the quaternion position rate differs from E·v".into(),
                 residual: residual.to_string(),
@@ -431,7 +431,7 @@ pub fn spatial(
     symmetry: Symmetry,
     kinematics: Kinematics,
     strategy: Strategy,
-) -> Result<System, ModelError> {
+) -> Result<System, BuildError> {
     let model = super::Model::Spatial {
         symmetry,
         kinematics,

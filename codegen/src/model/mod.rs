@@ -10,7 +10,7 @@ mod solve;
 mod system;
 
 pub use solve::{Solution, solve_linear};
-pub use system::{CoefficientName, Group, ModelError, Parameter, Reciprocal, Stage, System};
+pub use system::{BuildError, CoefficientName, Group, Parameter, Reciprocal, Stage, System};
 
 /// Which products of inertia the body has.
 ///
@@ -265,7 +265,7 @@ impl Model {
     }
 
     /// The system to emit, built with one strategy.
-    pub fn system(&self, strategy: Strategy) -> Result<System, ModelError> {
+    pub fn system(&self, strategy: Strategy) -> Result<System, BuildError> {
         match *self {
             Model::Pendulum => families::pendulum(),
             Model::PlanarAtG => families::planar_at_g(),

@@ -6,7 +6,7 @@
 //! its reciprocal becomes a parameter-level symbol computed once. The solution is checked by
 //! substituting it back: A·a + rest must vanish once that symbol is 1/det.
 
-use super::system::{ModelError, Reciprocal};
+use super::system::{BuildError, Reciprocal};
 use crate::symbolic::{Expr, adjugate, determinant};
 
 /// The solved accelerations `a = −A⁻¹ rest`, as the inverse entries and the rest terms, so
@@ -38,8 +38,8 @@ pub fn solve_linear(
     residuals: &[Expr],
     unknowns: &[&str],
     reciprocal_name: &str,
-) -> Result<Solution, ModelError> {
-    let symbolic = |source| ModelError::Symbolic {
+) -> Result<Solution, BuildError> {
+    let symbolic = |source| BuildError::Symbolic {
         model: model.into(),
         source,
     };
@@ -85,7 +85,7 @@ fn verify(
     matrix: &[Vec<Expr>],
     det: &Expr,
     solution: &Solution,
-) -> Result<(), ModelError> {
+) -> Result<(), BuildError> {
     let a = solution.accelerations(&solution.rest);
     for (row, rest) in matrix.iter().zip(&solution.rest) {
         let lhs: Expr = row.iter().zip(&a).map(|(m, x)| m * x).sum::<Expr>() + rest;
@@ -101,7 +101,7 @@ fn verify(
             }
         };
         if !residual.is_zero() {
-            return Err(ModelError::Verification {
+            return Err(BuildError::Verification {
                 model: model.into(),
                 what: "the solved accelerations do not satisfy the proved equations".into(),
                 residual: residual.to_string(),

@@ -6,7 +6,7 @@ use thiserror::Error;
 
 /// Why a model could not be built or verified.
 #[derive(Debug, Clone, PartialEq, Eq, Error)]
-pub enum ModelError {
+pub enum BuildError {
     /// The symbolic engine could not perform a step.
     #[error("model {model}: {source}")]
     Symbolic {
