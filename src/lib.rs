@@ -12,7 +12,7 @@
 //! | the generated models, one type per catalog entry | [`models`]: [`Model`], [`Loads`], [`Constant`], [`AnyModel`] |
 //! | the independent nalgebra forms they are checked against | [`generic`] |
 //! | integrators: one trait, tableaux over one adaptive driver | [`integrate`]: [`Integrator`], [`OdeSystem`], [`Dop853`], [`Dopri5`], [`Rk4`], … |
-//! | exact solutions and invariants for judging runs | [`reference`], [`energy`], [`elliptic`] |
+//! | exact solutions and invariants for judging runs | [`reference`](mod@reference), [`energy`], [`elliptic`] |
 //! | the swing test: radius of gyration from a pendulum's period | [`swing`] |
 //!
 //! A generated model under its loads is an ODE system, so integrating one takes no adapter:

@@ -16,7 +16,7 @@ pub(super) fn equations() -> Result<Vec<Equation>, SymbolicError> {
     ])
 }
 
-/// T = ½Mv_G·v_G + ½ω·([I]ω) in the symbols of the tensor the models use (`Ixx … Izz`, 4.12,
+/// T = ½Mv_G·v_G + ½ω·(\[I\]ω) in the symbols of the tensor the models use (`Ixx … Izz`, 4.12,
 /// symmetric): the form the generated models emit, proved equal to 4.32 below.
 pub fn rigid_body_kinetic_energy() -> Result<Expr, SymbolicError> {
     let v_g = Vec3::symbols(["u", "v", "w"]);

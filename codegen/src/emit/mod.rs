@@ -2,7 +2,7 @@
 //!
 //! For each model the emitter builds the system with every strategy the model allows, turns
 //! each into a straight-line program ([`program`]), keeps the cheapest by operation count,
-//! proves that it folds back to the system exactly ([`fold`]), and formats it ([`rust`]).
+//! proves that it folds back to the system exactly ([`fold`]), and formats it.
 //! The same model always gives the same bytes: nothing here iterates a hash map, reads the
 //! clock or the environment. [`write_if_changed`] leaves a file untouched when its bytes are
 //! already right, so Cargo does not rebuild for nothing.
@@ -156,7 +156,7 @@ pub fn emit_into(out_dir: &Path, models: &[Model]) -> Result<Vec<Generated>, Emi
 }
 
 /// Generates each model into `out_dir/<name>.rs` and the catalog of them all into
-/// `out_dir/catalog.rs` (the call `eom`'s own build script makes; see [`catalog`]).
+/// `out_dir/catalog.rs` (the call `eom`'s own build script makes).
 pub fn emit_with_catalog(out_dir: &Path, models: &[Model]) -> Result<Vec<Generated>, EmitError> {
     let generated = emit_into(out_dir, models)?;
     let source = catalog::source(&generated).map_err(|source| EmitError::Syntax {

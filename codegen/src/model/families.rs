@@ -566,7 +566,7 @@ fn inverse_names(
                 value: value.clone(),
                 name: format!("{prefix}_{}{}", axes[i], axes[j]),
                 description: format!(
-                    "The entry ([{matrix}]⁻¹)_{}{} (up to sign)",
+                    "The entry `([{matrix}]⁻¹)_{}{}` (up to sign)",
                     axes[i], axes[j]
                 ),
             });

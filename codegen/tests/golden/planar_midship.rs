@@ -18,9 +18,9 @@ pub struct Coefficients<T> {
     pub inv_mass: T,
     /// A parameter, or its reciprocal or half: `x_G`.
     pub x_g: T,
-    /// The entry ([M]⁻¹)_vv (up to sign): `Izz^-1*x_G^2 + M^-1`.
+    /// The entry `([M]⁻¹)_vv` (up to sign): `Izz^-1*x_G^2 + M^-1`.
     pub inv_mass_matrix_vv: T,
-    /// The entry ([M]⁻¹)_vr (up to sign): `Izz^-1*x_G`.
+    /// The entry `([M]⁻¹)_vr` (up to sign): `Izz^-1*x_G`.
     pub inv_mass_matrix_vr: T,
     /// A parameter, or its reciprocal or half: `Izz^-1`.
     pub inv_izz: T,

@@ -36,17 +36,17 @@ pub struct Coefficients<T> {
     pub izz: T,
     /// A parameter, or its reciprocal or half: `M^-1`.
     pub inv_mass: T,
-    /// The entry ([I]⁻¹)_xx (up to sign): `Iyy*Izz*inv_det - Iyz^2*inv_det`.
+    /// The entry `([I]⁻¹)_xx` (up to sign): `Iyy*Izz*inv_det - Iyz^2*inv_det`.
     pub inv_inertia_xx: T,
-    /// The entry ([I]⁻¹)_xy (up to sign): `Ixy*Izz*inv_det - Ixz*Iyz*inv_det`.
+    /// The entry `([I]⁻¹)_xy` (up to sign): `Ixy*Izz*inv_det - Ixz*Iyz*inv_det`.
     pub inv_inertia_xy: T,
-    /// The entry ([I]⁻¹)_xz (up to sign): `Ixy*Iyz*inv_det - Ixz*Iyy*inv_det`.
+    /// The entry `([I]⁻¹)_xz` (up to sign): `Ixy*Iyz*inv_det - Ixz*Iyy*inv_det`.
     pub inv_inertia_xz: T,
-    /// The entry ([I]⁻¹)_yy (up to sign): `Ixx*Izz*inv_det - Ixz^2*inv_det`.
+    /// The entry `([I]⁻¹)_yy` (up to sign): `Ixx*Izz*inv_det - Ixz^2*inv_det`.
     pub inv_inertia_yy: T,
-    /// The entry ([I]⁻¹)_yz (up to sign): `Ixx*Iyz*inv_det - Ixy*Ixz*inv_det`.
+    /// The entry `([I]⁻¹)_yz` (up to sign): `Ixx*Iyz*inv_det - Ixy*Ixz*inv_det`.
     pub inv_inertia_yz: T,
-    /// The entry ([I]⁻¹)_zz (up to sign): `Ixx*Iyy*inv_det - Ixy^2*inv_det`.
+    /// The entry `([I]⁻¹)_zz` (up to sign): `Ixx*Iyy*inv_det - Ixy^2*inv_det`.
     pub inv_inertia_zz: T,
     /// A parameter, or its reciprocal or half: `1/2*Ixx`.
     pub half_ixx: T,

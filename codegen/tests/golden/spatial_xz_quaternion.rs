@@ -20,21 +20,21 @@ pub struct Parameters {
 pub struct Coefficients<T> {
     /// A parameter, or its reciprocal or half: `M^-1`.
     pub inv_mass: T,
-    /// The entry ([I]⁻¹)_xx (up to sign): `Iyy*Izz*inv_det`.
+    /// The entry `([I]⁻¹)_xx` (up to sign): `Iyy*Izz*inv_det`.
     pub inv_inertia_xx: T,
-    /// The entry ([I]⁻¹)_xz (up to sign): `Ixz*Iyy*inv_det`.
+    /// The entry `([I]⁻¹)_xz` (up to sign): `Ixz*Iyy*inv_det`.
     pub inv_inertia_xz: T,
     /// The coefficient of p*q in dp/dt: `Ixx*Ixz*Iyy*inv_det + Ixz*Iyy*Izz*inv_det - Ixz*Iyy^2*inv_det`.
     pub p_dot_p_q: T,
     /// The coefficient of q*r in dp/dt: `Ixz^2*Iyy*inv_det + Iyy*Izz^2*inv_det - Iyy^2*Izz*inv_det`.
     pub p_dot_q_r: T,
-    /// The entry ([I]⁻¹)_yy (up to sign): `Ixx*Izz*inv_det - Ixz^2*inv_det`.
+    /// The entry `([I]⁻¹)_yy` (up to sign): `Ixx*Izz*inv_det - Ixz^2*inv_det`.
     pub inv_inertia_yy: T,
     /// The coefficient of p*r in dq/dt: `Ixx*Ixz^2*inv_det + Ixx*Izz^2*inv_det - Ixx^2*Izz*inv_det - Ixz^2*Izz*inv_det`.
     pub q_dot_p_r: T,
     /// The coefficient of p^2 in dq/dt: `Ixx*Ixz*Izz*inv_det - Ixz^3*inv_det`.
     pub q_dot_p_p: T,
-    /// The entry ([I]⁻¹)_zz (up to sign): `Ixx*Iyy*inv_det`.
+    /// The entry `([I]⁻¹)_zz` (up to sign): `Ixx*Iyy*inv_det`.
     pub inv_inertia_zz: T,
     /// The coefficient of p*q in dr/dt: `Ixx*Iyy^2*inv_det - Ixx^2*Iyy*inv_det - Ixz^2*Iyy*inv_det`.
     pub r_dot_p_q: T,
