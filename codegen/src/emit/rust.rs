@@ -292,7 +292,7 @@ fn emission_order<'a>(
         .groups
         .iter()
         .zip(ends)
-        .map(|(group, end)| (group.comment, group.first..end))
+        .map(|(group, end)| (group.comment.as_str(), group.first..end))
         .collect();
     let reads_trig = |range: &std::ops::Range<usize>| {
         function.outputs[range.clone()].iter().any(|named| {

@@ -88,7 +88,7 @@ pub fn pendulum() -> Result<System, BuildError> {
         outputs: vec![Expr::symbol("theta_dot"), solved(&solution)[0].clone()],
         groups: vec![Group {
             first: 0,
-            comment: "4.24: I₀θ̈ = −Mgh sin θ + M_O",
+            comment: "4.24: I₀θ̈ = −Mgh sin θ + M_O".into(),
         }],
         kinetic_energy: Some(pendulum_kinetic_energy_form().map_err(symbolic(name))?),
         energy_formula: Some("T = ½I₀θ̇² (4.34)"),
@@ -156,11 +156,11 @@ fn planar_body_fixed(model: BodyFixed, residuals: &[Expr; 3]) -> Result<System, 
         groups: vec![
             Group {
                 first: 0,
-                comment: dynamics,
+                comment: dynamics.into(),
             },
             Group {
                 first: 3,
-                comment: "4.44: the track in space-fixed axes, and the heading",
+                comment: "4.44: the track in space-fixed axes, and the heading".into(),
             },
         ],
         kinetic_energy: Some(kinetic_energy),
@@ -230,11 +230,11 @@ pub fn planar_space_fixed() -> Result<System, BuildError> {
         groups: vec![
             Group {
                 first: 0,
-                comment: "the position and the heading",
+                comment: "the position and the heading".into(),
             },
             Group {
                 first: 3,
-                comment: "4.39: Newton's and Euler's equations in space-fixed axes",
+                comment: "4.39: Newton's and Euler's equations in space-fixed axes".into(),
             },
         ],
         kinetic_energy: Some(planar_kinetic_energy(
@@ -261,25 +261,25 @@ fn inertia_parameters(symmetry: Symmetry) -> Vec<Parameter> {
         },
         IZZ,
     ];
-    let ixz = Parameter {
-        symbol: "Ixz",
-        doc: "product of inertia I_xz = −∫zx dm (4.14)",
-    };
-    match symmetry {
-        Symmetry::Full => parameters.extend([
-            Parameter {
-                symbol: "Ixy",
-                doc: "product of inertia I_xy = −∫xy dm (4.14)",
-            },
-            Parameter {
-                symbol: "Iyz",
-                doc: "product of inertia I_yz = −∫yz dm (4.14)",
-            },
-            ixz,
-        ]),
-        Symmetry::Xz => parameters.push(ixz),
-        Symmetry::Principal => {}
-    }
+    let products = [
+        Parameter {
+            symbol: "Ixy",
+            doc: "product of inertia I_xy = −∫xy dm (4.14)",
+        },
+        Parameter {
+            symbol: "Iyz",
+            doc: "product of inertia I_yz = −∫yz dm (4.14)",
+        },
+        Parameter {
+            symbol: "Ixz",
+            doc: "product of inertia I_xz = −∫zx dm (4.14)",
+        },
+    ];
+    parameters.extend(
+        products
+            .into_iter()
+            .filter(|p| !symmetry.pruned().contains(&p.symbol)),
+    );
     parameters
 }
 
@@ -496,11 +496,7 @@ pub fn spatial(
         outputs,
         groups: spatial_groups(symmetry, kinematics),
         kinetic_energy: Some(kinetic_energy),
-        energy_formula: Some(match symmetry {
-            Symmetry::Full => "T = ½M(u² + v² + w²) + ½ωᵀ[I]ω",
-            Symmetry::Xz => "T = ½M(u² + v² + w²) + ½ωᵀ[I]ω with I_xy = I_yz = 0",
-            Symmetry::Principal => "T = ½M(u² + v² + w²) + ½(I_xx p² + I_yy q² + I_zz r²)",
-        }),
+        energy_formula: Some("T = ½M(u² + v² + w²) + ½ωᵀ[I]ω"),
         coefficient_names: inverse_names(&rotation_solution, "inv_inertia", "I", &["x", "y", "z"]),
     };
     let mut checks: Vec<(usize, Expr)> = expected.into_iter().enumerate().collect();
@@ -514,10 +510,10 @@ pub fn spatial(
 }
 
 fn spatial_groups(symmetry: Symmetry, kinematics: Kinematics) -> Vec<Group> {
-    let rotation = match symmetry {
-        Symmetry::Full => "4.51: Euler's equations with all products of inertia",
-        Symmetry::Xz => "4.51 with I_xy = I_yz = 0: Euler's equations, xz-plane symmetry",
-        Symmetry::Principal => "4.52: Euler's equations in principal axes",
+    let rotation = match symmetry.pruned() {
+        [] => "4.51: Euler's equations with all products of inertia".to_owned(),
+        ["Ixy", "Iyz", "Ixz"] => "4.52: Euler's equations in principal axes".to_owned(),
+        pruned => format!("4.51 with {} = 0: Euler's equations", pruned.join(" = ")),
     };
     let (position, attitude) = match kinematics {
         Kinematics::Euler => (
@@ -532,7 +528,7 @@ fn spatial_groups(symmetry: Symmetry, kinematics: Kinematics) -> Vec<Group> {
     vec![
         Group {
             first: 0,
-            comment: "4.49: translation about G, body axes",
+            comment: "4.49: translation about G, body axes".into(),
         },
         Group {
             first: 3,
@@ -540,11 +536,11 @@ fn spatial_groups(symmetry: Symmetry, kinematics: Kinematics) -> Vec<Group> {
         },
         Group {
             first: 6,
-            comment: position,
+            comment: position.into(),
         },
         Group {
             first: 9,
-            comment: attitude,
+            comment: attitude.into(),
         },
     ]
 }

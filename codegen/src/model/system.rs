@@ -57,7 +57,7 @@ pub struct Group {
     /// The index of the first output of the run.
     pub first: usize,
     /// What the outputs are and the equation they come from: `4.49: translation, body axes`.
-    pub comment: &'static str,
+    pub comment: String,
 }
 
 /// The system `d(state)/dt = outputs(parameters, state, inputs)`.

@@ -154,7 +154,7 @@ pub fn kinetic_energy<T: SimdRealField + Copy>(
     state: &[T; 13],
 ) -> T {
     let [u, v, w, p, q, r, _, _, _, _, _, _, _] = *state;
-    // T = ½M(u² + v² + w²) + ½(I_xx p² + I_yy q² + I_zz r²) (4.32, with what the model's state and symmetry make zero left out)
+    // T = ½M(u² + v² + w²) + ½ωᵀ[I]ω (4.32, with what the model's state and symmetry make zero left out)
     k.half_ixx * (p * p) + k.half_iyy * (q * q) + k.half_izz * (r * r)
         + k.half_mass * (u * u + v * v + w * w)
 }

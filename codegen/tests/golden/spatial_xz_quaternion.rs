@@ -136,7 +136,7 @@ pub fn rhs<T: SimdRealField + Copy>(
     let u_rate = k.inv_mass * f_x - q * w + r * v;
     let v_rate = k.inv_mass * f_y + p * w - r * u;
     let w_rate = k.inv_mass * f_z - p * v + q * u;
-    // 4.51 with I_xy = I_yz = 0: Euler's equations, xz-plane symmetry
+    // 4.51 with Ixy = Iyz = 0: Euler's equations
     let p_q = p * q;
     let q_r = q * r;
     let p_rate = k.inv_inertia_xx * m_x - k.inv_inertia_xz * m_z - k.p_dot_p_q * p_q
@@ -189,7 +189,7 @@ pub fn kinetic_energy<T: SimdRealField + Copy>(
     state: &[T; 13],
 ) -> T {
     let [u, v, w, p, q, r, _, _, _, _, _, _, _] = *state;
-    // T = ½M(u² + v² + w²) + ½ωᵀ[I]ω with I_xy = I_yz = 0 (4.32, with what the model's state and symmetry make zero left out)
+    // T = ½M(u² + v² + w²) + ½ωᵀ[I]ω (4.32, with what the model's state and symmetry make zero left out)
     k.ixz * (p * r) + k.half_ixx * (p * p) + k.half_iyy * (q * q) + k.half_izz * (r * r)
         + k.half_mass * (u * u + v * v + w * w)
 }
