@@ -46,8 +46,12 @@ mod inertia;
 pub mod integrate;
 pub mod mass;
 pub mod models;
+#[cfg(feature = "cli")]
+pub mod output;
 mod pendulum;
 pub mod reference;
+pub mod run;
+pub mod scene;
 pub mod swing;
 mod validate;
 

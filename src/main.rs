@@ -9,8 +9,9 @@ use std::process::ExitCode;
 #[derive(Parser)]
 #[command(name = "eom", version, about)]
 struct Cli {
+    /// What to do; with none, run the default scene (the tennis-racket flip).
     #[command(subcommand)]
-    command: cli::Command,
+    command: Option<cli::Command>,
 }
 
 fn main() -> ExitCode {
@@ -18,7 +19,7 @@ fn main() -> ExitCode {
         Ok(()) => ExitCode::SUCCESS,
         Err(error) => {
             eprintln!("error: {error:#}");
-            ExitCode::FAILURE
+            ExitCode::from(cli::exit_code(&error))
         }
     }
 }

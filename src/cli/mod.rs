@@ -4,6 +4,8 @@ mod derive;
 mod eval;
 mod mass;
 mod models;
+mod plots;
+mod run;
 mod swing;
 mod values;
 
@@ -24,15 +26,47 @@ pub enum Command {
     Swing(swing::Args),
     /// Evaluate one model's right-hand side at a state read from JSON (generic nalgebra form).
     Eval(eval::Args),
+    /// Run a scene file: integrate it and write trajectory.csv, summary.json and SVG plots.
+    Run(run::Args),
 }
 
-/// Runs one subcommand.
-pub fn run(command: Command) -> anyhow::Result<()> {
+/// Runs one subcommand, or the default scene when there is none.
+pub fn run(command: Option<Command>) -> anyhow::Result<()> {
+    let Some(command) = command else {
+        return run::run_default();
+    };
     match command {
         Command::Derive(args) => derive::run(args),
         Command::Mass(args) => mass::run(args),
         Command::Models(args) => models::run(args),
         Command::Swing(args) => swing::run(args),
         Command::Eval(args) => eval::run(args),
+        Command::Run(args) => run::run_command(args),
     }
+}
+
+/// The exit code of a failed command, by what failed (README lists them): 3 the scene file
+/// (syntax, an unknown key, a wrong type, a missing key, a value out of range), 4 reading or
+/// writing files (an output folder that already holds a run included), 5 the run itself (a
+/// state that is not finite, a step below the minimum, too many steps), 1 anything else.
+/// clap's own usage errors exit with 2.
+pub fn exit_code(error: &anyhow::Error) -> u8 {
+    use eom::scene::{Problem, SceneError};
+    for cause in error.chain() {
+        if let Some(scene) = cause.downcast_ref::<SceneError>() {
+            return match scene.problem {
+                Problem::Read(_) => 4,
+                _ => 3,
+            };
+        }
+        if cause.downcast_ref::<run::OutputExists>().is_some()
+            || cause.downcast_ref::<std::io::Error>().is_some()
+        {
+            return 4;
+        }
+        if cause.downcast_ref::<eom::run::RunError>().is_some() {
+            return 5;
+        }
+    }
+    1
 }

@@ -113,13 +113,14 @@ where
 }
 
 /// Integrates from `(t0, y0)` to `t_end` with the pair `P`, calling `on_step` after every
-/// accepted step; `on_step` returns the RHS evaluations it made, which are counted too.
+/// accepted step; `on_step` returns the RHS evaluations it made, which are counted too, or
+/// `None` to stop the run there ([`IntegrateError::Stopped`]).
 /// `stats` holds the counts of the run so far, also when it fails.
 pub(crate) fn run<P, const S: usize, T, const N: usize>(
     (options, stats): (&AdaptiveOptions, &mut Stats),
     system: &(impl OdeSystem<T, N> + ?Sized),
     (t0, y0, t_end): (T, SVector<T, N>, T),
-    mut on_step: impl FnMut(&AcceptedStep<'_, T, N, S>) -> usize,
+    mut on_step: impl FnMut(&AcceptedStep<'_, T, N, S>) -> Option<usize>,
 ) -> Result<SVector<T, N>, IntegrateError>
 where
     P: EmbeddedPair<S>,
@@ -164,7 +165,10 @@ where
             k: &k,
             k_new: &k1,
         };
-        stats.rhs_evals += on_step(&step);
+        match on_step(&step) {
+            Some(evals) => stats.rhs_evals += evals,
+            None => return Err(IntegrateError::Stopped { t: to_f64(t + h) }),
+        }
         y = y_new;
         if last {
             return Ok(y);
@@ -206,7 +210,7 @@ where
 {
     run::<P, S, T, N>(run_state, system, interval, |step| {
         observe(step.t_old + step.h, step.y_new);
-        0
+        Some(0)
     })
 }
 
@@ -234,18 +238,67 @@ where
     let y_end = run::<P, S, T, N>(run_state, system, (t0, y0, t_end), |step| {
         let t_new = step.t_old + step.h;
         if next == times.len() || times[next] > t_new {
-            return 0;
+            return Some(0);
         }
         let state_at = P::dense_output(system, step);
         while next < times.len() && times[next] <= t_new {
             out[next] = state_at(times[next]);
             next += 1;
         }
-        P::DENSE_RHS
+        Some(P::DENSE_RHS)
     })?;
     // Times equal to t_end that rounding kept out of the last step get the end state.
     out[next..].fill(y_end);
     Ok(())
+}
+
+/// Integrates from `(t0, y0)` to `t_end` with the pair `P` and hands the state at every
+/// `t0 + k·every` (k = 0, 1, … while the time is at most `t_end`) to `emit`, by dense output,
+/// as the run goes: nothing is stored, so a run of any length streams. Each time is computed
+/// as `t0 + k·every`, not accumulated. `emit` returning `false` stops the run
+/// ([`IntegrateError::Stopped`]).
+pub(crate) fn sample<P, const S: usize, T, const N: usize>(
+    run_state: (&AdaptiveOptions, &mut Stats),
+    system: &(impl OdeSystem<T, N> + ?Sized),
+    (t0, y0, t_end): (T, SVector<T, N>, T),
+    every: T,
+    mut emit: impl FnMut(T, &SVector<T, N>) -> bool,
+) -> Result<SVector<T, N>, IntegrateError>
+where
+    P: EmbeddedPair<S>,
+    T: RealField + Copy,
+{
+    if !(every.is_finite() && every > T::zero()) {
+        return Err(IntegrateError::InvalidStep {
+            name: "every",
+            value: to_f64(every),
+        });
+    }
+    check_interval(t0, t_end)?;
+    let time = |k: usize| t0 + every * lit::<T>(k as f64);
+    if !emit(t0, &y0) {
+        return Err(IntegrateError::Stopped { t: to_f64(t0) });
+    }
+    let mut next = 1;
+    let y_end = run::<P, S, T, N>(run_state, system, (t0, y0, t_end), |step| {
+        let t_new = step.t_old + step.h;
+        if time(next) > t_new || time(next) > t_end {
+            return Some(0);
+        }
+        let state_at = P::dense_output(system, step);
+        while time(next) <= t_new && time(next) <= t_end {
+            if !emit(time(next), &state_at(time(next))) {
+                return None;
+            }
+            next += 1;
+        }
+        Some(P::DENSE_RHS)
+    })?;
+    // A sample time at t_end that rounding kept out of the last step gets the end state.
+    if time(next) <= t_end && !emit(time(next), &y_end) {
+        return Err(IntegrateError::Stopped { t: to_f64(t_end) });
+    }
+    Ok(y_end)
 }
 
 /// Checks that the output times are ascending, none before `t0`, and that `out` holds one

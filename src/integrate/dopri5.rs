@@ -115,6 +115,25 @@ impl Dopri5 {
         let run_state = (&self.options, &mut self.stats);
         adaptive::solve_at::<Self, 7, T, N>(run_state, system, (t0, y0), times, out)
     }
+
+    /// Integrates from `(t0, y0)` to `t_end` and hands the state at every `t0 + k·every`
+    /// (k = 0, 1, … up to `t_end`) to `emit` as the run goes, by dense output: the steps are
+    /// chosen by the tolerance alone, nothing is stored, and `emit` returning `false` stops
+    /// the run with [`IntegrateError::Stopped`]. Returns the state at `t_end`.
+    pub fn sample_every<T, const N: usize, S>(
+        &mut self,
+        system: &S,
+        (t0, y0, t_end): (T, SVector<T, N>, T),
+        every: T,
+        emit: impl FnMut(T, &SVector<T, N>) -> bool,
+    ) -> Result<SVector<T, N>, IntegrateError>
+    where
+        T: RealField + Copy,
+        S: OdeSystem<T, N> + ?Sized,
+    {
+        let run_state = (&self.options, &mut self.stats);
+        adaptive::sample::<Self, 7, T, N>(run_state, system, (t0, y0, t_end), every, emit)
+    }
 }
 
 impl EmbeddedPair<7> for Dopri5 {

@@ -78,6 +78,13 @@ pub enum IntegrateError {
         /// The number of output slots.
         slots: usize,
     },
+    /// The run's observer asked it to stop (an output could not be written, or the user
+    /// interrupted the run).
+    #[error("the run was stopped by its observer at t = {t}")]
+    Stopped {
+        /// The time reached.
+        t: f64,
+    },
     /// The inertia tensor given to a rotation integrator has no finite inverse.
     #[error("inertia tensor is singular: [I]⁻¹ (for ω = [I]⁻¹H) does not exist")]
     SingularInertia,

@@ -1,0 +1,58 @@
+//! The plots of a run: its kept columns handed to [`eom::output::plots`].
+
+use anyhow::{Context, Result};
+use eom::models::{Family, Kinematics};
+use eom::output::plots::{PlotInput, write_plots};
+use eom::output::trajectory::Columns;
+use eom::scene::{Scene, euler_angles};
+use std::path::{Path, PathBuf};
+
+/// Draws the state, the attitude, the track and the energy drift of a run into `out`.
+pub fn write(scene: &Scene, columns: &Columns, out: &Path) -> Result<Vec<PathBuf>> {
+    let names = scene.state_names();
+    let info = scene.selection.info;
+    let attitude = match (info.family, info.kinematics) {
+        (Family::Spatial, Some(kinematics)) => Some(attitude_deg(columns, kinematics)),
+        _ => None,
+    };
+    let track = match info.family {
+        Family::Pendulum => None,
+        Family::PlanarSpaceFixed => Some((0, 1)),
+        Family::PlanarAtG | Family::PlanarMidship => Some((3, 4)),
+        Family::Spatial => Some((6, 7)),
+    };
+    let drift: Option<Vec<f64>> = scene
+        .loads
+        .potential_energy(&scene.initial)
+        .and(columns.energy.first())
+        .filter(|e0| **e0 != 0.0)
+        .map(|&e0| columns.energy.iter().map(|e| (e - e0) / e0.abs()).collect());
+    let input = PlotInput {
+        title: &scene.title,
+        time: &columns.time,
+        state: names
+            .iter()
+            .map(String::as_str)
+            .zip(columns.state.iter().map(Vec::as_slice))
+            .collect(),
+        attitude_deg: attitude.as_ref().map(|[r, p, y]| [r.as_slice(), p.as_slice(), y.as_slice()]),
+        track: track.map(|(x, y)| (columns.state[x].as_slice(), columns.state[y].as_slice())),
+        energy_drift: drift.as_deref(),
+    };
+    write_plots(out, &input).with_context(|| format!("drawing the plots into {}", out.display()))
+}
+
+/// Roll, pitch and yaw in degrees of every kept row.
+fn attitude_deg(columns: &Columns, kinematics: Kinematics) -> [Vec<f64>; 3] {
+    let mut angles: [Vec<f64>; 3] = Default::default();
+    let mut state = vec![0.0; columns.state.len()];
+    for row in 0..columns.time.len() {
+        for (entry, column) in state.iter_mut().zip(&columns.state) {
+            *entry = column[row];
+        }
+        for (angle, value) in angles.iter_mut().zip(euler_angles(kinematics, &state)) {
+            angle.push(value.to_degrees());
+        }
+    }
+    angles
+}

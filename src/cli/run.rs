@@ -1,0 +1,333 @@
+//! `eom run SCENE`: run a scene and write what a person wants to look at.
+//!
+//! Into the output folder (default: a folder named after the scene file, in the current
+//! directory): `trajectory.csv`, `summary.json` and the SVG plots. A folder that already
+//! holds a run is not overwritten without `--force`. A scene with a `[sweep]` runs every case
+//! in parallel, each into `case-NNNN/`, and writes `sweep.csv`, one line per case; `--shard
+//! K/N` runs only the cases k ≡ K (mod N). With no scene, `eom` runs its default scene, the
+//! tennis-racket flip.
+
+use anyhow::{Context, Result, bail};
+use eom::output::summary::{Summary, write_atomically};
+use eom::output::trajectory::{Columns, TrajectoryWriter};
+use eom::run::{Report, run};
+use eom::scene::sweep::{Case, cases, parse_shard};
+use eom::scene::{Body, Problem, Scene, SceneError};
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use rayon::prelude::*;
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+/// The default scene: `scenes/tennis_racket.toml`, built into the binary.
+pub const DEFAULT_SCENE: &str = include_str!("../../scenes/tennis_racket.toml");
+/// The default scene's name, for its output folder.
+pub const DEFAULT_NAME: &str = "tennis_racket.toml";
+
+/// Options of `eom run`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// The scene file (TOML); see `scenes/` and README.
+    scene: PathBuf,
+    /// The output folder (default: the scene file's name without `.toml`, here).
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Write into an output folder that already holds a run.
+    #[arg(long)]
+    force: bool,
+    /// Run only the sweep cases k ≡ K (mod N), written `K/N`.
+    #[arg(long)]
+    shard: Option<String>,
+}
+
+/// An output folder that already holds a run, refused without `--force`.
+#[derive(Debug, thiserror::Error)]
+#[error("{0} already holds a run; use --force to write over it, or --out for another folder")]
+pub struct OutputExists(pub PathBuf);
+
+/// Runs `eom run`.
+pub fn run_command(args: Args) -> Result<()> {
+    let name = args.scene.display().to_string();
+    let text = std::fs::read_to_string(&args.scene)
+        .map_err(|e| SceneError::new(&name, "", Problem::Read(e)))?;
+    let base = args.scene.parent().unwrap_or(Path::new(".")).to_owned();
+    let out = args.out.unwrap_or_else(|| default_folder(&args.scene));
+    let shard = args
+        .shard
+        .as_deref()
+        .map(parse_shard)
+        .transpose()
+        .map_err(anyhow::Error::msg)?;
+    execute(&text, &name, &base, &out, args.force, shard)
+}
+
+/// Runs the default scene into `./tennis_racket/` (what `cargo run --release` does).
+pub fn run_default() -> Result<()> {
+    let out = default_folder(Path::new(DEFAULT_NAME));
+    println!("eom: no subcommand given, so running the default scene ({DEFAULT_NAME}); `eom --help` lists the others.");
+    execute(DEFAULT_SCENE, DEFAULT_NAME, Path::new("scenes"), &out, true, None)
+}
+
+/// The folder named after the scene file, in the current directory.
+fn default_folder(scene: &Path) -> PathBuf {
+    let stem = scene
+        .file_stem()
+        .map_or_else(|| "run".into(), |s| s.to_string_lossy().into_owned());
+    PathBuf::from(stem)
+}
+
+fn execute(
+    text: &str,
+    name: &str,
+    base: &Path,
+    out: &Path,
+    force: bool,
+    shard: Option<(usize, usize)>,
+) -> Result<()> {
+    let all = cases(text, name)?;
+    let swept = !all[0].values.is_empty();
+    // Every case is checked before any runs: a bad value fails the sweep at once.
+    let scenes: Vec<(Case, Scene)> = all
+        .into_iter()
+        .filter(|case| shard.is_none_or(|(k, n)| case.index % n == k))
+        .map(|case| {
+            let scene = Scene::from_file(&case.file, name, base)?;
+            Ok((case, scene))
+        })
+        .collect::<Result<_, SceneError>>()?;
+    prepare_folder(out, force)?;
+    if !swept {
+        let (_, scene) = &scenes[0];
+        let outcome = run_case(scene, name, out, true)?;
+        print_outcome(scene, &outcome, out);
+        return Ok(());
+    }
+    run_sweep(&scenes, name, out, shard)
+}
+
+/// Creates the output folder, refusing one that holds a run unless `force`.
+fn prepare_folder(out: &Path, force: bool) -> Result<()> {
+    let holds_a_run = out.join("summary.json").exists()
+        || out.join("trajectory.csv").exists()
+        || out.join("sweep.csv").exists();
+    if holds_a_run && !force {
+        return Err(OutputExists(out.to_owned()).into());
+    }
+    std::fs::create_dir_all(out).with_context(|| format!("creating the output folder {}", out.display()))
+}
+
+/// What one run wrote.
+struct Outcome {
+    report: Report,
+    files: Vec<PathBuf>,
+}
+
+/// Runs one scene into `out`: trajectory, summary, plots.
+fn run_case(scene: &Scene, name: &str, out: &Path, progress: bool) -> Result<Outcome> {
+    std::fs::create_dir_all(out).with_context(|| format!("creating {}", out.display()))?;
+    let names = scene.state_names();
+    let with_potential = scene.loads.potential_energy(&scene.initial).is_some();
+    let rows = (scene.integrator.end_time / scene.every) as usize + 1;
+    let csv_path = out.join("trajectory.csv");
+    let mut writer = TrajectoryWriter::create(&csv_path, &names, with_potential, rows)
+        .with_context(|| format!("creating {}", csv_path.display()))?;
+    if progress {
+        writer.on_row(progress_bar(scene.integrator.end_time));
+    }
+    let result = run(scene, &mut writer);
+    let write_error = writer.error().map(|e| e.to_string());
+    let columns = writer.finish();
+    let report = match (result, write_error) {
+        (Ok(report), _) => report,
+        (Err(_), Some(error)) => bail!("writing {}: {error}", csv_path.display()),
+        (Err(error), None) => return Err(error.into()),
+    };
+    let columns = columns.with_context(|| format!("writing {}", csv_path.display()))?;
+    let mut summary = Summary::new(
+        name.to_owned(),
+        scene.title.clone(),
+        (scene.selection.info, scene.selection.reason.clone()),
+        scene.integrator.method.name(),
+        &report,
+        &names,
+    );
+    add_family_measures(scene, &columns, &mut summary);
+    let summary_path = out.join("summary.json");
+    summary
+        .write(&summary_path)
+        .with_context(|| format!("writing {}", summary_path.display()))?;
+    let mut files = vec![csv_path, summary_path];
+    files.extend(super::plots::write(scene, &columns, out)?);
+    Ok(Outcome { report, files })
+}
+
+/// What a family adds to its summary: the pendulum's period, measured from the trajectory.
+fn add_family_measures(scene: &Scene, columns: &Columns, summary: &mut Summary) {
+    if let Body::Pendulum(_) = scene.body
+        && let Some(period) = measured_period(&columns.time, &columns.state[0])
+    {
+        summary
+            .extra
+            .insert("period_s".into(), serde_json::json!(period));
+    }
+}
+
+/// The mean time between upward zero crossings of θ, each found by linear interpolation
+/// between the samples around it; `None` with fewer than two crossings.
+pub fn measured_period(time: &[f64], theta: &[f64]) -> Option<f64> {
+    let crossings: Vec<f64> = time
+        .windows(2)
+        .zip(theta.windows(2))
+        .filter(|(_, a)| a[0] < 0.0 && a[1] >= 0.0)
+        .map(|(t, a)| t[0] + (t[1] - t[0]) * (-a[0]) / (a[1] - a[0]))
+        .collect();
+    (crossings.len() >= 2).then(|| {
+        (crossings[crossings.len() - 1] - crossings[0]) / (crossings.len() - 1) as f64
+    })
+}
+
+/// A progress bar on a terminal for runs longer than about a second; none otherwise.
+struct Progress {
+    bar: ProgressBar,
+    start: Instant,
+    shown: bool,
+}
+
+impl Progress {
+    fn tick_to(&mut self, t: f64) {
+        if !self.shown && self.start.elapsed() > Duration::from_secs(1) {
+            self.bar.set_draw_target(ProgressDrawTarget::stderr());
+            self.shown = true;
+        }
+        self.bar.set_position((t * 1000.0) as u64);
+    }
+}
+
+impl Drop for Progress {
+    fn drop(&mut self) {
+        self.bar.finish_and_clear();
+    }
+}
+
+/// A bar over the run's simulated time, hidden until the run has taken a second; indicatif
+/// draws nothing when standard error is not a terminal.
+fn progress_bar(end_time: f64) -> impl FnMut(f64) + 'static {
+    let bar = ProgressBar::with_draw_target(Some((end_time * 1000.0) as u64), ProgressDrawTarget::hidden());
+    bar.set_style(
+        ProgressStyle::with_template("{bar:40} t = {msg} s of {len_s} s, {eta} left")
+            .unwrap_or_else(|_| ProgressStyle::default_bar()),
+    );
+    let mut progress = Progress {
+        bar,
+        start: Instant::now(),
+        shown: false,
+    };
+    move |t| progress.tick_to(t)
+}
+
+fn print_outcome(scene: &Scene, outcome: &Outcome, out: &Path) {
+    let info = scene.selection.info;
+    let (ops, full) = (info.operations, info.full_variant().operations);
+    let report = &outcome.report;
+    println!("{}: ran {} ({})", scene.title, info.name, scene.selection.reason);
+    if full.arithmetic() != ops.arithmetic() {
+        println!(
+            "  {} arithmetic operations per call, against {} for {}",
+            ops.arithmetic(),
+            full.arithmetic(),
+            info.full_variant().name
+        );
+    }
+    println!(
+        "  {}: {} steps ({} rejected), {} rhs calls, {:.3} s",
+        scene.integrator.method.name(),
+        report.steps,
+        report.rejected,
+        report.rhs_evals,
+        report.wall_seconds
+    );
+    if let Some(drift) = report.energy_drift {
+        println!("  energy drift {drift:.2e} (largest |E − E₀|/|E₀| over the rows)");
+    }
+    println!("  wrote into {}:", out.display());
+    for file in &outcome.files {
+        println!("    {}", file.file_name().map_or_else(String::new, |f| f.to_string_lossy().into_owned()));
+    }
+    if let Some(plot) = outcome.files.iter().find(|f| f.extension().is_some_and(|e| e == "svg")) {
+        println!("  open {} in a browser to see the run", plot.display());
+    }
+}
+
+/// Runs every case of a sweep in parallel and writes `sweep.csv`.
+fn run_sweep(
+    scenes: &[(Case, Scene)],
+    name: &str,
+    out: &Path,
+    shard: Option<(usize, usize)>,
+) -> Result<()> {
+    let outcomes: Vec<Result<Report>> = scenes
+        .par_iter()
+        .map(|(case, scene)| {
+            let folder = out.join(format!("case-{:04}", case.index));
+            run_case(scene, name, &folder, false).map(|o| o.report)
+        })
+        .collect();
+    let table = sweep_table(scenes, &outcomes);
+    let file = match shard {
+        Some((k, n)) => format!("sweep-shard-{k}-of-{n}.csv"),
+        None => "sweep.csv".into(),
+    };
+    write_atomically(&out.join(&file), table.as_bytes())
+        .with_context(|| format!("writing {}", out.join(&file).display()))?;
+    let failed = outcomes.iter().filter(|o| o.is_err()).count();
+    println!(
+        "{}: {} cases in {}, {} failed; one line per case in {}",
+        name,
+        scenes.len(),
+        out.display(),
+        failed,
+        out.join(&file).display()
+    );
+    for ((case, _), outcome) in scenes.iter().zip(&outcomes) {
+        if let Err(error) = outcome {
+            eprintln!("  case {}: {error:#}", case.index);
+        }
+    }
+    if failed > 0 {
+        bail!("{failed} of {} cases failed", scenes.len());
+    }
+    Ok(())
+}
+
+/// `case, <swept keys…>, variant, steps, rhs_evals, wall_seconds, energy_drift, <final
+/// state…>, error`, one line per case.
+fn sweep_table(scenes: &[(Case, Scene)], outcomes: &[Result<Report>]) -> String {
+    let Some((first, scene)) = scenes.first() else {
+        return String::new();
+    };
+    let mut header = vec!["case".to_owned()];
+    header.extend(first.values.iter().map(|(k, _)| k.clone()));
+    header.extend(["variant", "steps", "rhs_evals", "wall_seconds", "energy_drift"].map(String::from));
+    header.extend(scene.state_names().iter().map(|n| format!("final_{n}")));
+    header.push("error".into());
+    let mut writer = csv::Writer::from_writer(Vec::new());
+    let _ = writer.write_record(&header);
+    for ((case, scene), outcome) in scenes.iter().zip(outcomes) {
+        let mut row = vec![case.index.to_string()];
+        row.extend(case.values.iter().map(|(_, v)| v.to_string()));
+        row.push(scene.selection.info.name.to_owned());
+        match outcome {
+            Ok(r) => {
+                row.extend([r.steps.to_string(), r.rhs_evals.to_string(), r.wall_seconds.to_string()]);
+                row.push(r.energy_drift.map_or_else(String::new, |d| d.to_string()));
+                row.extend(r.final_state.iter().map(f64::to_string));
+                row.push(String::new());
+            }
+            Err(error) => {
+                row.extend(std::iter::repeat_n(String::new(), 4 + scene.state_names().len()));
+                row.push(format!("{error:#}"));
+            }
+        }
+        let _ = writer.write_record(&row);
+    }
+    String::from_utf8(writer.into_inner().unwrap_or_default()).unwrap_or_default()
+}

@@ -1,0 +1,156 @@
+//! `summary.json`: what ran, why, what it cost and where it ended.
+//!
+//! ```json
+//! {"scene", "title", "variant", "reason", "operations", "full_operations",
+//!  "integrator": {"method", "steps", "rejected", "rhs_evals"}, "wall_seconds",
+//!  "energy_drift", "final_state": {name: value}, …what the family adds}
+//! ```
+//!
+//! The file is written whole to a temporary name in the same folder and renamed over
+//! `summary.json`, so a reader never sees half of one.
+
+use crate::models::{ModelInfo, Operations};
+use crate::run::Report;
+use serde::Serialize;
+use serde::ser::{SerializeMap, Serializer};
+use std::path::Path;
+
+/// The summary of one run.
+#[derive(Debug, Serialize)]
+pub struct Summary {
+    /// The scene file.
+    pub scene: String,
+    /// The scene's title.
+    pub title: String,
+    /// The generated model that ran.
+    pub variant: &'static str,
+    /// Why that model.
+    pub reason: String,
+    /// Its operations per right-hand-side call.
+    pub operations: OperationCounts,
+    /// The unpruned variant's, for comparison.
+    pub full_operations: OperationCounts,
+    /// The integration.
+    pub integrator: IntegratorSummary,
+    /// Wall time of the run, s.
+    pub wall_seconds: f64,
+    /// The largest relative change of the total energy over the rows, where the loads have a
+    /// potential (`null` where they do not).
+    pub energy_drift: Option<f64>,
+    /// The end time.
+    pub final_time: f64,
+    /// The state at the end, by name.
+    pub final_state: Named,
+    /// What the family adds (a pendulum's measured period, a free body's |H| drift), by name.
+    #[serde(flatten)]
+    pub extra: std::collections::BTreeMap<String, serde_json::Value>,
+}
+
+/// Operation counts as JSON.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct OperationCounts {
+    /// Additions.
+    pub add: u32,
+    /// Multiplications.
+    pub mul: u32,
+    /// Divisions.
+    pub div: u32,
+    /// Square roots.
+    pub sqrt: u32,
+    /// Trigonometric calls.
+    pub trig: u32,
+}
+
+impl From<Operations> for OperationCounts {
+    fn from(o: Operations) -> Self {
+        Self {
+            add: o.add,
+            mul: o.mul,
+            div: o.div,
+            sqrt: o.sqrt,
+            trig: o.trig,
+        }
+    }
+}
+
+/// The integrator's part.
+#[derive(Debug, Serialize)]
+pub struct IntegratorSummary {
+    /// The method's name in scene files.
+    pub method: &'static str,
+    /// Accepted steps.
+    pub steps: usize,
+    /// Rejected steps.
+    pub rejected: usize,
+    /// Right-hand-side evaluations.
+    pub rhs_evals: usize,
+}
+
+/// Values by name, serialised as a JSON object in the given order.
+#[derive(Debug, Default)]
+pub struct Named(pub Vec<(String, f64)>);
+
+impl Serialize for Named {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let mut map = serializer.serialize_map(Some(self.0.len()))?;
+        for (key, value) in &self.0 {
+            map.serialize_entry(key, value)?;
+        }
+        map.end()
+    }
+}
+
+impl Summary {
+    /// The summary of a run of `info` that reported `report`.
+    pub fn new(
+        scene: String,
+        title: String,
+        (info, reason): (&'static ModelInfo, String),
+        method: &'static str,
+        report: &Report,
+        state_names: &[String],
+    ) -> Self {
+        Self {
+            scene,
+            title,
+            variant: info.name,
+            reason,
+            operations: info.operations.into(),
+            full_operations: info.full_variant().operations.into(),
+            integrator: IntegratorSummary {
+                method,
+                steps: report.steps,
+                rejected: report.rejected,
+                rhs_evals: report.rhs_evals,
+            },
+            wall_seconds: report.wall_seconds,
+            energy_drift: report.energy_drift,
+            final_time: report.final_time,
+            final_state: Named(
+                state_names
+                    .iter()
+                    .cloned()
+                    .zip(report.final_state.iter().copied())
+                    .collect(),
+            ),
+            extra: Default::default(),
+        }
+    }
+
+    /// Writes the summary to `path` through a temporary file renamed over it.
+    pub fn write(&self, path: &Path) -> std::io::Result<()> {
+        let text = serde_json::to_string_pretty(self).map_err(std::io::Error::other)?;
+        write_atomically(path, text.as_bytes())
+    }
+}
+
+/// Writes `bytes` to a temporary file beside `path` and renames it over `path`.
+pub fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    let name = path
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let temporary = path.with_file_name(format!(".{name}.partial"));
+    std::fs::write(&temporary, bytes)?;
+    std::fs::rename(&temporary, path)
+}

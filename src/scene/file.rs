@@ -1,0 +1,177 @@
+//! The scene file as written: TOML tables read by serde, every table closed to unknown keys.
+//!
+//! Nothing here is checked beyond types; [`super::Scene::from_file`] checks values, per
+//! family, and names each offending key by its path in the file (`integrator.step`).
+
+use serde::Deserialize;
+
+/// A whole scene file.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SceneFile {
+    /// What the scene is, for the summary and the plots.
+    pub title: String,
+    /// The body: mass properties, or the file that describes them.
+    pub body: BodyTable,
+    /// Which family of models, and for a spatial body which symmetry and kinematics.
+    pub model: ModelTable,
+    /// Where the body starts.
+    #[serde(default)]
+    pub initial: InitialTable,
+    /// What acts on it.
+    #[serde(default)]
+    pub loads: LoadsTable,
+    /// How to integrate.
+    pub integrator: IntegratorTable,
+    /// What to write.
+    #[serde(default)]
+    pub output: OutputTable,
+    /// Values to vary, one run per combination (see [`super::sweep`]).
+    #[serde(default)]
+    pub sweep: Option<toml::Table>,
+}
+
+/// `[body]`: each family reads its own keys and refuses the others.
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BodyTable {
+    /// M, kg.
+    pub mass: Option<f64>,
+    /// The tensor about G in body axes, kg m², with the chapter's signs (4.12–4.14).
+    pub inertia: Option<[[f64; 3]; 3]>,
+    /// A mass-properties description (`eom mass`), relative to the scene file.
+    pub file: Option<String>,
+    /// The pendulum's I₀ about the pivot, kg m².
+    pub i0: Option<f64>,
+    /// Gravity for the pendulum, m/s².
+    pub g: Option<f64>,
+    /// The pendulum's pivot-to-G distance, m.
+    pub h: Option<f64>,
+    /// A planar body's I_zz about G, kg m².
+    pub izz: Option<f64>,
+    /// A planar body's G ahead of midship, m (4.45).
+    pub x_g: Option<f64>,
+}
+
+/// `[model]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ModelTable {
+    /// `pendulum`, `planar-g`, `planar-midship`, `planar-space` or `spatial`.
+    pub family: String,
+    /// `auto`, `full`, `xz` or `principal` (spatial only).
+    pub symmetry: Option<String>,
+    /// `euler` or `quaternion` (spatial only).
+    pub kinematics: Option<String>,
+}
+
+/// `[initial]`: each family reads its own keys and refuses the others; what is left out is
+/// zero (the identity attitude).
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct InitialTable {
+    /// Spatial: body velocity of G, (u, v, w), m/s.
+    pub velocity: Option<[f64; 3]>,
+    /// Spatial: body rates (p, q, r), rad/s.
+    pub rates: Option<[f64; 3]>,
+    /// Spatial: position of G in space axes, (x, y, z), m.
+    pub position: Option<[f64; 3]>,
+    /// Spatial: roll, pitch, yaw (4.56), degrees.
+    pub attitude_deg: Option<[f64; 3]>,
+    /// Pendulum: the angle from the downward vertical, degrees.
+    pub theta_deg: Option<f64>,
+    /// Pendulum: the angular rate, rad/s.
+    pub theta_dot: Option<f64>,
+    /// Planar: surge velocity (body axes), or Ẋ for a space-fixed scene, m/s.
+    pub u: Option<f64>,
+    /// Planar: sway velocity (body axes), or Ẏ for a space-fixed scene, m/s.
+    pub v: Option<f64>,
+    /// Planar: yaw rate, rad/s.
+    pub r: Option<f64>,
+    /// Planar: position X in space axes, m.
+    pub x: Option<f64>,
+    /// Planar: position Y in space axes, m.
+    pub y: Option<f64>,
+    /// Planar: heading ψ, degrees.
+    pub psi_deg: Option<f64>,
+}
+
+/// `[loads]`. Space axes: X north, Y east, Z down, as the chapter's ship dynamics.
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LoadsTable {
+    /// Gravity g along +Z (down), m/s²; acts at G (spatial).
+    pub gravity: Option<f64>,
+    /// Buoyancy B along −Z (up), N; acts at the centre of buoyancy (spatial).
+    pub buoyancy: Option<f64>,
+    /// The centre of buoyancy relative to G, body axes, m (spatial).
+    pub buoyancy_centre: Option<[f64; 3]>,
+    /// A constant force in body axes, N: 3 entries (spatial) or 2 (planar).
+    pub force_body: Option<Vec<f64>>,
+    /// A constant force in space axes, N: 3 entries (spatial) or 2 (planar).
+    pub force_space: Option<Vec<f64>>,
+    /// A constant moment about G in body axes, N m (spatial).
+    pub moment_body: Option<[f64; 3]>,
+    /// A constant moment about G in space axes, N m (spatial).
+    pub moment_space: Option<[f64; 3]>,
+    /// A constant moment about the vertical (planar) or the pivot (pendulum), N m.
+    pub moment: Option<f64>,
+    /// Linear damping, each load −dᵢ xᵢ on a velocity: (u, v, w, p, q, r) spatial,
+    /// (u, v, r) planar, (θ̇) pendulum.
+    pub linear_damping: Option<Vec<f64>>,
+    /// Quadratic damping, each load −dᵢ xᵢ|xᵢ|, on the same velocities.
+    pub quadratic_damping: Option<Vec<f64>>,
+}
+
+/// `[integrator]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct IntegratorTable {
+    /// `euler`, `symplectic-euler`, `rk4`, `dopri5`, `dop853` or `lie-midpoint`.
+    pub method: String,
+    /// Relative tolerance (adaptive methods).
+    pub rtol: Option<f64>,
+    /// Absolute tolerance (adaptive methods).
+    pub atol: Option<f64>,
+    /// The step (fixed-step methods), s.
+    pub step: Option<f64>,
+    /// The end of the run, s (the run starts at 0).
+    pub end_time: f64,
+    /// The most steps (accepted and rejected) a run may take.
+    pub max_steps: Option<u64>,
+}
+
+/// `[output]`.
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct OutputTable {
+    /// Trajectory rows at exactly t = k·every, s.
+    pub every: Option<f64>,
+}
+
+/// The keys a table has, for refusing the ones another family reads.
+pub(crate) trait GivenKeys {
+    /// The names of the keys present.
+    fn given(&self) -> Vec<&'static str>;
+}
+
+macro_rules! given_keys {
+    ($table:ident { $($key:ident),* }) => {
+        impl GivenKeys for $table {
+            fn given(&self) -> Vec<&'static str> {
+                let mut keys = Vec::new();
+                $(if self.$key.is_some() { keys.push(stringify!($key)); })*
+                keys
+            }
+        }
+    };
+}
+
+given_keys!(BodyTable { mass, inertia, file, i0, g, h, izz, x_g });
+given_keys!(InitialTable {
+    velocity, rates, position, attitude_deg, theta_deg, theta_dot, u, v, r, x, y, psi_deg
+});
+given_keys!(LoadsTable {
+    gravity, buoyancy, buoyancy_centre, force_body, force_space, moment_body, moment_space,
+    moment, linear_damping, quadratic_damping
+});

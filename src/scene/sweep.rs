@@ -1,0 +1,208 @@
+//! Sweeps: one scene file, many runs.
+//!
+//! A `[sweep]` table names scene values by their path and gives each a list of values or a
+//! linear range:
+//!
+//! ```toml
+//! [sweep]
+//! "body.mass" = [1.0, 2.0, 4.0]
+//! "initial.theta_deg" = { from = 10.0, to = 170.0, count = 9 }
+//! ```
+//!
+//! The cases are every combination, in a fixed order (keys sorted, the last key varying
+//! fastest), numbered from 0, so that case `k` is the same case on every machine: a batch
+//! scheduler can give machine `K` of `N` the cases `k ≡ K (mod N)` (`--shard K/N`) and the
+//! per-case summaries concatenate.
+
+use super::file::SceneFile;
+use super::{Problem, SceneError};
+use toml::{Table, Value};
+
+/// One case of a sweep: the values it sets and the scene file it makes.
+#[derive(Debug, Clone)]
+pub struct Case {
+    /// The case's number, from 0.
+    pub index: usize,
+    /// The swept keys and the values this case gives them.
+    pub values: Vec<(String, Value)>,
+    /// The scene with those values set.
+    pub file: SceneFile,
+}
+
+/// The cases of scene text: one case (the scene as written) when it has no `[sweep]`.
+pub fn cases(text: &str, name: &str) -> Result<Vec<Case>, SceneError> {
+    let error = |key: &str, problem| SceneError::new(name, key, problem);
+    let mut table: Table = text
+        .parse()
+        .map_err(|e: toml::de::Error| error("", Problem::Syntax(e.to_string())))?;
+    let sweep = match table.remove("sweep") {
+        None => Table::new(),
+        Some(Value::Table(sweep)) => sweep,
+        Some(_) => return Err(error("sweep", Problem::Schema("must be a table".into()))),
+    };
+    let axes: Vec<(String, Vec<Value>)> = sweep
+        .into_iter()
+        .map(|(key, spec)| {
+            let values = axis_values(&key, spec).map_err(|p| error(&format!("sweep.{key}"), p))?;
+            Ok((key, values))
+        })
+        .collect::<Result<_, SceneError>>()?;
+    let count: usize = axes.iter().map(|(_, v)| v.len()).product();
+    (0..count)
+        .map(|index| {
+            let values = combination(&axes, index);
+            let mut case = table.clone();
+            for (key, value) in &values {
+                set(&mut case, key, value.clone()).map_err(|p| error(&format!("sweep.{key}"), p))?;
+            }
+            let file = deserialize(case, name)?;
+            Ok(Case {
+                index,
+                values,
+                file,
+            })
+        })
+        .collect()
+}
+
+/// The values of one swept key: a list, or `{ from, to, count }` evenly spaced.
+fn axis_values(key: &str, spec: Value) -> Result<Vec<Value>, Problem> {
+    match spec {
+        Value::Array(values) if !values.is_empty() => Ok(values),
+        Value::Table(range) => {
+            let number = |k: &str| match range.get(k) {
+                Some(Value::Float(x)) => Ok(*x),
+                Some(Value::Integer(n)) => Ok(*n as f64),
+                _ => Err(Problem::Schema(format!("a range needs a number `{k}`"))),
+            };
+            let (from, to) = (number("from")?, number("to")?);
+            let count = match range.get("count") {
+                Some(Value::Integer(n)) if *n >= 2 => *n as usize,
+                _ => return Err(Problem::Schema("a range needs an integer `count` of at least 2".into())),
+            };
+            if let Some(extra) = range.keys().find(|k| !["from", "to", "count"].contains(&k.as_str())) {
+                return Err(Problem::Schema(format!("unknown key `{extra}` in a range")));
+            }
+            if !(from.is_finite() && to.is_finite()) {
+                return Err(Problem::Invalid("a range must have finite ends".into()));
+            }
+            let step = (to - from) / (count - 1) as f64;
+            Ok((0..count)
+                .map(|i| Value::Float(if i + 1 == count { to } else { from + step * i as f64 }))
+                .collect())
+        }
+        _ => Err(Problem::Schema(format!(
+            "`{key}` must be a non-empty list of values or {{ from, to, count }}"
+        ))),
+    }
+}
+
+/// The values of case `index`: the last axis varies fastest.
+fn combination(axes: &[(String, Vec<Value>)], mut index: usize) -> Vec<(String, Value)> {
+    let mut values = Vec::with_capacity(axes.len());
+    for (key, axis) in axes.iter().rev() {
+        values.push((key.clone(), axis[index % axis.len()].clone()));
+        index /= axis.len();
+    }
+    values.reverse();
+    values
+}
+
+/// Sets a dotted key (`body.mass`) of a scene table; the tables on the way must exist or are
+/// made.
+fn set(table: &mut Table, key: &str, value: Value) -> Result<(), Problem> {
+    let mut parts: Vec<&str> = key.split('.').collect();
+    let last = parts.pop().filter(|p| !p.is_empty()).ok_or_else(|| Problem::Schema("an empty key".into()))?;
+    let mut current = table;
+    for part in parts {
+        let entry = current
+            .entry(part.to_owned())
+            .or_insert_with(|| Value::Table(Table::new()));
+        current = match entry {
+            Value::Table(t) => t,
+            _ => return Err(Problem::Schema(format!("`{part}` is not a table"))),
+        };
+    }
+    current.insert(last.to_owned(), value);
+    Ok(())
+}
+
+/// A scene table as a [`SceneFile`], errors naming the key.
+fn deserialize(table: Table, name: &str) -> Result<SceneFile, SceneError> {
+    serde_path_to_error::deserialize(Value::Table(table)).map_err(|e| {
+        let key = e.path().to_string();
+        let key = if key == "." { String::new() } else { key };
+        let message = e.into_inner().message().to_owned();
+        SceneError::new(name, &key, Problem::Schema(message))
+    })
+}
+
+/// Parses `K/N` (shard `K` of `N`, counted from 0).
+pub fn parse_shard(text: &str) -> Result<(usize, usize), String> {
+    let (k, n) = text
+        .split_once('/')
+        .ok_or_else(|| format!("a shard is K/N, not `{text}`"))?;
+    let (k, n): (usize, usize) = (
+        k.trim().parse().map_err(|_| format!("K in K/N is a number, not `{k}`"))?,
+        n.trim().parse().map_err(|_| format!("N in K/N is a number, not `{n}`"))?,
+    );
+    if n == 0 || k >= n {
+        return Err(format!("a shard K/N needs 0 ≤ K < N, not {k}/{n}"));
+    }
+    Ok((k, n))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const SCENE: &str = r#"
+title = "t"
+[body]
+i0 = 2.0
+mass = 1.0
+g = 9.81
+h = 0.5
+[model]
+family = "pendulum"
+[integrator]
+method = "rk4"
+step = 0.01
+end_time = 1.0
+[sweep]
+"body.mass" = [1.0, 2.0]
+"initial.theta_deg" = { from = 10.0, to = 30.0, count = 3 }
+"#;
+
+    #[test]
+    fn a_sweep_gives_every_combination_in_a_fixed_order() {
+        let cases = cases(SCENE, "s.toml").unwrap();
+        assert_eq!(cases.len(), 6);
+        let pairs: Vec<(f64, f64)> = cases
+            .iter()
+            .map(|c| (c.file.body.mass.unwrap(), c.file.initial.theta_deg.unwrap()))
+            .collect();
+        assert_eq!(
+            pairs,
+            [(1.0, 10.0), (1.0, 20.0), (1.0, 30.0), (2.0, 10.0), (2.0, 20.0), (2.0, 30.0)]
+        );
+        assert!(cases.iter().enumerate().all(|(i, c)| c.index == i));
+    }
+
+    #[test]
+    fn a_bad_sweep_names_its_key() {
+        let text = SCENE.replace("[1.0, 2.0]", "3.0");
+        let error = cases(&text, "s.toml").unwrap_err();
+        assert_eq!(error.key, "sweep.body.mass");
+        let text = SCENE.replace("count = 3", "count = 1");
+        assert_eq!(cases(&text, "s.toml").unwrap_err().key, "sweep.initial.theta_deg");
+    }
+
+    #[test]
+    fn shards_are_k_of_n() {
+        assert_eq!(parse_shard("2/5"), Ok((2, 5)));
+        assert!(parse_shard("5/5").is_err());
+        assert!(parse_shard("1").is_err());
+        assert!(parse_shard("a/2").is_err());
+    }
+}
