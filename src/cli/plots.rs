@@ -35,7 +35,9 @@ pub fn write(scene: &Scene, columns: &Columns, out: &Path) -> Result<Vec<PathBuf
             .map(String::as_str)
             .zip(columns.state.iter().map(Vec::as_slice))
             .collect(),
-        attitude_deg: attitude.as_ref().map(|[r, p, y]| [r.as_slice(), p.as_slice(), y.as_slice()]),
+        attitude_deg: attitude
+            .as_ref()
+            .map(|[r, p, y]| [r.as_slice(), p.as_slice(), y.as_slice()]),
         track: track.map(|(x, y)| (columns.state[x].as_slice(), columns.state[y].as_slice())),
         energy_drift: drift.as_deref(),
     };

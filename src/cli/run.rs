@@ -63,8 +63,17 @@ pub fn run_command(args: Args) -> Result<()> {
 /// Runs the default scene into `./tennis_racket/` (what `cargo run --release` does).
 pub fn run_default() -> Result<()> {
     let out = default_folder(Path::new(DEFAULT_NAME));
-    println!("eom: no subcommand given, so running the default scene ({DEFAULT_NAME}); `eom --help` lists the others.");
-    execute(DEFAULT_SCENE, DEFAULT_NAME, Path::new("scenes"), &out, true, None)
+    println!(
+        "eom: no subcommand given, so running the default scene ({DEFAULT_NAME}); `eom --help` lists the others."
+    );
+    execute(
+        DEFAULT_SCENE,
+        DEFAULT_NAME,
+        Path::new("scenes"),
+        &out,
+        true,
+        None,
+    )
 }
 
 /// The folder named after the scene file, in the current directory.
@@ -112,7 +121,8 @@ fn prepare_folder(out: &Path, force: bool) -> Result<()> {
     if holds_a_run && !force {
         return Err(OutputExists(out.to_owned()).into());
     }
-    std::fs::create_dir_all(out).with_context(|| format!("creating the output folder {}", out.display()))
+    std::fs::create_dir_all(out)
+        .with_context(|| format!("creating the output folder {}", out.display()))
 }
 
 /// What one run wrote.
@@ -125,7 +135,7 @@ struct Outcome {
 fn run_case(scene: &Scene, name: &str, out: &Path, progress: bool) -> Result<Outcome> {
     std::fs::create_dir_all(out).with_context(|| format!("creating {}", out.display()))?;
     let names = scene.state_names();
-    let with_potential = scene.loads.potential_energy(&scene.initial).is_some();
+    let with_potential = scene.loads.has_potential();
     let rows = (scene.integrator.end_time / scene.every) as usize + 1;
     let csv_path = out.join("trajectory.csv");
     let mut writer = TrajectoryWriter::create(&csv_path, &names, with_potential, rows)
@@ -180,9 +190,8 @@ pub fn measured_period(time: &[f64], theta: &[f64]) -> Option<f64> {
         .filter(|(_, a)| a[0] < 0.0 && a[1] >= 0.0)
         .map(|(t, a)| t[0] + (t[1] - t[0]) * (-a[0]) / (a[1] - a[0]))
         .collect();
-    (crossings.len() >= 2).then(|| {
-        (crossings[crossings.len() - 1] - crossings[0]) / (crossings.len() - 1) as f64
-    })
+    (crossings.len() >= 2)
+        .then(|| (crossings[crossings.len() - 1] - crossings[0]) / (crossings.len() - 1) as f64)
 }
 
 /// A progress bar on a terminal for runs longer than about a second; none otherwise.
@@ -211,7 +220,10 @@ impl Drop for Progress {
 /// A bar over the run's simulated time, hidden until the run has taken a second; indicatif
 /// draws nothing when standard error is not a terminal.
 fn progress_bar(end_time: f64) -> impl FnMut(f64) + 'static {
-    let bar = ProgressBar::with_draw_target(Some((end_time * 1000.0) as u64), ProgressDrawTarget::hidden());
+    let bar = ProgressBar::with_draw_target(
+        Some((end_time * 1000.0) as u64),
+        ProgressDrawTarget::hidden(),
+    );
     bar.set_style(
         ProgressStyle::with_template("{bar:40} t = {msg} s of {len_s} s, {eta} left")
             .unwrap_or_else(|_| ProgressStyle::default_bar()),
@@ -228,7 +240,10 @@ fn print_outcome(scene: &Scene, outcome: &Outcome, out: &Path) {
     let info = scene.selection.info;
     let (ops, full) = (info.operations, info.full_variant().operations);
     let report = &outcome.report;
-    println!("{}: ran {} ({})", scene.title, info.name, scene.selection.reason);
+    println!(
+        "{}: ran {} ({})",
+        scene.title, info.name, scene.selection.reason
+    );
     if full.arithmetic() != ops.arithmetic() {
         println!(
             "  {} arithmetic operations per call, against {} for {}",
@@ -250,9 +265,17 @@ fn print_outcome(scene: &Scene, outcome: &Outcome, out: &Path) {
     }
     println!("  wrote into {}:", out.display());
     for file in &outcome.files {
-        println!("    {}", file.file_name().map_or_else(String::new, |f| f.to_string_lossy().into_owned()));
+        println!(
+            "    {}",
+            file.file_name()
+                .map_or_else(String::new, |f| f.to_string_lossy().into_owned())
+        );
     }
-    if let Some(plot) = outcome.files.iter().find(|f| f.extension().is_some_and(|e| e == "svg")) {
+    if let Some(plot) = outcome
+        .files
+        .iter()
+        .find(|f| f.extension().is_some_and(|e| e == "svg"))
+    {
         println!("  open {} in a browser to see the run", plot.display());
     }
 }
@@ -306,7 +329,16 @@ fn sweep_table(scenes: &[(Case, Scene)], outcomes: &[Result<Report>]) -> String 
     };
     let mut header = vec!["case".to_owned()];
     header.extend(first.values.iter().map(|(k, _)| k.clone()));
-    header.extend(["variant", "steps", "rhs_evals", "wall_seconds", "energy_drift"].map(String::from));
+    header.extend(
+        [
+            "variant",
+            "steps",
+            "rhs_evals",
+            "wall_seconds",
+            "energy_drift",
+        ]
+        .map(String::from),
+    );
     header.extend(scene.state_names().iter().map(|n| format!("final_{n}")));
     header.push("error".into());
     let mut writer = csv::Writer::from_writer(Vec::new());
@@ -317,13 +349,20 @@ fn sweep_table(scenes: &[(Case, Scene)], outcomes: &[Result<Report>]) -> String 
         row.push(scene.selection.info.name.to_owned());
         match outcome {
             Ok(r) => {
-                row.extend([r.steps.to_string(), r.rhs_evals.to_string(), r.wall_seconds.to_string()]);
+                row.extend([
+                    r.steps.to_string(),
+                    r.rhs_evals.to_string(),
+                    r.wall_seconds.to_string(),
+                ]);
                 row.push(r.energy_drift.map_or_else(String::new, |d| d.to_string()));
                 row.extend(r.final_state.iter().map(f64::to_string));
                 row.push(String::new());
             }
             Err(error) => {
-                row.extend(std::iter::repeat_n(String::new(), 4 + scene.state_names().len()));
+                row.extend(std::iter::repeat_n(
+                    String::new(),
+                    4 + scene.state_names().len(),
+                ));
                 row.push(format!("{error:#}"));
             }
         }

@@ -9,8 +9,8 @@
 //! scene's step, so every row lands on its time.
 
 use crate::integrate::{
-    Dop853, Dopri5, Euler, IntegrateError, Integrator, LieMidpoint, Rk4, RigidRotation,
-    Statistics, Stats, SymplecticEuler,
+    Dop853, Dopri5, Euler, IntegrateError, Integrator, LieMidpoint, RigidRotation, Rk4, Statistics,
+    Stats, SymplecticEuler,
 };
 use crate::models::{Family, Kinematics, Model, Visitor};
 use crate::scene::{Body, Method, Scene, SceneLoads};
@@ -116,7 +116,10 @@ impl Rows<'_> {
 impl Visitor for Runner<'_> {
     type Output = Result<Report, RunError>;
 
-    fn visit<Mo: Model<f64, N, M>, const N: usize, const M: usize>(self, model: &Mo) -> Self::Output {
+    fn visit<Mo: Model<f64, N, M>, const N: usize, const M: usize>(
+        self,
+        model: &Mo,
+    ) -> Self::Output {
         let Runner { scene, sink } = self;
         let loads = &scene.loads;
         let mut rows = Rows {
@@ -136,12 +139,14 @@ impl Visitor for Runner<'_> {
         let interval = (0.0, y0, spec.end_time);
         let (result, stats) = match spec.method {
             Method::Dop853 => {
-                let mut method = Dop853::new(spec.adaptive.expect("an adaptive method has options"));
+                let mut method =
+                    Dop853::new(spec.adaptive.expect("an adaptive method has options"));
                 let result = method.sample_every(&system, interval, scene.every, &mut emit);
                 (result, method.stats())
             }
             Method::Dopri5 => {
-                let mut method = Dopri5::new(spec.adaptive.expect("an adaptive method has options"));
+                let mut method =
+                    Dopri5::new(spec.adaptive.expect("an adaptive method has options"));
                 let result = method.sample_every(&system, interval, scene.every, &mut emit);
                 (result, method.stats())
             }
@@ -168,7 +173,10 @@ impl Visitor for Runner<'_> {
 }
 
 fn step(scene: &Scene) -> f64 {
-    scene.integrator.step.expect("a fixed-step method has a step")
+    scene
+        .integrator
+        .step
+        .expect("a fixed-step method has a step")
 }
 
 /// The components symplectic Euler kicks first: the velocities of each family's state.
@@ -251,9 +259,16 @@ fn free_rotation<const N: usize>(
     let Body::Spatial { inertia, .. } = &scene.body else {
         unreachable!("lie-midpoint is refused for any scene but a free spatial body");
     };
-    debug_assert!(matches!(scene.loads, SceneLoads::Spatial { kinematics: Kinematics::Quaternion, .. }));
+    debug_assert!(matches!(
+        scene.loads,
+        SceneLoads::Spatial {
+            kinematics: Kinematics::Quaternion,
+            ..
+        }
+    ));
     let x = &scene.initial;
-    let attitude = |s: &[f64]| UnitQuaternion::from_quaternion(Quaternion::new(s[0], s[1], s[2], s[3]));
+    let attitude =
+        |s: &[f64]| UnitQuaternion::from_quaternion(Quaternion::new(s[0], s[1], s[2], s[3]));
     let velocity_in_space = attitude(&x[9..13]) * Vector3::new(x[0], x[1], x[2]);
     let position = Vector3::new(x[6], x[7], x[8]);
     let whole = |t: f64, rotation: &SVector<f64, 7>| -> SVector<f64, N> {
@@ -275,7 +290,8 @@ fn free_rotation<const N: usize>(
         inertia: inertia.matrix(),
     };
     let mut method = LieMidpoint::new(step(scene));
-    let (result, stats) = rotation_scene.run(&mut method, &system, &mut |t, r| emit(t, &whole(t, r)));
+    let (result, stats) =
+        rotation_scene.run(&mut method, &system, &mut |t, r| emit(t, &whole(t, r)));
     (result.map(|r| whole(scene.integrator.end_time, &r)), stats)
 }
 

@@ -46,7 +46,7 @@ pub enum Problem {
     Invalid(String),
     /// The body file named by `body.file` cannot be used.
     #[error(transparent)]
-    BodyFile(#[from] BodyFileError),
+    BodyFile(Box<BodyFileError>),
 }
 
 impl SceneError {

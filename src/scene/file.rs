@@ -167,11 +167,39 @@ macro_rules! given_keys {
     };
 }
 
-given_keys!(BodyTable { mass, inertia, file, i0, g, h, izz, x_g });
+given_keys!(BodyTable {
+    mass,
+    inertia,
+    file,
+    i0,
+    g,
+    h,
+    izz,
+    x_g
+});
 given_keys!(InitialTable {
-    velocity, rates, position, attitude_deg, theta_deg, theta_dot, u, v, r, x, y, psi_deg
+    velocity,
+    rates,
+    position,
+    attitude_deg,
+    theta_deg,
+    theta_dot,
+    u,
+    v,
+    r,
+    x,
+    y,
+    psi_deg
 });
 given_keys!(LoadsTable {
-    gravity, buoyancy, buoyancy_centre, force_body, force_space, moment_body, moment_space,
-    moment, linear_damping, quadratic_damping
+    gravity,
+    buoyancy,
+    buoyancy_centre,
+    force_body,
+    force_space,
+    moment_body,
+    moment_space,
+    moment,
+    linear_damping,
+    quadratic_damping
 });

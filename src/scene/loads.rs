@@ -81,7 +81,10 @@ fn invalid(key: &str, message: String) -> LoadError {
 fn finite<const K: usize>(key: &str, values: [f64; K]) -> Result<[f64; K], LoadError> {
     match values.iter().position(|v| !v.is_finite()) {
         None => Ok(values),
-        Some(i) => Err(invalid(&format!("{key}[{i}]"), format!("must be finite, got {}", values[i]))),
+        Some(i) => Err(invalid(
+            &format!("{key}[{i}]"),
+            format!("must be finite, got {}", values[i]),
+        )),
     }
 }
 
@@ -94,9 +97,10 @@ fn list<const K: usize>(key: &str, values: &Option<Vec<f64>>) -> Result<[f64; K]
     let Some(values) = values else {
         return Ok([0.0; K]);
     };
-    let array: [f64; K] = values.as_slice().try_into().map_err(|_| {
-        invalid(key, format!("must have {K} entries, got {}", values.len()))
-    })?;
+    let array: [f64; K] = values
+        .as_slice()
+        .try_into()
+        .map_err(|_| invalid(key, format!("must have {K} entries, got {}", values.len())))?;
     finite(key, array)
 }
 
@@ -105,7 +109,10 @@ fn damping<const K: usize>(key: &str, values: &Option<Vec<f64>>) -> Result<[f64;
     let d = list::<K>(key, values)?;
     match d.iter().position(|x| *x < 0.0) {
         None => Ok(d),
-        Some(i) => Err(invalid(&format!("{key}[{i}]"), format!("must not be negative, got {}", d[i]))),
+        Some(i) => Err(invalid(
+            &format!("{key}[{i}]"),
+            format!("must not be negative, got {}", d[i]),
+        )),
     }
 }
 
@@ -123,30 +130,40 @@ impl SceneLoads {
                 quadratic: damping::<1>("quadratic_damping", &table.quadratic_damping)?[0],
                 mgh: p.restoring_moment(),
             },
-            (family @ (Family::PlanarAtG | Family::PlanarMidship | Family::PlanarSpaceFixed), _) => {
-                SceneLoads::Planar {
-                    space_fixed: family == Family::PlanarSpaceFixed,
-                    force_body: list("force_body", &table.force_body)?,
-                    force_space: list("force_space", &table.force_space)?,
-                    moment: scalar("moment", table.moment)?,
-                    linear: damping("linear_damping", &table.linear_damping)?,
-                    quadratic: damping("quadratic_damping", &table.quadratic_damping)?,
-                }
-            }
+            (
+                family @ (Family::PlanarAtG | Family::PlanarMidship | Family::PlanarSpaceFixed),
+                _,
+            ) => SceneLoads::Planar {
+                space_fixed: family == Family::PlanarSpaceFixed,
+                force_body: list("force_body", &table.force_body)?,
+                force_space: list("force_space", &table.force_space)?,
+                moment: scalar("moment", table.moment)?,
+                linear: damping("linear_damping", &table.linear_damping)?,
+                quadratic: damping("quadratic_damping", &table.quadratic_damping)?,
+            },
             (_, Body::Spatial { mass, .. }) => {
                 let gravity = scalar("gravity", table.gravity)?;
                 let buoyancy = scalar("buoyancy", table.buoyancy)?;
                 if buoyancy < 0.0 {
-                    return Err(invalid("buoyancy", format!("must not be negative, got {buoyancy}")));
+                    return Err(invalid(
+                        "buoyancy",
+                        format!("must not be negative, got {buoyancy}"),
+                    ));
                 }
                 if table.buoyancy_centre.is_some() && table.buoyancy.is_none() {
-                    return Err(invalid("buoyancy_centre", "is given without loads.buoyancy".into()));
+                    return Err(invalid(
+                        "buoyancy_centre",
+                        "is given without loads.buoyancy".into(),
+                    ));
                 }
                 SceneLoads::Spatial {
                     kinematics: selection.info.kinematics.unwrap_or(Kinematics::Quaternion),
                     weight: mass * gravity,
                     buoyancy,
-                    buoyancy_centre: finite("buoyancy_centre", table.buoyancy_centre.unwrap_or([0.0; 3]))?,
+                    buoyancy_centre: finite(
+                        "buoyancy_centre",
+                        table.buoyancy_centre.unwrap_or([0.0; 3]),
+                    )?,
                     force_body: list("force_body", &table.force_body)?,
                     force_space: list("force_space", &table.force_space)?,
                     moment_body: finite("moment_body", table.moment_body.unwrap_or([0.0; 3]))?,
@@ -170,10 +187,16 @@ impl SceneLoads {
                 linear,
                 quadratic,
                 ..
-            } => [force_body.as_slice(), force_space, &[*moment], linear, quadratic]
-                .concat()
-                .iter()
-                .all(|x| *x == 0.0),
+            } => [
+                force_body.as_slice(),
+                force_space,
+                &[*moment],
+                linear,
+                quadratic,
+            ]
+            .concat()
+            .iter()
+            .all(|x| *x == 0.0),
             SceneLoads::Spatial {
                 weight,
                 buoyancy,
@@ -285,7 +308,35 @@ impl SceneLoads {
         }
     }
 
-    /// The potential energy of the loads at a state, where every load has one.
+    /// Whether a load with a potential is present, so that a trajectory has potential and
+    /// total energy columns (a free body's potential is zero, and has none).
+    pub fn has_potential(&self) -> bool {
+        let zero = vec![0.0; 13];
+        match self {
+            SceneLoads::Pendulum { .. } => true,
+            _ => self.potential_energy(&zero).is_some() && !self.is_free_of_potential(),
+        }
+    }
+
+    fn is_free_of_potential(&self) -> bool {
+        match self {
+            SceneLoads::Pendulum { .. } => false,
+            SceneLoads::Planar {
+                force_space,
+                moment,
+                ..
+            } => force_space.iter().all(|x| *x == 0.0) && *moment == 0.0,
+            SceneLoads::Spatial {
+                weight,
+                buoyancy,
+                force_space,
+                ..
+            } => *weight == 0.0 && *buoyancy == 0.0 && force_space.iter().all(|x| *x == 0.0),
+        }
+    }
+
+    /// The potential energy of the loads at a state, where every load has one (zero for a
+    /// free body); `None` where a load has none (body-axis forces, damping).
     pub fn potential_energy(&self, state: &[f64]) -> Option<f64> {
         match self {
             SceneLoads::Pendulum {
@@ -307,7 +358,11 @@ impl SceneLoads {
                 linear,
                 quadratic,
             } => {
-                let conservative = force_body.iter().chain(linear).chain(quadratic).all(|x| *x == 0.0);
+                let conservative = force_body
+                    .iter()
+                    .chain(linear)
+                    .chain(quadratic)
+                    .all(|x| *x == 0.0);
                 let (x, y, psi) = if *space_fixed {
                     (state[0], state[1], state[2])
                 } else {
@@ -335,9 +390,11 @@ impl SceneLoads {
                     .chain(quadratic)
                     .all(|x| *x == 0.0);
                 let position = Vector3::new(state[6], state[7], state[8]);
-                let centre = position + attitude(*kinematics, state) * Vector3::from(*buoyancy_centre);
+                let centre =
+                    position + attitude(*kinematics, state) * Vector3::from(*buoyancy_centre);
                 conservative.then(|| {
-                    -weight * position.z + buoyancy * centre.z - Vector3::from(*force_space).dot(&position)
+                    -weight * position.z + buoyancy * centre.z
+                        - Vector3::from(*force_space).dot(&position)
                 })
             }
         }

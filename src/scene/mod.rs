@@ -22,8 +22,8 @@ pub use select::{Selection, select_spatial};
 
 use crate::integrate::AdaptiveOptions;
 use crate::models::{
-    AnyModel, Family, Kinematics, ModelInfo, Pendulum, PlanarAtG, PlanarMidship,
-    PlanarSpaceFixed, Symmetry,
+    AnyModel, Family, Kinematics, ModelInfo, Pendulum, PlanarAtG, PlanarMidship, PlanarSpaceFixed,
+    Symmetry,
 };
 use crate::{InertiaTensor, ParameterError, PendulumParameters};
 use file::{GivenKeys, SceneFile};
@@ -287,7 +287,6 @@ const PLANAR_LOADS: &[&str] = &[
     "quadratic_damping",
 ];
 
-
 impl Checker<'_> {
     fn error(&self, key: &str, problem: Problem) -> SceneError {
         SceneError::new(self.name, key, problem)
@@ -307,7 +306,8 @@ impl Checker<'_> {
         key: &str,
         check: impl FnOnce() -> Result<f64, ParameterError>,
     ) -> Result<f64, SceneError> {
-        check().map_err(|e| self.invalid(key, format!("must be {}, got {}", e.requirement, e.value)))
+        check()
+            .map_err(|e| self.invalid(key, format!("must be {}, got {}", e.requirement, e.value)))
     }
 
     fn family(&self, name: &str) -> Result<Family, SceneError> {
@@ -350,7 +350,10 @@ impl Checker<'_> {
         match spatial_only.iter().find(|(_, given)| *given) {
             Some((key, _)) if family != Family::Spatial => Err(self.error(
                 key,
-                Problem::Schema(format!("only a spatial scene has it, not a {}", family.name())),
+                Problem::Schema(format!(
+                    "only a spatial scene has it, not a {}",
+                    family.name()
+                )),
             )),
             _ => Ok(()),
         }
@@ -375,7 +378,8 @@ impl Checker<'_> {
             Family::PlanarAtG | Family::PlanarMidship | Family::PlanarSpaceFixed => {
                 let mass = self.required("body.mass", b.mass, "the mass, kg")?;
                 let izz = self.required("body.izz", b.izz, "I_zz about G, kg m²")?;
-                let mass = self.parameter("body.mass", || crate::validate::positive("mass", mass))?;
+                let mass =
+                    self.parameter("body.mass", || crate::validate::positive("mass", mass))?;
                 let izz = self.parameter("body.izz", || crate::validate::positive("izz", izz))?;
                 let x_g = match family {
                     Family::PlanarMidship => {
@@ -392,16 +396,22 @@ impl Checker<'_> {
 
     fn spatial_body(&self, b: &file::BodyTable, base: &Path) -> Result<Body, SceneError> {
         if let Some(path) = &b.file {
-            for (key, given) in [("body.mass", b.mass.is_some()), ("body.inertia", b.inertia.is_some())] {
+            for (key, given) in [
+                ("body.mass", b.mass.is_some()),
+                ("body.inertia", b.inertia.is_some()),
+            ] {
                 if given {
-                    return Err(self.invalid(key, "give either body.file or body.mass and body.inertia, not both"));
+                    return Err(self.invalid(
+                        key,
+                        "give either body.file or body.mass and body.inertia, not both",
+                    ));
                 }
             }
             let description = crate::mass::BodyFile::load(&base.join(path))
-                .map_err(|e| self.error("body.file", Problem::BodyFile(e)))?;
+                .map_err(|e| self.error("body.file", Problem::BodyFile(Box::new(e))))?;
             let properties = description
                 .mass_properties()
-                .map_err(|e| self.error("body.file", Problem::BodyFile(e)))?;
+                .map_err(|e| self.error("body.file", Problem::BodyFile(Box::new(e))))?;
             return Ok(Body::Spatial {
                 mass: properties.mass(),
                 inertia: properties.inertia(),
@@ -469,7 +479,10 @@ impl Checker<'_> {
                 if !extra.is_empty() {
                     names.insert(0, extra);
                 }
-                self.invalid(key, format!("unknown value `{name}`; one of {}", names.join(", ")))
+                self.invalid(
+                    key,
+                    format!("unknown value `{name}`; one of {}", names.join(", ")),
+                )
             })
     }
 
@@ -491,7 +504,8 @@ impl Checker<'_> {
 
     fn initial(&self, file: &SceneFile, selection: &Selection) -> Result<Vec<f64>, SceneError> {
         let i = &file.initial;
-        let scalar = |key: &str, v: Option<f64>| self.finite(&format!("initial.{key}"), v.unwrap_or(0.0));
+        let scalar =
+            |key: &str, v: Option<f64>| self.finite(&format!("initial.{key}"), v.unwrap_or(0.0));
         Ok(match selection.info.family {
             Family::Pendulum => vec![
                 scalar("theta_deg", i.theta_deg)?.to_radians(),
@@ -525,8 +539,9 @@ impl Checker<'_> {
                 state.extend(self.finite3("initial.velocity", i.velocity)?);
                 state.extend(self.finite3("initial.rates", i.rates)?);
                 state.extend(self.finite3("initial.position", i.position)?);
-                let [roll, pitch, yaw] =
-                    self.finite3("initial.attitude_deg", i.attitude_deg)?.map(f64::to_radians);
+                let [roll, pitch, yaw] = self
+                    .finite3("initial.attitude_deg", i.attitude_deg)?
+                    .map(f64::to_radians);
                 match selection.info.kinematics {
                     Some(Kinematics::Euler) => state.extend([roll, pitch, yaw]),
                     _ => {
@@ -546,19 +561,19 @@ impl Checker<'_> {
         loads: &SceneLoads,
     ) -> Result<IntegratorSpec, SceneError> {
         let t = &file.integrator;
-        let method = self.named(
-            "integrator.method",
-            &t.method,
-            Method::ALL,
-            "",
-        )?;
+        let method = self.named("integrator.method", &t.method, Method::ALL, "")?;
         let end_time = self.finite("integrator.end_time", t.end_time)?;
         if end_time <= 0.0 {
-            return Err(self.invalid("integrator.end_time", format!("must be positive, got {end_time}")));
+            return Err(self.invalid(
+                "integrator.end_time",
+                format!("must be positive, got {end_time}"),
+            ));
         }
         let max_steps = match t.max_steps {
             None => DEFAULT_MAX_STEPS,
-            Some(0) => return Err(self.invalid("integrator.max_steps", "must be at least 1, got 0")),
+            Some(0) => {
+                return Err(self.invalid("integrator.max_steps", "must be at least 1, got 0"));
+            }
             Some(n) => usize::try_from(n).unwrap_or(usize::MAX),
         };
         if method == Method::LieMidpoint {
@@ -566,7 +581,13 @@ impl Checker<'_> {
         }
         let (step, adaptive) = if method.is_adaptive() {
             if t.step.is_some() {
-                return Err(self.invalid("integrator.step", format!("{} chooses its own steps; give rtol and atol", method.name())));
+                return Err(self.invalid(
+                    "integrator.step",
+                    format!(
+                        "{} chooses its own steps; give rtol and atol",
+                        method.name()
+                    ),
+                ));
             }
             let rtol = self.tolerance("integrator.rtol", t.rtol)?;
             let atol = self.tolerance("integrator.atol", t.atol)?;
@@ -577,15 +598,23 @@ impl Checker<'_> {
             options.max_steps = max_steps;
             (None, Some(options))
         } else {
-            for (key, given) in [("integrator.rtol", t.rtol.is_some()), ("integrator.atol", t.atol.is_some())] {
+            for (key, given) in [
+                ("integrator.rtol", t.rtol.is_some()),
+                ("integrator.atol", t.atol.is_some()),
+            ] {
                 if given {
-                    return Err(self.invalid(key, format!("{} takes a fixed step; give integrator.step", method.name())));
+                    return Err(self.invalid(
+                        key,
+                        format!("{} takes a fixed step; give integrator.step", method.name()),
+                    ));
                 }
             }
             let step = self.required("integrator.step", t.step, "the fixed step, s")?;
             let step = self.finite("integrator.step", step)?;
             if step <= 0.0 {
-                return Err(self.invalid("integrator.step", format!("must be positive, got {step}")));
+                return Err(
+                    self.invalid("integrator.step", format!("must be positive, got {step}"))
+                );
             }
             let steps = (end_time / step).ceil();
             if steps > max_steps as f64 {
@@ -615,8 +644,13 @@ impl Checker<'_> {
 
     /// The geometric integrator turns a free body's attitude and rates (`RigidRotation`);
     /// the translation of a free body is then exact.
-    fn lie_midpoint_applies(&self, selection: &Selection, loads: &SceneLoads) -> Result<(), SceneError> {
-        let free_quaternion = selection.info.kinematics == Some(Kinematics::Quaternion) && loads.is_free();
+    fn lie_midpoint_applies(
+        &self,
+        selection: &Selection,
+        loads: &SceneLoads,
+    ) -> Result<(), SceneError> {
+        let free_quaternion =
+            selection.info.kinematics == Some(Kinematics::Quaternion) && loads.is_free();
         if free_quaternion {
             Ok(())
         } else {
@@ -635,7 +669,9 @@ impl Checker<'_> {
         if every <= 0.0 || every > end_time {
             return Err(self.invalid(
                 "output.every",
-                format!("must be positive and at most integrator.end_time = {end_time}, got {every}"),
+                format!(
+                    "must be positive and at most integrator.end_time = {end_time}, got {every}"
+                ),
             ));
         }
         Ok(every)

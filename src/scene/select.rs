@@ -54,7 +54,9 @@ pub fn select_spatial(
     kinematics: Kinematics,
 ) -> Result<Selection, String> {
     let (symmetry, reason) = match symmetry {
-        Some(s) if allows(inertia, s) => (s, format!("symmetry = \"{}\" as the scene says", s.name())),
+        Some(s) if allows(inertia, s) => {
+            (s, format!("symmetry = \"{}\" as the scene says", s.name()))
+        }
         Some(s) => {
             let offending: Vec<String> = s
                 .pruned()
@@ -72,7 +74,11 @@ pub fn select_spatial(
         None => auto(inertia),
     };
     let info = ModelInfo::spatial(symmetry, kinematics).ok_or_else(|| {
-        format!("the catalog has no {} {} variant", symmetry.name(), kinematics.name())
+        format!(
+            "the catalog has no {} {} variant",
+            symmetry.name(),
+            kinematics.name()
+        )
     })?;
     Ok(Selection { info, reason })
 }

@@ -53,7 +53,8 @@ pub fn cases(text: &str, name: &str) -> Result<Vec<Case>, SceneError> {
             let values = combination(&axes, index);
             let mut case = table.clone();
             for (key, value) in &values {
-                set(&mut case, key, value.clone()).map_err(|p| error(&format!("sweep.{key}"), p))?;
+                set(&mut case, key, value.clone())
+                    .map_err(|p| error(&format!("sweep.{key}"), p))?;
             }
             let file = deserialize(case, name)?;
             Ok(Case {
@@ -78,9 +79,16 @@ fn axis_values(key: &str, spec: Value) -> Result<Vec<Value>, Problem> {
             let (from, to) = (number("from")?, number("to")?);
             let count = match range.get("count") {
                 Some(Value::Integer(n)) if *n >= 2 => *n as usize,
-                _ => return Err(Problem::Schema("a range needs an integer `count` of at least 2".into())),
+                _ => {
+                    return Err(Problem::Schema(
+                        "a range needs an integer `count` of at least 2".into(),
+                    ));
+                }
             };
-            if let Some(extra) = range.keys().find(|k| !["from", "to", "count"].contains(&k.as_str())) {
+            if let Some(extra) = range
+                .keys()
+                .find(|k| !["from", "to", "count"].contains(&k.as_str()))
+            {
                 return Err(Problem::Schema(format!("unknown key `{extra}` in a range")));
             }
             if !(from.is_finite() && to.is_finite()) {
@@ -88,7 +96,13 @@ fn axis_values(key: &str, spec: Value) -> Result<Vec<Value>, Problem> {
             }
             let step = (to - from) / (count - 1) as f64;
             Ok((0..count)
-                .map(|i| Value::Float(if i + 1 == count { to } else { from + step * i as f64 }))
+                .map(|i| {
+                    Value::Float(if i + 1 == count {
+                        to
+                    } else {
+                        from + step * i as f64
+                    })
+                })
                 .collect())
         }
         _ => Err(Problem::Schema(format!(
@@ -112,7 +126,10 @@ fn combination(axes: &[(String, Vec<Value>)], mut index: usize) -> Vec<(String, 
 /// made.
 fn set(table: &mut Table, key: &str, value: Value) -> Result<(), Problem> {
     let mut parts: Vec<&str> = key.split('.').collect();
-    let last = parts.pop().filter(|p| !p.is_empty()).ok_or_else(|| Problem::Schema("an empty key".into()))?;
+    let last = parts
+        .pop()
+        .filter(|p| !p.is_empty())
+        .ok_or_else(|| Problem::Schema("an empty key".into()))?;
     let mut current = table;
     for part in parts {
         let entry = current
@@ -143,8 +160,12 @@ pub fn parse_shard(text: &str) -> Result<(usize, usize), String> {
         .split_once('/')
         .ok_or_else(|| format!("a shard is K/N, not `{text}`"))?;
     let (k, n): (usize, usize) = (
-        k.trim().parse().map_err(|_| format!("K in K/N is a number, not `{k}`"))?,
-        n.trim().parse().map_err(|_| format!("N in K/N is a number, not `{n}`"))?,
+        k.trim()
+            .parse()
+            .map_err(|_| format!("K in K/N is a number, not `{k}`"))?,
+        n.trim()
+            .parse()
+            .map_err(|_| format!("N in K/N is a number, not `{n}`"))?,
     );
     if n == 0 || k >= n {
         return Err(format!("a shard K/N needs 0 ≤ K < N, not {k}/{n}"));
@@ -184,7 +205,14 @@ end_time = 1.0
             .collect();
         assert_eq!(
             pairs,
-            [(1.0, 10.0), (1.0, 20.0), (1.0, 30.0), (2.0, 10.0), (2.0, 20.0), (2.0, 30.0)]
+            [
+                (1.0, 10.0),
+                (1.0, 20.0),
+                (1.0, 30.0),
+                (2.0, 10.0),
+                (2.0, 20.0),
+                (2.0, 30.0)
+            ]
         );
         assert!(cases.iter().enumerate().all(|(i, c)| c.index == i));
     }
@@ -195,7 +223,10 @@ end_time = 1.0
         let error = cases(&text, "s.toml").unwrap_err();
         assert_eq!(error.key, "sweep.body.mass");
         let text = SCENE.replace("count = 3", "count = 1");
-        assert_eq!(cases(&text, "s.toml").unwrap_err().key, "sweep.initial.theta_deg");
+        assert_eq!(
+            cases(&text, "s.toml").unwrap_err().key,
+            "sweep.initial.theta_deg"
+        );
     }
 
     #[test]
