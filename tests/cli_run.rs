@@ -436,3 +436,49 @@ fn a_sweep_runs_every_case_and_shards_split_them() {
     whole.sort();
     assert_eq!(sharded, whole);
 }
+
+#[test]
+fn tradeoff_recommends_a_setting_that_meets_the_target() {
+    let dir = folder("tradeoff");
+    // The pendulum released from rest, over 2 s: its reference is the exact solution. At
+    // most 10⁵ steps keeps the sweep short in a debug build.
+    let text = std::fs::read_to_string(scene("pendulum.toml"))
+        .unwrap()
+        .replace("end_time = 20.0", "end_time = 2.0\nmax_steps = 100_000");
+    let path = dir.join("pendulum.toml");
+    std::fs::write(&path, text).unwrap();
+    let output = eom()
+        .args([
+            "tradeoff",
+            path.to_str().unwrap(),
+            "--target",
+            "1e-6",
+            "--json",
+        ])
+        .output()
+        .unwrap();
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let value: serde_json::Value = serde_json::from_slice(&output.stdout).unwrap();
+    assert_eq!(value["target"].as_f64(), Some(1e-6));
+    assert!(value["reference"].as_str().unwrap().contains("exact"));
+    let rows = value["rows"].as_array().unwrap();
+    for method in ["euler", "symplectic-euler", "rk4", "dopri5", "dop853"] {
+        assert!(
+            rows.iter().any(|r| r["method"] == method),
+            "no {method} rows"
+        );
+    }
+    let recommended = &value["recommended"];
+    assert!(recommended["error"].as_f64().unwrap() <= 1e-6);
+    // It is the fastest of the rows that meet the target.
+    let fastest = rows
+        .iter()
+        .filter(|r| r["error"].as_f64().is_some_and(|e| e <= 1e-6))
+        .map(|r| r["seconds"].as_f64().unwrap())
+        .fold(f64::INFINITY, f64::min);
+    assert_eq!(recommended["seconds"].as_f64(), Some(fastest));
+}

@@ -7,6 +7,7 @@ mod models;
 mod plots;
 mod run;
 mod swing;
+mod tradeoff;
 mod values;
 
 use clap::Subcommand;
@@ -28,6 +29,9 @@ pub enum Command {
     Eval(eval::Args),
     /// Run a scene file: integrate it and write trajectory.csv, summary.json and SVG plots.
     Run(run::Args),
+    /// Run a scene with every applicable integrator over steps and tolerances, and recommend
+    /// the cheapest setting that meets a target error.
+    Tradeoff(tradeoff::Args),
 }
 
 /// Runs one subcommand, or the default scene when there is none.
@@ -42,6 +46,7 @@ pub fn run(command: Option<Command>) -> anyhow::Result<()> {
         Command::Swing(args) => swing::run(args),
         Command::Eval(args) => eval::run(args),
         Command::Run(args) => run::run_command(args),
+        Command::Tradeoff(args) => tradeoff::run(args),
     }
 }
 

@@ -337,3 +337,5 @@ fn run_error(error: IntegrateError, names: &[String]) -> RunError {
         },
     }
 }
+
+pub mod tradeoff;

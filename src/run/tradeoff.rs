@@ -1,0 +1,245 @@
+//! What each integration choice costs for one scene: every applicable method over a sweep of
+//! steps or tolerances, each end state judged against a reference, and the cheapest setting
+//! that meets a target error.
+//!
+//! The reference is the exact solution where the scene has one (a pendulum released from
+//! rest with no other load: Jacobi's elliptic functions, `reference::LargeSwing`), else
+//! DOP853 at rtol = atol = 1e-13. The error of a run is the largest difference of a state
+//! entry at the end time, relative to the largest entry of the reference state (at least 1):
+//! `max |yᵢ − yᵢ,ref| / max(1, max |yᵢ,ref|)`. Cost is wall time, the best of
+//! [`REPEATS`] runs (a shared machine's noise is one-sided), with the right-hand-side
+//! evaluations beside it.
+
+use super::{Report, Row, RunError, Sink, run};
+use crate::integrate::AdaptiveOptions;
+use crate::reference::LargeSwing;
+use crate::scene::{Body, IntegratorSpec, Method, Scene, SceneLoads};
+
+/// How many times each setting runs; its time is the fastest.
+pub const REPEATS: usize = 3;
+
+/// The tolerances the adaptive methods are swept over.
+pub const TOLERANCES: [f64; 10] = [
+    1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12,
+];
+
+/// The step counts the fixed-step methods are swept over (steps over the whole run).
+pub const STEP_COUNTS: [usize; 9] = [
+    100, 300, 1_000, 3_000, 10_000, 30_000, 100_000, 300_000, 1_000_000,
+];
+
+/// One setting's outcome.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TradeoffRow {
+    /// The method's name in scene files.
+    pub method: &'static str,
+    /// The setting, `step = 0.001` or `rtol = atol = 1e-8`.
+    pub setting: String,
+    /// The end-state error (see the module doc); `None` when the run failed.
+    pub error: Option<f64>,
+    /// Right-hand-side evaluations.
+    pub rhs_evals: usize,
+    /// Wall time, s (best of [`REPEATS`]).
+    pub seconds: f64,
+    /// Why the run failed, if it did.
+    pub failure: Option<String>,
+}
+
+/// The whole sweep.
+#[derive(Debug, Clone)]
+pub struct Tradeoff {
+    /// What the errors are measured against.
+    pub reference: String,
+    /// Every setting, method by method.
+    pub rows: Vec<TradeoffRow>,
+}
+
+impl Tradeoff {
+    /// The fastest setting whose error is at most `target`.
+    pub fn recommend(&self, target: f64) -> Option<&TradeoffRow> {
+        self.rows
+            .iter()
+            .filter(|r| r.error.is_some_and(|e| e <= target))
+            .min_by(|a, b| a.seconds.total_cmp(&b.seconds))
+    }
+}
+
+/// A sink that keeps nothing.
+struct Discard;
+
+impl Sink for Discard {
+    fn row(&mut self, _row: &Row) -> bool {
+        true
+    }
+}
+
+/// Runs `scene` with `spec`, rows only at the start and the end.
+fn end_state(scene: &Scene, spec: IntegratorSpec) -> Result<Report, RunError> {
+    let mut once = scene.clone();
+    once.integrator = spec;
+    once.every = spec.end_time;
+    run(&once, &mut Discard)
+}
+
+/// The methods that apply to a scene.
+fn methods(scene: &Scene) -> Vec<Method> {
+    let mut methods = vec![
+        Method::Euler,
+        Method::SymplecticEuler,
+        Method::Rk4,
+        Method::Dopri5,
+        Method::Dop853,
+    ];
+    let free_quaternion = matches!(
+        scene.loads,
+        SceneLoads::Spatial {
+            kinematics: crate::models::Kinematics::Quaternion,
+            ..
+        }
+    ) && scene.loads.is_free();
+    if free_quaternion {
+        methods.push(Method::LieMidpoint);
+    }
+    methods
+}
+
+/// The settings a method is swept over, within the scene's step limit.
+fn settings(method: Method, scene: &Scene) -> Vec<(IntegratorSpec, String)> {
+    let end = scene.integrator.end_time;
+    let max_steps = scene.integrator.max_steps;
+    if method.is_adaptive() {
+        TOLERANCES
+            .iter()
+            .map(|&tol| {
+                let mut options = match method {
+                    Method::Dopri5 => AdaptiveOptions::dopri5(tol, tol),
+                    _ => AdaptiveOptions::dop853(tol, tol),
+                };
+                options.max_steps = max_steps;
+                let spec = IntegratorSpec {
+                    method,
+                    step: None,
+                    adaptive: Some(options),
+                    end_time: end,
+                    max_steps,
+                };
+                (spec, format!("rtol = atol = {tol:e}"))
+            })
+            .collect()
+    } else {
+        STEP_COUNTS
+            .iter()
+            .filter(|&&n| n <= max_steps)
+            .map(|&n| {
+                let step = end / n as f64;
+                let spec = IntegratorSpec {
+                    method,
+                    step: Some(step),
+                    adaptive: None,
+                    end_time: end,
+                    max_steps,
+                };
+                (spec, format!("step = {step:.4e} s ({n} steps)"))
+            })
+            .collect()
+    }
+}
+
+/// The reference end state, and what it is.
+fn reference(scene: &Scene) -> Result<(Vec<f64>, String), RunError> {
+    if let (
+        Body::Pendulum(parameters),
+        SceneLoads::Pendulum {
+            moment,
+            linear,
+            quadratic,
+            ..
+        },
+    ) = (&scene.body, &scene.loads)
+    {
+        let at_rest =
+            scene.initial[1] == 0.0 && *moment == 0.0 && *linear == 0.0 && *quadratic == 0.0;
+        if at_rest && let Ok(swing) = LargeSwing::new(parameters, scene.initial[0].abs()) {
+            let mut exact = swing.exact(scene.integrator.end_time);
+            if scene.initial[0] < 0.0 {
+                exact = -exact;
+            }
+            return Ok((
+                exact.as_slice().to_vec(),
+                "the exact solution (Jacobi's elliptic functions)".into(),
+            ));
+        }
+    }
+    let mut options = AdaptiveOptions::dop853(1e-13, 1e-13);
+    options.max_steps = usize::MAX / 2;
+    let spec = IntegratorSpec {
+        method: Method::Dop853,
+        step: None,
+        adaptive: Some(options),
+        end_time: scene.integrator.end_time,
+        max_steps: usize::MAX / 2,
+    };
+    let report = end_state(scene, spec)?;
+    Ok((report.final_state, "DOP853 at rtol = atol = 1e-13".into()))
+}
+
+/// `max |yᵢ − yᵢ,ref| / max(1, max |yᵢ,ref|)`.
+fn error(state: &[f64], reference: &[f64]) -> f64 {
+    let scale = reference.iter().fold(1.0f64, |m, x| m.max(x.abs()));
+    let worst = state
+        .iter()
+        .zip(reference)
+        .map(|(a, b)| (a - b).abs())
+        .fold(
+            0.0f64,
+            |m, d| if d.is_nan() { f64::INFINITY } else { m.max(d) },
+        );
+    worst / scale
+}
+
+/// Sweeps every applicable method over its settings.
+pub fn tradeoff(scene: &Scene) -> Result<Tradeoff, RunError> {
+    let (reference_state, reference) = reference(scene)?;
+    let mut rows = Vec::new();
+    for method in methods(scene) {
+        for (spec, setting) in settings(method, scene) {
+            let mut best: Option<Report> = None;
+            let mut failure = None;
+            for _ in 0..REPEATS {
+                match end_state(scene, spec) {
+                    Ok(report) => {
+                        if best
+                            .as_ref()
+                            .is_none_or(|b| report.wall_seconds < b.wall_seconds)
+                        {
+                            best = Some(report);
+                        }
+                    }
+                    Err(e) => {
+                        failure = Some(e.to_string());
+                        break;
+                    }
+                }
+            }
+            rows.push(match (best, failure) {
+                (Some(report), None) => TradeoffRow {
+                    method: method.name(),
+                    setting,
+                    error: Some(error(&report.final_state, &reference_state)),
+                    rhs_evals: report.rhs_evals,
+                    seconds: report.wall_seconds,
+                    failure: None,
+                },
+                (_, failure) => TradeoffRow {
+                    method: method.name(),
+                    setting,
+                    error: None,
+                    rhs_evals: 0,
+                    seconds: f64::NAN,
+                    failure,
+                },
+            });
+        }
+    }
+    Ok(Tradeoff { reference, rows })
+}
