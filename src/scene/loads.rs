@@ -292,15 +292,22 @@ impl SceneLoads {
         else {
             unreachable!()
         };
-        let to_body = attitude(*kinematics, state).inverse();
-        let buoyancy_force = to_body * Vector3::new(0.0, 0.0, -buoyancy);
-        let force = Vector3::from(*force_body)
-            + to_body * Vector3::from(*force_space)
-            + to_body * Vector3::new(0.0, 0.0, *weight)
-            + buoyancy_force;
-        let moment = Vector3::from(*moment_body)
-            + to_body * Vector3::from(*moment_space)
-            + Vector3::from(*buoyancy_centre).cross(&buoyancy_force);
+        let mut force = Vector3::from(*force_body);
+        let mut moment = Vector3::from(*moment_body);
+        let in_space = *weight != 0.0
+            || *buoyancy != 0.0
+            || force_space.iter().chain(moment_space).any(|x| *x != 0.0);
+        // Loads fixed in space are turned into body axes through the attitude; a scene
+        // without any skips the rotation.
+        if in_space {
+            let to_body = attitude(*kinematics, state).inverse();
+            let buoyancy_force = to_body * Vector3::new(0.0, 0.0, -buoyancy);
+            force += to_body * Vector3::from(*force_space)
+                + to_body * Vector3::new(0.0, 0.0, *weight)
+                + buoyancy_force;
+            moment += to_body * Vector3::from(*moment_space)
+                + Vector3::from(*buoyancy_centre).cross(&buoyancy_force);
+        }
         for i in 0..3 {
             let (v, w) = (state[i], state[3 + i]);
             out[i] = force[i] - linear[i] * v - quadratic[i] * v * v.abs();
