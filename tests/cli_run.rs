@@ -221,14 +221,16 @@ fn the_steady_turn_settles_at_the_yaw_rate_of_the_equations_at_rest() {
 
 #[test]
 fn the_other_example_scenes_run() {
-    for (name, variant) in [
-        ("auv.toml", "spatial_xz_euler"),
-        ("looping.toml", "spatial_principal_quaternion"),
+    for (name, variant, plots) in [
+        ("auv.toml", "spatial_xz_euler", &["state.svg", "attitude.svg", "track.svg"][..]),
+        ("looping.toml", "spatial_principal_quaternion", &["state.svg", "attitude.svg", "track.svg"]),
+        ("planar_drift.toml", "planar_at_g", &["state.svg", "track.svg"]),
+        ("puck_in_wind.toml", "planar_space_fixed", &["state.svg", "track.svg", "energy.svg"]),
     ] {
         let out = folder(name.trim_end_matches(".toml"));
         run_scene(name, &out);
         assert_eq!(summary(&out)["variant"], variant, "{name}");
-        check_svgs(&out, &["state.svg", "attitude.svg", "track.svg"]);
+        check_svgs(&out, plots);
     }
 }
 
@@ -481,4 +483,21 @@ fn tradeoff_recommends_a_setting_that_meets_the_target() {
         .map(|r| r["seconds"].as_f64().unwrap())
         .fold(f64::INFINITY, f64::min);
     assert_eq!(recommended["seconds"].as_f64(), Some(fastest));
+}
+
+#[test]
+fn the_puck_in_the_wind_keeps_its_energy_and_spin() {
+    let out = folder("puck");
+    run_scene("puck_in_wind.toml", &out);
+    let (header, rows) = trajectory(&out);
+    assert_eq!(header[..7], ["t", "x", "y", "psi", "x_dot", "y_dot", "psi_dot"]);
+    assert_eq!(header[7..], ["kinetic_energy", "potential_energy", "total_energy"]);
+    // The wind's force is constant in space: the energy T − F·r is conserved, Ẋ does not
+    // change and Ẏ grows at F/M. DOPRI5 at 1e-10: 1e-9 relative.
+    let s = summary(&out);
+    assert!(s["energy_drift"].as_f64().unwrap() < 1e-9, "{}", s["energy_drift"]);
+    let last = rows.last().unwrap();
+    let (t, x_dot, y_dot, spin) = (last[0], last[4], last[5], last[6]);
+    assert!((x_dot - 1.5).abs() < 1e-9 && (spin - 12.0).abs() < 1e-9);
+    assert!((y_dot - 0.05 / 0.17 * t).abs() < 1e-9, "Ẏ = {y_dot}");
 }
