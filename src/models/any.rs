@@ -66,7 +66,10 @@ macro_rules! any_model {
                 mass: f64,
                 inertia: &crate::InertiaTensor,
             ) -> Result<Self, crate::generic::ModelError> {
-                $(any_model!(@spatial $type, symmetry, kinematics, mass, inertia, $family $(($($option),+))?);)*
+                $(any_model!(
+                    @spatial $type, symmetry, kinematics, mass, inertia,
+                    $family $(($($option),+))?
+                );)*
                 unreachable!("the catalog has every spatial variant")
             }
 
@@ -81,7 +84,9 @@ macro_rules! any_model {
                 h: f64,
                 g: f64,
             ) -> Result<Self, crate::generic::ModelError> {
-                $(any_model!(@top $type, kinematics, mass, inertia_at_g, h, g, $family $(($($option),+))?);)*
+                $(any_model!(
+                    @top $type, kinematics, mass, inertia_at_g, h, g, $family $(($($option),+))?
+                );)*
                 unreachable!("the catalog has a top of every kinematics")
             }
         }
