@@ -2,10 +2,9 @@
 //! (the compound pendulum of 4.24 in three dimensions).
 //!
 //! Nothing new is assumed; the equations are put together from the chapter's own pieces:
-//! - the tensor about the pivot, I_O, by Steiner (4.23, computed by
-//!   [`tensor_about_origin`](super::steiner::tensor_about_origin)) from the principal moments
-//!   about G (`Ixx`, `Iyy`, `Izz`, the model's parameters) with G on the body z-axis at
-//!   r_G = (0, 0, h);
+//! - the tensor about the pivot, I_O, by Steiner (4.23, computed from the integrals about O
+//!   and the tensor about G, not copied) from the principal moments about G (`Ixx`, `Iyy`,
+//!   `Izz`, the model's parameters) with G on the body z-axis at r_G = (0, 0, h);
 //! - H_O = \[I_O\]ω, and dH_O/dt = \[dH_O/dt\] + ω × H_O (4.4), which equals the moment about O
 //!   because O is fixed (4.50 taken about the pivot instead of G);
 //! - the weight's moment r_G × Mg, as 4.24 takes it, with gravity g_space = (0, 0, −g) in space
