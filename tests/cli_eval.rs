@@ -294,3 +294,12 @@ fn quaternion_variant_at_ninety_degrees_pitch_omits_only_the_euler_rates() {
         refused.stderr
     );
 }
+
+#[test]
+fn the_top_family_is_refused_with_a_reason_not_a_panic() {
+    fails_naming(
+        &["--model", "top"],
+        "{}",
+        "eval does not cover the top family yet",
+    );
+}

@@ -198,10 +198,13 @@ macro_rules! full_variant {
 /// determinant leaves f64.
 macro_rules! spatial_properties {
     ($($module:ident => $type:ident {
-        family: $family:ident $(($symmetry:ident, $kinematics:ident))?,
+        family: $family:ident $(($($option:ident),+))?,
         state: $n:literal, inputs: $m:literal, title: $title:literal,
-        parameters: [$($parameter:ident),*]
-    },)*) => {$($(
+        parameters: [$($parameter:ident),*], potential_energy: $potential:tt
+    },)*) => {
+        $(spatial_properties!(@item $module $type $family $(($($option),+))?);)*
+    };
+    (@item $module:ident $type:ident Spatial($symmetry:ident, $kinematics:ident)) => {
         mod $module {
             use super::*;
             type Model64 = eom::models::$type<f64>;
@@ -230,7 +233,8 @@ macro_rules! spatial_properties {
                 }
             }
         }
-    )?)*};
+    };
+    (@item $($other:tt)*) => {};
 }
 
 eom::for_each_model!(spatial_properties);

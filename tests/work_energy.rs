@@ -206,10 +206,13 @@ properties! {
 /// loads; without loads energy, |H|² and |q|² stay constant; the energy it reports is 4.32.
 macro_rules! spatial_properties {
     ($($module:ident => $type:ident {
-        family: $family:ident $(($symmetry:ident, $kinematics:ident))?,
+        family: $family:ident $(($($option:ident),+))?,
         state: $n:literal, inputs: $m:literal, title: $title:literal,
-        parameters: [$($parameter:ident),*]
-    },)*) => {$($(
+        parameters: [$($parameter:ident),*], potential_energy: $potential:tt
+    },)*) => {
+        $(spatial_properties!(@item $module $type $family $(($($option),+))?);)*
+    };
+    (@item $module:ident $type:ident Spatial($symmetry:ident, $kinematics:ident)) => {
         mod $module {
             use super::*;
             type Variant = eom::models::$type<f64>;
@@ -221,7 +224,8 @@ macro_rules! spatial_properties {
                 reports_the_kinetic_energy_of_4_32: spatial_case(CLASS, Pitch::Random), kinetic_energy_gap::<Variant>, TOLERANCE;
             }
         }
-    )?)*};
+    };
+    (@item $($other:tt)*) => {};
 }
 
 eom::for_each_model!(spatial_properties);

@@ -79,20 +79,22 @@ macro_rules! bench_spatial {
 /// variants also at large angles.
 macro_rules! spatial_benches {
     ($($module:ident => $type:ident {
-        family: $family:ident $(($symmetry:ident, $kinematics:ident))?,
+        family: $family:ident $(($($option:ident),+))?,
         state: $n:literal, inputs: $m:literal, title: $title:literal,
-        parameters: [$($parameter:ident),*]
+        parameters: [$($parameter:ident),*], potential_energy: $potential:tt
     },)*) => {
         fn spatial<M: Measurement>(c: &mut Criterion<M>, suffix: &str) {
             let mut group = c.benchmark_group(format!("spatial_rhs{suffix}"));
-            $($(
-                let name = stringify!($module).trim_start_matches("spatial_");
-                let tensor = tensor_of(models::Symmetry::$symmetry);
-                spatial_benches!(@variant group, name, models::$type<_>, tensor, $kinematics);
-            )?)*
+            $(spatial_benches!(@item group, $module, $type, $family $(($($option),+))?);)*
             group.finish();
         }
     };
+    (@item $group:ident, $module:ident, $type:ident, Spatial($symmetry:ident, $kinematics:ident)) => {
+        let name = stringify!($module).trim_start_matches("spatial_");
+        let tensor = tensor_of(models::Symmetry::$symmetry);
+        spatial_benches!(@variant $group, name, models::$type<_>, tensor, $kinematics);
+    };
+    (@item $group:ident, $module:ident, $type:ident, $($other:tt)*) => {};
     (@variant $group:ident, $name:ident, $model:ty, $tensor:ident, Euler) => {
         bench_spatial!($group, $name, $model, $tensor.clone(), EULER_STATE, rhs_euler);
         let large = format!("{}_large_angles", $name);

@@ -56,7 +56,10 @@ fn every_single_operation_mutant_fails_the_check() {
         let program = Program::build(&system);
         verify(&system, &program).expect("the unmutated program verifies");
         let mut reached = program.reached(&program.rhs);
-        if let Some(energy) = &program.kinetic_energy {
+        for energy in [&program.kinetic_energy, &program.potential_energy]
+            .into_iter()
+            .flatten()
+        {
             for (r, e) in reached.iter_mut().zip(program.reached(energy)) {
                 *r |= e;
             }

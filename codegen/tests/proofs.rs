@@ -6,7 +6,7 @@ use eom_codegen::derivation;
 use eom_codegen::report;
 use eom_codegen::symbolic::parse;
 
-const REQUIRED: [&str; 24] = [
+const REQUIRED: [&str; 29] = [
     "4.9",
     "4.24",
     "4.39",
@@ -31,6 +31,11 @@ const REQUIRED: [&str; 24] = [
     "4.57 EᵀE",
     "4.59",
     "4.60",
+    "4.23 top",
+    "4.50 top",
+    "4.50 top q",
+    "4.34 top",
+    "4.35 top",
 ];
 
 #[test]

@@ -52,6 +52,10 @@ pub fn run(args: Args) -> Result<()> {
         Family::PlanarMidship => planar_midship(&parse(&text)?)?,
         Family::PlanarSpaceFixed => planar_space(&parse(&text)?)?,
         Family::Spatial => spatial(&parse(&text)?, args.symmetry, args.kinematics)?,
+        Family::Top => bail!(
+            "eval does not cover the top family yet: it has no generic form to print beside \
+             the generated one"
+        ),
     };
     let all = derivative.generated.iter().chain(&derivative.generic);
     if let Some((key, value)) = all.into_iter().find(|(_, x)| !x.is_finite()) {

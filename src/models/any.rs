@@ -22,9 +22,9 @@ pub trait Visitor {
 
 macro_rules! any_model {
     ($($module:ident => $type:ident {
-        family: $family:ident $(($symmetry:ident, $kinematics:ident))?,
+        family: $family:ident $(($($option:ident),+))?,
         state: $n:literal, inputs: $m:literal, title: $title:literal,
-        parameters: [$($parameter:ident),*]
+        parameters: [$($parameter:ident),*], potential_energy: $potential:tt
     },)*) => {
         /// Every typed model of the catalog over `f64`, one variant each.
         #[derive(Debug, Clone, Copy, PartialEq)]
@@ -66,15 +66,45 @@ macro_rules! any_model {
                 mass: f64,
                 inertia: &crate::InertiaTensor,
             ) -> Result<Self, crate::generic::ModelError> {
-                $($(
-                    if symmetry == Symmetry::$symmetry && kinematics == Kinematics::$kinematics {
-                        return Ok($type::new(mass, inertia)?.into());
-                    }
-                )?)*
+                $(any_model!(
+                    @spatial $type, symmetry, kinematics, mass, inertia,
+                    $family $(($($option),+))?
+                );)*
                 unreachable!("the catalog has every spatial variant")
+            }
+
+            /// The top of a body of `mass` with the principal tensor `inertia_at_g` about G, G
+            /// at distance `h` from the pivot along the body z-axis, under gravity `g`, with
+            /// the attitude carried by `kinematics` (see
+            /// [`TopEuler::new`](super::TopEuler::new)).
+            pub fn top(
+                kinematics: Kinematics,
+                mass: f64,
+                inertia_at_g: &crate::InertiaTensor,
+                h: f64,
+                g: f64,
+            ) -> Result<Self, crate::generic::ModelError> {
+                $(any_model!(
+                    @top $type, kinematics, mass, inertia_at_g, h, g, $family $(($($option),+))?
+                );)*
+                unreachable!("the catalog has a top of every kinematics")
             }
         }
     };
+    (@spatial $type:ident, $symmetry:ident, $kinematics:ident, $mass:ident, $inertia:ident,
+        Spatial($class:ident, $attitude:ident)) => {
+        if $symmetry == Symmetry::$class && $kinematics == Kinematics::$attitude {
+            return Ok($type::new($mass, $inertia)?.into());
+        }
+    };
+    (@spatial $($other:tt)*) => {};
+    (@top $type:ident, $kinematics:ident, $mass:ident, $inertia:ident, $h:ident, $g:ident,
+        Top($attitude:ident)) => {
+        if $kinematics == Kinematics::$attitude {
+            return Ok($type::new($mass, $inertia, $h, $g)?.into());
+        }
+    };
+    (@top $($other:tt)*) => {};
 }
 
 for_each_model!(any_model);
@@ -125,6 +155,23 @@ impl AnyModel {
             }
         }
         self.visit(Energy(state))
+    }
+
+    /// The potential energy of a state given as a slice, for a model that has one (the
+    /// pendulum, the top; see [`Model::potential_energy`]).
+    pub fn potential_energy(&self, state: &[f64]) -> Result<Option<f64>, LayoutError> {
+        struct Potential<'a>(&'a [f64]);
+        impl Visitor for Potential<'_> {
+            type Output = Result<Option<f64>, LayoutError>;
+            fn visit<Mo: Model<f64, N, M>, const N: usize, const M: usize>(
+                self,
+                model: &Mo,
+            ) -> Self::Output {
+                let state: [f64; N] = fixed(Mo::NAME, "state entries", self.0)?;
+                Ok(model.potential_energy(&state))
+            }
+        }
+        self.visit(Potential(state))
     }
 }
 

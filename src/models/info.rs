@@ -49,7 +49,7 @@ pub struct ModelInfo {
     pub family: Family,
     /// A spatial model's symmetry class.
     pub symmetry: Option<Symmetry>,
-    /// A spatial model's attitude kinematics.
+    /// A spatial model's or a top's attitude kinematics.
     pub kinematics: Option<Kinematics>,
     /// The state layout, as the model names its entries.
     pub state: &'static [&'static str],
@@ -86,9 +86,9 @@ impl ModelInfo {
     /// The unpruned variant this one is measured against: for a spatial model, the full
     /// tensor with the same kinematics; any other model is its own.
     pub fn full_variant(&self) -> &'static ModelInfo {
-        match self.kinematics {
-            Some(kinematics) => Self::spatial(Symmetry::Full, kinematics),
-            None => Self::find(self.name),
+        match (self.symmetry, self.kinematics) {
+            (Some(_), Some(kinematics)) => Self::spatial(Symmetry::Full, kinematics),
+            _ => Self::find(self.name),
         }
         .expect("the catalog lists the full variant of every kinematics")
     }

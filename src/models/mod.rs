@@ -20,9 +20,13 @@
 //! | [`PlanarSpaceFixed`] | `[X, Y, ψ, Ẋ, Ẏ, ψ̇]` | `[F_X, F_Y, M_z]` space axes |
 //! | [`SpatialFullEuler`], [`SpatialXzEuler`], [`SpatialPrincipalEuler`] | `[u, v, w, p, q, r, x, y, z, φ, θ, ψ]` | force and moment about G, body axes |
 //! | [`SpatialFullQuaternion`], [`SpatialXzQuaternion`], [`SpatialPrincipalQuaternion`] | `[u, v, w, p, q, r, x, y, z, q0, q1, q2, q3]` | force and moment about G, body axes |
+//! | [`TopEuler`] | `[p, q, r, φ, θ, ψ]` | moment about the pivot, body axes |
+//! | [`TopQuaternion`] | `[p, q, r, q0, q1, q2, q3]` | moment about the pivot, body axes |
 //!
 //! The Euler-angle variants are singular at θ = ±90° (4.60 divides by cos θ); use a
-//! quaternion variant for attitudes that may get there.
+//! quaternion variant for attitudes that may get there. The pendulum and the tops also report
+//! their potential energy in the weight's field ([`Model::potential_energy`]): Mg times the
+//! height of G above the pivot.
 
 mod info;
 mod model;
@@ -36,6 +40,7 @@ include!(concat!(env!("OUT_DIR"), "/catalog.rs"));
 
 mod any;
 mod spatial;
+mod top;
 mod typed;
 
 pub use any::{AnyModel, LayoutError, Visitor};

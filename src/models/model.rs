@@ -1,6 +1,7 @@
 //! The one trait every generated model implements, and how a model becomes an ODE system.
 //!
-//! A model knows its state layout, its inputs, its right-hand side and its kinetic energy.
+//! A model knows its state layout, its inputs, its right-hand side and its kinetic energy (and,
+//! in the weight's field, its potential energy).
 //! What acts on it is said separately, by [`Loads`]: constant inputs ([`Constant`]) or a
 //! closure of time and state. [`Model::driven_by`] pairs the two into a [`Driven`] system,
 //! which is an [`OdeSystem`] every integrator of [`crate::integrate`] accepts, so no adapter
@@ -44,6 +45,15 @@ pub trait Model<T: SimdRealField + Copy, const N: usize, const M: usize> {
 
     /// The kinetic energy of `state` (4.32), emitted from the proved form.
     fn kinetic_energy(&self, state: &[T; N]) -> T;
+
+    /// The potential energy of `state` in the weight's field, emitted from the proved form,
+    /// for the models that have one: the pendulum (−Mgh cos θ, 4.35) and the top
+    /// (Mgh cos of the tilt); both are Mg times the height of G above the pivot. `None` for the
+    /// others, which move under their inputs alone.
+    fn potential_energy(&self, state: &[T; N]) -> Option<T> {
+        let _ = state;
+        None
+    }
 
     /// The model under `loads`, as an [`OdeSystem`] for the integrators.
     fn driven_by<L: Loads<T, N, M>>(&self, loads: L) -> Driven<'_, Self, L, M>

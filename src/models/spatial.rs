@@ -26,7 +26,10 @@ pub(super) fn validate(
 pub const PRODUCT_TOLERANCE: f64 = 1e-12;
 
 /// A product that the class prunes must vanish, to [`PRODUCT_TOLERANCE`].
-fn check_symmetry(inertia: &InertiaTensor, symmetry: Symmetry) -> Result<(), ModelError> {
+pub(super) fn check_symmetry(
+    inertia: &InertiaTensor,
+    symmetry: Symmetry,
+) -> Result<(), ModelError> {
     let scale = inertia.ixx().max(inertia.iyy()).max(inertia.izz());
     for &field in symmetry.pruned() {
         let value = match field {
@@ -86,21 +89,21 @@ pub trait FromBody {
 /// entry of its name.
 macro_rules! from_body {
     ($($module:ident => $type:ident {
-        family: $family:ident $(($symmetry:ident, $kinematics:ident))?,
+        family: $family:ident $(($($option:ident),+))?,
         state: $n:literal, inputs: $m:literal, title: $title:literal,
-        parameters: [$($parameter:ident),*]
+        parameters: [$($parameter:ident),*], potential_energy: $potential:tt
     },)*) => {
-        $(from_body!(@impl $module [$($parameter),*] $($symmetry)?);)*
+        $(from_body!(@impl $module [$($parameter),*] $family $(($($option),+))?);)*
     };
-    // Spatial models only: they are the ones with a symmetry class.
-    (@impl $module:ident [$($parameter:ident),*]) => {};
-    (@impl $module:ident [$($parameter:ident),*] $symmetry:ident) => {
+    // Spatial models only: a top's parameters are more than a body (where G is, and gravity).
+    (@impl $module:ident [$($parameter:ident),*] Spatial($symmetry:ident, $kinematics:ident)) => {
         impl FromBody for generated::$module::Parameters {
             fn from_body(mass: f64, inertia: &InertiaTensor) -> Self {
                 Self { $($parameter: from_body!(@entry $parameter, mass, inertia),)* }
             }
         }
     };
+    (@impl $module:ident [$($parameter:ident),*] $($other:tt)*) => {};
     (@entry mass, $mass:ident, $inertia:ident) => { $mass };
     (@entry ixx, $mass:ident, $inertia:ident) => { $inertia.ixx() };
     (@entry iyy, $mass:ident, $inertia:ident) => { $inertia.iyy() };

@@ -2,19 +2,20 @@
 //! parameters and implementing [`Model`].
 //!
 //! The types are written by one macro over the catalog (`for_each_model!`); what differs
-//! between families is only what `new` takes and checks.
+//! between families is only what `new` takes and checks, and whether the model has a
+//! potential energy.
 
 use super::model::Model;
-use super::{FromBody, generated, pendulum, planar, spatial};
+use super::{FromBody, generated, pendulum, planar, spatial, top};
 use crate::InertiaTensor;
 use crate::generic::ModelError;
 use simba::simd::SimdRealField;
 
 macro_rules! typed_models {
     ($($module:ident => $type:ident {
-        family: $family:ident $(($symmetry:ident, $kinematics:ident))?,
+        family: $family:ident $(($($option:ident),+))?,
         state: $n:literal, inputs: $m:literal, title: $title:literal,
-        parameters: [$($parameter:ident),*]
+        parameters: [$($parameter:ident),*], potential_energy: $potential:tt
     },)*) => {$(
         #[doc = concat!(" ", $title)]
         ///
@@ -25,7 +26,7 @@ macro_rules! typed_models {
         }
 
         impl<T: SimdRealField + Copy> $type<T> {
-            typed_models!(@new $module, $family $(($symmetry, $kinematics))?);
+            typed_models!(@new $module, $family $(($($option),+))?);
 
             /// The model of already validated parameters.
             fn from_parameters(parameters: &generated::$module::Parameters) -> Self {
@@ -52,8 +53,17 @@ macro_rules! typed_models {
             fn kinetic_energy(&self, state: &[T; $n]) -> T {
                 generated::$module::kinetic_energy(&self.coefficients, state)
             }
+
+            typed_models!(@potential $module, $n, $potential);
         }
     )*};
+    (@potential $module:ident, $n:literal, true) => {
+        #[inline]
+        fn potential_energy(&self, state: &[T; $n]) -> Option<T> {
+            Some(generated::$module::potential_energy(&self.coefficients, state))
+        }
+    };
+    (@potential $module:ident, $n:literal, false) => {};
     (@new $module:ident, Pendulum) => {
         /// The pendulum of `parameters`, already validated (see
         /// [`PendulumParameters::new`](crate::PendulumParameters::new)).
@@ -86,6 +96,25 @@ macro_rules! typed_models {
         pub fn new(mass: f64, inertia: &InertiaTensor) -> Result<Self, ModelError> {
             let mass = spatial::validate(mass, inertia, super::Symmetry::$symmetry)?;
             Ok(Self::from_parameters(&generated::$module::Parameters::from_body(mass, inertia)))
+        }
+    };
+    (@new $module:ident, Top($kinematics:ident)) => {
+        /// The top of a body of `mass` whose tensor about G, `inertia_at_g`, is in principal
+        /// axes, hung on a pivot at distance `h` from G along the body z-axis (r_G = (0, 0, h)
+        /// from the pivot; `h` of either sign), under gravity `g` along −Z in space axes.
+        ///
+        /// Validates M > 0, a principal tensor (products zero to
+        /// [`PRODUCT_TOLERANCE`](super::PRODUCT_TOLERANCE) of the largest moment), h and g
+        /// finite, and the moments about the pivot (4.23: I_xx + M h², I_yy + M h², I_zz)
+        /// positive and finite.
+        pub fn new(
+            mass: f64,
+            inertia_at_g: &InertiaTensor,
+            h: f64,
+            g: f64,
+        ) -> Result<Self, ModelError> {
+            let top::Body { mass, ixx, iyy, izz, h, g } = top::validate(mass, inertia_at_g, h, g)?;
+            Ok(Self::from_parameters(&generated::$module::Parameters { mass, ixx, iyy, izz, h, g }))
         }
     };
 }

@@ -86,10 +86,13 @@ pub trait Spatial<T>: Sized {
 /// [`Spatial`] for every spatial model of the catalog.
 macro_rules! spatial {
     ($($module:ident => $type:ident {
-        family: $family:ident $(($symmetry:ident, $kinematics:ident))?,
+        family: $family:ident $(($($option:ident),+))?,
         state: $n:literal, inputs: $m:literal, title: $title:literal,
-        parameters: [$($parameter:ident),*]
-    },)*) => {$($(
+        parameters: [$($parameter:ident),*], potential_energy: $potential:tt
+    },)*) => {
+        $(spatial!(@item $module $type $family $(($($option),+))?);)*
+    };
+    (@item $module:ident $type:ident Spatial($symmetry:ident, $kinematics:ident)) => {
         impl<T: SimdRealField + Copy> Spatial<T> for eom::models::$type<T> {
             const NAME: &'static str = stringify!($module);
             const KINEMATICS: Kinematics = Kinematics::$kinematics;
@@ -107,7 +110,8 @@ macro_rules! spatial {
         }
         // Every spatial variant has a symmetry class.
         const _: eom::models::Symmetry = eom::models::Symmetry::$symmetry;
-    )?)*};
+    };
+    (@item $($other:tt)*) => {};
 }
 
 eom::for_each_model!(spatial);

@@ -98,6 +98,14 @@ fn pendulum_energy_is_conserved() -> Result<Equation, SymbolicError> {
     Ok(Equation {
         number: "4.35",
         description: "pendulum energy ½I₀θ̇² − Mgh cos θ is constant along 4.24",
-        components: vec![Component::new("dE/dt", derived, "0", &[])],
+        components: vec![
+            Component::new("dE/dt", derived, "0", &[]),
+            Component::new(
+                "V = −Mg·r_G as the model emits it",
+                super::pendulum::potential_energy(),
+                "-M*g*h*theta.cos()",
+                &[],
+            ),
+        ],
     })
 }

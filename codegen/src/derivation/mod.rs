@@ -13,6 +13,7 @@ pub mod planar;
 pub mod quaternion;
 pub mod spatial;
 mod steiner;
+pub mod top;
 
 use crate::check::{CheckError, Equation};
 use crate::symbolic::{Expr, SymbolicError, Vec3};
@@ -24,9 +25,9 @@ pub use quaternion::Quaternion;
 /// A section's derivations.
 type Section = fn() -> Result<Vec<Equation>, SymbolicError>;
 
-/// Every equation, in the chapter's order.
+/// Every equation, in the chapter's order, then what is built beyond it.
 pub fn all() -> Result<Vec<Equation>, CheckError> {
-    let sections: [(&'static str, Section); 8] = [
+    let sections: [(&'static str, Section); 9] = [
         ("4.9–4.14", momentum::equations),
         ("4.23", steiner::equations),
         ("4.24", pendulum::equations),
@@ -35,6 +36,7 @@ pub fn all() -> Result<Vec<Equation>, CheckError> {
         ("4.49–4.52", spatial::equations),
         ("4.57–4.60", kinematics::equations),
         ("quaternion", quaternion::equations),
+        ("top", top::equations),
     ];
     let mut all = Vec::new();
     for (number, section) in sections {

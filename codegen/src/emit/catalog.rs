@@ -37,7 +37,7 @@ fn catalog_tokens(generated: &[Generated]) -> TokenStream {
     let symmetry_pruned = pruned_tokens();
     let kinematics = enum_tokens(
         "Kinematics",
-        "How a spatial model carries the attitude.",
+        "How a spatial model or a top carries the attitude.",
         &Kinematics::ALL.map(|k| (variant(k), k.name(), k.doc())),
     );
     let family = enum_tokens(
@@ -60,7 +60,8 @@ fn catalog_tokens(generated: &[Generated]) -> TokenStream {
         ///
         /// Each module has `Parameters` (f64, as given), `Coefficients<T>` (every
         /// parameter-only coefficient, computed once), `STATE` and `INPUTS` (the array layouts),
-        /// `OPERATIONS` (the cost of one call), `rhs` and `kinetic_energy`, generic over simba's
+        /// `OPERATIONS` (the cost of one call), `rhs`, `kinetic_energy` and, for a body in the
+        /// weight's field (the pendulum, the top), `potential_energy`, generic over simba's
         /// `SimdRealField`. The typed models in [`crate::models`] validate the parameters; call
         /// these directly only with validated ones.
         pub mod generated {
@@ -71,8 +72,11 @@ fn catalog_tokens(generated: &[Generated]) -> TokenStream {
         pub const CATALOG: [ModelInfo; #count] = [#(#entries),*];
 
         /// Calls the macro named by its argument once, with one item per model of the catalog:
-        /// `module => Type { family: …, state: N, inputs: M, title: "…", parameters: [mass, …] }`, where a spatial family is
-        /// written `Spatial(Symmetry, Kinematics)`. The typed models, `eom eval`, the tests
+        /// `module => Type { family: …, state: N, inputs: M, title: "…", parameters: [mass, …],
+        /// potential_energy: true|false }`, where a spatial family is written
+        /// `Spatial(Symmetry, Kinematics)` and a top `Top(Kinematics)`; `potential_energy`
+        /// says whether the module emits one. A callback matches the family as
+        /// `$family:ident $(($($option:ident),+))?`. The typed models, `eom eval`, the tests
         /// and the benches build their per-model code with it, so that a new variant needs no
         /// edit outside the catalog.
         #[macro_export]
@@ -165,18 +169,19 @@ fn entry_tokens(generated: &Generated) -> TokenStream {
     let type_name = generated.model.type_name();
     let title = &generated.title;
     let family = ident(&variant(generated.model.family()));
-    let (symmetry, kinematics) = match generated.model {
-        Model::Spatial {
-            symmetry,
-            kinematics,
-        } => {
-            let (s, k) = (ident(&variant(symmetry)), ident(&variant(kinematics)));
-            (
-                quote! { Some(Symmetry::#s) },
-                quote! { Some(Kinematics::#k) },
-            )
+    let symmetry = match generated.model {
+        Model::Spatial { symmetry, .. } => {
+            let s = ident(&variant(symmetry));
+            quote! { Some(Symmetry::#s) }
         }
-        _ => (quote! { None }, quote! { None }),
+        _ => quote! { None },
+    };
+    let kinematics = match generated.model.kinematics() {
+        Some(kinematics) => {
+            let k = ident(&variant(kinematics));
+            quote! { Some(Kinematics::#k) }
+        }
+        None => quote! { None },
     };
     quote! {
         ModelInfo {
@@ -204,11 +209,16 @@ fn macro_item_tokens(generated: &Generated) -> TokenStream {
             let (s, k) = (ident(&variant(symmetry)), ident(&variant(kinematics)));
             quote! { Spatial(#s, #k) }
         }
+        Model::Top { kinematics } => {
+            let k = ident(&variant(kinematics));
+            quote! { Top(#k) }
+        }
         model => {
             let family = ident(&variant(model.family()));
             quote! { #family }
         }
     };
+    let potential = generated.potential_energy;
     let n = Literal::usize_unsuffixed(generated.state_len);
     let m = Literal::usize_unsuffixed(generated.inputs_len);
     let title = &generated.title;
@@ -216,7 +226,7 @@ fn macro_item_tokens(generated: &Generated) -> TokenStream {
     quote! {
         #module => #type_name {
             family: #family, state: #n, inputs: #m, title: #title,
-            parameters: [#(#parameters),*]
+            parameters: [#(#parameters),*], potential_energy: #potential
         },
     }
 }

@@ -7,7 +7,7 @@
 //! monomial, 1/|q|² of the quaternion track, is folded as the reciprocal of the stage's symbol:
 //! the stage itself is checked like every other value, and the outputs are compared with the
 //! system's outputs with every other stage substituted back. Each stage and each output must
-//! then equal the system's, term by term; the kinetic energy likewise.
+//! then equal the system's, term by term; the kinetic and potential energies likewise.
 //!
 //! Because the comparison is exact, any change to one operation — a swapped operand, a flipped
 //! sign, a dropped term, a wrong coefficient — leaves a residual and stops the build with the
@@ -17,7 +17,7 @@ use super::program::{Function, Node, Program};
 use crate::model::{BuildError, System};
 use crate::symbolic::{Expr, SymbolicError};
 
-/// Checks that `program` computes exactly the stages, outputs and kinetic energy of `system`.
+/// Checks that `program` computes exactly the stages, outputs and energies of `system`.
 pub fn verify(system: &System, program: &Program) -> Result<(), BuildError> {
     let fail = |what: String, residual: &Expr| BuildError::Verification {
         model: system.name.clone(),
@@ -58,24 +58,41 @@ pub fn verify(system: &System, program: &Program) -> Result<(), BuildError> {
             ));
         }
     }
-    match (&system.kinetic_energy, &program.kinetic_energy) {
-        (None, None) => Ok(()),
-        (Some(wanted), Some(function)) => {
-            let residual = &folded[function.outputs[0].id.index()] - wanted;
-            if residual.is_zero() {
-                Ok(())
-            } else {
-                Err(fail(
-                    "the emitted kinetic energy differs from 4.32".into(),
-                    &residual,
-                ))
+    let energies = [
+        (
+            "kinetic energy",
+            "4.32",
+            &system.kinetic_energy,
+            &program.kinetic_energy,
+        ),
+        (
+            "potential energy",
+            "the proved form",
+            &system.potential_energy,
+            &program.potential_energy,
+        ),
+    ];
+    for (what, source, wanted, function) in energies {
+        match (wanted, function) {
+            (None, None) => {}
+            (Some(wanted), Some(function)) => {
+                let residual = &folded[function.outputs[0].id.index()] - wanted;
+                if !residual.is_zero() {
+                    return Err(fail(
+                        format!("the emitted {what} differs from {source}"),
+                        &residual,
+                    ));
+                }
+            }
+            _ => {
+                return Err(fail(
+                    format!("the program and the system disagree on having a {what}"),
+                    &Expr::zero(),
+                ));
             }
         }
-        _ => Err(fail(
-            "the program and the system disagree on having a kinetic energy".into(),
-            &Expr::zero(),
-        )),
     }
+    Ok(())
 }
 
 fn check_count(

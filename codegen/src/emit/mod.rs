@@ -57,6 +57,8 @@ pub struct Generated {
     pub inputs_len: usize,
     /// The fields of its `Parameters`, in order.
     pub parameters: Vec<String>,
+    /// Whether it emits a `potential_energy` beside its `kinetic_energy`.
+    pub potential_energy: bool,
     /// The strategy that gave the fewest operations.
     pub strategy: Strategy,
     /// The cost of one call.
@@ -112,6 +114,7 @@ pub fn generate(model: Model) -> Result<Generated, EmitError> {
             .iter()
             .map(|p| identifier(p.symbol))
             .collect(),
+        potential_energy: system.potential_energy.is_some(),
         strategy,
         operations,
         source,

@@ -139,6 +139,8 @@ pub struct Program {
     pub rhs: Function,
     /// The kinetic energy, where the system has one.
     pub kinetic_energy: Option<Function>,
+    /// The potential energy, where the system has one.
+    pub potential_energy: Option<Function>,
 }
 
 /// The Rust identifier of a symbol in generated code.
@@ -155,23 +157,38 @@ pub fn rate_name(state: &str) -> String {
 }
 
 impl Program {
-    /// Builds the program of a system: its right-hand side and, where it has one, its
-    /// kinetic energy.
+    /// Builds the program of a system: its right-hand side and, where it has them, its
+    /// kinetic and potential energies.
     pub fn build(system: &System) -> Program {
         let mut builder = Builder::new(system);
         let rhs = builder.function(&system.stages, &rhs_outputs(system));
-        let kinetic_energy = system.kinetic_energy.as_ref().map(|energy| {
-            let target = Target {
-                name: "t".into(),
-                display: "the kinetic energy T".into(),
-            };
-            builder.function(&[], &[("kinetic_energy".into(), target, energy.clone())])
-        });
+        let mut energy = |value: &Option<Expr>, function: &str, name: &str, display: &str| {
+            value.as_ref().map(|value| {
+                let target = Target {
+                    name: name.into(),
+                    display: display.into(),
+                };
+                builder.function(&[], &[(function.into(), target, value.clone())])
+            })
+        };
+        let kinetic_energy = energy(
+            &system.kinetic_energy,
+            "kinetic_energy",
+            "t",
+            "the kinetic energy T",
+        );
+        let potential_energy = energy(
+            &system.potential_energy,
+            "potential_energy",
+            "v",
+            "the potential energy V",
+        );
         Program {
             nodes: builder.nodes,
             coefficients: builder.coefficients,
             rhs,
             kinetic_energy,
+            potential_energy,
         }
     }
 
@@ -435,6 +452,15 @@ impl<'a> Builder<'a> {
         } else {
             format!("The coefficient of {runtime} in {}", target.display)
         };
+        let reciprocal = self
+            .system
+            .reciprocals
+            .iter()
+            .find(|r| *value == Expr::symbol(&r.symbol));
+        if let Some(reciprocal) = reciprocal {
+            let role = format!("The reciprocal `1/({})`, computed once", reciprocal.of);
+            return (identifier(&reciprocal.symbol), role);
+        }
         if let Some(name) = parameter_name(value) {
             return (name, "A parameter, or its reciprocal or half".into());
         }

@@ -2,9 +2,9 @@
 //!
 //! The file holds, for one model: a `Parameters` struct (f64, as the user gives them), a
 //! `Coefficients<T>` struct with every hoisted coefficient, computed once, the layouts and
-//! the operation count as constants, `rhs` and, where the model has one, `kinetic_energy`,
-//! generic over simba's `SimdRealField` so the same functions run on f32, f64, SIMD lanes and
-//! dual numbers. Sine and cosine come from `eom_kernel::sin_cos`, one call for all of a
+//! the operation count as constants, `rhs` and, where the model has them, `kinetic_energy`
+//! and `potential_energy`, generic over simba's `SimdRealField` so the same functions run on
+//! f32, f64, SIMD lanes and dual numbers. Sine and cosine come from `eom_kernel::sin_cos`, one call for all of a
 //! function's angles. There are no inner attributes, so the file can be `include!`d inside a
 //! module.
 //!
@@ -73,17 +73,34 @@ fn file_tokens(
     let coefficients = coefficients_struct(system, program);
     let constants = constants(system, &program.operations(&program.rhs));
     let rhs = rhs_function(system, program, strategy, comments);
-    let energy = program
-        .kinetic_energy
-        .as_ref()
-        .map(|function| energy_function(system, program, function, comments));
+    let kinetic = program.kinetic_energy.as_ref().map(|function| {
+        let comment = format!(
+            "{} (4.32, with what the model's state and symmetry make zero left out)",
+            system.energy_formula.unwrap_or("T = ½Mv·v + ½ωᵀ[I]ω")
+        );
+        let energy = Energy {
+            name: "kinetic_energy",
+            doc: "The kinetic energy of the state (4.32), from the proved form.",
+            comment,
+        };
+        energy_function(system, program, function, energy, comments)
+    });
+    let potential = program.potential_energy.as_ref().map(|function| {
+        let energy = Energy {
+            name: "potential_energy",
+            doc: "The potential energy of the state in the weight's field, from the proved form.",
+            comment: system.potential_formula.unwrap_or("V").to_owned(),
+        };
+        energy_function(system, program, function, energy, comments)
+    });
     quote! {
         use simba::simd::SimdRealField;
         #parameters
         #coefficients
         #constants
         #rhs
-        #energy
+        #kinetic
+        #potential
     }
 }
 
@@ -308,10 +325,21 @@ fn emission_order<'a>(
     first
 }
 
+/// What differs between the emitted energy functions.
+struct Energy {
+    /// The function's name.
+    name: &'static str,
+    /// The first sentence of its doc.
+    doc: &'static str,
+    /// The comment above the returned value: the formula.
+    comment: String,
+}
+
 fn energy_function(
     system: &System,
     program: &Program,
     function: &Function,
+    energy: Energy,
     comments: &mut Vec<String>,
 ) -> TokenStream {
     let n = Literal::usize_unsuffixed(system.state.len());
@@ -325,19 +353,17 @@ fn energy_function(
     }
     let value = writer.expression(output);
     let marker = Literal::usize_unsuffixed(comments.len());
-    comments.push(format!(
-        "{} (4.32, with what the model's state and symmetry make zero left out)",
-        system.energy_formula.unwrap_or("T = ½Mv·v + ½ωᵀ[I]ω")
-    ));
+    comments.push(energy.comment);
     let ops = program.operations(function);
     let doc = format!(
-        " The kinetic energy of the state (4.32), from the proved form. Cost per call: {} add, {} mul.",
-        ops.add, ops.mul
+        " {} Cost per call: {} add, {} mul.",
+        energy.doc, ops.add, ops.mul
     );
+    let name = ident(energy.name);
     quote! {
         #[doc = #doc]
         #[inline]
-        pub fn kinetic_energy<T: SimdRealField + Copy>(k: &Coefficients<T>, state: &[T; #n]) -> T {
+        pub fn #name<T: SimdRealField + Copy>(k: &Coefficients<T>, state: &[T; #n]) -> T {
             let [#(#state),*] = *state;
             #trig
             #(#body)*

@@ -1,6 +1,6 @@
 //! The builders: each family's system from the proved derivations.
 
-use super::solve::{Solution, solve_linear};
+use super::solve::{Solution, solve_diagonal, solve_linear};
 use super::system::{BuildError, CoefficientName, Group, Parameter, Stage, System};
 use super::{Kinematics, Strategy, Symmetry};
 use crate::derivation::energy::{pendulum_kinetic_energy_form, rigid_body_kinetic_energy};
@@ -10,7 +10,7 @@ use crate::derivation::kinematics::{
 use crate::derivation::quaternion::{
     Quaternion, body_to_space_half_angles, quaternion_of_euler_angles, quaternion_rates,
 };
-use crate::derivation::{pendulum as pendulum_eq, planar, spatial as spatial_eq};
+use crate::derivation::{pendulum as pendulum_eq, planar, spatial as spatial_eq, top as top_eq};
 use crate::symbolic::{Expr, SymbolicError, Vec3};
 
 const MASS: Parameter = Parameter {
@@ -92,6 +92,11 @@ pub fn pendulum() -> Result<System, BuildError> {
         }],
         kinetic_energy: Some(pendulum_kinetic_energy_form().map_err(symbolic(name))?),
         energy_formula: Some("T = ½I₀θ̇² (4.34)"),
+        potential_energy: Some(pendulum_eq::potential_energy()),
+        potential_formula: Some(
+            "V = −Mg·r_G = −Mgh cos θ (4.35), zero with G level with the pivot; 4.34's \
+             U = Mgh(1 − cos θ) is V + Mgh",
+        ),
         coefficient_names: vec![],
     })
 }
@@ -148,7 +153,7 @@ fn planar_body_fixed(model: BodyFixed, residuals: &[Expr; 3]) -> Result<System, 
         title: title.into(),
         equations,
         parameters,
-        reciprocals: solution.reciprocal.clone().into_iter().collect(),
+        reciprocals: solution.reciprocals.clone(),
         state: vec!["u", "v", "r", "X", "Y", "psi"],
         inputs: vec!["F_x", "F_y", "M_z"],
         stages: vec![],
@@ -165,6 +170,8 @@ fn planar_body_fixed(model: BodyFixed, residuals: &[Expr; 3]) -> Result<System, 
         ],
         kinetic_energy: Some(kinetic_energy),
         energy_formula: Some(energy_formula),
+        potential_energy: None,
+        potential_formula: None,
         coefficient_names: inverse_names(&solution, "inv_mass_matrix", "M", &["u", "v", "r"]),
     })
 }
@@ -244,6 +251,8 @@ pub fn planar_space_fixed() -> Result<System, BuildError> {
             Expr::symbol("psi_dot"),
         )?),
         energy_formula: Some("T = ½M(Ẋ² + Ẏ²) + ½I_zz ψ̇²"),
+        potential_energy: None,
+        potential_formula: None,
         coefficient_names: vec![],
     })
 }
@@ -332,11 +341,18 @@ fn momentum_stages(name: &str, products: &[&str]) -> Result<(Vec<Stage>, Vec<Exp
     Ok((stages, rest))
 }
 
-/// Euler-angle kinematics. The track E·v (4.57) is turned one elementary rotation at a time,
-/// Rz(ψ)(Ry(θ)(Rx(φ) v)): 12 multiplications, where forming the nine entries of E and then E·v
-/// takes 24. The rates follow 4.60 through ω in the frame before the roll, ω₃ = Rx(φ)ω:
-/// θ̇ = ω₃y, ψ̇ = ω₃z sec θ and φ̇ = p + ψ̇ sin θ (= p + ω₃z tan θ, sharing the product).
+/// Euler-angle kinematics: the track E·v (4.57), then the rates (4.60).
 fn euler_kinematics() -> (Vec<Stage>, Vec<Expr>) {
+    let (mut stages, mut outputs) = euler_track();
+    let (rate_stages, rates) = euler_rates();
+    stages.extend(rate_stages);
+    outputs.extend(rates);
+    (stages, outputs)
+}
+
+/// The track E·v (4.57), turned one elementary rotation at a time, Rz(ψ)(Ry(θ)(Rx(φ) v)):
+/// 12 multiplications, where forming the nine entries of E and then E·v takes 24.
+fn euler_track() -> (Vec<Stage>, Vec<Expr>) {
     let mut stages: Vec<Stage> = Vec::new();
     let u = Expr::symbol("u");
     let rolled = rotation_x("phi").mul_vec(&Vec3::symbols(["u", "v", "w"]));
@@ -347,7 +363,14 @@ fn euler_kinematics() -> (Vec<Stage>, Vec<Expr>) {
     stages.push(("pitched_x".into(), pitched.0[0].clone()));
     stages.push(("pitched_z".into(), pitched.0[2].clone()));
     let pitched = Vec3::symbols(["pitched_x", "rolled_y", "pitched_z"]);
-    let mut outputs = rotation_z("psi").mul_vec(&pitched).0.to_vec();
+    (stages, rotation_z("psi").mul_vec(&pitched).0.to_vec())
+}
+
+/// The Euler-angle rates (4.60), through ω in the frame before the roll, ω₃ = Rx(φ)ω:
+/// θ̇ = ω₃y, ψ̇ = ω₃z sec θ and φ̇ = p + ψ̇ sin θ (= p + ω₃z tan θ, sharing the product).
+fn euler_rates() -> (Vec<Stage>, Vec<Expr>) {
+    let mut stages: Vec<Stage> = Vec::new();
+    let mut outputs = Vec::new();
     let (q, r) = (Expr::symbol("q"), Expr::symbol("r"));
     let (s, c) = (Expr::sin("phi"), Expr::cos("phi"));
     stages.push(("omega3_y".into(), &q * &c - &r * &s));
@@ -366,9 +389,14 @@ fn euler_kinematics() -> (Vec<Stage>, Vec<Expr>) {
 fn euler_kinematics_expected(name: &str) -> Result<Vec<Expr>, BuildError> {
     let v = Vec3::symbols(["u", "v", "w"]);
     let mut expected = body_to_space().mul_vec(&v).0.to_vec();
-    let inverse = euler_rate_matrix().inverse().map_err(symbolic(name))?;
-    expected.extend(inverse.mul_vec(&Vec3::symbols(["p", "q", "r"])).0);
+    expected.extend(euler_rates_expected(name)?);
     Ok(expected)
+}
+
+/// The Euler-angle rates as 4.60 gives them: the inverse of 4.59 times ω.
+fn euler_rates_expected(name: &str) -> Result<Vec<Expr>, BuildError> {
+    let inverse = euler_rate_matrix().inverse().map_err(symbolic(name))?;
+    Ok(inverse.mul_vec(&Vec3::symbols(["p", "q", "r"])).0.to_vec())
 }
 
 /// Quaternion kinematics: v + 2(q₀t + q_v × t)/|q|² with t = q_v × v — the sandwich
@@ -388,17 +416,23 @@ fn quaternion_kinematics(name: &str) -> Result<(Vec<Stage>, Vec<Expr>), BuildErr
     stages.push(("two_over_norm2".into(), &Expr::int(2) * &inverse_norm2));
     let scale = Expr::symbol("two_over_norm2");
     let mut outputs: Vec<Expr> = (0..3).map(|i| &v.0[i] + &(&scale * &s[i])).collect();
+    let (rate_stages, rates) = quaternion_attitude_rates(name)?;
+    stages.extend(rate_stages);
+    outputs.extend(rates);
+    Ok((stages, outputs))
+}
+
+/// q̇ = ½ q ⊗ (0, ω), with the half rates staged.
+fn quaternion_attitude_rates(name: &str) -> Result<(Vec<Stage>, Vec<Expr>), BuildError> {
     let half = crate::symbolic::parse("1/2").map_err(symbolic(name))?;
-    let (half_stages, half_rates) = stage_all(
+    let (stages, half_rates) = stage_all(
         &["p_half", "q_half", "r_half"],
         &Vec3::symbols(["p", "q", "r"]).scale(&half).0,
     );
-    stages.extend(half_stages);
     let product = Quaternion::symbols().times(&Quaternion::pure(&Vec3(
         half_rates.try_into().expect("three components"),
     )));
-    outputs.extend(product.0);
-    Ok((stages, outputs))
+    Ok((stages, product.0.to_vec()))
 }
 
 /// The quaternion position rate equals E·v for every unit quaternion: both sides are
@@ -489,7 +523,7 @@ pub fn spatial(
         title: format!("Spatial 6-DOF motion, {symmetry:?} inertia, {kinematics:?} kinematics"),
         equations,
         parameters: inertia_parameters(symmetry),
-        reciprocals: rotation_solution.reciprocal.clone().into_iter().collect(),
+        reciprocals: rotation_solution.reciprocals.clone(),
         state: all_state,
         inputs: vec!["F_x", "F_y", "F_z", "M_x", "M_y", "M_z"],
         stages,
@@ -497,6 +531,8 @@ pub fn spatial(
         groups: spatial_groups(symmetry, kinematics),
         kinetic_energy: Some(kinetic_energy),
         energy_formula: Some("T = ½M(u² + v² + w²) + ½ωᵀ[I]ω"),
+        potential_energy: None,
+        potential_formula: None,
         coefficient_names: inverse_names(&rotation_solution, "inv_inertia", "I", &["x", "y", "z"]),
     };
     let mut checks: Vec<(usize, Expr)> = expected.into_iter().enumerate().collect();
@@ -505,6 +541,124 @@ pub fn spatial(
         checks.extend((9..13).zip(rates.0));
         verify_quaternion_position(&system)?;
     }
+    verify_outputs(&system, &checks)?;
+    Ok(system)
+}
+
+/// The top's parameters: the body about G in principal axes, where G is, and gravity.
+fn top_parameters() -> Vec<Parameter> {
+    vec![
+        MASS,
+        Parameter {
+            symbol: "Ixx",
+            doc: "principal moment of inertia I_xx about G (4.13)",
+        },
+        Parameter {
+            symbol: "Iyy",
+            doc: "principal moment of inertia I_yy about G (4.13)",
+        },
+        Parameter {
+            symbol: "Izz",
+            doc: "principal moment of inertia I_zz about G, about the body z-axis through the \
+                  pivot and G (4.13)",
+        },
+        Parameter {
+            symbol: "h",
+            doc: "distance h from the pivot to G along the body z-axis",
+        },
+        Parameter {
+            symbol: "g",
+            doc: "gravitational acceleration g, along −Z in space axes",
+        },
+    ]
+}
+
+/// The heavy top about a fixed point: 4.50 about the pivot with I_O by Steiner (4.23) under
+/// the weight's moment r_G × Mg (`derivation::top`), solved for ṗ, q̇, ṙ (I_O is constant and
+/// diagonal), with Euler-angle rates (4.60, staged as in [`spatial`]) or q̇ = ½ q ⊗ (0, ω).
+pub fn top(kinematics: Kinematics) -> Result<System, BuildError> {
+    let model = super::Model::Top { kinematics };
+    let name = model.name();
+    let err = symbolic(&name);
+    let euler = kinematics == Kinematics::Euler;
+    let rotation = top_eq::rotation(euler);
+    let lhs = top_eq::euler_equations(&rotation).map_err(&err)?;
+    let moments = Vec3::symbols(["M_x", "M_y", "M_z"]);
+    let residuals: Vec<Expr> = (0..3).map(|i| &lhs.0[i] - &moments.0[i]).collect();
+    let solution = solve_diagonal(
+        &name,
+        &residuals,
+        &["p_dot", "q_dot", "r_dot"],
+        &["inv_Ixx_O", "inv_Iyy_O", "inv_Izz_O"],
+    )?;
+    let mut outputs = solved(&solution);
+    let mut expected = solved(&solution);
+    let (stages, attitude_rates, equations, attitude, title, comment) = match kinematics {
+        Kinematics::Euler => {
+            let (stages, rates) = euler_rates();
+            expected.extend(euler_rates_expected(&name)?);
+            (
+                stages,
+                rates,
+                vec!["4.23 top", "4.50 top", "4.60"],
+                vec!["phi", "theta", "psi"],
+                "Heavy top about a fixed point, Euler-angle kinematics",
+                "4.60: the Euler-angle rates",
+            )
+        }
+        Kinematics::Quaternion => {
+            let (stages, rates) = quaternion_attitude_rates(&name)?;
+            expected.extend(quaternion_rates().map_err(&err)?.0);
+            (
+                stages,
+                rates,
+                vec!["4.23 top", "4.50 top q", "4.60 q"],
+                vec!["q0", "q1", "q2", "q3"],
+                "Heavy top about a fixed point, quaternion kinematics",
+                "4.60 by the quaternion: q̇ = ½ q ⊗ (0, ω)",
+            )
+        }
+    };
+    outputs.extend(attitude_rates);
+    let mut state = vec!["p", "q", "r"];
+    state.extend(attitude);
+    let potential_formula = if euler {
+        "V = −Mg·E r_G = Mgh cos φ cos θ: Mg times the height of G above the pivot"
+    } else {
+        "V = −Mg·R(q) r_G = Mgh(q0² − q1² − q2² + q3²): Mg times the height of G above the \
+         pivot, times |q|² as the weight is"
+    };
+    let system = System {
+        name: name.clone(),
+        title: title.into(),
+        equations,
+        parameters: top_parameters(),
+        reciprocals: solution.reciprocals.clone(),
+        state,
+        inputs: vec!["M_x", "M_y", "M_z"],
+        stages,
+        outputs,
+        groups: vec![
+            Group {
+                first: 0,
+                comment: "4.50 about the pivot, I_O by Steiner (4.23): Euler's equations under \
+                          the weight's moment r_G × Mg, body axes"
+                    .into(),
+            },
+            Group {
+                first: 3,
+                comment: comment.into(),
+            },
+        ],
+        kinetic_energy: Some(top_eq::kinetic_energy().map_err(&err)?),
+        energy_formula: Some(
+            "T = ½M|ω × r_G|² + ½ωᵀ[I_G]ω = ½ωᵀ[I_O]ω, I_O = diag(I_xx + Mh², I_yy + Mh², I_zz)",
+        ),
+        potential_energy: Some(top_eq::potential_energy(&rotation)),
+        potential_formula: Some(potential_formula),
+        coefficient_names: inverse_names(&solution, "inv_inertia", "I_O", &["x", "y", "z"]),
+    };
+    let checks: Vec<(usize, Expr)> = expected.into_iter().enumerate().collect();
     verify_outputs(&system, &checks)?;
     Ok(system)
 }

@@ -9,7 +9,7 @@ mod families;
 mod solve;
 mod system;
 
-pub use solve::{Solution, solve_linear};
+pub use solve::{Solution, solve_diagonal, solve_linear};
 pub use system::{BuildError, CoefficientName, Group, Parameter, Reciprocal, Stage, System};
 
 /// Which products of inertia the body has.
@@ -64,7 +64,8 @@ impl Symmetry {
 /// How the attitude is carried.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Kinematics {
-    /// Euler angles (φ, θ, ψ): position by 4.57, attitude by 4.60; singular at θ = ±90°.
+    /// Euler angles (φ, θ, ψ): attitude by 4.60 (a spatial model's position by 4.57);
+    /// singular at θ = ±90°.
     Euler,
     /// A unit quaternion (q0, q1, q2, q3), scalar first: q̇ = ½ q ⊗ (0, ω).
     Quaternion,
@@ -86,7 +87,8 @@ impl Kinematics {
     pub fn doc(self) -> &'static str {
         match self {
             Kinematics::Euler => {
-                "Euler angles (φ, θ, ψ): position by 4.57, attitude by 4.60; singular at θ = ±90°."
+                "Euler angles (φ, θ, ψ): attitude by 4.60 (a spatial model's position by 4.57); \
+                 singular at θ = ±90°."
             }
             Kinematics::Quaternion => {
                 "A quaternion (q0, q1, q2, q3), scalar first: q̇ = ½ q ⊗ (0, ω); no singularity."
@@ -108,16 +110,19 @@ pub enum Family {
     PlanarSpaceFixed,
     /// Spatial 6-DOF.
     Spatial,
+    /// The heavy top about a fixed point.
+    Top,
 }
 
 impl Family {
     /// Every family, in catalog order.
-    pub const ALL: [Family; 5] = [
+    pub const ALL: [Family; 6] = [
         Family::Pendulum,
         Family::PlanarAtG,
         Family::PlanarMidship,
         Family::PlanarSpaceFixed,
         Family::Spatial,
+        Family::Top,
     ];
 
     /// The name in scene files and on the command line.
@@ -128,6 +133,7 @@ impl Family {
             Family::PlanarMidship => "planar-midship",
             Family::PlanarSpaceFixed => "planar-space",
             Family::Spatial => "spatial",
+            Family::Top => "top",
         }
     }
 
@@ -139,6 +145,10 @@ impl Family {
             Family::PlanarMidship => "Planar, body-fixed axes at midship, 4.46 + 4.44.",
             Family::PlanarSpaceFixed => "Planar, space-fixed axes, 4.39.",
             Family::Spatial => "Spatial 6-DOF, 4.49 + 4.51 with Euler angles or a quaternion.",
+            Family::Top => {
+                "Heavy top about a fixed point: Euler's equations about the pivot (4.50 with \
+                 Steiner 4.23) under gravity."
+            }
         }
     }
 }
@@ -182,6 +192,12 @@ pub enum Model {
         /// How the attitude is carried.
         kinematics: Kinematics,
     },
+    /// The heavy top: a body turning about a fixed pivot under its weight (4.50 about the
+    /// pivot with I_O by 4.23), state (p, q, r) and the attitude.
+    Top {
+        /// How the attitude is carried.
+        kinematics: Kinematics,
+    },
 }
 
 impl Model {
@@ -201,6 +217,9 @@ impl Model {
                 });
             }
         }
+        for kinematics in Kinematics::ALL {
+            all.push(Model::Top { kinematics });
+        }
         all
     }
 
@@ -215,6 +234,7 @@ impl Model {
                 symmetry,
                 kinematics,
             } => format!("spatial_{}_{}", symmetry.name(), kinematics.name()),
+            Model::Top { kinematics } => format!("top_{}", kinematics.name()),
         }
     }
 
@@ -240,6 +260,7 @@ impl Model {
             Model::PlanarMidship => Family::PlanarMidship,
             Model::PlanarSpaceFixed => Family::PlanarSpaceFixed,
             Model::Spatial { .. } => Family::Spatial,
+            Model::Top { .. } => Family::Top,
         }
     }
 
@@ -253,7 +274,18 @@ impl Model {
                     kinematics: Kinematics::Quaternion,
                     ..
                 }
+                | Model::Top {
+                    kinematics: Kinematics::Quaternion
+                }
         )
+    }
+
+    /// How the model carries its attitude, if it has one in three dimensions.
+    pub fn kinematics(&self) -> Option<Kinematics> {
+        match *self {
+            Model::Spatial { kinematics, .. } | Model::Top { kinematics } => Some(kinematics),
+            _ => None,
+        }
     }
 
     /// The strategies worth trying for this model.
@@ -275,6 +307,7 @@ impl Model {
                 symmetry,
                 kinematics,
             } => families::spatial(symmetry, kinematics, strategy),
+            Model::Top { kinematics } => families::top(kinematics),
         }
     }
 }

@@ -87,6 +87,11 @@ pub struct System {
     pub kinetic_energy: Option<Expr>,
     /// The energy's formula in the model's own symbols, for the generated comment.
     pub energy_formula: Option<&'static str>,
+    /// The potential energy of the state, for a model in a field (the weight of a body on a
+    /// pivot), from the same vectors as the field's moment.
+    pub potential_energy: Option<Expr>,
+    /// The potential's formula in the model's own symbols, for the generated comment.
+    pub potential_formula: Option<&'static str>,
     /// Names for parameter expressions that have one in the chapter (the entries of an
     /// inverse mass matrix or inertia tensor): a hoisted coefficient equal to one of them, up
     /// to sign, takes its name and description.

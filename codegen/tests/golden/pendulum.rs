@@ -22,6 +22,8 @@ pub struct Coefficients<T> {
     pub theta_dot_dot_sin_theta: T,
     /// A parameter, or its reciprocal or half: `1/2*I0`.
     pub half_i0: T,
+    /// The coefficient of cos(theta) in the potential energy V: `M*g*h`.
+    pub v_cos_theta: T,
 }
 impl<T: SimdRealField + Copy> Coefficients<T> {
     /// Computes the coefficients (in f64, then converted to `T`).
@@ -34,6 +36,7 @@ impl<T: SimdRealField + Copy> Coefficients<T> {
             inv_i0: T::from_subset(&(1.0 / (i0))),
             theta_dot_dot_sin_theta: T::from_subset(&(mass * g * h / (i0))),
             half_i0: T::from_subset(&(0.5 * i0)),
+            v_cos_theta: T::from_subset(&(mass * g * h)),
         }
     }
 }
@@ -78,4 +81,15 @@ pub fn kinetic_energy<T: SimdRealField + Copy>(
     let [_, theta_dot] = *state;
     // T = ½I₀θ̇² (4.34) (4.32, with what the model's state and symmetry make zero left out)
     k.half_i0 * (theta_dot * theta_dot)
+}
+/// The potential energy of the state in the weight's field, from the proved form. Cost per call: 1 add, 1 mul.
+#[inline]
+pub fn potential_energy<T: SimdRealField + Copy>(
+    k: &Coefficients<T>,
+    state: &[T; 2],
+) -> T {
+    let [theta, _] = *state;
+    let [(_, cos_theta)] = eom_kernel::sin_cos([theta]);
+    // V = −Mg·r_G = −Mgh cos θ (4.35), zero with G level with the pivot; 4.34's U = Mgh(1 − cos θ) is V + Mgh
+    -k.v_cos_theta * cos_theta
 }
