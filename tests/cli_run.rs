@@ -222,10 +222,26 @@ fn the_steady_turn_settles_at_the_yaw_rate_of_the_equations_at_rest() {
 #[test]
 fn the_other_example_scenes_run() {
     for (name, variant, plots) in [
-        ("auv.toml", "spatial_xz_euler", &["state.svg", "attitude.svg", "track.svg"][..]),
-        ("looping.toml", "spatial_principal_quaternion", &["state.svg", "attitude.svg", "track.svg"]),
-        ("planar_drift.toml", "planar_at_g", &["state.svg", "track.svg"]),
-        ("puck_in_wind.toml", "planar_space_fixed", &["state.svg", "track.svg", "energy.svg"]),
+        (
+            "auv.toml",
+            "spatial_xz_euler",
+            &["state.svg", "attitude.svg", "track.svg"][..],
+        ),
+        (
+            "looping.toml",
+            "spatial_principal_quaternion",
+            &["state.svg", "attitude.svg", "track.svg"],
+        ),
+        (
+            "planar_drift.toml",
+            "planar_at_g",
+            &["state.svg", "track.svg"],
+        ),
+        (
+            "puck_in_wind.toml",
+            "planar_space_fixed",
+            &["state.svg", "track.svg", "energy.svg"],
+        ),
     ] {
         let out = folder(name.trim_end_matches(".toml"));
         run_scene(name, &out);
@@ -490,14 +506,70 @@ fn the_puck_in_the_wind_keeps_its_energy_and_spin() {
     let out = folder("puck");
     run_scene("puck_in_wind.toml", &out);
     let (header, rows) = trajectory(&out);
-    assert_eq!(header[..7], ["t", "x", "y", "psi", "x_dot", "y_dot", "psi_dot"]);
-    assert_eq!(header[7..], ["kinetic_energy", "potential_energy", "total_energy"]);
+    assert_eq!(
+        header[..7],
+        ["t", "x", "y", "psi", "x_dot", "y_dot", "psi_dot"]
+    );
+    assert_eq!(
+        header[7..],
+        ["kinetic_energy", "potential_energy", "total_energy"]
+    );
     // The wind's force is constant in space: the energy T − F·r is conserved, Ẋ does not
     // change and Ẏ grows at F/M. DOPRI5 at 1e-10: 1e-9 relative.
     let s = summary(&out);
-    assert!(s["energy_drift"].as_f64().unwrap() < 1e-9, "{}", s["energy_drift"]);
+    assert!(
+        s["energy_drift"].as_f64().unwrap() < 1e-9,
+        "{}",
+        s["energy_drift"]
+    );
     let last = rows.last().unwrap();
     let (t, x_dot, y_dot, spin) = (last[0], last[4], last[5], last[6]);
     assert!((x_dot - 1.5).abs() < 1e-9 && (spin - 12.0).abs() < 1e-9);
     assert!((y_dot - 0.05 / 0.17 * t).abs() < 1e-9, "Ẏ = {y_dot}");
+}
+
+#[test]
+fn the_heavy_top_keeps_its_energy_spin_and_vertical_momentum() {
+    let out = folder("heavy_top");
+    run_scene("heavy_top.toml", &out);
+    let (header, rows) = trajectory(&out);
+    assert_eq!(header[..8], ["t", "p", "q", "r", "q0", "q1", "q2", "q3"]);
+    assert_eq!(
+        header[8..],
+        ["kinetic_energy", "potential_energy", "total_energy"]
+    );
+    let s = summary(&out);
+    assert_eq!(s["variant"], "top_quaternion");
+    // DOP853 at 1e-11 over 10 s: the energy to 1e-9 of its size.
+    assert!(
+        s["energy_drift"].as_f64().unwrap() < 1e-9,
+        "{}",
+        s["energy_drift"]
+    );
+    // A symmetric top keeps its spin r (I_xx = I_yy: ṙ = 0 exactly) and H_Z, the vertical
+    // component of its angular momentum about the pivot, H_O = I_O ω turned into space.
+    let (mass, h) = (1.0, 0.5);
+    let i_o = [0.25 + mass * h * h, 0.25 + mass * h * h, 0.2];
+    let vertical = |row: &Vec<f64>| {
+        let q = nalgebra::UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(
+            row[4], row[5], row[6], row[7],
+        ));
+        let momentum = nalgebra::Vector3::new(i_o[0] * row[1], i_o[1] * row[2], i_o[2] * row[3]);
+        (q * momentum).z
+    };
+    let (r0, h0) = (rows[0][3], vertical(&rows[0]));
+    for row in &rows {
+        assert!(
+            (row[3] - r0).abs() < 1e-9 * r0,
+            "spin {} at t = {}",
+            row[3],
+            row[0]
+        );
+        assert!(
+            (vertical(row) - h0).abs() < 1e-9 * h0.abs().max(1.0),
+            "H_Z at t = {}",
+            row[0]
+        );
+    }
+    check_svgs(&out, &["state.svg", "attitude.svg", "energy.svg"]);
 }

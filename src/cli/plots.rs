@@ -12,21 +12,29 @@ pub fn write(scene: &Scene, columns: &Columns, out: &Path) -> Result<Vec<PathBuf
     let names = scene.state_names();
     let info = scene.selection.info;
     let attitude = match (info.family, info.kinematics) {
-        (Family::Spatial, Some(kinematics)) => Some(attitude_deg(columns, kinematics)),
+        (Family::Spatial, Some(kinematics)) => Some(attitude_deg(columns, kinematics, 9)),
+        (Family::Top, Some(kinematics)) => Some(attitude_deg(columns, kinematics, 3)),
         _ => None,
     };
     let track = match info.family {
-        Family::Pendulum => None,
+        Family::Pendulum | Family::Top => None,
         Family::PlanarSpaceFixed => Some((0, 1)),
         Family::PlanarAtG | Family::PlanarMidship => Some((3, 4)),
         Family::Spatial => Some((6, 7)),
     };
+    // The drift relative to the larger of |E₀| and the largest kinetic energy, as the summary's
+    // energy_drift (a potential's zero is a convention, so E₀ alone may be 0).
+    let scale = columns.kinetic.iter().fold(0.0f64, |m, t| m.max(t.abs()));
     let drift: Option<Vec<f64>> = scene
         .loads
         .potential_energy(&scene.initial)
         .and(columns.energy.first())
-        .filter(|e0| **e0 != 0.0)
-        .map(|&e0| columns.energy.iter().map(|e| (e - e0) / e0.abs()).collect());
+        .map(|&e0| e0.abs().max(scale))
+        .filter(|scale| *scale > 0.0)
+        .map(|scale| {
+            let e0 = columns.energy[0];
+            columns.energy.iter().map(|e| (e - e0) / scale).collect()
+        });
     let input = PlotInput {
         title: &scene.title,
         time: &columns.time,
@@ -44,15 +52,18 @@ pub fn write(scene: &Scene, columns: &Columns, out: &Path) -> Result<Vec<PathBuf
     write_plots(out, &input).with_context(|| format!("drawing the plots into {}", out.display()))
 }
 
-/// Roll, pitch and yaw in degrees of every kept row.
-fn attitude_deg(columns: &Columns, kinematics: Kinematics) -> [Vec<f64>; 3] {
+/// Roll, pitch and yaw in degrees of every kept row, the attitude from state entry `first`.
+fn attitude_deg(columns: &Columns, kinematics: Kinematics, first: usize) -> [Vec<f64>; 3] {
     let mut angles: [Vec<f64>; 3] = Default::default();
     let mut state = vec![0.0; columns.state.len()];
     for row in 0..columns.time.len() {
         for (entry, column) in state.iter_mut().zip(&columns.state) {
             *entry = column[row];
         }
-        for (angle, value) in angles.iter_mut().zip(euler_angles(kinematics, &state)) {
+        for (angle, value) in angles
+            .iter_mut()
+            .zip(euler_angles(kinematics, &state[first..]))
+        {
             angle.push(value.to_degrees());
         }
     }

@@ -135,7 +135,9 @@ struct Outcome {
 fn run_case(scene: &Scene, name: &str, out: &Path, progress: bool) -> Result<Outcome> {
     std::fs::create_dir_all(out).with_context(|| format!("creating {}", out.display()))?;
     let names = scene.state_names();
-    let with_potential = scene.loads.has_potential();
+    // Potential and total energy columns where the model or the loads have a potential.
+    let model_potential = scene.selection.info.potential_energy;
+    let with_potential = model_potential || scene.loads.has_potential();
     let rows = (scene.integrator.end_time / scene.every) as usize + 1;
     let csv_path = out.join("trajectory.csv");
     let mut writer = TrajectoryWriter::create(&csv_path, &names, with_potential, rows)
@@ -261,7 +263,9 @@ fn print_outcome(scene: &Scene, outcome: &Outcome, out: &Path) {
         report.wall_seconds
     );
     if let Some(drift) = report.energy_drift {
-        println!("  energy drift {drift:.2e} (largest |E − E₀|/|E₀| over the rows)");
+        println!(
+            "  energy drift {drift:.2e} (largest |E − E₀| over the rows, relative to max(|E₀|, largest T))"
+        );
     }
     println!("  wrote into {}:", out.display());
     for file in &outcome.files {

@@ -57,6 +57,9 @@ pub struct ModelInfo {
     pub inputs: &'static [&'static str],
     /// What one call costs.
     pub operations: Operations,
+    /// Whether the model has a potential energy of its own (the pendulum's and the top's
+    /// weight): [`Model::potential_energy`](super::Model::potential_energy) gives it.
+    pub potential_energy: bool,
 }
 
 impl ModelInfo {

@@ -42,6 +42,8 @@ pub struct Columns {
     /// The total energy (kinetic plus potential), where the loads have a potential, else the
     /// kinetic energy.
     pub energy: Vec<f64>,
+    /// The kinetic energy.
+    pub kinetic: Vec<f64>,
 }
 
 impl TrajectoryWriter {
@@ -141,6 +143,7 @@ impl TrajectoryWriter {
             self.kept
                 .energy
                 .push(row.kinetic_energy + row.potential_energy.unwrap_or(0.0));
+            self.kept.kinetic.push(row.kinetic_energy);
         }
         self.rows += 1;
     }

@@ -46,6 +46,16 @@ pub enum SceneLoads {
         /// Quadratic damping of (u, v, r).
         quadratic: [f64; 3],
     },
+    /// A heavy top: a constant moment about the pivot in body axes and damping of (p, q, r)
+    /// (gravity is in the model).
+    Top {
+        /// Constant moment, body axes.
+        moment_body: [f64; 3],
+        /// Linear damping of (p, q, r).
+        linear: [f64; 3],
+        /// Quadratic damping of (p, q, r).
+        quadratic: [f64; 3],
+    },
     /// A spatial body.
     Spatial {
         /// Euler angles or a quaternion in the state.
@@ -141,6 +151,11 @@ impl SceneLoads {
                 linear: damping("linear_damping", &table.linear_damping)?,
                 quadratic: damping("quadratic_damping", &table.quadratic_damping)?,
             },
+            (Family::Top, _) => SceneLoads::Top {
+                moment_body: finite("moment_body", table.moment_body.unwrap_or([0.0; 3]))?,
+                linear: damping("linear_damping", &table.linear_damping)?,
+                quadratic: damping("quadratic_damping", &table.quadratic_damping)?,
+            },
             (_, Body::Spatial { mass, .. }) => {
                 let gravity = scalar("gravity", table.gravity)?;
                 let buoyancy = scalar("buoyancy", table.buoyancy)?;
@@ -179,7 +194,7 @@ impl SceneLoads {
     /// True when nothing acts on the body at all.
     pub fn is_free(&self) -> bool {
         match self {
-            SceneLoads::Pendulum { .. } => false,
+            SceneLoads::Pendulum { .. } | SceneLoads::Top { .. } => false,
             SceneLoads::Planar {
                 force_body,
                 force_space,
@@ -233,6 +248,16 @@ impl SceneLoads {
             } => {
                 let rate = state[1];
                 out[0] = moment - linear * rate - quadratic * rate * rate.abs();
+            }
+            SceneLoads::Top {
+                moment_body,
+                linear,
+                quadratic,
+            } => {
+                for i in 0..3 {
+                    let w = state[i];
+                    out[i] = moment_body[i] - linear[i] * w - quadratic[i] * w * w.abs();
+                }
             }
             SceneLoads::Planar { .. } => self.planar_inputs(state, out),
             SceneLoads::Spatial { .. } => self.spatial_inputs(state, out),
@@ -300,7 +325,7 @@ impl SceneLoads {
         // Loads fixed in space are turned into body axes through the attitude; a scene
         // without any skips the rotation.
         if in_space {
-            let to_body = attitude(*kinematics, state).inverse();
+            let to_body = attitude(*kinematics, &state[9..]).inverse();
             let buoyancy_force = to_body * Vector3::new(0.0, 0.0, -buoyancy);
             force += to_body * Vector3::from(*force_space)
                 + to_body * Vector3::new(0.0, 0.0, *weight)
@@ -319,15 +344,13 @@ impl SceneLoads {
     /// total energy columns (a free body's potential is zero, and has none).
     pub fn has_potential(&self) -> bool {
         let zero = vec![0.0; 13];
-        match self {
-            SceneLoads::Pendulum { .. } => true,
-            _ => self.potential_energy(&zero).is_some() && !self.is_free_of_potential(),
-        }
+        self.potential_energy(&zero).is_some() && !self.is_free_of_potential()
     }
 
     fn is_free_of_potential(&self) -> bool {
         match self {
-            SceneLoads::Pendulum { .. } => false,
+            SceneLoads::Pendulum { moment, .. } => *moment == 0.0,
+            SceneLoads::Top { .. } => true,
             SceneLoads::Planar {
                 force_space,
                 moment,
@@ -350,13 +373,22 @@ impl SceneLoads {
                 moment,
                 linear,
                 quadratic,
-                mgh,
+                ..
             } => {
+                // Gravity is the model's own potential (4.35); the constant moment's is −M_O θ.
                 let conservative = *linear == 0.0 && *quadratic == 0.0;
-                // 4.35 measured from the bottom, M g h (1 − cos θ), and −M_O θ.
-                let gravity = 2.0 * mgh * (0.5 * state[0]).sin().powi(2);
-                conservative.then(|| gravity - moment * state[0])
+                conservative.then(|| -moment * state[0])
             }
+            SceneLoads::Top {
+                moment_body,
+                linear,
+                quadratic,
+            } => moment_body
+                .iter()
+                .chain(linear)
+                .chain(quadratic)
+                .all(|x| *x == 0.0)
+                .then_some(0.0),
             SceneLoads::Planar {
                 space_fixed,
                 force_body,
@@ -408,24 +440,29 @@ impl SceneLoads {
     }
 }
 
-/// The rotation from body to space axes of a spatial state (E of 4.57, or the quaternion's,
-/// normalised).
-pub(crate) fn attitude(kinematics: Kinematics, state: &[f64]) -> Rotation3<f64> {
+/// The rotation from body to space axes of an attitude, `[φ, θ, ψ]` (E of 4.57) or
+/// `[q0, q1, q2, q3]` (normalised).
+pub(crate) fn attitude(kinematics: Kinematics, a: &[f64]) -> Rotation3<f64> {
     match kinematics {
-        Kinematics::Euler => Rotation3::from_euler_angles(state[9], state[10], state[11]),
+        Kinematics::Euler => Rotation3::from_euler_angles(a[0], a[1], a[2]),
         Kinematics::Quaternion => {
-            let q = Quaternion::new(state[9], state[10], state[11], state[12]);
+            let q = Quaternion::new(a[0], a[1], a[2], a[3]);
             UnitQuaternion::from_quaternion(q).to_rotation_matrix()
         }
     }
 }
 
-/// The roll, pitch and yaw of a spatial state, radians.
-pub fn euler_angles(kinematics: Kinematics, state: &[f64]) -> [f64; 3] {
+/// Roll, pitch and yaw, radians, of an attitude as the model carries it (the state from its
+/// attitude entries on: index 9 of a spatial state, 3 of a top's).
+pub fn euler_angles(kinematics: Kinematics, attitude_entries: &[f64]) -> [f64; 3] {
     match kinematics {
-        Kinematics::Euler => [state[9], state[10], state[11]],
+        Kinematics::Euler => [
+            attitude_entries[0],
+            attitude_entries[1],
+            attitude_entries[2],
+        ],
         Kinematics::Quaternion => {
-            let (r, p, y) = attitude(kinematics, state).euler_angles();
+            let (r, p, y) = attitude(kinematics, attitude_entries).euler_angles();
             [r, p, y]
         }
     }

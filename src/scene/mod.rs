@@ -23,7 +23,7 @@ pub use select::{Selection, select_spatial};
 use crate::integrate::AdaptiveOptions;
 use crate::models::{
     AnyModel, Family, Kinematics, ModelInfo, Pendulum, PlanarAtG, PlanarMidship, PlanarSpaceFixed,
-    Symmetry,
+    Symmetry, TopEuler, TopQuaternion,
 };
 use crate::{InertiaTensor, ParameterError, PendulumParameters};
 use file::{GivenKeys, SceneFile};
@@ -69,6 +69,18 @@ pub enum Body {
         mass: f64,
         /// The tensor about G, body axes.
         inertia: InertiaTensor,
+    },
+    /// A heavy top: mass, the principal tensor about G, G at h along the body z-axis from
+    /// the pivot, gravity g.
+    Top {
+        /// M.
+        mass: f64,
+        /// The tensor about G, principal axes.
+        inertia: InertiaTensor,
+        /// Pivot to G along the body z-axis.
+        h: f64,
+        /// Gravity, along −Z in the top's space axes.
+        g: f64,
     },
 }
 
@@ -192,6 +204,15 @@ impl Scene {
             (Body::Planar { mass, izz, .. }, _) => PlanarSpaceFixed::new(*mass, *izz)
                 .expect("checked when the scene was read")
                 .into(),
+            (
+                Body::Top {
+                    mass,
+                    inertia,
+                    h,
+                    g,
+                },
+                _,
+            ) => top(info, *mass, inertia, *h, *g).expect("checked when the scene was read"),
             (Body::Spatial { mass, inertia }, _) => AnyModel::spatial(
                 info.symmetry.expect("a spatial model has a symmetry class"),
                 info.kinematics.expect("a spatial model has a kinematics"),
@@ -212,6 +233,20 @@ impl Scene {
             .map(|s| s.to_lowercase())
             .collect()
     }
+}
+
+/// The top of a catalog entry, as a model chosen at run time.
+fn top(
+    info: &ModelInfo,
+    mass: f64,
+    inertia: &InertiaTensor,
+    h: f64,
+    g: f64,
+) -> Result<AnyModel, crate::generic::ModelError> {
+    Ok(match info.kinematics {
+        Some(Kinematics::Euler) => TopEuler::new(mass, inertia, h, g)?.into(),
+        _ => TopQuaternion::new(mass, inertia, h, g)?.into(),
+    })
 }
 
 /// Reads scene text into its tables: a syntax error, an unknown key or a wrong type names the
@@ -260,6 +295,11 @@ fn family_keys(family: Family) -> FamilyKeys {
             body: &["mass", "izz", "x_g"],
             initial: &["u", "v", "r", "x", "y", "psi_deg"],
             loads: PLANAR_LOADS,
+        },
+        Family::Top => FamilyKeys {
+            body: &["mass", "inertia", "h", "g"],
+            initial: &["rates", "attitude_deg"],
+            loads: &["moment_body", "linear_damping", "quadratic_damping"],
         },
         Family::Spatial => FamilyKeys {
             body: &["mass", "inertia", "file"],
@@ -343,19 +383,23 @@ impl Checker<'_> {
                 ));
             }
         }
-        let spatial_only = [
-            ("model.symmetry", file.model.symmetry.is_some()),
-            ("model.kinematics", file.model.kinematics.is_some()),
+        let has_attitude = matches!(family, Family::Spatial | Family::Top);
+        let misplaced = [
+            (
+                "model.symmetry",
+                file.model.symmetry.is_some() && family != Family::Spatial,
+            ),
+            (
+                "model.kinematics",
+                file.model.kinematics.is_some() && !has_attitude,
+            ),
         ];
-        match spatial_only.iter().find(|(_, given)| *given) {
-            Some((key, _)) if family != Family::Spatial => Err(self.error(
+        match misplaced.iter().find(|(_, misplaced)| *misplaced) {
+            Some((key, _)) => Err(self.error(
                 key,
-                Problem::Schema(format!(
-                    "only a spatial scene has it, not a {}",
-                    family.name()
-                )),
+                Problem::Schema(format!("a {} scene does not take it", family.name())),
             )),
-            _ => Ok(()),
+            None => Ok(()),
         }
     }
 
@@ -391,7 +435,35 @@ impl Checker<'_> {
                 Ok(Body::Planar { mass, izz, x_g })
             }
             Family::Spatial => self.spatial_body(b, base),
+            Family::Top => self.top_body(b),
         }
+    }
+
+    fn top_body(&self, b: &file::BodyTable) -> Result<Body, SceneError> {
+        let mass = self.required("body.mass", b.mass, "the mass, kg")?;
+        let rows = b
+            .inertia
+            .ok_or_else(|| self.missing("body.inertia", "the principal tensor about G, kg m²"))?;
+        let inertia = InertiaTensor::from_matrix(Matrix3::from_fn(|r, c| rows[r][c]))
+            .map_err(|e| self.invalid("body.inertia", e.to_string()))?;
+        let h = self.required("body.h", b.h, "pivot to G along the body z-axis, m")?;
+        let g = self.required("body.g", b.g, "gravity, m/s²")?;
+        let info = ModelInfo::of_family(Family::Top)
+            .next()
+            .expect("the catalog has a top");
+        top(info, mass, &inertia, h, g).map_err(|e| {
+            let key = match &e {
+                crate::generic::ModelError::Parameter(p) => format!("body.{}", p.field),
+                _ => "body.inertia".to_owned(),
+            };
+            self.invalid(&key, e.to_string())
+        })?;
+        Ok(Body::Top {
+            mass,
+            inertia,
+            h,
+            g,
+        })
     }
 
     fn spatial_body(&self, b: &file::BodyTable, base: &Path) -> Result<Body, SceneError> {
@@ -434,6 +506,19 @@ impl Checker<'_> {
         family: Family,
         body: &Body,
     ) -> Result<Selection, SceneError> {
+        if family == Family::Top {
+            let kinematics = self.kinematics(file)?;
+            let info = ModelInfo::of_family(family)
+                .find(|i| i.kinematics == Some(kinematics))
+                .expect("the catalog has a top of each kinematics");
+            return Ok(Selection {
+                info,
+                reason: format!(
+                    "a top with {} kinematics, as the scene says",
+                    kinematics.name()
+                ),
+            });
+        }
         let Body::Spatial { inertia, .. } = body else {
             let info = ModelInfo::of_family(family)
                 .next()
@@ -449,17 +534,22 @@ impl Checker<'_> {
                 "auto",
             )?),
         };
-        let kinematics = match file.model.kinematics.as_deref() {
-            None => Kinematics::Quaternion,
+        let kinematics = self.kinematics(file)?;
+        select_spatial(inertia, symmetry, kinematics)
+            .map_err(|message| self.invalid("model.symmetry", message))
+    }
+
+    /// `model.kinematics`, quaternion when the scene leaves it out.
+    fn kinematics(&self, file: &SceneFile) -> Result<Kinematics, SceneError> {
+        match file.model.kinematics.as_deref() {
+            None => Ok(Kinematics::Quaternion),
             Some(name) => self.named(
                 "model.kinematics",
                 name,
                 Kinematics::ALL.map(|k| (k, k.name())),
                 "",
-            )?,
-        };
-        select_spatial(inertia, symmetry, kinematics)
-            .map_err(|message| self.invalid("model.symmetry", message))
+            ),
+        }
     }
 
     /// One of `values` by its name, or an error listing the names.
@@ -539,17 +629,32 @@ impl Checker<'_> {
                 state.extend(self.finite3("initial.velocity", i.velocity)?);
                 state.extend(self.finite3("initial.rates", i.rates)?);
                 state.extend(self.finite3("initial.position", i.position)?);
-                let [roll, pitch, yaw] = self
-                    .finite3("initial.attitude_deg", i.attitude_deg)?
-                    .map(f64::to_radians);
-                match selection.info.kinematics {
-                    Some(Kinematics::Euler) => state.extend([roll, pitch, yaw]),
-                    _ => {
-                        let q = UnitQuaternion::from_euler_angles(roll, pitch, yaw);
-                        state.extend([q.w, q.i, q.j, q.k]);
-                    }
-                }
+                state.extend(self.attitude(i, selection)?);
                 state
+            }
+            Family::Top => {
+                let mut state = Vec::with_capacity(7);
+                state.extend(self.finite3("initial.rates", i.rates)?);
+                state.extend(self.attitude(i, selection)?);
+                state
+            }
+        })
+    }
+
+    /// `initial.attitude_deg` as the model carries it: Euler angles or a quaternion.
+    fn attitude(
+        &self,
+        i: &file::InitialTable,
+        selection: &Selection,
+    ) -> Result<Vec<f64>, SceneError> {
+        let [roll, pitch, yaw] = self
+            .finite3("initial.attitude_deg", i.attitude_deg)?
+            .map(f64::to_radians);
+        Ok(match selection.info.kinematics {
+            Some(Kinematics::Euler) => vec![roll, pitch, yaw],
+            _ => {
+                let q = UnitQuaternion::from_euler_angles(roll, pitch, yaw);
+                vec![q.w, q.i, q.j, q.k]
             }
         })
     }

@@ -164,6 +164,7 @@ fn module_tokens(generated: &Generated) -> TokenStream {
 }
 
 fn entry_tokens(generated: &Generated) -> TokenStream {
+    let potential = generated.potential_energy;
     let name = &generated.name;
     let module = ident(name);
     let type_name = generated.model.type_name();
@@ -194,6 +195,7 @@ fn entry_tokens(generated: &Generated) -> TokenStream {
             state: &generated::#module::STATE,
             inputs: &generated::#module::INPUTS,
             operations: Operations::from_table(generated::#module::OPERATIONS),
+            potential_energy: #potential,
         }
     }
 }
