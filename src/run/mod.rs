@@ -286,10 +286,10 @@ fn free_rotation<const N: usize>(
     };
     debug_assert!(matches!(
         scene.loads,
-        SceneLoads::Spatial {
+        SceneLoads::Spatial(crate::scene::SpatialLoads {
             kinematics: Kinematics::Quaternion,
             ..
-        }
+        })
     ));
     let x = &scene.initial;
     let attitude =

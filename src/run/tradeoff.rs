@@ -92,10 +92,10 @@ fn methods(scene: &Scene) -> Vec<Method> {
     ];
     let free_quaternion = matches!(
         scene.loads,
-        SceneLoads::Spatial {
+        SceneLoads::Spatial(crate::scene::SpatialLoads {
             kinematics: crate::models::Kinematics::Quaternion,
             ..
-        }
+        })
     ) && scene.loads.is_free();
     if free_quaternion {
         methods.push(Method::LieMidpoint);
@@ -147,18 +147,8 @@ fn settings(method: Method, scene: &Scene) -> Vec<(IntegratorSpec, String)> {
 
 /// The reference end state, and what it is.
 fn reference(scene: &Scene) -> Result<(Vec<f64>, String), RunError> {
-    if let (
-        Body::Pendulum(parameters),
-        SceneLoads::Pendulum {
-            moment,
-            linear,
-            quadratic,
-            ..
-        },
-    ) = (&scene.body, &scene.loads)
-    {
-        let at_rest =
-            scene.initial[1] == 0.0 && *moment == 0.0 && *linear == 0.0 && *quadratic == 0.0;
+    if let (Body::Pendulum(parameters), SceneLoads::Pendulum(_)) = (&scene.body, &scene.loads) {
+        let at_rest = scene.initial[1] == 0.0 && scene.loads.is_free();
         if at_rest && let Ok(swing) = LargeSwing::new(parameters, scene.initial[0].abs()) {
             let mut exact = swing.exact(scene.integrator.end_time);
             if scene.initial[0] < 0.0 {

@@ -2,14 +2,15 @@
 //!
 //! A model takes its inputs in its own axes (body axes about G for the spatial and body-fixed
 //! planar models, space axes for the space-fixed planar model, a moment about the pivot for
-//! the pendulum). A scene states loads where they are natural — gravity and buoyancy in space,
-//! thrust in body axes, damping on the body velocities — and [`SceneLoads`] turns them into
-//! the model's inputs at each state, through the attitude the state carries.
+//! the pendulum and the top). A scene states loads where they are natural — gravity and
+//! buoyancy in space, thrust in body axes, damping on the body velocities — and
+//! [`SceneLoads`] turns them into the model's inputs at each state, through the attitude the
+//! state carries.
 //!
-//! Where every load has a potential (gravity, buoyancy, constant space forces, the
-//! pendulum's and the planar body's constant moment), [`SceneLoads::potential_energy`] gives
-//! it, so a run can report the total energy and its drift; body-axis forces and damping have
-//! none.
+//! Where every load has a potential (gravity, buoyancy, constant space forces, the planar and
+//! the pendulum's constant moment), [`SceneLoads::potential_energy`] gives it, so a run can
+//! report the total energy and its drift; body-axis forces and damping have none. The
+//! pendulum's and the top's own weight is in their models.
 
 use super::file::LoadsTable;
 use super::{Body, Problem, Selection};
@@ -19,66 +20,78 @@ use nalgebra::{Quaternion, Rotation3, UnitQuaternion, Vector3};
 /// A scene's loads, by family.
 #[derive(Debug, Clone, PartialEq)]
 pub enum SceneLoads {
-    /// The pendulum: a constant moment about the pivot and damping of θ̇ (gravity is in
-    /// the model).
-    Pendulum {
-        /// Constant moment, N m.
-        moment: f64,
-        /// Linear damping coefficient.
-        linear: f64,
-        /// Quadratic damping coefficient.
-        quadratic: f64,
-        /// M g h, for the potential energy.
-        mgh: f64,
-    },
+    /// The pendulum.
+    Pendulum(PendulumLoads),
+    /// The heavy top.
+    Top(TopLoads),
     /// A planar body.
-    Planar {
-        /// Whether the model's state is space-fixed (4.39) rather than body-fixed.
-        space_fixed: bool,
-        /// Constant force, body axes.
-        force_body: [f64; 2],
-        /// Constant force, space axes.
-        force_space: [f64; 2],
-        /// Constant moment about the vertical.
-        moment: f64,
-        /// Linear damping of (u, v, r).
-        linear: [f64; 3],
-        /// Quadratic damping of (u, v, r).
-        quadratic: [f64; 3],
-    },
-    /// A heavy top: a constant moment about the pivot in body axes and damping of (p, q, r)
-    /// (gravity is in the model).
-    Top {
-        /// Constant moment, body axes.
-        moment_body: [f64; 3],
-        /// Linear damping of (p, q, r).
-        linear: [f64; 3],
-        /// Quadratic damping of (p, q, r).
-        quadratic: [f64; 3],
-    },
+    Planar(PlanarLoads),
     /// A spatial body.
-    Spatial {
-        /// Euler angles or a quaternion in the state.
-        kinematics: Kinematics,
-        /// The weight M g, N, along +Z.
-        weight: f64,
-        /// The buoyancy B, N, along −Z.
-        buoyancy: f64,
-        /// The centre of buoyancy relative to G, body axes.
-        buoyancy_centre: [f64; 3],
-        /// Constant force, body axes.
-        force_body: [f64; 3],
-        /// Constant force, space axes.
-        force_space: [f64; 3],
-        /// Constant moment, body axes.
-        moment_body: [f64; 3],
-        /// Constant moment, space axes.
-        moment_space: [f64; 3],
-        /// Linear damping of (u, v, w, p, q, r).
-        linear: [f64; 6],
-        /// Quadratic damping of (u, v, w, p, q, r).
-        quadratic: [f64; 6],
-    },
+    Spatial(SpatialLoads),
+}
+
+/// The pendulum's: a constant moment about the pivot and damping of θ̇.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PendulumLoads {
+    /// Constant moment, N m.
+    pub moment: f64,
+    /// Linear damping coefficient.
+    pub linear: f64,
+    /// Quadratic damping coefficient.
+    pub quadratic: f64,
+}
+
+/// The top's: a constant moment about the pivot in body axes and damping of (p, q, r).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TopLoads {
+    /// Constant moment, body axes.
+    pub moment_body: [f64; 3],
+    /// Linear damping of (p, q, r).
+    pub linear: [f64; 3],
+    /// Quadratic damping of (p, q, r).
+    pub quadratic: [f64; 3],
+}
+
+/// A planar body's.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PlanarLoads {
+    /// Whether the model's state is space-fixed (4.39) rather than body-fixed.
+    pub space_fixed: bool,
+    /// Constant force, body axes.
+    pub force_body: [f64; 2],
+    /// Constant force, space axes.
+    pub force_space: [f64; 2],
+    /// Constant moment about the vertical.
+    pub moment: f64,
+    /// Linear damping of (u, v, r).
+    pub linear: [f64; 3],
+    /// Quadratic damping of (u, v, r).
+    pub quadratic: [f64; 3],
+}
+
+/// A spatial body's.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SpatialLoads {
+    /// Euler angles or a quaternion in the state.
+    pub kinematics: Kinematics,
+    /// The weight M g, N, along +Z.
+    pub weight: f64,
+    /// The buoyancy B, N, along −Z.
+    pub buoyancy: f64,
+    /// The centre of buoyancy relative to G, body axes.
+    pub buoyancy_centre: [f64; 3],
+    /// Constant force, body axes.
+    pub force_body: [f64; 3],
+    /// Constant force, space axes.
+    pub force_space: [f64; 3],
+    /// Constant moment, body axes.
+    pub moment_body: [f64; 3],
+    /// Constant moment, space axes.
+    pub moment_space: [f64; 3],
+    /// Linear damping of (u, v, w, p, q, r).
+    pub linear: [f64; 6],
+    /// Quadratic damping of (u, v, w, p, q, r).
+    pub quadratic: [f64; 6],
 }
 
 type LoadError = (String, Problem);
@@ -100,6 +113,10 @@ fn finite<const K: usize>(key: &str, values: [f64; K]) -> Result<[f64; K], LoadE
 
 fn scalar(key: &str, value: Option<f64>) -> Result<f64, LoadError> {
     Ok(finite(key, [value.unwrap_or(0.0)])?[0])
+}
+
+fn vector(key: &str, value: Option<[f64; 3]>) -> Result<[f64; 3], LoadError> {
+    finite(key, value.unwrap_or([0.0; 3]))
 }
 
 /// A list of exactly `K` entries (zeros when absent).
@@ -126,6 +143,15 @@ fn damping<const K: usize>(key: &str, values: &Option<Vec<f64>>) -> Result<[f64;
     }
 }
 
+/// −d₁x − d₂x|x|.
+fn damped(linear: f64, quadratic: f64, x: f64) -> f64 {
+    -linear * x - quadratic * x * x.abs()
+}
+
+fn all_zero<'a>(values: impl IntoIterator<Item = &'a f64>) -> bool {
+    values.into_iter().all(|x| *x == 0.0)
+}
+
 impl SceneLoads {
     /// The loads of a scene's `[loads]` table for the selected model and body.
     pub(crate) fn from_table(
@@ -134,234 +160,68 @@ impl SceneLoads {
         body: &Body,
     ) -> Result<Self, LoadError> {
         Ok(match (selection.info.family, body) {
-            (Family::Pendulum, Body::Pendulum(p)) => SceneLoads::Pendulum {
+            (Family::Pendulum, _) => SceneLoads::Pendulum(PendulumLoads {
                 moment: scalar("moment", table.moment)?,
                 linear: damping::<1>("linear_damping", &table.linear_damping)?[0],
                 quadratic: damping::<1>("quadratic_damping", &table.quadratic_damping)?[0],
-                mgh: p.restoring_moment(),
-            },
-            (
-                family @ (Family::PlanarAtG | Family::PlanarMidship | Family::PlanarSpaceFixed),
-                _,
-            ) => SceneLoads::Planar {
+            }),
+            (Family::Top, _) => SceneLoads::Top(TopLoads {
+                moment_body: vector("moment_body", table.moment_body)?,
+                linear: damping("linear_damping", &table.linear_damping)?,
+                quadratic: damping("quadratic_damping", &table.quadratic_damping)?,
+            }),
+            (Family::Spatial, Body::Spatial { mass, .. }) => {
+                SceneLoads::Spatial(SpatialLoads::from_table(table, selection, *mass)?)
+            }
+            (family, _) => SceneLoads::Planar(PlanarLoads {
                 space_fixed: family == Family::PlanarSpaceFixed,
                 force_body: list("force_body", &table.force_body)?,
                 force_space: list("force_space", &table.force_space)?,
                 moment: scalar("moment", table.moment)?,
                 linear: damping("linear_damping", &table.linear_damping)?,
                 quadratic: damping("quadratic_damping", &table.quadratic_damping)?,
-            },
-            (Family::Top, _) => SceneLoads::Top {
-                moment_body: finite("moment_body", table.moment_body.unwrap_or([0.0; 3]))?,
-                linear: damping("linear_damping", &table.linear_damping)?,
-                quadratic: damping("quadratic_damping", &table.quadratic_damping)?,
-            },
-            (_, Body::Spatial { mass, .. }) => {
-                let gravity = scalar("gravity", table.gravity)?;
-                let buoyancy = scalar("buoyancy", table.buoyancy)?;
-                if buoyancy < 0.0 {
-                    return Err(invalid(
-                        "buoyancy",
-                        format!("must not be negative, got {buoyancy}"),
-                    ));
-                }
-                if table.buoyancy_centre.is_some() && table.buoyancy.is_none() {
-                    return Err(invalid(
-                        "buoyancy_centre",
-                        "is given without loads.buoyancy".into(),
-                    ));
-                }
-                SceneLoads::Spatial {
-                    kinematics: selection.info.kinematics.unwrap_or(Kinematics::Quaternion),
-                    weight: mass * gravity,
-                    buoyancy,
-                    buoyancy_centre: finite(
-                        "buoyancy_centre",
-                        table.buoyancy_centre.unwrap_or([0.0; 3]),
-                    )?,
-                    force_body: list("force_body", &table.force_body)?,
-                    force_space: list("force_space", &table.force_space)?,
-                    moment_body: finite("moment_body", table.moment_body.unwrap_or([0.0; 3]))?,
-                    moment_space: finite("moment_space", table.moment_space.unwrap_or([0.0; 3]))?,
-                    linear: damping("linear_damping", &table.linear_damping)?,
-                    quadratic: damping("quadratic_damping", &table.quadratic_damping)?,
-                }
-            }
-            (family, _) => unreachable!("the body of a {} scene matches its family", family.name()),
+            }),
         })
     }
 
-    /// True when nothing acts on the body at all.
+    /// True when nothing acts on the body but its model's own field.
     pub fn is_free(&self) -> bool {
         match self {
-            SceneLoads::Pendulum { .. } | SceneLoads::Top { .. } => false,
-            SceneLoads::Planar {
-                force_body,
-                force_space,
-                moment,
-                linear,
-                quadratic,
-                ..
-            } => [
-                force_body.as_slice(),
-                force_space,
-                &[*moment],
-                linear,
-                quadratic,
-            ]
-            .concat()
-            .iter()
-            .all(|x| *x == 0.0),
-            SceneLoads::Spatial {
-                weight,
-                buoyancy,
-                force_body,
-                force_space,
-                moment_body,
-                moment_space,
-                linear,
-                quadratic,
-                ..
-            } => [
-                &[*weight, *buoyancy][..],
-                force_body,
-                force_space,
-                moment_body,
-                moment_space,
-                linear,
-                quadratic,
-            ]
-            .concat()
-            .iter()
-            .all(|x| *x == 0.0),
+            SceneLoads::Pendulum(l) => all_zero([&l.moment, &l.linear, &l.quadratic]),
+            SceneLoads::Top(l) => {
+                all_zero(l.moment_body.iter().chain(&l.linear).chain(&l.quadratic))
+            }
+            SceneLoads::Planar(l) => {
+                l.is_conservative() && all_zero(l.force_space.iter().chain([&l.moment]))
+            }
+            SceneLoads::Spatial(l) => l.is_conservative() && !l.is_fixed_in_space(),
+        }
+    }
+
+    /// Whether a load with a potential of its own is present, so that a trajectory has
+    /// potential and total energy columns even where the model has no field of its own.
+    pub fn has_potential(&self) -> bool {
+        match self {
+            SceneLoads::Pendulum(l) => l.moment != 0.0 && l.linear == 0.0 && l.quadratic == 0.0,
+            SceneLoads::Top(_) => false,
+            SceneLoads::Planar(l) => {
+                l.is_conservative() && !all_zero(l.force_space.iter().chain([&l.moment]))
+            }
+            SceneLoads::Spatial(l) => l.is_conservative() && l.is_fixed_in_space(),
         }
     }
 
     /// The inputs of the model at a state, into `out` (the model's input layout).
     pub fn inputs(&self, state: &[f64], out: &mut [f64]) {
         match self {
-            SceneLoads::Pendulum {
-                moment,
-                linear,
-                quadratic,
-                ..
-            } => {
-                let rate = state[1];
-                out[0] = moment - linear * rate - quadratic * rate * rate.abs();
-            }
-            SceneLoads::Top {
-                moment_body,
-                linear,
-                quadratic,
-            } => {
+            SceneLoads::Pendulum(l) => out[0] = l.moment + damped(l.linear, l.quadratic, state[1]),
+            SceneLoads::Top(l) => {
                 for i in 0..3 {
-                    let w = state[i];
-                    out[i] = moment_body[i] - linear[i] * w - quadratic[i] * w * w.abs();
+                    out[i] = l.moment_body[i] + damped(l.linear[i], l.quadratic[i], state[i]);
                 }
             }
-            SceneLoads::Planar { .. } => self.planar_inputs(state, out),
-            SceneLoads::Spatial { .. } => self.spatial_inputs(state, out),
-        }
-    }
-
-    fn planar_inputs(&self, state: &[f64], out: &mut [f64]) {
-        let SceneLoads::Planar {
-            space_fixed,
-            force_body,
-            force_space,
-            moment,
-            linear,
-            quadratic,
-        } = self
-        else {
-            unreachable!()
-        };
-        // Body velocities (u, v, r) and the heading, from either layout.
-        let (psi, body) = if *space_fixed {
-            let (s, c) = state[2].sin_cos();
-            let (xd, yd) = (state[3], state[4]);
-            (state[2], [c * xd + s * yd, -s * xd + c * yd, state[5]])
-        } else {
-            (state[5], [state[0], state[1], state[2]])
-        };
-        let (s, c) = psi.sin_cos();
-        let damped: [f64; 3] =
-            std::array::from_fn(|i| -linear[i] * body[i] - quadratic[i] * body[i] * body[i].abs());
-        // Everything in body axes first, then turned into the model's axes.
-        let fx = force_body[0] + c * force_space[0] + s * force_space[1] + damped[0];
-        let fy = force_body[1] - s * force_space[0] + c * force_space[1] + damped[1];
-        let n = moment + damped[2];
-        if *space_fixed {
-            out[0] = c * fx - s * fy;
-            out[1] = s * fx + c * fy;
-        } else {
-            out[0] = fx;
-            out[1] = fy;
-        }
-        out[2] = n;
-    }
-
-    fn spatial_inputs(&self, state: &[f64], out: &mut [f64]) {
-        let SceneLoads::Spatial {
-            kinematics,
-            weight,
-            buoyancy,
-            buoyancy_centre,
-            force_body,
-            force_space,
-            moment_body,
-            moment_space,
-            linear,
-            quadratic,
-        } = self
-        else {
-            unreachable!()
-        };
-        let mut force = Vector3::from(*force_body);
-        let mut moment = Vector3::from(*moment_body);
-        let in_space = *weight != 0.0
-            || *buoyancy != 0.0
-            || force_space.iter().chain(moment_space).any(|x| *x != 0.0);
-        // Loads fixed in space are turned into body axes through the attitude; a scene
-        // without any skips the rotation.
-        if in_space {
-            let to_body = attitude(*kinematics, &state[9..]).inverse();
-            let buoyancy_force = to_body * Vector3::new(0.0, 0.0, -buoyancy);
-            force += to_body * Vector3::from(*force_space)
-                + to_body * Vector3::new(0.0, 0.0, *weight)
-                + buoyancy_force;
-            moment += to_body * Vector3::from(*moment_space)
-                + Vector3::from(*buoyancy_centre).cross(&buoyancy_force);
-        }
-        for i in 0..3 {
-            let (v, w) = (state[i], state[3 + i]);
-            out[i] = force[i] - linear[i] * v - quadratic[i] * v * v.abs();
-            out[3 + i] = moment[i] - linear[3 + i] * w - quadratic[3 + i] * w * w.abs();
-        }
-    }
-
-    /// Whether a load with a potential is present, so that a trajectory has potential and
-    /// total energy columns (a free body's potential is zero, and has none).
-    pub fn has_potential(&self) -> bool {
-        let zero = vec![0.0; 13];
-        self.potential_energy(&zero).is_some() && !self.is_free_of_potential()
-    }
-
-    fn is_free_of_potential(&self) -> bool {
-        match self {
-            SceneLoads::Pendulum { moment, .. } => *moment == 0.0,
-            SceneLoads::Top { .. } => true,
-            SceneLoads::Planar {
-                force_space,
-                moment,
-                ..
-            } => force_space.iter().all(|x| *x == 0.0) && *moment == 0.0,
-            SceneLoads::Spatial {
-                weight,
-                buoyancy,
-                force_space,
-                ..
-            } => *weight == 0.0 && *buoyancy == 0.0 && force_space.iter().all(|x| *x == 0.0),
+            SceneLoads::Planar(l) => l.inputs(state, out),
+            SceneLoads::Spatial(l) => l.inputs(state, out),
         }
     }
 
@@ -369,74 +229,146 @@ impl SceneLoads {
     /// free body); `None` where a load has none (body-axis forces, damping).
     pub fn potential_energy(&self, state: &[f64]) -> Option<f64> {
         match self {
-            SceneLoads::Pendulum {
-                moment,
-                linear,
-                quadratic,
-                ..
-            } => {
-                // Gravity is the model's own potential (4.35); the constant moment's is −M_O θ.
-                let conservative = *linear == 0.0 && *quadratic == 0.0;
-                conservative.then(|| -moment * state[0])
+            // The constant moment's potential is −M_O θ.
+            SceneLoads::Pendulum(l) => {
+                (l.linear == 0.0 && l.quadratic == 0.0).then(|| -l.moment * state[0])
             }
-            SceneLoads::Top {
-                moment_body,
-                linear,
-                quadratic,
-            } => moment_body
-                .iter()
-                .chain(linear)
-                .chain(quadratic)
-                .all(|x| *x == 0.0)
-                .then_some(0.0),
-            SceneLoads::Planar {
-                space_fixed,
-                force_body,
-                force_space,
-                moment,
-                linear,
-                quadratic,
-            } => {
-                let conservative = force_body
-                    .iter()
-                    .chain(linear)
-                    .chain(quadratic)
-                    .all(|x| *x == 0.0);
-                let (x, y, psi) = if *space_fixed {
-                    (state[0], state[1], state[2])
-                } else {
-                    (state[3], state[4], state[5])
-                };
-                conservative.then(|| -force_space[0] * x - force_space[1] * y - moment * psi)
-            }
-            SceneLoads::Spatial {
-                kinematics,
-                weight,
-                buoyancy,
-                buoyancy_centre,
-                force_body,
-                force_space,
-                moment_body,
-                moment_space,
-                linear,
-                quadratic,
-            } => {
-                let conservative = force_body
-                    .iter()
-                    .chain(moment_body)
-                    .chain(moment_space)
-                    .chain(linear)
-                    .chain(quadratic)
-                    .all(|x| *x == 0.0);
-                let position = Vector3::new(state[6], state[7], state[8]);
-                let centre =
-                    position + attitude(*kinematics, state) * Vector3::from(*buoyancy_centre);
-                conservative.then(|| {
-                    -weight * position.z + buoyancy * centre.z
-                        - Vector3::from(*force_space).dot(&position)
-                })
-            }
+            SceneLoads::Top(_) => self.is_free().then_some(0.0),
+            SceneLoads::Planar(l) => l.potential_energy(state),
+            SceneLoads::Spatial(l) => l.potential_energy(state),
         }
+    }
+}
+
+impl PlanarLoads {
+    fn is_conservative(&self) -> bool {
+        all_zero(
+            self.force_body
+                .iter()
+                .chain(&self.linear)
+                .chain(&self.quadratic),
+        )
+    }
+
+    /// The heading and the body velocities (u, v, r), from either layout.
+    fn heading_and_body_velocity(&self, state: &[f64]) -> (f64, [f64; 3]) {
+        if self.space_fixed {
+            let (s, c) = state[2].sin_cos();
+            let (xd, yd) = (state[3], state[4]);
+            (state[2], [c * xd + s * yd, -s * xd + c * yd, state[5]])
+        } else {
+            (state[5], [state[0], state[1], state[2]])
+        }
+    }
+
+    fn inputs(&self, state: &[f64], out: &mut [f64]) {
+        let (psi, body) = self.heading_and_body_velocity(state);
+        let (s, c) = psi.sin_cos();
+        let d: [f64; 3] =
+            std::array::from_fn(|i| damped(self.linear[i], self.quadratic[i], body[i]));
+        // Everything in body axes first, then turned into the model's axes.
+        let (fs, fb) = (self.force_space, self.force_body);
+        let fx = fb[0] + c * fs[0] + s * fs[1] + d[0];
+        let fy = fb[1] - s * fs[0] + c * fs[1] + d[1];
+        if self.space_fixed {
+            out[0] = c * fx - s * fy;
+            out[1] = s * fx + c * fy;
+        } else {
+            out[0] = fx;
+            out[1] = fy;
+        }
+        out[2] = self.moment + d[2];
+    }
+
+    fn potential_energy(&self, state: &[f64]) -> Option<f64> {
+        let (x, y, psi) = if self.space_fixed {
+            (state[0], state[1], state[2])
+        } else {
+            (state[3], state[4], state[5])
+        };
+        let fs = self.force_space;
+        self.is_conservative()
+            .then(|| -fs[0] * x - fs[1] * y - self.moment * psi)
+    }
+}
+
+impl SpatialLoads {
+    fn from_table(table: &LoadsTable, selection: &Selection, mass: f64) -> Result<Self, LoadError> {
+        let buoyancy = scalar("buoyancy", table.buoyancy)?;
+        if buoyancy < 0.0 {
+            return Err(invalid(
+                "buoyancy",
+                format!("must not be negative, got {buoyancy}"),
+            ));
+        }
+        if table.buoyancy_centre.is_some() && table.buoyancy.is_none() {
+            return Err(invalid(
+                "buoyancy_centre",
+                "is given without loads.buoyancy".into(),
+            ));
+        }
+        Ok(SpatialLoads {
+            kinematics: selection.info.kinematics.unwrap_or(Kinematics::Quaternion),
+            weight: mass * scalar("gravity", table.gravity)?,
+            buoyancy,
+            buoyancy_centre: vector("buoyancy_centre", table.buoyancy_centre)?,
+            force_body: list("force_body", &table.force_body)?,
+            force_space: list("force_space", &table.force_space)?,
+            moment_body: vector("moment_body", table.moment_body)?,
+            moment_space: vector("moment_space", table.moment_space)?,
+            linear: damping("linear_damping", &table.linear_damping)?,
+            quadratic: damping("quadratic_damping", &table.quadratic_damping)?,
+        })
+    }
+
+    /// Body-axis forces and moments, a space moment and damping have no potential.
+    fn is_conservative(&self) -> bool {
+        all_zero(
+            self.force_body
+                .iter()
+                .chain(&self.moment_body)
+                .chain(&self.moment_space)
+                .chain(&self.linear)
+                .chain(&self.quadratic),
+        )
+    }
+
+    /// Whether a load is fixed in space, so that the attitude turns it.
+    fn is_fixed_in_space(&self) -> bool {
+        self.weight != 0.0
+            || self.buoyancy != 0.0
+            || !all_zero(self.force_space.iter().chain(&self.moment_space))
+    }
+
+    fn inputs(&self, state: &[f64], out: &mut [f64]) {
+        let mut force = Vector3::from(self.force_body);
+        let mut moment = Vector3::from(self.moment_body);
+        // A scene without a load fixed in space skips the rotation.
+        if self.is_fixed_in_space() {
+            let to_body = attitude(self.kinematics, &state[9..]).inverse();
+            let buoyancy_force = to_body * Vector3::new(0.0, 0.0, -self.buoyancy);
+            force += to_body * Vector3::from(self.force_space)
+                + to_body * Vector3::new(0.0, 0.0, self.weight)
+                + buoyancy_force;
+            moment += to_body * Vector3::from(self.moment_space)
+                + Vector3::from(self.buoyancy_centre).cross(&buoyancy_force);
+        }
+        for i in 0..3 {
+            out[i] = force[i] + damped(self.linear[i], self.quadratic[i], state[i]);
+            let j = 3 + i;
+            out[j] = moment[i] + damped(self.linear[j], self.quadratic[j], state[j]);
+        }
+    }
+
+    /// −M g z_G + B z_B − F·r_G, with Z down.
+    fn potential_energy(&self, state: &[f64]) -> Option<f64> {
+        let position = Vector3::new(state[6], state[7], state[8]);
+        let turned = attitude(self.kinematics, &state[9..]) * Vector3::from(self.buoyancy_centre);
+        let centre = position + turned;
+        self.is_conservative().then(|| {
+            -self.weight * position.z + self.buoyancy * centre.z
+                - Vector3::from(self.force_space).dot(&position)
+        })
     }
 }
 

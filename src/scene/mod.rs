@@ -17,7 +17,7 @@ mod select;
 pub mod sweep;
 
 pub use error::{Problem, SceneError};
-pub use loads::{SceneLoads, euler_angles};
+pub use loads::{PendulumLoads, PlanarLoads, SceneLoads, SpatialLoads, TopLoads, euler_angles};
 pub use select::{Selection, select_spatial};
 
 use crate::integrate::AdaptiveOptions;
@@ -403,6 +403,21 @@ impl Checker<'_> {
         }
     }
 
+    /// An error naming the first of `keys` that is given, where none may be.
+    fn refuse_given(&self, keys: [(&str, bool); 2], why: &str) -> Result<(), SceneError> {
+        match keys.iter().find(|(_, given)| *given) {
+            Some((key, _)) => Err(self.invalid(key, why)),
+            None => Ok(()),
+        }
+    }
+
+    /// The tensor about G of `body.inertia`, a physical one.
+    fn tensor(&self, rows: Option<[[f64; 3]; 3]>, what: &str) -> Result<InertiaTensor, SceneError> {
+        let rows = rows.ok_or_else(|| self.missing("body.inertia", what))?;
+        InertiaTensor::from_matrix(Matrix3::from_fn(|r, c| rows[r][c]))
+            .map_err(|e| self.invalid("body.inertia", e.to_string()))
+    }
+
     fn required(&self, key: &str, value: Option<f64>, what: &str) -> Result<f64, SceneError> {
         value.ok_or_else(|| self.missing(key, what))
     }
@@ -441,11 +456,7 @@ impl Checker<'_> {
 
     fn top_body(&self, b: &file::BodyTable) -> Result<Body, SceneError> {
         let mass = self.required("body.mass", b.mass, "the mass, kg")?;
-        let rows = b
-            .inertia
-            .ok_or_else(|| self.missing("body.inertia", "the principal tensor about G, kg m²"))?;
-        let inertia = InertiaTensor::from_matrix(Matrix3::from_fn(|r, c| rows[r][c]))
-            .map_err(|e| self.invalid("body.inertia", e.to_string()))?;
+        let inertia = self.tensor(b.inertia, "the principal tensor about G, kg m²")?;
         let h = self.required("body.h", b.h, "pivot to G along the body z-axis, m")?;
         let g = self.required("body.g", b.g, "gravity, m/s²")?;
         let info = ModelInfo::of_family(Family::Top)
@@ -468,17 +479,13 @@ impl Checker<'_> {
 
     fn spatial_body(&self, b: &file::BodyTable, base: &Path) -> Result<Body, SceneError> {
         if let Some(path) = &b.file {
-            for (key, given) in [
-                ("body.mass", b.mass.is_some()),
-                ("body.inertia", b.inertia.is_some()),
-            ] {
-                if given {
-                    return Err(self.invalid(
-                        key,
-                        "give either body.file or body.mass and body.inertia, not both",
-                    ));
-                }
-            }
+            self.refuse_given(
+                [
+                    ("body.mass", b.mass.is_some()),
+                    ("body.inertia", b.inertia.is_some()),
+                ],
+                "give either body.file or body.mass and body.inertia, not both",
+            )?;
             let description = crate::mass::BodyFile::load(&base.join(path))
                 .map_err(|e| self.error("body.file", Problem::BodyFile(Box::new(e))))?;
             let properties = description
@@ -491,12 +498,10 @@ impl Checker<'_> {
         }
         let mass = self.required("body.mass", b.mass, "the mass, kg (or body.file)")?;
         let mass = self.parameter("body.mass", || crate::validate::positive("mass", mass))?;
-        let rows = b.inertia.ok_or_else(|| {
-            self.missing("body.inertia", "the tensor about G, [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, Iyz, Izz]] (or body.file)")
-        })?;
-        let matrix = Matrix3::from_fn(|r, c| rows[r][c]);
-        let inertia = InertiaTensor::from_matrix(matrix)
-            .map_err(|e| self.invalid("body.inertia", e.to_string()))?;
+        let inertia = self.tensor(
+            b.inertia,
+            "the tensor about G, [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, Iyz, Izz]] (or body.file)",
+        )?;
         Ok(Body::Spatial { mass, inertia })
     }
 
@@ -703,17 +708,13 @@ impl Checker<'_> {
             options.max_steps = max_steps;
             (None, Some(options))
         } else {
-            for (key, given) in [
-                ("integrator.rtol", t.rtol.is_some()),
-                ("integrator.atol", t.atol.is_some()),
-            ] {
-                if given {
-                    return Err(self.invalid(
-                        key,
-                        format!("{} takes a fixed step; give integrator.step", method.name()),
-                    ));
-                }
-            }
+            self.refuse_given(
+                [
+                    ("integrator.rtol", t.rtol.is_some()),
+                    ("integrator.atol", t.atol.is_some()),
+                ],
+                &format!("{} takes a fixed step; give integrator.step", method.name()),
+            )?;
             let step = self.required("integrator.step", t.step, "the fixed step, s")?;
             let step = self.finite("integrator.step", step)?;
             if step <= 0.0 {
