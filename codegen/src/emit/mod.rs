@@ -7,10 +7,12 @@
 //! clock or the environment. [`write_if_changed`] leaves a file untouched when its bytes are
 //! already right, so Cargo does not rebuild for nothing.
 
+mod build;
 mod catalog;
 pub mod fold;
 pub mod program;
 mod rust;
+mod writer;
 
 pub use program::{Operations, Program, identifier};
 
