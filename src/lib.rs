@@ -14,6 +14,7 @@
 //! | integrators: one trait, tableaux over one adaptive driver | [`integrate`]: [`Integrator`], [`OdeSystem`], [`Dop853`], [`Dopri5`], [`Rk4`], … |
 //! | exact solutions and invariants for judging runs | [`reference`](mod@reference), [`energy`], [`elliptic`] |
 //! | the swing test: radius of gyration from a pendulum's period | [`swing`] |
+//! | the JSON inputs of `eom eval`, read to the nearest binary64 (feature `cli`) | `eval` |
 //! | what a run writes besides its numbers: the SVG plots (feature `cli`) | `output` |
 //!
 //! A generated model under its loads is an ODE system, so integrating one takes no adapter:
@@ -42,6 +43,8 @@
 
 pub mod elliptic;
 pub mod energy;
+#[cfg(feature = "cli")]
+pub mod eval;
 pub mod generic;
 mod inertia;
 pub mod integrate;

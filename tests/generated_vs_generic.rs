@@ -1,5 +1,5 @@
 //! The generated models against the independent nalgebra forms (`eom::generic`), variant by
-//! variant: at random states, at the extremes (pitch within 1e-6 rad of ±90°, rates up to
+//! variant: at random states, at the extremes (pitch 1e-12 to 1e-6 rad from ±90°, rates up to
 //! 10³ rad/s, inertia ratios up to 10⁶), a pruned variant against the full one for a body
 //! whose pruned products are zero, and f32 against f64.
 //!
@@ -11,8 +11,8 @@
 mod common;
 
 use common::{
-    PendulumCase, Pitch, PlanarCase, Spatial, SpatialCase, Symmetry, at_g_scale, generated,
-    generic, inverse_scale, midship_scale, pendulum_case, pendulum_scale, planar_case,
+    Kinematics, PendulumCase, Pitch, PlanarCase, Spatial, SpatialCase, Symmetry, at_g_scale,
+    generated, generic, inverse_scale, midship_scale, pendulum_case, pendulum_scale, planar_case,
     relative_gap, space_fixed_scale, spatial_case, spatial_scale,
 };
 use eom::generic::{self, ModelError};
@@ -31,7 +31,29 @@ use nalgebra::{Quaternion, UnitQuaternion, Vector3, Vector6};
 /// for a rotated thin rod (1, 10⁶, 10⁶) the determinant is 10⁶ times smaller than its terms,
 /// so the two inverses differ by ~10⁶ε relative to [I]⁻¹ itself (2e-12 seen when the scale
 /// leaves this out); relative to the terms they agree to a few ε.
+///
+/// Pitch 1e-12 to 1e-6 rad from ±90° (`Pitch::NearVertical`) keeps the same relative
+/// tolerance because the scale grows with the terms: the terms of φ̇ and ψ̇ are
+/// (|q sin φ| + |r cos φ|)/|cos θ|, 10⁶ to 10¹² times the rates, and both forms compute sin θ
+/// and cos θ of the same double with relative accuracy (the kernel's `sin_cos` is tested
+/// relative next to every multiple of π/2), so sec θ is a few ε off in each and the gap a
+/// few ε of the terms, as at any other pitch. What no tolerance here absorbs is a pitch that
+/// differs by an ulp between the two: that changes sec θ by ε/|cos θ| of itself, up to
+/// 2e-4 at 1e-12 rad, which is why every input is read to the nearest double
+/// (`tests/exact_inputs.rs`).
+///
+/// Near the vertical the Euler rates are also held to [`EULER_RATES_TOLERANCE`], without the
+/// inverse of [I] that the 1e-12 is made for.
 const F64_TOLERANCE: f64 = 1e-12;
+
+/// φ̇, θ̇, ψ̇ (4.60) generated against generic next to ±90°, in units of f64::EPSILON times the
+/// term size. Each form evaluates φ̇ = p + (q sin φ + r cos φ) tan θ with at most seven
+/// roundings of ε/2 of the terms (q sin φ, r cos φ, their sum, 1/cos θ, two products, the sum
+/// with p): 3.5ε each, 7ε for the two. Their sines and cosines differ too: the kernel's
+/// `sin_cos` is within one ulp of the platform's for everyday angles (φ) and within two next
+/// to a multiple of π/2 (θ), and an ulp is at most ε relative, so 1 + 1 + 2 + 2 = 6ε of the
+/// terms. 13ε in all, at worst; 16ε. θ̇ and ψ̇ have fewer operations.
+const EULER_RATES_TOLERANCE: f64 = 16.0;
 
 /// A pruned variant against the full one, for a body whose pruned products are zero: two f64
 /// evaluations of the same formula with the zero terms dropped, each within 16·(ε/2)·scale,
@@ -51,6 +73,21 @@ fn spatial_gap<S: Spatial<f64>>(case: &SpatialCase) -> f64 {
     let inverse = inverse_scale(&case.tensor.matrix()).terms;
     let scale = spatial_scale(case, S::KINEMATICS, &inverse);
     relative_gap(&generated::<S>(case), &generic(case, S::KINEMATICS), &scale)
+}
+
+/// The Euler rates φ̇, θ̇, ψ̇ (entries 9 to 11) generated against generic, in units of
+/// f64::EPSILON times their term sizes.
+fn euler_rates_gap<S: Spatial<f64>>(case: &SpatialCase) -> f64 {
+    assert_eq!(
+        S::KINEMATICS,
+        Kinematics::Euler,
+        "{} has no Euler rates",
+        S::NAME
+    );
+    let inverse = inverse_scale(&case.tensor.matrix()).terms;
+    let scale = spatial_scale(case, S::KINEMATICS, &inverse);
+    let (ours, theirs) = (generated::<S>(case), generic(case, S::KINEMATICS));
+    relative_gap(&ours[9..12], &theirs[9..12], &scale[9..12]) / f64::EPSILON
 }
 
 /// A pruned variant `P` against the full variant `F` on a body of `P`'s class.
@@ -192,8 +229,20 @@ macro_rules! full_variant {
     };
 }
 
+/// The Euler rates near pitch ±90° for a variant with Euler kinematics; nothing for a
+/// quaternion variant, whose attitude has no singularity there.
+macro_rules! euler_rates_near_vertical {
+    (Euler) => {
+        properties! {
+            euler_rates_match_generic_near_vertical: spatial_case(CLASS, Pitch::NearVertical), euler_rates_gap::<Model64>, EULER_RATES_TOLERANCE;
+        }
+    };
+    (Quaternion) => {};
+}
+
 /// For every spatial variant of the catalog, a module of properties: generated against
-/// generic at random attitudes and near pitch ±90°, f32 against f64 likewise, the variant
+/// generic at random attitudes and 1e-12 to 1e-6 rad from pitch ±90° (and there the Euler
+/// rates alone, to a few ε), f32 against f64 likewise, the variant
 /// against the full one on a body of its class, and the refusal of a tensor whose
 /// determinant leaves f64.
 macro_rules! spatial_properties {
@@ -218,6 +267,7 @@ macro_rules! spatial_properties {
                 f32_matches_f64_near_vertical: spatial_case(CLASS, Pitch::NearVertical), f32_gap::<Model32, Model64>, F32_TOLERANCE;
                 equals_the_full_variant_on_a_body_of_its_class: spatial_case(CLASS, Pitch::Random), pruned_gap::<Model64, full_variant!($kinematics)>, PRUNED_TOLERANCE;
             }
+            euler_rates_near_vertical!($kinematics);
 
             #[test]
             fn refuses_a_tensor_whose_determinant_leaves_f64_as_the_generic_form_does() {

@@ -8,6 +8,7 @@
 //! of inertia that the chosen symmetry class says is zero) is an error naming it.
 
 use anyhow::{Context, Result, bail};
+use eom::eval::{PendulumInput, PlanarInput, PlanarSpaceInput, SpatialInput, SpatialState};
 use eom::generic::{
     EulerState, Pendulum, PlanarBody, PlanarMidship, RigidBody, check_pitch,
     euler_state_to_quaternion_state,
@@ -15,9 +16,9 @@ use eom::generic::{
 use eom::models::{self, AnyModel, Family, Kinematics, Model as _, Symmetry};
 use eom::{InertiaTensor, PendulumParameters};
 use nalgebra::{Matrix3, Vector2, Vector3, Vector6};
+use serde::Serialize as SerializeDerive;
 use serde::de::DeserializeOwned;
 use serde::ser::{Serialize, SerializeMap, Serializer};
-use serde::{Deserialize, Serialize as SerializeDerive};
 use std::io::Read;
 use std::path::PathBuf;
 
@@ -82,8 +83,10 @@ fn read_input(path: &PathBuf) -> Result<String> {
     Ok(text)
 }
 
+/// The input JSON as the type of the model's input, every number read to the nearest binary64
+/// (`eom::eval::parse`).
 fn parse<T: DeserializeOwned>(text: &str) -> Result<T> {
-    serde_json::from_str(text).context("parsing the input JSON")
+    eom::eval::parse(text).context("parsing the input JSON")
 }
 
 /// The printed object; a second key can sit beside `generic`.
@@ -113,26 +116,6 @@ impl Serialize for Ordered<'_> {
     }
 }
 
-/// Input of `--model pendulum`.
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct PendulumInput {
-    i0: f64,
-    mass: f64,
-    g: f64,
-    h: f64,
-    state: PendulumState,
-    #[serde(default)]
-    moment: f64,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct PendulumState {
-    theta: f64,
-    theta_dot: f64,
-}
-
 fn pendulum(input: &PendulumInput) -> Result<Evaluation> {
     let parameters = PendulumParameters::new(input.i0, input.mass, input.g, input.h)?;
     let model = Pendulum::<f64>::new(&parameters);
@@ -148,43 +131,7 @@ fn pendulum(input: &PendulumInput) -> Result<Evaluation> {
     })
 }
 
-/// Input of the body-fixed planar models: `force` is `(F_x, F_y)` (or `(X, Y)`) in body
-/// axes, `moment` about the origin (G or midship).
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct PlanarInput {
-    mass: f64,
-    izz: f64,
-    #[serde(default)]
-    x_g: Option<f64>,
-    state: PlanarBodyState,
-    force: [f64; 2],
-    moment: f64,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct PlanarBodyState {
-    u: f64,
-    v: f64,
-    r: f64,
-    x: f64,
-    y: f64,
-    psi: f64,
-}
-
 const PLANAR_BODY_KEYS: [&str; 6] = ["u_dot", "v_dot", "r_dot", "x_dot", "y_dot", "psi_dot"];
-
-impl PlanarInput {
-    fn state(&self) -> [f64; 6] {
-        let s = &self.state;
-        [s.u, s.v, s.r, s.x, s.y, s.psi]
-    }
-
-    fn load(&self) -> [f64; 3] {
-        [self.force[0], self.force[1], self.moment]
-    }
-}
 
 fn planar_g(input: &PlanarInput) -> Result<Evaluation> {
     if input.x_g.is_some() {
@@ -214,28 +161,6 @@ fn planar_midship(input: &PlanarInput) -> Result<Evaluation> {
     })
 }
 
-/// Input of `--model planar-space`: `force` is `(F_X, F_Y)` in space axes.
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct PlanarSpaceInput {
-    mass: f64,
-    izz: f64,
-    state: PlanarSpaceState,
-    force: [f64; 2],
-    moment: f64,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct PlanarSpaceState {
-    x: f64,
-    y: f64,
-    psi: f64,
-    x_dot: f64,
-    y_dot: f64,
-    psi_dot: f64,
-}
-
 fn planar_space(input: &PlanarSpaceInput) -> Result<Evaluation> {
     let model = PlanarBody::<f64>::new(input.mass, input.izz)?;
     let generated = models::PlanarSpaceFixed::<f64>::new(input.mass, input.izz)?;
@@ -248,32 +173,6 @@ fn planar_space(input: &PlanarSpaceInput) -> Result<Evaluation> {
         generated: named(&keys, &generated.rhs(&state, &load)),
         generic: named(&keys, d.as_slice()),
     })
-}
-
-/// Input of `--model spatial`: the inertia tensor about G in the chapter's convention
-/// (products with the sign of 4.14), force and moment about G in body axes.
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct SpatialInput {
-    mass: f64,
-    inertia: [[f64; 3]; 3],
-    state: SpatialState,
-    force: [f64; 3],
-    moment: [f64; 3],
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct SpatialState {
-    u: f64,
-    v: f64,
-    w: f64,
-    p: f64,
-    q: f64,
-    r: f64,
-    phi: f64,
-    theta: f64,
-    psi: f64,
 }
 
 const EULER_KEYS: [&str; 12] = [

@@ -18,7 +18,7 @@ use crate::InertiaTensor;
 use crate::validate::positive;
 use nalgebra::{Matrix3, Vector3};
 use std::collections::BTreeMap;
-use std::io::{Read, Seek, Write};
+use std::io::{BufRead, BufReader, Read, Seek, SeekFrom, Write};
 use std::path::Path;
 use thiserror::Error;
 
@@ -133,21 +133,37 @@ impl Mesh {
     /// Reads an ASCII or binary STL. Vertices with identical coordinates are merged, which is
     /// what joins the triangles into a surface; `-0` and `0` count as the same coordinate, as
     /// CAD exporters write both.
+    ///
+    /// A file whose first line starts with `solid ` is ASCII, anything else binary (as
+    /// `stl_io` decides). ASCII coordinates are read to the nearest f64 (`stl_io` would read
+    /// them as f32, which is wrong in the eighth digit and refuses anything beyond f32's
+    /// range); binary ones are f32 in the file and exact in f64.
     pub fn read_stl<R: Read + Seek>(reader: &mut R) -> Result<Self, MeshError> {
-        let mut index: BTreeMap<[u32; 3], usize> = BTreeMap::new();
+        let triangles = if is_ascii_stl(reader).map_err(MeshError::Read)? {
+            read_ascii_stl(BufReader::new(reader)).map_err(MeshError::Read)?
+        } else {
+            let mut triangles = Vec::new();
+            for triangle in stl_io::create_stl_reader(reader).map_err(MeshError::Read)? {
+                let triangle = triangle.map_err(MeshError::Read)?;
+                triangles.push(triangle.vertices.map(|v| v.0.map(f64::from)));
+            }
+            triangles
+        };
+        let mut index: BTreeMap<[u64; 3], usize> = BTreeMap::new();
         let mut vertices = Vec::new();
-        let mut triangles = Vec::new();
-        for triangle in stl_io::create_stl_reader(reader).map_err(MeshError::Read)? {
-            let triangle = triangle.map_err(MeshError::Read)?;
-            triangles.push(triangle.vertices.map(|v| {
-                // Adding +0 turns -0 into +0 and leaves every other value as it is.
-                let key = v.0.map(|x| (x + 0.0).to_bits());
-                *index.entry(key).or_insert_with(|| {
-                    vertices.push(Vector3::from(v.0.map(f64::from)));
-                    vertices.len() - 1
+        let triangles = triangles
+            .into_iter()
+            .map(|triangle| {
+                triangle.map(|v| {
+                    // Adding +0 turns -0 into +0 and leaves every other value as it is.
+                    let key = v.map(|x| (x + 0.0).to_bits());
+                    *index.entry(key).or_insert_with(|| {
+                        vertices.push(Vector3::from(v));
+                        vertices.len() - 1
+                    })
                 })
-            }));
-        }
+            })
+            .collect();
         Self::new(vertices, triangles)
     }
 
@@ -160,6 +176,11 @@ impl Mesh {
     pub fn write_stl<W: Write>(&self, writer: &mut W) -> std::io::Result<()> {
         let triangles: Vec<stl_io::Triangle> = self.triangles.iter().map(|t| self.stl(t)).collect();
         stl_io::write_stl(writer, triangles.iter())
+    }
+
+    /// The vertices, in the order they first appear (in the file, for a mesh read from STL).
+    pub fn vertices(&self) -> &[Vector3<f64>] {
+        &self.vertices
     }
 
     /// The number of triangles.
@@ -252,6 +273,128 @@ impl Mesh {
     }
 }
 
+/// Whether an STL is ASCII: its first line is text that starts with `solid ` (the test that
+/// `stl_io` makes, so that a binary file is read by it as before). The reader is left at the
+/// start.
+fn is_ascii_stl<R: Read + Seek>(reader: &mut R) -> std::io::Result<bool> {
+    let mut first = String::new();
+    let read = BufReader::new(&mut *reader).read_line(&mut first);
+    reader.seek(SeekFrom::Start(0))?;
+    Ok(read.is_ok() && first.starts_with("solid "))
+}
+
+/// A triangle's corners as read, before equal corners are merged.
+type Corners = [[f64; 3]; 3];
+
+/// Reads the triangles of an ASCII STL, every coordinate to the nearest f64:
+///
+/// ```text
+/// solid NAME
+///   facet normal nx ny nz
+///     outer loop
+///       vertex x y z      (three times)
+///     endloop
+///   endfacet              (once per triangle)
+/// endsolid NAME
+/// ```
+///
+/// Tokens are separated by any whitespace and blank lines are skipped; anything after
+/// `endsolid` is ignored. The normals are checked as numbers but not used (the winding says
+/// which side is out).
+fn read_ascii_stl(reader: impl BufRead) -> std::io::Result<Vec<Corners>> {
+    let mut lines = AsciiLines {
+        lines: reader.lines(),
+        number: 0,
+    };
+    let (_, header) = lines.next("`solid`")?;
+    if !header.starts_with("solid ") {
+        return Err(invalid("an ASCII STL starts with `solid `".into()));
+    }
+    let mut triangles = Vec::new();
+    loop {
+        let (number, line) = lines.next("`facet normal` or `endsolid`")?;
+        let tokens: Vec<&str> = line.split_ascii_whitespace().collect();
+        if tokens[0] == "endsolid" {
+            return Ok(triangles);
+        }
+        if tokens.len() != 5 || tokens[..2] != ["facet", "normal"] {
+            return Err(at(number, &line, "expected `facet normal nx ny nz`"));
+        }
+        coordinates(&tokens[2..]).map_err(|e| at(number, &line, &e))?;
+        lines.expect(&["outer", "loop"])?;
+        let mut corners = [[0.0; 3]; 3];
+        for corner in &mut corners {
+            let (number, line) = lines.next("`vertex x y z`")?;
+            let tokens: Vec<&str> = line.split_ascii_whitespace().collect();
+            if tokens.len() != 4 || tokens[0] != "vertex" {
+                return Err(at(number, &line, "expected `vertex x y z`"));
+            }
+            *corner = coordinates(&tokens[1..]).map_err(|e| at(number, &line, &e))?;
+        }
+        lines.expect(&["endloop"])?;
+        lines.expect(&["endfacet"])?;
+        triangles.push(corners);
+    }
+}
+
+/// The non-blank lines of an ASCII STL, with their line numbers.
+struct AsciiLines<B> {
+    lines: std::io::Lines<B>,
+    number: usize,
+}
+
+impl<B: BufRead> AsciiLines<B> {
+    /// The next non-blank line and its number; the end of the file is an error that says
+    /// what was expected.
+    fn next(&mut self, expecting: &str) -> std::io::Result<(usize, String)> {
+        for line in self.lines.by_ref() {
+            self.number += 1;
+            let line = line?;
+            if line.split_ascii_whitespace().next().is_some() {
+                return Ok((self.number, line));
+            }
+        }
+        Err(std::io::Error::new(
+            std::io::ErrorKind::UnexpectedEof,
+            format!("the ASCII STL ends while expecting {expecting}"),
+        ))
+    }
+
+    /// The next non-blank line, which must be these words.
+    fn expect(&mut self, words: &[&str]) -> std::io::Result<()> {
+        let expected = format!("`{}`", words.join(" "));
+        let (number, line) = self.next(&expected)?;
+        if line.split_ascii_whitespace().eq(words.iter().copied()) {
+            Ok(())
+        } else {
+            Err(at(number, &line, &format!("expected {expected}")))
+        }
+    }
+}
+
+fn invalid(message: String) -> std::io::Error {
+    std::io::Error::new(std::io::ErrorKind::InvalidData, message)
+}
+
+/// What is wrong at a line of an ASCII STL, quoting it.
+fn at(number: usize, line: &str, what: &str) -> std::io::Error {
+    invalid(format!("line {number}: {what}, got {:?}", line.trim()))
+}
+
+/// Three finite numbers, each read to the nearest f64 (`f64::from_str` rounds correctly).
+fn coordinates(tokens: &[&str]) -> Result<[f64; 3], String> {
+    let mut xyz = [0.0; 3];
+    for (x, token) in xyz.iter_mut().zip(tokens) {
+        *x = token
+            .parse::<f64>()
+            .map_err(|e| format!("`{token}` is not a number ({e})"))?;
+        if !x.is_finite() {
+            return Err(format!("`{token}` is not a finite number"));
+        }
+    }
+    Ok(xyz)
+}
+
 fn check_vertices(vertices: &[Vector3<f64>]) -> Result<(), MeshError> {
     match vertices
         .iter()
@@ -305,4 +448,65 @@ fn check_edges(vertices: &[Vector3<f64>], triangles: &[[usize; 3]]) -> Result<()
         }
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A unit tetrahedron as ASCII STL, its corner (1, 0, 0) written as `x`.
+    fn tetrahedron(x: &str) -> String {
+        let corners = [
+            [["0", "0", "0"], ["0", "1", "0"], [x, "0", "0"]],
+            [["0", "0", "0"], [x, "0", "0"], ["0", "0", "1"]],
+            [["0", "0", "0"], ["0", "0", "1"], ["0", "1", "0"]],
+            [[x, "0", "0"], ["0", "1", "0"], ["0", "0", "1"]],
+        ];
+        let mut text = String::from("solid t\n\n");
+        for facet in corners {
+            text += "  facet normal 0 0 0\n    outer loop\n";
+            for [a, b, c] in facet {
+                text += &format!("      vertex {a}\t{b} {c}\n");
+            }
+            text += "    endloop\n  endfacet\n";
+        }
+        text + "endsolid t\n"
+    }
+
+    fn read(text: &str) -> Result<Mesh, MeshError> {
+        Mesh::read_stl(&mut std::io::Cursor::new(text.as_bytes()))
+    }
+
+    #[test]
+    fn ascii_coordinates_are_the_nearest_f64_not_f32() {
+        // 0.1 as f32 is 0.100000001490116…; 1e39 is beyond f32.
+        for (text, x) in [
+            ("0.1", 0.1),
+            ("1e39", 1e39),
+            ("1.5707962967948965", 1.5707962967948965),
+        ] {
+            let mesh = read(&tetrahedron(text)).unwrap();
+            assert_eq!(mesh.vertices()[2].x.to_bits(), f64::to_bits(x), "{text}");
+        }
+    }
+
+    #[test]
+    fn ascii_faults_name_the_line() {
+        let message = |text: &str| read(text).unwrap_err().to_string();
+        let text = tetrahedron("1").replacen("vertex 1\t0 0", "vertex 1 O 0", 1);
+        let error = message(&text);
+        assert!(
+            error.contains("line 7") && error.contains("`O` is not a number"),
+            "{error}"
+        );
+        let error = message(&tetrahedron("inf"));
+        assert!(error.contains("`inf` is not a finite number"), "{error}");
+        let error = message(&tetrahedron("1").replacen("endloop", "end loop", 1));
+        assert!(error.contains("line 8: expected `endloop`"), "{error}");
+        let error = message(&tetrahedron("1").replace("endsolid t\n", ""));
+        assert!(
+            error.contains("ends while expecting `facet normal`"),
+            "{error}"
+        );
+    }
 }

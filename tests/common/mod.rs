@@ -34,6 +34,8 @@ pub const CASES: u32 = 128;
 /// Runs `gap` on [`CASES`] random cases and panics with the property's name and the (shrunk)
 /// case if one exceeds `tolerance`. Prints the largest gap seen (`--nocapture` shows it).
 pub fn check<S: Strategy>(name: &str, strategy: S, gap: impl Fn(&S::Value) -> f64, tolerance: f64) {
+    // The test crate's name is the same for every property: `module::property` is enough.
+    let name = name.split_once("::").map_or(name, |(_, rest)| rest);
     let worst = Cell::new(0.0f64);
     let config = Config {
         cases: CASES,
@@ -52,7 +54,7 @@ pub fn check<S: Strategy>(name: &str, strategy: S, gap: impl Fn(&S::Value) -> f6
         panic!("{name}: {error}");
     }
     println!(
-        "{name:<62} largest gap {:9.2e}, tolerance {tolerance:9.2e}",
+        "{name:<78} largest gap {:9.2e}, tolerance {tolerance:9.2e}",
         worst.get()
     );
 }
@@ -63,7 +65,7 @@ macro_rules! properties {
         $(
             #[test]
             fn $name() {
-                common::check(stringify!($name), $strategy, $gap, $tolerance);
+                common::check(concat!(module_path!(), "::", stringify!($name)), $strategy, $gap, $tolerance);
             }
         )*
     };
