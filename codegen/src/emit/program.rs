@@ -7,7 +7,8 @@
 //! Structural sharing is automatic: asking for a node that exists returns its id, so a product
 //! or a term that two equations use is computed once whatever its name would be.
 //!
-//! [`super::build`] turns a system into a program: it hoists, factors and shares.
+//! The builder (`build.rs` beside this file) turns a system into a program: it hoists,
+//! factors and shares.
 //!
 //! Nothing here is trusted: [`super::fold`] folds the finished program back into the canonical
 //! form and proves it equal to the system before any code is written.
@@ -147,7 +148,7 @@ pub fn rate_name(state: &str) -> String {
 
 impl Program {
     /// Builds the program of a system: its right-hand side and, where it has them, its
-    /// kinetic and potential energies (see [`super::build`]).
+    /// kinetic and potential energies (the builder is in `build.rs` beside this file).
     pub fn build(system: &System) -> Program {
         super::build::program(system)
     }
