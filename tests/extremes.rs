@@ -1,0 +1,13 @@
+//! The numerical behaviour of the generated models at the extremes, against exact answers:
+//!
+//! - `spin`: torque-free bodies spun at 10³ and 10⁴ rad/s through the generated quaternion
+//!   model with DOPRI5 and DOP853 keep the error, the energy and |H| they keep at 1 rad/s.
+//!
+//! Every test here runs in well under a second in a debug build.
+
+#[path = "extremes/double_double.rs"]
+mod double_double;
+#[path = "extremes/spin.rs"]
+mod spin;
+#[path = "extremes/support.rs"]
+mod support;
