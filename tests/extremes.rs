@@ -7,8 +7,9 @@
 //!   to cond([I]) · ε, and both integrated torque-free;
 //! - `single_precision`: how fast an f32 run leaves the f64 run.
 //!
-//! The long f32 runs are printed by `cargo run --release --example f32_vs_f64`
-//! (docs/f32_vs_f64.md). Every test here runs in well under a second in a debug build.
+//! The tables behind the bounds come from `cargo run --release --example extremes` and
+//! `--example f32_vs_f64` (docs/extremes.md, docs/f32_vs_f64.md). Every test here runs in well
+//! under a second in a debug build.
 
 #[path = "extremes/conditioning.rs"]
 mod conditioning;
