@@ -1,12 +1,12 @@
 //! Scenes: a body, what acts on it, where it starts and how to integrate it, in one TOML file.
 //!
-//! A scene is read in two passes. [`file`](mod@file) reads the TOML into tables with serde, every table
-//! closed to unknown keys, so that a misspelt key is an error and not a silent default; then
-//! [`Scene::from_file`] checks each value for its family and builds what runs: the smallest
-//! proved model the scene needs ([`select_spatial`]), the loads as inputs of that model
-//! ([`SceneLoads`]),
-//! the initial state in the model's own layout, and the integrator. Every error names the key
-//! by its path in the file (`integrator.step`) and says what is wrong with it.
+//! A scene is read in two passes. [`file`](mod@file) reads the TOML into tables with serde,
+//! every table closed to unknown keys, so that a misspelt key is an error and not a silent
+//! default; then [`Scene::from_file`] checks each value for its family and builds what runs:
+//! the smallest proved model the scene needs ([`select_spatial`]), the loads as inputs of that
+//! model ([`SceneLoads`]), the initial state in the model's own layout, and the integrator.
+//! Every error names the key by its path in the file (`integrator.step`) and says what is
+//! wrong with it.
 //!
 //! Space axes are X north, Y east, Z down and body axes x forward, y to starboard, z down, as
 //! in the chapter's ship dynamics; angles in a scene file are in degrees, rates in rad/s.
