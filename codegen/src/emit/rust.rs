@@ -372,11 +372,42 @@ fn energy_function(
     }
 }
 
-/// A parameter expression as f64 Rust code: Σ ± c · Π numerator / (Π denominator).
+/// A parameter expression as f64 Rust code. A factor common to every term is taken out,
+/// `(iyy - izz) / ixx` rather than `iyy / ixx - izz / ixx`: the subtraction of two nearly
+/// equal moments is then exact (Sterbenz) before the one rounding of the division, where
+/// the expanded form rounds each quotient first and loses the difference's digits.
 fn f64_tokens(e: &Expr) -> TokenStream {
     if e.is_zero() {
         return quote! { 0.0 };
     }
+    let common = common_factor(e);
+    if common.is_one() || e.term_count() < 2 {
+        return f64_sum(e);
+    }
+    let inverse = common
+        .reciprocal()
+        .expect("parameter monomials have no sine");
+    let rest = e * &Expr::term(Rational::one(), inverse);
+    let sum = f64_sum(&rest);
+    let (numerator, denominator) = split_powers(&common);
+    match (numerator.is_empty(), denominator.is_empty()) {
+        (_, true) => {
+            let top = product(numerator);
+            quote! { (#sum) * #top }
+        }
+        (true, false) => {
+            let bottom = product(denominator);
+            quote! { (#sum) / (#bottom) }
+        }
+        (false, false) => {
+            let (top, bottom) = (product(numerator), product(denominator));
+            quote! { (#sum) * #top / (#bottom) }
+        }
+    }
+}
+
+/// Σ ± c · Π numerator / (Π denominator), term by term.
+fn f64_sum(e: &Expr) -> TokenStream {
     let mut tokens = TokenStream::new();
     for (i, (monomial, c)) in e.terms().enumerate() {
         let term = f64_term(monomial, &c.abs());
@@ -388,6 +419,46 @@ fn f64_tokens(e: &Expr) -> TokenStream {
         };
     }
     tokens
+}
+
+/// The largest monomial that divides every term: each symbol to the power of smallest
+/// magnitude it has in every term, where every term has it with the same sign.
+fn common_factor(e: &Expr) -> crate::symbolic::Monomial {
+    let mut terms = e.terms();
+    let Some((first, _)) = terms.next() else {
+        return crate::symbolic::Monomial::one();
+    };
+    let mut common = first.clone();
+    for (monomial, _) in terms {
+        let mut next = crate::symbolic::Monomial::one();
+        for (atom, power) in common.factors() {
+            let other = monomial.power(atom);
+            if other.signum() == power.signum() {
+                let magnitude = power.abs().min(other.abs());
+                next.multiply_atom(atom.clone(), power.signum() * magnitude);
+            }
+        }
+        common = next;
+    }
+    common
+}
+
+/// A monomial's symbols with positive and with negative powers, as identifier tokens.
+fn split_powers(m: &crate::symbolic::Monomial) -> (Vec<TokenStream>, Vec<TokenStream>) {
+    let (mut numerator, mut denominator) = (Vec::new(), Vec::new());
+    for (atom, power) in m.factors() {
+        let name = ident(&identifier(atom.symbol()));
+        let side = if power > 0 {
+            &mut numerator
+        } else {
+            &mut denominator
+        };
+        side.extend(std::iter::repeat_n(
+            quote! { #name },
+            power.unsigned_abs() as usize,
+        ));
+    }
+    (numerator, denominator)
 }
 
 fn f64_term(monomial: &crate::symbolic::Monomial, magnitude: &Rational) -> TokenStream {

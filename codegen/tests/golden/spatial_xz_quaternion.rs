@@ -57,31 +57,24 @@ impl<T: SimdRealField + Copy> Coefficients<T> {
         let iyy = parameters.iyy;
         let izz = parameters.izz;
         let ixz = parameters.ixz;
-        let inv_det = 1.0 / (ixx * iyy * izz - ixz * ixz * iyy);
+        let inv_det = 1.0 / ((ixx * izz - ixz * ixz) * iyy);
         Self {
             inv_mass: T::from_subset(&(1.0 / (mass))),
             inv_inertia_xx: T::from_subset(&(iyy * izz * inv_det)),
             inv_inertia_xz: T::from_subset(&(ixz * iyy * inv_det)),
-            p_dot_p_q: T::from_subset(
-                &(ixx * ixz * iyy * inv_det + ixz * iyy * izz * inv_det
-                    - ixz * iyy * iyy * inv_det),
-            ),
+            p_dot_p_q: T::from_subset(&((ixx - iyy + izz) * ixz * iyy * inv_det)),
             p_dot_q_r: T::from_subset(
-                &(ixz * ixz * iyy * inv_det + iyy * izz * izz * inv_det
-                    - iyy * iyy * izz * inv_det),
+                &((ixz * ixz - iyy * izz + izz * izz) * iyy * inv_det),
             ),
-            inv_inertia_yy: T::from_subset(&(ixx * izz * inv_det - ixz * ixz * inv_det)),
+            inv_inertia_yy: T::from_subset(&((ixx * izz - ixz * ixz) * inv_det)),
             q_dot_p_r: T::from_subset(
-                &(ixx * ixz * ixz * inv_det + ixx * izz * izz * inv_det
-                    - ixx * ixx * izz * inv_det - ixz * ixz * izz * inv_det),
+                &((ixx * ixz * ixz + ixx * izz * izz - ixx * ixx * izz - ixz * ixz * izz)
+                    * inv_det),
             ),
-            q_dot_p_p: T::from_subset(
-                &(ixx * ixz * izz * inv_det - ixz * ixz * ixz * inv_det),
-            ),
+            q_dot_p_p: T::from_subset(&((ixx * izz - ixz * ixz) * ixz * inv_det)),
             inv_inertia_zz: T::from_subset(&(ixx * iyy * inv_det)),
             r_dot_p_q: T::from_subset(
-                &(ixx * iyy * iyy * inv_det - ixx * ixx * iyy * inv_det
-                    - ixz * ixz * iyy * inv_det),
+                &((ixx * iyy - ixx * ixx - ixz * ixz) * iyy * inv_det),
             ),
             ixz: T::from_subset(&(ixz)),
             half_ixx: T::from_subset(&(0.5 * ixx)),

@@ -58,17 +58,13 @@ impl<T: SimdRealField + Copy> Coefficients<T> {
         let inv_iyy_o = 1.0 / (iyy + mass * h * h);
         Self {
             inv_ixx_o: T::from_subset(&(inv_ixx_o)),
-            p_dot_q_r: T::from_subset(
-                &(iyy * inv_ixx_o - izz * inv_ixx_o + mass * h * h * inv_ixx_o),
-            ),
+            p_dot_q_r: T::from_subset(&((iyy - izz + mass * h * h) * inv_ixx_o)),
             p_dot_q0_q1: T::from_subset(&(2.0 * mass * g * h * inv_ixx_o)),
             inv_iyy_o: T::from_subset(&(inv_iyy_o)),
-            q_dot_p_r: T::from_subset(
-                &(ixx * inv_iyy_o - izz * inv_iyy_o + mass * h * h * inv_iyy_o),
-            ),
+            q_dot_p_r: T::from_subset(&((ixx - izz + mass * h * h) * inv_iyy_o)),
             q_dot_q0_q2: T::from_subset(&(2.0 * mass * g * h * inv_iyy_o)),
             inv_izz: T::from_subset(&(1.0 / (izz))),
-            r_dot_p_q: T::from_subset(&(ixx / (izz) - iyy / (izz))),
+            r_dot_p_q: T::from_subset(&((ixx - iyy) / (izz))),
             t_p_p: T::from_subset(&(0.5 * ixx + 0.5 * mass * h * h)),
             t_q_q: T::from_subset(&(0.5 * iyy + 0.5 * mass * h * h)),
             half_izz: T::from_subset(&(0.5 * izz)),
