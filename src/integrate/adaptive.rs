@@ -13,7 +13,8 @@ use nalgebra::{RealField, SVector};
 
 use super::controller::{PiController, Verdict, initial_step};
 use super::{
-    AdaptiveOptions, IntegrateError, OdeSystem, Stats, check_finite, check_interval, lit, to_f64,
+    AdaptiveOptions, IntegrateError, OdeSystem, Probe, Stats, check_finite, check_interval,
+    explain_failure, lit, to_f64,
 };
 
 /// An embedded explicit Runge–Kutta pair with `S` stages, as [`run`] steps it.
@@ -148,6 +149,17 @@ where
         let (y_new, err) = trial::<P, S, T, N, _>(system, (t, h), &y, tols, &mut k);
         stats.rhs_evals += S - 1;
         if !err.is_finite() {
+            // Replay the step to name a non-finite load input, if the system can.
+            let replay = |probe: &Probe<'_, _>| {
+                let mut stages = [SVector::<T, N>::zeros(); S];
+                probe.rhs(t, &y, &mut stages[0]);
+                trial::<P, S, T, N, _>(probe, (t, h), &y, tols, &mut stages);
+            };
+            let (cause, replayed) = explain_failure(system, replay);
+            stats.rhs_evals += replayed;
+            if let Some(cause) = cause {
+                return Err(cause);
+            }
             check_finite(&y_new, t + h)?;
         }
         let accepted = progress.record(controller.decide(err, h), last);
