@@ -802,7 +802,7 @@ fn a_fixed_step_too_long_for_the_rate_of_turn_stops_the_run_or_warns() {
 
 #[test]
 fn a_state_or_a_load_that_is_not_finite_is_named_with_its_time() {
-    let dir = folder("not_finite");
+    let dir = folder("non_finite_values");
     // Explicit Euler three times past h·|ω| = 1 grows the body's velocity tenfold a step
     // until it overflows: the state component is named.
     let state = spinning(&dir, "state", ("euler", 3e-3), 1000.0, "");
