@@ -573,3 +573,482 @@ fn the_heavy_top_keeps_its_energy_spin_and_vertical_momentum() {
     }
     check_svgs(&out, &["state.svg", "attitude.svg", "energy.svg"]);
 }
+
+/// A run into `out` that is expected to fail: its exit code and standard error.
+fn run_failing(scene: &Path, out: &Path) -> (i32, String) {
+    let output = eom()
+        .args([
+            "run",
+            scene.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    (
+        output.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&output.stderr).into_owned(),
+    )
+}
+
+/// The unit quaternion (scalar first) of roll φ, pitch θ, yaw ψ (E = Rz(ψ)Ry(θ)Rx(φ)).
+fn quaternion_of(phi: f64, theta: f64, psi: f64) -> [f64; 4] {
+    let q = nalgebra::UnitQuaternion::from_euler_angles(phi, theta, psi);
+    [q.w, q.i, q.j, q.k]
+}
+
+#[test]
+fn euler_angles_stop_at_gimbal_lock_where_the_quaternion_goes_on_and_agree_before_it() {
+    let dir = folder("gimbal_lock");
+    let text = std::fs::read_to_string(scene("looping.toml")).unwrap();
+    let euler = dir.join("looping_euler.toml");
+    std::fs::write(
+        &euler,
+        text.replace("kinematics = \"quaternion\"", "kinematics = \"euler\""),
+    )
+    .unwrap();
+    let (code, stderr) = run_failing(&euler, &dir.join("euler"));
+    assert_eq!(code, 5, "{stderr}");
+    for needed in ["gimbal lock", "crossed ±90°", "kinematics = \"quaternion\""] {
+        assert!(stderr.contains(needed), "no `{needed}` in: {stderr}");
+    }
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    // A pure pitch under a constant moment: q = 2t rad/s, θ = t², 90° at t = √(π/2) =
+    // 1.2533 s. RK4 at 1 ms checks every step: it stops at the step that crossed.
+    let s = summary(&dir.join("euler"));
+    let error = s["error"].as_str().unwrap();
+    assert!(error.contains("gimbal lock at t = 1.254 s"), "{error}");
+    assert_eq!(s["interrupted"], false);
+    let (header, rows) = trajectory(&dir.join("euler"));
+    let last = rows.last().unwrap()[0];
+    assert_eq!(
+        last, 1.25,
+        "rows stop at the last one before the step that crossed"
+    );
+    assert_eq!(s["final_time"].as_f64(), Some(last));
+    check_svgs(
+        &dir.join("euler"),
+        &["state.svg", "attitude.svg", "track.svg"],
+    );
+    // The same scene with a quaternion goes on through 90° (the_looping_body_passes_pitch_90
+    // checks where it ends) and agrees with every Euler-angle row: the same RK4 steps of the
+    // same dynamics, the attitude compared as quaternions (which stay well conditioned at
+    // 90°). Both integrate to about 1e-12 here; they agree to 1e-10 of each entry's size.
+    let quaternion = dir.join("quaternion");
+    run_scene("looping.toml", &quaternion);
+    let (q_header, q_rows) = trajectory(&quaternion);
+    assert!(q_rows.last().unwrap()[0] == 2.0 && q_rows.len() > rows.len());
+    let at = |names: &[String], row: &[f64], name: &str| {
+        row[names.iter().position(|h| h == name).unwrap()]
+    };
+    for (e, q) in rows.iter().zip(&q_rows) {
+        assert_eq!(e[0], q[0]);
+        for name in ["u", "v", "w", "p", "q", "r", "x", "y", "z"] {
+            let (a, b) = (at(&header, e, name), at(&q_header, q, name));
+            assert!(
+                (a - b).abs() <= 1e-10 * a.abs().max(1.0),
+                "{name} at t = {}: {a} against {b}",
+                e[0]
+            );
+        }
+        let from_angles = quaternion_of(
+            at(&header, e, "phi"),
+            at(&header, e, "theta"),
+            at(&header, e, "psi"),
+        );
+        for (k, name) in ["q0", "q1", "q2", "q3"].iter().enumerate() {
+            let b = at(&q_header, q, name);
+            assert!(
+                (from_angles[k] - b).abs() <= 1e-10,
+                "{name} at t = {}: {} against {b}",
+                e[0],
+                from_angles[k]
+            );
+        }
+    }
+    // A run that starts at the pole fails at once, and a top tipping over in Euler angles
+    // fails as the spatial body does.
+    let upright = dir.join("at_the_pole.toml");
+    std::fs::write(
+        &upright,
+        text.replace("kinematics = \"quaternion\"", "kinematics = \"euler\"")
+            .replace("[initial]", "[initial]\nattitude_deg = [0.0, 90.0, 0.0]"),
+    )
+    .unwrap();
+    let (code, stderr) = run_failing(&upright, &dir.join("at_the_pole"));
+    assert_eq!(code, 5, "{stderr}");
+    assert!(
+        stderr.contains("gimbal lock at t = 0 s") && stderr.contains("from ±90°"),
+        "{stderr}"
+    );
+    let top = dir.join("top.toml");
+    std::fs::write(
+        &top,
+        std::fs::read_to_string(scene("heavy_top.toml"))
+            .unwrap()
+            .replace("kinematics = \"quaternion\"", "kinematics = \"euler\"")
+            .replace("rates = [0.0, 0.0, 20.0]", "rates = [0.0, 0.0, 0.0]")
+            .replace(
+                "attitude_deg = [28.6, 0.0, 0.0]",
+                "attitude_deg = [0.0, 80.0, 0.0]",
+            ),
+    )
+    .unwrap();
+    let (code, stderr) = run_failing(&top, &dir.join("top"));
+    assert_eq!(code, 5, "{stderr}");
+    assert!(stderr.contains("gimbal lock"), "{stderr}");
+}
+
+/// A free body spinning about its z-axis at `rate` rad/s, with `method` and `step`, and
+/// `extra` lines in its [loads].
+fn spinning(
+    dir: &Path,
+    name: &str,
+    (method, step): (&str, f64),
+    rate: f64,
+    loads: &str,
+) -> PathBuf {
+    let path = dir.join(format!("{name}.toml"));
+    std::fs::write(
+        &path,
+        format!(
+            "title = \"Spinning\"\n[body]\nmass = 1.0\n\
+             inertia = [[2.0, 0.0, 0.0], [0.0, 3.0, 0.0], [0.0, 0.0, 4.5]]\n\
+             [model]\nfamily = \"spatial\"\n[initial]\nvelocity = [1.0, 0.0, 0.0]\n\
+             rates = [0.0, 0.0, {rate:?}]\n[loads]\n{loads}\n[integrator]\n\
+             method = \"{method}\"\nstep = {step:?}\nend_time = 2.0\n[output]\nevery = 0.01\n"
+        ),
+    )
+    .unwrap();
+    path
+}
+
+#[test]
+fn a_fixed_step_too_long_for_the_rate_of_turn_stops_the_run_or_warns() {
+    let dir = folder("step_against_rate");
+    // At 5000 rad/s a 1 ms RK4 step is h·|ω| = 5, beyond 2√2: the run stops before its
+    // first step.
+    let fast = spinning(&dir, "fast", ("rk4", 1e-3), 5000.0, "");
+    let (code, stderr) = run_failing(&fast, &dir.join("fast"));
+    assert_eq!(code, 5, "{stderr}");
+    for needed in [
+        "t = 0 s",
+        "h·|ω| = 0.001 s × 5000.000 rad/s",
+        "rk4",
+        "2.8284",
+    ] {
+        assert!(stderr.contains(needed), "no `{needed}` in: {stderr}");
+    }
+    // Spun up by 1000 rad/s² from 1000 rad/s, it passes 2√2/h = 2828 rad/s at t = 1.83 s:
+    // the run stops at the step past it, its rows up to the last before.
+    let spun_up = spinning(
+        &dir,
+        "spun_up",
+        ("rk4", 1e-3),
+        1000.0,
+        "moment_body = [0.0, 0.0, 4500.0]",
+    );
+    let (code, stderr) = run_failing(&spun_up, &dir.join("spun_up"));
+    assert_eq!(code, 5, "{stderr}");
+    let s = summary(&dir.join("spun_up"));
+    let error = s["error"].as_str().unwrap();
+    assert!(
+        error.contains("at t = 1.829 s") && error.contains("2829.000 rad/s"),
+        "{error}"
+    );
+    assert_eq!(s["final_time"].as_f64(), Some(1.82));
+    // Symplectic Euler on a pendulum (ω₀ = √(Mgh/I₀) = 2.71 rad/s) beyond h·ω₀ = 2.
+    let text = std::fs::read_to_string(scene("pendulum.toml")).unwrap();
+    let coarse = dir.join("coarse_pendulum.toml");
+    let method = text.find("method").unwrap();
+    let end = text[method..].find("end_time").unwrap() + method;
+    std::fs::write(
+        &coarse,
+        format!(
+            "{}method = \"symplectic-euler\"\nstep = 0.8\n{}",
+            &text[..method],
+            &text[end..]
+        ),
+    )
+    .unwrap();
+    let (code, stderr) = run_failing(&coarse, &dir.join("coarse_pendulum"));
+    assert_eq!(code, 5, "{stderr}");
+    assert!(
+        stderr.contains("h·ω₀") && stderr.contains("symplectic-euler's stability limit 2.0000"),
+        "{stderr}"
+    );
+    // Explicit Euler has no stability limit on the imaginary axis: its run goes on, and the
+    // summary and standard error warn with the largest h·|ω| and the step that would do.
+    let euler = spinning(&dir, "euler", ("euler", 1e-4), 1000.0, "");
+    let output = eom()
+        .args([
+            "run",
+            euler.to_str().unwrap(),
+            "--out",
+            dir.join("euler").to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(output.status.success(), "{stderr}");
+    let warnings = summary(&dir.join("euler"))["warnings"].clone();
+    let warning = warnings[0].as_str().unwrap();
+    assert!(
+        warning.contains("h·|ω| reached 0.1000") && warning.contains("step ≤ 3.183e-5 s"),
+        "{warning}"
+    );
+    assert!(stderr.contains(warning), "{stderr}");
+}
+
+#[test]
+fn a_state_or_a_load_that_is_not_finite_is_named_with_its_time() {
+    let dir = folder("non_finite_values");
+    // Explicit Euler three times past h·|ω| = 1 grows the body's velocity tenfold a step
+    // until it overflows: the state component is named.
+    let state = spinning(&dir, "state", ("euler", 3e-3), 1000.0, "");
+    let (code, stderr) = run_failing(&state, &dir.join("state"));
+    assert_eq!(code, 5, "{stderr}");
+    assert!(
+        stderr.contains("the run failed at t = 0.9")
+            && stderr.contains("the state component x is not finite"),
+        "{stderr}"
+    );
+    let s = summary(&dir.join("state"));
+    assert!(s["error"].as_str().unwrap().contains("state component x"));
+    // Quadratic damping far too strong for the step: u goes 10, −990, 9.8e6, … and at
+    // u ≈ −5e254 (the row at 0.07 s) the damping force −d·u|u| overflows at a finite state.
+    // The load is named, not the state it would poison next.
+    let load = dir.join("load.toml");
+    std::fs::write(
+        &load,
+        "title = \"Overdamped\"\n[body]\nmass = 1.0\nizz = 1.0\n[model]\nfamily = \"planar-g\"\n\
+         [initial]\nu = 10.0\n[loads]\nquadratic_damping = [1000.0, 0.0, 0.0]\n[integrator]\n\
+         method = \"euler\"\nstep = 0.01\nend_time = 1.0\n[output]\nevery = 0.01\n",
+    )
+    .unwrap();
+    let (code, stderr) = run_failing(&load, &dir.join("load"));
+    assert_eq!(code, 5, "{stderr}");
+    assert!(
+        stderr.contains("the run failed at t = 0.07")
+            && stderr.contains("the load input F_x is inf at a finite state"),
+        "{stderr}"
+    );
+    let (_, rows) = trajectory(&dir.join("load"));
+    assert_eq!(rows.last().unwrap()[0], 0.07);
+    // Every state written is finite (its kinetic energy ½Mu² overflowed long before).
+    assert!(
+        rows.iter()
+            .all(|row| row[1..7].iter().all(|x| x.is_finite()))
+    );
+}
+
+#[test]
+fn an_output_folder_that_cannot_be_written_is_named_with_exit_code_4() {
+    let dir = folder("unwritable");
+    let file = dir.join("a_file");
+    std::fs::write(&file, "").unwrap();
+    for out in [file.join("sub"), file.clone()] {
+        let (code, stderr) = run_failing(&scene("pendulum.toml"), &out);
+        assert_eq!(code, 4, "{stderr}");
+        assert!(
+            stderr.contains(&format!(
+                "the output folder {} cannot be written",
+                out.display()
+            )),
+            "{stderr}"
+        );
+    }
+    #[cfg(unix)]
+    read_only_folder(&dir);
+}
+
+/// A read-only folder. Root writes through permission bits, so there the folder is made
+/// immutable instead where the file system allows (chattr +i); where neither can be arranged
+/// this case is left out, and says so.
+#[cfg(unix)]
+fn read_only_folder(dir: &Path) {
+    use std::os::unix::fs::PermissionsExt;
+    let read_only = dir.join("read_only");
+    std::fs::create_dir(&read_only).unwrap();
+    let set_mode = |mode: u32| {
+        std::fs::set_permissions(&read_only, std::fs::Permissions::from_mode(mode)).unwrap();
+    };
+    set_mode(0o555);
+    /// Undoes `chattr +i` however the test ends, so the folder can be removed.
+    struct Immutable<'a>(&'a Path, bool);
+    impl Drop for Immutable<'_> {
+        fn drop(&mut self) {
+            if self.1 {
+                let _ = Command::new("chattr").arg("-i").arg(self.0).status();
+            }
+        }
+    }
+    let probe = read_only.join("probe");
+    let mut immutable = Immutable(&read_only, false);
+    if std::fs::write(&probe, "").is_ok() {
+        std::fs::remove_file(&probe).unwrap();
+        immutable.1 = Command::new("chattr")
+            .arg("+i")
+            .arg(&read_only)
+            .status()
+            .is_ok_and(|s| s.success());
+    }
+    if std::fs::write(&probe, "").is_err() {
+        let (code, stderr) = run_failing(&scene("pendulum.toml"), &read_only);
+        assert_eq!(code, 4, "{stderr}");
+        assert!(
+            stderr.contains(&format!(
+                "the output folder {} cannot be written",
+                read_only.display()
+            )),
+            "{stderr}"
+        );
+    } else {
+        eprintln!("a read-only folder cannot be made here; that case is not checked");
+    }
+    drop(immutable);
+    set_mode(0o755);
+}
+
+/// A run of the tennis racket that would take hours, started in the background.
+#[cfg(unix)]
+fn long_run(dir: &Path, out: &Path) -> std::process::Child {
+    let path = dir.join("long.toml");
+    let text = std::fs::read_to_string(scene("tennis_racket.toml"))
+        .unwrap()
+        .replace("end_time = 20.0", "end_time = 1.0e6")
+        .replace("max_steps = 1_000_000", "max_steps = 1_000_000_000");
+    std::fs::write(&path, text).unwrap();
+    eom()
+        .args([
+            "run",
+            path.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ])
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap()
+}
+
+/// Waits until `out/trajectory.csv` holds at least `lines` lines.
+#[cfg(unix)]
+fn wait_for_rows(child: &mut std::process::Child, out: &Path, lines: usize) {
+    let start = std::time::Instant::now();
+    loop {
+        let text = std::fs::read_to_string(out.join("trajectory.csv")).unwrap_or_default();
+        if text.lines().count() >= lines {
+            return;
+        }
+        if let Some(status) = child.try_wait().unwrap() {
+            let mut stderr = String::new();
+            let _ = std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut stderr);
+            panic!("the run ended before its rows: {status}, {stderr}");
+        }
+        assert!(start.elapsed().as_secs() < 120, "no rows after two minutes");
+        std::thread::sleep(std::time::Duration::from_millis(50));
+    }
+}
+
+/// Waits for the child to end, at most a minute.
+#[cfg(unix)]
+fn wait_for_exit(child: &mut std::process::Child) -> std::process::ExitStatus {
+    let start = std::time::Instant::now();
+    loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            return status;
+        }
+        if start.elapsed().as_secs() > 60 {
+            let _ = child.kill();
+            panic!("the run did not end within a minute of its signal");
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+}
+
+/// The rows of a trajectory that may end in a line cut short: every line that ends in a
+/// newline must be a whole row of numbers; what follows the last newline, if anything, is
+/// the cut line, returned apart.
+#[cfg(unix)]
+fn complete_rows(out: &Path) -> (Vec<Vec<f64>>, String) {
+    let text = std::fs::read_to_string(out.join("trajectory.csv")).unwrap();
+    let end = text.rfind('\n').map_or(0, |i| i + 1);
+    let (whole, cut) = text.split_at(end);
+    let mut lines = whole.lines();
+    let fields = lines.next().unwrap().split(',').count();
+    let rows: Vec<Vec<f64>> = lines
+        .map(|line| {
+            let row: Vec<f64> = line
+                .split(',')
+                .map(|x| x.parse().unwrap_or_else(|_| panic!("`{x}` in `{line}`")))
+                .collect();
+            assert_eq!(
+                row.len(),
+                fields,
+                "an incomplete row before the end: {line}"
+            );
+            row
+        })
+        .collect();
+    assert!(cut.split(',').count() <= fields, "{cut}");
+    (rows, cut.to_owned())
+}
+
+#[cfg(unix)]
+#[test]
+fn ctrl_c_or_sigterm_end_a_run_with_every_row_its_summary_and_plots() {
+    for (signal, code, name) in [
+        (libc::SIGINT, 130, "sigint"),
+        (libc::SIGTERM, 143, "sigterm"),
+    ] {
+        let dir = folder(name);
+        let out = dir.join("out");
+        let mut child = long_run(&dir, &out);
+        wait_for_rows(&mut child, &out, 200);
+        let pid = libc::pid_t::try_from(child.id()).unwrap();
+        // SAFETY: kill(2) on the child's own pid, which has not been waited for yet.
+        assert_eq!(unsafe { libc::kill(pid, signal) }, 0);
+        let status = wait_for_exit(&mut child);
+        let mut stderr = String::new();
+        std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut stderr).unwrap();
+        assert_eq!(status.code(), Some(code), "{name}: {stderr}");
+        assert!(stderr.contains("interrupted by"), "{stderr}");
+        // A clean end: the file ends with a whole row, and the summary is its.
+        let (rows, cut) = complete_rows(&out);
+        assert!(
+            cut.is_empty(),
+            "{name}: a cut line after a clean end: {cut}"
+        );
+        assert!(rows.len() >= 199, "{name}: {} rows", rows.len());
+        let last = rows.last().unwrap();
+        let s = summary(&out);
+        assert_eq!(s["interrupted"], true, "{name}");
+        assert!(s["error"].is_null(), "{name}");
+        assert_eq!(s["final_time"].as_f64(), Some(last[0]), "{name}");
+        assert_eq!(s["final_state"]["q"].as_f64(), Some(last[5]), "{name}");
+        check_svgs(&out, &["state.svg", "attitude.svg", "track.svg"]);
+    }
+}
+
+#[cfg(unix)]
+#[test]
+fn a_killed_run_leaves_every_complete_row_readable() {
+    let dir = folder("sigkill");
+    let out = dir.join("out");
+    let mut child = long_run(&dir, &out);
+    wait_for_rows(&mut child, &out, 200);
+    // SIGKILL: no handler runs, nothing is flushed. What the file holds was handed to it
+    // whole, so every line that ends in a newline is a complete row; at most the last line
+    // can be cut (by a write the kernel cut short), and then it has no newline.
+    child.kill().unwrap();
+    let status = child.wait().unwrap();
+    assert!(!status.success());
+    let (rows, cut) = complete_rows(&out);
+    assert!(rows.len() >= 199, "{} rows", rows.len());
+    assert!(rows.windows(2).all(|w| w[1][0] > w[0][0]));
+    if !cut.is_empty() {
+        eprintln!("the kill cut the last line: {cut}");
+    }
+    assert!(!out.join("summary.json").exists());
+}

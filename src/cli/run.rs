@@ -6,16 +6,25 @@
 //! in parallel, each into `case-NNNN/`, and writes `sweep.csv`, one line per case; `--shard
 //! K/N` runs only the cases k ≡ K (mod N). With no scene, `eom` runs its default scene, the
 //! tennis-racket flip.
+//!
+//! A run that stops early loses nothing it computed: on Ctrl-C (SIGINT) or SIGTERM it ends at
+//! its next row, and a run that fails (gimbal lock, a step too long, a value that is not
+//! finite) ends where it failed; either way trajectory.csv keeps every row up to there,
+//! summary.json says `"interrupted": true` or gives the `"error"`, and the plots show what ran.
+//! A second signal ends the process at once (the trajectory then holds the rows last handed
+//! to the file). Exit codes: 5 for a failed run, 128 + the signal (130, 143) for an
+//! interrupted one.
 
 use anyhow::{Context, Result, bail};
 use eom::output::summary::{Summary, write_atomically};
 use eom::output::trajectory::{Columns, TrajectoryWriter};
-use eom::run::{Report, run};
+use eom::run::{Report, Row, RunError, Sink, run_reporting};
 use eom::scene::sweep::{Case, cases, parse_shard};
 use eom::scene::{Body, Problem, Scene, SceneError};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
 /// The default scene: `scenes/tennis_racket.toml`, built into the binary.
@@ -44,6 +53,84 @@ pub struct Args {
 #[error("{0} already holds a run; use --force to write over it, or --out for another folder")]
 pub struct OutputExists(pub PathBuf);
 
+/// An output folder that cannot be made or written into: a path under a file, a read-only
+/// directory. Named before anything runs.
+#[derive(Debug, thiserror::Error)]
+#[error("the output folder {} cannot be written: {cause}", path.display())]
+pub struct OutputFolder {
+    /// The folder.
+    pub path: PathBuf,
+    /// What the system said.
+    pub cause: std::io::Error,
+}
+
+impl OutputFolder {
+    fn new(path: &Path, cause: std::io::Error) -> Self {
+        Self {
+            path: path.to_owned(),
+            cause,
+        }
+    }
+}
+
+/// A run ended early by a signal (Ctrl-C's SIGINT, or SIGTERM) after it kept what it had.
+#[derive(Debug, thiserror::Error)]
+#[error("interrupted by {}: {kept}", signal_name(*signal))]
+pub struct Interrupted {
+    /// The signal's number: the exit code is 128 plus it.
+    pub signal: i32,
+    /// What was kept, and where.
+    pub kept: String,
+}
+
+fn signal_name(signal: i32) -> String {
+    match signal {
+        2 => "Ctrl-C (SIGINT)".into(),
+        15 => "SIGTERM".into(),
+        other => format!("signal {other}"),
+    }
+}
+
+/// The signal that asked the run to end, 0 while none has.
+static SIGNAL: AtomicUsize = AtomicUsize::new(0);
+/// Set by the first signal: a second one ends the process at once.
+static ARMED: AtomicBool = AtomicBool::new(false);
+
+/// The signal received, if any.
+fn signal_received() -> Option<i32> {
+    match SIGNAL.load(Ordering::SeqCst) {
+        0 => None,
+        signal => Some(signal as i32),
+    }
+}
+
+/// Installs the handlers of SIGINT and SIGTERM, once: the first signal sets [`SIGNAL`], which
+/// the run reads at each row; the second exits at once with 128 + the signal. Where a handler
+/// cannot be installed the signal keeps its default action (the process ends).
+fn watch_signals() {
+    use signal_hook::consts::{SIGINT, SIGTERM};
+    use signal_hook::flag;
+    static ONCE: std::sync::Once = std::sync::Once::new();
+    ONCE.call_once(|| {
+        for signal in [SIGINT, SIGTERM] {
+            // The order matters: the exit runs first, and only once armed by the first signal.
+            let _ = flag::register_conditional_shutdown(signal, 128 + signal, &ARMED);
+            let _ = flag::register_usize(signal, &SIGNAL, signal as usize);
+            let _ = flag::register(signal, &ARMED);
+        }
+    });
+}
+
+/// The trajectory writer, refusing the rows after a signal: the run ends at its next row, and
+/// the last row written is the last the run reports.
+struct Interruptible<'a>(&'a mut TrajectoryWriter);
+
+impl Sink for Interruptible<'_> {
+    fn row(&mut self, row: &Row) -> bool {
+        signal_received().is_none() && self.0.row(row)
+    }
+}
+
 /// Runs `eom run`.
 pub fn run_command(args: Args) -> Result<()> {
     let name = args.scene.display().to_string();
@@ -62,6 +149,7 @@ pub fn run_command(args: Args) -> Result<()> {
 
 /// Runs the default scene into `./tennis_racket/` (what `cargo run --release` does).
 pub fn run_default() -> Result<()> {
+    watch_signals();
     let out = default_folder(Path::new(DEFAULT_NAME));
     println!(
         "eom: no subcommand given, so running the default scene ({DEFAULT_NAME}); `eom --help` lists the others."
@@ -92,6 +180,7 @@ fn execute(
     force: bool,
     shard: Option<(usize, usize)>,
 ) -> Result<()> {
+    watch_signals();
     let all = cases(text, name)?;
     let swept = !all[0].values.is_empty();
     // Every case is checked before any runs: a bad value fails the sweep at once.
@@ -113,7 +202,8 @@ fn execute(
     run_sweep(&scenes, name, out, shard)
 }
 
-/// Creates the output folder, refusing one that holds a run unless `force`.
+/// Creates the output folder and makes sure files can be written into it, refusing one that
+/// holds a run unless `force`.
 fn prepare_folder(out: &Path, force: bool) -> Result<()> {
     let holds_a_run = out.join("summary.json").exists()
         || out.join("trajectory.csv").exists()
@@ -121,8 +211,22 @@ fn prepare_folder(out: &Path, force: bool) -> Result<()> {
     if holds_a_run && !force {
         return Err(OutputExists(out.to_owned()).into());
     }
-    std::fs::create_dir_all(out)
-        .with_context(|| format!("creating the output folder {}", out.display()))
+    writable_folder(out)?;
+    Ok(())
+}
+
+/// Creates `out` if need be and writes and removes a file in it, so that a folder the run
+/// could not write into is named before the run, not after.
+fn writable_folder(out: &Path) -> Result<(), OutputFolder> {
+    if out.is_file() {
+        let cause = std::io::Error::other("it is a file, not a folder");
+        return Err(OutputFolder::new(out, cause));
+    }
+    std::fs::create_dir_all(out).map_err(|e| OutputFolder::new(out, e))?;
+    let probe = out.join(format!(".eom-write-check-{}", std::process::id()));
+    std::fs::write(&probe, b"")
+        .and_then(|()| std::fs::remove_file(&probe))
+        .map_err(|e| OutputFolder::new(out, e))
 }
 
 /// What one run wrote.
@@ -131,9 +235,10 @@ struct Outcome {
     files: Vec<PathBuf>,
 }
 
-/// Runs one scene into `out`: trajectory, summary, plots.
+/// Runs one scene into `out`: trajectory, summary, plots. A run that stops early (a failure,
+/// a signal) still writes its summary and plots of the rows it wrote, then returns the error.
 fn run_case(scene: &Scene, name: &str, out: &Path, progress: bool) -> Result<Outcome> {
-    std::fs::create_dir_all(out).with_context(|| format!("creating {}", out.display()))?;
+    writable_folder(out)?;
     let names = scene.state_names();
     // Potential and total energy columns where the model or the loads have a potential.
     let model_potential = scene.selection.info.potential_energy;
@@ -145,15 +250,24 @@ fn run_case(scene: &Scene, name: &str, out: &Path, progress: bool) -> Result<Out
     if progress {
         writer.on_row(progress_bar(scene.integrator.end_time));
     }
-    let result = run(scene, &mut writer);
+    let ran = run_reporting(scene, &mut Interruptible(&mut writer));
     let write_error = writer.error().map(|e| e.to_string());
     let columns = writer.finish();
-    let report = match (result, write_error) {
-        (Ok(report), _) => report,
-        (Err(_), Some(error)) => bail!("writing {}: {error}", csv_path.display()),
-        (Err(error), None) => return Err(error.into()),
-    };
+    if let Some(error) = write_error {
+        bail!("writing {}: {error}", csv_path.display());
+    }
     let columns = columns.with_context(|| format!("writing {}", csv_path.display()))?;
+    let report = ran.report;
+    if progress {
+        for warning in &report.warnings {
+            eprintln!("warning: {warning}");
+        }
+    }
+    // A row refused after a signal is the only way the run stops that the run calls `Stopped`.
+    let interrupted = match (&ran.error, signal_received()) {
+        (Some(RunError::Stopped { .. }), Some(signal)) => Some(signal),
+        _ => None,
+    };
     let mut summary = Summary::new(
         name.to_owned(),
         scene.title.clone(),
@@ -162,13 +276,45 @@ fn run_case(scene: &Scene, name: &str, out: &Path, progress: bool) -> Result<Out
         &report,
         &names,
     );
+    summary.interrupted = interrupted.is_some();
+    if interrupted.is_none() {
+        summary.error = ran.error.as_ref().map(RunError::to_string);
+    }
     add_family_measures(scene, &columns, &mut summary);
     let summary_path = out.join("summary.json");
     summary
         .write(&summary_path)
         .with_context(|| format!("writing {}", summary_path.display()))?;
     let mut files = vec![csv_path, summary_path];
-    files.extend(super::plots::write(scene, &columns, out)?);
+    // A plot needs two rows; a run stopped at its start has at most one.
+    if columns.time.len() >= 2 {
+        files.extend(super::plots::write(scene, &columns, out)?);
+    }
+    if let Some(signal) = interrupted {
+        let kept = format!(
+            "the run stopped at t = {} s of {} s; {} holds it up to there: every row in \
+             trajectory.csv, summary.json (\"interrupted\": true) and the plots",
+            report.final_time,
+            scene.integrator.end_time,
+            out.display()
+        );
+        return Err(Interrupted { signal, kept }.into());
+    }
+    if let Some(error) = ran.error {
+        let kept = match columns.time.len() {
+            0 => format!(
+                "{name} stopped at its start; {} holds its summary.json",
+                out.display()
+            ),
+            _ => format!(
+                "{name} stopped early; {} holds its rows up to t = {} s, summary.json and the \
+                 plots",
+                out.display(),
+                report.final_time
+            ),
+        };
+        return Err(anyhow::Error::new(error).context(kept));
+    }
     Ok(Outcome { report, files })
 }
 
@@ -267,6 +413,7 @@ fn print_outcome(scene: &Scene, outcome: &Outcome, out: &Path) {
             "  energy drift {drift:.2e} (largest |E − E₀| over the rows, relative to max(|E₀|, largest T))"
         );
     }
+
     println!("  wrote into {}:", out.display());
     for file in &outcome.files {
         println!(
@@ -294,6 +441,9 @@ fn run_sweep(
     let outcomes: Vec<Result<Report>> = scenes
         .par_iter()
         .map(|(case, scene)| {
+            if signal_received().is_some() {
+                bail!("not run: the sweep was interrupted");
+            }
             let folder = out.join(format!("case-{:04}", case.index));
             run_case(scene, name, &folder, false).map(|o| o.report)
         })
@@ -318,6 +468,16 @@ fn run_sweep(
         if let Err(error) = outcome {
             eprintln!("  case {}: {error:#}", case.index);
         }
+    }
+    if let Some(signal) = signal_received() {
+        let kept = format!(
+            "{} of {} cases finished; each interrupted case keeps its rows, summary and plots, \
+             and {} lists every case",
+            scenes.len() - failed,
+            scenes.len(),
+            out.join(&file).display()
+        );
+        return Err(Interrupted { signal, kept }.into());
     }
     if failed > 0 {
         bail!("{failed} of {} cases failed", scenes.len());

@@ -13,7 +13,8 @@ use nalgebra::{RealField, SVector};
 
 use super::controller::{PiController, Verdict, initial_step};
 use super::{
-    AdaptiveOptions, IntegrateError, OdeSystem, Stats, check_finite, check_interval, lit, to_f64,
+    AdaptiveOptions, IntegrateError, OdeSystem, Probe, Stats, check_finite, check_interval,
+    explain_failure, lit, to_f64,
 };
 
 /// An embedded explicit Runge–Kutta pair with `S` stages, as [`run`] steps it.
@@ -148,6 +149,17 @@ where
         let (y_new, err) = trial::<P, S, T, N, _>(system, (t, h), &y, tols, &mut k);
         stats.rhs_evals += S - 1;
         if !err.is_finite() {
+            // Replay the step to name a non-finite load input, if the system can.
+            let replay = |probe: &Probe<'_, _>| {
+                let mut stages = [SVector::<T, N>::zeros(); S];
+                probe.rhs(t, &y, &mut stages[0]);
+                trial::<P, S, T, N, _>(probe, (t, h), &y, tols, &mut stages);
+            };
+            let (cause, replayed) = explain_failure(system, replay);
+            stats.rhs_evals += replayed;
+            if let Some(cause) = cause {
+                return Err(cause);
+            }
             check_finite(&y_new, t + h)?;
         }
         let accepted = progress.record(controller.decide(err, h), last);
@@ -255,14 +267,18 @@ where
 /// Integrates from `(t0, y0)` to `t_end` with the pair `P` and hands the state at every
 /// `t0 + k·every` (k = 0, 1, … while the time is at most `t_end`) to `emit`, by dense output,
 /// as the run goes: nothing is stored, so a run of any length streams. Each time is computed
-/// as `t0 + k·every`, not accumulated. `emit` returning `false` stops the run
-/// ([`IntegrateError::Stopped`]).
+/// as `t0 + k·every`, not accumulated. `check(t, y)` sees the end of every accepted step
+/// before the samples the step holds are emitted. `check` or `emit` returning `false` stops
+/// the run ([`IntegrateError::Stopped`]).
 pub(crate) fn sample<P, const S: usize, T, const N: usize>(
     run_state: (&AdaptiveOptions, &mut Stats),
     system: &(impl OdeSystem<T, N> + ?Sized),
     (t0, y0, t_end): (T, SVector<T, N>, T),
     every: T,
-    mut emit: impl FnMut(T, &SVector<T, N>) -> bool,
+    (mut check, mut emit): (
+        impl FnMut(T, &SVector<T, N>) -> bool,
+        impl FnMut(T, &SVector<T, N>) -> bool,
+    ),
 ) -> Result<SVector<T, N>, IntegrateError>
 where
     P: EmbeddedPair<S>,
@@ -282,6 +298,9 @@ where
     let mut next = 1;
     let y_end = run::<P, S, T, N>(run_state, system, (t0, y0, t_end), |step| {
         let t_new = step.t_old + step.h;
+        if !check(t_new, step.y_new) {
+            return None;
+        }
         if time(next) > t_new || time(next) > t_end {
             return Some(0);
         }

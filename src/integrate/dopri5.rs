@@ -131,8 +131,28 @@ impl Dopri5 {
         T: RealField + Copy,
         S: OdeSystem<T, N> + ?Sized,
     {
+        self.sample_every_checked(system, (t0, y0, t_end), every, |_, _| true, emit)
+    }
+
+    /// As [`sample_every`](Self::sample_every), and `check(t, y)` at the end of every accepted
+    /// step, before the samples the step holds are emitted: `false` stops the run there
+    /// ([`IntegrateError::Stopped`]). A condition of the state (an attitude near a singular
+    /// one) is so caught at the step that reaches it, not at the next sample.
+    pub fn sample_every_checked<T, const N: usize, S>(
+        &mut self,
+        system: &S,
+        (t0, y0, t_end): (T, SVector<T, N>, T),
+        every: T,
+        check: impl FnMut(T, &SVector<T, N>) -> bool,
+        emit: impl FnMut(T, &SVector<T, N>) -> bool,
+    ) -> Result<SVector<T, N>, IntegrateError>
+    where
+        T: RealField + Copy,
+        S: OdeSystem<T, N> + ?Sized,
+    {
         let run_state = (&self.options, &mut self.stats);
-        adaptive::sample::<Self, 7, T, N>(run_state, system, (t0, y0, t_end), every, emit)
+        let interval = (t0, y0, t_end);
+        adaptive::sample::<Self, 7, T, N>(run_state, system, interval, every, (check, emit))
     }
 }
 

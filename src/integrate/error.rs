@@ -70,6 +70,20 @@ pub enum IntegrateError {
         /// The time at which it appeared.
         t: f64,
     },
+    /// An input the system computes from time and state (a load a [`Loads`](crate::Loads)
+    /// closure returns) is NaN or infinite at a finite state: the culprit is the input, not
+    /// the state component it would poison next.
+    #[error("load input {name} is {value} at t = {t}, at a finite state")]
+    NonFiniteInput {
+        /// The input's index in the model's input layout.
+        index: usize,
+        /// The input's name in the model's input layout, e.g. `"M_y"`.
+        name: &'static str,
+        /// Its value (NaN or ±∞).
+        value: f64,
+        /// The time of the right-hand-side evaluation that received it.
+        t: f64,
+    },
     /// Dense output was asked for a number of times that differs from the room given for it.
     #[error("{times} output times but room for {slots} states")]
     OutputLength {

@@ -5,7 +5,7 @@
 
 use nalgebra::{RealField, SVector};
 
-use super::{IntegrateError, Integrator, OdeSystem, Statistics, Stats, run_fixed};
+use super::{IntegrateError, Integrator, OdeSystem, Statistics, Stats, explain_failure, run_fixed};
 
 /// The explicit Euler method with a fixed step.
 #[derive(Debug, Clone)]
@@ -25,6 +25,16 @@ impl Euler {
     }
 }
 
+fn euler_step<T, const N: usize, S>(system: &S, t: T, h: T, y: &mut SVector<T, N>)
+where
+    T: RealField + Copy,
+    S: OdeSystem<T, N> + ?Sized,
+{
+    let mut dy = SVector::<T, N>::zeros();
+    system.rhs(t, y, &mut dy);
+    y.axpy(h, &dy, T::one());
+}
+
 impl<T, const N: usize, S> Integrator<T, N, S> for Euler
 where
     T: RealField + Copy,
@@ -41,13 +51,15 @@ where
     where
         F: FnMut(T, &SVector<T, N>),
     {
-        let mut dy = SVector::<T, N>::zeros();
         let step = |t: T, h: T, y: &mut SVector<T, N>| {
-            system.rhs(t, y, &mut dy);
-            y.axpy(h, &dy, T::one());
+            euler_step(system, t, h, y);
             Ok(1)
         };
-        run_fixed(self.h, &mut self.stats, (t0, y0, t_end), step, observe)
+        let explain = |t: T, h: T, y: &SVector<T, N>| {
+            explain_failure(system, |probe| euler_step(probe, t, h, &mut y.clone()))
+        };
+        let interval = (t0, y0, t_end);
+        run_fixed(self.h, &mut self.stats, interval, step, explain, observe)
     }
 }
 

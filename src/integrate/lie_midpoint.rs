@@ -156,7 +156,10 @@ where
             *y = SVector::<T, 7>::from([w.x, w.y, w.z, q.w, q.i, q.j, q.k]);
             Ok(iterations)
         };
-        run_fixed(self.h, &mut self.stats, (t0, y0, t_end), step, observe)
+        // The torque is the system's own: no load input to name when the state is not finite.
+        let explain = |_: T, _: T, _: &SVector<T, 7>| (None, 0);
+        let interval = (t0, y0, t_end);
+        run_fixed(self.h, &mut self.stats, interval, step, explain, observe)
     }
 }
 

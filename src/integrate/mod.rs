@@ -43,6 +43,8 @@ pub use rk4::Rk4;
 pub use stats::Stats;
 pub use symplectic_euler::SymplecticEuler;
 
+use std::cell::Cell;
+
 use nalgebra::{RealField, SVector};
 
 /// A system of first-order ordinary differential equations ẏ = f(t, y) with an `N`-component
@@ -67,6 +69,16 @@ use nalgebra::{RealField, SVector};
 pub trait OdeSystem<T, const N: usize> {
     /// Writes the derivative ẏ = f(t, y) into `dy`.
     fn rhs(&self, t: T, y: &SVector<T, N>, dy: &mut SVector<T, N>);
+
+    /// Why the derivative at a finite `(t, y)` is not finite, where the system can tell it
+    /// from its parts: a model driven by loads names the load input that is not finite
+    /// ([`IntegrateError::NonFiniteInput`]). The integrators call it only after a step has
+    /// failed, replaying that step to find its first non-finite derivative, so a run that goes
+    /// well never pays for it. `None` (the default): the state component is named instead.
+    fn explain_non_finite(&self, t: T, y: &SVector<T, N>) -> Option<IntegrateError> {
+        let _ = (t, y);
+        None
+    }
 }
 
 impl<T, const N: usize, F> OdeSystem<T, N> for F
@@ -151,6 +163,47 @@ pub(crate) fn check_finite<T: RealField + Copy, const N: usize>(
     }
 }
 
+/// A system that watches another's derivatives while a failed step is replayed through it:
+/// the first derivative that is not finite at a finite state is handed to the system's
+/// [`OdeSystem::explain_non_finite`], once. It counts its calls, which are real calls of the
+/// user's right-hand side and so part of the statistics.
+pub(crate) struct Probe<'a, S: ?Sized> {
+    system: &'a S,
+    seen: Cell<bool>,
+    cause: Cell<Option<IntegrateError>>,
+    calls: Cell<usize>,
+}
+
+impl<T: RealField + Copy, const N: usize, S: OdeSystem<T, N> + ?Sized> OdeSystem<T, N>
+    for Probe<'_, S>
+{
+    fn rhs(&self, t: T, y: &SVector<T, N>, dy: &mut SVector<T, N>) {
+        self.system.rhs(t, y, dy);
+        self.calls.set(self.calls.get() + 1);
+        if !self.seen.get() && !dy.iter().all(|v| v.is_finite()) && y.iter().all(|v| v.is_finite())
+        {
+            self.seen.set(true);
+            self.cause.set(self.system.explain_non_finite(t, y));
+        }
+    }
+}
+
+/// Replays a failed step through a [`Probe`] of `system` and returns the system's account of
+/// its first non-finite derivative, if it gives one, and the RHS evaluations the replay made.
+pub(crate) fn explain_failure<S: ?Sized>(
+    system: &S,
+    replay: impl FnOnce(&Probe<'_, S>),
+) -> (Option<IntegrateError>, usize) {
+    let probe = Probe {
+        system,
+        seen: Cell::new(false),
+        cause: Cell::new(None),
+        calls: Cell::new(0),
+    };
+    replay(&probe);
+    (probe.cause.take(), probe.calls.get())
+}
+
 /// A fixed step `h` as it is used: the interval is cut into `n = ⌈(t_end − t0)/h⌉` equal steps
 /// (a relative slack of 1e-9 keeps `h` that divides the interval from gaining a sliver step),
 /// so the last step lands on `t_end` and the step used never exceeds `h`.
@@ -184,13 +237,16 @@ fn uniform_steps<T: RealField + Copy>(
 /// Drives a fixed-step method from `t0` to `t_end` in the uniform steps of at most `h` that
 /// [`uniform_steps`] makes. Each step is made by `step(t, h, y)`, which returns the RHS
 /// evaluations it spent; after each come a finiteness check and an observer call, and a
-/// failed step ends the run. `stats` counts the run as it goes, so a failed run reports the
-/// steps it completed.
+/// failed step ends the run. A step that leaves the state non-finite is first handed to
+/// `explain(t, h, y)` with the state it started from, which replays it (through
+/// [`explain_failure`]) to name a non-finite load input and returns the evaluations it made.
+/// `stats` counts the run as it goes, so a failed run reports the steps it completed.
 pub(crate) fn run_fixed<T: RealField + Copy, const N: usize>(
     h: f64,
     stats: &mut Stats,
     (t0, y0, t_end): (T, SVector<T, N>, T),
     mut step: impl FnMut(T, T, &mut SVector<T, N>) -> Result<usize, IntegrateError>,
+    explain: impl FnOnce(T, T, &SVector<T, N>) -> (Option<IntegrateError>, usize),
     mut observe: impl FnMut(T, &SVector<T, N>),
 ) -> Result<SVector<T, N>, IntegrateError> {
     *stats = Stats::default();
@@ -198,9 +254,14 @@ pub(crate) fn run_fixed<T: RealField + Copy, const N: usize>(
     let mut y = y0;
     for k in 0..n {
         let t = t0 + h * lit::<T>(k as f64);
+        let start = y;
         stats.rhs_evals += step(t, h, &mut y)?;
         let t_next = t0 + h * lit::<T>((k + 1) as f64);
-        check_finite(&y, t_next)?;
+        if let Err(error) = check_finite(&y, t_next) {
+            let (cause, replayed) = explain(t, h, &start);
+            stats.rhs_evals += replayed;
+            return Err(cause.unwrap_or(error));
+        }
         stats.steps += 1;
         observe(t_next, &y);
     }
@@ -216,10 +277,69 @@ mod tests {
     use super::*;
 
     #[test]
+    fn a_load_that_turns_nan_is_named_by_every_method() {
+        use crate::models::{Model, SpatialPrincipalQuaternion};
+        let inertia = crate::InertiaTensor::new(2.0, 3.0, 4.5, 0.0, 0.0, 0.0).unwrap();
+        let body = SpatialPrincipalQuaternion::<f64>::new(1.0, &inertia).unwrap();
+        let mut start = [0.0; 13];
+        start[0] = 1.0;
+        start[9] = 1.0;
+        let start = SVector::from(start);
+        // A pitching moment that a user's formula turns into NaN after t = 0.5 s.
+        let moment = |t: f64, _: &[f64; 13]| {
+            let m_y = if t > 0.5 { f64::NAN } else { 0.1 };
+            [0.0, 0.0, 0.0, 0.0, m_y, 0.0]
+        };
+        let system = body.driven_by(moment);
+        let h = 0.01;
+        let mut euler = Euler::new(h);
+        let mut symplectic = SymplecticEuler::new(h, 0..6);
+        let mut rk4 = Rk4::new(h);
+        let options = AdaptiveOptions::dop853(1e-9, 1e-9);
+        let mut dopri5 = Dopri5::new(AdaptiveOptions::dopri5(1e-9, 1e-9));
+        let mut dop853 = Dop853::new(options);
+        let runs = [
+            ("euler", euler.integrate(&system, 0.0, start, 1.0)),
+            ("symplectic", symplectic.integrate(&system, 0.0, start, 1.0)),
+            ("rk4", rk4.integrate(&system, 0.0, start, 1.0)),
+            ("dopri5", dopri5.integrate(&system, 0.0, start, 1.0)),
+            ("dop853", dop853.integrate(&system, 0.0, start, 1.0)),
+        ];
+        for (method, run) in runs {
+            let Err(IntegrateError::NonFiniteInput {
+                index,
+                name,
+                value,
+                t,
+            }) = run
+            else {
+                panic!("{method}: {run:?}");
+            };
+            assert_eq!((index, name), (4, "M_y"), "{method}");
+            assert!(value.is_nan(), "{method}");
+            // The first evaluation past 0.5 s: within one step for the fixed steps.
+            assert!(
+                t > 0.5 && (method.starts_with("dop") || t <= 0.5 + h),
+                "{method}: {t}"
+            );
+        }
+        // The right-hand side of a plain closure cannot tell why: the state is named.
+        let blow_up = |_t: f64, y: &Vector2<f64>, dy: &mut Vector2<f64>| {
+            *dy = Vector2::new(0.0, if y[1] > 10.0 { f64::INFINITY } else { 1.0 });
+        };
+        let run = Rk4::new(0.5).integrate(&blow_up, 0.0, Vector2::new(0.0, 0.0), 100.0);
+        assert!(matches!(
+            run,
+            Err(IntegrateError::NonFiniteState { component: 1, .. })
+        ));
+    }
+
+    #[test]
     fn a_failed_fixed_step_run_counts_what_it_did() {
         // ẏ₁ = y₁², y₁(0) = 1 blows up at t = 1; explicit Euler overflows some steps later.
         // The statistics must agree with the steps observed and the RHS calls made (the
-        // failed step's call included), not claim the whole interval.
+        // failed step's call and its replay, which looks for a load to blame, included), not
+        // claim the whole interval.
         let calls = Cell::new(0usize);
         let blow_up = |_t: f64, y: &Vector2<f64>, dy: &mut Vector2<f64>| {
             calls.set(calls.get() + 1);
@@ -233,7 +353,7 @@ mod tests {
         assert!(matches!(run, Err(IntegrateError::NonFiniteState { .. })));
         let stats = euler.stats();
         assert!(observed > 10 && observed < 100);
-        assert_eq!((stats.steps, stats.rhs_evals), (observed, observed + 1));
+        assert_eq!((stats.steps, stats.rhs_evals), (observed, observed + 2));
         assert_eq!(calls.get(), stats.rhs_evals);
     }
 }

@@ -6,7 +6,9 @@
 
 use nalgebra::{RealField, SVector};
 
-use super::{IntegrateError, Integrator, OdeSystem, Statistics, Stats, lit, run_fixed};
+use super::{
+    IntegrateError, Integrator, OdeSystem, Statistics, Stats, explain_failure, lit, run_fixed,
+};
 
 /// The classical fourth-order Runge–Kutta method with a fixed step.
 #[derive(Debug, Clone)]
@@ -67,7 +69,11 @@ where
             rk4_step(system, t, h, y);
             Ok(4)
         };
-        run_fixed(self.h, &mut self.stats, (t0, y0, t_end), step, observe)
+        let explain = |t: T, h: T, y: &SVector<T, N>| {
+            explain_failure(system, |probe| rk4_step(probe, t, h, &mut y.clone()))
+        };
+        let interval = (t0, y0, t_end);
+        run_fixed(self.h, &mut self.stats, interval, step, explain, observe)
     }
 }
 

@@ -12,7 +12,7 @@ use std::ops::Range;
 
 use nalgebra::{RealField, SVector};
 
-use super::{IntegrateError, Integrator, OdeSystem, Statistics, Stats, run_fixed};
+use super::{IntegrateError, Integrator, OdeSystem, Statistics, Stats, explain_failure, run_fixed};
 
 /// The semi-implicit Euler method with a fixed step and a range of "kick" components.
 #[derive(Debug, Clone)]
@@ -35,6 +35,28 @@ impl SymplecticEuler {
     }
 }
 
+/// One step: the `kick` components from the state at the start, then the others from the
+/// state with the kicked ones updated.
+fn kick_drift<T, const N: usize, S>(
+    system: &S,
+    kick: &Range<usize>,
+    (t, h): (T, T),
+    y: &mut SVector<T, N>,
+) where
+    T: RealField + Copy,
+    S: OdeSystem<T, N> + ?Sized,
+{
+    let mut dy = SVector::<T, N>::zeros();
+    system.rhs(t, y, &mut dy);
+    for i in kick.clone() {
+        y[i] += h * dy[i];
+    }
+    system.rhs(t, y, &mut dy);
+    for i in (0..N).filter(|i| !kick.contains(i)) {
+        y[i] += h * dy[i];
+    }
+}
+
 impl<T, const N: usize, S> Integrator<T, N, S> for SymplecticEuler
 where
     T: RealField + Copy,
@@ -52,19 +74,17 @@ where
         F: FnMut(T, &SVector<T, N>),
     {
         let kick = self.kick.start.min(N)..self.kick.end.min(N);
-        let mut dy = SVector::<T, N>::zeros();
         let step = |t: T, h: T, y: &mut SVector<T, N>| {
-            system.rhs(t, y, &mut dy);
-            for i in kick.clone() {
-                y[i] += h * dy[i];
-            }
-            system.rhs(t, y, &mut dy);
-            for i in (0..N).filter(|i| !kick.contains(i)) {
-                y[i] += h * dy[i];
-            }
+            kick_drift(system, &kick, (t, h), y);
             Ok(2)
         };
-        run_fixed(self.h, &mut self.stats, (t0, y0, t_end), step, observe)
+        let explain = |t: T, h: T, y: &SVector<T, N>| {
+            explain_failure(system, |probe| {
+                kick_drift(probe, &kick, (t, h), &mut y.clone());
+            })
+        };
+        let interval = (t0, y0, t_end);
+        run_fixed(self.h, &mut self.stats, interval, step, explain, observe)
     }
 }
 

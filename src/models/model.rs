@@ -7,7 +7,7 @@
 //! which is an [`OdeSystem`] every integrator of [`crate::integrate`] accepts, so no adapter
 //! is written by hand.
 
-use crate::integrate::OdeSystem;
+use crate::integrate::{IntegrateError, OdeSystem};
 use nalgebra::{RealField, SVector};
 use simba::simd::SimdRealField;
 
@@ -128,5 +128,18 @@ where
         let state = &y.data.0[0];
         let input = self.loads.at(t, state);
         dy.data.0[0] = self.model.rhs(state, &input);
+    }
+
+    /// Names the first load input that is NaN or infinite at `(t, y)`. `rhs` checks nothing,
+    /// so a run pays for this only when a step has failed and is replayed.
+    fn explain_non_finite(&self, t: T, y: &SVector<T, N>) -> Option<IntegrateError> {
+        let input = self.loads.at(t, &y.data.0[0]);
+        let index = input.iter().position(|v| !v.is_finite())?;
+        Some(IntegrateError::NonFiniteInput {
+            index,
+            name: Mo::INPUTS[index],
+            value: input[index].to_subset().unwrap_or(f64::NAN),
+            t: t.to_subset().unwrap_or(f64::NAN),
+        })
     }
 }

@@ -3,8 +3,13 @@
 //! ```json
 //! {"scene", "title", "variant", "reason", "operations", "full_operations",
 //!  "integrator": {"method", "steps", "rejected", "rhs_evals"}, "wall_seconds",
-//!  "energy_drift", "final_state": {name: value}, …what the family adds}
+//!  "energy_drift", "final_time", "final_state": {name: value}, "interrupted", "error",
+//!  "warnings", …what the family adds}
 //! ```
+//!
+//! A run that stopped early still has its summary: `"interrupted": true` after Ctrl-C, or
+//! `"error"` with the message of what stopped it; `final_time` and `final_state` are then its
+//! last row's.
 //!
 //! The file is written whole to a temporary name in the same folder and renamed over
 //! `summary.json`, so a reader never sees half of one.
@@ -37,10 +42,16 @@ pub struct Summary {
     /// The largest relative change of the total energy over the rows, where the loads have a
     /// potential (`null` where they do not).
     pub energy_drift: Option<f64>,
-    /// The end time.
+    /// The end time, or the last row's time when the run stopped early.
     pub final_time: f64,
-    /// The state at the end, by name.
+    /// The state at the end (or at the last row), by name.
     pub final_state: Named,
+    /// Whether the run was interrupted (Ctrl-C, SIGTERM) before its end time.
+    pub interrupted: bool,
+    /// Why the run stopped before its end time, if it failed (`null` if it did not).
+    pub error: Option<String>,
+    /// What the run did not stop for but a reader should know.
+    pub warnings: Vec<String>,
     /// What the family adds (a pendulum's measured period, a free body's |H| drift), by name.
     #[serde(flatten)]
     pub extra: std::collections::BTreeMap<String, serde_json::Value>,
@@ -133,6 +144,9 @@ impl Summary {
                     .zip(report.final_state.iter().copied())
                     .collect(),
             ),
+            interrupted: false,
+            error: None,
+            warnings: report.warnings.clone(),
             extra: Default::default(),
         }
     }

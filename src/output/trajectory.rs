@@ -3,25 +3,36 @@
 //! The header is `t`, the model's state names as its layout names them (in identifiers:
 //! `x` for X), then `kinetic_energy`, and `potential_energy`, `total_energy` where the loads
 //! have a potential. Numbers are written in Rust's shortest form that reads back to the same
-//! bits. The file is flushed at least every quarter of a second, so an interrupted run leaves
-//! every complete row readable; a row is never split across a flush of the CSV writer's own
-//! buffer, since the writer is flushed only between rows.
+//! bits (`NaN`, `inf` and `-inf` as Rust writes them).
+//!
+//! What survives a run that is cut short: rows are gathered whole in the writer's own buffer
+//! and handed to the file only whole, at least every quarter of a second and whenever 64 KiB
+//! have gathered, so once the process is gone (Ctrl-C, `kill -9`, a crash) the file holds
+//! every row up to the last hand-over, each ending in a newline. Only a write that the kernel
+//! itself cuts short (a kill in the middle of a large write, a full disk) can leave a last line
+//! without its newline, and a reader can tell it is partial by that: every complete row ends
+//! with `\n`. What reached the file survives the process, not the machine losing power (it is
+//! not synced to the disk).
 
 use crate::run::{Row, Sink};
 use std::fs::File;
-use std::io::BufWriter;
+use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
-/// How often the file is flushed while a run goes on.
+/// How often the rows gathered are handed to the file while a run goes on.
 const FLUSH_EVERY: Duration = Duration::from_millis(250);
+
+/// How many bytes of rows are gathered at most before they are handed to the file.
+const BUFFER_BYTES: usize = 64 * 1024;
 
 /// Writes trajectory rows to a CSV file, and keeps the columns the plots need.
 pub struct TrajectoryWriter {
     path: PathBuf,
-    writer: csv::Writer<BufWriter<File>>,
+    file: File,
+    /// Whole rows not yet handed to the file.
+    buffer: Vec<u8>,
     with_potential: bool,
-    record: csv::ByteRecord,
     last_flush: Instant,
     error: Option<std::io::Error>,
     kept: Columns,
@@ -55,21 +66,19 @@ impl TrajectoryWriter {
         with_potential: bool,
         expected_rows: usize,
     ) -> std::io::Result<Self> {
-        let file = File::create(path)?;
-        let mut writer = csv::Writer::from_writer(BufWriter::new(file));
+        let mut file = File::create(path)?;
         let mut header: Vec<&str> = vec!["t"];
         header.extend(state_names.iter().map(String::as_str));
         header.push("kinetic_energy");
         if with_potential {
             header.extend(["potential_energy", "total_energy"]);
         }
-        writer.write_record(&header).map_err(std::io::Error::from)?;
-        writer.flush()?;
+        file.write_all(format!("{}\n", header.join(",")).as_bytes())?;
         Ok(Self {
             path: path.to_owned(),
-            writer,
+            file,
+            buffer: Vec::with_capacity(BUFFER_BYTES + 4096),
             with_potential,
-            record: csv::ByteRecord::new(),
             last_flush: Instant::now(),
             error: None,
             kept: Columns {
@@ -87,12 +96,12 @@ impl TrajectoryWriter {
         self.on_row = Some(Box::new(f));
     }
 
-    /// Flushes what is left and returns the kept columns, or the first write error.
+    /// Hands what is left to the file and returns the kept columns, or the first write error.
     pub fn finish(mut self) -> std::io::Result<Columns> {
         if let Some(error) = self.error.take() {
             return Err(error);
         }
-        self.writer.flush()?;
+        self.flush()?;
         Ok(self.kept)
     }
 
@@ -106,30 +115,41 @@ impl TrajectoryWriter {
         self.error.as_ref()
     }
 
+    /// The rows gathered, handed to the file in one write.
+    fn flush(&mut self) -> std::io::Result<()> {
+        self.last_flush = Instant::now();
+        let result = self.file.write_all(&self.buffer);
+        self.buffer.clear();
+        result
+    }
+
     fn write(&mut self, row: &Row) -> std::io::Result<()> {
         let mut number = ryu::Buffer::new();
-        let mut field = |record: &mut csv::ByteRecord, x: f64| {
+        let buffer = &mut self.buffer;
+        let mut field = |x: f64| {
             if x.is_finite() {
-                record.push_field(number.format_finite(x).as_bytes());
+                buffer.extend_from_slice(number.format_finite(x).as_bytes());
             } else {
-                record.push_field(x.to_string().as_bytes());
+                buffer.extend_from_slice(x.to_string().as_bytes());
             }
+            buffer.push(b',');
         };
-        self.record.clear();
-        field(&mut self.record, row.t);
+        field(row.t);
         for &x in row.state {
-            field(&mut self.record, x);
+            field(x);
         }
-        field(&mut self.record, row.kinetic_energy);
+        field(row.kinetic_energy);
         if self.with_potential {
             let potential = row.potential_energy.unwrap_or(f64::NAN);
-            field(&mut self.record, potential);
-            field(&mut self.record, row.kinetic_energy + potential);
+            field(potential);
+            field(row.kinetic_energy + potential);
         }
-        self.writer.write_byte_record(&self.record)?;
-        if self.last_flush.elapsed() >= FLUSH_EVERY {
-            self.writer.flush()?;
-            self.last_flush = Instant::now();
+        // The last field's comma becomes the row's end.
+        if let Some(last) = self.buffer.last_mut() {
+            *last = b'\n';
+        }
+        if self.buffer.len() >= BUFFER_BYTES || self.last_flush.elapsed() >= FLUSH_EVERY {
+            self.flush()?;
         }
         Ok(())
     }

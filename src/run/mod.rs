@@ -7,6 +7,12 @@
 //! run goes (nothing is kept in memory): an adaptive method places them by dense output; a
 //! fixed-step method integrates each output interval in equal steps no longer than the
 //! scene's step, so every row lands on its time.
+//!
+//! A run that cannot go on stops with a [`RunError`] that says why, where and what to change,
+//! and [`run_reporting`] reports what it did up to there. Every accepted step is checked, at
+//! the cost of a few arithmetic operations (see [`guard`]): an Euler-angle attitude near
+//! gimbal lock, a fixed step too long for the body's rate of turn, a state or a load input
+//! that is not finite.
 
 use crate::integrate::{
     Dop853, Dopri5, Euler, IntegrateError, Integrator, LieMidpoint, RigidRotation, Rk4, Statistics,
@@ -14,6 +20,7 @@ use crate::integrate::{
 };
 use crate::models::{Family, Kinematics, Model, Visitor};
 use crate::scene::{Body, Method, Scene, SceneLoads};
+use guard::Guard;
 use nalgebra::{Matrix3, Quaternion, SVector, UnitQuaternion, Vector3};
 use std::ops::Range;
 use std::time::Instant;
@@ -49,7 +56,7 @@ pub struct Report {
     pub rhs_evals: usize,
     /// Wall time of the integration and the rows, s.
     pub wall_seconds: f64,
-    /// The time reached.
+    /// The end time; for a run that stopped early, its last row's time (0 if it wrote none).
     pub final_time: f64,
     /// The state at the final time.
     pub final_state: Vec<f64>,
@@ -57,13 +64,17 @@ pub struct Report {
     /// of |E₀| and the largest kinetic energy (a potential's zero is a convention, so E₀ alone
     /// may be 0), where every load has a potential (else `None`).
     pub energy_drift: Option<f64>,
+    /// What the run did not stop for but a reader should know: a fixed step past its
+    /// accuracy bound for the rate of turn (see [`guard`]).
+    pub warnings: Vec<String>,
 }
 
 /// Why a run did not finish.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum RunError {
-    /// The integration failed; the message names the state component by its name.
-    #[error("the run failed at t = {t}: {message}")]
+    /// The integration failed; the message names the state component or the load input by
+    /// its name.
+    #[error("the run failed at t = {}: {message}", seconds(*t))]
     Integration {
         /// The time reached.
         t: f64,
@@ -71,15 +82,122 @@ pub enum RunError {
         message: String,
     },
     /// The sink stopped the run.
-    #[error("the run was stopped at t = {t}")]
+    #[error("the run was stopped at t = {}", seconds(*t))]
     Stopped {
         /// The time reached.
         t: f64,
     },
+    /// The pitch of an Euler-angle attitude came within [`guard::gimbal_bound`] of ±90°, or
+    /// crossed it within one step: the Euler-angle rates (4.60) divide by cos θ.
+    #[error("{}", gimbal_message(*t, *pitch_deg, *cos_pitch, *bound, *crossed_since))]
+    GimbalLock {
+        /// The time of the step that came too close.
+        t: f64,
+        /// The pitch there, degrees.
+        pitch_deg: f64,
+        /// cos θ there.
+        cos_pitch: f64,
+        /// The least |cos θ| allowed ([`guard::gimbal_bound`]).
+        bound: f64,
+        /// Where the pitch went past ±90° within the step that ended at `t`, the step's
+        /// start (a fixed step, or a pure pitch, can jump the bound's narrow band).
+        crossed_since: Option<f64>,
+    },
+    /// A fixed step too long for how fast the state turns: h·|ω| beyond the method's stability
+    /// limit on the imaginary axis, where the eigenvalues ±i|ω| of a rotation lie (see
+    /// [`guard`]).
+    #[error(
+        "the step is too long for the rotation at t = {} s: h·{rate_name} = {step} s × \
+         {rate:.3} rad/s = {:.3}, beyond {method}'s stability limit {limit:.4} on the \
+         imaginary axis, where every step grows the error; a step ≤ {:.3e} s is stable, one \
+         ≤ {accurate_step:.3e} s keeps a turn within 10 %; or use an adaptive method (dop853)",
+        seconds(*t),
+        step * rate,
+        limit / rate
+    )]
+    StepTooLarge {
+        /// The time of the step.
+        t: f64,
+        /// The method's name in scene files.
+        method: &'static str,
+        /// The rate: |ω| of a body, |r| of a planar one, √(Mgh/I₀) of a pendulum, rad/s.
+        rate: f64,
+        /// How the message writes the rate: `|ω|`, `|r|`, `ω₀`.
+        rate_name: &'static str,
+        /// The step, s.
+        step: f64,
+        /// The largest h·rate the method is stable at ([`guard::RK4_LIMIT`],
+        /// [`guard::SYMPLECTIC_EULER_LIMIT`]).
+        limit: f64,
+        /// The step at which one turn at this rate errs by 10 %
+        /// ([`guard::Scheme::accuracy_bound`]), s.
+        accurate_step: f64,
+    },
+}
+
+/// A time as a message writes it: to 12 significant digits, so that a step's time
+/// t₀ + k·h reads 1.829, not 1.8290000000000002.
+pub(crate) fn seconds(t: f64) -> f64 {
+    format!("{t:.11e}").parse().unwrap_or(t)
+}
+
+/// What a [`RunError::GimbalLock`] says.
+fn gimbal_message(
+    t: f64,
+    pitch_deg: f64,
+    cos_pitch: f64,
+    bound: f64,
+    crossed_since: Option<f64>,
+) -> String {
+    let what = if let Some(since) = crossed_since {
+        format!(
+            "the pitch θ crossed ±90° in the step from t = {} s (θ = {pitch_deg:.6}° at its \
+             end), and the Euler-angle rates (4.60) divide by cos θ, which is 0 at ±90°",
+            seconds(since)
+        )
+    } else {
+        format!(
+            "the pitch θ = {pitch_deg:.9}° is {:.1e} rad from ±90°, nearer than ε|θ|/η = \
+             {bound:.1e}, where the rounding of θ alone makes the Euler-angle rates (4.60), \
+             which divide by cos θ, err by more than η",
+            cos_pitch.abs()
+        )
+    };
+    format!(
+        "gimbal lock at t = {} s: {what}; set kinematics = \"quaternion\" in [model], which \
+         has no singular attitude",
+        seconds(t)
+    )
+}
+
+/// A run as it ended: what it did, and why it stopped if it did not reach its end time.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Outcome {
+    /// What the run did. For a run that stopped early, `final_time` and `final_state` are its
+    /// last row's, and the energy drift is over the rows it wrote.
+    pub report: Report,
+    /// Why the run stopped early, if it did.
+    pub error: Option<RunError>,
+}
+
+impl Outcome {
+    /// The report of a run that finished, or why it did not.
+    pub fn into_result(self) -> Result<Report, RunError> {
+        match self.error {
+            None => Ok(self.report),
+            Some(error) => Err(error),
+        }
+    }
 }
 
 /// Runs `scene`, handing every row to `sink`.
 pub fn run(scene: &Scene, sink: &mut dyn Sink) -> Result<Report, RunError> {
+    run_reporting(scene, sink).into_result()
+}
+
+/// Runs `scene` as [`run`] does, and reports what the run did also when it stopped early (a
+/// failure, or the sink's refusal of a row): the rows written stay, and so does their account.
+pub fn run_reporting(scene: &Scene, sink: &mut dyn Sink) -> Outcome {
     scene.model().visit(Runner { scene, sink })
 }
 
@@ -89,13 +207,15 @@ struct Runner<'a> {
     sink: &'a mut dyn Sink,
 }
 
-/// The rows' bookkeeping: energy, and the sink's verdict.
+/// The rows' bookkeeping: energy, the last row the sink took, and the sink's verdict.
 struct Rows<'a> {
     sink: &'a mut dyn Sink,
     start_energy: Option<f64>,
     /// The largest |E − E₀| and the largest kinetic energy so far.
     change: f64,
     kinetic: f64,
+    /// The time and state of the last row the sink took.
+    last: Option<(f64, Vec<f64>)>,
 }
 
 impl Rows<'_> {
@@ -113,17 +233,37 @@ impl Rows<'_> {
             self.change = self.change.max((total - start).abs());
             self.kinetic = self.kinetic.max(kinetic.abs());
         }
-        self.sink.row(&Row {
+        let taken = self.sink.row(&Row {
             t,
             state,
             kinetic_energy: kinetic,
             potential_energy: potential,
+        });
+        if taken {
+            let (time, last) = self.last.get_or_insert_with(|| (t, Vec::new()));
+            *time = t;
+            last.clear();
+            last.extend_from_slice(state);
+        }
+        taken
+    }
+
+    /// The largest |E − E₀| over the rows relative to max(|E₀|, largest T), where the energy
+    /// is a constant of the motion.
+    fn drift(&self) -> Option<f64> {
+        self.start_energy.map(|e0| {
+            let scale = e0.abs().max(self.kinetic);
+            if scale > 0.0 {
+                self.change / scale
+            } else {
+                0.0
+            }
         })
     }
 }
 
 impl Visitor for Runner<'_> {
-    type Output = Result<Report, RunError>;
+    type Output = Outcome;
 
     fn visit<Mo: Model<f64, N, M>, const N: usize, const M: usize>(
         self,
@@ -136,6 +276,7 @@ impl Visitor for Runner<'_> {
             start_energy: None,
             change: 0.0,
             kinetic: 0.0,
+            last: None,
         };
         let has_potential = loads.has_potential();
         let mut emit = |t: f64, y: &SVector<f64, N>| {
@@ -154,45 +295,73 @@ impl Visitor for Runner<'_> {
         let system = model.driven_by(loads.clone());
         let spec = &scene.integrator;
         let interval = (0.0, y0, spec.end_time);
-        let (result, stats) = match spec.method {
-            Method::Dop853 => {
-                let mut method =
-                    Dop853::new(spec.adaptive.expect("an adaptive method has options"));
-                let result = method.sample_every(&system, interval, scene.every, &mut emit);
-                (result, method.stats())
+        let mut guard = Guard::new(scene);
+        let (result, stats) = if !guard.check(0.0, y0.as_slice()) {
+            (Err(IntegrateError::Stopped { t: 0.0 }), Stats::default())
+        } else {
+            match spec.method {
+                Method::Dop853 => {
+                    let mut method =
+                        Dop853::new(spec.adaptive.expect("an adaptive method has options"));
+                    let check = |t: f64, y: &SVector<f64, N>| guard.check(t, y.as_slice());
+                    let result = method.sample_every_checked(
+                        &system,
+                        interval,
+                        scene.every,
+                        check,
+                        &mut emit,
+                    );
+                    (result, method.stats())
+                }
+                Method::Dopri5 => {
+                    let mut method =
+                        Dopri5::new(spec.adaptive.expect("an adaptive method has options"));
+                    let check = |t: f64, y: &SVector<f64, N>| guard.check(t, y.as_slice());
+                    let result = method.sample_every_checked(
+                        &system,
+                        interval,
+                        scene.every,
+                        check,
+                        &mut emit,
+                    );
+                    (result, method.stats())
+                }
+                Method::Euler => {
+                    let mut method = Euler::new(step(scene));
+                    fixed_steps(&mut method, &system, scene, &mut guard, &mut emit)
+                }
+                Method::Rk4 => {
+                    let mut method = Rk4::new(step(scene));
+                    fixed_steps(&mut method, &system, scene, &mut guard, &mut emit)
+                }
+                Method::SymplecticEuler => {
+                    let mut method = SymplecticEuler::new(step(scene), kicked(scene));
+                    fixed_steps(&mut method, &system, scene, &mut guard, &mut emit)
+                }
+                Method::LieMidpoint => free_rotation(scene, &mut emit),
             }
-            Method::Dopri5 => {
-                let mut method =
-                    Dopri5::new(spec.adaptive.expect("an adaptive method has options"));
-                let result = method.sample_every(&system, interval, scene.every, &mut emit);
-                (result, method.stats())
-            }
-            Method::Euler => fixed_steps(&mut Euler::new(step(scene)), &system, scene, &mut emit),
-            Method::Rk4 => fixed_steps(&mut Rk4::new(step(scene)), &system, scene, &mut emit),
-            Method::SymplecticEuler => {
-                let mut method = SymplecticEuler::new(step(scene), kicked(scene));
-                fixed_steps(&mut method, &system, scene, &mut emit)
-            }
-            Method::LieMidpoint => free_rotation(scene, &mut emit),
         };
         let wall_seconds = clock.elapsed().as_secs_f64();
-        let end = result.map_err(|e| run_error(e, &scene.state_names()))?;
-        Ok(Report {
+        let error = result.as_ref().err().map(|e| match e {
+            IntegrateError::Stopped { t } => guard.stop().unwrap_or(RunError::Stopped { t: *t }),
+            other => run_error(other.clone(), &scene.state_names()),
+        });
+        let (final_time, final_state) = match (result, rows.last.take()) {
+            (Ok(end), _) => (spec.end_time, end.as_slice().to_vec()),
+            (Err(_), Some(last)) => last,
+            (Err(_), None) => (0.0, scene.initial.clone()),
+        };
+        let report = Report {
             steps: stats.steps,
             rejected: stats.rejected,
             rhs_evals: stats.rhs_evals,
             wall_seconds,
-            final_time: spec.end_time,
-            final_state: end.as_slice().to_vec(),
-            energy_drift: rows.start_energy.map(|e0| {
-                let scale = e0.abs().max(rows.kinetic);
-                if scale > 0.0 {
-                    rows.change / scale
-                } else {
-                    0.0
-                }
-            }),
-        })
+            final_time,
+            final_state,
+            energy_drift: rows.drift(),
+            warnings: guard.warnings(),
+        };
+        Outcome { report, error }
     }
 }
 
@@ -230,11 +399,14 @@ fn stops(scene: &Scene) -> Vec<(f64, bool)> {
 }
 
 /// A fixed-step method over each output interval in turn (equal steps of at most the
-/// scene's step, so that each row lands on its time), its statistics summed.
+/// scene's step, so that each row lands on its time), its statistics summed. `guard` checks
+/// the state after every step; what it finds stops the run at the end of that interval,
+/// before its row is written.
 fn fixed_steps<I, S, const N: usize>(
     method: &mut I,
     system: &S,
     scene: &Scene,
+    guard: &mut Guard,
     emit: &mut impl FnMut(f64, &SVector<f64, N>) -> bool,
 ) -> (Result<SVector<f64, N>, IntegrateError>, Stats)
 where
@@ -247,10 +419,15 @@ where
         return (Err(IntegrateError::Stopped { t }), total);
     }
     for (t_next, is_row) in stops(scene) {
-        let result = method.integrate(system, t, y, t_next);
+        let result = method.integrate_with(system, t, y, t_next, |t, y| {
+            guard.check(t, y.as_slice());
+        });
         let stats = method.stats();
         total.steps += stats.steps;
         total.rhs_evals += stats.rhs_evals;
+        if guard.stopped() {
+            return (Err(IntegrateError::Stopped { t: t_next }), total);
+        }
         match result {
             Ok(next) => y = next,
             Err(e) => return (Err(e), total),
@@ -335,11 +512,13 @@ impl RotationScene<'_> {
     ) -> (Result<SVector<f64, 7>, IntegrateError>, Stats) {
         let mut shifted = self.scene.clone();
         shifted.initial = self.start.as_slice().to_vec();
-        fixed_steps(method, system, &shifted, emit)
+        // Implicit midpoint is stable for every step on the imaginary axis, and the
+        // quaternion has no singular attitude: nothing to check.
+        fixed_steps(method, system, &shifted, &mut Guard::none(), emit)
     }
 }
 
-/// An integration error as a run error, naming the state component.
+/// An integration error as a run error, naming the state component or the load input.
 fn run_error(error: IntegrateError, names: &[String]) -> RunError {
     match error {
         IntegrateError::Stopped { t } => RunError::Stopped { t },
@@ -350,12 +529,19 @@ fn run_error(error: IntegrateError, names: &[String]) -> RunError {
                 names.get(component).map_or("?", String::as_str)
             ),
         },
-        IntegrateError::StepSizeTooSmall { t, .. } | IntegrateError::MaxStepsExceeded { t, .. } => {
-            RunError::Integration {
-                t,
-                message: error.to_string(),
-            }
-        }
+        IntegrateError::NonFiniteInput { name, value, t, .. } => RunError::Integration {
+            t,
+            message: format!(
+                "the load input {name} is {value} at a finite state: the loads, not the \
+                 model, made the run non-finite"
+            ),
+        },
+        IntegrateError::StepSizeTooSmall { t, .. }
+        | IntegrateError::MaxStepsExceeded { t, .. }
+        | IntegrateError::NotConverged { t, .. } => RunError::Integration {
+            t,
+            message: error.to_string(),
+        },
         other => RunError::Integration {
             t: f64::NAN,
             message: other.to_string(),
@@ -363,4 +549,5 @@ fn run_error(error: IntegrateError, names: &[String]) -> RunError {
     }
 }
 
+pub mod guard;
 pub mod tradeoff;
