@@ -2,7 +2,7 @@
 //! t = k·every.
 //!
 //! The scene's typed model is handed back from [`AnyModel`](crate::models::AnyModel) to the
-//! generic [`Runner`] with its state and input sizes known at compile time, so each step calls
+//! generic runner with its state and input sizes known at compile time, so each step calls
 //! the generated `rhs` inlined, as a hand-written program would. Rows go to a [`Sink`] as the
 //! run goes (nothing is kept in memory): an adaptive method places them by dense output; a
 //! fixed-step method integrates each output interval in equal steps no longer than the
