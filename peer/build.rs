@@ -72,7 +72,14 @@ fn main() {
         flags.push(format!("-O3 -march=native {contract}"));
         build.compile(library);
     }
-    println!("cargo:rustc-env=EOM_PEER_CFLAGS={}", flags.join(" | "));
+    // cc adds the environment's CFLAGS to both builds (callgrind, for one, needs
+    // CFLAGS=-mno-avx512f on a machine with AVX-512): say so wherever the flags are printed.
+    println!("cargo:rerun-if-env-changed=CFLAGS");
+    let mut flags = flags.join(" | ");
+    if let Some(extra) = env::var("CFLAGS").ok().filter(|f| !f.trim().is_empty()) {
+        flags.push_str(&format!(" (and CFLAGS {extra})"));
+    }
+    println!("cargo:rustc-env=EOM_PEER_CFLAGS={flags}");
     let rustc = env::var_os("RUSTC").unwrap_or_else(|| "rustc".into());
     println!(
         "cargo:rustc-env=EOM_PEER_RUSTC={}",
