@@ -42,6 +42,8 @@
 
 pub mod elliptic;
 pub mod energy;
+#[cfg(feature = "cli")]
+pub mod eval_input;
 pub mod generic;
 mod inertia;
 pub mod integrate;
