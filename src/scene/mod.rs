@@ -519,7 +519,7 @@ impl Checker<'_> {
                 ),
             });
         }
-        let Body::Spatial { inertia, .. } = body else {
+        let Body::Spatial { mass, inertia } = body else {
             let info = ModelInfo::of_family(family)
                 .next()
                 .expect("every family has a model");
@@ -535,8 +535,26 @@ impl Checker<'_> {
             )?),
         };
         let kinematics = self.kinematics(file)?;
-        select_spatial(inertia, symmetry, kinematics)
-            .map_err(|message| self.invalid("model.symmetry", message))
+        let selection = select_spatial(inertia, symmetry, kinematics)
+            .map_err(|message| self.invalid("model.symmetry", message))?;
+        // The model checks more than a valid tensor promises (a determinant that f64 can
+        // invert, 1e-110 kg m² on the diagonal is not): a scene accepted builds its model.
+        let symmetry = selection
+            .info
+            .symmetry
+            .expect("a spatial model has a symmetry class");
+        AnyModel::spatial(symmetry, kinematics, *mass, inertia).map_err(|e| {
+            let key = if file.body.file.is_some() {
+                "body.file"
+            } else {
+                match e {
+                    crate::generic::ModelError::Parameter(_) => "body.mass",
+                    _ => "body.inertia",
+                }
+            };
+            self.invalid(key, e.to_string())
+        })?;
+        Ok(selection)
     }
 
     /// `model.kinematics`, quaternion when the scene leaves it out.
