@@ -1,7 +1,7 @@
 //! Inputs that `tests/fuzz_inputs.rs` found, each once a panic, an abort or an untyped
 //! failure, kept as they were found.
 
-use eom::scene::{Problem, Scene, SceneError};
+use eom::scene::{Problem, Scene, SceneError, sweep};
 use std::path::PathBuf;
 
 fn scenes() -> PathBuf {
@@ -30,4 +30,54 @@ end_time = 2.0
     assert_eq!(error.key, "body.inertia");
     assert!(matches!(error.problem, Problem::Invalid(_)), "{error}");
     assert!(error.to_string().contains("cannot be inverted"), "{error}");
+}
+
+const PENDULUM: &str = r#"title = "t"
+[body]
+i0 = 2.0
+mass = 1.0
+g = 9.81
+h = 0.5
+[model]
+family = "pendulum"
+[integrator]
+method = "rk4"
+step = 0.01
+end_time = 1.0
+[sweep]
+"#;
+
+/// `count = 9223372036854775807` panicked ("capacity overflow") making the range's values,
+/// and `count = 1000000000000` aborted the process (an allocation of 32 TB failed).
+#[test]
+fn a_range_of_more_values_than_a_sweep_may_have_is_refused() {
+    for count in ["9223372036854775807", "1000000000000", "100001"] {
+        let text =
+            format!("{PENDULUM}\"body.mass\" = {{ from = 1.0, to = 2.0, count = {count} }}\n");
+        let error = sweep::cases(&text, "found.toml").unwrap_err();
+        assert_eq!(error.key, "sweep.body.mass");
+        assert!(matches!(error.problem, Problem::Invalid(_)), "{error}");
+    }
+    let most = format!(
+        "{PENDULUM}\"body.mass\" = {{ from = 1.0, to = 2.0, count = {} }}\n",
+        sweep::MAX_CASES
+    );
+    assert_eq!(
+        sweep::cases(&most, "found.toml").unwrap().len(),
+        sweep::MAX_CASES
+    );
+}
+
+/// Sixty-four keys of two values each: the count of cases overflowed, a panic in a debug
+/// build and, wrapped to 0, a sweep of no cases at all in a release build.
+#[test]
+fn a_sweep_whose_combinations_overflow_is_refused() {
+    let mut text = PENDULUM.to_owned();
+    for i in 0..64 {
+        text += &format!("\"initial.theta_deg{i:02}\" = [1.0, 2.0]\n");
+    }
+    let error = sweep::cases(&text, "found.toml").unwrap_err();
+    assert!(matches!(error.problem, Problem::Invalid(_)), "{error}");
+    // 2¹⁷ > 100 000: the key that crosses the limit is named.
+    assert_eq!(error.key, "sweep.initial.theta_deg16");
 }
