@@ -81,3 +81,28 @@ fn a_sweep_whose_combinations_overflow_is_refused() {
     // 2¹⁷ > 100 000: the key that crosses the limit is named.
     assert_eq!(error.key, "sweep.initial.theta_deg16");
 }
+
+/// `end_time = 5e-324` and no `output.every`: the default spacing of rows, end_time / 500,
+/// was 0, and the scene was accepted with rows 0 s apart, which a run never gets past.
+#[test]
+fn an_end_time_too_short_to_divide_into_rows_is_refused() {
+    let text = r#"title = "swept pendulum"
+[body]
+g = 9.81
+h = 0.5
+i0 = 2.0
+mass = 1.0
+[integrator]
+end_time = 5e-324
+method = "rk4"
+step = 0.01
+[model]
+family = "pendulum"
+"#;
+    let error = parse_scene(text).unwrap_err();
+    assert_eq!(error.key, "integrator.end_time");
+    assert!(matches!(error.problem, Problem::Invalid(_)), "{error}");
+    // With rows of its own, the same end time is a run of one row.
+    let scene = parse_scene(&text.replace("[model]", "[output]\nevery = 5e-324\n[model]")).unwrap();
+    assert_eq!(scene.every, 5e-324);
+}

@@ -786,7 +786,16 @@ impl Checker<'_> {
 
     fn every(&self, file: &SceneFile, end_time: f64) -> Result<f64, SceneError> {
         let Some(every) = file.output.every else {
-            return Ok(end_time / DEFAULT_ROWS);
+            // An end time within 500 of the smallest f64 would give rows 0 s apart.
+            let every = end_time / DEFAULT_ROWS;
+            return if every > 0.0 {
+                Ok(every)
+            } else {
+                Err(self.invalid(
+                    "integrator.end_time",
+                    format!("{end_time} s is too short to divide into {DEFAULT_ROWS} rows"),
+                ))
+            };
         };
         let every = self.finite("output.every", every)?;
         if every <= 0.0 || every > end_time {
