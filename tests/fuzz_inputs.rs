@@ -69,8 +69,10 @@ fn fuzz<S: Strategy>(
 {
     let tally = RefCell::new(Tally::default());
     let mut runner = TestRunner::new(config(cases));
+    let start = std::time::Instant::now();
     let result = runner.run(&strategy, |value| test(value, &mut tally.borrow_mut()));
-    eprintln!("{name}: {}", tally.borrow());
+    let seconds = start.elapsed().as_secs_f64();
+    eprintln!("{name} ({seconds:.1} s): {}", tally.borrow());
     if let Err(error) = result {
         panic!("{name}: {error}");
     }
@@ -1276,7 +1278,7 @@ const SWEPT: &[&str] = &[
 fn sweep_table() -> impl Strategy<Value = Node> {
     let count = prop_oneof![
         4 => -1..6i64,
-        1 => select(vec![100_000, 100_001, 1_000_000_000_000, i64::MAX]),
+        1 => select(vec![100_001, 1_000_000_000_000, i64::MAX]),
     ];
     let range = (number(), number(), count).prop_map(|(from, to, count)| {
         Node::Obj(vec![
@@ -1293,8 +1295,9 @@ fn sweep_table() -> impl Strategy<Value = Node> {
     let entry = (select(SWEPT).prop_map(str::to_owned), axis);
     prop_oneof![
         6 => prop::collection::vec(entry, 1..4),
-        // Many keys of two values: 2^n cases.
-        1 => (10..70usize).prop_map(|n| {
+        // Many keys of two values: 2^n cases, more than a sweep may have (the limit itself is
+        // tested in found_inputs.rs; 10⁵ cases take a second here).
+        1 => (17..70usize).prop_map(|n| {
             (0..n)
                 .map(|i| (format!("initial.theta_deg{i}"), Node::Arr(vec![Node::Num(1.0), Node::Num(2.0)])))
                 .collect()
