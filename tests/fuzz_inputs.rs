@@ -36,7 +36,7 @@ use std::path::{Path, PathBuf};
 // ---------------------------------------------------------------------------------------------
 // How many inputs each parser gets in CI.
 
-const SCENE_CASES: u32 = 4000;
+const SCENE_CASES: u32 = 6000;
 const EVAL_CASES: u32 = 3000;
 const BODY_CASES: u32 = 2000;
 const STL_CASES: u32 = 2000;
@@ -979,8 +979,9 @@ fn line_edit() -> impl Strategy<Value = LineEdit> {
 #[derive(Debug, Clone)]
 struct Mutation {
     seed: Index,
-    /// A `[sweep]` table set before the tree's edits (scenes only).
-    sweep: Option<Node>,
+    /// Whole tables set before the tree's edits (scenes: `[sweep]`, `[integrator]`,
+    /// `[model]`).
+    tables: Vec<(String, Node)>,
     tree: Vec<TreeEdit>,
     lines: Vec<LineEdit>,
 }
@@ -998,7 +999,7 @@ fn mutation() -> impl Strategy<Value = Mutation> {
     ];
     (any::<Index>(), edits).prop_map(|(seed, (tree, lines))| Mutation {
         seed,
-        sweep: None,
+        tables: Vec::new(),
         tree,
         lines,
     })
@@ -1015,12 +1016,22 @@ impl Mutation {
     /// comments and layout included.
     fn apply(&self, seeds: &[Seed], format: Format) -> String {
         let seed = &seeds[self.seed.index(seeds.len())];
-        let mut text = if self.tree.is_empty() && self.sweep.is_none() {
+        let mut text = if self.tree.is_empty() && self.tables.is_empty() {
             seed.text.clone()
         } else {
             let mut tree = seed.tree.clone();
-            if let (Some(sweep), Node::Obj(root)) = (&self.sweep, &mut tree) {
-                put(root, "sweep".into(), sweep.clone());
+            if let Node::Obj(root) = &mut tree {
+                for (key, table) in &self.tables {
+                    let mut table = table.clone();
+                    // A table without a family keeps the seed's.
+                    let old = root.iter().find(|(k, _)| k == key).map(|(_, v)| v);
+                    if let (Node::Obj(new), Some(Node::Obj(old))) = (&mut table, old) {
+                        if key == "model" && !new.iter().any(|(k, _)| k == "family") {
+                            new.extend(old.iter().filter(|(k, _)| k == "family").cloned());
+                        }
+                    }
+                    put(root, key.clone(), table);
+                }
             }
             for edit in &self.tree {
                 apply_tree(&mut tree, edit);
@@ -1196,6 +1207,11 @@ fn check_scene(
     }
     guarded("Scene::model", text, || scene.model())?;
     tally.count("accepted");
+    tally.count(format!(
+        "accepted {} {}",
+        scene.selection.info.name,
+        scene.integrator.method.name()
+    ));
     if run {
         let short = shortened(scene);
         let mut rows = Rows(0);
@@ -1306,15 +1322,101 @@ fn sweep_table() -> impl Strategy<Value = Node> {
     .prop_map(Node::Obj)
 }
 
+/// An `[integrator]` table of any method: a step for a fixed-step method and tolerances (or
+/// none) for an adaptive one, three times in four; else a step, tolerances, both or neither.
+fn integrator_table() -> impl Strategy<Value = Node> {
+    let methods = vec![
+        "euler",
+        "symplectic-euler",
+        "rk4",
+        "dopri5",
+        "dop853",
+        "lie-midpoint",
+    ];
+    let time = || prop_oneof![3 => 0.001..5.0f64, 1 => number()];
+    (
+        select(methods),
+        time(),
+        time(),
+        prop_oneof![3 => 1e-12..1e-3f64, 1 => number()],
+        prop::option::weighted(0.2, integer()),
+        prop::bool::weighted(0.75),
+        any::<(bool, bool)>(),
+    )
+        .prop_map(
+            |(method, end, h, tol, max_steps, consistent, (step, tolerances))| {
+                let adaptive = method.starts_with("dop");
+                let (step, tolerances) = if consistent {
+                    (!adaptive, adaptive && tolerances)
+                } else {
+                    (step, tolerances)
+                };
+                let mut table = vec![
+                    ("method".to_owned(), Node::Str(method.into())),
+                    ("end_time".to_owned(), Node::Num(end)),
+                ];
+                if step {
+                    table.push(("step".into(), Node::Num(h / 100.0)));
+                }
+                if tolerances {
+                    table.push(("rtol".into(), Node::Num(tol)));
+                    table.push(("atol".into(), Node::Num(tol)));
+                }
+                if let Some(n) = max_steps {
+                    table.push(("max_steps".into(), Node::Int(n)));
+                }
+                Node::Obj(table)
+            },
+        )
+}
+
+/// A `[model]` table: a symmetry and a kinematics, or neither, for the seed's family (another
+/// family one time in five).
+fn model_table() -> impl Strategy<Value = Node> {
+    let families = Family::ALL.map(Family::name).to_vec();
+    let symmetries = vec!["auto", "full", "xz", "principal"];
+    let kinematics = Kinematics::ALL.map(Kinematics::name).to_vec();
+    (
+        prop::option::weighted(0.2, select(families)),
+        prop::option::weighted(0.6, select(symmetries)),
+        prop::option::weighted(0.6, select(kinematics)),
+    )
+        .prop_map(|(family, symmetry, kinematics)| {
+            let named = [
+                ("family", family),
+                ("symmetry", symmetry),
+                ("kinematics", kinematics),
+            ];
+            Node::Obj(
+                named
+                    .into_iter()
+                    .filter_map(|(key, value)| Some((key.to_owned(), Node::Str(value?.into()))))
+                    .collect(),
+            )
+        })
+}
+
 #[test]
 fn mutated_scenes_never_panic() {
     let seeds = scene_seeds();
-    let with_sweep =
-        (mutation(), prop::option::weighted(0.2, sweep_table())).prop_map(|(mut m, sweep)| {
-            m.sweep = sweep;
-            m
-        });
-    let strategy = (with_sweep, prop::bool::weighted(0.3));
+    let tables = (
+        prop::option::weighted(0.2, sweep_table()),
+        prop::option::weighted(0.3, integrator_table()),
+        prop::option::weighted(0.2, model_table()),
+    );
+    let with_tables = (mutation(), tables).prop_map(|(mut m, (sweep, integrator, model))| {
+        let named = [
+            ("sweep", sweep),
+            ("integrator", integrator),
+            ("model", model),
+        ];
+        m.tables = named
+            .into_iter()
+            .filter_map(|(key, table)| Some((key.to_owned(), table?)))
+            .collect();
+        m
+    });
+    let strategy = (with_tables, prop::bool::weighted(0.3));
     fuzz("scenes", SCENE_CASES, strategy, |(m, run), tally| {
         scene_text(&m.apply(&seeds, Format::Toml), run, tally)
     });
