@@ -147,6 +147,8 @@ pub struct IntegratorSpec {
 pub const DEFAULT_TOLERANCE: f64 = 1e-9;
 /// The default limit on steps.
 pub const DEFAULT_MAX_STEPS: usize = 1_000_000;
+/// The most trajectory rows a scene may ask for (10⁸: a CSV of a few gigabytes at most).
+pub const MAX_ROWS: usize = 100_000_000;
 /// Trajectory rows a scene gets when it sets no `output.every`.
 pub const DEFAULT_ROWS: f64 = 500.0;
 
@@ -525,7 +527,7 @@ impl Checker<'_> {
                 ),
             });
         }
-        let Body::Spatial { inertia, .. } = body else {
+        let Body::Spatial { mass, inertia } = body else {
             let info = ModelInfo::of_family(family)
                 .next()
                 .expect("every family has a model");
@@ -541,8 +543,26 @@ impl Checker<'_> {
             )?),
         };
         let kinematics = self.kinematics(file)?;
-        select_spatial(inertia, symmetry, kinematics)
-            .map_err(|message| self.invalid("model.symmetry", message))
+        let selection = select_spatial(inertia, symmetry, kinematics)
+            .map_err(|message| self.invalid("model.symmetry", message))?;
+        // The model checks more than a valid tensor promises (a determinant that f64 can
+        // invert, 1e-110 kg m² on the diagonal is not): a scene accepted builds its model.
+        let symmetry = selection
+            .info
+            .symmetry
+            .expect("a spatial model has a symmetry class");
+        AnyModel::spatial(symmetry, kinematics, *mass, inertia).map_err(|e| {
+            let key = if file.body.file.is_some() {
+                "body.file"
+            } else {
+                match e {
+                    crate::generic::ModelError::Parameter(_) => "body.mass",
+                    _ => "body.inertia",
+                }
+            };
+            self.invalid(key, e.to_string())
+        })?;
+        Ok(selection)
     }
 
     /// `model.kinematics`, quaternion when the scene leaves it out.
@@ -770,7 +790,16 @@ impl Checker<'_> {
 
     fn every(&self, file: &SceneFile, end_time: f64) -> Result<f64, SceneError> {
         let Some(every) = file.output.every else {
-            return Ok(end_time / DEFAULT_ROWS);
+            // An end time within 500 of the smallest f64 would give rows 0 s apart.
+            let every = end_time / DEFAULT_ROWS;
+            return if every > 0.0 {
+                Ok(every)
+            } else {
+                Err(self.invalid(
+                    "integrator.end_time",
+                    format!("{end_time} s is too short to divide into {DEFAULT_ROWS} rows"),
+                ))
+            };
         };
         let every = self.finite("output.every", every)?;
         if every <= 0.0 || every > end_time {
@@ -778,6 +807,15 @@ impl Checker<'_> {
                 "output.every",
                 format!(
                     "must be positive and at most integrator.end_time = {end_time}, got {every}"
+                ),
+            ));
+        }
+        if end_time / every > MAX_ROWS as f64 {
+            return Err(self.invalid(
+                "output.every",
+                format!(
+                    "gives {:.0} rows over integrator.end_time = {end_time}, more than {MAX_ROWS}; a longer every keeps the file readable",
+                    end_time / every
                 ),
             ));
         }

@@ -18,6 +18,10 @@ use super::file::SceneFile;
 use super::{Problem, SceneError};
 use toml::{Table, Value};
 
+/// The most cases a sweep may have. The cases are made before the first runs, on every
+/// machine of a sharded sweep, so a count beyond this is refused rather than tried.
+pub const MAX_CASES: usize = 100_000;
+
 /// One case of a sweep: the values it sets and the scene file it makes.
 #[derive(Debug, Clone)]
 pub struct Case {
@@ -40,14 +44,21 @@ pub fn cases(text: &str, name: &str) -> Result<Vec<Case>, SceneError> {
         Some(Value::Table(sweep)) => sweep,
         Some(_) => return Err(error("sweep", Problem::Schema("must be a table".into()))),
     };
-    let axes: Vec<(String, Vec<Value>)> = sweep
-        .into_iter()
-        .map(|(key, spec)| {
-            let values = axis_values(&key, spec).map_err(|p| error(&format!("sweep.{key}"), p))?;
-            Ok((key, values))
-        })
-        .collect::<Result<_, SceneError>>()?;
-    let count: usize = axes.iter().map(|(_, v)| v.len()).product();
+    // The count is checked as each key is added, before the next key's values are made.
+    let mut axes: Vec<(String, Vec<Value>)> = Vec::new();
+    let mut count = 1usize;
+    for (key, spec) in sweep {
+        let path = format!("sweep.{key}");
+        let values = axis_values(&key, spec).map_err(|p| error(&path, p))?;
+        count = count
+            .checked_mul(values.len())
+            .filter(|count| *count <= MAX_CASES)
+            .ok_or_else(|| {
+                let message = format!("with this key the sweep has more than {MAX_CASES} cases");
+                error(&path, Problem::Invalid(message))
+            })?;
+        axes.push((key, values));
+    }
     (0..count)
         .map(|index| {
             let values = combination(&axes, index);
@@ -78,13 +89,21 @@ fn axis_values(key: &str, spec: Value) -> Result<Vec<Value>, Problem> {
             };
             let (from, to) = (number("from")?, number("to")?);
             let count = match range.get("count") {
-                Some(Value::Integer(n)) if *n >= 2 => *n as usize,
+                Some(Value::Integer(n)) if *n >= 2 => *n,
                 _ => {
                     return Err(Problem::Schema(
                         "a range needs an integer `count` of at least 2".into(),
                     ));
                 }
             };
+            let count = usize::try_from(count)
+                .ok()
+                .filter(|count| *count <= MAX_CASES)
+                .ok_or_else(|| {
+                    Problem::Invalid(format!(
+                        "a range of {count} values is more than the {MAX_CASES} cases a sweep may have"
+                    ))
+                })?;
             if let Some(extra) = range
                 .keys()
                 .find(|k| !["from", "to", "count"].contains(&k.as_str()))
