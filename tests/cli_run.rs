@@ -27,16 +27,21 @@ fn folder(test: &str) -> PathBuf {
     dir
 }
 
-fn run_scene(name: &str, out: &Path) -> Output {
-    let output = eom()
+/// `eom run SCENE --out OUT`, waited for.
+fn eom_run(scene: &Path, out: &Path) -> Output {
+    eom()
         .args([
             "run",
-            scene(name).to_str().unwrap(),
+            scene.to_str().unwrap(),
             "--out",
             out.to_str().unwrap(),
         ])
         .output()
-        .unwrap();
+        .unwrap()
+}
+
+fn run_scene(name: &str, out: &Path) -> Output {
+    let output = eom_run(&scene(name), &out);
     assert!(
         output.status.success(),
         "{name}: {}",
@@ -272,15 +277,7 @@ fn run_edited(test: &str, base: &str, edit: impl Fn(&str) -> String) -> (i32, St
     let text = edit(&std::fs::read_to_string(scene(base)).unwrap());
     let path = dir.join("scene.toml");
     std::fs::write(&path, text).unwrap();
-    let output = eom()
-        .args([
-            "run",
-            path.to_str().unwrap(),
-            "--out",
-            dir.join("out").to_str().unwrap(),
-        ])
-        .output()
-        .unwrap();
+    let output = eom_run(&path, &dir.join("out"));
     (
         output.status.code().unwrap_or(-1),
         String::from_utf8_lossy(&output.stderr).into_owned(),
@@ -361,15 +358,7 @@ fn a_zero_step_names_the_key() {
 fn an_output_folder_that_holds_a_run_is_kept_without_force() {
     let out = folder("force");
     run_scene("looping.toml", &out);
-    let again = eom()
-        .args([
-            "run",
-            scene("looping.toml").to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ])
-        .output()
-        .unwrap();
+    let again = eom_run(&scene("looping.toml"), &out);
     assert_eq!(again.status.code(), Some(4));
     assert!(String::from_utf8_lossy(&again.stderr).contains("--force"));
     let forced = eom()
@@ -576,15 +565,7 @@ fn the_heavy_top_keeps_its_energy_spin_and_vertical_momentum() {
 
 /// A run into `out` that is expected to fail: its exit code and standard error.
 fn run_failing(scene: &Path, out: &Path) -> (i32, String) {
-    let output = eom()
-        .args([
-            "run",
-            scene.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ])
-        .output()
-        .unwrap();
+    let output = eom_run(&scene, &out);
     (
         output.status.code().unwrap_or(-1),
         String::from_utf8_lossy(&output.stderr).into_owned(),
@@ -780,15 +761,7 @@ fn a_fixed_step_too_long_for_the_rate_of_turn_stops_the_run_or_warns() {
     // Explicit Euler has no stability limit on the imaginary axis: its run goes on, and the
     // summary and standard error warn with the largest h·|ω| and the step that would do.
     let euler = spinning(&dir, "euler", ("euler", 1e-4), 1000.0, "");
-    let output = eom()
-        .args([
-            "run",
-            euler.to_str().unwrap(),
-            "--out",
-            dir.join("euler").to_str().unwrap(),
-        ])
-        .output()
-        .unwrap();
+    let output = eom_run(&euler, &dir.join("euler"));
     let stderr = String::from_utf8_lossy(&output.stderr);
     assert!(output.status.success(), "{stderr}");
     let warnings = summary(&dir.join("euler"))["warnings"].clone();
