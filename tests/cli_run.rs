@@ -41,7 +41,7 @@ fn eom_run(scene: &Path, out: &Path) -> Output {
 }
 
 fn run_scene(name: &str, out: &Path) -> Output {
-    let output = eom_run(&scene(name), &out);
+    let output = eom_run(&scene(name), out);
     assert!(
         output.status.success(),
         "{name}: {}",
@@ -565,7 +565,7 @@ fn the_heavy_top_keeps_its_energy_spin_and_vertical_momentum() {
 
 /// A run into `out` that is expected to fail: its exit code and standard error.
 fn run_failing(scene: &Path, out: &Path) -> (i32, String) {
-    let output = eom_run(&scene, &out);
+    let output = eom_run(scene, out);
     (
         output.status.code().unwrap_or(-1),
         String::from_utf8_lossy(&output.stderr).into_owned(),
