@@ -1,0 +1,580 @@
+//! The checks of a scene file, family by family: each value in its range, each key a key of
+//! the scene's family, the model it selects able to run — every error naming its key by its
+//! path in the file (`integrator.step`).
+
+use super::file::{self, GivenKeys, SceneFile};
+use super::{
+    Body, DEFAULT_MAX_STEPS, DEFAULT_ROWS, DEFAULT_TOLERANCE, IntegratorSpec, MAX_ROWS, Method,
+    Problem, SceneError, SceneLoads, Selection, select_spatial, top,
+};
+use crate::integrate::AdaptiveOptions;
+use crate::models::{AnyModel, Family, Kinematics, ModelInfo, Symmetry};
+use crate::{InertiaTensor, ParameterError, PendulumParameters};
+use nalgebra::{Matrix3, UnitQuaternion};
+use std::path::Path;
+
+/// The checks of one scene file, each naming its key.
+pub(super) struct Checker<'a> {
+    pub(super) name: &'a str,
+}
+
+/// The keys a family reads in each table; any other key given is an error.
+struct FamilyKeys {
+    body: &'static [&'static str],
+    initial: &'static [&'static str],
+    loads: &'static [&'static str],
+}
+
+fn family_keys(family: Family) -> FamilyKeys {
+    match family {
+        Family::Pendulum => FamilyKeys {
+            body: &["i0", "mass", "g", "h"],
+            initial: &["theta_deg", "theta_dot"],
+            loads: &["moment", "linear_damping", "quadratic_damping"],
+        },
+        Family::PlanarAtG | Family::PlanarSpaceFixed => FamilyKeys {
+            body: &["mass", "izz"],
+            initial: &["u", "v", "r", "x", "y", "psi_deg"],
+            loads: PLANAR_LOADS,
+        },
+        Family::PlanarMidship => FamilyKeys {
+            body: &["mass", "izz", "x_g"],
+            initial: &["u", "v", "r", "x", "y", "psi_deg"],
+            loads: PLANAR_LOADS,
+        },
+        Family::Top => FamilyKeys {
+            body: &["mass", "inertia", "h", "g"],
+            initial: &["rates", "attitude_deg"],
+            loads: &["moment_body", "linear_damping", "quadratic_damping"],
+        },
+        Family::Spatial => FamilyKeys {
+            body: &["mass", "inertia", "file"],
+            initial: &["velocity", "rates", "position", "attitude_deg"],
+            loads: &[
+                "gravity",
+                "buoyancy",
+                "buoyancy_centre",
+                "force_body",
+                "force_space",
+                "moment_body",
+                "moment_space",
+                "linear_damping",
+                "quadratic_damping",
+            ],
+        },
+    }
+}
+
+const PLANAR_LOADS: &[&str] = &[
+    "force_body",
+    "force_space",
+    "moment",
+    "linear_damping",
+    "quadratic_damping",
+];
+
+impl Checker<'_> {
+    fn error(&self, key: &str, problem: Problem) -> SceneError {
+        SceneError::new(self.name, key, problem)
+    }
+
+    fn invalid(&self, key: &str, message: impl Into<String>) -> SceneError {
+        self.error(key, Problem::Invalid(message.into()))
+    }
+
+    fn missing(&self, key: &str, why: &str) -> SceneError {
+        self.error(key, Problem::Missing(why.to_owned()))
+    }
+
+    /// A value checked by the crate's parameter checks, the error naming its key.
+    fn parameter(
+        &self,
+        key: &str,
+        check: impl FnOnce() -> Result<f64, ParameterError>,
+    ) -> Result<f64, SceneError> {
+        check()
+            .map_err(|e| self.invalid(key, format!("must be {}, got {}", e.requirement, e.value)))
+    }
+
+    pub(super) fn family(&self, name: &str) -> Result<Family, SceneError> {
+        Family::ALL
+            .into_iter()
+            .find(|f| f.name() == name)
+            .ok_or_else(|| {
+                let names: Vec<&str> = Family::ALL.iter().map(|f| f.name()).collect();
+                self.invalid(
+                    "model.family",
+                    format!("unknown family `{name}`; one of {}", names.join(", ")),
+                )
+            })
+    }
+
+    /// Refuses a key that another family reads: it would be ignored, silently.
+    pub(super) fn keys_of_family(
+        &self,
+        file: &SceneFile,
+        family: Family,
+    ) -> Result<(), SceneError> {
+        let keys = family_keys(family);
+        let tables: [(&str, Vec<&str>, &[&str]); 3] = [
+            ("body", file.body.given(), keys.body),
+            ("initial", file.initial.given(), keys.initial),
+            ("loads", file.loads.given(), keys.loads),
+        ];
+        for (table, given, allowed) in tables {
+            if let Some(key) = given.iter().find(|k| !allowed.contains(k)) {
+                return Err(self.error(
+                    &format!("{table}.{key}"),
+                    Problem::Schema(format!(
+                        "not a key of a {} scene; its [{table}] takes {}",
+                        family.name(),
+                        allowed.join(", ")
+                    )),
+                ));
+            }
+        }
+        let has_attitude = matches!(family, Family::Spatial | Family::Top);
+        let misplaced = [
+            (
+                "model.symmetry",
+                file.model.symmetry.is_some() && family != Family::Spatial,
+            ),
+            (
+                "model.kinematics",
+                file.model.kinematics.is_some() && !has_attitude,
+            ),
+        ];
+        match misplaced.iter().find(|(_, misplaced)| *misplaced) {
+            Some((key, _)) => Err(self.error(
+                key,
+                Problem::Schema(format!("a {} scene does not take it", family.name())),
+            )),
+            None => Ok(()),
+        }
+    }
+
+    /// An error naming the first of `keys` that is given, where none may be.
+    fn refuse_given(&self, keys: [(&str, bool); 2], why: &str) -> Result<(), SceneError> {
+        match keys.iter().find(|(_, given)| *given) {
+            Some((key, _)) => Err(self.invalid(key, why)),
+            None => Ok(()),
+        }
+    }
+
+    /// The tensor about G of `body.inertia`, a physical one.
+    fn tensor(&self, rows: Option<[[f64; 3]; 3]>, what: &str) -> Result<InertiaTensor, SceneError> {
+        let rows = rows.ok_or_else(|| self.missing("body.inertia", what))?;
+        InertiaTensor::from_matrix(Matrix3::from_fn(|r, c| rows[r][c]))
+            .map_err(|e| self.invalid("body.inertia", e.to_string()))
+    }
+
+    fn required(&self, key: &str, value: Option<f64>, what: &str) -> Result<f64, SceneError> {
+        value.ok_or_else(|| self.missing(key, what))
+    }
+
+    pub(super) fn body(
+        &self,
+        file: &SceneFile,
+        family: Family,
+        base: &Path,
+    ) -> Result<Body, SceneError> {
+        let b = &file.body;
+        match family {
+            Family::Pendulum => {
+                let i0 = self.required("body.i0", b.i0, "I₀ about the pivot, kg m²")?;
+                let mass = self.required("body.mass", b.mass, "the mass, kg")?;
+                let g = self.required("body.g", b.g, "gravity, m/s²")?;
+                let h = self.required("body.h", b.h, "the pivot-to-G distance, m")?;
+                PendulumParameters::new(i0, mass, g, h)
+                    .map(Body::Pendulum)
+                    .map_err(|e| self.invalid(&format!("body.{}", e.field), e.to_string()))
+            }
+            Family::PlanarAtG | Family::PlanarMidship | Family::PlanarSpaceFixed => {
+                let mass = self.required("body.mass", b.mass, "the mass, kg")?;
+                let izz = self.required("body.izz", b.izz, "I_zz about G, kg m²")?;
+                let mass =
+                    self.parameter("body.mass", || crate::validate::positive("mass", mass))?;
+                let izz = self.parameter("body.izz", || crate::validate::positive("izz", izz))?;
+                let x_g = match family {
+                    Family::PlanarMidship => {
+                        let x_g = self.required("body.x_g", b.x_g, "G ahead of midship, m")?;
+                        Some(self.parameter("body.x_g", || crate::validate::finite("x_g", x_g))?)
+                    }
+                    _ => None,
+                };
+                Ok(Body::Planar { mass, izz, x_g })
+            }
+            Family::Spatial => self.spatial_body(b, base),
+            Family::Top => self.top_body(b),
+        }
+    }
+
+    fn top_body(&self, b: &file::BodyTable) -> Result<Body, SceneError> {
+        let mass = self.required("body.mass", b.mass, "the mass, kg")?;
+        let inertia = self.tensor(b.inertia, "the principal tensor about G, kg m²")?;
+        let h = self.required("body.h", b.h, "pivot to G along the body z-axis, m")?;
+        let g = self.required("body.g", b.g, "gravity, m/s²")?;
+        let info = ModelInfo::of_family(Family::Top)
+            .next()
+            .expect("the catalog has a top");
+        top(info, mass, &inertia, h, g).map_err(|e| {
+            let key = match &e {
+                crate::generic::ModelError::Parameter(p) => format!("body.{}", p.field),
+                _ => "body.inertia".to_owned(),
+            };
+            self.invalid(&key, e.to_string())
+        })?;
+        Ok(Body::Top {
+            mass,
+            inertia,
+            h,
+            g,
+        })
+    }
+
+    fn spatial_body(&self, b: &file::BodyTable, base: &Path) -> Result<Body, SceneError> {
+        if let Some(path) = &b.file {
+            self.refuse_given(
+                [
+                    ("body.mass", b.mass.is_some()),
+                    ("body.inertia", b.inertia.is_some()),
+                ],
+                "give either body.file or body.mass and body.inertia, not both",
+            )?;
+            let description = crate::mass::BodyFile::load(&base.join(path))
+                .map_err(|e| self.error("body.file", Problem::BodyFile(Box::new(e))))?;
+            let properties = description
+                .mass_properties()
+                .map_err(|e| self.error("body.file", Problem::BodyFile(Box::new(e))))?;
+            return Ok(Body::Spatial {
+                mass: properties.mass(),
+                inertia: properties.inertia(),
+            });
+        }
+        let mass = self.required("body.mass", b.mass, "the mass, kg (or body.file)")?;
+        let mass = self.parameter("body.mass", || crate::validate::positive("mass", mass))?;
+        let inertia = self.tensor(
+            b.inertia,
+            "the tensor about G, [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, Iyz, Izz]] (or body.file)",
+        )?;
+        Ok(Body::Spatial { mass, inertia })
+    }
+
+    pub(super) fn selection(
+        &self,
+        file: &SceneFile,
+        family: Family,
+        body: &Body,
+    ) -> Result<Selection, SceneError> {
+        if family == Family::Top {
+            let kinematics = self.kinematics(file)?;
+            let info = ModelInfo::of_family(family)
+                .find(|i| i.kinematics == Some(kinematics))
+                .expect("the catalog has a top of each kinematics");
+            return Ok(Selection {
+                info,
+                reason: format!(
+                    "a top with {} kinematics, as the scene says",
+                    kinematics.name()
+                ),
+            });
+        }
+        let Body::Spatial { mass, inertia } = body else {
+            let info = ModelInfo::of_family(family)
+                .next()
+                .expect("every family has a model");
+            return Ok(Selection::only(info));
+        };
+        let symmetry = match file.model.symmetry.as_deref() {
+            None | Some("auto") => None,
+            Some(name) => Some(self.named(
+                "model.symmetry",
+                name,
+                Symmetry::ALL.map(|s| (s, s.name())),
+                "auto",
+            )?),
+        };
+        let kinematics = self.kinematics(file)?;
+        let selection = select_spatial(inertia, symmetry, kinematics)
+            .map_err(|message| self.invalid("model.symmetry", message))?;
+        // The model checks more than a valid tensor promises (a determinant that f64 can
+        // invert, 1e-110 kg m² on the diagonal is not): a scene accepted builds its model.
+        let symmetry = selection
+            .info
+            .symmetry
+            .expect("a spatial model has a symmetry class");
+        AnyModel::spatial(symmetry, kinematics, *mass, inertia).map_err(|e| {
+            let key = if file.body.file.is_some() {
+                "body.file"
+            } else {
+                match e {
+                    crate::generic::ModelError::Parameter(_) => "body.mass",
+                    _ => "body.inertia",
+                }
+            };
+            self.invalid(key, e.to_string())
+        })?;
+        Ok(selection)
+    }
+
+    /// `model.kinematics`, quaternion when the scene leaves it out.
+    fn kinematics(&self, file: &SceneFile) -> Result<Kinematics, SceneError> {
+        match file.model.kinematics.as_deref() {
+            None => Ok(Kinematics::Quaternion),
+            Some(name) => self.named(
+                "model.kinematics",
+                name,
+                Kinematics::ALL.map(|k| (k, k.name())),
+                "",
+            ),
+        }
+    }
+
+    /// One of `values` by its name, or an error listing the names.
+    fn named<V: Copy, const K: usize>(
+        &self,
+        key: &str,
+        name: &str,
+        values: [(V, &'static str); K],
+        extra: &str,
+    ) -> Result<V, SceneError> {
+        values
+            .iter()
+            .find(|(_, n)| *n == name)
+            .map(|(v, _)| *v)
+            .ok_or_else(|| {
+                let mut names: Vec<&str> = values.iter().map(|(_, n)| *n).collect();
+                if !extra.is_empty() {
+                    names.insert(0, extra);
+                }
+                self.invalid(
+                    key,
+                    format!("unknown value `{name}`; one of {}", names.join(", ")),
+                )
+            })
+    }
+
+    fn finite(&self, key: &str, value: f64) -> Result<f64, SceneError> {
+        if value.is_finite() {
+            Ok(value)
+        } else {
+            Err(self.invalid(key, format!("must be finite, got {value}")))
+        }
+    }
+
+    fn finite3(&self, key: &str, value: Option<[f64; 3]>) -> Result<[f64; 3], SceneError> {
+        let v = value.unwrap_or([0.0; 3]);
+        for (i, x) in v.iter().enumerate() {
+            self.finite(&format!("{key}[{i}]"), *x)?;
+        }
+        Ok(v)
+    }
+
+    pub(super) fn initial(
+        &self,
+        file: &SceneFile,
+        selection: &Selection,
+    ) -> Result<Vec<f64>, SceneError> {
+        let i = &file.initial;
+        let scalar =
+            |key: &str, v: Option<f64>| self.finite(&format!("initial.{key}"), v.unwrap_or(0.0));
+        Ok(match selection.info.family {
+            Family::Pendulum => vec![
+                scalar("theta_deg", i.theta_deg)?.to_radians(),
+                scalar("theta_dot", i.theta_dot)?,
+            ],
+            Family::PlanarAtG | Family::PlanarMidship => vec![
+                scalar("u", i.u)?,
+                scalar("v", i.v)?,
+                scalar("r", i.r)?,
+                scalar("x", i.x)?,
+                scalar("y", i.y)?,
+                scalar("psi_deg", i.psi_deg)?.to_radians(),
+            ],
+            Family::PlanarSpaceFixed => {
+                // The scene gives surge and sway in body axes, as for the other planar
+                // families; the space-fixed state holds their space components.
+                let (u, v) = (scalar("u", i.u)?, scalar("v", i.v)?);
+                let psi = scalar("psi_deg", i.psi_deg)?.to_radians();
+                let (s, c) = psi.sin_cos();
+                vec![
+                    scalar("x", i.x)?,
+                    scalar("y", i.y)?,
+                    psi,
+                    u * c - v * s,
+                    u * s + v * c,
+                    scalar("r", i.r)?,
+                ]
+            }
+            Family::Spatial => {
+                let mut state = Vec::with_capacity(13);
+                state.extend(self.finite3("initial.velocity", i.velocity)?);
+                state.extend(self.finite3("initial.rates", i.rates)?);
+                state.extend(self.finite3("initial.position", i.position)?);
+                state.extend(self.attitude(i, selection)?);
+                state
+            }
+            Family::Top => {
+                let mut state = Vec::with_capacity(7);
+                state.extend(self.finite3("initial.rates", i.rates)?);
+                state.extend(self.attitude(i, selection)?);
+                state
+            }
+        })
+    }
+
+    /// `initial.attitude_deg` as the model carries it: Euler angles or a quaternion.
+    fn attitude(
+        &self,
+        i: &file::InitialTable,
+        selection: &Selection,
+    ) -> Result<Vec<f64>, SceneError> {
+        let [roll, pitch, yaw] = self
+            .finite3("initial.attitude_deg", i.attitude_deg)?
+            .map(f64::to_radians);
+        Ok(match selection.info.kinematics {
+            Some(Kinematics::Euler) => vec![roll, pitch, yaw],
+            _ => {
+                let q = UnitQuaternion::from_euler_angles(roll, pitch, yaw);
+                vec![q.w, q.i, q.j, q.k]
+            }
+        })
+    }
+
+    pub(super) fn integrator(
+        &self,
+        file: &SceneFile,
+        selection: &Selection,
+        loads: &SceneLoads,
+    ) -> Result<IntegratorSpec, SceneError> {
+        let t = &file.integrator;
+        let method = self.named("integrator.method", &t.method, Method::ALL, "")?;
+        let end_time = self.finite("integrator.end_time", t.end_time)?;
+        if end_time <= 0.0 {
+            return Err(self.invalid(
+                "integrator.end_time",
+                format!("must be positive, got {end_time}"),
+            ));
+        }
+        let max_steps = match t.max_steps {
+            None => DEFAULT_MAX_STEPS,
+            Some(0) => {
+                return Err(self.invalid("integrator.max_steps", "must be at least 1, got 0"));
+            }
+            Some(n) => usize::try_from(n).unwrap_or(usize::MAX),
+        };
+        if method == Method::LieMidpoint {
+            self.lie_midpoint_applies(selection, loads)?;
+        }
+        let (step, adaptive) = if method.is_adaptive() {
+            if t.step.is_some() {
+                return Err(self.invalid(
+                    "integrator.step",
+                    format!(
+                        "{} chooses its own steps; give rtol and atol",
+                        method.name()
+                    ),
+                ));
+            }
+            let rtol = self.tolerance("integrator.rtol", t.rtol)?;
+            let atol = self.tolerance("integrator.atol", t.atol)?;
+            let mut options = match method {
+                Method::Dopri5 => AdaptiveOptions::dopri5(rtol, atol),
+                _ => AdaptiveOptions::dop853(rtol, atol),
+            };
+            options.max_steps = max_steps;
+            (None, Some(options))
+        } else {
+            self.refuse_given(
+                [
+                    ("integrator.rtol", t.rtol.is_some()),
+                    ("integrator.atol", t.atol.is_some()),
+                ],
+                &format!("{} takes a fixed step; give integrator.step", method.name()),
+            )?;
+            let step = self.required("integrator.step", t.step, "the fixed step, s")?;
+            let step = self.finite("integrator.step", step)?;
+            if step <= 0.0 {
+                return Err(
+                    self.invalid("integrator.step", format!("must be positive, got {step}"))
+                );
+            }
+            let steps = (end_time / step).ceil();
+            if steps > max_steps as f64 {
+                return Err(self.invalid(
+                    "integrator.max_steps",
+                    format!("the run needs {steps} steps of {step} s to reach {end_time} s, more than max_steps = {max_steps}"),
+                ));
+            }
+            (Some(step), None)
+        };
+        Ok(IntegratorSpec {
+            method,
+            step,
+            adaptive,
+            end_time,
+            max_steps,
+        })
+    }
+
+    fn tolerance(&self, key: &str, value: Option<f64>) -> Result<f64, SceneError> {
+        let value = self.finite(key, value.unwrap_or(DEFAULT_TOLERANCE))?;
+        if value <= 0.0 {
+            return Err(self.invalid(key, format!("must be positive, got {value}")));
+        }
+        Ok(value)
+    }
+
+    /// The geometric integrator turns a free body's attitude and rates (`RigidRotation`);
+    /// the translation of a free body is then exact.
+    fn lie_midpoint_applies(
+        &self,
+        selection: &Selection,
+        loads: &SceneLoads,
+    ) -> Result<(), SceneError> {
+        let free_quaternion =
+            selection.info.kinematics == Some(Kinematics::Quaternion) && loads.is_free();
+        if free_quaternion {
+            Ok(())
+        } else {
+            Err(self.invalid(
+                "integrator.method",
+                "lie-midpoint integrates the rotation of a free body: a spatial scene with quaternion kinematics and no loads",
+            ))
+        }
+    }
+
+    pub(super) fn every(&self, file: &SceneFile, end_time: f64) -> Result<f64, SceneError> {
+        let Some(every) = file.output.every else {
+            // An end time within 500 of the smallest f64 would give rows 0 s apart.
+            let every = end_time / DEFAULT_ROWS;
+            return if every > 0.0 {
+                Ok(every)
+            } else {
+                Err(self.invalid(
+                    "integrator.end_time",
+                    format!("{end_time} s is too short to divide into {DEFAULT_ROWS} rows"),
+                ))
+            };
+        };
+        let every = self.finite("output.every", every)?;
+        if every <= 0.0 || every > end_time {
+            return Err(self.invalid(
+                "output.every",
+                format!(
+                    "must be positive and at most integrator.end_time = {end_time}, got {every}"
+                ),
+            ));
+        }
+        if end_time / every > MAX_ROWS as f64 {
+            return Err(self.invalid(
+                "output.every",
+                format!(
+                    "gives {:.0} rows over integrator.end_time = {end_time}, more than {MAX_ROWS}; a longer every keeps the file readable",
+                    end_time / every
+                ),
+            ));
+        }
+        Ok(every)
+    }
+}
