@@ -299,33 +299,26 @@ impl Visitor for Runner<'_> {
         let (result, stats) = if !guard.check(0.0, y0.as_slice()) {
             (Err(IntegrateError::Stopped { t: 0.0 }), Stats::default())
         } else {
+            // An adaptive method samples the rows by dense output, the guard checking every
+            // accepted step.
+            macro_rules! sampled {
+                ($method:ident) => {{
+                    let mut method =
+                        $method::new(spec.adaptive.expect("an adaptive method has options"));
+                    let check = |t: f64, y: &SVector<f64, N>| guard.check(t, y.as_slice());
+                    let result = method.sample_every_checked(
+                        &system,
+                        interval,
+                        scene.every,
+                        check,
+                        &mut emit,
+                    );
+                    (result, method.stats())
+                }};
+            }
             match spec.method {
-                Method::Dop853 => {
-                    let mut method =
-                        Dop853::new(spec.adaptive.expect("an adaptive method has options"));
-                    let check = |t: f64, y: &SVector<f64, N>| guard.check(t, y.as_slice());
-                    let result = method.sample_every_checked(
-                        &system,
-                        interval,
-                        scene.every,
-                        check,
-                        &mut emit,
-                    );
-                    (result, method.stats())
-                }
-                Method::Dopri5 => {
-                    let mut method =
-                        Dopri5::new(spec.adaptive.expect("an adaptive method has options"));
-                    let check = |t: f64, y: &SVector<f64, N>| guard.check(t, y.as_slice());
-                    let result = method.sample_every_checked(
-                        &system,
-                        interval,
-                        scene.every,
-                        check,
-                        &mut emit,
-                    );
-                    (result, method.stats())
-                }
+                Method::Dop853 => sampled!(Dop853),
+                Method::Dopri5 => sampled!(Dopri5),
                 Method::Euler => {
                     let mut method = Euler::new(step(scene));
                     fixed_steps(&mut method, &system, scene, &mut guard, &mut emit)

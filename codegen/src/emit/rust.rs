@@ -443,10 +443,15 @@ fn common_factor(e: &Expr) -> crate::symbolic::Monomial {
     common
 }
 
-/// A monomial's symbols with positive and with negative powers, as identifier tokens.
+/// A monomial's symbols with positive and with negative powers, as identifier tokens
+/// (parameters are plain symbols, never sines or cosines).
 fn split_powers(m: &crate::symbolic::Monomial) -> (Vec<TokenStream>, Vec<TokenStream>) {
     let (mut numerator, mut denominator) = (Vec::new(), Vec::new());
     for (atom, power) in m.factors() {
+        debug_assert!(
+            matches!(atom, Atom::Symbol(_)),
+            "parameters are plain symbols"
+        );
         let name = ident(&identifier(atom.symbol()));
         let side = if power > 0 {
             &mut numerator
@@ -462,22 +467,7 @@ fn split_powers(m: &crate::symbolic::Monomial) -> (Vec<TokenStream>, Vec<TokenSt
 }
 
 fn f64_term(monomial: &crate::symbolic::Monomial, magnitude: &Rational) -> TokenStream {
-    let (mut numerator, mut denominator) = (Vec::new(), Vec::new());
-    for (atom, power) in monomial.factors() {
-        let Atom::Symbol(s) = atom else {
-            unreachable!("parameters are plain symbols")
-        };
-        let name = ident(&identifier(s));
-        let side = if power > 0 {
-            &mut numerator
-        } else {
-            &mut denominator
-        };
-        side.extend(std::iter::repeat_n(
-            quote! { #name },
-            power.unsigned_abs() as usize,
-        ));
-    }
+    let (mut numerator, denominator) = split_powers(monomial);
     if !magnitude.is_one() || numerator.is_empty() {
         numerator.insert(0, rational_tokens(magnitude));
     }
