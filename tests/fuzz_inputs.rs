@@ -1500,7 +1500,7 @@ fn eval_text(
 ) -> Result<(), TestCaseError> {
     tally.count("input");
     remember(text.as_bytes());
-    let result = guarded("eval_input::evaluate", text, || {
+    let result = guarded("eval::evaluate", text, || {
         evaluate(text, family, symmetry, kinematics)
     })?;
     match result {
