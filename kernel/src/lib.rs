@@ -15,11 +15,14 @@
 //! dependent operations that an integrator's stages wait on. The test is a branch per angle,
 //! which only varying angles that cross ±π/4 from call to call would mispredict.
 //!
-//! The kernel runs on `f64` and `f32` scalars (f32 is widened and the result rounded once).
-//! Any other scalar — SIMD lanes, dual numbers — keeps its own `simd_sin_cos`: lanes have a
+//! The kernel runs on `f64` and `f32` scalars. f32 has one of its own, [`sin_cos_f32`]: the
+//! same structure with musl's shorter polynomials for f32 (`__sindf`, `__cosdf`) and a two-step
+//! reduction, evaluated in f64 like musl's and rounded once, within one ulp of the correctly
+//! rounded pair and faster than the f64 kernel (which f32 went through before, widened and
+//! rounded, slower than f64 itself). Any other scalar — SIMD lanes, dual numbers — keeps its own `simd_sin_cos`: lanes have a
 //! vectorised one already, and the rounding trick would drop a dual number's derivative.
 //! Arguments beyond `2¹⁹·π/2`, where the two-part products stop being exact, and NaN or
-//! infinite ones go to the platform's `sin_cos` unchanged.
+//! infinite ones go to the platform's f64 `sin_cos` unchanged (f32 ones widened, rounded).
 //!
 //! The kernel lives here, as ordinary Rust, rather than in the emitter: every generated model
 //! calls this one copy as `eom_kernel::sin_cos`, and the compiler, clippy, rustfmt and the
@@ -41,37 +44,38 @@
 #![deny(missing_docs)]
 
 mod kernel;
+mod single;
 
 pub use kernel::sin_cos as sin_cos_f64;
+pub use single::sin_cos as sin_cos_f32;
 
 use core::any::Any;
 use simba::simd::SimdRealField;
 
 /// `(sin a, cos a)` of every angle in `angles`, as the generated `rhs` computes them.
 ///
-/// For `f64` and `f32` (widened to f64, rounded once at the end) this is the kernel,
-/// [`sin_cos_f64`]: one argument reduction shared by sine and cosine, within 2 ulp of the
-/// platform's `sin` and `cos`, the angles side by side so that the compiler can pair them in
-/// SIMD registers. Every other scalar (SIMD lanes, dual numbers) uses its own `simd_sin_cos`,
+/// For `f64` this is the kernel, [`sin_cos_f64`]: one argument reduction shared by sine and
+/// cosine, within 2 ulp of the platform's `sin` and `cos`, the angles side by side so that the
+/// compiler can pair them in SIMD registers. For `f32` it is [`sin_cos_f32`], the same for
+/// f32, within one ulp of the correctly rounded pair. Every other scalar (SIMD lanes, dual numbers) uses its own `simd_sin_cos`,
 /// and so does every scalar with the feature `platform-trig`.
 #[inline(always)]
 pub fn sin_cos<T: SimdRealField + Copy, const N: usize>(angles: [T; N]) -> [(T, T); N] {
     let scalars: &dyn Any = &angles;
-    let mut wide = [0.0; N];
+    let mut pairs = [(T::zero(), T::zero()); N];
     if cfg!(feature = "platform-trig") {
         return each_own(angles);
     } else if let Some(angles) = scalars.downcast_ref::<[f64; N]>() {
-        wide = *angles;
+        for (pair, (s, c)) in pairs.iter_mut().zip(sin_cos_f64(*angles)) {
+            *pair = (T::from_subset(&s), T::from_subset(&c));
+        }
     } else if let Some(angles) = scalars.downcast_ref::<[f32; N]>() {
-        for (wide, &angle) in wide.iter_mut().zip(angles) {
-            *wide = f64::from(angle);
+        // f32 → f64 → f32 is exact, and the compiler drops it.
+        for (pair, (s, c)) in pairs.iter_mut().zip(sin_cos_f32(*angles)) {
+            *pair = (T::from_subset(&f64::from(s)), T::from_subset(&f64::from(c)));
         }
     } else {
         return each_own(angles);
-    }
-    let mut pairs = [(T::zero(), T::zero()); N];
-    for (pair, (s, c)) in pairs.iter_mut().zip(sin_cos_f64(wide)) {
-        *pair = (T::from_subset(&s), T::from_subset(&c));
     }
     pairs
 }

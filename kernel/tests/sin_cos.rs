@@ -1,5 +1,5 @@
 //! The kernel against the platform's `sin` and `cos`: [`eom_kernel::sin_cos`] as the generated
-//! models call it, on f64, f32, dual numbers and SIMD lanes.
+//! models call it, on f64, dual numbers and SIMD lanes (f32 in `tests/sin_cos_f32.rs`).
 //!
 //! With the feature `platform-trig`, `sin_cos` calls the platform's functions instead, so these
 //! checks would not be of the kernel; `tests/platform_trig.rs` checks that switch.
@@ -104,25 +104,6 @@ fn zeros_tiny_and_non_finite_arguments_behave_as_the_platform_does() {
 fn beyond_the_limit_gives_the_platform_result_exactly() {
     for x in [LIMIT * 1.0001, -2e6, 1e10, 1e300] {
         assert_eq!(sin_cos(x), x.sin_cos(), "x = {x:e}");
-    }
-}
-
-/// f32 goes through the f64 kernel and is rounded once, so it agrees with the f64 pair
-/// rounded to f32 exactly, and with the platform's f32 functions to one f32 ulp.
-#[test]
-fn f32_is_the_f64_kernel_rounded_once() {
-    for u in uniform(50_000, 0xC0FF_EE11) {
-        let x = ((2.0 * u - 1.0) * 1e3) as f32;
-        let (s, c) = sin_cos(x);
-        let (s64, c64) = sin_cos(f64::from(x));
-        assert_eq!((s, c), (s64 as f32, c64 as f32), "x = {x:e}");
-        let (s0, c0) = x.sin_cos();
-        let ulp32 = |v: f32| {
-            let m = v.abs().max(f32::MIN_POSITIVE);
-            f32::from_bits(m.to_bits() + 1) - m
-        };
-        assert!((s - s0).abs() <= ulp32(s0), "sin, x = {x:e}");
-        assert!((c - c0).abs() <= ulp32(c0), "cos, x = {x:e}");
     }
 }
 
