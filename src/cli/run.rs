@@ -154,6 +154,14 @@ pub fn run_default() -> Result<()> {
     println!(
         "eom: no subcommand given, so running the default scene ({DEFAULT_NAME}); `eom --help` lists the others."
     );
+    // The default run writes over its own folder, so that the first command can be run again;
+    // it says so when there is a run to replace.
+    if out.join("summary.json").exists() {
+        println!(
+            "eom: replacing the default run in {}/ (eom run SCENE keeps a run unless --force)",
+            out.display()
+        );
+    }
     execute(
         DEFAULT_SCENE,
         DEFAULT_NAME,
