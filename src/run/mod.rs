@@ -321,15 +321,15 @@ impl Visitor for Runner<'_> {
                 Method::Dopri5 => sampled!(Dopri5),
                 Method::Euler => {
                     let mut method = Euler::new(step(scene));
-                    fixed_steps(&mut method, &system, scene, &mut guard, &mut emit)
+                    fixed_steps(&mut method, (&system, y0), scene, &mut guard, &mut emit)
                 }
                 Method::Rk4 => {
                     let mut method = Rk4::new(step(scene));
-                    fixed_steps(&mut method, &system, scene, &mut guard, &mut emit)
+                    fixed_steps(&mut method, (&system, y0), scene, &mut guard, &mut emit)
                 }
                 Method::SymplecticEuler => {
                     let mut method = SymplecticEuler::new(step(scene), kicked(scene));
-                    fixed_steps(&mut method, &system, scene, &mut guard, &mut emit)
+                    fixed_steps(&mut method, (&system, y0), scene, &mut guard, &mut emit)
                 }
                 Method::LieMidpoint => free_rotation(scene, &mut emit),
             }
@@ -377,18 +377,25 @@ fn kicked(scene: &Scene) -> Range<usize> {
 }
 
 /// The times a fixed-step run stops at: every row time k·every ≤ end_time (k ≥ 1), as
-/// `(time, is_a_row)`, then the end time if it is not a row time itself.
-fn stops(scene: &Scene) -> Vec<(f64, bool)> {
+/// `(time, is_a_row)`, then the end time if it is not a row time itself. Made as the run goes:
+/// a scene may ask for up to [`MAX_ROWS`](crate::scene::MAX_ROWS) rows.
+fn stops(scene: &Scene) -> impl Iterator<Item = (f64, bool)> + '_ {
     let end = scene.integrator.end_time;
-    let mut stops: Vec<(f64, bool)> = (1..)
-        .map(|k| k as f64 * scene.every)
-        .take_while(|t| *t <= end)
-        .map(|t| (t, true))
-        .collect();
-    if stops.last().is_none_or(|(t, _)| *t != end) {
-        stops.push((end, false));
-    }
-    stops
+    let mut k = 0u64;
+    let mut done = false;
+    std::iter::from_fn(move || {
+        if done {
+            return None;
+        }
+        k += 1;
+        let t = k as f64 * scene.every;
+        if t <= end {
+            done = t == end;
+            return Some((t, true));
+        }
+        done = true;
+        Some((end, false))
+    })
 }
 
 /// A fixed-step method over each output interval in turn (equal steps of at most the
@@ -397,7 +404,7 @@ fn stops(scene: &Scene) -> Vec<(f64, bool)> {
 /// before its row is written.
 fn fixed_steps<I, S, const N: usize>(
     method: &mut I,
-    system: &S,
+    (system, y0): (&S, SVector<f64, N>),
     scene: &Scene,
     guard: &mut Guard,
     emit: &mut impl FnMut(f64, &SVector<f64, N>) -> bool,
@@ -406,7 +413,7 @@ where
     I: Integrator<f64, N, S>,
 {
     let mut total = Stats::default();
-    let mut y = SVector::<f64, N>::from_column_slice(&scene.initial);
+    let mut y = y0;
     let mut t = 0.0;
     if !emit(t, &y) {
         return (Err(IntegrateError::Stopped { t }), total);
@@ -477,38 +484,21 @@ fn free_rotation<const N: usize>(
         state.as_mut_slice()[9..].copy_from_slice(&rotation.as_slice()[3..]);
         state
     };
-    let rotation_scene = RotationScene {
-        scene,
-        start: SVector::<f64, 7>::from_iterator(x[3..6].iter().chain(&x[9..13]).copied()),
-    };
+    let start = SVector::<f64, 7>::from_iterator(x[3..6].iter().chain(&x[9..13]).copied());
     let system = FreeRotation {
         inertia: inertia.matrix(),
     };
     let mut method = LieMidpoint::new(step(scene));
-    let (result, stats) =
-        rotation_scene.run(&mut method, &system, &mut |t, r| emit(t, &whole(t, r)));
+    // Implicit midpoint is stable for every step on the imaginary axis, and the quaternion
+    // has no singular attitude: nothing to check.
+    let (result, stats) = fixed_steps(
+        &mut method,
+        (&system, start),
+        scene,
+        &mut Guard::none(),
+        &mut |t, r| emit(t, &whole(t, r)),
+    );
     (result.map(|r| whole(scene.integrator.end_time, &r)), stats)
-}
-
-/// The rotational part of a free-body scene, run interval by interval like [`fixed_steps`].
-struct RotationScene<'a> {
-    scene: &'a Scene,
-    start: SVector<f64, 7>,
-}
-
-impl RotationScene<'_> {
-    fn run(
-        &self,
-        method: &mut LieMidpoint,
-        system: &FreeRotation,
-        emit: &mut impl FnMut(f64, &SVector<f64, 7>) -> bool,
-    ) -> (Result<SVector<f64, 7>, IntegrateError>, Stats) {
-        let mut shifted = self.scene.clone();
-        shifted.initial = self.start.as_slice().to_vec();
-        // Implicit midpoint is stable for every step on the imaginary axis, and the
-        // quaternion has no singular attitude: nothing to check.
-        fixed_steps(method, system, &shifted, &mut Guard::none(), emit)
-    }
 }
 
 /// An integration error as a run error, naming the state component or the load input.
