@@ -326,28 +326,16 @@ fn run_case(scene: &Scene, name: &str, out: &Path, progress: bool) -> Result<Out
     Ok(Outcome { report, files })
 }
 
-/// What a family adds to its summary: the pendulum's period, measured from the trajectory.
+/// What a family adds to its summary: the pendulum's period, measured from the trajectory by
+/// the swing test's own measurement ([`eom::swing::measure_period`]).
 fn add_family_measures(scene: &Scene, columns: &Columns, summary: &mut Summary) {
     if let Body::Pendulum(_) = scene.body
-        && let Some(period) = measured_period(&columns.time, &columns.state[0])
+        && let Ok(period) = eom::swing::measure_period(&columns.time, &columns.state[0])
     {
         summary
             .extra
             .insert("period_s".into(), serde_json::json!(period));
     }
-}
-
-/// The mean time between upward zero crossings of θ, each found by linear interpolation
-/// between the samples around it; `None` with fewer than two crossings.
-pub fn measured_period(time: &[f64], theta: &[f64]) -> Option<f64> {
-    let crossings: Vec<f64> = time
-        .windows(2)
-        .zip(theta.windows(2))
-        .filter(|(_, a)| a[0] < 0.0 && a[1] >= 0.0)
-        .map(|(t, a)| t[0] + (t[1] - t[0]) * (-a[0]) / (a[1] - a[0]))
-        .collect();
-    (crossings.len() >= 2)
-        .then(|| (crossings[crossings.len() - 1] - crossings[0]) / (crossings.len() - 1) as f64)
 }
 
 /// A progress bar on a terminal for runs longer than about a second; none otherwise.
