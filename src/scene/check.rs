@@ -5,7 +5,7 @@
 use super::file::{self, GivenKeys, SceneFile};
 use super::{
     Body, DEFAULT_MAX_STEPS, DEFAULT_ROWS, DEFAULT_TOLERANCE, IntegratorSpec, MAX_ROWS, Method,
-    Problem, SceneError, SceneLoads, Selection, select_spatial, top,
+    Problem, SceneError, SceneLoads, Selection, select_spatial,
 };
 use crate::integrate::AdaptiveOptions;
 use crate::models::{AnyModel, Family, Kinematics, ModelInfo, Symmetry};
@@ -214,10 +214,8 @@ impl Checker<'_> {
         let inertia = self.tensor(b.inertia, "the principal tensor about G, kg m²")?;
         let h = self.required("body.h", b.h, "pivot to G along the body z-axis, m")?;
         let g = self.required("body.g", b.g, "gravity, m/s²")?;
-        let info = ModelInfo::of_family(Family::Top)
-            .next()
-            .expect("the catalog has a top");
-        top(info, mass, &inertia, h, g).map_err(|e| {
+        // Both kinematics check the same parameters; building one is the check.
+        AnyModel::top(Kinematics::Quaternion, mass, &inertia, h, g).map_err(|e| {
             let key = match &e {
                 crate::generic::ModelError::Parameter(p) => format!("body.{}", p.field),
                 _ => "body.inertia".to_owned(),

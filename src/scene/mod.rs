@@ -23,10 +23,7 @@ pub use loads::{PendulumLoads, PlanarLoads, SceneLoads, SpatialLoads, TopLoads, 
 pub use select::{Selection, select_spatial};
 
 use crate::integrate::AdaptiveOptions;
-use crate::models::{
-    AnyModel, Family, Kinematics, ModelInfo, Pendulum, PlanarAtG, PlanarMidship, PlanarSpaceFixed,
-    TopEuler, TopQuaternion,
-};
+use crate::models::{AnyModel, Family, Pendulum, PlanarAtG, PlanarMidship, PlanarSpaceFixed};
 use crate::{InertiaTensor, PendulumParameters};
 use check::Checker;
 use file::SceneFile;
@@ -216,7 +213,14 @@ impl Scene {
                     g,
                 },
                 _,
-            ) => top(info, *mass, inertia, *h, *g).expect("checked when the scene was read"),
+            ) => AnyModel::top(
+                info.kinematics.expect("a top has a kinematics"),
+                *mass,
+                inertia,
+                *h,
+                *g,
+            )
+            .expect("checked when the scene was read"),
             (Body::Spatial { mass, inertia }, _) => AnyModel::spatial(
                 info.symmetry.expect("a spatial model has a symmetry class"),
                 info.kinematics.expect("a spatial model has a kinematics"),
@@ -237,20 +241,6 @@ impl Scene {
             .map(|s| s.to_lowercase())
             .collect()
     }
-}
-
-/// The top of a catalog entry, as a model chosen at run time.
-pub(super) fn top(
-    info: &ModelInfo,
-    mass: f64,
-    inertia: &InertiaTensor,
-    h: f64,
-    g: f64,
-) -> Result<AnyModel, crate::generic::ModelError> {
-    Ok(match info.kinematics {
-        Some(Kinematics::Euler) => TopEuler::new(mass, inertia, h, g)?.into(),
-        _ => TopQuaternion::new(mass, inertia, h, g)?.into(),
-    })
 }
 
 /// Reads scene text into its tables: a syntax error, an unknown key or a wrong type names the
