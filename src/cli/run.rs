@@ -243,10 +243,10 @@ struct Outcome {
     files: Vec<PathBuf>,
 }
 
-/// Runs one scene into `out`: trajectory, summary, plots. A run that stops early (a failure,
-/// a signal) still writes its summary and plots of the rows it wrote, then returns the error.
+/// Runs one scene into `out`, a folder already known to be writable: trajectory, summary,
+/// plots. A run that stops early (a failure, a signal) still writes its summary and plots of
+/// the rows it wrote, then returns the error.
 fn run_case(scene: &Scene, name: &str, out: &Path, progress: bool) -> Result<Outcome> {
-    writable_folder(out)?;
     let names = scene.state_names();
     // Potential and total energy columns where the model or the loads have a potential.
     let model_potential = scene.selection.info.potential_energy;
@@ -441,6 +441,7 @@ fn run_sweep(
                 bail!("not run: the sweep was interrupted");
             }
             let folder = out.join(format!("case-{:04}", case.index));
+            writable_folder(&folder)?;
             run_case(scene, name, &folder, false).map(|o| o.report)
         })
         .collect();
