@@ -27,6 +27,10 @@ use std::io::Write;
 use std::ops::{Add, Mul, Neg, Sub};
 use std::process::{Command, Stdio};
 
+#[path = "common/random.rs"]
+mod random;
+use random::Random;
+
 /// Each form computes φ̇ with at most seven roundings of ε/2 of the terms (q sin φ, r cos φ,
 /// their sum, 1/cos θ, two products, the sum with p): 3.5ε. Its four sines and cosines add an
 /// ulp each (ε relative at most) where the platform's are within an ulp of exact; the kernel's
@@ -173,23 +177,6 @@ fn euler_rates(p: f64, q: f64, r: f64, phi: f64, theta: f64) -> ([f64; 3], [f64;
     ]
     .map(Dd::to_f64);
     (rates, terms)
-}
-
-/// splitmix64.
-struct Random(u64);
-
-impl Random {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-
-    fn unit(&mut self) -> f64 {
-        (self.next() >> 11) as f64 / (1u64 << 53) as f64
-    }
 }
 
 /// The state's pitches: the one that showed the fault, and doubles 2e-12 to 1e-6 rad from

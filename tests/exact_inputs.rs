@@ -29,36 +29,14 @@ use std::path::Path;
 use std::process::Command;
 use std::sync::LazyLock;
 
+#[path = "common/random.rs"]
+mod random;
+use random::Random;
+
 /// Random doubles per path (each written three ways).
 const VALUES: usize = 100_000;
 /// Decimals at or next to a halfway point between two doubles, per path.
 const TIES: usize = 1_000;
-
-/// splitmix64: small, fast and the same on every machine.
-struct Random(u64);
-
-impl Random {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-
-    /// Uniform in [0, 1).
-    fn unit(&mut self) -> f64 {
-        (self.next() >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    fn below(&mut self, n: u64) -> u64 {
-        self.next() % n
-    }
-
-    fn sign(&mut self) -> f64 {
-        if self.next() & 1 == 0 { 1.0 } else { -1.0 }
-    }
-}
 
 /// Where a value comes from, for the report.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
