@@ -24,11 +24,14 @@ use eom::generic::{EulerState, RigidBody};
 use eom::models::{Model, SpatialFullEuler};
 use nalgebra::Vector3;
 use std::io::Write;
-use std::ops::{Add, Mul, Neg, Sub};
 use std::process::{Command, Stdio};
 
+#[path = "extremes/double_double.rs"]
+#[allow(dead_code)] // the 3×3 solve serves `extremes`, not this test
+mod double_double;
 #[path = "common/random.rs"]
 mod random;
+use double_double::Dd;
 use random::Random;
 
 /// Each form computes φ̇ with at most seven roundings of ε/2 of the terms (q sin φ, r cos φ,
@@ -39,88 +42,6 @@ use random::Random;
 /// times more accurate, and the printed value is the double itself (shortest round trip, read
 /// back exactly).
 const TOLERANCE: f64 = 16.0;
-
-/// A double-double: the unevaluated sum hi + lo with |lo| ≤ ulp(hi)/2, ~106 bits.
-#[derive(Debug, Clone, Copy)]
-struct Dd {
-    hi: f64,
-    lo: f64,
-}
-
-impl Dd {
-    fn new(x: f64) -> Self {
-        Self { hi: x, lo: 0.0 }
-    }
-
-    fn to_f64(self) -> f64 {
-        self.hi + self.lo
-    }
-
-    fn abs(self) -> Self {
-        if self.hi < 0.0 { -self } else { self }
-    }
-
-    /// 1/self by one Newton step on the double quotient.
-    fn recip(self) -> Self {
-        let q = 1.0 / self.hi;
-        // r = 1 − self·q, exact to dd; q + q·r.
-        let r = Dd::new(1.0) - self * Dd::new(q);
-        Dd::new(q) + Dd::new(q) * r
-    }
-}
-
-/// a + b = s + e exactly.
-fn two_sum(a: f64, b: f64) -> Dd {
-    let s = a + b;
-    let v = s - a;
-    let e = (a - (s - v)) + (b - v);
-    Dd { hi: s, lo: e }
-}
-
-/// a·b = p + e exactly (the fused multiply-add gives the product's rounding error).
-fn two_product(a: f64, b: f64) -> Dd {
-    let p = a * b;
-    Dd {
-        hi: p,
-        lo: a.mul_add(b, -p),
-    }
-}
-
-impl Add for Dd {
-    type Output = Dd;
-    fn add(self, other: Dd) -> Dd {
-        let s = two_sum(self.hi, other.hi);
-        let t = two_sum(self.lo, other.lo);
-        let hi = two_sum(s.hi, s.lo + t.hi);
-        two_sum(hi.hi, hi.lo + t.lo)
-    }
-}
-
-impl Neg for Dd {
-    type Output = Dd;
-    fn neg(self) -> Dd {
-        Dd {
-            hi: -self.hi,
-            lo: -self.lo,
-        }
-    }
-}
-
-impl Sub for Dd {
-    type Output = Dd;
-    fn sub(self, other: Dd) -> Dd {
-        self + -other
-    }
-}
-
-impl Mul for Dd {
-    type Output = Dd;
-    fn mul(self, other: Dd) -> Dd {
-        let p = two_product(self.hi, other.hi);
-        let cross = self.hi * other.lo + self.lo * other.hi;
-        two_sum(p.hi, p.lo + cross)
-    }
-}
 
 /// π/2 as three doubles, 160 bits (the sum is π/2 to ~1e-49).
 const HALF_PI: [f64; 3] = [
@@ -136,15 +57,16 @@ fn sin_cos(x: f64) -> (Dd, Dd) {
     let k = (x / HALF_PI[0]).round();
     assert!(k.abs() <= 2.0, "small angles only");
     // k·HALF_PI[i] is exact for |k| ≤ 2.
-    let t = two_sum(x, -k * HALF_PI[0]) - Dd::new(k * HALF_PI[1]) - Dd::new(k * HALF_PI[2]);
+    let t =
+        Dd::new(x) - Dd::new(k * HALF_PI[0]) - Dd::new(k * HALF_PI[1]) - Dd::new(k * HALF_PI[2]);
     let t2 = t * t;
     // sin t = t − t³/3! + …, cos t = 1 − t²/2! + …, to below 1e-33 of the leading term.
     let (mut sin, mut cos) = (t, Dd::new(1.0));
     let (mut s_term, mut c_term) = (t, Dd::new(1.0));
     for n in 1..30 {
         let n = n as f64;
-        s_term = -(s_term * t2) * Dd::new((2.0 * n) * (2.0 * n + 1.0)).recip();
-        c_term = -(c_term * t2) * Dd::new((2.0 * n - 1.0) * (2.0 * n)).recip();
+        s_term = -(s_term * t2) / Dd::new((2.0 * n) * (2.0 * n + 1.0));
+        c_term = -(c_term * t2) / Dd::new((2.0 * n - 1.0) * (2.0 * n));
         sin = sin + s_term;
         cos = cos + c_term;
     }
@@ -161,7 +83,7 @@ fn sin_cos(x: f64) -> (Dd, Dd) {
 fn euler_rates(p: f64, q: f64, r: f64, phi: f64, theta: f64) -> ([f64; 3], [f64; 3]) {
     let ((s_phi, c_phi), (s_theta, c_theta)) = (sin_cos(phi), sin_cos(theta));
     let (p, q, r) = (Dd::new(p), Dd::new(q), Dd::new(r));
-    let sec = c_theta.recip();
+    let sec = Dd::new(1.0) / c_theta;
     let lateral = q * s_phi + r * c_phi;
     let rates = [
         p + lateral * s_theta * sec,

@@ -47,6 +47,12 @@ impl Dd {
     pub fn to_f64(self) -> f64 {
         self.hi + self.lo
     }
+
+    /// |self|, exactly.
+    #[allow(dead_code)] // used by eval_near_vertical.rs, which includes this file by path
+    pub fn abs(self) -> Self {
+        if self.hi < 0.0 { -self } else { self }
+    }
 }
 
 impl From<f64> for Dd {
