@@ -9,6 +9,10 @@ use num_dual::Dual64;
 use simba::simd::{SimdComplexField, WideF64x4};
 use std::f64::consts::FRAC_PI_2;
 
+#[path = "support/uniform.rs"]
+mod uniform;
+use uniform::uniform;
+
 /// The kernel on one angle.
 fn sin_cos<T: simba::simd::SimdRealField + Copy>(x: T) -> (T, T) {
     let [pair] = eom_kernel::sin_cos([x]);
@@ -29,18 +33,6 @@ fn error_in_ulps(x: f64) -> f64 {
     let (s, c) = sin_cos(x);
     let (s0, c0) = x.sin_cos();
     ((s - s0).abs() / ulp(s0)).max((c - c0).abs() / ulp(c0))
-}
-
-/// A fixed sequence of uniform numbers in [0, 1) (xorshift64), so every run checks the same
-/// points.
-fn uniform(count: usize, seed: u64) -> impl Iterator<Item = f64> {
-    let mut state = seed;
-    (0..count).map(move |_| {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        (state >> 11) as f64 / (1u64 << 53) as f64
-    })
 }
 
 fn worst(points: impl Iterator<Item = f64>) -> (f64, f64) {

@@ -10,25 +10,16 @@ const LIMIT: f32 = 823_549.0;
 
 #[path = "support/f32_ulps.rs"]
 mod f32_ulps;
+#[path = "support/uniform.rs"]
+mod uniform;
 use f32_ulps::{error_in_ulps, sin_cos};
+use uniform::uniform;
 
 /// The worst error over `points` and where it is.
 fn worst(points: impl Iterator<Item = f32>) -> (u32, f32) {
     points
         .map(|x| (error_in_ulps(x), x))
         .fold((0, f32::NAN), |a, b| if b.0 > a.0 { b } else { a })
-}
-
-/// A fixed sequence of uniform numbers in [0, 1) (xorshift64), so every run checks the same
-/// points.
-fn uniform(count: usize, seed: u64) -> impl Iterator<Item = f64> {
-    let mut state = seed;
-    (0..count).map(move |_| {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        (state >> 11) as f64 / (1u64 << 53) as f64
-    })
 }
 
 /// Every 499th f32 of either sign up to 2π (two quadrants each way, 4.4 million angles), from
