@@ -2,38 +2,11 @@
 //! derivative printed as JSON, and a clear error (never a panic) for every bad input.
 
 use serde_json::Value;
-use std::io::Write;
-use std::process::{Command, Stdio};
+use std::process::Command;
 
-struct Run {
-    ok: bool,
-    stdout: String,
-    stderr: String,
-}
-
-fn eval(args: &[&str], input: &str) -> Run {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_eom"))
-        .arg("eval")
-        .args(args)
-        .args(["--input", "-"])
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("the eom binary runs");
-    child
-        .stdin
-        .take()
-        .unwrap()
-        .write_all(input.as_bytes())
-        .unwrap();
-    let out = child.wait_with_output().unwrap();
-    Run {
-        ok: out.status.success(),
-        stdout: String::from_utf8(out.stdout).unwrap(),
-        stderr: String::from_utf8(out.stderr).unwrap(),
-    }
-}
+#[path = "common/eom_eval.rs"]
+mod eom_eval;
+use eom_eval::{Run, eval};
 
 /// The `generic` object of a successful run, as (key, value) pairs in printed order.
 fn generic(run: &Run) -> Vec<(String, f64)> {

@@ -23,12 +23,12 @@ use eom::InertiaTensor;
 use eom::generic::{EulerState, RigidBody};
 use eom::models::{Model, SpatialFullEuler};
 use nalgebra::Vector3;
-use std::io::Write;
-use std::process::{Command, Stdio};
 
 #[path = "extremes/double_double.rs"]
 #[allow(dead_code)] // the 3×3 solve serves `extremes`, not this test
 mod double_double;
+#[path = "common/eom_eval.rs"]
+mod eom_eval;
 #[path = "common/random.rs"]
 mod random;
 use double_double::Dd;
@@ -134,34 +134,9 @@ fn eval(rates: [f64; 3], angles: [f64; 3], long: bool) -> [[f64; 3]; 2] {
             "phi": {phi}, "theta": {theta}, "psi": {psi}}},
   "force": [1.0, 0.0, 0.0], "moment": [0.0, 0.5, 0.0]}}"#
     );
-    let mut child = Command::new(env!("CARGO_BIN_EXE_eom"))
-        .args([
-            "eval",
-            "--model",
-            "spatial",
-            "--kinematics",
-            "euler",
-            "--input",
-            "-",
-        ])
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("the eom binary runs");
-    child
-        .stdin
-        .take()
-        .unwrap()
-        .write_all(input.as_bytes())
-        .unwrap();
-    let output = child.wait_with_output().unwrap();
-    assert!(
-        output.status.success(),
-        "{input}: {}",
-        String::from_utf8_lossy(&output.stderr)
-    );
-    let printed: serde_json::Value = serde_json::from_slice(&output.stdout).unwrap();
+    let run = eom_eval::eval(&["--model", "spatial", "--kinematics", "euler"], &input);
+    assert!(run.ok, "{input}: {}", run.stderr);
+    let printed: serde_json::Value = serde_json::from_str(&run.stdout).unwrap();
     ["generated", "generic"].map(|form| {
         ["phi_dot", "theta_dot", "psi_dot"].map(|key| printed[form][key].as_f64().unwrap())
     })
