@@ -16,7 +16,7 @@ mod writer;
 
 pub use program::{Operations, Program, identifier};
 
-use crate::model::{BuildError, Model, Strategy};
+use crate::model::{BuildError, Model, Strategy, System};
 use std::path::{Path, PathBuf};
 use thiserror::Error;
 
@@ -114,11 +114,45 @@ pub fn generate(model: Model) -> Result<Generated, EmitError> {
         parameters: system
             .parameters
             .iter()
-            .map(|p| identifier(p.symbol))
+            .map(|p| identifier(&p.symbol))
             .collect(),
         potential_energy: system.potential_energy.is_some(),
         strategy,
         operations,
+        source,
+    })
+}
+
+/// Builds a system that is not in the catalog (a ship of a scene's own hydrodynamic table)
+/// into its program, and proves the program equal to the system, as [`generate`] does for
+/// the catalog: what `eom` evaluates where the system is known only at run time.
+pub fn prove(system: &System) -> Result<Program, EmitError> {
+    let program = Program::build(system);
+    fold::verify(system, &program)?;
+    Ok(program)
+}
+
+/// The Rust source of a system that is not in the catalog, after [`prove`]: for a user's
+/// `build.rs` that wants a ship of its own table compiled.
+///
+/// ```
+/// use eom_codegen::model::ship::{Force, ShipSpec, Term, Units, YawInertia, ship};
+/// let spec = ShipSpec {
+///     units: Units::Dimensional,
+///     yaw_inertia: YawInertia::AboutG,
+///     terms: vec![
+///         Term { force: Force::Y, powers: [0, 1, 0, 0] },
+///         Term { force: Force::N, powers: [0, 0, 1, 0] },
+///     ],
+/// };
+/// let source = eom_codegen::emit::system_source(&ship("two_term_ship", &spec).unwrap()).unwrap();
+/// assert!(source.contains("pub y_v: f64") && source.contains("pub n_r: f64"));
+/// assert!(!source.contains("y_vvv"));
+/// ```
+pub fn system_source(system: &System) -> Result<String, EmitError> {
+    let program = prove(system)?;
+    rust::source(system, &program, "Expanded").map_err(|source| EmitError::Syntax {
+        model: system.name.clone(),
         source,
     })
 }

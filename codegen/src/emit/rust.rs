@@ -105,7 +105,7 @@ fn file_tokens(
 
 fn parameters_struct(system: &System) -> TokenStream {
     let fields = system.parameters.iter().map(|p| {
-        let name = ident(&identifier(p.symbol));
+        let name = ident(&identifier(&p.symbol));
         let doc = format!(" The {} (symbol `{}`).", p.doc, p.symbol);
         quote! { #[doc = #doc] pub #name: f64, }
     });
@@ -130,9 +130,9 @@ fn coefficients_struct(system: &System, program: &Program) -> TokenStream {
     let bindings = system
         .parameters
         .iter()
-        .filter(|p| read.contains(p.symbol))
+        .filter(|p| read.contains(&*p.symbol))
         .map(|p| {
-            let name = ident(&identifier(p.symbol));
+            let name = ident(&identifier(&p.symbol));
             quote! { let #name = parameters.#name; }
         });
     let reciprocals = system

@@ -12,14 +12,15 @@ use crate::derivation::quaternion::{
 };
 use crate::derivation::{pendulum as pendulum_eq, planar, spatial as spatial_eq, top as top_eq};
 use crate::symbolic::{Expr, SymbolicError, Vec3};
+use std::borrow::Cow;
 
 const MASS: Parameter = Parameter {
-    symbol: "M",
-    doc: "mass M",
+    symbol: Cow::Borrowed("M"),
+    doc: Cow::Borrowed("mass M"),
 };
 const IZZ: Parameter = Parameter {
-    symbol: "Izz",
-    doc: "moment of inertia I_zz about G (4.13)",
+    symbol: Cow::Borrowed("Izz"),
+    doc: Cow::Borrowed("moment of inertia I_zz about G (4.13)"),
 };
 
 fn symbolic(model: &str) -> impl Fn(SymbolicError) -> BuildError + '_ {
@@ -68,17 +69,17 @@ pub fn pendulum() -> Result<System, BuildError> {
         equations: vec!["4.24"],
         parameters: vec![
             Parameter {
-                symbol: "I0",
-                doc: "moment of inertia I₀ about the pivot",
+                symbol: Cow::Borrowed("I0"),
+                doc: Cow::Borrowed("moment of inertia I₀ about the pivot"),
             },
             MASS,
             Parameter {
-                symbol: "g",
-                doc: "gravitational acceleration g",
+                symbol: Cow::Borrowed("g"),
+                doc: Cow::Borrowed("gravitational acceleration g"),
             },
             Parameter {
-                symbol: "h",
-                doc: "distance h from the pivot to G",
+                symbol: Cow::Borrowed("h"),
+                doc: Cow::Borrowed("distance h from the pivot to G"),
             },
         ],
         reciprocals: vec![],
@@ -199,8 +200,8 @@ pub fn planar_midship() -> Result<System, BuildError> {
     let at_g = planar::residuals_at_g().map_err(symbolic(name))?;
     let residuals = planar::residuals_at_midship(&at_g).map_err(symbolic(name))?;
     let x_g = Parameter {
-        symbol: "x_G",
-        doc: "x_G, the position of G ahead of midship (4.45)",
+        symbol: Cow::Borrowed("x_G"),
+        doc: Cow::Borrowed("x_G, the position of G ahead of midship (4.45)"),
     };
     let [u, v, r] = ["u", "v", "r"].map(Expr::symbol);
     // 4.45: G moves with the midship velocity plus ω × r_G = (0, x_G r, 0).
@@ -261,33 +262,33 @@ fn inertia_parameters(symmetry: Symmetry) -> Vec<Parameter> {
     let mut parameters = vec![
         MASS,
         Parameter {
-            symbol: "Ixx",
-            doc: "moment of inertia I_xx about G (4.13)",
+            symbol: Cow::Borrowed("Ixx"),
+            doc: Cow::Borrowed("moment of inertia I_xx about G (4.13)"),
         },
         Parameter {
-            symbol: "Iyy",
-            doc: "moment of inertia I_yy about G (4.13)",
+            symbol: Cow::Borrowed("Iyy"),
+            doc: Cow::Borrowed("moment of inertia I_yy about G (4.13)"),
         },
         IZZ,
     ];
     let products = [
         Parameter {
-            symbol: "Ixy",
-            doc: "product of inertia I_xy = −∫xy dm (4.14)",
+            symbol: Cow::Borrowed("Ixy"),
+            doc: Cow::Borrowed("product of inertia I_xy = −∫xy dm (4.14)"),
         },
         Parameter {
-            symbol: "Iyz",
-            doc: "product of inertia I_yz = −∫yz dm (4.14)",
+            symbol: Cow::Borrowed("Iyz"),
+            doc: Cow::Borrowed("product of inertia I_yz = −∫yz dm (4.14)"),
         },
         Parameter {
-            symbol: "Ixz",
-            doc: "product of inertia I_xz = −∫zx dm (4.14)",
+            symbol: Cow::Borrowed("Ixz"),
+            doc: Cow::Borrowed("product of inertia I_xz = −∫zx dm (4.14)"),
         },
     ];
     parameters.extend(
         products
             .into_iter()
-            .filter(|p| !symmetry.pruned().contains(&p.symbol)),
+            .filter(|p| !symmetry.pruned().contains(&&*p.symbol)),
     );
     parameters
 }
@@ -550,25 +551,27 @@ fn top_parameters() -> Vec<Parameter> {
     vec![
         MASS,
         Parameter {
-            symbol: "Ixx",
-            doc: "principal moment of inertia I_xx about G (4.13)",
+            symbol: Cow::Borrowed("Ixx"),
+            doc: Cow::Borrowed("principal moment of inertia I_xx about G (4.13)"),
         },
         Parameter {
-            symbol: "Iyy",
-            doc: "principal moment of inertia I_yy about G (4.13)",
+            symbol: Cow::Borrowed("Iyy"),
+            doc: Cow::Borrowed("principal moment of inertia I_yy about G (4.13)"),
         },
         Parameter {
-            symbol: "Izz",
-            doc: "principal moment of inertia I_zz about G, about the body z-axis through the \
+            symbol: Cow::Borrowed("Izz"),
+            doc: Cow::Borrowed(
+                "principal moment of inertia I_zz about G, about the body z-axis through the \
                   pivot and G (4.13)",
+            ),
         },
         Parameter {
-            symbol: "h",
-            doc: "distance h from the pivot to G along the body z-axis",
+            symbol: Cow::Borrowed("h"),
+            doc: Cow::Borrowed("distance h from the pivot to G along the body z-axis"),
         },
         Parameter {
-            symbol: "g",
-            doc: "gravitational acceleration g, along −Z in space axes",
+            symbol: Cow::Borrowed("g"),
+            doc: Cow::Borrowed("gravitational acceleration g, along −Z in space axes"),
         },
     ]
 }

@@ -6,6 +6,7 @@
 //! back to the proved form.
 
 mod families;
+pub mod ship;
 mod solve;
 mod system;
 

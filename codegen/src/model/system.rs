@@ -2,6 +2,7 @@
 //! and one output per state (its time derivative), all as canonical expressions.
 
 use crate::symbolic::{Expr, SymbolicError};
+use std::borrow::Cow;
 use thiserror::Error;
 
 /// Why a model could not be built or verified.
@@ -42,9 +43,9 @@ pub struct Reciprocal {
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Parameter {
     /// The symbol used in the equations (`Ixx`, `M`, `x_G`).
-    pub symbol: &'static str,
+    pub symbol: Cow<'static, str>,
     /// What it is, for the generated doc comment.
-    pub doc: &'static str,
+    pub doc: Cow<'static, str>,
 }
 
 /// A named intermediate computed at every call, before the outputs.

@@ -1,0 +1,417 @@
+//! Ship manoeuvring: 4.46 at midship with the hydrodynamic forces a scene lists.
+//!
+//! The chapter writes the planar equations at midship (4.46) for exactly this use, "with the
+//! fluid forces measured in model tests about midship". The forces are a polynomial in
+//! (u, v, r, δ) with one coefficient per term the scene gives, and nothing else: a table of
+//! eight terms emits eight products, a table of forty emits forty ("model only what a scene
+//! requires"). The added mass enters on the left, so the mass matrix is
+//!
+//! ```text
+//! [[M − X_u̇,  0,           0                    ],
+//!  [0,        M − Y_v̇,     M x_G − Y_ṙ          ],
+//!  [0,        M x_G − N_v̇, I_zz + M x_G² − N_ṙ  ]]
+//! ```
+//!
+//! with I_zz about G (4.46), or `I_O − M x_G²` substituted where the scene gives the yaw inertia
+//! about midship. It depends on parameters only, so it is inverted once per parameter set
+//! (adjugate over determinant, as every other model). The rigid-body terms of 4.46 (M v r,
+//! M x_G r², M u r, M x_G u r) are written by the derivation; a table that folds them into
+//! its coefficients is converted before it reaches this module.
+//!
+//! Two unit systems are accepted, each read exactly as the table gives it:
+//! - dimensional: a term `Y_vvr` contributes `Y_vvr v² r` newtons;
+//! - the prime system (forces over ½ρU²L², moments over ½ρU²L³, mass over ½ρL³, I_zz over
+//!   ½ρL⁵, lengths over L, u and v over U, r over U/L, the surge variable the perturbation
+//!   (u − U₀)/U, with U = √(u² + v²) the instantaneous speed): a term contributes
+//!   `½ρL²U² · Y'_vvr (v/U)² (rL/U)`. The scaling is part of the derivation, so the proof
+//!   covers it; the one quantity that is not a polynomial, U, is an input the caller computes.
+
+use super::solve::solve_linear;
+use super::system::{BuildError, CoefficientName, Group, Parameter, System};
+use crate::derivation::energy::rigid_body_kinetic_energy;
+use crate::derivation::kinematics::rotation_z;
+use crate::derivation::planar;
+use crate::symbolic::{Expr, Rational, SymbolicError, Vec3};
+use std::borrow::Cow;
+use std::fmt;
+
+/// Which of the three planar loads a term belongs to.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Force {
+    /// The surge force X.
+    X,
+    /// The sway force Y.
+    Y,
+    /// The yaw moment N.
+    N,
+}
+
+impl Force {
+    /// The three, in the order of 4.46's equations.
+    pub const ALL: [Force; 3] = [Force::X, Force::Y, Force::N];
+
+    /// `X`, `Y` or `N`.
+    pub fn letter(self) -> char {
+        match self {
+            Force::X => 'X',
+            Force::Y => 'Y',
+            Force::N => 'N',
+        }
+    }
+}
+
+/// The variables of the force polynomial, in the order of their powers in [`Term::powers`].
+pub const VARIABLES: [char; 4] = ['u', 'v', 'r', 'd'];
+
+/// One term of the hydrodynamic polynomial: `coefficient · u^a v^b r^c δ^d`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct Term {
+    /// The load it adds to.
+    pub force: Force,
+    /// The powers of u, v, r and δ; all zero for a constant (bias) term.
+    pub powers: [u8; 4],
+}
+
+impl Term {
+    /// The coefficient's symbol: the load then the variables, one letter per power, in the
+    /// order u, v, r, d (`Y_vvr`, `X_uu`, `N_d`), or `_0` for a constant (`Y_0`).
+    pub fn symbol(&self) -> String {
+        let letters: String = VARIABLES
+            .iter()
+            .zip(self.powers)
+            .flat_map(|(letter, power)| std::iter::repeat_n(*letter, power as usize))
+            .collect();
+        let letters = if letters.is_empty() {
+            "0".into()
+        } else {
+            letters
+        };
+        format!("{}_{letters}", self.force.letter())
+    }
+
+    /// The total power of u, v and r: the speed-like variables the prime system scales by U.
+    fn kinematic_degree(&self) -> i32 {
+        i32::from(self.powers[0]) + i32::from(self.powers[1]) + i32::from(self.powers[2])
+    }
+}
+
+impl fmt::Display for Term {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.symbol())
+    }
+}
+
+/// The added-mass derivatives on the left of 4.46, by their symbols.
+pub const ADDED_MASS: [&str; 5] = ["X_udot", "Y_vdot", "Y_rdot", "N_vdot", "N_rdot"];
+
+/// The units a table's numbers are in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Units {
+    /// SI: newtons, newton metres, kilograms, metres, seconds, radians.
+    Dimensional,
+    /// The prime system (see the module docs).
+    Prime,
+}
+
+/// About which point the scene gives the yaw moment of inertia.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum YawInertia {
+    /// I_zz about G, as 4.46 writes it.
+    AboutG,
+    /// I_O about midship, the origin: I_zz = I_O − M x_G² (4.45's parallel axes).
+    AboutMidship,
+}
+
+/// What a ship model is made of.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ShipSpec {
+    /// The units of every parameter.
+    pub units: Units,
+    /// Which yaw inertia the parameters give.
+    pub yaw_inertia: YawInertia,
+    /// The polynomial's terms, each once.
+    pub terms: Vec<Term>,
+}
+
+/// The state of every ship model: 4.46's velocities, 4.44's track and heading, the rudder.
+pub const STATE: [&str; 7] = ["u", "v", "r", "X", "Y", "psi", "delta"];
+
+impl ShipSpec {
+    /// The parameters, in order: the body's, the added mass, the prime system's scales (in
+    /// the prime system), then one coefficient per term.
+    pub fn parameters(&self) -> Vec<Parameter> {
+        let prime = self.units == Units::Prime;
+        let unit = |dimensional: &'static str, primed: &'static str| match self.units {
+            Units::Dimensional => dimensional,
+            Units::Prime => primed,
+        };
+        let mut parameters = vec![
+            parameter(self.mass(), unit("mass M", "mass m′ = M/(½ρL³)")),
+            parameter(
+                self.inertia(),
+                match (self.yaw_inertia, prime) {
+                    (YawInertia::AboutG, false) => "yaw inertia I_zz about G",
+                    (YawInertia::AboutMidship, false) => "yaw inertia I_O about midship",
+                    (YawInertia::AboutG, true) => "yaw inertia I_zz′ about G, over ½ρL⁵",
+                    (YawInertia::AboutMidship, true) => "yaw inertia I_O′ about midship, over ½ρL⁵",
+                },
+            ),
+            parameter(
+                self.centre(),
+                unit(
+                    "x_G, the position of G ahead of midship (4.45)",
+                    "x_G′ = x_G/L, G ahead of midship",
+                ),
+            ),
+        ];
+        for symbol in ADDED_MASS {
+            parameters.push(Parameter {
+                symbol: Cow::Borrowed(symbol),
+                doc: Cow::Borrowed(unit(
+                    "added-mass derivative",
+                    "added-mass derivative, prime",
+                )),
+            });
+        }
+        if prime {
+            parameters.push(parameter("rho", "water density ρ"));
+            parameters.push(parameter(
+                "L",
+                "length L, the prime system's unit of length",
+            ));
+            parameters.push(parameter(
+                "U0",
+                "the design speed U₀ of the surge perturbation",
+            ));
+        }
+        for term in &self.terms {
+            parameters.push(Parameter {
+                symbol: Cow::Owned(term.symbol()),
+                doc: Cow::Borrowed(unit(
+                    "hydrodynamic derivative",
+                    "hydrodynamic derivative, prime",
+                )),
+            });
+        }
+        parameters
+    }
+
+    /// The inputs: the rudder rate, and in the prime system the speed U.
+    pub fn inputs(&self) -> Vec<&'static str> {
+        match self.units {
+            Units::Dimensional => vec!["delta_rate"],
+            Units::Prime => vec!["delta_rate", "U"],
+        }
+    }
+
+    fn mass(&self) -> &'static str {
+        match self.units {
+            Units::Dimensional => "M",
+            Units::Prime => "mass_prime",
+        }
+    }
+
+    fn inertia(&self) -> &'static str {
+        match (self.units, self.yaw_inertia) {
+            (Units::Dimensional, YawInertia::AboutG) => "Izz",
+            (Units::Dimensional, YawInertia::AboutMidship) => "Izz_midship",
+            (Units::Prime, YawInertia::AboutG) => "izz_prime",
+            (Units::Prime, YawInertia::AboutMidship) => "izz_midship_prime",
+        }
+    }
+
+    fn centre(&self) -> &'static str {
+        match self.units {
+            Units::Dimensional => "x_G",
+            Units::Prime => "x_g_prime",
+        }
+    }
+
+    /// ½ρLⁿ in the prime system, 1 in SI: what turns a prime quantity of length dimension n
+    /// (mass 3, yaw inertia 5, a force coefficient 2 + the power of r) into SI.
+    fn scale(&self, length_power: i32) -> Result<Expr, SymbolicError> {
+        match self.units {
+            Units::Dimensional => Ok(Expr::int(1)),
+            Units::Prime => {
+                let half = Expr::constant(Rational::new(1.into(), 2.into()));
+                Ok(&(&half * &Expr::symbol("rho")) * &Expr::symbol("L").pow(length_power)?)
+            }
+        }
+    }
+
+    /// The SI values of the body's parameters, as expressions in this spec's parameters:
+    /// M, I_zz about G, x_G.
+    fn rigid_body(&self) -> Result<[(&'static str, Expr); 3], SymbolicError> {
+        let mass = &self.scale(3)? * &Expr::symbol(self.mass());
+        let x_g = match self.units {
+            Units::Dimensional => Expr::symbol("x_G"),
+            Units::Prime => &Expr::symbol("L") * &Expr::symbol("x_g_prime"),
+        };
+        let given = &self.scale(5)? * &Expr::symbol(self.inertia());
+        let izz = match self.yaw_inertia {
+            YawInertia::AboutG => given,
+            YawInertia::AboutMidship => &given - &(&mass * &x_g.pow(2)?),
+        };
+        Ok([("M", mass), ("Izz", izz), ("x_G", x_g)])
+    }
+
+    /// One load of the polynomial, in SI, as an expression in the state, U and the
+    /// parameters.
+    pub fn force(&self, force: Force) -> Result<Expr, SymbolicError> {
+        let moment_length = i32::from(force == Force::N);
+        let mut sum = Expr::zero();
+        for term in self.terms.iter().filter(|t| t.force == force) {
+            let [a, b, c, d] = term.powers.map(i32::from);
+            let coefficient = Expr::symbol(&term.symbol());
+            let value = match self.units {
+                Units::Dimensional => {
+                    let [u, v, r, delta] = ["u", "v", "r", "delta"].map(Expr::symbol);
+                    &(&u.pow(a)? * &v.pow(b)?) * &(&r.pow(c)? * &delta.pow(d)?)
+                }
+                Units::Prime => {
+                    // ½ρL²U² · (Δu/U)^a (v/U)^b (rL/U)^c δ^d, times L for a moment.
+                    let surge = Expr::symbol("u") - Expr::symbol("U0");
+                    let speed = Expr::symbol("U").pow(2 - term.kinematic_degree())?;
+                    let variables = &(&surge.pow(a)? * &Expr::symbol("v").pow(b)?)
+                        * &(&Expr::symbol("r").pow(c)? * &Expr::symbol("delta").pow(d)?);
+                    &(&self.scale(2 + c + moment_length)? * &speed) * &variables
+                }
+            };
+            sum = &sum + &(&coefficient * &value);
+        }
+        Ok(sum)
+    }
+
+    /// The added-mass loads, X_u̇ u̇, Y_v̇ v̇ + Y_ṙ ṙ and N_v̇ v̇ + N_ṙ ṙ, in SI.
+    fn added_mass(&self, force: Force) -> Result<Expr, SymbolicError> {
+        let term = |symbol: &str, rate: &str, length_power: i32| -> Result<Expr, SymbolicError> {
+            Ok(&(&self.scale(length_power)? * &Expr::symbol(symbol)) * &Expr::symbol(rate))
+        };
+        match force {
+            Force::X => term("X_udot", "u_dot", 3),
+            Force::Y => Ok(&term("Y_vdot", "v_dot", 3)? + &term("Y_rdot", "r_dot", 4)?),
+            Force::N => Ok(&term("N_vdot", "v_dot", 4)? + &term("N_rdot", "r_dot", 5)?),
+        }
+    }
+
+    /// The residuals of 4.46 (left − right) with the loads the hydrodynamic polynomial plus
+    /// the added mass, in this spec's parameters.
+    pub fn residuals(&self) -> Result<[Expr; 3], SymbolicError> {
+        let at_g = planar::residuals_at_g()?;
+        let at_midship = planar::residuals_at_midship(&at_g)?;
+        let mut loads = Vec::new();
+        for (force, symbol) in Force::ALL.iter().zip(["F_x", "F_y", "M_z"]) {
+            loads.push((symbol, &self.force(*force)? + &self.added_mass(*force)?));
+        }
+        let rigid = self.rigid_body()?;
+        let mut residuals = Vec::new();
+        for residual in at_midship {
+            residuals.push(residual.subs_all(&loads)?.subs_all(&rigid)?);
+        }
+        Ok(residuals.try_into().expect("4.46 has three equations"))
+    }
+
+    /// T = ½M(u² + (v + x_G r)²) + ½I_zz r²: the rigid body's kinetic energy (4.32), the
+    /// fluid's left out.
+    fn kinetic_energy(&self) -> Result<Expr, SymbolicError> {
+        let [u, v, r] = ["u", "v", "r"].map(Expr::symbol);
+        let in_plane = [
+            ("w", Expr::zero()),
+            ("p", Expr::zero()),
+            ("q", Expr::zero()),
+            ("u", u),
+            ("v", &v + &(&Expr::symbol("x_G") * &r)),
+            ("r", r),
+        ];
+        rigid_body_kinetic_energy()?
+            .subs_all(&in_plane)?
+            .subs_all(&self.rigid_body()?)
+    }
+}
+
+fn parameter(symbol: &'static str, doc: &'static str) -> Parameter {
+    Parameter {
+        symbol: Cow::Borrowed(symbol),
+        doc: Cow::Borrowed(doc),
+    }
+}
+
+/// The ship model of a spec: 4.46 with its forces, solved for (u̇, v̇, ṙ) with the constant
+/// mass matrix inverted once, the track 4.44, the heading, and the rudder angle driven by the
+/// input `delta_rate`.
+pub fn ship(name: &str, spec: &ShipSpec) -> Result<System, BuildError> {
+    let symbolic = |source| BuildError::Symbolic {
+        model: name.into(),
+        source,
+    };
+    let mut seen = std::collections::BTreeSet::new();
+    if let Some(twice) = spec.terms.iter().find(|t| !seen.insert(**t)) {
+        return Err(BuildError::Verification {
+            model: name.into(),
+            what: format!("the term {twice} is listed twice"),
+            residual: twice.symbol(),
+        });
+    }
+    let residuals = spec.residuals().map_err(symbolic)?;
+    let solution = solve_linear(name, &residuals, &["u_dot", "v_dot", "r_dot"], "inv_det")?;
+    let mut outputs = solution.accelerations(&solution.rest);
+    let velocity = Vec3::new(Expr::symbol("u"), Expr::symbol("v"), Expr::zero());
+    let [x_rate, y_rate, _] = rotation_z("psi").mul_vec(&velocity).0;
+    outputs.extend([
+        x_rate,
+        y_rate,
+        Expr::symbol("r"),
+        Expr::symbol("delta_rate"),
+    ]);
+    let coefficient_names = inverse_names(&solution.inverse);
+    Ok(System {
+        name: name.into(),
+        title: "Ship manoeuvring at midship: 4.46 with hydrodynamic forces".into(),
+        equations: vec!["4.45", "4.46", "4.44"],
+        parameters: spec.parameters(),
+        reciprocals: solution.reciprocals.clone(),
+        state: STATE.to_vec(),
+        inputs: spec.inputs(),
+        stages: vec![],
+        outputs,
+        groups: vec![
+            Group {
+                first: 0,
+                comment: "4.46 with the added mass and the hydrodynamic polynomial: surge, \
+                          sway and yaw at midship"
+                    .into(),
+            },
+            Group {
+                first: 3,
+                comment: "4.44: the track of midship in space-fixed axes, and the heading".into(),
+            },
+            Group {
+                first: 6,
+                comment: "the rudder angle, at the rate its servo gives".into(),
+            },
+        ],
+        kinetic_energy: Some(spec.kinetic_energy().map_err(symbolic)?),
+        energy_formula: Some("T = ½M(u² + (v + x_G r)²) + ½I_zz r², the rigid body's"),
+        potential_energy: None,
+        potential_formula: None,
+        coefficient_names,
+    })
+}
+
+fn inverse_names(inverse: &[Vec<Expr>]) -> Vec<CoefficientName> {
+    let axes = ["u", "v", "r"];
+    let mut names = Vec::new();
+    for (i, row) in inverse.iter().enumerate() {
+        for (j, value) in row.iter().enumerate().filter(|(_, v)| !v.is_zero()) {
+            names.push(CoefficientName {
+                value: value.clone(),
+                name: format!("inv_mass_matrix_{}{}", axes[i], axes[j]),
+                description: format!(
+                    "The entry `(M_A⁻¹)_{}{}` of the inverse mass matrix with added mass",
+                    axes[i], axes[j]
+                ),
+            });
+        }
+    }
+    names
+}

@@ -1,0 +1,156 @@
+//! The ship model: 4.46 with the added mass and the hydrodynamic polynomial of a table.
+
+use eom_codegen::emit::{prove, system_source};
+use eom_codegen::model::ship::{Force, ShipSpec, Term, Units, YawInertia, ship};
+use eom_codegen::symbolic::{Expr, parse};
+
+fn term(force: Force, powers: [u8; 4]) -> Term {
+    Term { force, powers }
+}
+
+/// The Mariner's terms (Chislett & Strøm-Tejsen), each load's polynomial as published.
+fn mariner_terms() -> Vec<Term> {
+    use Force::{N, X, Y};
+    let mut terms = vec![
+        term(X, [1, 0, 0, 0]),
+        term(X, [2, 0, 0, 0]),
+        term(X, [3, 0, 0, 0]),
+        term(X, [0, 2, 0, 0]),
+        term(X, [0, 0, 2, 0]),
+        term(X, [0, 0, 0, 2]),
+        term(X, [1, 0, 0, 2]),
+        term(X, [0, 1, 1, 0]),
+        term(X, [0, 1, 0, 1]),
+        term(X, [1, 1, 0, 1]),
+    ];
+    for force in [Y, N] {
+        for powers in [
+            [0, 1, 0, 0],
+            [0, 0, 1, 0],
+            [0, 3, 0, 0],
+            [0, 2, 1, 0],
+            [1, 1, 0, 0],
+            [1, 0, 1, 0],
+            [0, 0, 0, 1],
+            [0, 0, 0, 3],
+            [1, 0, 0, 1],
+            [2, 0, 0, 1],
+            [0, 1, 0, 2],
+            [0, 2, 0, 1],
+            [0, 0, 0, 0],
+            [1, 0, 0, 0],
+            [2, 0, 0, 0],
+        ] {
+            terms.push(term(force, powers));
+        }
+    }
+    terms
+}
+
+#[test]
+fn a_term_is_named_by_its_load_and_its_variables() {
+    assert_eq!(term(Force::Y, [0, 2, 1, 0]).symbol(), "Y_vvr");
+    assert_eq!(term(Force::X, [1, 0, 0, 2]).symbol(), "X_udd");
+    assert_eq!(term(Force::N, [0, 0, 0, 0]).symbol(), "N_0");
+}
+
+/// The residuals are the issue's mass-matrix form, exactly: the added mass on the left, the
+/// rigid-body terms of 4.46 written out, the polynomial on the right.
+#[test]
+fn residuals_are_the_mass_matrix_form_with_the_polynomial() {
+    let spec = ShipSpec {
+        units: Units::Dimensional,
+        yaw_inertia: YawInertia::AboutG,
+        terms: vec![
+            term(Force::X, [2, 0, 0, 0]),
+            term(Force::Y, [0, 1, 0, 0]),
+            term(Force::Y, [0, 0, 0, 1]),
+            term(Force::N, [0, 2, 1, 0]),
+        ],
+    };
+    let book = [
+        "(M - X_udot)*u_dot - M*v*r - M*x_G*r.powi(2) - X_uu*u.powi(2)",
+        "(M - Y_vdot)*v_dot + (M*x_G - Y_rdot)*r_dot + M*u*r - Y_v*v - Y_d*delta",
+        "(M*x_G - N_vdot)*v_dot + (Izz + M*x_G.powi(2) - N_rdot)*r_dot + M*x_G*u*r - N_vvr*v.powi(2)*r",
+    ];
+    let residuals = spec.residuals().unwrap();
+    for (derived, book) in residuals.iter().zip(book) {
+        let difference = derived - &parse(book).unwrap();
+        assert!(difference.is_zero(), "{book}: left over {difference}");
+    }
+}
+
+/// With the yaw inertia about midship, I_zz + M x_G² is the given I_O itself.
+#[test]
+fn inertia_about_midship_enters_the_mass_matrix_as_given() {
+    let spec = ShipSpec {
+        units: Units::Dimensional,
+        yaw_inertia: YawInertia::AboutMidship,
+        terms: vec![],
+    };
+    let yaw = &spec.residuals().unwrap()[2];
+    let book = parse("(M*x_G - N_vdot)*v_dot + (Izz_midship - N_rdot)*r_dot + M*x_G*u*r").unwrap();
+    assert!((yaw - &book).is_zero(), "left over {}", yaw - &book);
+}
+
+/// The prime system: a term Y′_vvr contributes ½ρL²U² Y′_vvr (v/U)²(rL/U), the surge
+/// variable is (u − U₀)/U, and a moment carries one more L.
+#[test]
+fn prime_terms_scale_by_the_instantaneous_speed() {
+    let spec = ShipSpec {
+        units: Units::Prime,
+        yaw_inertia: YawInertia::AboutMidship,
+        terms: vec![term(Force::Y, [0, 2, 1, 0]), term(Force::N, [1, 0, 0, 1])],
+    };
+    let y = spec.force(Force::Y).unwrap();
+    let expected = parse("rho/2.0*L.powi(3)*Y_vvr*v.powi(2)*r/U").unwrap();
+    assert!((&y - &expected).is_zero(), "Y: {}", &y - &expected);
+    let n = spec.force(Force::N).unwrap();
+    let expected = parse("rho/2.0*L.powi(3)*N_ud*(u - U0)*U*delta").unwrap();
+    assert!((&n - &expected).is_zero(), "N: {}", &n - &expected);
+}
+
+#[test]
+fn the_mariner_builds_proves_and_emits_only_its_terms() {
+    for units in [Units::Dimensional, Units::Prime] {
+        for yaw_inertia in [YawInertia::AboutG, YawInertia::AboutMidship] {
+            let spec = ShipSpec {
+                units,
+                yaw_inertia,
+                terms: mariner_terms(),
+            };
+            let system = ship("mariner", &spec).unwrap();
+            prove(&system).unwrap();
+            let source = system_source(&system).unwrap();
+            for t in &spec.terms {
+                let field = format!("pub {}: f64", t.symbol().to_lowercase());
+                assert!(source.contains(&field), "{units:?}: {field} missing");
+            }
+            // A term the table does not list is not in the code.
+            assert!(!source.contains("y_vrr"), "{units:?}");
+        }
+    }
+}
+
+#[test]
+fn a_term_listed_twice_is_refused() {
+    let spec = ShipSpec {
+        units: Units::Dimensional,
+        yaw_inertia: YawInertia::AboutG,
+        terms: vec![term(Force::Y, [0, 1, 0, 0]), term(Force::Y, [0, 1, 0, 0])],
+    };
+    let error = ship("twice", &spec).unwrap_err();
+    assert!(error.to_string().contains("Y_v is listed twice"), "{error}");
+}
+
+#[test]
+fn the_rudder_angle_moves_at_its_input() {
+    let spec = ShipSpec {
+        units: Units::Dimensional,
+        yaw_inertia: YawInertia::AboutG,
+        terms: vec![],
+    };
+    let system = ship("bare", &spec).unwrap();
+    assert_eq!(system.state[6], "delta");
+    assert_eq!(system.outputs[6], Expr::symbol("delta_rate"));
+}
