@@ -14,6 +14,7 @@
 //! | integrators: one trait, tableaux over one adaptive driver | [`integrate`]: [`Integrator`], [`OdeSystem`], [`Dop853`], [`Dopri5`], [`Rk4`], … |
 //! | exact solutions and invariants for judging runs | [`reference`](mod@reference), [`energy`], [`elliptic`] |
 //! | the swing test: radius of gyration from a pendulum's period | [`swing`] |
+//! | ship manoeuvring: a hydrodynamic table on 4.46, the rudder, the standard manoeuvres, IMO criteria, Nomoto (feature `ship`) | `ship` |
 //! | the JSON inputs of `eom eval`, read to the nearest binary64 (feature `cli`) | `eval` |
 //! | what a run writes besides its numbers: the SVG plots (feature `cli`) | `output` |
 //!
@@ -56,6 +57,8 @@ mod pendulum;
 pub mod reference;
 pub mod run;
 pub mod scene;
+#[cfg(feature = "ship")]
+pub mod ship;
 pub mod swing;
 mod validate;
 

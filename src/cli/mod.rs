@@ -6,6 +6,7 @@ mod mass;
 mod models;
 mod plots;
 mod run;
+mod ship;
 mod swing;
 mod tradeoff;
 mod values;
@@ -29,6 +30,9 @@ pub enum Command {
     Eval(eval::Args),
     /// Run a scene file: integrate it and write trajectory.csv, summary.json and SVG plots.
     Run(run::Args),
+    /// The linear model of a ship scene about the straight course: Nomoto's K, T₁, T₂, T₃ by
+    /// the closed form and from the linearised model, course stability, the pivot point.
+    Linear(ship::LinearArgs),
     /// Run a scene with every applicable integrator over steps and tolerances, and recommend
     /// the cheapest setting that meets a target error.
     Tradeoff(tradeoff::Args),
@@ -47,6 +51,7 @@ pub fn run(command: Option<Command>) -> anyhow::Result<()> {
         Command::Eval(args) => eval::run(args),
         Command::Run(args) => run::run_command(args),
         Command::Tradeoff(args) => tradeoff::run(args),
+        Command::Linear(args) => ship::linear(args),
     }
 }
 
@@ -78,6 +83,13 @@ pub fn exit_code(error: &anyhow::Error) -> u8 {
         }
         if cause.downcast_ref::<eom::run::RunError>().is_some() {
             return 5;
+        }
+        if let Some(ship) = cause.downcast_ref::<eom::ship::ShipError>() {
+            return match ship {
+                eom::ship::ShipError::Run { .. } => 5,
+                eom::ship::ShipError::Invalid { .. } => 3,
+                eom::ship::ShipError::Build(_) => 1,
+            };
         }
     }
     1

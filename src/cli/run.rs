@@ -21,6 +21,7 @@ use eom::output::trajectory::{Columns, TrajectoryWriter};
 use eom::run::{Report, Row, RunError, Sink, run_reporting};
 use eom::scene::sweep::{Case, cases, parse_shard};
 use eom::scene::{Body, Problem, Scene, SceneError};
+use eom::ship::ShipScene;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
@@ -189,6 +190,11 @@ fn execute(
     shard: Option<(usize, usize)>,
 ) -> Result<()> {
     watch_signals();
+    if eom::ship::scene::is_ship_scene(text) {
+        ShipScene::parse(text, name)?;
+        prepare_folder(out, force)?;
+        return super::ship::execute(text, name, out);
+    }
     let all = cases(text, name)?;
     let swept = !all[0].values.is_empty();
     // Every case is checked before any runs: a bad value fails the sweep at once.

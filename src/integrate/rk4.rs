@@ -28,8 +28,9 @@ impl Rk4 {
     }
 }
 
-/// One classical RK4 step of size `h` from `(t, y)`, in place.
-fn rk4_step<T, const N: usize, S>(system: &S, t: T, h: T, y: &mut SVector<T, N>)
+/// One classical RK4 step of size `h` from `(t, y)`, in place: for drivers that choose their
+/// own steps (a manoeuvre that steps onto the instant an event happens).
+pub fn rk4_step<T, const N: usize, S>(system: &S, t: T, h: T, y: &mut SVector<T, N>)
 where
     T: RealField + Copy,
     S: OdeSystem<T, N> + ?Sized,

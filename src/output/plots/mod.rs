@@ -49,6 +49,8 @@ use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use thiserror::Error;
 
+pub mod ship;
+
 /// What a run hands to the plots: columns sampled at the same times.
 ///
 /// Every column has one value per entry of [`time`](Self::time); a column of another length
@@ -130,7 +132,11 @@ pub fn write_plots(dir: &Path, input: &PlotInput) -> Result<Vec<PathBuf>, PlotEr
         })?);
     }
     if let Some((x, y)) = input.track {
-        written.push(emit(dir, TRACK, |svg| draw_track(svg, input.title, x, y))?);
+        let caption = format!("{}: track in space axes", input.title);
+        let axes = ("x [m]", "y [m]");
+        written.push(emit(dir, TRACK, |svg| {
+            draw_track(svg, &caption, axes, (x, y), &[])
+        })?);
     }
     if let Some(drift) = input.energy_drift {
         written.push(emit(dir, ENERGY, |svg| {
@@ -527,17 +533,30 @@ fn track_builder<'a, 'b>(
     builder
 }
 
-/// The track plot: y against x with one scale on both axes (a circle is drawn round), the
-/// start and the end marked.
-fn draw_track(svg: &mut String, title: &str, x: &[f64], y: &[f64]) -> Result<(), DrawError> {
+/// A point marked on a track, with its legend entry.
+pub struct Mark {
+    /// The legend entry: what the point is, with its figure.
+    pub label: String,
+    /// Where, in the plot's (horizontal, vertical) coordinates.
+    pub point: (f64, f64),
+}
+
+/// The track plot: the vertical coordinate against the horizontal with one scale on both axes
+/// (a circle is drawn round), the start and the end marked, and `marks` as crosses.
+fn draw_track(
+    svg: &mut String,
+    caption: &str,
+    (x_desc, y_desc): (&str, &str),
+    (x, y): (&[f64], &[f64]),
+    marks: &[Mark],
+) -> Result<(), DrawError> {
     let size = (900, 900);
-    let caption = format!("{title}: track in space axes");
     // The size of the plotting area does not depend on the ranges: lay out once on a scratch
     // string to learn it, then choose the ranges for equal scales.
     let (width, height) = {
         let mut scratch = String::new();
         let root = SVGBackend::with_string(&mut scratch, size).into_drawing_area();
-        let chart = track_builder(&root, &caption).build_cartesian_2d(0.0..1.0, 0.0..1.0)?;
+        let chart = track_builder(&root, caption).build_cartesian_2d(0.0..1.0, 0.0..1.0)?;
         let (w, h) = chart.plotting_area().dim_in_pixel();
         (f64::from(w.max(1)), f64::from(h.max(1)))
     };
@@ -560,7 +579,7 @@ fn draw_track(svg: &mut String, title: &str, x: &[f64], y: &[f64]) -> Result<(),
     let y_label = |v: &f64| tick_label(*v, y_range, ticks);
 
     render(svg, size, |root| {
-        let mut chart = track_builder(root, &caption)
+        let mut chart = track_builder(root, caption)
             .build_cartesian_2d(x_range.0..x_range.1, y_range.0..y_range.1)?;
         chart
             .configure_mesh()
@@ -570,8 +589,8 @@ fn draw_track(svg: &mut String, title: &str, x: &[f64], y: &[f64]) -> Result<(),
             .y_label_formatter(&y_label)
             .light_line_style(TRANSPARENT)
             .label_style((FONT, 12))
-            .x_desc("x [m]")
-            .y_desc("y [m]")
+            .x_desc(x_desc)
+            .y_desc(y_desc)
             .draw()?;
         let colour = COLOURS[0];
         chart
@@ -593,6 +612,14 @@ fn draw_track(svg: &mut String, title: &str, x: &[f64], y: &[f64]) -> Result<(),
                     .label(name)
                     .legend(move |(x, y)| Circle::new((x + 8, y), radius.min(5), style));
             }
+        }
+        for (mark, colour) in marks.iter().zip(COLOURS.iter().cycle().skip(1)) {
+            let style = colour.stroke_width(2);
+            let point = (bounded(mark.point.0), bounded(mark.point.1));
+            chart
+                .draw_series([Cross::new(point, 8, style)])?
+                .label(mark.label.as_str())
+                .legend(move |(x, y)| Cross::new((x + 8, y), 5, style));
         }
         chart
             .configure_series_labels()

@@ -1,0 +1,383 @@
+//! Ship scenes: `eom run SCENE` for a scene with `[hydrodynamics]`, and `eom linear SCENE`.
+//!
+//! `eom run` runs each `[[manoeuvre]]` from the same approach into its own folder
+//! (`trajectory.csv`, `track.svg`, `heading.svg`) and writes `summary.json` beside them: the
+//! model that ran, the linear model, each manoeuvre's figures under `"manoeuvre"` with how
+//! much each moves when the step is halved, and the IMO criteria under `"manoeuvre"."imo"`.
+//! Every file is written whole to a temporary name and renamed.
+
+use anyhow::{Context, Result};
+use eom::output::plots::Mark;
+use eom::output::plots::ship::{ManoeuvrePlot, write_manoeuvre_plots};
+use eom::output::summary::write_atomically;
+use eom::ship::imo::{Criterion, criteria};
+use eom::ship::linear::{LinearModel, Nomoto, linearise};
+use eom::ship::manoeuvre::{Figures, Sample, run};
+use eom::ship::{Manoeuvre, ManoeuvreKind, RigidBodyTerms, ShipModel, ShipScene};
+use eom_codegen::model::ship::{Units, YawInertia};
+use serde_json::{Map, Value, json};
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// Options of `eom linear`.
+#[derive(clap::Args)]
+pub struct LinearArgs {
+    /// A ship scene (a scene with `[hydrodynamics]`).
+    scene: PathBuf,
+    /// Print JSON instead of text.
+    #[arg(long)]
+    json: bool,
+}
+
+/// A manoeuvre run at the scene's step, and the same at half the step.
+struct Outcome {
+    samples: Vec<Sample>,
+    figures: Figures,
+    halved: Figures,
+    steps: u64,
+}
+
+/// Runs a ship scene into `out`, a folder already known to be writable.
+pub fn execute(text: &str, name: &str, out: &Path) -> Result<()> {
+    let started = Instant::now();
+    let scene = ShipScene::parse(text, name)?;
+    let model = ShipModel::new(&scene.table)?;
+    let linear = LinearModel::closed_form(&scene.table);
+    let mut outcomes = Vec::new();
+    for manoeuvre in &scene.manoeuvres {
+        let outcome = run_manoeuvre(&scene, &model, manoeuvre)
+            .with_context(|| format!("manoeuvre {}", manoeuvre.name))?;
+        let folder = out.join(&manoeuvre.name);
+        std::fs::create_dir_all(&folder)
+            .with_context(|| format!("creating {}", folder.display()))?;
+        write_trajectory(&folder.join("trajectory.csv"), &outcome.samples)?;
+        write_plots(&folder, &scene, manoeuvre, &outcome)?;
+        outcomes.push(outcome);
+    }
+    let runs: Vec<(&Manoeuvre, &Figures)> = scene
+        .manoeuvres
+        .iter()
+        .zip(&outcomes)
+        .map(|(m, o)| (m, &o.figures))
+        .collect();
+    let judged = criteria(scene.length, scene.table.design_speed, &runs);
+    let mut manoeuvres = Map::new();
+    for (manoeuvre, outcome) in scene.manoeuvres.iter().zip(&outcomes) {
+        manoeuvres.insert(manoeuvre.name.clone(), manoeuvre_json(manoeuvre, outcome));
+    }
+    manoeuvres.insert(
+        "imo".into(),
+        Value::Array(judged.iter().map(criterion_json).collect()),
+    );
+    let summary = json!({
+        "scene": name,
+        "title": scene.title,
+        "model": model_json(&scene, &model),
+        "integrator": {"method": "rk4", "step": scene.step},
+        "linear": linear_json(&scene, &model, &linear),
+        "manoeuvre": manoeuvres,
+        "wall_seconds": started.elapsed().as_secs_f64(),
+    });
+    let bytes = serde_json::to_vec_pretty(&summary)?;
+    let path = out.join("summary.json");
+    write_atomically(&path, &bytes).with_context(|| format!("writing {}", path.display()))?;
+    print_report(&scene, &outcomes, &judged, out);
+    Ok(())
+}
+
+fn run_manoeuvre(scene: &ShipScene, model: &ShipModel, manoeuvre: &Manoeuvre) -> Result<Outcome> {
+    let mut samples = Vec::new();
+    let mut next_row = 0.0;
+    let every = scene.every;
+    let done = run(
+        model,
+        &scene.rudder,
+        manoeuvre,
+        scene.start(),
+        scene.step,
+        |s| {
+            if s.t >= next_row || s.t == manoeuvre.duration {
+                samples.push(*s);
+                next_row = s.t + every * (1.0 - 1e-9);
+            }
+        },
+    )?;
+    let halved = run(
+        model,
+        &scene.rudder,
+        manoeuvre,
+        scene.start(),
+        scene.step / 2.0,
+        |_| {},
+    )?;
+    Ok(Outcome {
+        samples,
+        figures: done.figures,
+        halved: halved.figures,
+        steps: done.steps,
+    })
+}
+
+/// `trajectory.csv`: t, the model's state (radians, m/s), the command and the distance run.
+fn write_trajectory(path: &Path, samples: &[Sample]) -> Result<()> {
+    let mut writer = csv::Writer::from_writer(Vec::new());
+    writer.write_record([
+        "t", "u", "v", "r", "x", "y", "psi", "delta", "command", "distance",
+    ])?;
+    for sample in samples {
+        let mut row = vec![ryu_text(sample.t)];
+        row.extend(sample.state[..7].iter().map(|v| ryu_text(*v)));
+        row.push(ryu_text(sample.command));
+        row.push(ryu_text(sample.state[7]));
+        writer.write_record(&row)?;
+    }
+    let bytes = writer.into_inner().map_err(|e| anyhow::anyhow!("{e}"))?;
+    write_atomically(path, &bytes).with_context(|| format!("writing {}", path.display()))
+}
+
+/// Rust's shortest text that reads back to the same bits.
+fn ryu_text(value: f64) -> String {
+    if value.is_finite() {
+        ryu::Buffer::new().format_finite(value).to_owned()
+    } else {
+        value.to_string()
+    }
+}
+
+fn write_plots(
+    folder: &Path,
+    scene: &ShipScene,
+    manoeuvre: &Manoeuvre,
+    outcome: &Outcome,
+) -> Result<()> {
+    let column = |f: &dyn Fn(&Sample) -> f64| outcome.samples.iter().map(f).collect::<Vec<_>>();
+    let psi0 = outcome
+        .samples
+        .iter()
+        .find(|s| s.t >= manoeuvre.execute)
+        .map_or(0.0, |s| s.state[5]);
+    let time = column(&|s| s.t);
+    let north = column(&|s| s.state[3]);
+    let east = column(&|s| s.state[4]);
+    let heading = column(&|s| (s.state[5] - psi0).to_degrees());
+    let rudder = column(&|s| s.state[6].to_degrees());
+    let command = column(&|s| s.command.to_degrees());
+    let marks: Vec<Mark> = outcome
+        .figures
+        .marks
+        .iter()
+        .map(|(label, [x, y])| Mark {
+            label: label.clone(),
+            point: (*y, *x),
+        })
+        .collect();
+    let title = format!("{} — {}", scene.title, manoeuvre.name);
+    let plot = ManoeuvrePlot {
+        title: &title,
+        time: &time,
+        north: &north,
+        east: &east,
+        heading_change_deg: &heading,
+        rudder_deg: &rudder,
+        command_deg: &command,
+        marks: &marks,
+    };
+    write_manoeuvre_plots(folder, &plot)?;
+    Ok(())
+}
+
+fn model_json(scene: &ShipScene, model: &ShipModel) -> Value {
+    let table = &scene.table;
+    let operations = model.operations();
+    json!({
+        "family": "planar-midship",
+        "equations": "4.46 with the added mass and the hydrodynamic polynomial; 4.44",
+        "units": match table.units { Units::Prime => "prime", Units::Dimensional => "dimensional" },
+        "yaw_inertia": match table.body.yaw_inertia_about {
+            YawInertia::AboutG => "about G",
+            YawInertia::AboutMidship => "about midship",
+        },
+        "rigid_body_terms": match table.given_as {
+            RigidBodyTerms::Folded => "folded",
+            RigidBodyTerms::Separate => "separate",
+        },
+        "conversion": table.conversions,
+        "terms": model.terms(),
+        "operations": {
+            "add": operations.add,
+            "mul": operations.mul,
+            "div": operations.div,
+        },
+    })
+}
+
+fn nomoto_json(nomoto: Option<Nomoto>, speed: f64, length: f64) -> Value {
+    match nomoto {
+        Some(n) => json!({
+            "k_per_s": n.k, "t1_s": n.t1, "t2_s": n.t2, "t3_s": n.t3, "t_s": n.t,
+            "k_prime": n.k * length / speed, "t_prime": n.t * speed / length,
+        }),
+        None => Value::Null,
+    }
+}
+
+/// The largest relative difference between two Nomoto models' K, T₁, T₂, T₃.
+fn nomoto_difference(a: Option<Nomoto>, b: Option<Nomoto>) -> Option<f64> {
+    let (a, b) = (a?, b?);
+    let pairs = [(a.k, b.k), (a.t1, b.t1), (a.t2, b.t2), (a.t3, b.t3)];
+    Some(
+        pairs
+            .iter()
+            .map(|(x, y)| (x - y).abs() / x.abs().max(y.abs()))
+            .fold(0.0, f64::max),
+    )
+}
+
+fn linear_json(scene: &ShipScene, model: &ShipModel, linear: &LinearModel) -> Value {
+    let speed = scene.table.design_speed;
+    let closed = linear.nomoto();
+    let (a, b) = linearise(model, speed);
+    let linearised = Nomoto::from_state_space(a, b);
+    json!({
+        "speed_m_s": speed,
+        "length_m": scene.length,
+        "nomoto": nomoto_json(closed, speed, scene.length),
+        "nomoto_of_linearised_model": nomoto_json(linearised, speed, scene.length),
+        "largest_relative_difference": nomoto_difference(closed, linearised),
+        "det_n_si": linear.det_damping(),
+        "stability_index": linear.stability_index(),
+        "course_stable": linear.course_stable(),
+        "pivot_point_m": linear.pivot_point(),
+        "pivot_point_over_length": linear.pivot_point() / scene.length,
+    })
+}
+
+fn kind_json(kind: &ManoeuvreKind) -> Value {
+    match kind {
+        ManoeuvreKind::TurningCircle { rudder } => {
+            json!({"kind": "turning_circle", "rudder_deg": rudder.to_degrees()})
+        }
+        ManoeuvreKind::ZigZag { rudder, heading } => json!({
+            "kind": "zigzag", "rudder_deg": rudder.to_degrees(), "heading_deg": heading.to_degrees(),
+        }),
+        ManoeuvreKind::PullOut { rudder, release } => {
+            json!({"kind": "pull_out", "rudder_deg": rudder.to_degrees(), "release_s": release})
+        }
+        ManoeuvreKind::Series(_) => json!({"kind": "rudder_series"}),
+    }
+}
+
+fn manoeuvre_json(manoeuvre: &Manoeuvre, outcome: &Outcome) -> Value {
+    let mut object = match kind_json(&manoeuvre.kind) {
+        Value::Object(map) => map,
+        _ => Map::new(),
+    };
+    object.insert("execute_s".into(), json!(manoeuvre.execute));
+    object.insert("duration_s".into(), json!(manoeuvre.duration));
+    let mut differences = Map::new();
+    for (key, value) in &outcome.figures.values {
+        object.insert((*key).into(), json!(value));
+        let other = outcome.halved.get(key);
+        let difference = value.zip(other).map(|(a, b)| (a - b).abs());
+        differences.insert((*key).into(), json!(difference));
+    }
+    if let Some(side) = outcome.figures.side {
+        object.insert("side".into(), json!(side));
+    }
+    object.insert("half_step_difference".into(), Value::Object(differences));
+    object.insert("steps".into(), json!(outcome.steps));
+    object.insert("notes".into(), json!(outcome.figures.notes));
+    Value::Object(object)
+}
+
+fn criterion_json(criterion: &Criterion) -> Value {
+    json!({
+        "criterion": criterion.name,
+        "manoeuvre": criterion.manoeuvre,
+        "value": criterion.value,
+        "limit": criterion.limit,
+        "unit": criterion.unit,
+        "pass": criterion.pass(),
+    })
+}
+
+fn print_report(scene: &ShipScene, outcomes: &[Outcome], judged: &[Criterion], out: &Path) {
+    println!("{}", scene.title);
+    for (manoeuvre, outcome) in scene.manoeuvres.iter().zip(outcomes) {
+        println!("  {}:", manoeuvre.name);
+        for (key, value) in &outcome.figures.values {
+            match value {
+                Some(v) => println!("    {key:<28} {v:>12.3}"),
+                None => println!("    {key:<28} {:>12}", "—"),
+            }
+        }
+        for note in &outcome.figures.notes {
+            println!("    note: {note}");
+        }
+    }
+    if !judged.is_empty() {
+        println!(
+            "  IMO MSC.137(76), L = {} m, L/V = {:.2} s:",
+            scene.length,
+            scene.length / scene.table.design_speed
+        );
+        for c in judged {
+            let verdict = if c.pass() { "pass" } else { "FAIL" };
+            println!(
+                "    {:<24} {:>10.2} {:<3} ≤ {:>9.2}  {verdict}",
+                c.name, c.value, c.unit, c.limit
+            );
+        }
+    }
+    println!("  written to {}/", out.display());
+}
+
+/// Runs `eom linear`.
+pub fn linear(args: LinearArgs) -> Result<()> {
+    let scene = ShipScene::load(&args.scene)?;
+    let model = ShipModel::new(&scene.table)?;
+    let linear = LinearModel::closed_form(&scene.table);
+    let report = linear_json(&scene, &model, &linear);
+    if args.json {
+        println!("{}", serde_json::to_string_pretty(&report)?);
+        return Ok(());
+    }
+    let speed = scene.table.design_speed;
+    println!(
+        "{}: the linear model about the straight course at U₀ = {speed} m/s",
+        scene.title
+    );
+    let show = |what: &str, nomoto: Option<Nomoto>| match nomoto {
+        Some(n) => println!(
+            "  {what:<34} K = {:.6e} 1/s, T₁ = {:.6} s, T₂ = {:.6} s, T₃ = {:.6} s, T = {:.6} s",
+            n.k, n.t1, n.t2, n.t3, n.t
+        ),
+        None => println!("  {what:<34} T₁ and T₂ are not real: no Nomoto form"),
+    };
+    show("Nomoto, closed form:", linear.nomoto());
+    let (a, b) = linearise(&model, speed);
+    show("Nomoto, linearised model:", Nomoto::from_state_space(a, b));
+    if let Some(d) = nomoto_difference(linear.nomoto(), Nomoto::from_state_space(a, b)) {
+        println!("  {:<34} {d:.1e}", "largest relative difference:");
+    }
+    let verdict = if linear.course_stable() {
+        "stable"
+    } else {
+        "UNSTABLE"
+    };
+    match linear.stability_index() {
+        Some(c) => println!(
+            "  course stability: C′ = Y′v(N′r − m′x′G) − (Y′r − m′)N′v = {c:.6e}: {verdict}"
+        ),
+        None => println!(
+            "  course stability: det N = {:.6e} (SI): {verdict}",
+            linear.det_damping()
+        ),
+    }
+    let pivot = linear.pivot_point();
+    println!(
+        "  pivot point: x_p = {pivot:.2} m ahead of midship ({:.3} L)",
+        pivot / scene.length
+    );
+    Ok(())
+}

@@ -1,0 +1,224 @@
+//! The linear model about the straight course: the sway–yaw equations at the design speed U₀,
+//! M ν̇ + N ν = b δ with ν = (v, r), the Nomoto models, the course-stability criterion and
+//! the pivot point.
+//!
+//! With the mass matrix M (4.46's, with the added mass), N = [[−Y_v, M U₀ − Y_r],
+//! [−N_v, M x_G U₀ − N_r]] (the rigid-body terms M u r and M x_G u r of 4.46 at u = U₀; a
+//! folded table has them in its Y_r and N_r already) and b = (Y_δ, N_δ), the yaw-rate
+//! response is
+//!
+//! ```text
+//! r/δ = K (1 + T₃ s) / ((1 + T₁ s)(1 + T₂ s)),   T₁T₂ = det M / det N,
+//! T₁ + T₂ = (n₁₁m₂₂ + n₂₂m₁₁ − n₁₂m₂₁ − n₂₁m₁₂) / det N,
+//! K = (n₁₁b₂ − n₂₁b₁) / det N,   K T₃ = (m₁₁b₂ − m₂₁b₁) / det N,
+//! ```
+//!
+//! (Nomoto's second-order model; the first-order one is K and T = T₁ + T₂ − T₃). The straight
+//! course is stable when det N > 0: in the prime system det N = (½ρ)²L⁶U₀² C′ with the
+//! textbook's C′ = Y′_v(N′_r − m′x′_G) − (Y′_r − m′)N′_v. In a steady turn the point of the
+//! centre line that moves straight ahead, v + x_p r = 0, is the pivot point x_p = −v/r.
+//!
+//! [`linearise`] takes the same matrices from the running model instead: the exact derivative
+//! of the proved program, by dual numbers. The two agree (tests/ship.rs).
+
+use super::model::ShipModel;
+use super::table::ShipTable;
+use eom_codegen::model::ship::{Force, Term, Units};
+use num_dual::Dual64;
+use std::collections::BTreeMap;
+
+/// Nomoto's models of the yaw-rate response to the rudder.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Nomoto {
+    /// The gain K, 1/s (r per radian of rudder in the steady turn).
+    pub k: f64,
+    /// T₁, s: the time constant of larger magnitude (negative for a course-unstable ship).
+    pub t1: f64,
+    /// T₂, s.
+    pub t2: f64,
+    /// T₃, s: the lead.
+    pub t3: f64,
+    /// The first-order model's T = T₁ + T₂ − T₃, s.
+    pub t: f64,
+}
+
+impl Nomoto {
+    /// From the sum and product of T₁ and T₂, K and K T₃; `None` where T₁, T₂ are not real.
+    fn from_sums(sum: f64, product: f64, k: f64, k_t3: f64) -> Option<Self> {
+        let discriminant = sum * sum - 4.0 * product;
+        if discriminant < 0.0 {
+            return None;
+        }
+        // The root of larger magnitude without cancellation, the other from the product.
+        let large = 0.5 * (sum + sum.signum() * discriminant.sqrt());
+        let small = product / large;
+        let t3 = k_t3 / k;
+        Some(Nomoto {
+            k,
+            t1: large,
+            t2: small,
+            t3,
+            t: large + small - t3,
+        })
+    }
+
+    /// From the state-space form ν̇ = A ν + B δ: r/δ = (B₂ s + A₂₁B₁ − A₁₁B₂)/(s² − tr A s
+    /// + det A).
+    pub fn from_state_space(a: [[f64; 2]; 2], b: [f64; 2]) -> Option<Self> {
+        let det = a[0][0] * a[1][1] - a[0][1] * a[1][0];
+        let trace = a[0][0] + a[1][1];
+        let k = (a[1][0] * b[0] - a[0][0] * b[1]) / det;
+        Self::from_sums(-trace / det, 1.0 / det, k, b[1] / det)
+    }
+}
+
+/// The sway–yaw equations about the straight course at U₀, in SI.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LinearModel {
+    /// M: the sway–yaw block of the mass matrix.
+    pub mass: [[f64; 2]; 2],
+    /// N.
+    pub damping: [[f64; 2]; 2],
+    /// b = (Y_δ, N_δ).
+    pub rudder: [f64; 2],
+    /// U₀, m/s.
+    pub speed: f64,
+    /// (½ρ)²L⁶U₀², where the table is in the prime system: det N over it is C′.
+    prime_scale: Option<f64>,
+}
+
+/// ∂F/∂v, ∂F/∂r, ∂F/∂δ of one load at the straight course (u = U₀, v = r = δ = 0), in SI.
+fn derivatives(table: &ShipTable, terms: &BTreeMap<Term, f64>, force: Force) -> [f64; 3] {
+    let moment = i32::from(force == Force::N);
+    let mut out = [0.0; 3];
+    for (term, value) in terms.iter().filter(|(t, _)| t.force == force) {
+        let [a, b, c, d] = term.powers;
+        let slot = match (b, c, d) {
+            (1, 0, 0) => 0,
+            (0, 1, 0) => 1,
+            (0, 0, 1) => 2,
+            _ => continue,
+        };
+        let u0 = table.design_speed;
+        out[slot] += value
+            * match table.units {
+                Units::Dimensional => u0.powi(i32::from(a)),
+                // u′ = 0 on the design speed; the term is ½ρL^(2+c)U^(2−b−c) v^b r^c δ^d.
+                Units::Prime if a > 0 => 0.0,
+                Units::Prime => {
+                    let c = i32::from(c);
+                    table.si_scale(2 + c + moment) * u0.powi(2 - i32::from(b) - c)
+                }
+            };
+    }
+    out
+}
+
+impl LinearModel {
+    /// The closed form from the table's linear derivatives (rigid-body terms separate).
+    pub fn closed_form(table: &ShipTable) -> Self {
+        Self::from_terms(table, &table.terms, true)
+    }
+
+    /// The closed form from a table's terms; `add_rigid_body` for terms without the
+    /// rigid-body parts (false for a folded table, whose Y_r and N_r hold them).
+    pub fn from_terms(
+        table: &ShipTable,
+        terms: &BTreeMap<Term, f64>,
+        add_rigid_body: bool,
+    ) -> Self {
+        let m = table.mass_matrix();
+        let [y_v, y_r, y_d] = derivatives(table, terms, Force::Y);
+        let [n_v, n_r, n_d] = derivatives(table, terms, Force::N);
+        let (mass, x_g) = (
+            table.body.mass * table.si_scale(3),
+            table.body.x_g * table.si_scale(1),
+        );
+        let u0 = table.design_speed;
+        let (rigid_y, rigid_n) = if add_rigid_body {
+            (mass * u0, mass * x_g * u0)
+        } else {
+            (0.0, 0.0)
+        };
+        let prime_scale = match table.units {
+            Units::Prime => table
+                .density
+                .zip(table.length)
+                .map(|(rho, l)| (0.5 * rho).powi(2) * l.powi(6) * u0 * u0),
+            Units::Dimensional => None,
+        };
+        LinearModel {
+            mass: [[m[1][1], m[1][2]], [m[2][1], m[2][2]]],
+            damping: [[-y_v, rigid_y - y_r], [-n_v, rigid_n - n_r]],
+            rudder: [y_d, n_d],
+            speed: u0,
+            prime_scale,
+        }
+    }
+
+    /// det N: the straight course is stable where it is positive (with det M > 0).
+    pub fn det_damping(&self) -> f64 {
+        let n = self.damping;
+        n[0][0] * n[1][1] - n[0][1] * n[1][0]
+    }
+
+    /// C′ = Y′_v(N′_r − m′x′_G) − (Y′_r − m′)N′_v, for a table in the prime system.
+    pub fn stability_index(&self) -> Option<f64> {
+        self.prime_scale.map(|scale| self.det_damping() / scale)
+    }
+
+    /// Whether the straight course is stable.
+    pub fn course_stable(&self) -> bool {
+        self.det_damping() > 0.0
+    }
+
+    /// ν̇ = A ν + B δ: A = −M⁻¹N, B = M⁻¹b.
+    pub fn state_space(&self) -> ([[f64; 2]; 2], [f64; 2]) {
+        let m = self.mass;
+        let det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+        let inverse = [
+            [m[1][1] / det, -m[0][1] / det],
+            [-m[1][0] / det, m[0][0] / det],
+        ];
+        let times = |row: [f64; 2], col: [f64; 2]| row[0] * col[0] + row[1] * col[1];
+        let n_col = |j: usize| [self.damping[0][j], self.damping[1][j]];
+        let a = std::array::from_fn(|i| std::array::from_fn(|j| -times(inverse[i], n_col(j))));
+        let b = std::array::from_fn(|i| times(inverse[i], self.rudder));
+        (a, b)
+    }
+
+    /// Nomoto's models by the closed form of the module docs; `None` where T₁, T₂ are not real.
+    pub fn nomoto(&self) -> Option<Nomoto> {
+        let (m, n, b) = (self.mass, self.damping, self.rudder);
+        let det_m = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+        let det_n = self.det_damping();
+        let sum =
+            (n[0][0] * m[1][1] + n[1][1] * m[0][0] - n[0][1] * m[1][0] - n[1][0] * m[0][1]) / det_n;
+        let k = (n[0][0] * b[1] - n[1][0] * b[0]) / det_n;
+        let k_t3 = (m[0][0] * b[1] - m[1][0] * b[0]) / det_n;
+        Nomoto::from_sums(sum, det_m / det_n, k, k_t3)
+    }
+
+    /// The pivot point x_p = −v/r of the steady turn, m ahead of midship.
+    pub fn pivot_point(&self) -> f64 {
+        let (n, b) = (self.damping, self.rudder);
+        // ν = N⁻¹ b δ; the common 1/det N cancels in the ratio.
+        let v = n[1][1] * b[0] - n[0][1] * b[1];
+        let r = -n[1][0] * b[0] + n[0][0] * b[1];
+        -v / r
+    }
+}
+
+/// A and B of ν̇ = A ν + B δ taken from the running model about the straight course at
+/// `speed`: the exact derivatives of its proved program, by dual numbers.
+pub fn linearise(model: &ShipModel, speed: f64) -> ([[f64; 2]; 2], [f64; 2]) {
+    let column = |index: usize| {
+        let mut state = [Dual64::from(0.0); 7];
+        state[0] = Dual64::from(speed);
+        state[index] = Dual64::from(0.0).derivative();
+        let rates = model.rhs(&state, Dual64::from(0.0));
+        [rates[1].eps, rates[2].eps]
+    };
+    let (by_v, by_r, by_delta) = (column(1), column(2), column(6));
+    ([[by_v[0], by_r[0]], [by_v[1], by_r[1]]], by_delta)
+}

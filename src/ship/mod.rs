@@ -1,0 +1,71 @@
+//! Ship manoeuvring: a hydrodynamic table on 4.46, a rudder, the standard manoeuvres and the
+//! IMO criteria they are judged by.
+//!
+//! The chapter writes the planar equations at midship (4.46) "with the fluid forces measured
+//! in model tests about midship". A ship scene gives those forces as a table of derivatives
+//! (the Mariner's planar-motion-mechanism table, say); the flow is
+//!
+//! | step | where |
+//! |---|---|
+//! | the table as written: names, units, the rigid-body convention, folded tables converted | [`table`] |
+//! | 4.46 with exactly the table's terms, derived, solved and proved by `eom-codegen`, evaluated | [`model`] |
+//! | the rudder: saturation, first-order lag, rate limit; its commands | [`rudder`] |
+//! | the manoeuvres, their crossing instants found on the step, their figures | [`manoeuvre`] |
+//! | the IMO MSC.137(76) criteria | [`imo`] |
+//! | the linear model about the straight course: Nomoto, course stability, pivot point | [`linear`] |
+//! | the scene file | [`scene`] |
+//!
+//! The model is built when the scene is read, because the table is known only then: the
+//! symbolic engine derives 4.46 with the table's terms, solves it with the constant mass
+//! matrix inverted once, and proves the straight-line program equal to the equations, as it
+//! does for every catalog model at build time; [`model::ShipModel`] then evaluates that proved
+//! program. A user who wants the same model compiled calls
+//! [`eom_codegen::emit::system_source`] from a `build.rs`.
+
+pub mod imo;
+pub mod linear;
+pub mod manoeuvre;
+pub mod model;
+pub mod rudder;
+pub mod scene;
+pub mod table;
+
+pub use linear::{LinearModel, Nomoto};
+pub use manoeuvre::{Manoeuvre, ManoeuvreKind, ManoeuvreRun};
+pub use model::ShipModel;
+pub use rudder::{Rudder, Series};
+pub use scene::ShipScene;
+pub use table::{RigidBodyTerms, ShipTable};
+
+/// Why a ship cannot be built or run.
+#[derive(Debug, thiserror::Error)]
+pub enum ShipError {
+    /// A table value or key that cannot be used; `key` is its path in the scene.
+    #[error("`{key}`: {reason}")]
+    Invalid {
+        /// The key's path, `hydrodynamics.coefficients.Yvv`.
+        key: String,
+        /// What is wrong.
+        reason: String,
+    },
+    /// The symbolic engine could not build or prove the model.
+    #[error("the ship model cannot be built: {0}")]
+    Build(#[from] eom_codegen::emit::EmitError),
+    /// A run that cannot go on, with the time and the reason.
+    #[error("the run stopped at t = {time} s: {reason}")]
+    Run {
+        /// When.
+        time: f64,
+        /// Why.
+        reason: String,
+    },
+}
+
+impl ShipError {
+    pub(crate) fn invalid(key: impl Into<String>, reason: impl Into<String>) -> Self {
+        ShipError::Invalid {
+            key: key.into(),
+            reason: reason.into(),
+        }
+    }
+}

@@ -1,0 +1,617 @@
+//! The ship scene: a planar-midship scene with a `[hydrodynamics]` table, a `[rudder]` and
+//! the `[[manoeuvre]]`s to run.
+//!
+//! ```toml
+//! title = "…"
+//!
+//! [model]
+//! family = "planar-midship"
+//!
+//! [body]                       # in the table's units
+//! length = 160.93              # L, m (always: the IMO criteria are in ship lengths)
+//! mass_prime = 0.00798         # or mass (kg) for a dimensional table
+//! izz_midship_prime = 0.000392 # or izz_prime (about G); dimensional: izz (about G) or izz_midship
+//! x_g_prime = -0.023           # or x_g (m)
+//!
+//! [hydrodynamics]
+//! units = "prime"              # or "dimensional"
+//! rigid_body_terms = "folded"  # or "separate" (see eom::ship::table)
+//! density = 1025.0             # ρ, kg/m³ (prime only)
+//! design_speed = 7.7175        # U₀, m/s: the approach speed, and the surge perturbation's reference
+//!
+//! [hydrodynamics.coefficients] # the terms to model, and only those
+//! Xudot = -0.00042
+//! Yv = -0.0116
+//! # …
+//!
+//! [rudder]                     # every key optional
+//! max_deg = 40.0               # δ_max
+//! max_rate_deg_s = 5.0         # δ̇_max (needs the lag)
+//! time_constant_s = 1.0        # the first-order lag
+//!
+//! [integrator]
+//! method = "rk4"               # steps that land on every event (eom::ship::manoeuvre)
+//! step = 0.1                   # s
+//!
+//! [[manoeuvre]]
+//! kind = "turning_circle"      # turning_circle, zigzag, pull_out or rudder_series
+//! rudder_deg = 35.0
+//! duration_s = 1200.0
+//! # name = "turning_circle_35" # the output folder; made from the kind and angles if absent
+//! # execute_s = 0.0            # when the rudder is put over
+//! # heading_deg = 10.0         # zigzag: ψ_a
+//! # release_s = 300.0          # pull_out: rudder back to zero
+//! # times_s = [0, 10, 20]      # rudder_series: the command's times and angles
+//! # series_deg = [0, 10, -10]
+//! ```
+//!
+//! Every run starts on a straight course at U₀, midship at the origin, heading north, rudder
+//! amidships. Every key is checked and an error names it by its path in the file.
+
+use super::ShipError;
+use super::manoeuvre::{Manoeuvre, ManoeuvreKind};
+use super::rudder::{Rudder, Series};
+use super::table::{GivenTable, RigidBodyTerms, ShipBody, ShipTable};
+use crate::scene::{Problem, SceneError};
+use eom_codegen::model::ship::{Units, YawInertia};
+use serde::Deserialize;
+use std::collections::BTreeMap;
+use std::path::Path;
+
+/// The file as written.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ShipSceneFile {
+    /// What the scene is.
+    pub title: String,
+    /// `family = "planar-midship"`.
+    pub model: ModelTable,
+    /// The body.
+    pub body: BodyTable,
+    /// The hydrodynamic table.
+    pub hydrodynamics: HydrodynamicsTable,
+    /// The steering gear.
+    #[serde(default)]
+    pub rudder: RudderTable,
+    /// The step.
+    pub integrator: IntegratorTable,
+    /// The manoeuvres, each run from the same approach.
+    #[serde(default)]
+    pub manoeuvre: Vec<ManoeuvreTable>,
+    /// Trajectory rows.
+    #[serde(default)]
+    pub output: OutputTable,
+}
+
+/// `[model]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ModelTable {
+    /// `planar-midship`.
+    pub family: String,
+}
+
+/// `[body]`.
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+#[allow(missing_docs)]
+pub struct BodyTable {
+    pub length: Option<f64>,
+    pub mass: Option<f64>,
+    pub mass_prime: Option<f64>,
+    pub izz: Option<f64>,
+    pub izz_midship: Option<f64>,
+    pub izz_prime: Option<f64>,
+    pub izz_midship_prime: Option<f64>,
+    pub x_g: Option<f64>,
+    pub x_g_prime: Option<f64>,
+}
+
+/// `[hydrodynamics]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+#[allow(missing_docs)]
+pub struct HydrodynamicsTable {
+    pub units: String,
+    pub rigid_body_terms: String,
+    pub density: Option<f64>,
+    pub design_speed: f64,
+    pub coefficients: BTreeMap<String, f64>,
+}
+
+/// `[rudder]`.
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+#[allow(missing_docs)]
+pub struct RudderTable {
+    pub max_deg: Option<f64>,
+    pub max_rate_deg_s: Option<f64>,
+    pub time_constant_s: Option<f64>,
+}
+
+/// `[integrator]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+#[allow(missing_docs)]
+pub struct IntegratorTable {
+    pub method: String,
+    pub step: f64,
+}
+
+/// `[output]`.
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct OutputTable {
+    /// A trajectory row every this many seconds (every step where absent).
+    pub every: Option<f64>,
+}
+
+/// `[[manoeuvre]]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+#[allow(missing_docs)]
+pub struct ManoeuvreTable {
+    pub name: Option<String>,
+    pub kind: String,
+    pub rudder_deg: Option<f64>,
+    pub heading_deg: Option<f64>,
+    pub execute_s: Option<f64>,
+    pub release_s: Option<f64>,
+    pub duration_s: f64,
+    pub times_s: Option<Vec<f64>>,
+    pub series_deg: Option<Vec<f64>>,
+}
+
+/// A ship scene, checked, ready to run.
+#[derive(Debug, Clone)]
+pub struct ShipScene {
+    /// The title.
+    pub title: String,
+    /// L, m.
+    pub length: f64,
+    /// The table, rigid-body terms separate.
+    pub table: ShipTable,
+    /// The steering gear.
+    pub rudder: Rudder,
+    /// The RK4 step, s.
+    pub step: f64,
+    /// A trajectory row every this many seconds (0: every step).
+    pub every: f64,
+    /// The manoeuvres.
+    pub manoeuvres: Vec<Manoeuvre>,
+}
+
+/// Whether scene text is a ship scene: one with a `[hydrodynamics]` table.
+pub fn is_ship_scene(text: &str) -> bool {
+    toml::from_str::<toml::Table>(text).is_ok_and(|t| t.contains_key("hydrodynamics"))
+}
+
+/// The most steps one manoeuvre may take.
+const MAX_STEPS: f64 = 1e8;
+
+struct Check<'a> {
+    name: &'a str,
+}
+
+impl Check<'_> {
+    fn error(&self, key: &str, problem: Problem) -> SceneError {
+        SceneError::new(self.name, key, problem)
+    }
+
+    fn invalid(&self, key: &str, why: impl Into<String>) -> SceneError {
+        self.error(key, Problem::Invalid(why.into()))
+    }
+
+    fn positive(&self, key: &str, value: f64) -> Result<f64, SceneError> {
+        if value.is_finite() && value > 0.0 {
+            Ok(value)
+        } else {
+            Err(self.invalid(key, format!("{value} must be a positive finite number")))
+        }
+    }
+
+    fn finite(&self, key: &str, value: f64) -> Result<f64, SceneError> {
+        if value.is_finite() {
+            Ok(value)
+        } else {
+            Err(self.invalid(key, format!("{value} is not finite")))
+        }
+    }
+
+    /// Exactly one of the keys given, among those of the table's units; the others refused.
+    fn one_of(
+        &self,
+        given: &[(&str, Option<f64>)],
+        wanted: &[&str],
+    ) -> Result<(usize, f64), SceneError> {
+        let present: Vec<(usize, &str, f64)> = given
+            .iter()
+            .enumerate()
+            .filter_map(|(i, (k, v))| v.map(|v| (i, *k, v)))
+            .collect();
+        if let Some((_, key, _)) = present.iter().find(|(_, k, _)| !wanted.contains(k)) {
+            return Err(self.invalid(
+                &format!("body.{key}"),
+                format!(
+                    "not a key of this table's units; give one of {}",
+                    wanted.join(", ")
+                ),
+            ));
+        }
+        match present.as_slice() {
+            [(i, _, v)] => Ok((*i, *v)),
+            [] => Err(self.error(
+                "body",
+                Problem::Missing(format!("one of {}", wanted.join(", "))),
+            )),
+            _ => Err(self.invalid(
+                &format!("body.{}", present[1].1),
+                format!("give only one of {}", wanted.join(", ")),
+            )),
+        }
+    }
+
+    fn body(&self, body: &BodyTable, units: Units) -> Result<(ShipBody, f64), SceneError> {
+        let length = self.positive(
+            "body.length",
+            body.length
+                .ok_or_else(|| self.error("body.length", Problem::Missing("body.length".into())))?,
+        )?;
+        let prime = units == Units::Prime;
+        let pick = |names: [&'static str; 2]| if prime { names[1] } else { names[0] };
+        let masses = [("mass", body.mass), ("mass_prime", body.mass_prime)];
+        let (_, mass) = self.one_of(&masses, &[pick(["mass", "mass_prime"])])?;
+        let mass = self.positive(&format!("body.{}", pick(["mass", "mass_prime"])), mass)?;
+        let inertias = [
+            ("izz", body.izz),
+            ("izz_midship", body.izz_midship),
+            ("izz_prime", body.izz_prime),
+            ("izz_midship_prime", body.izz_midship_prime),
+        ];
+        let wanted = if prime {
+            ["izz_prime", "izz_midship_prime"]
+        } else {
+            ["izz", "izz_midship"]
+        };
+        let (index, inertia) = self.one_of(&inertias, &wanted)?;
+        let inertia = self.positive(&format!("body.{}", inertias[index].0), inertia)?;
+        let about = if index % 2 == 0 {
+            YawInertia::AboutG
+        } else {
+            YawInertia::AboutMidship
+        };
+        let centres = [("x_g", body.x_g), ("x_g_prime", body.x_g_prime)];
+        let (_, x_g) = self.one_of(&centres, &[pick(["x_g", "x_g_prime"])])?;
+        let x_g = self.finite(&format!("body.{}", pick(["x_g", "x_g_prime"])), x_g)?;
+        if about == YawInertia::AboutMidship && inertia <= mass * x_g * x_g {
+            return Err(self.invalid(
+                &format!("body.{}", inertias[index].0),
+                format!(
+                    "the yaw inertia about midship must exceed M x_G² = {:e}: the inertia \
+                     about G, I_O − M x_G², would not be positive",
+                    mass * x_g * x_g
+                ),
+            ));
+        }
+        let ship = ShipBody {
+            mass,
+            yaw_inertia: inertia,
+            yaw_inertia_about: about,
+            x_g,
+        };
+        Ok((ship, length))
+    }
+
+    fn table(&self, file: &ShipSceneFile) -> Result<(ShipTable, f64), SceneError> {
+        let hydro = &file.hydrodynamics;
+        let units = match hydro.units.as_str() {
+            "prime" => Units::Prime,
+            "dimensional" => Units::Dimensional,
+            other => {
+                return Err(self.invalid(
+                    "hydrodynamics.units",
+                    format!("`{other}`: expected `prime` or `dimensional`"),
+                ));
+            }
+        };
+        let rigid_body_terms = match hydro.rigid_body_terms.as_str() {
+            "folded" => RigidBodyTerms::Folded,
+            "separate" => RigidBodyTerms::Separate,
+            other => {
+                return Err(self.invalid(
+                    "hydrodynamics.rigid_body_terms",
+                    format!("`{other}`: expected `folded` or `separate`"),
+                ));
+            }
+        };
+        let density = match (units, hydro.density) {
+            (Units::Prime, Some(rho)) => Some(self.positive("hydrodynamics.density", rho)?),
+            (Units::Prime, None) => {
+                return Err(self.error(
+                    "hydrodynamics.density",
+                    Problem::Missing("the prime system needs ρ".into()),
+                ));
+            }
+            (Units::Dimensional, Some(_)) => {
+                return Err(self.invalid(
+                    "hydrodynamics.density",
+                    "only the prime system uses ρ: a dimensional table would ignore it",
+                ));
+            }
+            (Units::Dimensional, None) => None,
+        };
+        let design_speed = self.positive("hydrodynamics.design_speed", hydro.design_speed)?;
+        let (body, length) = self.body(&file.body, units)?;
+        let given = GivenTable {
+            units,
+            body,
+            density,
+            length: (units == Units::Prime).then_some(length),
+            design_speed,
+            rigid_body_terms,
+            coefficients: hydro.coefficients.clone(),
+        };
+        let table = ShipTable::new(&given).map_err(|e| match e {
+            ShipError::Invalid { key, reason } => self.invalid(&key, reason),
+            other => self.invalid("hydrodynamics", other.to_string()),
+        })?;
+        Ok((table, length))
+    }
+
+    fn rudder(&self, rudder: &RudderTable) -> Result<Rudder, SceneError> {
+        let angle = |key: &str, value: Option<f64>| {
+            value
+                .map(|v| {
+                    self.positive(&format!("rudder.{key}"), v)
+                        .map(f64::to_radians)
+                })
+                .transpose()
+        };
+        let max_angle = angle("max_deg", rudder.max_deg)?;
+        let max_rate = angle("max_rate_deg_s", rudder.max_rate_deg_s)?;
+        let time_constant = rudder
+            .time_constant_s
+            .map(|t| self.positive("rudder.time_constant_s", t))
+            .transpose()?;
+        if max_rate.is_some() && time_constant.is_none() {
+            return Err(self.invalid(
+                "rudder.max_rate_deg_s",
+                "a rate limit acts on the lag's rate: give rudder.time_constant_s too",
+            ));
+        }
+        Ok(Rudder {
+            max_angle,
+            max_rate,
+            time_constant,
+        })
+    }
+
+    fn manoeuvre(
+        &self,
+        index: usize,
+        table: &ManoeuvreTable,
+        step: f64,
+        rudder: &Rudder,
+    ) -> Result<Manoeuvre, SceneError> {
+        let key = |k: &str| format!("manoeuvre[{index}].{k}");
+        let required = |k: &str, v: Option<f64>| {
+            v.ok_or_else(|| self.error(&key(k), Problem::Missing(key(k))))
+        };
+        let refuse = |k: &str, given: bool| {
+            if given {
+                Err(self.invalid(&key(k), format!("not a key of a {} manoeuvre", table.kind)))
+            } else {
+                Ok(())
+            }
+        };
+        let rudder_angle = |v: Option<f64>| -> Result<f64, SceneError> {
+            let degrees = self.finite(&key("rudder_deg"), required("rudder_deg", v)?)?;
+            if degrees == 0.0 {
+                return Err(self.invalid(&key("rudder_deg"), "a manoeuvre needs a rudder angle"));
+            }
+            Ok(degrees.to_radians())
+        };
+        let execute = self.finite(&key("execute_s"), table.execute_s.unwrap_or(0.0))?;
+        if execute < 0.0 {
+            return Err(self.invalid(&key("execute_s"), "the run starts at 0 s"));
+        }
+        let duration = self.positive(&key("duration_s"), table.duration_s)?;
+        if duration <= execute {
+            return Err(self.invalid(&key("duration_s"), "the run must go on past the execute"));
+        }
+        if duration / step > MAX_STEPS {
+            return Err(self.invalid(
+                &key("duration_s"),
+                format!(
+                    "{} steps of {step} s: more than {MAX_STEPS:e}",
+                    duration / step
+                ),
+            ));
+        }
+        let (kind, default_name) = match table.kind.as_str() {
+            "turning_circle" => {
+                refuse("heading_deg", table.heading_deg.is_some())?;
+                refuse("release_s", table.release_s.is_some())?;
+                refuse("times_s", table.times_s.is_some())?;
+                refuse("series_deg", table.series_deg.is_some())?;
+                let rudder = rudder_angle(table.rudder_deg)?;
+                let name = format!("turning_circle_{}", table.rudder_deg.unwrap_or(0.0));
+                (ManoeuvreKind::TurningCircle { rudder }, name)
+            }
+            "zigzag" => {
+                refuse("release_s", table.release_s.is_some())?;
+                refuse("times_s", table.times_s.is_some())?;
+                refuse("series_deg", table.series_deg.is_some())?;
+                let rudder = rudder_angle(table.rudder_deg)?;
+                let heading = self.positive(
+                    &key("heading_deg"),
+                    required("heading_deg", table.heading_deg)?,
+                )?;
+                let name = format!(
+                    "zigzag_{}_{}",
+                    table.rudder_deg.unwrap_or(0.0).abs(),
+                    heading
+                );
+                let heading = heading.to_radians();
+                (ManoeuvreKind::ZigZag { rudder, heading }, name)
+            }
+            "pull_out" => {
+                refuse("heading_deg", table.heading_deg.is_some())?;
+                refuse("times_s", table.times_s.is_some())?;
+                refuse("series_deg", table.series_deg.is_some())?;
+                let rudder = rudder_angle(table.rudder_deg)?;
+                let release =
+                    self.finite(&key("release_s"), required("release_s", table.release_s)?)?;
+                if release <= execute || release >= duration {
+                    return Err(self.invalid(
+                        &key("release_s"),
+                        "the release must come after the execute and before the end",
+                    ));
+                }
+                let name = format!("pull_out_{}", table.rudder_deg.unwrap_or(0.0));
+                (ManoeuvreKind::PullOut { rudder, release }, name)
+            }
+            "rudder_series" => {
+                refuse("rudder_deg", table.rudder_deg.is_some())?;
+                refuse("heading_deg", table.heading_deg.is_some())?;
+                refuse("release_s", table.release_s.is_some())?;
+                let times = table
+                    .times_s
+                    .clone()
+                    .ok_or_else(|| self.error(&key("times_s"), Problem::Missing(key("times_s"))))?;
+                let degrees = table.series_deg.clone().ok_or_else(|| {
+                    self.error(&key("series_deg"), Problem::Missing(key("series_deg")))
+                })?;
+                let angles = degrees.iter().map(|d| d.to_radians()).collect();
+                let series = Series::new(times, angles).ok_or_else(|| {
+                    self.invalid(
+                        &key("times_s"),
+                        "times_s and series_deg must be finite, of equal length, at least one, \
+                         the times strictly increasing",
+                    )
+                })?;
+                let _ = rudder;
+                (ManoeuvreKind::Series(series), "rudder_series".to_owned())
+            }
+            other => {
+                return Err(self.invalid(
+                    &key("kind"),
+                    format!(
+                        "`{other}`: expected turning_circle, zigzag, pull_out or rudder_series"
+                    ),
+                ));
+            }
+        };
+        let name = table.name.clone().unwrap_or(default_name);
+        let valid = !name.is_empty()
+            && name
+                .chars()
+                .all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-' || c == '.')
+            && name != "."
+            && name != ".."
+            && name != "imo";
+        if !valid {
+            return Err(self.invalid(
+                &key("name"),
+                format!("`{name}` must be a folder name: letters, digits, _ - . (and not `imo`)"),
+            ));
+        }
+        Ok(Manoeuvre {
+            name,
+            kind,
+            execute,
+            duration,
+        })
+    }
+}
+
+impl ShipScene {
+    /// Reads and checks a ship scene file.
+    pub fn load(path: &Path) -> Result<Self, SceneError> {
+        let name = path.display().to_string();
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| SceneError::new(&name, "", Problem::Read(e)))?;
+        Self::parse(&text, &name)
+    }
+
+    /// Reads and checks ship scene text; `name` is how errors name it.
+    pub fn parse(text: &str, name: &str) -> Result<Self, SceneError> {
+        let deserializer = toml::Deserializer::parse(text)
+            .map_err(|e| SceneError::new(name, "", Problem::Syntax(e.to_string())))?;
+        let file: ShipSceneFile = serde_path_to_error::deserialize(deserializer).map_err(|e| {
+            let key = e.path().to_string();
+            let key = if key == "." { String::new() } else { key };
+            let message = e.into_inner().message().to_owned();
+            let problem = if message.starts_with("missing field") {
+                Problem::Missing(message)
+            } else {
+                Problem::Schema(message)
+            };
+            SceneError::new(name, &key, problem)
+        })?;
+        Self::from_file(&file, name)
+    }
+
+    /// Checks the tables of a ship scene file.
+    pub fn from_file(file: &ShipSceneFile, name: &str) -> Result<Self, SceneError> {
+        let check = Check { name };
+        if file.model.family != "planar-midship" {
+            return Err(check.invalid(
+                "model.family",
+                format!(
+                    "`{}`: a scene with [hydrodynamics] runs 4.46 at midship, family \
+                     `planar-midship`",
+                    file.model.family
+                ),
+            ));
+        }
+        let (table, length) = check.table(file)?;
+        let rudder = check.rudder(&file.rudder)?;
+        if file.integrator.method != "rk4" {
+            return Err(check.invalid(
+                "integrator.method",
+                format!(
+                    "`{}`: a ship scene steps with rk4, landing each step on the manoeuvre's \
+                     events",
+                    file.integrator.method
+                ),
+            ));
+        }
+        let step = check.positive("integrator.step", file.integrator.step)?;
+        let every = match file.output.every {
+            Some(every) => check.positive("output.every", every)?,
+            None => 0.0,
+        };
+        if file.manoeuvre.is_empty() {
+            return Err(check.error(
+                "manoeuvre",
+                Problem::Missing("at least one [[manoeuvre]]".into()),
+            ));
+        }
+        let mut manoeuvres: Vec<Manoeuvre> = Vec::new();
+        for (index, table) in file.manoeuvre.iter().enumerate() {
+            let manoeuvre = check.manoeuvre(index, table, step, &rudder)?;
+            if manoeuvres.iter().any(|m| m.name == manoeuvre.name) {
+                return Err(check.invalid(
+                    &format!("manoeuvre[{index}].name"),
+                    format!("`{}` is taken by an earlier manoeuvre", manoeuvre.name),
+                ));
+            }
+            manoeuvres.push(manoeuvre);
+        }
+        Ok(ShipScene {
+            title: file.title.clone(),
+            length,
+            table,
+            rudder,
+            step,
+            every,
+            manoeuvres,
+        })
+    }
+
+    /// The approach: straight ahead at U₀, at the origin, heading north, rudder amidships.
+    pub fn start(&self) -> [f64; 7] {
+        [self.table.design_speed, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]
+    }
+}
