@@ -22,6 +22,9 @@ use eom::mass::{BodyFile, BodyFileError, Mesh, MeshMass};
 use eom::models::{Family, Kinematics, Symmetry};
 use eom::run::{Row, Sink};
 use eom::scene::{Problem, Scene, SceneError, sweep};
+use eom::ship::linear::LinearModel;
+use eom::ship::manoeuvre::{Manoeuvre, run as run_manoeuvre};
+use eom::ship::{ShipModel, ShipScene};
 use nalgebra::Vector3;
 use proptest::prelude::*;
 use proptest::sample::{Index, select};
@@ -1257,6 +1260,49 @@ fn scene_text(text: &str, run: bool, tally: &mut Tally) -> Result<(), TestCaseEr
             }
         }
         Err(error) => check_scene_error(&error, text, tally)?,
+    }
+    ship_scene_text(text, run, tally)
+}
+
+/// The same text as a ship scene: read, and where it reads, its model built and proved, its
+/// linear model taken and (for `run`) twenty seconds of its first manoeuvre run.
+fn ship_scene_text(text: &str, run: bool, tally: &mut Tally) -> Result<(), TestCaseError> {
+    let scene = match guarded("ShipScene::parse", text, || {
+        ShipScene::parse(text, "fuzz.toml")
+    })? {
+        Ok(scene) => scene,
+        Err(error) => return check_scene_error(&error, text, tally),
+    };
+    tally.count("ship scene read");
+    let model = guarded("ShipModel::new", text, || ShipModel::new(&scene.table))?;
+    let model = match model {
+        Ok(model) => model,
+        Err(error) if !error.to_string().is_empty() => return Ok(()),
+        Err(_) => return Err(failure("ship model", text, "an empty error")),
+    };
+    guarded("LinearModel", text, || {
+        let linear = LinearModel::closed_form(&scene.table);
+        (
+            linear.nomoto(),
+            linear.pivot_point(),
+            linear.stability_index(),
+        )
+    })?;
+    if run {
+        let first = &scene.manoeuvres[0];
+        let short = Manoeuvre {
+            duration: first.duration.min(first.execute + 20.0),
+            ..first.clone()
+        };
+        let step = scene.step.max(short.duration / 1e4);
+        let result = guarded("ship run", text, || {
+            run_manoeuvre(&model, &scene.rudder, &short, scene.start(), step, |_| {})
+        })?;
+        tally.count(if result.is_ok() {
+            "ship run ok"
+        } else {
+            "ship run stopped"
+        });
     }
     Ok(())
 }

@@ -179,6 +179,8 @@ pub struct ManoeuvreRun {
 struct Log {
     /// The state at the execute.
     execute: Option<DriveState>,
+    /// The state at a pull-out's release.
+    release: Option<DriveState>,
     /// (t, state) at each watch that fired, in order, with what fired.
     events: Vec<(Watch, f64, DriveState)>,
 }
@@ -394,6 +396,7 @@ impl<'a> Driver<'a> {
             if let ManoeuvreKind::PullOut { release, .. } = self.manoeuvre.kind
                 && time == release
             {
+                self.log.release = Some(*y);
                 self.set_command(0.0, y);
             }
             if let ManoeuvreKind::Series(series) = &self.manoeuvre.kind
@@ -461,7 +464,9 @@ impl<'a> Driver<'a> {
         match self.manoeuvre.kind {
             ManoeuvreKind::TurningCircle { .. } => self.turning_figures(&execute, end),
             ManoeuvreKind::ZigZag { heading, .. } => self.zigzag_figures(&execute, heading),
-            ManoeuvreKind::PullOut { release, .. } => pull_out_figures(end, release),
+            ManoeuvreKind::PullOut { release, .. } => {
+                pull_out_figures(self.log.release.as_ref(), end, release)
+            }
             ManoeuvreKind::Series(_) => Figures::default(),
         }
     }
@@ -579,10 +584,16 @@ impl<'a> Driver<'a> {
     }
 }
 
-fn pull_out_figures(end: &DriveState, release: f64) -> Figures {
+/// A pull-out: the yaw rate when the rudder is released and at the end; a course-stable ship's
+/// dies out, an unstable one's settles to a residual turn.
+fn pull_out_figures(at_release: Option<&DriveState>, end: &DriveState, release: f64) -> Figures {
     Figures {
         values: vec![
             ("release_s", Some(release)),
+            (
+                "yaw_rate_at_release_deg_s",
+                at_release.map(|y| y[2].to_degrees()),
+            ),
             ("final_yaw_rate_deg_s", Some(end[2].to_degrees())),
         ],
         side: None,

@@ -1,0 +1,166 @@
+//! `eom run` and `eom linear` on ship scenes, end to end through the binary: the summary's
+//! figures, IMO verdicts and convergence, the files of each manoeuvre, and the errors.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn eom(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_eom"))
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+fn scene(name: &str) -> String {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenes")
+        .join(name)
+        .display()
+        .to_string()
+}
+
+fn folder(test: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join("cli_ship")
+        .join(test);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn succeeded(output: &Output) -> String {
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    String::from_utf8(output.stdout.clone()).unwrap()
+}
+
+#[test]
+fn the_mariner_runs_its_manoeuvres_and_is_judged() {
+    let out = folder("mariner");
+    let stdout = succeeded(&eom(&[
+        "run",
+        &scene("mariner.toml"),
+        "--out",
+        out.to_str().unwrap(),
+    ]));
+    assert!(stdout.contains("IMO MSC.137(76)"), "{stdout}");
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let manoeuvre = &summary["manoeuvre"];
+    let turn = &manoeuvre["turning_circle_35"];
+    for key in [
+        "advance_90_m",
+        "transfer_90_m",
+        "tactical_diameter_m",
+        "steady_turning_radius_m",
+        "steady_speed_m_s",
+        "t_90_s",
+        "t_180_s",
+    ] {
+        let value = turn[key]
+            .as_f64()
+            .unwrap_or_else(|| panic!("{key}: {turn}"));
+        assert!(value > 0.0, "{key} = {value}");
+        let moved = turn["half_step_difference"][key].as_f64().unwrap();
+        assert!(moved < 0.01, "{key} moves {moved} when the step is halved");
+    }
+    assert_eq!(turn["side"], "port");
+    // The transfer at 180° is more than the transfer at 90°, and the steady diameter is near
+    // the tactical diameter (the turn has settled well before its third half-circle).
+    let number = |v: &serde_json::Value| v.as_f64().unwrap();
+    assert!(number(&turn["tactical_diameter_m"]) > number(&turn["transfer_90_m"]));
+    for name in ["zigzag_10_10", "zigzag_20_20"] {
+        let zigzag = &manoeuvre[name];
+        for key in [
+            "first_overshoot_deg",
+            "second_overshoot_deg",
+            "reach_time_s",
+            "period_s",
+        ] {
+            assert!(number(&zigzag[key]) > 0.0, "{name} {key}: {zigzag}");
+        }
+    }
+    let imo = manoeuvre["imo"].as_array().unwrap();
+    let names: Vec<&str> = imo
+        .iter()
+        .map(|c| c["criterion"].as_str().unwrap())
+        .collect();
+    assert_eq!(
+        names,
+        [
+            "advance",
+            "tactical_diameter",
+            "initial_turning",
+            "first_overshoot_10_10",
+            "second_overshoot_10_10",
+            "first_overshoot_20_20"
+        ]
+    );
+    for criterion in imo {
+        let pass = number(&criterion["value"]) <= number(&criterion["limit"]);
+        assert_eq!(criterion["pass"].as_bool(), Some(pass), "{criterion}");
+    }
+    // L/V = 20.85 s: the 10°/10° first-overshoot limit is 5 + ½ L/V degrees.
+    let first = imo
+        .iter()
+        .find(|c| c["criterion"] == "first_overshoot_10_10")
+        .unwrap();
+    assert!((number(&first["limit"]) - (5.0 + 0.5 * 160.93 / 7.7175)).abs() < 1e-12);
+    assert!(summary["model"]["conversion"].as_array().unwrap().len() == 6);
+    assert_eq!(summary["linear"]["course_stable"], true);
+    for name in ["turning_circle_35", "zigzag_10_10", "zigzag_20_20"] {
+        let dir = out.join(name);
+        let csv = std::fs::read_to_string(dir.join("trajectory.csv")).unwrap();
+        assert!(csv.starts_with("t,u,v,r,x,y,psi,delta,command,distance\n"));
+        for svg in ["track.svg", "heading.svg"] {
+            let text = std::fs::read_to_string(dir.join(svg)).unwrap();
+            let document = roxmltree::Document::parse(&text).unwrap();
+            assert!(document.descendants().any(|n| n.has_tag_name("polyline")));
+        }
+    }
+    let track = std::fs::read_to_string(out.join("turning_circle_35/track.svg")).unwrap();
+    assert!(
+        track.contains("tactical diameter"),
+        "the 180° point is marked"
+    );
+}
+
+#[test]
+fn eom_linear_says_the_esso_osaka_is_course_unstable() {
+    let stdout = succeeded(&eom(&["linear", &scene("esso_osaka.toml"), "--json"]));
+    let linear: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    assert_eq!(linear["course_stable"], false, "{linear}");
+    assert!(linear["stability_index"].as_f64().unwrap() < 0.0);
+    assert!(linear["largest_relative_difference"].as_f64().unwrap() < 1e-9);
+    let text = succeeded(&eom(&["linear", &scene("mariner.toml")]));
+    assert!(text.contains(": stable"), "{text}");
+}
+
+#[test]
+fn a_bad_ship_scene_exits_3_naming_the_key() {
+    let dir = folder("bad");
+    let text = std::fs::read_to_string(scene("mariner.toml"))
+        .unwrap()
+        .replace("Yvvr = ", "Yvvq = ");
+    let path = dir.join("bad.toml");
+    std::fs::write(&path, text).unwrap();
+    let output = eom(&[
+        "run",
+        path.to_str().unwrap(),
+        "--out",
+        dir.join("out").to_str().unwrap(),
+    ]);
+    assert_eq!(output.status.code(), Some(3));
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains("hydrodynamics.coefficients.Yvvq"),
+        "{stderr}"
+    );
+    assert!(
+        !dir.join("out").exists(),
+        "nothing is written for a scene that cannot run"
+    );
+}
