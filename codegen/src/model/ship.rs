@@ -89,6 +89,27 @@ impl Term {
         format!("{}_{letters}", self.force.letter())
     }
 
+    /// The monomial it multiplies, with the variables named as given: `v²r`, `1` for a bias.
+    pub fn monomial(&self, names: [&str; 4]) -> String {
+        let superscript = |power: u8| match power {
+            1 => String::new(),
+            2 => "²".into(),
+            3 => "³".into(),
+            n => format!("^{n}"),
+        };
+        let factors: String = names
+            .iter()
+            .zip(self.powers)
+            .filter(|(_, power)| *power > 0)
+            .map(|(name, power)| format!("{name}{}", superscript(power)))
+            .collect();
+        if factors.is_empty() {
+            "1".into()
+        } else {
+            factors
+        }
+    }
+
     /// The total power of u, v and r: the speed-like variables the prime system scales by U.
     fn kinematic_degree(&self) -> i32 {
         i32::from(self.powers[0]) + i32::from(self.powers[1]) + i32::from(self.powers[2])
@@ -164,13 +185,17 @@ impl ShipSpec {
                 ),
             ),
         ];
-        for symbol in ADDED_MASS {
+        let added_mass = [
+            "added mass X_u̇: surge force per surge acceleration",
+            "added mass Y_v̇: sway force per sway acceleration",
+            "added mass Y_ṙ: sway force per yaw acceleration",
+            "added mass N_v̇: yaw moment per sway acceleration",
+            "added mass N_ṙ: yaw moment per yaw acceleration",
+        ];
+        for (symbol, doc) in ADDED_MASS.iter().zip(added_mass) {
             parameters.push(Parameter {
                 symbol: Cow::Borrowed(symbol),
-                doc: Cow::Borrowed(unit(
-                    "added-mass derivative",
-                    "added-mass derivative, prime",
-                )),
+                doc: Cow::Owned(format!("{doc}{}", unit("", " (prime)"))),
             });
         }
         if prime {
@@ -185,11 +210,17 @@ impl ShipSpec {
             ));
         }
         for term in &self.terms {
+            let variables = match self.units {
+                Units::Dimensional => ["u", "v", "r", "δ"],
+                Units::Prime => ["u′", "v′", "r′", "δ"],
+            };
             parameters.push(Parameter {
                 symbol: Cow::Owned(term.symbol()),
-                doc: Cow::Borrowed(unit(
-                    "hydrodynamic derivative",
-                    "hydrodynamic derivative, prime",
+                doc: Cow::Owned(format!(
+                    "hydrodynamic derivative: the coefficient of {} in {}{}",
+                    term.monomial(variables),
+                    term.force.letter(),
+                    unit("", " (prime)")
                 )),
             });
         }
@@ -337,8 +368,8 @@ fn parameter(symbol: &'static str, doc: &'static str) -> Parameter {
 }
 
 /// The ship model of a spec: 4.46 with its forces, solved for (u̇, v̇, ṙ) with the constant
-/// mass matrix inverted once, the track 4.44, the heading, and the rudder angle driven by the
-/// input `delta_rate`.
+/// mass matrix inverted once (surge alone, sway and yaw as a 2×2 block), the track 4.44, the
+/// heading, and the rudder angle driven by the input `delta_rate`.
 pub fn ship(name: &str, spec: &ShipSpec) -> Result<System, BuildError> {
     let symbolic = |source| BuildError::Symbolic {
         model: name.into(),
@@ -352,9 +383,12 @@ pub fn ship(name: &str, spec: &ShipSpec) -> Result<System, BuildError> {
             residual: twice.symbol(),
         });
     }
-    let residuals = spec.residuals().map_err(symbolic)?;
-    let solution = solve_linear(name, &residuals, &["u_dot", "v_dot", "r_dot"], "inv_det")?;
-    let mut outputs = solution.accelerations(&solution.rest);
+    // The mass matrix is block diagonal: surge alone, then sway and yaw together.
+    let [surge, sway, yaw] = spec.residuals().map_err(symbolic)?;
+    let surge = solve_linear(name, &[surge], &["u_dot"], "inv_surge_mass")?;
+    let sway_yaw = solve_linear(name, &[sway, yaw], &["v_dot", "r_dot"], "inv_det")?;
+    let mut outputs = surge.accelerations(&surge.rest);
+    outputs.extend(sway_yaw.accelerations(&sway_yaw.rest));
     let velocity = Vec3::new(Expr::symbol("u"), Expr::symbol("v"), Expr::zero());
     let [x_rate, y_rate, _] = rotation_z("psi").mul_vec(&velocity).0;
     outputs.extend([
@@ -363,13 +397,16 @@ pub fn ship(name: &str, spec: &ShipSpec) -> Result<System, BuildError> {
         Expr::symbol("r"),
         Expr::symbol("delta_rate"),
     ]);
-    let coefficient_names = inverse_names(&solution.inverse);
+    let mut coefficient_names = inverse_names(&surge.inverse, &["u"]);
+    coefficient_names.extend(inverse_names(&sway_yaw.inverse, &["v", "r"]));
+    let mut reciprocals = surge.reciprocals.clone();
+    reciprocals.extend(sway_yaw.reciprocals.iter().cloned());
     Ok(System {
         name: name.into(),
         title: "Ship manoeuvring at midship: 4.46 with hydrodynamic forces".into(),
         equations: vec!["4.45", "4.46", "4.44"],
         parameters: spec.parameters(),
-        reciprocals: solution.reciprocals.clone(),
+        reciprocals,
         state: STATE.to_vec(),
         inputs: spec.inputs(),
         stages: vec![],
@@ -398,8 +435,8 @@ pub fn ship(name: &str, spec: &ShipSpec) -> Result<System, BuildError> {
     })
 }
 
-fn inverse_names(inverse: &[Vec<Expr>]) -> Vec<CoefficientName> {
-    let axes = ["u", "v", "r"];
+/// Names for the entries of a block's inverse mass matrix, rows and columns named by `axes`.
+fn inverse_names(inverse: &[Vec<Expr>], axes: &[&str]) -> Vec<CoefficientName> {
     let mut names = Vec::new();
     for (i, row) in inverse.iter().enumerate() {
         for (j, value) in row.iter().enumerate().filter(|(_, v)| !v.is_zero()) {
