@@ -262,17 +262,23 @@ fn a_zigzag_reverses_exactly_at_the_heading() {
     assert!(reversals >= 4, "{reversals} reversals");
 }
 
-/// A ship without bias terms has a polynomial odd in (v, r, δ) for Y and N and even for X: a
-/// turn to starboard is the turn to port mirrored, y → −y, ψ → −ψ, to round-off.
-#[test]
-fn port_and_starboard_turns_mirror_each_other() {
+/// The Mariner without its bias terms (Y0, Y0u, Y0uu, N0, …: the propeller's asymmetry, which
+/// turns it at δ = 0).
+fn unbiased_mariner() -> ShipScene {
     let text = std::fs::read_to_string("scenes/mariner.toml").unwrap();
     let unbiased: String = text
         .lines()
         .filter(|line| !["Y0", "N0"].iter().any(|bias| line.starts_with(bias)))
         .collect::<Vec<_>>()
         .join("\n");
-    let scene = ShipScene::parse(&unbiased, "unbiased").unwrap();
+    ShipScene::parse(&unbiased, "unbiased").unwrap()
+}
+
+/// A ship without bias terms has a polynomial odd in (v, r, δ) for Y and N and even for X: a
+/// turn to starboard is the turn to port mirrored, y → −y, ψ → −ψ, to round-off.
+#[test]
+fn port_and_starboard_turns_mirror_each_other() {
+    let scene = unbiased_mariner();
     assert!(
         scene
             .table
@@ -486,4 +492,74 @@ duration_s = 100.0
             rb[i]
         );
     }
+}
+
+/// A rudder without a lag follows a piecewise-linear series exactly: RK4 integrates the
+/// series' slope, constant on each segment, without error, and the run steps onto each
+/// breakpoint.
+#[test]
+fn a_rudder_without_lag_follows_its_series() {
+    let text = std::fs::read_to_string("scenes/mariner.toml").unwrap();
+    let start = text.find("[rudder]").unwrap();
+    let end = text.find("[integrator]").unwrap();
+    let ideal = format!(
+        "{}[rudder]\nmax_deg = 40.0\n\n{}",
+        &text[..start],
+        &text[end..]
+    );
+    let scene = ShipScene::parse(&ideal, "ideal rudder").unwrap();
+    let model = ShipModel::new(&scene.table).unwrap();
+    let series = eom::ship::Series::new(
+        vec![5.0, 20.0, 32.5, 50.0],
+        [0.0, 15.0, -20.0, 0.0].map(f64::to_radians).to_vec(),
+    )
+    .unwrap();
+    let manoeuvre = Manoeuvre {
+        name: "series".into(),
+        kind: ManoeuvreKind::Series(series.clone()),
+        execute: 0.0,
+        duration: 60.0,
+    };
+    let (samples, _) = run_to_end(&scene, &model, &manoeuvre, 0.3);
+    for breakpoint in [5.0, 20.0, 32.5, 50.0] {
+        assert!(
+            samples.iter().any(|s| s.t == breakpoint),
+            "no sample at {breakpoint} s"
+        );
+    }
+    for sample in &samples {
+        let wanted = series.angle(sample.t);
+        assert!(
+            (sample.state[6] - wanted).abs() < 1e-14,
+            "t = {}: δ = {} against {wanted}",
+            sample.t,
+            sample.state[6]
+        );
+    }
+}
+
+/// A pull-out tells the two ships apart: the Mariner's yaw rate dies out after the rudder is
+/// amidships (to 1 % of what it was at the release; without its bias terms, which would hold
+/// it in a turn of their own); the Esso Osaka's settles to a turn.
+#[test]
+fn a_pull_out_dies_out_on_a_stable_ship_only() {
+    let pull_out = Manoeuvre {
+        name: "pull_out".into(),
+        kind: ManoeuvreKind::PullOut {
+            rudder: 20f64.to_radians(),
+            release: 300.0,
+        },
+        execute: 0.0,
+        duration: 1500.0,
+    };
+    let residual = |scene: ShipScene| {
+        let model = ShipModel::new(&scene.table).unwrap();
+        let (_, figures) = run_to_end(&scene, &model, &pull_out, scene.step);
+        let at_release = figures.get("yaw_rate_at_release_deg_s").unwrap();
+        figures.get("final_yaw_rate_deg_s").unwrap() / at_release
+    };
+    let mariner = residual(unbiased_mariner());
+    assert!(mariner.abs() < 0.01, "Mariner: {mariner}");
+    let esso = residual(scene("esso_osaka.toml"));
+    assert!(esso > 0.1, "Esso Osaka: {esso}");
 }
