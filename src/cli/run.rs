@@ -192,6 +192,9 @@ fn execute(
     watch_signals();
     if eom::ship::scene::is_ship_scene(text) {
         ShipScene::parse(text, name)?;
+        if shard.is_some() {
+            bail!("--shard splits a [sweep]; a ship scene has none");
+        }
         prepare_folder(out, force)?;
         return super::ship::execute(text, name, out);
     }
