@@ -8,10 +8,9 @@
 //!
 //! The constants are written as IEEE-754 bit patterns, the form fdlibm documents them in.
 
-use core::f64::consts::{FRAC_2_PI, FRAC_PI_4};
+use crate::lanes::{Lane, SIGN_BIT, place, quadrant};
+use core::f64::consts::FRAC_PI_4;
 
-/// 1.5·2⁵²: adding and subtracting it rounds an f64 below 2⁵¹ to an integer.
-const ROUNDER: f64 = f64::from_bits(0x4338_0000_0000_0000);
 /// The first 33 bits of π/2: `k·PIO2_1` is exact for |k| ≤ 2¹⁹.
 const PIO2_1: f64 = f64::from_bits(0x3FF9_21FB_5440_0000);
 /// The next 33 bits of π/2: `k·PIO2_2` is exact too.
@@ -49,9 +48,6 @@ const C5: f64 = f64::from_bits(0x3E21_EE9E_BDB4_B1C4);
 /// fdlibm `__kernel_cos`, r¹⁴.
 const C6: f64 = f64::from_bits(0xBDA8_FAE9_BE88_38D4);
 
-/// The sign bit of an f64.
-const SIGN_BIT: u64 = 1 << 63;
-
 /// `(sin x, cos x)` of every `x`, from one argument reduction each: the kernel itself, which
 /// [`sin_cos`](crate::sin_cos) calls for `f64` and `f32` (and which the feature
 /// `platform-trig` leaves as it is).
@@ -60,10 +56,7 @@ const SIGN_BIT: u64 = 1 << 63;
 /// whether all are in the kernel's range.
 #[inline(always)]
 pub fn sin_cos<const N: usize>(x: [f64; N]) -> [(f64, f64); N] {
-    let outside = x.iter().fold(false, |outside, &x| {
-        let magnitude = x.to_bits() & !SIGN_BIT;
-        outside | (magnitude.wrapping_sub(TINY.to_bits()) > LIMIT.to_bits() - TINY.to_bits())
-    });
+    let outside = !all_in_range(&x);
     let mut pairs = [(0.0, 0.0); N];
     for (pair, &x) in pairs.iter_mut().zip(&x) {
         *pair = if outside {
@@ -75,6 +68,16 @@ pub fn sin_cos<const N: usize>(x: [f64; N]) -> [(f64, f64); N] {
         };
     }
     pairs
+}
+
+/// Whether every angle is in the kernel's range, TINY ≤ |x| ≤ LIMIT (NaN and the infinities
+/// are not): one unsigned comparison of the bits of each |x|, which order as the magnitudes do.
+#[inline(always)]
+pub(crate) fn all_in_range<const N: usize>(x: &[f64; N]) -> bool {
+    !x.iter().fold(false, |outside, &x| {
+        let magnitude = x.to_bits() & !SIGN_BIT;
+        outside | (magnitude.wrapping_sub(TINY.to_bits()) > LIMIT.to_bits() - TINY.to_bits())
+    })
 }
 
 /// How [`in_range`] puts a reduced pair in its quadrant. With several angles, by bit masks,
@@ -94,20 +97,37 @@ fn in_range(x: f64, placement: Placement) -> (f64, f64) {
     if x.abs() <= FRAC_PI_4 {
         return (sin_reduced(x), cos_reduced(x));
     }
-    let shifted = x * FRAC_2_PI + ROUNDER;
-    let quadrant = shifted.to_bits();
-    let k = shifted - ROUNDER;
-    let r = ((x - k * PIO2_1) - k * PIO2_2) - k * PIO2_2T;
-    let (s, c) = (sin_reduced(r).to_bits(), cos_reduced(r).to_bits());
-    let (s, c) = if placement == Placement::Branch {
-        if quadrant & 1 == 0 { (s, c) } else { (c, s) }
+    if placement == Placement::Masks {
+        return reduce_and_place(x);
+    }
+    let (quadrant, r) = reduce(x);
+    let (s, c) = if quadrant & 1 == 0 {
+        (sin_reduced(r), cos_reduced(r))
     } else {
-        let swap = 0u64.wrapping_sub(quadrant & 1);
-        ((s & !swap) | (c & swap), (c & !swap) | (s & swap))
+        (cos_reduced(r), sin_reduced(r))
     };
     let sin_sign = (quadrant << 62) & SIGN_BIT;
     let cos_sign = (quadrant.wrapping_add(1) << 62) & SIGN_BIT;
-    (f64::from_bits(s ^ sin_sign), f64::from_bits(c ^ cos_sign))
+    (
+        f64::from_bits(s.to_bits() ^ sin_sign),
+        f64::from_bits(c.to_bits() ^ cos_sign),
+    )
+}
+
+/// The quadrant bits and `r = x − k·π/2`, in three steps (the first two products exact).
+#[inline(always)]
+fn reduce<V: Lane>(x: V) -> (V::Bits, V) {
+    let (bits, k) = quadrant(x);
+    let r = ((x - k * V::splat(PIO2_1)) - k * V::splat(PIO2_2)) - k * V::splat(PIO2_2T);
+    (bits, r)
+}
+
+/// Reduce, evaluate both polynomials, place by bit masks: for several angles side by side, and
+/// for lanes (where an angle within ±π/4 has k = 0 and comes back as it is).
+#[inline(always)]
+pub(crate) fn reduce_and_place<V: Lane>(x: V) -> (V, V) {
+    let (bits, r) = reduce(x);
+    place(bits, sin_reduced(r), cos_reduced(r))
 }
 
 /// Any angle: tiny ones, where sin x rounds to x and cos x to 1; NaN, infinite and beyond
@@ -128,23 +148,25 @@ fn one_at_a_time(x: f64) -> (f64, f64) {
 /// sin r for |r| ≤ π/4: `r + r³ P(r²)`, P of degree 5 in pairs (Estrin's scheme), so that the
 /// chain of dependent operations is four deep instead of seven.
 #[inline(always)]
-fn sin_reduced(r: f64) -> f64 {
+fn sin_reduced<V: Lane>(r: V) -> V {
+    let c = V::splat;
     let z = r * r;
     let w = z * z;
-    let p = (S1 + z * S2) + w * ((S3 + z * S4) + w * (S5 + z * S6));
+    let p = (c(S1) + z * c(S2)) + w * ((c(S3) + z * c(S4)) + w * (c(S5) + z * c(S6)));
     r + z * r * p
 }
 
 /// cos r for |r| ≤ π/4: `1 − r²/2 + r⁴ Q(r²)`, with the rounding error of `1 − r²/2` added
 /// back; Q in pairs as in [`sin_reduced`].
 #[inline(always)]
-fn cos_reduced(r: f64) -> f64 {
+fn cos_reduced<V: Lane>(r: V) -> V {
+    let c = V::splat;
     let z = r * r;
     let w = z * z;
-    let q = (C1 + z * C2) + w * ((C3 + z * C4) + w * (C5 + z * C6));
-    let half_z = 0.5 * z;
-    let head = 1.0 - half_z;
-    head + (((1.0 - head) - half_z) + w * q)
+    let q = (c(C1) + z * c(C2)) + w * ((c(C3) + z * c(C4)) + w * (c(C5) + z * c(C6)));
+    let half_z = c(0.5) * z;
+    let head = c(1.0) - half_z;
+    head + (((c(1.0) - head) - half_z) + w * q)
 }
 
 #[cfg(test)]
@@ -156,7 +178,7 @@ mod tests {
     #[test]
     fn constants_match_fdlibm_decimals() {
         assert_eq!(
-            FRAC_2_PI,
+            core::f64::consts::FRAC_2_PI,
             "6.36619772367581382433e-01".parse::<f64>().unwrap()
         );
         let decimals = [
@@ -190,9 +212,9 @@ mod tests {
             assert!(mantissa.trailing_zeros() >= 52 - 32, "{name}");
         }
         assert_eq!(PIO2_1 + PIO2_2 + PIO2_2T, core::f64::consts::FRAC_PI_2);
-        let k_max = (LIMIT * FRAC_2_PI).round();
+        let k_max = (LIMIT * core::f64::consts::FRAC_2_PI).round();
         assert!(k_max <= f64::from(1 << 19));
-        assert_eq!(ROUNDER, 1.5 * 2f64.powi(52));
+        assert_eq!(crate::lanes::ROUNDER, 1.5 * 2f64.powi(52));
         assert_eq!(TINY, 2f64.powi(-27));
     }
 }

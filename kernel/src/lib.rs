@@ -19,8 +19,10 @@
 //! same structure with musl's shorter polynomials for f32 (`__sindf`, `__cosdf`) and a two-step
 //! reduction, evaluated in f64 like musl's and rounded once, within one ulp of the correctly
 //! rounded pair and faster than the f64 kernel (which f32 went through before, widened and
-//! rounded, slower than f64 itself). Any other scalar — SIMD lanes, dual numbers — keeps its own `simd_sin_cos`: lanes have a
-//! vectorised one already, and the rounding trick would drop a dual number's derivative.
+//! rounded, slower than f64 itself). simba's SIMD lanes, `WideF64x4` and `WideF32x8`, run the
+//! same kernels lane by lane ([`sin_cos_f64x4`], [`sin_cos_f32x8`]), bit for bit what each
+//! lane's scalar would give. Any other scalar (dual numbers) keeps its own `simd_sin_cos`: the
+//! rounding trick would drop a dual number's derivative.
 //! Arguments beyond `2¹⁹·π/2`, where the two-part products stop being exact, and NaN or
 //! infinite ones go to the platform's f64 `sin_cos` unchanged (f32 ones widened, rounded).
 //!
@@ -44,21 +46,24 @@
 #![deny(missing_docs)]
 
 mod kernel;
+mod lanes;
 mod single;
 
 pub use kernel::sin_cos as sin_cos_f64;
+pub use lanes::{sin_cos_f32x8, sin_cos_f64x4};
 pub use single::sin_cos as sin_cos_f32;
 
 use core::any::Any;
-use simba::simd::SimdRealField;
+use simba::simd::{SimdRealField, WideF32x8, WideF64x4};
 
 /// `(sin a, cos a)` of every angle in `angles`, as the generated `rhs` computes them.
 ///
 /// For `f64` this is the kernel, [`sin_cos_f64`]: one argument reduction shared by sine and
 /// cosine, within 2 ulp of the platform's `sin` and `cos`, the angles side by side so that the
 /// compiler can pair them in SIMD registers. For `f32` it is [`sin_cos_f32`], the same for
-/// f32, within one ulp of the correctly rounded pair. Every other scalar (SIMD lanes, dual numbers) uses its own `simd_sin_cos`,
-/// and so does every scalar with the feature `platform-trig`.
+/// f32, within one ulp of the correctly rounded pair. For `WideF64x4` and `WideF32x8` the same,
+/// lane by lane. Every other scalar (dual numbers) uses its own `simd_sin_cos`, and so does
+/// every scalar with the feature `platform-trig`.
 #[inline(always)]
 pub fn sin_cos<T: SimdRealField + Copy, const N: usize>(angles: [T; N]) -> [(T, T); N] {
     let scalars: &dyn Any = &angles;
@@ -73,6 +78,24 @@ pub fn sin_cos<T: SimdRealField + Copy, const N: usize>(angles: [T; N]) -> [(T, 
         // f32 → f64 → f32 is exact, and the compiler drops it.
         for (pair, (s, c)) in pairs.iter_mut().zip(sin_cos_f32(*angles)) {
             *pair = (T::from_subset(&f64::from(s)), T::from_subset(&f64::from(c)));
+        }
+    } else if let Some(angles) = scalars.downcast_ref::<[WideF64x4; N]>() {
+        let lanes: &mut dyn Any = &mut pairs;
+        let lanes = lanes
+            .downcast_mut::<[(WideF64x4, WideF64x4); N]>()
+            .expect("T is WideF64x4");
+        for (pair, angle) in lanes.iter_mut().zip(angles) {
+            let (s, c) = sin_cos_f64x4(angle.0);
+            *pair = (WideF64x4(s), WideF64x4(c));
+        }
+    } else if let Some(angles) = scalars.downcast_ref::<[WideF32x8; N]>() {
+        let lanes: &mut dyn Any = &mut pairs;
+        let lanes = lanes
+            .downcast_mut::<[(WideF32x8, WideF32x8); N]>()
+            .expect("T is WideF32x8");
+        for (pair, angle) in lanes.iter_mut().zip(angles) {
+            let (s, c) = sin_cos_f32x8(angle.0);
+            *pair = (WideF32x8(s), WideF32x8(c));
         }
     } else {
         return each_own(angles);

@@ -12,10 +12,9 @@
 //!
 //! The constants are written as IEEE-754 bit patterns, as in the f64 kernel.
 
-use core::f64::consts::{FRAC_2_PI, FRAC_PI_4};
+use crate::lanes::{Lane, place, quadrant};
+use core::f64::consts::FRAC_PI_4;
 
-/// 1.5·2⁵²: adding and subtracting it rounds an f64 below 2⁵¹ to an integer.
-const ROUNDER: f64 = f64::from_bits(0x4338_0000_0000_0000);
 /// The first 33 bits of π/2 (fdlibm's `pio2_1`): `k·PIO2_1` is exact for |k| ≤ 2²⁰.
 const PIO2_1: f64 = f64::from_bits(0x3FF9_21FB_5440_0000);
 /// π/2 − PIO2_1 (fdlibm's `pio2_1t`).
@@ -51,9 +50,7 @@ const SIGN_BIT: u32 = 1 << 31;
 /// range (NaN and the infinities order above every finite magnitude).
 #[inline(always)]
 pub fn sin_cos<const N: usize>(x: [f32; N]) -> [(f32, f32); N] {
-    let outside = x.iter().fold(false, |outside, &x| {
-        outside | ((x.to_bits() & !SIGN_BIT) > LIMIT.to_bits())
-    });
+    let outside = !all_in_range(&x);
     let mut pairs = [(0.0, 0.0); N];
     for (pair, &x) in pairs.iter_mut().zip(&x) {
         *pair = if outside {
@@ -65,6 +62,14 @@ pub fn sin_cos<const N: usize>(x: [f32; N]) -> [(f32, f32); N] {
         };
     }
     pairs
+}
+
+/// Whether every |x| ≤ LIMIT (NaN and the infinities order above every finite magnitude).
+#[inline(always)]
+pub(crate) fn all_in_range<const N: usize>(x: &[f32; N]) -> bool {
+    !x.iter().fold(false, |outside, &x| {
+        outside | ((x.to_bits() & !SIGN_BIT) > LIMIT.to_bits())
+    })
 }
 
 /// How [`in_range`] puts a reduced pair in its quadrant, as in the f64 kernel: by bit masks for
@@ -83,22 +88,34 @@ fn in_range(x: f32, placement: Placement) -> (f32, f32) {
     if x.abs() <= FRAC_PI_4 {
         return (sin_reduced(x) as f32, cos_reduced(x) as f32);
     }
-    let shifted = x * FRAC_2_PI + ROUNDER;
+    if placement == Placement::Masks {
+        let (s, c) = reduce_and_place(x);
+        return (s as f32, c as f32);
+    }
+    let (quadrant, r) = reduce(x);
     // The low bits of k, two's complement.
-    let quadrant = shifted.to_bits() as u32;
-    let k = shifted - ROUNDER;
-    let r = (x - k * PIO2_1) - k * PIO2_1T;
+    let quadrant = quadrant as u32;
     let s = (sin_reduced(r) as f32).to_bits();
     let c = (cos_reduced(r) as f32).to_bits();
-    let (s, c) = if placement == Placement::Branch {
-        if quadrant & 1 == 0 { (s, c) } else { (c, s) }
-    } else {
-        let swap = 0u32.wrapping_sub(quadrant & 1);
-        ((s & !swap) | (c & swap), (c & !swap) | (s & swap))
-    };
+    let (s, c) = if quadrant & 1 == 0 { (s, c) } else { (c, s) };
     let sin_sign = (quadrant << 30) & SIGN_BIT;
     let cos_sign = (quadrant.wrapping_add(1) << 30) & SIGN_BIT;
     (f32::from_bits(s ^ sin_sign), f32::from_bits(c ^ cos_sign))
+}
+
+/// The quadrant bits and `r = x − k·π/2`, in two steps (the first product exact), in f64.
+#[inline(always)]
+fn reduce<V: Lane>(x: V) -> (V::Bits, V) {
+    let (bits, k) = quadrant(x);
+    (bits, (x - k * V::splat(PIO2_1)) - k * V::splat(PIO2_1T))
+}
+
+/// Reduce, evaluate, place by bit masks, all in f64 (the caller rounds to f32 once: rounding
+/// commutes with the placement's swap and sign flips).
+#[inline(always)]
+pub(crate) fn reduce_and_place<V: Lane>(x: V) -> (V, V) {
+    let (bits, r) = reduce(x);
+    place(bits, sin_reduced(r), cos_reduced(r))
 }
 
 /// Any angle: NaN, infinite and beyond [`LIMIT`] ones through the f64 kernel (which hands them
@@ -116,19 +133,21 @@ fn one_at_a_time(x: f32) -> (f32, f32) {
 
 /// sin r for |r| ≤ π/4: `r·(1 + r²P(r²))`, P of degree 3 in pairs (Estrin's scheme).
 #[inline(always)]
-fn sin_reduced(r: f64) -> f64 {
+fn sin_reduced<V: Lane>(r: V) -> V {
+    let c = V::splat;
     let z = r * r;
     let w = z * z;
-    let p = (S1 + z * S2) + w * (S3 + z * S4);
-    r * (1.0 + z * p)
+    let p = (c(S1) + z * c(S2)) + w * (c(S3) + z * c(S4));
+    r * (c(1.0) + z * p)
 }
 
 /// cos r for |r| ≤ π/4: `1 + r²Q(r²)`, Q of degree 3 in pairs.
 #[inline(always)]
-fn cos_reduced(r: f64) -> f64 {
+fn cos_reduced<V: Lane>(r: V) -> V {
+    let c = V::splat;
     let z = r * r;
     let w = z * z;
-    1.0 + z * ((C0 + z * C1) + w * (C2 + z * C3))
+    c(1.0) + z * ((c(C0) + z * c(C1)) + w * (c(C2) + z * c(C3)))
 }
 
 #[cfg(test)]
@@ -165,7 +184,7 @@ mod tests {
         let mantissa = PIO2_1.to_bits() & ((1 << 52) - 1);
         assert!(mantissa.trailing_zeros() >= 52 - 32);
         assert_eq!(PIO2_1 + PIO2_1T, core::f64::consts::FRAC_PI_2);
-        assert!((f64::from(LIMIT) * FRAC_2_PI).round() <= f64::from(1 << 19));
+        assert!((f64::from(LIMIT) * core::f64::consts::FRAC_2_PI).round() <= f64::from(1 << 19));
         assert_eq!(f64::from(LIMIT), 823_549.0);
     }
 }
