@@ -11,6 +11,7 @@
 //! | the physical inputs, validated once | [`InertiaTensor`], [`PendulumParameters`], [`ParameterError`], [`mass`] (mass properties of a body) |
 //! | the generated models, one type per catalog entry | [`models`]: [`Model`], [`Loads`], [`Constant`], [`AnyModel`] |
 //! | the independent nalgebra forms they are checked against | [`generic`] |
+//! | many bodies of one model in SIMD lanes, stepped together | [`batch`] |
 //! | integrators: one trait, tableaux over one adaptive driver | [`integrate`]: [`Integrator`], [`OdeSystem`], [`Dop853`], [`Dopri5`], [`Rk4`], … |
 //! | exact solutions and invariants for judging runs | [`reference`](mod@reference), [`energy`], [`elliptic`] |
 //! | the swing test: radius of gyration from a pendulum's period | [`swing`] |
@@ -42,6 +43,7 @@
 //! ```
 #![deny(missing_docs)]
 
+pub mod batch;
 pub mod elliptic;
 pub mod energy;
 #[cfg(feature = "cli")]

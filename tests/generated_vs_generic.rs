@@ -1,7 +1,8 @@
 //! The generated models against the independent nalgebra forms (`eom::generic`), variant by
 //! variant: at random states, at the extremes (pitch 1e-12 to 1e-6 rad from ±90°, rates up to
 //! 10³ rad/s, inertia ratios up to 10⁶), a pruned variant against the full one for a body
-//! whose pruned products are zero, and f32 against f64.
+//! whose pruned products are zero, f32 against f64, and SIMD lanes (f64×4, f32×8) against
+//! the scalar model, bit for bit.
 //!
 //! Every comparison is relative to the size of the terms of each output (see `common`), not
 //! to the output itself, because the two forms add the same terms in different orders and an
@@ -22,6 +23,8 @@ use eom::models::{
 };
 use eom::{InertiaTensor, PendulumParameters};
 use nalgebra::{Quaternion, UnitQuaternion, Vector3, Vector6};
+use simba::scalar::SupersetOf;
+use simba::simd::{SimdRealField, WideF32x8, WideF64x4};
 
 /// Relative 1e-12 of the size of the terms: two f64 forms of one formula. Each evaluates an
 /// output through at most ~16 roundings, so each is within 16·(ε/2)·scale of the exact value
@@ -219,6 +222,52 @@ properties! {
     pendulum_f32_matches_f64: pendulum_case(), pendulum_f32_gap, F32_TOLERANCE;
 }
 
+/// SIMD lanes against the scalar model of the same variant, lane by lane: 0 when every output
+/// of every lane has the scalar's bits (the same arithmetic in each lane, and the kernel's
+/// sines and cosines the scalar kernel's), else the largest relative difference. Lane k holds
+/// the case's state with every entry times 1 + k/16, so that no two lanes are alike.
+fn lanes_gap<L, S, T>(case: &SpatialCase) -> f64
+where
+    T: SimdRealField + Copy,
+    T::Element: SimdRealField + Copy,
+    L: Spatial<T>,
+    S: Spatial<T::Element>,
+{
+    let element = |x: f64| T::Element::from_subset(&x);
+    let state = case.state(S::KINEMATICS);
+    let lane_state = |k: usize| -> Vec<T::Element> {
+        let factor = 1.0 + k as f64 / 16.0;
+        state.iter().map(|&x| element(x * factor)).collect()
+    };
+    let states: Vec<Vec<T::Element>> = (0..T::LANES).map(lane_state).collect();
+    let packed: Vec<T> = (0..state.len())
+        .map(|i| {
+            let mut lanes = T::splat(states[0][i]);
+            for (k, lane) in states.iter().enumerate() {
+                lanes.replace(k, lane[i]);
+            }
+            lanes
+        })
+        .collect();
+    let load = |v: &Vector3<f64>| [0, 1, 2].map(|i| element(v[i]));
+    let (force, moment) = (load(&case.force), load(&case.moment));
+    let lanes = L::build(case.mass, &case.tensor).expect("a valid body");
+    let scalar = S::build(case.mass, &case.tensor).expect("a valid body");
+    let out = lanes.eval(&packed, &force.map(T::splat), &moment.map(T::splat));
+    let mut worst = 0.0f64;
+    for (k, lane) in states.iter().enumerate() {
+        let expected = scalar.eval(lane, &force, &moment);
+        for (got, want) in out.iter().zip(&expected) {
+            let (got, want) = (got.extract(k), *want);
+            if got != want {
+                let (a, b): (f64, f64) = (got.to_subset().unwrap(), want.to_subset().unwrap());
+                worst = worst.max((a - b).abs() / a.abs().max(b.abs()));
+            }
+        }
+    }
+    worst
+}
+
 /// The full-tensor variant of a kinematics, which a pruned variant is compared with.
 macro_rules! full_variant {
     (Euler) => {
@@ -266,6 +315,8 @@ macro_rules! spatial_properties {
                 f32_matches_f64: spatial_case(CLASS, Pitch::Random), f32_gap::<Model32, Model64>, F32_TOLERANCE;
                 f32_matches_f64_near_vertical: spatial_case(CLASS, Pitch::NearVertical), f32_gap::<Model32, Model64>, F32_TOLERANCE;
                 equals_the_full_variant_on_a_body_of_its_class: spatial_case(CLASS, Pitch::Random), pruned_gap::<Model64, full_variant!($kinematics)>, PRUNED_TOLERANCE;
+                f64x4_lanes_equal_f64_bit_for_bit: spatial_case(CLASS, Pitch::Random), lanes_gap::<eom::models::$type<WideF64x4>, Model64, WideF64x4>, 0.0;
+                f32x8_lanes_equal_f32_bit_for_bit: spatial_case(CLASS, Pitch::Random), lanes_gap::<eom::models::$type<WideF32x8>, Model32, WideF32x8>, 0.0;
             }
             euler_rates_near_vertical!($kinematics);
 
