@@ -103,6 +103,30 @@ pub fn sin_cos<T: SimdRealField + Copy, const N: usize>(angles: [T; N]) -> [(T, 
     pairs
 }
 
+/// `a·b + c` as the generated models write every product that feeds a sum: one fused
+/// multiply–add, rounded once, when the build targets a CPU with FMA
+/// (`cfg(target_feature = "fma")`, e.g. `RUSTFLAGS="-C target-cpu=native"`), and the product
+/// and the sum each rounded otherwise (the default x86-64 target), which is the op-by-op
+/// result bit for bit. The choice is made at compile time, so one build gives one set of bits.
+///
+/// ```
+/// let (a, b, c) = (0.1_f64, 3.0, -0.3);
+/// let fused = eom_kernel::mul_add(a, b, c);
+/// if cfg!(target_feature = "fma") {
+///     assert_eq!(fused, a.mul_add(b, c));
+/// } else {
+///     assert_eq!(fused, a * b + c);
+/// }
+/// ```
+#[inline(always)]
+pub fn mul_add<T: SimdRealField + Copy>(a: T, b: T, c: T) -> T {
+    if cfg!(target_feature = "fma") {
+        a.simd_mul_add(b, c)
+    } else {
+        a * b + c
+    }
+}
+
 /// Each angle's own `simd_sin_cos`.
 #[inline(always)]
 fn each_own<T: SimdRealField + Copy, const N: usize>(angles: [T; N]) -> [(T, T); N] {

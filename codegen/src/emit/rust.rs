@@ -62,6 +62,15 @@ fn with_comments(formatted: &str, comments: &[String]) -> String {
     out
 }
 
+/// Whether `tokens` hold the identifier `name`, at any depth.
+fn mentions(tokens: &TokenStream, name: &str) -> bool {
+    tokens.clone().into_iter().any(|token| match token {
+        proc_macro2::TokenTree::Ident(ident) => ident == name,
+        proc_macro2::TokenTree::Group(group) => mentions(&group.stream(), name),
+        _ => false,
+    })
+}
+
 fn file_tokens(
     system: &System,
     program: &Program,
@@ -92,14 +101,17 @@ fn file_tokens(
         };
         energy_function(system, program, function, energy, comments)
     });
+    let functions = quote! { #rhs #kinetic #potential };
+    // A product that feeds a sum is written `mul_add(a, b, c)` (see `writer.rs`).
+    let fused = mentions(&functions, "mul_add");
+    let mul_add = fused.then(|| quote! { use eom_kernel::mul_add; });
     quote! {
         use simba::simd::SimdRealField;
+        #mul_add
         #parameters
         #coefficients
         #constants
-        #rhs
-        #kinetic
-        #potential
+        #functions
     }
 }
 

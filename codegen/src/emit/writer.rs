@@ -266,6 +266,18 @@ impl<'a> Writer<'a> {
         }
     }
 
+    /// The factors of a product written inline (not a named value), for a sum to fuse it:
+    /// `a·b ± c` is written `mul_add(a, b, ±c)`, one fused multiply–add where the target has
+    /// FMA and the product and the sum each rounded where it has not (`eom_kernel::mul_add`),
+    /// so the default build's bits are those of `a * b ± c`.
+    fn inline_product(&self, id: Id) -> Option<(Id, Id)> {
+        let inline = !(self.names[id.index()].is_some() && self.defined[id.index()]);
+        match self.program.node(id) {
+            Node::Mul(a, b) if inline => Some(self.in_reading_order(*a, *b)),
+            _ => None,
+        }
+    }
+
     pub(super) fn expression(&self, id: Id) -> TokenStream {
         match self.program.node(id) {
             Node::Variable(_) | Node::Sin(_) | Node::Cos(_) => self.reference(id),
@@ -286,10 +298,26 @@ impl<'a> Writer<'a> {
                 quote! { -#a }
             }
             Node::Add(a, b) => {
+                if let Some((x, y)) = self.inline_product(*b) {
+                    let (x, y, a) = (self.reference(x), self.reference(y), self.reference(*a));
+                    return quote! { mul_add(#x, #y, #a) };
+                }
+                if let Some((x, y)) = self.inline_product(*a) {
+                    let (x, y, b) = (self.reference(x), self.reference(y), self.reference(*b));
+                    return quote! { mul_add(#x, #y, #b) };
+                }
                 let (a, b) = (self.reference(*a), self.operand(*b));
                 quote! { #a + #b }
             }
             Node::Sub(a, b) => {
+                if let Some((x, y)) = self.inline_product(*b) {
+                    let (x, y, a) = (self.operand(x), self.reference(y), self.reference(*a));
+                    return quote! { mul_add(-#x, #y, #a) };
+                }
+                if let Some((x, y)) = self.inline_product(*a) {
+                    let (x, y, b) = (self.reference(x), self.reference(y), self.operand(*b));
+                    return quote! { mul_add(#x, #y, -#b) };
+                }
                 let (a, b) = (self.reference(*a), self.operand(*b));
                 quote! { #a - #b }
             }
