@@ -6,7 +6,7 @@
 //! the plain loop over bodies, one at a time. The generated `rhs` is generic over simba's
 //! `SimdRealField`, so the same proved code runs on every form, and its sines and cosines are
 //! `eom-kernel`'s on the lanes too, bit for bit the scalar kernel's in each lane. A fixed-step
-//! RK4 (the same tableau as [`Rk4`](crate::Rk4)) steps every group.
+//! RK4, the very step [`Rk4`](crate::Rk4) takes ([`rk4_array`]), steps every group.
 //!
 //! The x86-64 baseline that rustc targets by default has 128-bit SSE2 registers, so four f64
 //! lanes are two registers and the gain over scalar code is small; build with
@@ -40,6 +40,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+use crate::integrate::rk4_array;
 use crate::models::{Loads, Model};
 use simba::simd::SimdRealField;
 
@@ -107,28 +108,7 @@ where
     {
         let (t, h) = (T::from_subset(&t), T::from_subset(&h));
         for group in &mut self.groups {
-            rk4_lanes(|t, y| model.rhs(y, &loads.at(t, y)), t, h, group);
+            rk4_array(|t, y| model.rhs(y, &loads.at(t, y)), t, h, group);
         }
-    }
-}
-
-/// One RK4 step of `h` from `(t, y)` in place: `y + h(k₁ + 2k₂ + 2k₃ + k₄)/6`.
-#[inline(always)]
-fn rk4_lanes<T: SimdRealField + Copy, const N: usize>(
-    f: impl Fn(T, &[T; N]) -> [T; N],
-    t: T,
-    h: T,
-    y: &mut [T; N],
-) {
-    let half = h * T::from_subset(&0.5);
-    let ahead = |k: &[T; N], s: T| -> [T; N] { std::array::from_fn(|i| y[i] + k[i] * s) };
-    let k1 = f(t, y);
-    let k2 = f(t + half, &ahead(&k1, half));
-    let k3 = f(t + half, &ahead(&k2, half));
-    let k4 = f(t + h, &ahead(&k3, h));
-    let sixth = h / T::from_subset(&6.0);
-    let two = T::from_subset(&2.0);
-    for i in 0..N {
-        y[i] += (k1[i] + (k2[i] + k3[i]) * two + k4[i]) * sixth;
     }
 }

@@ -110,13 +110,11 @@ pub fn sin_cos<T: SimdRealField + Copy, const N: usize>(angles: [T; N]) -> [(T, 
 /// result bit for bit. The choice is made at compile time, so one build gives one set of bits.
 ///
 /// ```
-/// let (a, b, c) = (0.1_f64, 3.0, -0.3);
-/// let fused = eom_kernel::mul_add(a, b, c);
-/// if cfg!(target_feature = "fma") {
-///     assert_eq!(fused, a.mul_add(b, c));
-/// } else {
-///     assert_eq!(fused, a * b + c);
-/// }
+/// // 0.1·3 − 0.3: the product rounded first leaves 2⁻⁵⁴ (5.6e-17); fused, the exact
+/// // product of the double nearest 0.1 with 3, less 0.3, is 2⁻⁵⁵ (2.8e-17). Which one a build
+/// // gives is fixed when it is compiled.
+/// let r = eom_kernel::mul_add(0.1_f64, 3.0, -0.3);
+/// assert!(r == 0.1_f64 * 3.0 - 0.3 || r == 0.1_f64.mul_add(3.0, -0.3));
 /// ```
 #[inline(always)]
 pub fn mul_add<T: SimdRealField + Copy>(a: T, b: T, c: T) -> T {

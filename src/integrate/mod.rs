@@ -39,7 +39,7 @@ pub use dopri5::Dopri5;
 pub use error::IntegrateError;
 pub use euler::Euler;
 pub use lie_midpoint::{LieMidpoint, RigidRotation};
-pub use rk4::{Rk4, rk4_step};
+pub use rk4::{Rk4, rk4_array, rk4_step};
 pub use stats::Stats;
 pub use symplectic_euler::SymplecticEuler;
 

@@ -5,10 +5,9 @@
 //! to the energy and the quaternion norm over 10⁶ steps against the geometric integrator.
 
 use nalgebra::{RealField, SVector};
+use simba::simd::SimdRealField;
 
-use super::{
-    IntegrateError, Integrator, OdeSystem, Statistics, Stats, explain_failure, lit, run_fixed,
-};
+use super::{IntegrateError, Integrator, OdeSystem, Statistics, Stats, explain_failure, run_fixed};
 
 /// The classical fourth-order Runge–Kutta method with a fixed step.
 #[derive(Debug, Clone)]
@@ -28,14 +27,19 @@ impl Rk4 {
     }
 }
 
-/// One classical RK4 step of size `h` from `(t, y)`, in place: for drivers that choose their
-/// own steps (a manoeuvre that steps onto the instant an event happens).
+/// One classical RK4 step of size `h` from `(t, y)`, in place: the step [`Rk4`] takes, and
+/// the one for drivers that choose their own steps (a manoeuvre that steps onto the instant
+/// an event happens). The same arithmetic as [`rk4_array`], in the same order, on nalgebra
+/// vectors (`tests/batch.rs` checks the two bit for bit): along an integrator's chain of
+/// dependent stages this form is the faster by about 6 % (`cargo bench --bench driver`:
+/// 1.43–1.44 of the bare calls against 1.51–1.52), where for many independent bodies the
+/// array form is three times the faster (`cargo bench --bench batch`).
 pub fn rk4_step<T, const N: usize, S>(system: &S, t: T, h: T, y: &mut SVector<T, N>)
 where
-    T: RealField + Copy,
+    T: SimdRealField + Copy,
     S: OdeSystem<T, N> + ?Sized,
 {
-    let half = h * lit::<T>(0.5);
+    let half = h * T::from_subset(&0.5);
     let (mut k1, mut k2, mut k3, mut k4) = (
         SVector::zeros(),
         SVector::zeros(),
@@ -46,8 +50,31 @@ where
     system.rhs(t + half, &(*y + k1 * half), &mut k2);
     system.rhs(t + half, &(*y + k2 * half), &mut k3);
     system.rhs(t + h, &(*y + k3 * h), &mut k4);
-    let sixth = h / lit::<T>(6.0);
-    *y += (k1 + (k2 + k3) * lit::<T>(2.0) + k4) * sixth;
+    let sixth = h / T::from_subset(&6.0);
+    *y += (k1 + (k2 + k3) * T::from_subset(&2.0) + k4) * sixth;
+}
+
+/// The RK4 step on a plain array, for any of simba's scalars (f64, f32, SIMD lanes, dual
+/// numbers): `y + h(k₁ + 2k₂ + 2k₃ + k₄)/6` with the stages at `y + (h/2)k₁`, `y + (h/2)k₂`,
+/// `y + h k₃`: the step of [`crate::batch`], where many bodies' steps overlap.
+#[inline(always)]
+pub fn rk4_array<T: SimdRealField + Copy, const N: usize>(
+    rate: impl Fn(T, &[T; N]) -> [T; N],
+    t: T,
+    h: T,
+    y: &mut [T; N],
+) {
+    let half = h * T::from_subset(&0.5);
+    let ahead = |k: &[T; N], s: T| -> [T; N] { std::array::from_fn(|i| y[i] + k[i] * s) };
+    let k1 = rate(t, y);
+    let k2 = rate(t + half, &ahead(&k1, half));
+    let k3 = rate(t + half, &ahead(&k2, half));
+    let k4 = rate(t + h, &ahead(&k3, h));
+    let sixth = h / T::from_subset(&6.0);
+    let two = T::from_subset(&2.0);
+    for i in 0..N {
+        y[i] += (k1[i] + (k2[i] + k3[i]) * two + k4[i]) * sixth;
+    }
 }
 
 impl<T, const N: usize, S> Integrator<T, N, S> for Rk4
