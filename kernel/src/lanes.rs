@@ -1,6 +1,6 @@
 //! The kernel on SIMD lanes: four f64 angles in a `wide::f64x4`, eight f32 angles in a
-//! `wide::f32x8` (two halves, widened as the scalar f32 kernel widens), bit for bit what the
-//! scalar kernels give each lane.
+//! `wide::f32x8` (widened to eight f64 lanes, as the scalar f32 kernel widens), bit for bit
+//! what the scalar kernels give each lane.
 //!
 //! The scalar kernels are written once, over [`Lane`]: the arithmetic, the constants
 //! splatted, and the bit operations that place a pair in its quadrant. A lane needs no branch
@@ -13,7 +13,7 @@
 //! with `round_int`, emulated lane by lane on the x86-64 baseline).
 
 use core::ops::{Add, BitAnd, BitXor, Mul, Shl, Sub};
-use wide::{f32x8, f64x4, u64x4};
+use wide::{f32x8, f64x4, f64x8, u64x4, u64x8};
 
 /// What the kernel needs of a number: `f64`, or four of them in lanes.
 pub(crate) trait Lane:
@@ -86,6 +86,31 @@ impl Lane for f64x4 {
     }
 }
 
+impl Lane for f64x8 {
+    type Bits = u64x8;
+    #[inline(always)]
+    fn splat(x: f64) -> Self {
+        f64x8::splat(x)
+    }
+    #[inline(always)]
+    fn splat_bits(x: u64) -> u64x8 {
+        u64x8::splat(x)
+    }
+    #[inline(always)]
+    fn to_bits(self) -> u64x8 {
+        bytemuck::cast(self)
+    }
+    #[inline(always)]
+    fn from_bits(bits: u64x8) -> Self {
+        bytemuck::cast(bits)
+    }
+    #[inline(always)]
+    fn odd_mask(bits: u64x8) -> u64x8 {
+        let one = u64x8::splat(1);
+        (bits & one).simd_eq(one)
+    }
+}
+
 /// 1.5·2⁵²: adding and subtracting it rounds an f64 below 2⁵¹ to an integer.
 pub(crate) const ROUNDER: f64 = f64::from_bits(0x4338_0000_0000_0000);
 /// The sign bit of an f64.
@@ -134,8 +159,9 @@ fn cold_f64x4(angles: [f64; 4]) -> (f64x4, f64x4) {
     )
 }
 
-/// `(sin, cos)` of eight f32 angles, as [`crate::sin_cos_f32`] gives each: each half widened
-/// to f64 lanes, the f32 kernel's arithmetic there, rounded once.
+/// `(sin, cos)` of eight f32 angles, as [`crate::sin_cos_f32`] gives each: widened to eight
+/// f64 lanes (one AVX-512 register, or two AVX2 ones), the f32 kernel's arithmetic there,
+/// rounded once.
 #[inline(always)]
 pub fn sin_cos_f32x8(x: f32x8) -> (f32x8, f32x8) {
     let angles = x.to_array();
@@ -146,16 +172,8 @@ pub fn sin_cos_f32x8(x: f32x8) -> (f32x8, f32x8) {
             f32x8::new(pairs.map(|p| p.1)),
         );
     }
-    let half = |i: usize| f64x4::new(core::array::from_fn(|j| f64::from(angles[4 * i + j])));
-    let (low, high) = (
-        crate::single::reduce_and_place(half(0)),
-        crate::single::reduce_and_place(half(1)),
-    );
-    let narrow = |a: f64x4, b: f64x4| {
-        let (a, b) = (a.to_array(), b.to_array());
-        f32x8::new(core::array::from_fn(|i| {
-            if i < 4 { a[i] as f32 } else { b[i - 4] as f32 }
-        }))
-    };
-    (narrow(low.0, high.0), narrow(low.1, high.1))
+    let wide = f64x8::new(angles.map(f64::from));
+    let (s, c) = crate::single::reduce_and_place(wide);
+    let narrow = |x: f64x8| f32x8::new(x.to_array().map(|x| x as f32));
+    (narrow(s), narrow(c))
 }
