@@ -1,5 +1,6 @@
-//! Bodies per second, stepped in batches: 4096 bodies of one model, RK4, as scalar f64 (one
-//! body at a time), f64×4 lanes and f32×8 lanes, for a quaternion and an Euler-angle model.
+//! Bodies per second, stepped in batches: 4096 bodies of one model, RK4, as scalar f64 and
+//! scalar f32 (one body at a time), f64×4 lanes and f32×8 lanes, for a quaternion and an
+//! Euler-angle model.
 //!
 //! `cargo bench --bench batch` runs seven interleaved rounds (each form in turn, 20 steps of all
 //! 4096 bodies each) and prints the medians as body-steps per second and their ratio to scalar
@@ -62,23 +63,36 @@ fn median(mut values: Vec<f64>) -> f64 {
     values[values.len() / 2]
 }
 
-/// The three forms of one model, interleaved; prints a table row per form.
-fn compare<M64, M4, M8, const N: usize>(name: &str, scalar: &M64, f64x4: &M4, f32x8: &M8)
+/// One model in each form.
+struct Forms<'a, M64, M32, M4, M8> {
+    f64: &'a M64,
+    f32: &'a M32,
+    f64x4: &'a M4,
+    f32x8: &'a M8,
+}
+
+/// The four forms of one model, interleaved; prints a table row per form.
+fn compare<M64, M32, M4, M8, const N: usize>(name: &str, model: Forms<M64, M32, M4, M8>)
 where
     M64: Model<f64, N, 6>,
+    M32: Model<f32, N, 6>,
     M4: Model<WideF64x4, N, 6>,
     M8: Model<WideF32x8, N, 6>,
 {
     let starts = starts::<N>();
     let narrow: Vec<[f32; N]> = starts.iter().map(|y| y.map(|x| x as f32)).collect();
-    let mut times = [vec![], vec![], vec![]];
+    let mut times = [vec![], vec![], vec![], vec![]];
     for _ in 0..ROUNDS {
-        times[0].push(time::<f64, _, N>(scalar, &starts));
-        times[1].push(time::<WideF64x4, _, N>(f64x4, &starts));
-        times[2].push(time::<WideF32x8, _, N>(f32x8, &narrow));
+        times[0].push(time::<f64, _, N>(model.f64, &starts));
+        times[1].push(time::<f32, _, N>(model.f32, &narrow));
+        times[2].push(time::<WideF64x4, _, N>(model.f64x4, &starts));
+        times[3].push(time::<WideF32x8, _, N>(model.f32x8, &narrow));
     }
     let rates = times.map(|t| (BODIES * STEPS) as f64 / median(t));
-    for (form, rate) in ["f64 scalar", "f64×4", "f32×8"].iter().zip(rates) {
+    for (form, rate) in ["f64 scalar", "f32 scalar", "f64×4", "f32×8"]
+        .iter()
+        .zip(rates)
+    {
         println!(
             "| {name} | {form} | {:.2} | {:.2} |",
             rate / 1e6,
@@ -98,17 +112,23 @@ fn main() {
     println!();
     println!("| model | form | 10⁶ body-steps/s | × scalar f64 |");
     println!("|---|---|---:|---:|");
-    compare::<_, _, _, 13>(
+    compare::<_, _, _, _, 13>(
         "spatial_principal_quaternion",
-        &SpatialPrincipalQuaternion::<f64>::new(5.0, &tensor).expect("valid"),
-        &SpatialPrincipalQuaternion::<WideF64x4>::new(5.0, &tensor).expect("valid"),
-        &SpatialPrincipalQuaternion::<WideF32x8>::new(5.0, &tensor).expect("valid"),
+        Forms {
+            f64: &SpatialPrincipalQuaternion::<f64>::new(5.0, &tensor).expect("valid"),
+            f32: &SpatialPrincipalQuaternion::<f32>::new(5.0, &tensor).expect("valid"),
+            f64x4: &SpatialPrincipalQuaternion::<WideF64x4>::new(5.0, &tensor).expect("valid"),
+            f32x8: &SpatialPrincipalQuaternion::<WideF32x8>::new(5.0, &tensor).expect("valid"),
+        },
     );
     let tensor = InertiaTensor::new(2.0, 3.0, 4.0, 0.1, -0.05, 0.2).expect("a valid tensor");
-    compare::<_, _, _, 12>(
+    compare::<_, _, _, _, 12>(
         "spatial_full_euler",
-        &SpatialFullEuler::<f64>::new(5.0, &tensor).expect("valid"),
-        &SpatialFullEuler::<WideF64x4>::new(5.0, &tensor).expect("valid"),
-        &SpatialFullEuler::<WideF32x8>::new(5.0, &tensor).expect("valid"),
+        Forms {
+            f64: &SpatialFullEuler::<f64>::new(5.0, &tensor).expect("valid"),
+            f32: &SpatialFullEuler::<f32>::new(5.0, &tensor).expect("valid"),
+            f64x4: &SpatialFullEuler::<WideF64x4>::new(5.0, &tensor).expect("valid"),
+            f32x8: &SpatialFullEuler::<WideF32x8>::new(5.0, &tensor).expect("valid"),
+        },
     );
 }
