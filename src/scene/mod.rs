@@ -246,6 +246,12 @@ impl Scene {
 /// Reads scene text into its tables: a syntax error, an unknown key or a wrong type names the
 /// key's path.
 pub fn read(text: &str, name: &str) -> Result<SceneFile, SceneError> {
+    read_as(text, name)
+}
+
+/// Reads TOML text into any table type, each error named by its key path: the one reader of
+/// scene files (the ship scene's tables too).
+pub fn read_as<T: serde::de::DeserializeOwned>(text: &str, name: &str) -> Result<T, SceneError> {
     let deserializer = toml::Deserializer::parse(text)
         .map_err(|e| SceneError::new(name, "", Problem::Syntax(e.to_string())))?;
     serde_path_to_error::deserialize(deserializer).map_err(|e| {

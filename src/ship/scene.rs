@@ -91,50 +91,65 @@ pub struct ModelTable {
     pub family: String,
 }
 
-/// `[body]`.
+/// `[body]`: the keys of the table's units (`_prime` in the prime system), one of each.
 #[derive(Debug, Clone, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
-#[allow(missing_docs)]
 pub struct BodyTable {
+    /// L, m.
     pub length: Option<f64>,
+    /// M, kg (dimensional).
     pub mass: Option<f64>,
+    /// m′ = M/(½ρL³) (prime).
     pub mass_prime: Option<f64>,
+    /// I_zz about G, kg m² (dimensional).
     pub izz: Option<f64>,
+    /// I_O about midship, kg m² (dimensional).
     pub izz_midship: Option<f64>,
+    /// I_zz′ about G, over ½ρL⁵ (prime).
     pub izz_prime: Option<f64>,
+    /// I_O′ about midship, over ½ρL⁵ (prime).
     pub izz_midship_prime: Option<f64>,
+    /// G ahead of midship, m (dimensional).
     pub x_g: Option<f64>,
+    /// x_G′ = x_G/L (prime).
     pub x_g_prime: Option<f64>,
 }
 
 /// `[hydrodynamics]`.
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
-#[allow(missing_docs)]
 pub struct HydrodynamicsTable {
+    /// `prime` or `dimensional`.
     pub units: String,
+    /// `folded` or `separate`.
     pub rigid_body_terms: String,
+    /// ρ, kg/m³ (prime only).
     pub density: Option<f64>,
+    /// U₀, m/s.
     pub design_speed: f64,
+    /// The coefficients by name, as the table writes them.
     pub coefficients: BTreeMap<String, f64>,
 }
 
 /// `[rudder]`.
 #[derive(Debug, Clone, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
-#[allow(missing_docs)]
 pub struct RudderTable {
+    /// δ_max, degrees.
     pub max_deg: Option<f64>,
+    /// δ̇_max, degrees per second.
     pub max_rate_deg_s: Option<f64>,
+    /// The lag's time constant, s.
     pub time_constant_s: Option<f64>,
 }
 
 /// `[integrator]`.
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
-#[allow(missing_docs)]
 pub struct IntegratorTable {
+    /// `rk4`.
     pub method: String,
+    /// The largest step, s.
     pub step: f64,
 }
 
@@ -146,19 +161,27 @@ pub struct OutputTable {
     pub every: Option<f64>,
 }
 
-/// `[[manoeuvre]]`.
+/// `[[manoeuvre]]`: each kind reads its own keys and refuses the others.
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
-#[allow(missing_docs)]
 pub struct ManoeuvreTable {
+    /// The output folder's name.
     pub name: Option<String>,
+    /// `turning_circle`, `zigzag`, `pull_out` or `rudder_series`.
     pub kind: String,
+    /// The rudder angle, degrees (not for a series).
     pub rudder_deg: Option<f64>,
+    /// A zig-zag's ψ_a, degrees.
     pub heading_deg: Option<f64>,
+    /// When the rudder is put over, s (default 0).
     pub execute_s: Option<f64>,
+    /// A pull-out's release, s.
     pub release_s: Option<f64>,
+    /// The end of the run, s.
     pub duration_s: f64,
+    /// A series' times, s.
     pub times_s: Option<Vec<f64>>,
+    /// A series' angles, degrees.
     pub series_deg: Option<Vec<f64>>,
 }
 
@@ -391,7 +414,6 @@ impl Check<'_> {
         index: usize,
         table: &ManoeuvreTable,
         step: f64,
-        rudder: &Rudder,
     ) -> Result<Manoeuvre, SceneError> {
         let key = |k: &str| format!("manoeuvre[{index}].{k}");
         let required = |k: &str, v: Option<f64>| {
@@ -490,7 +512,6 @@ impl Check<'_> {
                          the times strictly increasing",
                     )
                 })?;
-                let _ = rudder;
                 (ManoeuvreKind::Series(series), "rudder_series".to_owned())
             }
             other => {
@@ -536,19 +557,7 @@ impl ShipScene {
 
     /// Reads and checks ship scene text; `name` is how errors name it.
     pub fn parse(text: &str, name: &str) -> Result<Self, SceneError> {
-        let deserializer = toml::Deserializer::parse(text)
-            .map_err(|e| SceneError::new(name, "", Problem::Syntax(e.to_string())))?;
-        let file: ShipSceneFile = serde_path_to_error::deserialize(deserializer).map_err(|e| {
-            let key = e.path().to_string();
-            let key = if key == "." { String::new() } else { key };
-            let message = e.into_inner().message().to_owned();
-            let problem = if message.starts_with("missing field") {
-                Problem::Missing(message)
-            } else {
-                Problem::Schema(message)
-            };
-            SceneError::new(name, &key, problem)
-        })?;
+        let file: ShipSceneFile = crate::scene::read_as(text, name)?;
         Self::from_file(&file, name)
     }
 
@@ -590,7 +599,7 @@ impl ShipScene {
         }
         let mut manoeuvres: Vec<Manoeuvre> = Vec::new();
         for (index, table) in file.manoeuvre.iter().enumerate() {
-            let manoeuvre = check.manoeuvre(index, table, step, &rudder)?;
+            let manoeuvre = check.manoeuvre(index, table, step)?;
             if manoeuvres.iter().any(|m| m.name == manoeuvre.name) {
                 return Err(check.invalid(
                     &format!("manoeuvre[{index}].name"),
