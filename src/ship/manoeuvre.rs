@@ -225,31 +225,10 @@ pub fn run(
         } else {
             step
         };
-        let system = driver.system();
         let mut trial = y;
-        rk4_step(&system, t, h, &mut trial);
+        rk4_step(&driver.system(), t, h, &mut trial);
         steps += 1;
-        let heading0 = driver.heading0();
-        let heading_a = driver.heading_a();
-        let fired = driver
-            .watches
-            .iter()
-            .filter_map(|&watch| {
-                let (g0, g1) = (
-                    watch.g(&y, heading0, heading_a),
-                    watch.g(&trial, heading0, heading_a),
-                );
-                (g0 != 0.0 && g0.signum() != g1.signum()).then(|| {
-                    let g = |s: f64| {
-                        let mut probe = y;
-                        rk4_step(&system, t, s, &mut probe);
-                        watch.g(&probe, heading0, heading_a)
-                    };
-                    (locate(g, h, g0, g1), watch)
-                })
-            })
-            .min_by(|a, b| a.0.total_cmp(&b.0));
-        match fired {
+        match driver.first_event(t, h, &y, &trial) {
             Some((s, watch)) => {
                 if s < h {
                     y = driver.step_to(t, s, &y);
@@ -345,6 +324,35 @@ impl<'a> Driver<'a> {
             rudder: self.rudder,
             command,
         }
+    }
+
+    /// The earliest watch whose function changes sign over the step of `h` from `(t, y)` to
+    /// `trial`, and the sub-step `s` at which it is zero.
+    fn first_event(
+        &self,
+        t: f64,
+        h: f64,
+        y: &DriveState,
+        trial: &DriveState,
+    ) -> Option<(f64, Watch)> {
+        let system = self.system();
+        let (heading0, heading_a) = (self.heading0(), self.heading_a());
+        let crossing = |&watch: &Watch| {
+            let g = |y: &DriveState| watch.g(y, heading0, heading_a);
+            let (g0, g1) = (g(y), g(trial));
+            (g0 != 0.0 && g0.signum() != g1.signum()).then(|| {
+                let at = |s: f64| {
+                    let mut probe = *y;
+                    rk4_step(&system, t, s, &mut probe);
+                    g(&probe)
+                };
+                (locate(at, h, g0, g1), watch)
+            })
+        };
+        self.watches
+            .iter()
+            .filter_map(crossing)
+            .min_by(|a, b| a.0.total_cmp(&b.0))
     }
 
     fn step_to(&self, t: f64, s: f64, y: &DriveState) -> DriveState {
