@@ -30,6 +30,9 @@ pub mod rudder;
 pub mod scene;
 pub mod table;
 
+/// The table's vocabulary, from the generator that builds the model: a term, its load, the
+/// units, and about which point the yaw inertia is given.
+pub use eom_codegen::model::ship::{Force, Term, Units, YawInertia};
 pub use linear::{LinearModel, Nomoto};
 pub use manoeuvre::{Manoeuvre, ManoeuvreKind, ManoeuvreRun};
 pub use model::ShipModel;

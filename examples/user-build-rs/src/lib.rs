@@ -43,6 +43,30 @@ pub fn example_parameters() -> auv::Parameters {
     }
 }
 
+/// A 100 m ship's numbers, SI, for the ten-term table of `build.rs`.
+pub fn example_ship() -> ship::Parameters {
+    ship::Parameters {
+        mass: 4.0e6,
+        izz: 2.5e9,
+        x_g: -1.5,
+        x_udot: -2.0e5,
+        y_vdot: -3.0e6,
+        y_rdot: -1.0e7,
+        n_vdot: -2.0e7,
+        n_rdot: -1.5e9,
+        x_u: -4.0e5,
+        x_vv: -3.0e5,
+        y_v: -2.0e6,
+        y_r: 5.0e7,
+        y_vvv: -8.0e5,
+        y_d: 1.0e6,
+        n_v: -8.0e7,
+        n_r: -3.0e9,
+        n_vvr: -6.0e8,
+        n_d: -5.0e7,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -90,35 +114,11 @@ mod tests {
         assert_eq!(&rate[7..9], &[0.0, 0.0]);
     }
 
-    /// A 100 m ship's numbers, SI.
-    fn ship_parameters() -> ship::Parameters {
-        ship::Parameters {
-            mass: 4.0e6,
-            izz: 2.5e9,
-            x_g: -1.5,
-            x_udot: -2.0e5,
-            y_vdot: -3.0e6,
-            y_rdot: -1.0e7,
-            n_vdot: -2.0e7,
-            n_rdot: -1.5e9,
-            x_u: -4.0e5,
-            x_vv: -3.0e5,
-            y_v: -2.0e6,
-            y_r: 5.0e7,
-            y_vvv: -8.0e5,
-            y_d: 1.0e6,
-            n_v: -8.0e7,
-            n_r: -3.0e9,
-            n_vvr: -6.0e8,
-            n_d: -5.0e7,
-        }
-    }
-
     /// The compiled ship against 4.46 written out by hand: the same formula in another order,
     /// so 1e-12 of the largest term (some tens of roundings) bounds the difference.
     #[test]
     fn the_compiled_ship_is_4_46_with_its_table() {
-        let p = ship_parameters();
+        let p = example_ship();
         let k = ship::Coefficients::<f64>::new(&p);
         let state = [6.0, 0.4, -0.02, 10.0, -5.0, 0.3, 0.1];
         let [u, v, r, _, _, psi, delta] = state;
