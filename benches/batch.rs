@@ -82,11 +82,26 @@ where
     let starts = starts::<N>();
     let narrow: Vec<[f32; N]> = starts.iter().map(|y| y.map(|x| x as f32)).collect();
     let mut times = [vec![], vec![], vec![], vec![]];
+    // `cargo bench --bench batch -- FORM` times only the forms whose name holds FORM (for
+    // counting one form's instructions under callgrind).
+    let only = std::env::args().nth(1).filter(|a| !a.starts_with('-'));
+    let wanted = |form: &str| only.as_deref().is_none_or(|only| form.contains(only));
     for _ in 0..ROUNDS {
-        times[0].push(time::<f64, _, N>(model.f64, &starts));
-        times[1].push(time::<f32, _, N>(model.f32, &narrow));
-        times[2].push(time::<WideF64x4, _, N>(model.f64x4, &starts));
-        times[3].push(time::<WideF32x8, _, N>(model.f32x8, &narrow));
+        if wanted("f64 scalar") {
+            times[0].push(time::<f64, _, N>(model.f64, &starts));
+        }
+        if wanted("f32 scalar") {
+            times[1].push(time::<f32, _, N>(model.f32, &narrow));
+        }
+        if wanted("f64×4") {
+            times[2].push(time::<WideF64x4, _, N>(model.f64x4, &starts));
+        }
+        if wanted("f32×8") {
+            times[3].push(time::<WideF32x8, _, N>(model.f32x8, &narrow));
+        }
+    }
+    if only.is_some() {
+        return;
     }
     let rates = times.map(|t| (BODIES * STEPS) as f64 / median(t));
     for (form, rate) in ["f64 scalar", "f32 scalar", "f64×4", "f32×8"]
