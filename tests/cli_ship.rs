@@ -164,3 +164,67 @@ fn a_bad_ship_scene_exits_3_naming_the_key() {
         "nothing is written for a scene that cannot run"
     );
 }
+
+/// Ctrl-C ends a ship run at its next step: the manoeuvre finished before it keeps its folder,
+/// summary.json says so, and the exit code is 130.
+#[cfg(unix)]
+#[test]
+fn ctrl_c_ends_a_ship_run_keeping_the_finished_manoeuvres() {
+    use std::time::{Duration, Instant};
+    let dir = folder("sigint");
+    let text = std::fs::read_to_string(scene("mariner.toml")).unwrap();
+    // The first manoeuvre short, the second far too long to finish.
+    let text = text
+        .replacen("duration_s = 1500.0", "duration_s = 300.0", 1)
+        .replacen("duration_s = 800.0", "duration_s = 1.0e7", 1);
+    let path = dir.join("long.toml");
+    std::fs::write(&path, text).unwrap();
+    let out = dir.join("out");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_eom"))
+        .args([
+            "run",
+            path.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ])
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let first = out.join("turning_circle_35").join("heading.svg");
+    let clock = Instant::now();
+    while !first.exists() {
+        assert!(
+            clock.elapsed() < Duration::from_secs(120),
+            "the first manoeuvre never ended"
+        );
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    std::thread::sleep(Duration::from_millis(200));
+    let pid = libc::pid_t::try_from(child.id()).unwrap();
+    // SAFETY: kill(2) on the child's own pid, which has not been waited for yet.
+    assert_eq!(unsafe { libc::kill(pid, libc::SIGINT) }, 0);
+    let status = loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            break status;
+        }
+        assert!(
+            clock.elapsed() < Duration::from_secs(180),
+            "the run did not end"
+        );
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    let mut stderr = String::new();
+    std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut stderr).unwrap();
+    assert_eq!(status.code(), Some(130), "{stderr}");
+    assert!(stderr.contains("interrupted by"), "{stderr}");
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(summary["interrupted"], true);
+    assert!(
+        summary["manoeuvre"]["turning_circle_35"]["advance_90_m"]
+            .as_f64()
+            .is_some()
+    );
+    assert!(summary["manoeuvre"]["zigzag_10_10"].is_null());
+}

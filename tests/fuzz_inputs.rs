@@ -1296,7 +1296,7 @@ fn ship_scene_text(text: &str, run: bool, tally: &mut Tally) -> Result<(), TestC
         };
         let step = scene.step.max(short.duration / 1e4);
         let result = guarded("ship run", text, || {
-            run_manoeuvre(&model, &scene.rudder, &short, scene.start(), step, |_| {})
+            run_manoeuvre(&model, &scene.rudder, &short, scene.start(), step, |_| true)
         })?;
         tally.count(if result.is_ok() {
             "ship run ok"

@@ -199,7 +199,8 @@ fn run_to_end(
 ) -> (Vec<Sample>, Figures) {
     let mut samples = Vec::new();
     let done = run(model, &scene.rudder, manoeuvre, scene.start(), step, |s| {
-        samples.push(*s)
+        samples.push(*s);
+        true
     })
     .unwrap();
     (samples, done.figures)

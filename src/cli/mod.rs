@@ -87,6 +87,7 @@ pub fn exit_code(error: &anyhow::Error) -> u8 {
         if let Some(ship) = cause.downcast_ref::<eom::ship::ShipError>() {
             return match ship {
                 eom::ship::ShipError::Run { .. } => 5,
+                eom::ship::ShipError::Stopped { .. } => 130,
                 eom::ship::ShipError::Invalid { .. } => 3,
                 eom::ship::ShipError::Build(_) => 1,
             };

@@ -98,7 +98,7 @@ static SIGNAL: AtomicUsize = AtomicUsize::new(0);
 static ARMED: AtomicBool = AtomicBool::new(false);
 
 /// The signal received, if any.
-fn signal_received() -> Option<i32> {
+pub(super) fn signal_received() -> Option<i32> {
     match SIGNAL.load(Ordering::SeqCst) {
         0 => None,
         signal => Some(signal as i32),

@@ -4,8 +4,11 @@
 //! (`trajectory.csv`, `track.svg`, `heading.svg`) and writes `summary.json` beside them: the
 //! model that ran, the linear model, each manoeuvre's figures under `"manoeuvre"` with how
 //! much each moves when the step is halved, and the IMO criteria under `"manoeuvre"."imo"`.
-//! Every file is written whole to a temporary name and renamed.
+//! Every file is written whole to a temporary name and renamed. Ctrl-C (or SIGTERM) ends the
+//! run at its next step: the manoeuvres finished before it keep their folders, summary.json
+//! says `"interrupted": true` and holds their figures, and the exit code is 128 + the signal.
 
+use super::run::{Interrupted, signal_received};
 use anyhow::{Context, Result};
 use eom::output::plots::Mark;
 use eom::output::plots::ship::{ManoeuvrePlot, write_manoeuvre_plots};
@@ -13,7 +16,7 @@ use eom::output::summary::write_atomically;
 use eom::ship::imo::{Criterion, criteria};
 use eom::ship::linear::{LinearModel, Nomoto, linearise};
 use eom::ship::manoeuvre::{Figures, Sample, run};
-use eom::ship::{Manoeuvre, ManoeuvreKind, RigidBodyTerms, ShipModel, ShipScene};
+use eom::ship::{Manoeuvre, ManoeuvreKind, RigidBodyTerms, ShipError, ShipModel, ShipScene};
 use eom_codegen::model::ship::{Units, YawInertia};
 use serde_json::{Map, Value, json};
 use std::path::{Path, PathBuf};
@@ -44,9 +47,15 @@ pub fn execute(text: &str, name: &str, out: &Path) -> Result<()> {
     let model = ShipModel::new(&scene.table)?;
     let linear = LinearModel::closed_form(&scene.table);
     let mut outcomes = Vec::new();
+    let mut interrupted = None;
     for manoeuvre in &scene.manoeuvres {
-        let outcome = run_manoeuvre(&scene, &model, manoeuvre)
-            .with_context(|| format!("manoeuvre {}", manoeuvre.name))?;
+        let outcome = match run_manoeuvre(&scene, &model, manoeuvre) {
+            Err(error) if is_stopped(&error) => {
+                interrupted = signal_received();
+                break;
+            }
+            outcome => outcome.with_context(|| format!("manoeuvre {}", manoeuvre.name))?,
+        };
         let folder = out.join(&manoeuvre.name);
         std::fs::create_dir_all(&folder)
             .with_context(|| format!("creating {}", folder.display()))?;
@@ -77,12 +86,31 @@ pub fn execute(text: &str, name: &str, out: &Path) -> Result<()> {
         "linear": linear_json(&scene, &model, &linear),
         "manoeuvre": manoeuvres,
         "wall_seconds": started.elapsed().as_secs_f64(),
+        "interrupted": interrupted.is_some(),
     });
     let bytes = serde_json::to_vec_pretty(&summary)?;
     let path = out.join("summary.json");
     write_atomically(&path, &bytes).with_context(|| format!("writing {}", path.display()))?;
     print_report(&scene, &outcomes, &judged, out);
-    Ok(())
+    match interrupted {
+        Some(signal) => Err(Interrupted {
+            signal,
+            kept: format!(
+                "the {} manoeuvres finished before it, and summary.json, in {}",
+                outcomes.len(),
+                out.display()
+            ),
+        }
+        .into()),
+        None => Ok(()),
+    }
+}
+
+/// Whether a run ended because a signal asked it to.
+fn is_stopped(error: &anyhow::Error) -> bool {
+    error
+        .downcast_ref::<ShipError>()
+        .is_some_and(|e| matches!(e, ShipError::Stopped { .. }))
 }
 
 fn run_manoeuvre(scene: &ShipScene, model: &ShipModel, manoeuvre: &Manoeuvre) -> Result<Outcome> {
@@ -100,6 +128,7 @@ fn run_manoeuvre(scene: &ShipScene, model: &ShipModel, manoeuvre: &Manoeuvre) ->
                 samples.push(*s);
                 next_row = s.t + every * (1.0 - 1e-9);
             }
+            signal_received().is_none()
         },
     )?;
     let halved = run(
@@ -108,7 +137,7 @@ fn run_manoeuvre(scene: &ShipScene, model: &ShipModel, manoeuvre: &Manoeuvre) ->
         manoeuvre,
         scene.start(),
         scene.step / 2.0,
-        |_| {},
+        |_| signal_received().is_none(),
     )?;
     Ok(Outcome {
         samples,

@@ -186,14 +186,15 @@ struct Log {
 }
 
 /// Runs a manoeuvre from `start` (the model's seven states) with RK4 steps of at most
-/// `step`, calling `observe` at the start, after every step and at every event.
+/// `step`, calling `observe` at the start, after every step and at every event; `observe`
+/// returns whether to go on (false ends the run with [`ShipError::Stopped`]: Ctrl-C).
 pub fn run(
     model: &ShipModel,
     rudder: &Rudder,
     manoeuvre: &Manoeuvre,
     start: [f64; 7],
     step: f64,
-    mut observe: impl FnMut(&Sample),
+    mut observe: impl FnMut(&Sample) -> bool,
 ) -> Result<ManoeuvreRun, ShipError> {
     let mut y = DriveState::zeros();
     for (i, value) in start.iter().enumerate() {
@@ -216,8 +217,11 @@ pub fn run(
     // the round-off of a running sum over 10⁴ steps.
     let (mut anchor, mut k) = (0.0, 0u64);
     driver.apply_times(t, &mut y, &mut times);
-    observe(&driver.sample(t, &y));
+    let mut go_on = observe(&driver.sample(t, &y));
     while t < manoeuvre.duration {
+        if !go_on {
+            return Err(ShipError::Stopped { time: t });
+        }
         let next_time = times.first().copied().unwrap_or(manoeuvre.duration);
         let boundary = next_time.min(manoeuvre.duration);
         let h = if boundary - t <= step * (1.0 + 1e-9) {
@@ -260,7 +264,7 @@ pub fn run(
                 ),
             });
         }
-        observe(&driver.sample(t, &y));
+        go_on = observe(&driver.sample(t, &y));
     }
     let figures = driver.figures(&y);
     Ok(ManoeuvreRun { figures, steps })

@@ -62,6 +62,12 @@ pub enum ShipError {
         /// Why.
         reason: String,
     },
+    /// A run its observer asked to end (Ctrl-C).
+    #[error("the run was stopped at t = {time} s")]
+    Stopped {
+        /// When.
+        time: f64,
+    },
 }
 
 impl ShipError {
