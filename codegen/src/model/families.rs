@@ -702,17 +702,20 @@ fn spatial_groups(symmetry: Symmetry, kinematics: Kinematics) -> Vec<Group> {
     ]
 }
 
-/// The entries of a solved system's inverse matrix, named `{prefix}_{row}{column}`.
-fn inverse_names(
+/// The entries of a solved system's inverse matrix, named `{prefix}_{row}{column}`: each
+/// non-zero entry once, an entry below the diagonal only where it differs from its mirror
+/// above (a symmetric inverse names its upper triangle; a ship's, with Y_ṙ ≠ N_v̇, all four).
+pub(super) fn inverse_names(
     solution: &Solution,
     prefix: &str,
     matrix: &str,
     axes: &[&str],
 ) -> Vec<CoefficientName> {
+    let inverse = &solution.inverse;
     let mut names = Vec::new();
-    for (i, row) in solution.inverse.iter().enumerate() {
-        for (j, value) in row.iter().enumerate().skip(i) {
-            if value.is_zero() {
+    for (i, row) in inverse.iter().enumerate() {
+        for (j, value) in row.iter().enumerate() {
+            if value.is_zero() || (j < i && *value == inverse[j][i]) {
                 continue;
             }
             names.push(CoefficientName {

@@ -26,8 +26,9 @@
 //!   `½ρL²U² · Y'_vvr (v/U)² (rL/U)`. The scaling is part of the derivation, so the proof
 //!   covers it; the one quantity that is not a polynomial, U, is an input the caller computes.
 
+use super::families::inverse_names;
 use super::solve::solve_linear;
-use super::system::{BuildError, CoefficientName, Group, Parameter, System};
+use super::system::{BuildError, Group, Parameter, System};
 use crate::derivation::energy::rigid_body_kinetic_energy;
 use crate::derivation::kinematics::rotation_z;
 use crate::derivation::planar;
@@ -397,8 +398,9 @@ pub fn ship(name: &str, spec: &ShipSpec) -> Result<System, BuildError> {
         Expr::symbol("r"),
         Expr::symbol("delta_rate"),
     ]);
-    let mut coefficient_names = inverse_names(&surge.inverse, &["u"]);
-    coefficient_names.extend(inverse_names(&sway_yaw.inverse, &["v", "r"]));
+    let names = |solution, axes| inverse_names(solution, "inv_mass_matrix", "M_A", axes);
+    let mut coefficient_names = names(&surge, &["u"]);
+    coefficient_names.extend(names(&sway_yaw, &["v", "r"]));
     let mut reciprocals = surge.reciprocals.clone();
     reciprocals.extend(sway_yaw.reciprocals.iter().cloned());
     Ok(System {
@@ -433,22 +435,4 @@ pub fn ship(name: &str, spec: &ShipSpec) -> Result<System, BuildError> {
         potential_formula: None,
         coefficient_names,
     })
-}
-
-/// Names for the entries of a block's inverse mass matrix, rows and columns named by `axes`.
-fn inverse_names(inverse: &[Vec<Expr>], axes: &[&str]) -> Vec<CoefficientName> {
-    let mut names = Vec::new();
-    for (i, row) in inverse.iter().enumerate() {
-        for (j, value) in row.iter().enumerate().filter(|(_, v)| !v.is_zero()) {
-            names.push(CoefficientName {
-                value: value.clone(),
-                name: format!("inv_mass_matrix_{}{}", axes[i], axes[j]),
-                description: format!(
-                    "The entry `(M_A⁻¹)_{}{}` of the inverse mass matrix with added mass",
-                    axes[i], axes[j]
-                ),
-            });
-        }
-    }
-    names
 }
