@@ -12,7 +12,7 @@ use super::table::ShipTable;
 use eom_codegen::emit::program::{Node, Program};
 use eom_codegen::emit::{Operations, prove};
 use eom_codegen::model::System;
-use eom_codegen::model::ship::{ADDED_MASS, ShipSpec, Units, ship};
+use eom_codegen::model::ship::{ADDED_MASS, PRIME_SCALES, ShipSpec, Units, ship};
 use eom_codegen::symbolic::Expr;
 use simba::simd::SimdRealField;
 use std::collections::BTreeMap;
@@ -57,7 +57,7 @@ impl ShipModel {
         let system = ship("ship", &spec)
             .map_err(|e| ShipError::Build(eom_codegen::emit::EmitError::Model(e)))?;
         let program = prove(&system)?;
-        let values = parameter_values(table);
+        let values = parameter_values(&spec, table);
         let coefficients = coefficient_values(&system, &program, &values);
         let mut ops = Vec::with_capacity(program.nodes.len());
         for node in &program.nodes {
@@ -106,38 +106,30 @@ impl ShipModel {
     }
 }
 
-/// Every parameter's value by its symbol, as the table gives it.
-fn parameter_values(table: &ShipTable) -> BTreeMap<String, f64> {
-    let mut values = BTreeMap::new();
-    let (mass, inertia, centre) = match (table.units, table.body.yaw_inertia_about) {
-        (Units::Dimensional, about) => ("M", inertia_symbol(about, false), "x_G"),
-        (Units::Prime, about) => ("mass_prime", inertia_symbol(about, true), "x_g_prime"),
-    };
-    values.insert(mass.to_owned(), table.body.mass);
-    values.insert(inertia.to_owned(), table.body.yaw_inertia);
-    values.insert(centre.to_owned(), table.body.x_g);
-    for (symbol, value) in ADDED_MASS.iter().zip(table.added_mass) {
-        values.insert((*symbol).to_owned(), value);
-    }
+/// Every parameter's value by its symbol, as the table gives it; the symbols are the spec's.
+fn parameter_values(spec: &ShipSpec, table: &ShipTable) -> BTreeMap<String, f64> {
+    let body = [table.body.mass, table.body.yaw_inertia, table.body.x_g];
+    let mut values: BTreeMap<String, f64> = spec
+        .body_symbols()
+        .into_iter()
+        .zip(body)
+        .chain(ADDED_MASS.into_iter().zip(table.added_mass))
+        .map(|(symbol, value)| (symbol.to_owned(), value))
+        .collect();
     if table.units == Units::Prime {
-        values.insert("rho".into(), table.density.unwrap_or(f64::NAN));
-        values.insert("L".into(), table.length.unwrap_or(f64::NAN));
-        values.insert("U0".into(), table.design_speed);
+        let scales = [
+            table.density.unwrap_or(f64::NAN),
+            table.length.unwrap_or(f64::NAN),
+            table.design_speed,
+        ];
+        for (symbol, value) in PRIME_SCALES.into_iter().zip(scales) {
+            values.insert(symbol.to_owned(), value);
+        }
     }
     for (term, value) in &table.terms {
         values.insert(term.symbol(), *value);
     }
     values
-}
-
-fn inertia_symbol(about: eom_codegen::model::ship::YawInertia, prime: bool) -> &'static str {
-    use eom_codegen::model::ship::YawInertia::{AboutG, AboutMidship};
-    match (about, prime) {
-        (AboutG, false) => "Izz",
-        (AboutMidship, false) => "Izz_midship",
-        (AboutG, true) => "izz_prime",
-        (AboutMidship, true) => "izz_midship_prime",
-    }
 }
 
 /// The hoisted coefficients, each computed once from the parameters (and the reciprocals of

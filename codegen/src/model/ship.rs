@@ -155,6 +155,13 @@ pub struct ShipSpec {
     pub terms: Vec<Term>,
 }
 
+/// The prime system's scales, by their symbols: ρ, L, and U₀ (the reference of the surge
+/// perturbation), parameters of a prime-system model after the body's and the added mass.
+pub const PRIME_SCALES: [&str; 3] = [DENSITY, LENGTH, DESIGN_SPEED];
+const DENSITY: &str = "rho";
+const LENGTH: &str = "L";
+const DESIGN_SPEED: &str = "U0";
+
 /// The state of every ship model: 4.46's velocities, 4.44's track and heading, the rudder.
 pub const STATE: [&str; 7] = ["u", "v", "r", "X", "Y", "psi", "delta"];
 
@@ -200,15 +207,14 @@ impl ShipSpec {
             });
         }
         if prime {
-            parameters.push(parameter("rho", "water density ρ"));
-            parameters.push(parameter(
-                "L",
+            let docs = [
+                "water density ρ",
                 "length L, the prime system's unit of length",
-            ));
-            parameters.push(parameter(
-                "U0",
                 "the design speed U₀ of the surge perturbation",
-            ));
+            ];
+            for (symbol, doc) in PRIME_SCALES.iter().zip(docs) {
+                parameters.push(parameter(symbol, doc));
+            }
         }
         for term in &self.terms {
             let variables = match self.units {
@@ -234,6 +240,12 @@ impl ShipSpec {
             Units::Dimensional => vec!["delta_rate"],
             Units::Prime => vec!["delta_rate", "U"],
         }
+    }
+
+    /// The symbols of the body's three parameters, in this spec's units: the mass, the yaw
+    /// inertia (about the point the spec says), the position of G.
+    pub fn body_symbols(&self) -> [&'static str; 3] {
+        [self.mass(), self.inertia(), self.centre()]
     }
 
     fn mass(&self) -> &'static str {
@@ -266,7 +278,7 @@ impl ShipSpec {
             Units::Dimensional => Ok(Expr::int(1)),
             Units::Prime => {
                 let half = Expr::constant(Rational::new(1.into(), 2.into()));
-                Ok(&(&half * &Expr::symbol("rho")) * &Expr::symbol("L").pow(length_power)?)
+                Ok(&(&half * &Expr::symbol(DENSITY)) * &Expr::symbol(LENGTH).pow(length_power)?)
             }
         }
     }
@@ -277,7 +289,7 @@ impl ShipSpec {
         let mass = &self.scale(3)? * &Expr::symbol(self.mass());
         let x_g = match self.units {
             Units::Dimensional => Expr::symbol("x_G"),
-            Units::Prime => &Expr::symbol("L") * &Expr::symbol("x_g_prime"),
+            Units::Prime => &Expr::symbol(LENGTH) * &Expr::symbol(self.centre()),
         };
         let given = &self.scale(5)? * &Expr::symbol(self.inertia());
         let izz = match self.yaw_inertia {
@@ -302,7 +314,7 @@ impl ShipSpec {
                 }
                 Units::Prime => {
                     // ½ρL²U² · (Δu/U)^a (v/U)^b (rL/U)^c δ^d, times L for a moment.
-                    let surge = Expr::symbol("u") - Expr::symbol("U0");
+                    let surge = Expr::symbol("u") - Expr::symbol(DESIGN_SPEED);
                     let speed = Expr::symbol("U").pow(2 - term.kinematic_degree())?;
                     let variables = &(&surge.pow(a)? * &Expr::symbol("v").pow(b)?)
                         * &(&Expr::symbol("r").pow(c)? * &Expr::symbol("delta").pow(d)?);
