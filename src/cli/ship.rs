@@ -13,6 +13,7 @@ use anyhow::{Context, Result};
 use eom::output::plots::Mark;
 use eom::output::plots::ship::{ManoeuvrePlot, write_manoeuvre_plots};
 use eom::output::summary::write_atomically;
+use eom::output::trajectory::push_number;
 use eom::ship::imo::{Criterion, criteria};
 use eom::ship::linear::{LinearModel, Nomoto, linearise};
 use eom::ship::manoeuvre::{Figures, Sample, run};
@@ -147,30 +148,34 @@ fn run_manoeuvre(scene: &ShipScene, model: &ShipModel, manoeuvre: &Manoeuvre) ->
     })
 }
 
-/// `trajectory.csv`: t, the model's state (radians, m/s), the command and the distance run.
+/// `trajectory.csv`: t, the model's state (radians, m/s), the command and the distance run,
+/// numbers as every trajectory file writes them.
 fn write_trajectory(path: &Path, samples: &[Sample]) -> Result<()> {
-    let mut writer = csv::Writer::from_writer(Vec::new());
-    writer.write_record([
-        "t", "u", "v", "r", "x", "y", "psi", "delta", "command", "distance",
-    ])?;
+    let mut bytes = b"t,u,v,r,x,y,psi,delta,command,distance\n".to_vec();
+    let mut number = ryu::Buffer::new();
     for sample in samples {
-        let mut row = vec![ryu_text(sample.t)];
-        row.extend(sample.state[..7].iter().map(|v| ryu_text(*v)));
-        row.push(ryu_text(sample.command));
-        row.push(ryu_text(sample.state[7]));
-        writer.write_record(&row)?;
+        let [u, v, r, x, y, psi, delta, distance] = sample.state;
+        let row = [
+            sample.t,
+            u,
+            v,
+            r,
+            x,
+            y,
+            psi,
+            delta,
+            sample.command,
+            distance,
+        ];
+        for (i, value) in row.into_iter().enumerate() {
+            if i > 0 {
+                bytes.push(b',');
+            }
+            push_number(&mut bytes, &mut number, value);
+        }
+        bytes.push(b'\n');
     }
-    let bytes = writer.into_inner().map_err(|e| anyhow::anyhow!("{e}"))?;
     write_atomically(path, &bytes).with_context(|| format!("writing {}", path.display()))
-}
-
-/// Rust's shortest text that reads back to the same bits.
-fn ryu_text(value: f64) -> String {
-    if value.is_finite() {
-        ryu::Buffer::new().format_finite(value).to_owned()
-    } else {
-        value.to_string()
-    }
 }
 
 fn write_plots(

@@ -127,11 +127,7 @@ impl TrajectoryWriter {
         let mut number = ryu::Buffer::new();
         let buffer = &mut self.buffer;
         let mut field = |x: f64| {
-            if x.is_finite() {
-                buffer.extend_from_slice(number.format_finite(x).as_bytes());
-            } else {
-                buffer.extend_from_slice(x.to_string().as_bytes());
-            }
+            push_number(buffer, &mut number, x);
             buffer.push(b',');
         };
         field(row.t);
@@ -180,5 +176,15 @@ impl Sink for TrajectoryWriter {
             on_row(row.t);
         }
         true
+    }
+}
+
+/// Appends `x` as every trajectory file writes a number: in Rust's shortest form that reads
+/// back to the same bits, `NaN`, `inf` and `-inf` as Rust writes them.
+pub fn push_number(line: &mut Vec<u8>, number: &mut ryu::Buffer, x: f64) {
+    if x.is_finite() {
+        line.extend_from_slice(number.format_finite(x).as_bytes());
+    } else {
+        line.extend_from_slice(x.to_string().as_bytes());
     }
 }
