@@ -7,6 +7,9 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
+#[path = "common/child.rs"]
+mod child;
+
 fn eom() -> Command {
     Command::new(env!("CARGO_BIN_EXE_eom"))
 }
@@ -892,17 +895,7 @@ fn long_run(dir: &Path, out: &Path) -> std::process::Child {
         .replace("end_time = 20.0", "end_time = 1.0e6")
         .replace("max_steps = 1_000_000", "max_steps = 1_000_000_000");
     std::fs::write(&path, text).unwrap();
-    eom()
-        .args([
-            "run",
-            path.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ])
-        .stdout(std::process::Stdio::null())
-        .stderr(std::process::Stdio::piped())
-        .spawn()
-        .unwrap()
+    child::spawn_run(&path, out)
 }
 
 /// Waits until `out/trajectory.csv` holds at least `lines` lines.
@@ -921,22 +914,6 @@ fn wait_for_rows(child: &mut std::process::Child, out: &Path, lines: usize) {
         }
         assert!(start.elapsed().as_secs() < 120, "no rows after two minutes");
         std::thread::sleep(std::time::Duration::from_millis(50));
-    }
-}
-
-/// Waits for the child to end, at most a minute.
-#[cfg(unix)]
-fn wait_for_exit(child: &mut std::process::Child) -> std::process::ExitStatus {
-    let start = std::time::Instant::now();
-    loop {
-        if let Some(status) = child.try_wait().unwrap() {
-            return status;
-        }
-        if start.elapsed().as_secs() > 60 {
-            let _ = child.kill();
-            panic!("the run did not end within a minute of its signal");
-        }
-        std::thread::sleep(std::time::Duration::from_millis(20));
     }
 }
 
@@ -982,9 +959,8 @@ fn ctrl_c_or_sigterm_end_a_run_with_every_row_its_summary_and_plots() {
         let pid = libc::pid_t::try_from(child.id()).unwrap();
         // SAFETY: kill(2) on the child's own pid, which has not been waited for yet.
         assert_eq!(unsafe { libc::kill(pid, signal) }, 0);
-        let status = wait_for_exit(&mut child);
-        let mut stderr = String::new();
-        std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut stderr).unwrap();
+        let status = child::wait_for_exit(&mut child);
+        let stderr = child::stderr(&mut child);
         assert_eq!(status.code(), Some(code), "{name}: {stderr}");
         assert!(stderr.contains("interrupted by"), "{stderr}");
         // A clean end: the file ends with a whole row, and the summary is its.

@@ -4,6 +4,9 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
+#[path = "common/child.rs"]
+mod child;
+
 fn eom(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_eom"))
         .args(args)
@@ -180,17 +183,7 @@ fn ctrl_c_ends_a_ship_run_keeping_the_finished_manoeuvres() {
     let path = dir.join("long.toml");
     std::fs::write(&path, text).unwrap();
     let out = dir.join("out");
-    let mut child = Command::new(env!("CARGO_BIN_EXE_eom"))
-        .args([
-            "run",
-            path.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ])
-        .stdout(std::process::Stdio::null())
-        .stderr(std::process::Stdio::piped())
-        .spawn()
-        .unwrap();
+    let mut child = child::spawn_run(&path, &out);
     let first = out.join("turning_circle_35").join("heading.svg");
     let clock = Instant::now();
     while !first.exists() {
@@ -204,18 +197,8 @@ fn ctrl_c_ends_a_ship_run_keeping_the_finished_manoeuvres() {
     let pid = libc::pid_t::try_from(child.id()).unwrap();
     // SAFETY: kill(2) on the child's own pid, which has not been waited for yet.
     assert_eq!(unsafe { libc::kill(pid, libc::SIGINT) }, 0);
-    let status = loop {
-        if let Some(status) = child.try_wait().unwrap() {
-            break status;
-        }
-        assert!(
-            clock.elapsed() < Duration::from_secs(180),
-            "the run did not end"
-        );
-        std::thread::sleep(Duration::from_millis(20));
-    };
-    let mut stderr = String::new();
-    std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut stderr).unwrap();
+    let status = child::wait_for_exit(&mut child);
+    let stderr = child::stderr(&mut child);
     assert_eq!(status.code(), Some(130), "{stderr}");
     assert!(stderr.contains("interrupted by"), "{stderr}");
     let summary: serde_json::Value =
