@@ -191,12 +191,12 @@ fn execute(
 ) -> Result<()> {
     watch_signals();
     if eom::ship::scene::is_ship_scene(text) {
-        ShipScene::parse(text, name)?;
+        let scene = ShipScene::parse(text, name)?;
         if shard.is_some() {
             bail!("--shard splits a [sweep]; a ship scene has none");
         }
         prepare_folder(out, force)?;
-        return super::ship::execute(text, name, out);
+        return super::ship::execute(&scene, name, out);
     }
     let all = cases(text, name)?;
     let swept = !all[0].values.is_empty();

@@ -41,16 +41,15 @@ struct Outcome {
     steps: u64,
 }
 
-/// Runs a ship scene into `out`, a folder already known to be writable.
-pub fn execute(text: &str, name: &str, out: &Path) -> Result<()> {
+/// Runs a ship scene, read and checked, into `out`, a folder already known to be writable.
+pub fn execute(scene: &ShipScene, name: &str, out: &Path) -> Result<()> {
     let started = Instant::now();
-    let scene = ShipScene::parse(text, name)?;
     let model = ShipModel::new(&scene.table)?;
     let linear = LinearModel::closed_form(&scene.table);
     let mut outcomes = Vec::new();
     let mut interrupted = None;
     for manoeuvre in &scene.manoeuvres {
-        let outcome = match run_manoeuvre(&scene, &model, manoeuvre) {
+        let outcome = match run_manoeuvre(scene, &model, manoeuvre) {
             Err(error) if is_stopped(&error) => {
                 interrupted = signal_received();
                 break;
@@ -61,7 +60,7 @@ pub fn execute(text: &str, name: &str, out: &Path) -> Result<()> {
         std::fs::create_dir_all(&folder)
             .with_context(|| format!("creating {}", folder.display()))?;
         write_trajectory(&folder.join("trajectory.csv"), &outcome.samples)?;
-        write_plots(&folder, &scene, manoeuvre, &outcome)?;
+        write_plots(&folder, scene, manoeuvre, &outcome)?;
         outcomes.push(outcome);
     }
     let runs: Vec<(&Manoeuvre, &Figures)> = scene
@@ -82,9 +81,9 @@ pub fn execute(text: &str, name: &str, out: &Path) -> Result<()> {
     let summary = json!({
         "scene": name,
         "title": scene.title,
-        "model": model_json(&scene, &model),
+        "model": model_json(scene, &model),
         "integrator": {"method": "rk4", "step": scene.step},
-        "linear": linear_json(&scene, &model, &linear),
+        "linear": linear_json(scene, &model, &linear),
         "manoeuvre": manoeuvres,
         "wall_seconds": started.elapsed().as_secs_f64(),
         "interrupted": interrupted.is_some(),
@@ -92,7 +91,7 @@ pub fn execute(text: &str, name: &str, out: &Path) -> Result<()> {
     let bytes = serde_json::to_vec_pretty(&summary)?;
     let path = out.join("summary.json");
     write_atomically(&path, &bytes).with_context(|| format!("writing {}", path.display()))?;
-    print_report(&scene, &outcomes, &judged, out);
+    print_report(scene, &outcomes, &judged, out);
     match interrupted {
         Some(signal) => Err(Interrupted {
             signal,
