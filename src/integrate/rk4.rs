@@ -31,9 +31,10 @@ impl Rk4 {
 /// the one for drivers that choose their own steps (a manoeuvre that steps onto the instant
 /// an event happens). The same arithmetic as [`rk4_array`], in the same order, on nalgebra
 /// vectors (`tests/batch.rs` checks the two bit for bit): along an integrator's chain of
-/// dependent stages this form is the faster by about 6 % (`cargo bench --bench driver`:
-/// 1.43–1.44 of the bare calls against 1.51–1.52), where for many independent bodies the
-/// array form is three times the faster (`cargo bench --bench batch`).
+/// dependent stages this form is the faster (`cargo bench --bench driver`, two runs: a
+/// scene's run took 0.95–0.97 of the bare calls' time with it, 1.61–1.62 with the array
+/// form), where for many independent bodies the array form is three times the faster
+/// (`cargo bench --bench batch`).
 pub fn rk4_step<T, const N: usize, S>(system: &S, t: T, h: T, y: &mut SVector<T, N>)
 where
     T: SimdRealField + Copy,

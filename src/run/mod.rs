@@ -292,7 +292,7 @@ impl Visitor for Runner<'_> {
         };
         let y0 = SVector::<f64, N>::from_column_slice(&scene.initial);
         let clock = Instant::now();
-        let system = model.driven_by(loads.clone());
+        let system = model.driven_by(loads.prepared());
         let spec = &scene.integrator;
         let interval = (0.0, y0, spec.end_time);
         let mut guard = Guard::new(scene);

@@ -19,7 +19,9 @@ mod select;
 pub mod sweep;
 
 pub use error::{Problem, SceneError};
-pub use loads::{PendulumLoads, PlanarLoads, SceneLoads, SpatialLoads, TopLoads, euler_angles};
+pub use loads::{
+    PendulumLoads, PlanarLoads, PreparedLoads, SceneLoads, SpatialLoads, TopLoads, euler_angles,
+};
 pub use select::{Selection, select_spatial};
 
 use crate::integrate::AdaptiveOptions;
