@@ -229,9 +229,16 @@ impl SceneLoads {
         }
     }
 
-    /// The inputs of the model at a state, into `out` (the model's input layout).
+    /// The inputs of the model at a state, into `out` (the model's input layout): every
+    /// load evaluated, zero ones included. A run evaluates [`prepared`](Self::prepared) loads,
+    /// which skip what is zero.
     pub fn inputs(&self, state: &[f64], out: &mut [f64]) {
-        self.inputs_acting(self.acting(), state, out);
+        let every = Acting {
+            any: true,
+            damping: true,
+            in_space: matches!(self, SceneLoads::Spatial(l) if l.is_fixed_in_space()),
+        };
+        self.inputs_acting(every, state, out);
     }
 
     /// The loads as a run evaluates them, millions of times: which of them act is decided
