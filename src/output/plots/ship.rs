@@ -3,10 +3,9 @@
 //! with the advance, transfer and tactical diameter); and `heading.svg`, the heading change,
 //! the rudder angle and its command over time (a zig-zag's plot).
 
-use super::{
-    COLOURS, DrawError, Line, Mark, PanelStyle, PlotError, draw_track, emit, render, time_panel,
-    time_range,
-};
+use super::series::{Line, PanelStyle, time_panel, time_range};
+use super::track::draw_track;
+use super::{COLOURS, DrawError, Mark, PlotError, emit, render};
 use std::path::{Path, PathBuf};
 
 /// The columns of one manoeuvre, sampled at the same times.

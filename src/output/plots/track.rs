@@ -1,0 +1,119 @@
+//! The track plot: one coordinate against the other at one scale on both axes, its ends and
+//! any marked points shown.
+
+use super::scale::{axis_range, bounded, decimate, extent, tick_label};
+use super::{Area, COLOURS, DrawError, FONT, render};
+use plotters::prelude::*;
+
+/// The chart builder of the track plot, the same for the layout pass and the drawing.
+fn track_builder<'a, 'b>(
+    area: &'a Area<'b>,
+    caption: &str,
+) -> ChartBuilder<'a, 'b, SVGBackend<'b>> {
+    let mut builder = ChartBuilder::on(area);
+    builder
+        .caption(caption, (FONT, 22))
+        .margin(12)
+        .x_label_area_size(44)
+        .y_label_area_size(88);
+    builder
+}
+
+/// A point marked on a track, with its legend entry.
+pub struct Mark {
+    /// The legend entry: what the point is, with its figure.
+    pub label: String,
+    /// Where, in the plot's (horizontal, vertical) coordinates.
+    pub point: (f64, f64),
+}
+
+/// The track plot: the vertical coordinate against the horizontal with one scale on both axes
+/// (a circle is drawn round), the start and the end marked, and `marks` as crosses.
+pub(super) fn draw_track(
+    svg: &mut String,
+    caption: &str,
+    (x_desc, y_desc): (&str, &str),
+    (x, y): (&[f64], &[f64]),
+    marks: &[Mark],
+) -> Result<(), DrawError> {
+    let size = (900, 900);
+    // The size of the plotting area does not depend on the ranges: lay out once on a scratch
+    // string to learn it, then choose the ranges for equal scales.
+    let (width, height) = {
+        let mut scratch = String::new();
+        let root = SVGBackend::with_string(&mut scratch, size).into_drawing_area();
+        let chart = track_builder(&root, caption).build_cartesian_2d(0.0..1.0, 0.0..1.0)?;
+        let (w, h) = chart.plotting_area().dim_in_pixel();
+        (f64::from(w.max(1)), f64::from(h.max(1)))
+    };
+    let finite = |i: usize| x[i].is_finite() && y[i].is_finite();
+    let points: Vec<(f64, f64)> = decimate(x.len(), (width + height) as usize, finite, &[x, y])
+        .into_iter()
+        .map(|i| (bounded(x[i]), bounded(y[i])))
+        .collect();
+    let x_range = axis_range(extent(points.iter().map(|p| p.0)));
+    let y_range = axis_range(extent(points.iter().map(|p| p.1)));
+    // One scale: the units per pixel of the axis that needs more, on both, centred.
+    let per_pixel = ((x_range.1 - x_range.0) / width).max((y_range.1 - y_range.0) / height);
+    let equal = |(lo, hi): (f64, f64), pixels: f64| {
+        let (centre, half) = (lo / 2.0 + hi / 2.0, per_pixel * pixels / 2.0);
+        (centre - half, centre + half)
+    };
+    let (x_range, y_range) = (equal(x_range, width), equal(y_range, height));
+    let ticks = 8;
+    let x_label = |v: &f64| tick_label(*v, x_range, ticks);
+    let y_label = |v: &f64| tick_label(*v, y_range, ticks);
+
+    render(svg, size, |root| {
+        let mut chart = track_builder(root, caption)
+            .build_cartesian_2d(x_range.0..x_range.1, y_range.0..y_range.1)?;
+        chart
+            .configure_mesh()
+            .x_labels(ticks)
+            .y_labels(ticks)
+            .x_label_formatter(&x_label)
+            .y_label_formatter(&y_label)
+            .light_line_style(TRANSPARENT)
+            .label_style((FONT, 12))
+            .x_desc(x_desc)
+            .y_desc(y_desc)
+            .draw()?;
+        let colour = COLOURS[0];
+        chart
+            .draw_series(LineSeries::new(
+                points.iter().copied(),
+                colour.stroke_width(1),
+            ))?
+            .label("track")
+            .legend(move |(x, y)| Rectangle::new([(x, y - 1), (x + 16, y + 1)], colour.filled()));
+        // The start a ring, the end a dot inside it: both show when the track closes.
+        let ends = [
+            ("start", points.first(), COLOURS[2].stroke_width(2), 7),
+            ("end", points.last(), RGBColor(214, 39, 40).filled(), 4),
+        ];
+        for (name, point, style, radius) in ends {
+            if let Some(&point) = point {
+                chart
+                    .draw_series([Circle::new(point, radius, style)])?
+                    .label(name)
+                    .legend(move |(x, y)| Circle::new((x + 8, y), radius.min(5), style));
+            }
+        }
+        for (mark, colour) in marks.iter().zip(COLOURS.iter().cycle().skip(1)) {
+            let style = colour.stroke_width(2);
+            let point = (bounded(mark.point.0), bounded(mark.point.1));
+            chart
+                .draw_series([Cross::new(point, 8, style)])?
+                .label(mark.label.as_str())
+                .legend(move |(x, y)| Cross::new((x + 8, y), 5, style));
+        }
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::UpperRight)
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .label_font((FONT, 13))
+            .draw()?;
+        Ok(())
+    })
+}
