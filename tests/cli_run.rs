@@ -289,7 +289,7 @@ fn run_edited(test: &str, base: &str, edit: impl Fn(&str) -> String) -> (i32, St
 
 #[test]
 fn bad_scene_files_name_the_key_and_exit_with_the_scene_code() {
-    let cases: [(&str, &str, &str, &str); 9] = [
+    let cases: [(&str, &str, &str, &str); 10] = [
         ("malformed", "[integrator\n", "", "not valid TOML"),
         (
             "unknown_key",
@@ -320,6 +320,12 @@ fn bad_scene_files_name_the_key_and_exit_with_the_scene_code() {
             "zero_tolerance",
             "rtol = 1e-10",
             "rtol = 0.0",
+            "integrator.rtol",
+        ),
+        (
+            "tolerance_below_f64",
+            "rtol = 1e-10",
+            "rtol = 1e-16",
             "integrator.rtol",
         ),
         ("missing_key", "end_time = 20.0", "", "end_time"),

@@ -8,7 +8,7 @@ use std::cell::Cell;
 use eom::PendulumParameters;
 use eom::integrate::{
     AdaptiveOptions, Dop853, Dopri5, Euler, IntegrateError, Integrator, LieMidpoint, Rk4,
-    Statistics, SymplecticEuler,
+    Statistics, SymplecticEuler, min_rtol,
 };
 use eom::reference::torque_free::PrincipalBody;
 use eom::reference::{AxisymmetricTop, LargeSwing, PlanarTurn, ReferenceProblem, TennisRacket};
@@ -385,6 +385,66 @@ fn invalid_steps_and_tolerances_are_named() {
     ));
     let e = Euler::new(0.1).integrate(&decay, 1.0, y0, 0.0);
     assert!(matches!(e, Err(IntegrateError::InvalidInterval { .. })));
+}
+
+/// A relative tolerance below ten rounding units of the scalar type is refused before the
+/// first step, naming the precision and the smallest accepted; at the limit, above it, and 0
+/// with an absolute tolerance, the run goes. In f32 the limit is 6.0e-7: rtol 1e-6 runs.
+#[test]
+fn a_tolerance_below_the_precision_is_refused() {
+    let decay32 = |_t: f32, y: &Vector1<f32>, dy: &mut Vector1<f32>| *dy = -*y;
+    let decay64 = |_t: f64, y: &Vector1<f64>, dy: &mut Vector1<f64>| *dy = -*y;
+    let min32 = min_rtol::<f32>();
+    assert!((5.9e-7..6.0e-7).contains(&min32), "{min32}");
+    for rtol in [1e-9, 1e-7, 0.99 * min32] {
+        let refused = Dop853::new(AdaptiveOptions::dop853(rtol, rtol))
+            .integrate(&decay32, 0.0, Vector1::new(1.0), 1.0)
+            .unwrap_err();
+        assert_eq!(
+            refused,
+            IntegrateError::ToleranceBelowPrecision {
+                rtol,
+                min: min32,
+                precision: "f32"
+            }
+        );
+        assert!(refused.to_string().contains("rtol"), "{refused}");
+        let refused = Dopri5::new(AdaptiveOptions::dopri5(rtol, rtol)).integrate(
+            &decay32,
+            0.0,
+            Vector1::new(1.0),
+            1.0,
+        );
+        assert!(matches!(
+            refused,
+            Err(IntegrateError::ToleranceBelowPrecision { .. })
+        ));
+    }
+    for (rtol, atol) in [(min32, 1e-6), (1e-6, 1e-6), (0.0, 1e-6)] {
+        let end = Dop853::new(AdaptiveOptions::dop853(rtol, atol))
+            .integrate(&decay32, 0.0, Vector1::new(1.0), 1.0)
+            .unwrap_or_else(|e| panic!("rtol {rtol}: {e}"));
+        assert!(
+            (end[0] - (-1.0f32).exp()).abs() < 1e-5,
+            "rtol {rtol}: {end}"
+        );
+    }
+    // f64: 1.1e-15.
+    let min64 = min_rtol::<f64>();
+    let refused = Dop853::new(AdaptiveOptions::dop853(1e-16, 1e-16)).integrate(
+        &decay64,
+        0.0,
+        Vector1::new(1.0),
+        1.0,
+    );
+    assert!(matches!(
+        refused,
+        Err(IntegrateError::ToleranceBelowPrecision { precision: "f64", min, .. }) if min == min64
+    ));
+    let end = Dop853::new(AdaptiveOptions::dop853(2.0 * min64, 1e-16))
+        .integrate(&decay64, 0.0, Vector1::new(1.0), 1.0)
+        .expect("twice the limit runs");
+    assert!((end[0] - (-1.0f64).exp()).abs() < 1e-14, "{end}");
 }
 
 #[test]

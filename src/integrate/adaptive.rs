@@ -439,6 +439,7 @@ where
     S: OdeSystem<T, N> + ?Sized,
 {
     options.validate()?;
+    options.check_precision::<T>()?;
     check_interval(t0, t_end)?;
     check_finite(y0, t0)?;
     if t_end == t0 {

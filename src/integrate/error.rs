@@ -24,6 +24,21 @@ pub enum IntegrateError {
         /// Its value.
         value: f64,
     },
+    /// The relative tolerance is below what the precision can meet: below ten rounding units
+    /// of the scalar type ([`min_rtol`](crate::integrate::min_rtol)), where the error estimate
+    /// is rounding noise and the method would take ever more steps for no accuracy.
+    #[error(
+        "tolerance rtol = {rtol:e} is below what {precision} can meet: at least {min:e} (ten \
+         rounding units), or 0 for a purely absolute tolerance"
+    )]
+    ToleranceBelowPrecision {
+        /// The relative tolerance asked for.
+        rtol: f64,
+        /// The smallest one this precision accepts.
+        min: f64,
+        /// The scalar type, e.g. `"f32"`.
+        precision: &'static str,
+    },
     /// A parameter of the step-size controller (`beta`, `safety`, `fac_min`, `fac_max`) is out
     /// of its range.
     #[error("step-size controller parameter {name} = {value} must lie in {range}")]

@@ -33,7 +33,7 @@ mod rk4;
 mod stats;
 mod symplectic_euler;
 
-pub use controller::AdaptiveOptions;
+pub use controller::{AdaptiveOptions, min_rtol};
 pub use dop853::Dop853;
 pub use dopri5::Dopri5;
 pub use error::IntegrateError;

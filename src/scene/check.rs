@@ -475,6 +475,16 @@ impl Checker<'_> {
                 ));
             }
             let rtol = self.tolerance("integrator.rtol", t.rtol)?;
+            let min_rtol = crate::integrate::min_rtol::<f64>();
+            if rtol < min_rtol {
+                return Err(self.invalid(
+                    "integrator.rtol",
+                    format!(
+                        "must be at least {min_rtol:e}, ten rounding units of f64 (below it \
+                         the method takes more steps for no accuracy), got {rtol:e}"
+                    ),
+                ));
+            }
             let atol = self.tolerance("integrator.atol", t.atol)?;
             let mut options = match method {
                 Method::Dopri5 => AdaptiveOptions::dopri5(rtol, atol),
