@@ -18,6 +18,7 @@ use std::path::Path;
 use std::time::Instant;
 
 use eom::InertiaTensor;
+use eom::generic::{quaternion_state_of_rotation, rotation_of_quaternion_state};
 use eom::integrate::{
     AdaptiveOptions, Dop853, Dopri5, Euler, IntegrateError, Integrator, LieMidpoint, Rk4,
     SymplecticEuler,
@@ -61,29 +62,6 @@ impl Drift {
         let h0 = racket.momentum_in_space();
         self.momentum_in_space = self.momentum_in_space.max((h - h0).norm() / h0.norm());
     }
-}
-
-/// The racket's `[p, q, r, q0, q1, q2, q3]` in a spatial model's 13-state, at rest in
-/// translation (u = v = w = 0, x = y = z = 0), which no load changes.
-fn spatial_state(y: &SVector<f64, 7>) -> SVector<f64, 13> {
-    let mut state = SVector::<f64, 13>::zeros();
-    state
-        .fixed_rows_mut::<3>(3)
-        .copy_from(&y.fixed_rows::<3>(0));
-    state
-        .fixed_rows_mut::<4>(9)
-        .copy_from(&y.fixed_rows::<4>(3));
-    state
-}
-
-/// The racket's `[p, q, r, q0, q1, q2, q3]` of a spatial model's 13-state.
-fn racket_state(state: &SVector<f64, 13>) -> SVector<f64, 7> {
-    let mut y = SVector::<f64, 7>::zeros();
-    y.fixed_rows_mut::<3>(0)
-        .copy_from(&state.fixed_rows::<3>(3));
-    y.fixed_rows_mut::<4>(3)
-        .copy_from(&state.fixed_rows::<4>(9));
-    y
 }
 
 /// One row of the table.
@@ -158,7 +136,7 @@ fn periods_for<S: ?Sized, I: Integrator<f64, 13, S>>(
         .integrate(
             system,
             0.0,
-            spatial_state(&racket.initial_state()),
+            quaternion_state_of_rotation(&racket.initial_state()),
             racket.period(),
         )
         .expect("one period");
@@ -197,24 +175,24 @@ fn main() {
             fixed,
             &generated,
             Euler::new(h),
-            spatial_state,
-            racket_state,
+            quaternion_state_of_rotation,
+            rotation_of_quaternion_state,
             ("Euler", step()),
         ),
         long_run(
             fixed,
             &generated,
             SymplecticEuler::new(h, 0..6),
-            spatial_state,
-            racket_state,
+            quaternion_state_of_rotation,
+            rotation_of_quaternion_state,
             ("symplectic Euler (kick u…r)", step()),
         ),
         long_run(
             fixed,
             &generated,
             Rk4::new(h),
-            spatial_state,
-            racket_state,
+            quaternion_state_of_rotation,
+            rotation_of_quaternion_state,
             ("RK4", step()),
         ),
         long_run(
@@ -234,8 +212,8 @@ fn main() {
                 (&racket, periods),
                 &generated,
                 Dopri5::new(adaptive(tol, false)),
-                spatial_state,
-                racket_state,
+                quaternion_state_of_rotation,
+                rotation_of_quaternion_state,
                 ("DOPRI5", format!("rtol = atol = {tol:.0e}")),
             )
         });
@@ -248,8 +226,8 @@ fn main() {
                 (&racket, periods),
                 &generated,
                 Dop853::new(adaptive(tol, true)),
-                spatial_state,
-                racket_state,
+                quaternion_state_of_rotation,
+                rotation_of_quaternion_state,
                 ("DOP853", format!("rtol = atol = {tol:.0e}")),
             )
         });

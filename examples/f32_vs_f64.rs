@@ -24,7 +24,8 @@ mod double_double;
 #[path = "../tests/extremes/support.rs"]
 mod support;
 
-use support::{principal_model, racket, rotation_gap, rotation_state, spatial_state, top};
+use eom::generic::{quaternion_state_of_rotation, rotation_of_quaternion_state};
+use support::{principal_model, racket, rotation_gap, top};
 
 /// RK4 steps per period.
 const STEPS_PER_PERIOD: usize = 2000;
@@ -52,17 +53,17 @@ fn bodies() -> [Body; 2] {
         Body {
             name: "tennis racket",
             moments: Vector3::from(support::RACKET_MOMENTS),
-            start: spatial_state(&racket.initial_state()),
+            start: quaternion_state_of_rotation(&racket.initial_state()),
             period: racket.period(),
-            error: Box::new(move |t, y| racket.error(t, &rotation_state(y))),
+            error: Box::new(move |t, y| racket.error(t, &rotation_of_quaternion_state(y))),
         },
         Body {
             name: "axisymmetric top",
             moments: support::top_moments(),
-            start: spatial_state(&top.initial_state()),
+            start: quaternion_state_of_rotation(&top.initial_state()),
             // One precession period (the top's horizon is two).
             period: 0.5 * top.t_end(),
-            error: Box::new(move |t, y| top.error(t, &rotation_state(y))),
+            error: Box::new(move |t, y| top.error(t, &rotation_of_quaternion_state(y))),
         },
     ]
 }

@@ -32,7 +32,7 @@ mod sweep;
 use std::path::{Path, PathBuf};
 
 use eom::PendulumParameters;
-use eom::generic::RigidBody;
+use eom::generic::{RigidBody, quaternion_state_of_rotation, rotation_of_quaternion_state};
 use eom::integrate::OdeSystem;
 use eom::models::{SpatialFullQuaternion, SpatialPrincipalEuler, SpatialPrincipalQuaternion};
 use eom::reference::torque_free::{EulerAngleBody, FullTensorBody};
@@ -42,8 +42,7 @@ use nalgebra::{Matrix3, Quaternion, RealField, SVector, UnitQuaternion, Vector3}
 use eom::models::{Constant, Model};
 use report::BASE;
 use spatial::{
-    MASS, TurnedAxes, euler_state, generic_euler, generic_quaternion, quaternion_state,
-    rotation_of_euler, rotation_of_quaternion,
+    MASS, TurnedAxes, euler_state, generic_euler, generic_quaternion, rotation_of_euler,
 };
 use sweep::{Case, RTOLS, Row, sweep_geometric, sweep_runge_kutta};
 
@@ -225,8 +224,8 @@ fn variant<T: RealField + Copy, const M: usize>(
 /// quaternion kinematics, each in its own 13-state (see [`spatial`]); one line per model.
 fn spatial_rows(racket: &TennisRacket) -> Vec<Row> {
     let base = judge_of(racket);
-    let judge = |y: &SVector<f64, 13>| base(&rotation_of_quaternion(y));
-    let y0 = quaternion_state(&racket.initial_state());
+    let judge = |y: &SVector<f64, 13>| base(&rotation_of_quaternion_state(y));
+    let y0 = quaternion_state_of_rotation(&racket.initial_state());
     let case = |model: &str| racket_case(racket, model, y0, &judge);
     let tensor = spatial::principal_tensor(racket);
     let pruned = SpatialPrincipalQuaternion::<f64>::new(MASS, &tensor).expect("valid model");
@@ -269,8 +268,8 @@ fn spatial_rows(racket: &TennisRacket) -> Vec<Row> {
 fn turned_axes_rows(racket: &TennisRacket, only: Option<&str>) -> Vec<Row> {
     let turned = TurnedAxes::new(racket);
     let base = judge_of(racket);
-    let judge = |y: &SVector<f64, 13>| base(&turned.to_principal(&rotation_of_quaternion(y)));
-    let y0 = quaternion_state(&turned.initial_state(racket));
+    let judge = |y: &SVector<f64, 13>| base(&turned.to_principal(&rotation_of_quaternion_state(y)));
+    let y0 = quaternion_state_of_rotation(&turned.initial_state(racket));
     let case = |model: &str| racket_case(racket, model, y0, &judge);
     let full = SpatialFullQuaternion::<f64>::new(MASS, turned.tensor()).expect("valid model");
     let generic = RigidBody::<f64>::new(MASS, turned.tensor()).expect("valid body");

@@ -30,29 +30,6 @@ use nalgebra::{Matrix3, Quaternion, RealField, SVector, UnitQuaternion, Vector3}
 /// The mass of the racket: it only enters the translation, which stays at rest.
 pub const MASS: f64 = 1.0;
 
-/// A spatial quaternion state `[u, v, w, p, q, r, x, y, z, q0, q1, q2, q3]` at rest in
-/// translation, from the reference problem's `[p, q, r, q0, q1, q2, q3]`.
-pub fn quaternion_state(y: &SVector<f64, 7>) -> SVector<f64, 13> {
-    let mut state = SVector::<f64, 13>::zeros();
-    state
-        .fixed_rows_mut::<3>(3)
-        .copy_from(&y.fixed_rows::<3>(0));
-    state
-        .fixed_rows_mut::<4>(9)
-        .copy_from(&y.fixed_rows::<4>(3));
-    state
-}
-
-/// The reference problem's `[p, q, r, q0, q1, q2, q3]` of a spatial quaternion state.
-pub fn rotation_of_quaternion(state: &SVector<f64, 13>) -> SVector<f64, 7> {
-    let mut y = SVector::<f64, 7>::zeros();
-    y.fixed_rows_mut::<3>(0)
-        .copy_from(&state.fixed_rows::<3>(3));
-    y.fixed_rows_mut::<4>(3)
-        .copy_from(&state.fixed_rows::<4>(9));
-    y
-}
-
 /// A spatial Euler-angle state `[u, v, w, p, q, r, x, y, z, φ, θ, ψ]` at rest in translation,
 /// from `[p, q, r, φ, θ, ψ]`.
 pub fn euler_state(y: &SVector<f64, 6>) -> SVector<f64, 12> {

@@ -43,5 +43,6 @@ pub use planar::{PlanarBody, track};
 pub use spatial::RigidBody;
 pub use state::{
     ATTITUDE, EulerState, POSITION, QuaternionState, RATES, VELOCITY, attitude_quaternion,
-    euler_state_to_quaternion_state, quaternion_state_to_euler_state, rates, velocity,
+    euler_state_to_quaternion_state, quaternion_state_of_rotation, quaternion_state_to_euler_state,
+    rates, rotation_of_quaternion_state, velocity,
 };

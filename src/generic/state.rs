@@ -82,3 +82,42 @@ pub fn quaternion_state_to_euler_state<T: RealField + Copy>(
     out[ATTITUDE + 2] = psi;
     out
 }
+
+/// The quaternion state of a rotation `[p, q, r, q0, q1, q2, q3]` (the state of
+/// [`RigidRotation`](crate::integrate::RigidRotation) and of the torque-free reference
+/// problems), with the translation at rest: `u = v = w = 0`, `x = y = z = 0`.
+///
+/// ```
+/// use eom::generic::{quaternion_state_of_rotation, rotation_of_quaternion_state};
+/// use nalgebra::SVector;
+/// let rotation = SVector::<f64, 7>::from([0.1, 6.0, 0.2, 1.0, 0.0, 0.0, 0.0]);
+/// let state = quaternion_state_of_rotation(&rotation);
+/// assert_eq!((state[4], state[9], state[0]), (6.0, 1.0, 0.0));
+/// assert_eq!(rotation_of_quaternion_state(&state), rotation);
+/// ```
+pub fn quaternion_state_of_rotation<T: RealField + Copy>(
+    rotation: &SVector<T, 7>,
+) -> QuaternionState<T> {
+    let mut state = QuaternionState::zeros();
+    state
+        .fixed_rows_mut::<3>(RATES)
+        .copy_from(&rotation.fixed_rows::<3>(0));
+    state
+        .fixed_rows_mut::<4>(ATTITUDE)
+        .copy_from(&rotation.fixed_rows::<4>(3));
+    state
+}
+
+/// The rotation `[p, q, r, q0, q1, q2, q3]` of a quaternion state: its rates and attitude.
+pub fn rotation_of_quaternion_state<T: RealField + Copy>(
+    state: &QuaternionState<T>,
+) -> SVector<T, 7> {
+    let mut rotation = SVector::<T, 7>::zeros();
+    rotation
+        .fixed_rows_mut::<3>(0)
+        .copy_from(&state.fixed_rows::<3>(RATES));
+    rotation
+        .fixed_rows_mut::<4>(3)
+        .copy_from(&state.fixed_rows::<4>(ATTITUDE));
+    rotation
+}

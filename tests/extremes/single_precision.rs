@@ -8,14 +8,13 @@
 //! ε₃₂|ω₀|t) and show the racket growing faster (its period depends on an energy that f32
 //! lets wander). These tests hold both over a short run.
 
+use eom::generic::quaternion_state_of_rotation;
 use eom::integrate::{Integrator, Rk4};
 use eom::models::{Constant, Model};
 use eom::reference::ReferenceProblem;
 use nalgebra::{SVector, Vector3};
 
-use super::support::{
-    RACKET_MOMENTS, principal_model, racket, rotation_gap, spatial_state, top, top_moments,
-};
+use super::support::{RACKET_MOMENTS, principal_model, racket, rotation_gap, top, top_moments};
 
 /// f32's machine epsilon, 2⁻²³.
 const EPS32: f64 = f32::EPSILON as f64;
@@ -90,7 +89,7 @@ fn an_f32_top_drifts_from_the_f64_top_linearly_in_time() {
     //   1000 periods at 2000 steps per period).
     let top = top(1.0);
     let period = 0.5 * top.t_end();
-    let start = spatial_state(&top.initial_state());
+    let start = quaternion_state_of_rotation(&top.initial_state());
     let w0 = start.fixed_rows::<3>(3).norm();
     let steps_per_period = 500;
     let gaps = gaps(&top_moments(), start, period, steps_per_period, 10);
@@ -126,7 +125,7 @@ fn an_f32_racket_stays_within_a_linear_bound_over_two_periods() {
     // energy that f32 lets wander; over two periods it stays within 16u, over twice the
     // largest seen in either setting (2.1u here).
     let racket = racket(1.0);
-    let start = spatial_state(&racket.initial_state());
+    let start = quaternion_state_of_rotation(&racket.initial_state());
     let w0 = start.fixed_rows::<3>(3).norm();
     let moments = Vector3::from(RACKET_MOMENTS);
     let gaps = gaps(&moments, start, racket.period(), 1000, 2);

@@ -10,14 +10,13 @@
 #![allow(dead_code)]
 
 use eom::InertiaTensor;
+use eom::generic::{quaternion_state_of_rotation, rotation_of_quaternion_state};
 use eom::integrate::{
     AdaptiveOptions, Dop853, Dopri5, IntegrateError, Integrator, OdeSystem, Statistics, Stats,
 };
 use eom::models::{Constant, Model, SpatialFullQuaternion, SpatialPrincipalQuaternion};
 use eom::reference::{AxisymmetricTop, ReferenceProblem, TennisRacket};
-use nalgebra::{
-    Matrix3, Quaternion, RealField, Rotation3, SVector, SymmetricEigen, UnitQuaternion, Vector3,
-};
+use nalgebra::{Matrix3, Quaternion, Rotation3, SVector, SymmetricEigen, UnitQuaternion, Vector3};
 
 use super::double_double;
 
@@ -57,28 +56,6 @@ pub fn top(rate: f64) -> AxisymmetricTop {
 pub fn top_moments() -> Vector3<f64> {
     let (transverse, axial) = TOP_MOMENTS;
     Vector3::new(transverse, transverse, axial)
-}
-
-/// A rotation `[p, q, r, q0, q1, q2, q3]` in a spatial model's 13-entry state.
-pub fn spatial_state<T: RealField + Copy>(y: &SVector<T, 7>) -> SVector<T, 13> {
-    let mut state = SVector::<T, 13>::zeros();
-    state
-        .fixed_rows_mut::<3>(3)
-        .copy_from(&y.fixed_rows::<3>(0));
-    state
-        .fixed_rows_mut::<4>(9)
-        .copy_from(&y.fixed_rows::<4>(3));
-    state
-}
-
-/// The rotation `[p, q, r, q0, q1, q2, q3]` of a spatial model's 13-entry state.
-pub fn rotation_state(state: &SVector<f64, 13>) -> SVector<f64, 7> {
-    let mut y = SVector::<f64, 7>::zeros();
-    y.fixed_rows_mut::<3>(0)
-        .copy_from(&state.fixed_rows::<3>(3));
-    y.fixed_rows_mut::<4>(3)
-        .copy_from(&state.fixed_rows::<4>(9));
-    y
 }
 
 /// A principal tensor of `moments`.
@@ -187,7 +164,7 @@ pub fn spin_run<P: ReferenceProblem<7>>(
 ) -> SpinRun {
     let model = principal_model::<f64>(moments);
     let inertia = Matrix3::from_diagonal(moments);
-    let y0 = spatial_state(&problem.initial_state());
+    let y0 = quaternion_state_of_rotation(&problem.initial_state());
     let mut drifts = Drifts::default();
     let (end, stats) = method
         .run(
@@ -199,7 +176,7 @@ pub fn spin_run<P: ReferenceProblem<7>>(
         )
         .expect("the spinning body is integrated");
     SpinRun {
-        error: problem.error(t_end, &rotation_state(&end)),
+        error: problem.error(t_end, &rotation_of_quaternion_state(&end)),
         drifts,
         stats,
     }
@@ -472,7 +449,7 @@ pub fn near_symmetric_run(asymmetry: f64, tol: f64, periods: f64) -> NearSymmetr
         SVector::<f64, 7>::from([w.x, w.y, w.z, q.w, q.i, q.j, q.k])
     };
     let model = principal_model::<f64>(&moments);
-    let y0 = spatial_state(&to_model(&top.initial_state()));
+    let y0 = quaternion_state_of_rotation(&to_model(&top.initial_state()));
     let t_end = periods * top.t_end();
     let mut drifts = Drifts::default();
     let (end, stats) = Adaptive::Dop853
@@ -485,7 +462,7 @@ pub fn near_symmetric_run(asymmetry: f64, tol: f64, periods: f64) -> NearSymmetr
         )
         .expect("the near-symmetric body is integrated");
     NearSymmetricRun {
-        error: top.error(t_end, &to_top(&rotation_state(&end))),
+        error: top.error(t_end, &to_top(&rotation_of_quaternion_state(&end))),
         drifts,
         steps: stats.steps,
     }
