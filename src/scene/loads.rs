@@ -236,7 +236,7 @@ impl SceneLoads {
         let every = Acting {
             any: true,
             damping: true,
-            in_space: matches!(self, SceneLoads::Spatial(l) if l.is_fixed_in_space()),
+            in_space: self.is_fixed_in_space(),
         };
         self.inputs_acting(every, state, out);
     }
@@ -254,6 +254,11 @@ impl SceneLoads {
         }
     }
 
+    /// Whether a spatial body has a load fixed in space, which its attitude turns.
+    fn is_fixed_in_space(&self) -> bool {
+        matches!(self, SceneLoads::Spatial(l) if l.is_fixed_in_space())
+    }
+
     /// Which loads act.
     fn acting(&self) -> Acting {
         let (linear, quadratic): (&[f64], &[f64]) = match self {
@@ -268,7 +273,7 @@ impl SceneLoads {
         Acting {
             any: !self.is_free(),
             damping: !all_zero(linear.iter().chain(quadratic)),
-            in_space: matches!(self, SceneLoads::Spatial(l) if l.is_fixed_in_space()),
+            in_space: self.is_fixed_in_space(),
         }
     }
 
