@@ -100,7 +100,7 @@ fn long_run<const N: usize, S: ?Sized, I: Integrator<f64, N, S>>(
         t_end,
         |_, y| {
             count += 1;
-            if count % OBSERVE_EVERY == 0 {
+            if count.is_multiple_of(OBSERVE_EVERY) {
                 drift.observe(racket, &start, &project(y), count);
             }
         },

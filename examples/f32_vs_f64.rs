@@ -90,7 +90,9 @@ where
             nalgebra::convert(t_end),
             |_, y| {
                 count += 1;
-                if count % STEPS_PER_PERIOD == 0 && MARKS.contains(&(count / STEPS_PER_PERIOD)) {
+                if count.is_multiple_of(STEPS_PER_PERIOD)
+                    && MARKS.contains(&(count / STEPS_PER_PERIOD))
+                {
                     marks.push(y.map(|v| nalgebra::convert::<T, f64>(v)));
                 }
             },

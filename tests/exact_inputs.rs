@@ -270,7 +270,7 @@ fn ties() -> Vec<Number> {
         }
         let negative = rng.next() & 1 == 0;
         let sign = if negative { -1.0 } else { 1.0 };
-        let even = if a.to_bits() % 2 == 0 { a } else { b };
+        let even = if a.to_bits().is_multiple_of(2) { a } else { b };
         let (digits, exponent) = midpoint(a, b);
         // Cut after the first digit where the midpoint and a differ, but before its last
         // (nonzero) digit: strictly between them.

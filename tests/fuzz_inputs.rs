@@ -437,11 +437,11 @@ fn apply_tree(root: &mut Node, edit: &TreeEdit) {
         }
         TreeEdit::Resize(i, len) => {
             let array = |n: &Node, _: &[Step]| matches!(n, Node::Arr(_));
-            if let Some(path) = select_where(i, &array) {
-                if let Some(Node::Arr(a)) = at_mut(root, &path) {
-                    let fill = a.first().cloned().unwrap_or(Node::Num(0.0));
-                    a.resize(*len, fill);
-                }
+            if let Some(path) = select_where(i, &array)
+                && let Some(Node::Arr(a)) = at_mut(root, &path)
+            {
+                let fill = a.first().cloned().unwrap_or(Node::Num(0.0));
+                a.resize(*len, fill);
             }
         }
     }
@@ -1028,10 +1028,11 @@ impl Mutation {
                     let mut table = table.clone();
                     // A table without a family keeps the seed's.
                     let old = root.iter().find(|(k, _)| k == key).map(|(_, v)| v);
-                    if let (Node::Obj(new), Some(Node::Obj(old))) = (&mut table, old) {
-                        if key == "model" && !new.iter().any(|(k, _)| k == "family") {
-                            new.extend(old.iter().filter(|(k, _)| k == "family").cloned());
-                        }
+                    if let (Node::Obj(new), Some(Node::Obj(old))) = (&mut table, old)
+                        && key == "model"
+                        && !new.iter().any(|(k, _)| k == "family")
+                    {
+                        new.extend(old.iter().filter(|(k, _)| k == "family").cloned());
                     }
                     put(root, key.clone(), table);
                 }

@@ -57,7 +57,8 @@ pub fn run(command: Option<Command>) -> anyhow::Result<()> {
 
 /// The exit code of a failed command, by what failed (README lists them): 3 the scene file
 /// (syntax, an unknown key, a wrong type, a missing key, a value out of range), 4 reading or
-/// writing files (an output folder that already holds a run or cannot be written included), 5
+/// writing files (an output folder that another run holds, that holds a run, that eom did not write, that
+/// is a system folder or that cannot be written included), 5
 /// the run itself (gimbal lock, a step too long for the rate of turn, a state or a load that is
 /// not finite, a step below the minimum, too many steps), 128 + the signal for a run ended by
 /// one (130 for Ctrl-C, 143 for SIGTERM), 1 anything else. clap's own usage errors exit with 2.
@@ -67,7 +68,10 @@ pub fn exit_code(error: &anyhow::Error) -> u8 {
         if let Some(interrupted) = cause.downcast_ref::<run::Interrupted>() {
             return u8::try_from(128 + interrupted.signal).unwrap_or(1);
         }
-        if cause.downcast_ref::<run::OutputFolder>().is_some() {
+        if cause
+            .downcast_ref::<eom::output::folder::FolderError>()
+            .is_some()
+        {
             return 4;
         }
         if let Some(scene) = cause.downcast_ref::<SceneError>() {
@@ -76,9 +80,7 @@ pub fn exit_code(error: &anyhow::Error) -> u8 {
                 _ => 3,
             };
         }
-        if cause.downcast_ref::<run::OutputExists>().is_some()
-            || cause.downcast_ref::<std::io::Error>().is_some()
-        {
+        if cause.downcast_ref::<std::io::Error>().is_some() {
             return 4;
         }
         if cause.downcast_ref::<eom::run::RunError>().is_some() {

@@ -2,7 +2,8 @@
 //!
 //! Into the output folder (default: a folder named after the scene file, in the current
 //! directory): `trajectory.csv`, `summary.json` and the SVG plots. A folder that already
-//! holds a run is not overwritten without `--force`. A scene with a `[sweep]` runs every case
+//! holds a run is not overwritten without `--force`, and the folder is taken for the run alone
+//! ([`eom::output::folder`]). A scene with a `[sweep]` runs every case
 //! in parallel, each into `case-NNNN/`, and writes `sweep.csv`, one line per case; `--shard
 //! K/N` runs only the cases k ≡ K (mod N). With no scene, `eom` runs its default scene, the
 //! tennis-racket flip.
@@ -16,6 +17,8 @@
 //! interrupted one.
 
 use anyhow::{Context, Result, bail};
+use eom::output::folder::{Claim, FolderError, Writer, sweep_identity};
+use eom::output::plots::PLOT_FILES;
 use eom::output::summary::{Summary, write_atomically};
 use eom::output::trajectory::{Columns, TrajectoryWriter};
 use eom::run::{Report, Row, RunError, Sink, run_reporting};
@@ -41,37 +44,13 @@ pub struct Args {
     /// The output folder (default: the scene file's name without `.toml`, here).
     #[arg(long)]
     out: Option<PathBuf>,
-    /// Write into an output folder that already holds a run.
+    /// Write into an output folder that already holds a run (its files are replaced, and
+    /// only eom's own), or beside the files of a folder eom did not write.
     #[arg(long)]
     force: bool,
     /// Run only the sweep cases k ≡ K (mod N), written `K/N`.
     #[arg(long)]
     shard: Option<String>,
-}
-
-/// An output folder that already holds a run, refused without `--force`.
-#[derive(Debug, thiserror::Error)]
-#[error("{0} already holds a run; use --force to write over it, or --out for another folder")]
-pub struct OutputExists(pub PathBuf);
-
-/// An output folder that cannot be made or written into: a path under a file, a read-only
-/// directory. Named before anything runs.
-#[derive(Debug, thiserror::Error)]
-#[error("the output folder {} cannot be written: {cause}", path.display())]
-pub struct OutputFolder {
-    /// The folder.
-    pub path: PathBuf,
-    /// What the system said.
-    pub cause: std::io::Error,
-}
-
-impl OutputFolder {
-    fn new(path: &Path, cause: std::io::Error) -> Self {
-        Self {
-            path: path.to_owned(),
-            cause,
-        }
-    }
 }
 
 /// A run ended early by a signal (Ctrl-C's SIGINT, or SIGTERM) after it kept what it had.
@@ -195,7 +174,9 @@ fn execute(
         if shard.is_some() {
             bail!("--shard splits a [sweep]; a ship scene has none");
         }
-        prepare_folder(out, force)?;
+        let mut planned: Vec<String> = scene.manoeuvres.iter().map(|m| m.name.clone()).collect();
+        planned.push("summary.json".into());
+        let _claim = Claim::take(out, force, &Writer::Whole, &planned)?;
         return super::ship::execute(&scene, name, out);
     }
     let all = cases(text, name)?;
@@ -209,7 +190,15 @@ fn execute(
             Ok((case, scene))
         })
         .collect::<Result<_, SceneError>>()?;
-    prepare_folder(out, force)?;
+    let writer = match shard {
+        Some((index, count)) => Writer::Shard {
+            index,
+            count,
+            sweep: sweep_identity(name, text, count),
+        },
+        None => Writer::Whole,
+    };
+    let _claim = Claim::take(out, force, &writer, &planned_entries(&scenes, swept, shard))?;
     if !swept {
         let (_, scene) = &scenes[0];
         let outcome = run_case(scene, name, out, true)?;
@@ -219,31 +208,48 @@ fn execute(
     run_sweep(&scenes, name, out, shard)
 }
 
-/// Creates the output folder and makes sure files can be written into it, refusing one that
-/// holds a run unless `force`.
-fn prepare_folder(out: &Path, force: bool) -> Result<()> {
-    let holds_a_run = out.join("summary.json").exists()
-        || out.join("trajectory.csv").exists()
-        || out.join("sweep.csv").exists();
-    if holds_a_run && !force {
-        return Err(OutputExists(out.to_owned()).into());
+/// Every top-level entry a run may write into its folder: a sweep's case folders and its
+/// table, or a single run's trajectory, summary and plots.
+fn planned_entries(
+    scenes: &[(Case, Scene)],
+    swept: bool,
+    shard: Option<(usize, usize)>,
+) -> Vec<String> {
+    if swept {
+        let mut entries: Vec<String> = scenes.iter().map(|(case, _)| case_folder(case)).collect();
+        entries.push(sweep_file(shard));
+        return entries;
     }
-    writable_folder(out)?;
-    Ok(())
+    let mut entries = vec!["trajectory.csv".to_owned(), "summary.json".to_owned()];
+    entries.extend(PLOT_FILES.map(String::from));
+    entries
 }
 
-/// Creates `out` if need be and writes and removes a file in it, so that a folder the run
-/// could not write into is named before the run, not after.
-fn writable_folder(out: &Path) -> Result<(), OutputFolder> {
-    if out.is_file() {
-        let cause = std::io::Error::other("it is a file, not a folder");
-        return Err(OutputFolder::new(out, cause));
+/// A case's folder, `case-NNNN`.
+fn case_folder(case: &Case) -> String {
+    format!("case-{:04}", case.index)
+}
+
+/// The sweep's table: `sweep.csv`, or a shard's `sweep-shard-K-of-N.csv`.
+fn sweep_file(shard: Option<(usize, usize)>) -> String {
+    match shard {
+        Some((k, n)) => format!("sweep-shard-{k}-of-{n}.csv"),
+        None => "sweep.csv".into(),
     }
-    std::fs::create_dir_all(out).map_err(|e| OutputFolder::new(out, e))?;
+}
+
+/// Creates a case's folder and makes sure files can be written into it, so that a folder the
+/// run could not write into is named before the run, not after.
+fn writable_folder(out: &Path) -> Result<(), FolderError> {
+    let unwritable = |cause| FolderError::Unwritable {
+        path: out.to_owned(),
+        cause,
+    };
+    std::fs::create_dir_all(out).map_err(unwritable)?;
     let probe = out.join(format!(".eom-write-check-{}", std::process::id()));
     std::fs::write(&probe, b"")
         .and_then(|()| std::fs::remove_file(&probe))
-        .map_err(|e| OutputFolder::new(out, e))
+        .map_err(unwritable)
 }
 
 /// What one run wrote.
@@ -449,16 +455,13 @@ fn run_sweep(
             if signal_received().is_some() {
                 bail!("not run: the sweep was interrupted");
             }
-            let folder = out.join(format!("case-{:04}", case.index));
+            let folder = out.join(case_folder(case));
             writable_folder(&folder)?;
             run_case(scene, name, &folder, false).map(|o| o.report)
         })
         .collect();
     let table = sweep_table(scenes, &outcomes);
-    let file = match shard {
-        Some((k, n)) => format!("sweep-shard-{k}-of-{n}.csv"),
-        None => "sweep.csv".into(),
-    };
+    let file = sweep_file(shard);
     write_atomically(&out.join(&file), table.as_bytes())
         .with_context(|| format!("writing {}", out.join(&file).display()))?;
     let failed = outcomes.iter().filter(|o| o.is_err()).count();

@@ -151,7 +151,7 @@ impl TrajectoryWriter {
     }
 
     fn keep(&mut self, row: &Row) {
-        if self.rows % self.stride == 0 {
+        if self.rows.is_multiple_of(self.stride) {
             self.kept.time.push(row.t);
             for (column, &x) in self.kept.state.iter_mut().zip(row.state) {
                 column.push(x);

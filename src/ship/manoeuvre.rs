@@ -562,7 +562,11 @@ impl<'a> Driver<'a> {
         // The k-th overshoot: the largest heading change past the k-th reversal, where r = 0.
         let overshoot = |k: usize| {
             let after = switches.get(k)?.0;
-            let side = if k % 2 == 0 { self.side } else { -self.side };
+            let side = if k.is_multiple_of(2) {
+                self.side
+            } else {
+                -self.side
+            };
             let (_, _, y) = self
                 .log
                 .events

@@ -37,7 +37,7 @@ fn gaps(
         let t_end = f64::from((period * periods as f64) as f32);
         let mut mark = |y: SVector<f64, 13>| {
             count += 1;
-            if count % steps_per_period == 0 {
+            if count.is_multiple_of(steps_per_period) {
                 marks.push(y);
             }
         };

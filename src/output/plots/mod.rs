@@ -124,6 +124,8 @@ const ATTITUDE: &str = "attitude.svg";
 const TRACK: &str = "track.svg";
 /// The file of the energy drift plot.
 const ENERGY: &str = "energy.svg";
+/// Every file [`write_plots`] may write, for the output folder's manifest.
+pub const PLOT_FILES: [&str; 4] = [STATE, ATTITUDE, TRACK, ENERGY];
 
 /// Draws every plot the input has data for into `dir` and returns the files written:
 /// `state.svg`, `attitude.svg`, `track.svg`, `energy.svg`.
