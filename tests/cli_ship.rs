@@ -71,6 +71,8 @@ fn the_mariner_runs_its_manoeuvres_and_is_judged() {
         assert!(moved < 0.01, "{key} moves {moved} when the step is halved");
     }
     assert_eq!(turn["side"], "port");
+    // The turn went ahead, one way, and settled: no note qualifies a figure.
+    assert_eq!(turn["notes"], serde_json::json!([]), "{turn}");
     // The transfer at 180° is more than the transfer at 90°, and the steady diameter is near
     // the tactical diameter (the turn has settled well before its third half-circle).
     let number = |v: &serde_json::Value| v.as_f64().unwrap();
@@ -103,6 +105,7 @@ fn the_mariner_runs_its_manoeuvres_and_is_judged() {
         ]
     );
     for criterion in imo {
+        assert_eq!(criterion["judged"], true, "{criterion}");
         let pass = number(&criterion["value"]) <= number(&criterion["limit"]);
         assert_eq!(criterion["pass"].as_bool(), Some(pass), "{criterion}");
     }
@@ -129,6 +132,98 @@ fn the_mariner_runs_its_manoeuvres_and_is_judged() {
         track.contains("tactical diameter"),
         "the 180° point is marked"
     );
+}
+
+/// A workboat on a crude made-up table whose turn drags it to a stop and astern.
+const ASTERN_WORKBOAT: &str = r#"
+title = "Made-up workboat (a crude table)"
+[model]
+family = "planar-midship"
+[body]
+length = 20.0
+mass_prime = 0.02
+izz_midship_prime = 0.0012
+x_g_prime = 0.0
+[hydrodynamics]
+units = "prime"
+rigid_body_terms = "separate"
+density = 1025.0
+design_speed = 5.0
+[hydrodynamics.coefficients]
+Xudot = -0.001
+Yvdot = -0.02
+Nrdot = -0.001
+Xu = -0.002
+Xrr = -0.03
+Yv = -0.03
+Yr = 0.005
+Yd = 0.008
+Nv = -0.01
+Nr = -0.005
+Nd = -0.004
+[rudder]
+max_deg = 35.0
+max_rate_deg_s = 5.0
+time_constant_s = 1.0
+[integrator]
+method = "rk4"
+step = 0.05
+[output]
+every = 1.0
+[[manoeuvre]]
+name = "turning_circle_35"
+kind = "turning_circle"
+rudder_deg = 35.0
+duration_s = 600.0
+"#;
+
+#[test]
+fn a_turn_that_goes_astern_gives_no_steady_figures_and_no_verdict_on_them() {
+    let dir = folder("astern");
+    let path = dir.join("workboat.toml");
+    std::fs::write(&path, ASTERN_WORKBOAT).unwrap();
+    let out = dir.join("out");
+    let stdout = succeeded(&eom(&[
+        "run",
+        path.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]));
+    let csv = std::fs::read_to_string(out.join("turning_circle_35/trajectory.csv")).unwrap();
+    let u: Vec<f64> = csv
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').nth(1).unwrap().parse().unwrap())
+        .collect();
+    // The run itself: it goes astern, and the heading still turns past 540°.
+    assert!(u.iter().any(|&u| u < -0.5), "the boat never went astern");
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let turn = &summary["manoeuvre"]["turning_circle_35"];
+    for key in [
+        "advance_90_m",
+        "transfer_90_m",
+        "tactical_diameter_m",
+        "steady_turning_radius_m",
+        "steady_speed_m_s",
+    ] {
+        assert!(turn[key].is_null(), "{key}: {turn}");
+    }
+    let notes: Vec<&str> = turn["notes"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|n| n.as_str().unwrap())
+        .collect();
+    for said in ["went astern (u < 0)", "stopped", "no steady turn"] {
+        assert!(notes.iter().any(|n| n.contains(said)), "{said}: {notes:?}");
+    }
+    for criterion in summary["manoeuvre"]["imo"].as_array().unwrap() {
+        assert_eq!(criterion["judged"], false, "{criterion}");
+        assert!(criterion["pass"].is_null() && criterion["value"].is_null());
+    }
+    assert!(!stdout.contains("pass"), "{stdout}");
+    assert!(stdout.contains("not judged"), "{stdout}");
 }
 
 #[test]
@@ -183,7 +278,8 @@ fn ctrl_c_ends_a_ship_run_keeping_the_finished_manoeuvres() {
     let path = dir.join("long.toml");
     std::fs::write(&path, text).unwrap();
     let out = dir.join("out");
-    let mut child = child::spawn_run(&path, &out);
+    // The second's trajectory would be 2 GB: it says --large-output, and is ended long before.
+    let mut child = child::spawn_run_with(&path, &out, &["--large-output"]);
     let first = out.join("turning_circle_35").join("heading.svg");
     let clock = Instant::now();
     while !first.exists() {

@@ -331,6 +331,7 @@ fn criterion_json(criterion: &Criterion) -> Value {
         "limit": criterion.limit,
         "unit": criterion.unit,
         "pass": criterion.pass(),
+        "judged": criterion.value.is_some(),
     })
 }
 
@@ -355,11 +356,19 @@ fn print_report(scene: &ShipScene, outcomes: &[Outcome], judged: &[Criterion], o
             scene.length / scene.table.design_speed
         );
         for c in judged {
-            let verdict = if c.pass() { "pass" } else { "FAIL" };
-            println!(
-                "    {:<24} {:>10.2} {:<3} ≤ {:>9.2}  {verdict}",
-                c.name, c.value, c.unit, c.limit
-            );
+            match (c.value, c.pass()) {
+                (Some(value), Some(pass)) => println!(
+                    "    {:<24} {value:>10.2} {:<3} ≤ {:>9.2}  {}",
+                    c.name,
+                    c.unit,
+                    c.limit,
+                    if pass { "pass" } else { "FAIL" }
+                ),
+                _ => println!(
+                    "    {:<24} not judged: {} did not give the figure (see its notes)",
+                    c.name, c.manoeuvre
+                ),
+            }
         }
     }
     println!("  written to {}/", out.display());
@@ -367,6 +376,7 @@ fn print_report(scene: &ShipScene, outcomes: &[Outcome], judged: &[Criterion], o
 
 /// Runs `eom linear`.
 pub fn linear(args: LinearArgs) -> Result<()> {
+    super::serves::require_ship(&args.scene)?;
     let scene = ShipScene::load(&args.scene)?;
     let model = ShipModel::new(&scene.table)?;
     let linear = LinearModel::closed_form(&scene.table);

@@ -11,7 +11,9 @@
 //! | first overshoot, 20°/20° | 20°/20° zig-zag | ≤ 25° |
 //!
 //! V is the test speed, the scene's design speed U₀. A criterion whose manoeuvre the scene
-//! does not run is left out, not passed.
+//! does not run is left out, not passed; one whose manoeuvre ran but whose figure it did not
+//! give (the ship went astern before its heading passed 90°, say: see the manoeuvre's notes)
+//! is listed as not judged, with no verdict.
 
 use super::manoeuvre::{Figures, Manoeuvre, ManoeuvreKind};
 
@@ -23,8 +25,9 @@ pub struct Criterion {
     pub name: &'static str,
     /// The manoeuvre it is read from.
     pub manoeuvre: String,
-    /// The figure.
-    pub value: f64,
+    /// The figure; `None` where the manoeuvre ran but did not give it (its notes say why),
+    /// so that the criterion is not judged.
+    pub value: Option<f64>,
     /// The largest value allowed.
     pub limit: f64,
     /// `"m"` or `"deg"`.
@@ -32,9 +35,9 @@ pub struct Criterion {
 }
 
 impl Criterion {
-    /// Whether the ship meets it.
-    pub fn pass(&self) -> bool {
-        self.value <= self.limit
+    /// Whether the ship meets it; `None` when it is not judged.
+    pub fn pass(&self) -> Option<bool> {
+        self.value.map(|value| value <= self.limit)
     }
 }
 
@@ -71,15 +74,13 @@ pub fn criteria(length: f64, speed: f64, runs: &[(&Manoeuvre, &Figures)]) -> Vec
     let l_over_v = length / speed;
     let mut judged = Vec::new();
     let mut judge = |name, run: &(&Manoeuvre, &Figures), key: &str, limit: f64, unit| {
-        if let Some(value) = run.1.get(key) {
-            judged.push(Criterion {
-                name,
-                manoeuvre: run.0.name.clone(),
-                value,
-                limit,
-                unit,
-            });
-        }
+        judged.push(Criterion {
+            name,
+            manoeuvre: run.0.name.clone(),
+            value: run.1.get(key),
+            limit,
+            unit,
+        });
     };
     let turn = runs
         .iter()

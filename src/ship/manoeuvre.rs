@@ -11,6 +11,7 @@
 //! release, a series' breakpoints) are stepped onto as well.
 
 use super::ShipError;
+use super::course::Course;
 use super::model::ShipModel;
 use super::rudder::{Rudder, Series};
 use crate::integrate::{OdeSystem, rk4_step};
@@ -183,6 +184,8 @@ struct Log {
     release: Option<DriveState>,
     /// (t, state) at each watch that fired, in order, with what fired.
     events: Vec<(Watch, f64, DriveState)>,
+    /// The course from the execute on, for the conditions the figures assume.
+    course: Option<Course>,
 }
 
 /// Runs a manoeuvre from `start` (the model's seven states) with RK4 steps of at most
@@ -264,6 +267,7 @@ pub fn run(
                 ),
             });
         }
+        driver.record(t, &y);
         go_on = observe(&driver.sample(t, &y));
     }
     let figures = driver.figures(&y);
@@ -426,8 +430,18 @@ impl<'a> Driver<'a> {
         }
     }
 
+    /// Adds the instant to the course, from the execute on.
+    fn record(&mut self, t: f64, y: &DriveState) {
+        let heading0 = self.heading0();
+        if let Some(course) = &mut self.log.course {
+            course.record(t, y[0], y[1], y[2], y[5] - heading0);
+        }
+    }
+
     fn execute(&mut self, y: &mut DriveState) {
         self.log.execute = Some(*y);
+        let held = matches!(self.manoeuvre.kind, ManoeuvreKind::TurningCircle { .. });
+        self.log.course = Some(Course::new(y[0].hypot(y[1]), held));
         match self.manoeuvre.kind {
             ManoeuvreKind::TurningCircle { rudder } => {
                 self.set_command(rudder, y);
@@ -473,14 +487,19 @@ impl<'a> Driver<'a> {
                 ..Figures::default()
             };
         };
-        match self.manoeuvre.kind {
-            ManoeuvreKind::TurningCircle { .. } => self.turning_figures(&execute, end),
-            ManoeuvreKind::ZigZag { heading, .. } => self.zigzag_figures(&execute, heading),
+        let course = self.log.course.clone().unwrap_or_default();
+        let mut figures = match self.manoeuvre.kind {
+            ManoeuvreKind::TurningCircle { .. } => self.turning_figures(&execute, &course),
+            ManoeuvreKind::ZigZag { heading, .. } => {
+                self.zigzag_figures(&execute, heading, &course)
+            }
             ManoeuvreKind::PullOut { release, .. } => {
                 pull_out_figures(self.log.release.as_ref(), end, release)
             }
             ManoeuvreKind::Series(_) => Figures::default(),
-        }
+        };
+        figures.notes.extend(course.notes());
+        figures
     }
 
     fn event(&self, wanted: Watch) -> Option<(f64, DriveState)> {
@@ -491,7 +510,10 @@ impl<'a> Driver<'a> {
             .map(|(_, t, y)| (*t, *y))
     }
 
-    fn turning_figures(&self, execute: &DriveState, end: &DriveState) -> Figures {
+    /// The turning circle's figures, each where the condition it assumes held
+    /// ([`Course`]): advance and transfer at 90°, the tactical diameter at 180° while the ship
+    /// goes ahead; the steady radius and speed once the turn has settled.
+    fn turning_figures(&self, execute: &DriveState, course: &Course) -> Figures {
         let psi0 = execute[5];
         // (advance, transfer): the displacement of midship in the axes of the approach.
         let offset = |y: &DriveState| {
@@ -500,21 +522,23 @@ impl<'a> Driver<'a> {
             (dx * c + dy * s, -dx * s + dy * c)
         };
         let t_exec = self.manoeuvre.execute;
-        let at_90 = self.event(Watch::HeadingChange(PI / 2.0));
-        let at_180 = self.event(Watch::HeadingChange(PI));
-        let turned = end[5] - psi0;
         let mut notes = Vec::new();
-        // The turn is steady once transients have died out; a turn and a half past the
-        // execute is taken as the least for that.
-        let steady = turned.abs() >= 3.0 * PI;
-        if !steady {
-            notes.push(format!(
-                "the heading changed by {:.1}° by the end: the steady turn is read after 540°; \
-                 lengthen duration_s",
-                turned.abs().to_degrees()
-            ));
-        }
-        let speed = end[0].hypot(end[1]);
+        let mut holding = |angle: f64, what: &str| {
+            let (t, y) = self.event(Watch::HeadingChange(angle))?;
+            match course.broken_by(t) {
+                Some(why) => {
+                    notes.push(format!(
+                        "{what} not given: {why}, before the heading changed by {:.0}°",
+                        angle.to_degrees()
+                    ));
+                    None
+                }
+                None => Some((t, y)),
+            }
+        };
+        let at_90 = holding(PI / 2.0, "advance and transfer");
+        let at_180 = holding(PI, "the tactical diameter");
+        let steady = course.steady().map_err(|why| notes.push(why)).ok();
         let mut marks = vec![("execute".to_owned(), [execute[3], execute[4]])];
         if let Some((_, y)) = at_90 {
             let (advance, transfer) = offset(&y);
@@ -538,25 +562,33 @@ impl<'a> Driver<'a> {
                 ),
                 (
                     "steady_turning_radius_m",
-                    steady.then(|| speed / end[2].abs()),
+                    steady.map(|(speed, r)| speed / r.abs()),
                 ),
-                ("steady_speed_m_s", steady.then_some(speed)),
+                ("steady_speed_m_s", steady.map(|(speed, _)| speed)),
                 ("t_90_s", at_90.map(|(t, _)| t - t_exec)),
                 ("t_180_s", at_180.map(|(t, _)| t - t_exec)),
             ],
-            side: Some(if turned > 0.0 { "starboard" } else { "port" }),
+            side: Some(if course.turned() > 0.0 {
+                "starboard"
+            } else {
+                "port"
+            }),
             notes,
             marks,
         }
     }
 
-    fn zigzag_figures(&self, execute: &DriveState, heading_a: f64) -> Figures {
+    /// The zig-zag's figures; none where the ship went astern or stopped before the last
+    /// reversal or overshoot they are read from.
+    fn zigzag_figures(&self, execute: &DriveState, heading_a: f64, course: &Course) -> Figures {
         let psi0 = execute[5];
+        // Instants after the ship went astern or stopped are not the zig-zag's.
+        let holds = |t: f64| course.broken_by(t).is_none();
         let switches: Vec<(f64, DriveState)> = self
             .log
             .events
             .iter()
-            .filter(|(w, _, _)| !matches!(w, Watch::YawRateZero))
+            .filter(|(w, t, _)| !matches!(w, Watch::YawRateZero) && holds(*t))
             .map(|(_, t, y)| (*t, *y))
             .collect();
         // The k-th overshoot: the largest heading change past the k-th reversal, where r = 0.
@@ -571,7 +603,8 @@ impl<'a> Driver<'a> {
                 .log
                 .events
                 .iter()
-                .find(|(w, t, _)| *w == Watch::YawRateZero && *t > after)?;
+                .find(|(w, t, _)| *w == Watch::YawRateZero && *t > after)
+                .filter(|(_, t, _)| holds(*t))?;
             Some((side * (y[5] - psi0) - heading_a).to_degrees())
         };
         let t_exec = self.manoeuvre.execute;

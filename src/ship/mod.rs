@@ -11,6 +11,7 @@
 //! | 4.46 with exactly the table's terms, derived, solved and proved by `eom-codegen`, evaluated | [`model`] |
 //! | the rudder: saturation, first-order lag, rate limit; its commands | [`rudder`] |
 //! | the manoeuvres, their crossing instants found on the step, their figures | [`manoeuvre`] |
+//! | what the figures assume (ahead, not stopped, one way, settled), checked on the run | [`course`] |
 //! | the IMO MSC.137(76) criteria | [`imo`] |
 //! | the linear model about the straight course: Nomoto, course stability, pivot point | [`linear`] |
 //! | the scene file | [`scene`] |
@@ -22,6 +23,7 @@
 //! program. A user who wants the same model compiled calls
 //! [`eom_codegen::emit::system_source`] from a `build.rs`.
 
+pub mod course;
 pub mod imo;
 pub mod linear;
 pub mod manoeuvre;
@@ -55,7 +57,7 @@ pub enum ShipError {
     #[error("the ship model cannot be built: {0}")]
     Build(#[from] eom_codegen::emit::EmitError),
     /// A run that cannot go on, with the time and the reason.
-    #[error("the run stopped at t = {time} s: {reason}")]
+    #[error("the run stopped at t = {} s: {reason}", crate::Short(*time))]
     Run {
         /// When.
         time: f64,
@@ -63,7 +65,7 @@ pub enum ShipError {
         reason: String,
     },
     /// A run its observer asked to end (Ctrl-C).
-    #[error("the run was stopped at t = {time} s")]
+    #[error("the run was stopped at t = {} s", crate::Short(*time))]
     Stopped {
         /// When.
         time: f64,
