@@ -6,6 +6,7 @@
 //! [`InertiaTensor::from_matrix`], which refuse a tensor that no rigid body can have.
 
 use crate::ParameterError;
+use crate::Short;
 use crate::validate::finite;
 use nalgebra::{Matrix3, SymmetricEigen};
 use thiserror::Error;
@@ -16,8 +17,22 @@ pub enum InertiaError {
     /// A component is NaN or infinite (the error names it, e.g. `"Ixy"`).
     #[error("inertia component {0}")]
     NotFinite(ParameterError),
+    /// A component so large that the checks' sums overflow f64 (the tensor of a body in
+    /// units too small for it): named as overflow, not as the inequality it would fail.
+    #[error(
+        "inertia component {name} = {} is too large to check in f64: the sums of moments that \
+         4.13 and 4.23 need overflow beyond {}; give the tensor in larger units (t m², not kg m²)",
+        Short(*value),
+        Short(f64::MAX)
+    )]
+    Overflow {
+        /// The largest component.
+        name: &'static str,
+        /// Its value.
+        value: f64,
+    },
     /// The matrix differs from its transpose.
-    #[error("inertia tensor is not symmetric: {upper} = {a} but {lower} = {b}")]
+    #[error("inertia tensor is not symmetric: {upper} = {} but {lower} = {}", Short(*a), Short(*b))]
     NotSymmetric {
         /// The upper-triangle component.
         upper: &'static str,
@@ -29,13 +44,13 @@ pub enum InertiaError {
         b: f64,
     },
     /// Some rotation has zero or negative moment: the smallest eigenvalue is not positive.
-    #[error("inertia tensor is not positive definite (smallest principal moment {smallest})")]
+    #[error("inertia tensor is not positive definite (smallest principal moment {})", Short(*smallest))]
     NotPositiveDefinite {
         /// The smallest eigenvalue.
         smallest: f64,
     },
     /// A moment exceeds the sum of the other two (4.13 gives `Ixx + Iyy − Izz = 2∫z² dm ≥ 0`).
-    #[error("triangle inequality fails: {a} + {b} = {sum} < {c} = {value}")]
+    #[error("triangle inequality fails: {a} + {b} = {} < {c} = {}", Short(*sum), Short(*value))]
     TriangleInequality {
         /// First of the two smaller moments.
         a: &'static str,
@@ -50,7 +65,10 @@ pub enum InertiaError {
     },
     /// The second-moment matrix `∫ r rᵀ dm = ½ tr[I] 𝟙 − [I]` has a negative eigenvalue: the
     /// products of inertia are too large for the moments (checked in principal axes).
-    #[error("products of inertia are too large for the moments: ∫r rᵀdm has eigenvalue {smallest}")]
+    #[error(
+        "products of inertia are too large for the moments: ∫r rᵀdm has eigenvalue {}",
+        Short(*smallest)
+    )]
     SecondMomentNotPositive {
         /// The smallest eigenvalue of the second-moment matrix.
         smallest: f64,
@@ -97,6 +115,7 @@ impl InertiaTensor {
     /// Builds the tensor from a full matrix laid out as 4.12 writes it.
     pub fn from_matrix(matrix: Matrix3<f64>) -> Result<Self, InertiaError> {
         check_finite(&matrix)?;
+        check_range(&matrix)?;
         check_symmetric(&matrix)?;
         check_positive_definite(&matrix)?;
         check_triangle(&matrix)?;
@@ -153,6 +172,20 @@ fn check_finite(m: &Matrix3<f64>) -> Result<(), InertiaError> {
         }
     }
     Ok(())
+}
+
+/// The checks add up to three moments and the eigen-solver squares them; beyond f64::MAX/8
+/// (~2e307) their sums overflow and a sound tensor would be refused for the wrong reason.
+fn check_range(m: &Matrix3<f64>) -> Result<(), InertiaError> {
+    let (row, column) = m.iamax_full();
+    let value = m[(row, column)];
+    match (8.0 * value.abs()).is_finite() {
+        true => Ok(()),
+        false => Err(InertiaError::Overflow {
+            name: NAMES[row][column],
+            value,
+        }),
+    }
 }
 
 fn check_symmetric(m: &Matrix3<f64>) -> Result<(), InertiaError> {

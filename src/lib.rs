@@ -61,11 +61,17 @@ pub mod run;
 pub mod scene;
 #[cfg(feature = "ship")]
 pub mod ship;
+mod short;
 pub mod swing;
 mod validate;
+
+/// The nalgebra that eom's models, states and integrators are written in, so that a user's
+/// vectors are of the same version without choosing it by hand.
+pub use nalgebra;
 
 pub use inertia::{InertiaError, InertiaTensor};
 pub use integrate::{AdaptiveOptions, Dop853, Dopri5, Integrator, OdeSystem, Rk4, Statistics};
 pub use models::{AnyModel, Constant, Loads, Model};
 pub use pendulum::PendulumParameters;
+pub use short::Short;
 pub use validate::ParameterError;

@@ -7,6 +7,7 @@
 //! of inertia, and so that every refusal reads the same way: the field as the caller named it,
 //! what it must be, and what it was.
 
+use crate::Short;
 use thiserror::Error;
 
 /// A scalar input outside its domain: `field` must be `requirement`, and was `value`.
@@ -23,7 +24,7 @@ use thiserror::Error;
 /// assert_eq!(err.to_string(), "mass must be positive and finite, got -1");
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Error)]
-#[error("{field} must be {requirement}, got {value}")]
+#[error("{field} must be {requirement}, got {}", Short(*value))]
 pub struct ParameterError {
     /// The input, named as the caller names it: the argument or field name (`"mass"`, `"i0"`,
     /// `"izz"`, `"pivot_to_cg"`), or a component (`"offset[2]"`, `"Ixy"`).

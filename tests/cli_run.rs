@@ -892,7 +892,8 @@ fn read_only_folder(dir: &Path) {
     set_mode(0o755);
 }
 
-/// A run of the tennis racket that would take hours, started in the background.
+/// A run of the tennis racket that would take hours, started in the background (its
+/// trajectory would be 30 GB, so it says `--large-output`; the tests end it long before).
 #[cfg(unix)]
 fn long_run(dir: &Path, out: &Path) -> std::process::Child {
     let path = dir.join("long.toml");
@@ -901,7 +902,7 @@ fn long_run(dir: &Path, out: &Path) -> std::process::Child {
         .replace("end_time = 20.0", "end_time = 1.0e6")
         .replace("max_steps = 1_000_000", "max_steps = 1_000_000_000");
     std::fs::write(&path, text).unwrap();
-    child::spawn_run(&path, out)
+    child::spawn_run_with(&path, out, &["--large-output"])
 }
 
 /// Waits until `out/trajectory.csv` holds at least `lines` lines.

@@ -3,9 +3,11 @@
 mod derive;
 mod eval;
 mod mass;
+mod merge;
 mod models;
 mod plots;
 mod run;
+mod serves;
 mod ship;
 mod swing;
 mod tradeoff;
@@ -33,6 +35,9 @@ pub enum Command {
     /// The linear model of a ship scene about the straight course: Nomoto's K, T₁, T₂, T₃ by
     /// the closed form and from the linearised model, course stability, the pivot point.
     Linear(ship::LinearArgs),
+    /// Merge the tables of a sweep's shards (`eom run --shard K/N`), once all are done, into
+    /// one sweep.csv sorted by case.
+    SweepMerge(merge::Args),
     /// Run a scene with every applicable integrator over steps and tolerances, and recommend
     /// the cheapest setting that meets a target error.
     Tradeoff(tradeoff::Args),
@@ -52,6 +57,7 @@ pub fn run(command: Option<Command>) -> anyhow::Result<()> {
         Command::Run(args) => run::run_command(args),
         Command::Tradeoff(args) => tradeoff::run(args),
         Command::Linear(args) => ship::linear(args),
+        Command::SweepMerge(args) => merge::run(args),
     }
 }
 
@@ -61,10 +67,15 @@ pub fn run(command: Option<Command>) -> anyhow::Result<()> {
 /// is a system folder or that cannot be written included), 5
 /// the run itself (gimbal lock, a step too long for the rate of turn, a state or a load that is
 /// not finite, a step below the minimum, too many steps), 128 + the signal for a run ended by
-/// one (130 for Ctrl-C, 143 for SIGTERM), 1 anything else. clap's own usage errors exit with 2.
+/// one (130 for Ctrl-C, 143 for SIGTERM), 1 anything else; 2 a usage error, clap's own or a
+/// command used on what it does not serve (`--shard` without a `[sweep]`, a trajectory over
+/// 100 MB without `--large-output`).
 pub fn exit_code(error: &anyhow::Error) -> u8 {
     use eom::scene::{Problem, SceneError};
     for cause in error.chain() {
+        if cause.downcast_ref::<run::Usage>().is_some() {
+            return 2;
+        }
         if let Some(interrupted) = cause.downcast_ref::<run::Interrupted>() {
             return u8::try_from(128 + interrupted.signal).unwrap_or(1);
         }

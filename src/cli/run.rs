@@ -17,12 +17,13 @@
 //! interrupted one.
 
 use anyhow::{Context, Result, bail};
+use eom::Short;
 use eom::output::folder::{Claim, FolderError, Writer, sweep_identity};
 use eom::output::plots::PLOT_FILES;
 use eom::output::summary::{Summary, write_atomically};
 use eom::output::trajectory::{Columns, TrajectoryWriter};
 use eom::run::{Report, Row, RunError, Sink, run_reporting};
-use eom::scene::sweep::{Case, cases, parse_shard};
+use eom::scene::sweep::{Case, is_swept, parse_shard, shard_cases};
 use eom::scene::{Body, Problem, Scene, SceneError};
 use eom::ship::ShipScene;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
@@ -49,9 +50,30 @@ pub struct Args {
     #[arg(long)]
     force: bool,
     /// Run only the sweep cases k ≡ K (mod N), written `K/N`.
+    #[arg(long, value_parser = parse_shard)]
+    shard: Option<(usize, usize)>,
+    /// Write a trajectory of more than 100 MB (without it such a run is refused before it
+    /// starts).
     #[arg(long)]
-    shard: Option<String>,
+    large_output: bool,
 }
+
+/// How `eom run` may use its output folder.
+#[derive(Debug, Clone, Copy, Default)]
+struct Options {
+    force: bool,
+    shard: Option<(usize, usize)>,
+    large_output: bool,
+}
+
+/// A command used in a way it does not serve, found after its arguments were read: exits
+/// with 2, as clap's own usage errors do.
+#[derive(Debug, thiserror::Error)]
+#[error("{0}")]
+pub struct Usage(pub String);
+
+/// The most a run writes without `--large-output`, bytes.
+pub const LARGE_OUTPUT: f64 = 100e6;
 
 /// A run ended early by a signal (Ctrl-C's SIGINT, or SIGTERM) after it kept what it had.
 #[derive(Debug, thiserror::Error)]
@@ -118,13 +140,12 @@ pub fn run_command(args: Args) -> Result<()> {
         .map_err(|e| SceneError::new(&name, "", Problem::Read(e)))?;
     let base = args.scene.parent().unwrap_or(Path::new(".")).to_owned();
     let out = args.out.unwrap_or_else(|| default_folder(&args.scene));
-    let shard = args
-        .shard
-        .as_deref()
-        .map(parse_shard)
-        .transpose()
-        .map_err(anyhow::Error::msg)?;
-    execute(&text, &name, &base, &out, args.force, shard)
+    let options = Options {
+        force: args.force,
+        shard: args.shard,
+        large_output: args.large_output,
+    };
+    execute(&text, &name, &base, &out, options)
 }
 
 /// Runs the default scene into `./tennis_racket/` (what `cargo run --release` does).
@@ -142,13 +163,16 @@ pub fn run_default() -> Result<()> {
             out.display()
         );
     }
+    let options = Options {
+        force: true,
+        ..Options::default()
+    };
     execute(
         DEFAULT_SCENE,
         DEFAULT_NAME,
         Path::new("scenes"),
         &out,
-        true,
-        None,
+        options,
     )
 }
 
@@ -160,37 +184,46 @@ fn default_folder(scene: &Path) -> PathBuf {
     PathBuf::from(stem)
 }
 
-fn execute(
-    text: &str,
-    name: &str,
-    base: &Path,
-    out: &Path,
-    force: bool,
-    shard: Option<(usize, usize)>,
-) -> Result<()> {
+fn execute(text: &str, name: &str, base: &Path, out: &Path, options: Options) -> Result<()> {
     watch_signals();
     if eom::ship::scene::is_ship_scene(text) {
         let scene = ShipScene::parse(text, name)?;
-        if shard.is_some() {
-            bail!("--shard splits a [sweep]; a ship scene has none");
+        if options.shard.is_some() {
+            return Err(Usage("--shard splits a [sweep]; a ship scene has none".into()).into());
         }
+        let rows: f64 = scene
+            .manoeuvres
+            .iter()
+            .map(|m| m.duration / scene.every)
+            .sum();
+        refuse_large_output(rows * SHIP_ROW_BYTES, options)?;
         let mut planned: Vec<String> = scene.manoeuvres.iter().map(|m| m.name.clone()).collect();
         planned.push("summary.json".into());
-        let _claim = Claim::take(out, force, &Writer::Whole, &planned)?;
+        let _claim = Claim::take(out, options.force, &Writer::Whole, &planned)?;
         return super::ship::execute(&scene, name, out);
     }
-    let all = cases(text, name)?;
-    let swept = !all[0].values.is_empty();
+    let swept = is_swept(text);
+    if options.shard.is_some() && !swept {
+        let message =
+            format!("--shard splits a [sweep]; {name} has none, so every shard would run it whole");
+        return Err(Usage(message).into());
+    }
     // Every case is checked before any runs: a bad value fails the sweep at once.
-    let scenes: Vec<(Case, Scene)> = all
+    let scenes: Vec<(Case, Scene)> = shard_cases(text, name, options.shard)?
         .into_iter()
-        .filter(|case| shard.is_none_or(|(k, n)| case.index % n == k))
         .map(|case| {
-            let scene = Scene::from_file(&case.file, name, base)?;
+            let mut scene = Scene::from_file(&case.file, name, base)?;
+            if swept {
+                scene.title = format!("{} — {}", scene.title, case.label());
+            }
             Ok((case, scene))
         })
         .collect::<Result<_, SceneError>>()?;
-    let writer = match shard {
+    refuse_large_output(
+        scenes.iter().map(|(_, s)| trajectory_bytes(s)).sum(),
+        options,
+    )?;
+    let writer = match options.shard {
         Some((index, count)) => Writer::Shard {
             index,
             count,
@@ -198,14 +231,47 @@ fn execute(
         },
         None => Writer::Whole,
     };
-    let _claim = Claim::take(out, force, &writer, &planned_entries(&scenes, swept, shard))?;
+    let planned = planned_entries(&scenes, swept, options.shard);
+    let _claim = Claim::take(out, options.force, &writer, &planned)?;
     if !swept {
         let (_, scene) = &scenes[0];
-        let outcome = run_case(scene, name, out, true)?;
+        let outcome = run_case(scene, name, out, true, None)?;
         print_outcome(scene, &outcome, out);
         return Ok(());
     }
-    run_sweep(&scenes, name, out, shard)
+    run_sweep(&scenes, name, out, options.shard)
+}
+
+/// Bytes per trajectory number as written (shortest round-trip, up to 24 characters, most
+/// 18–20) with its comma.
+const NUMBER_BYTES: f64 = 21.0;
+/// Bytes per row of a ship's trajectory: ten numbers.
+const SHIP_ROW_BYTES: f64 = 10.0 * NUMBER_BYTES;
+
+/// About how many bytes a scene's trajectory.csv takes.
+fn trajectory_bytes(scene: &Scene) -> f64 {
+    let rows = scene.integrator.end_time / scene.every + 1.0;
+    let energies = if scene.selection.info.potential_energy || scene.loads.has_potential() {
+        3.0
+    } else {
+        1.0
+    };
+    let columns = 1.0 + scene.state_names().len() as f64 + energies;
+    rows * columns * NUMBER_BYTES
+}
+
+/// Refuses, before anything runs, a run that would write more than [`LARGE_OUTPUT`] without
+/// `--large-output`.
+fn refuse_large_output(bytes: f64, options: Options) -> Result<()> {
+    if bytes <= LARGE_OUTPUT || options.large_output {
+        return Ok(());
+    }
+    let message = format!(
+        "this run would write about {} MB of trajectory; pass --large-output to write it, or \
+         make output.every longer",
+        Short((bytes / 1e6).round())
+    );
+    Err(Usage(message).into())
 }
 
 /// Every top-level entry a run may write into its folder: a sweep's case folders and its
@@ -256,12 +322,20 @@ fn writable_folder(out: &Path) -> Result<(), FolderError> {
 struct Outcome {
     report: Report,
     files: Vec<PathBuf>,
+    /// The family's own figures ([`family_measures`]).
+    measures: Vec<(&'static str, Option<f64>)>,
 }
 
 /// Runs one scene into `out`, a folder already known to be writable: trajectory, summary,
 /// plots. A run that stops early (a failure, a signal) still writes its summary and plots of
 /// the rows it wrote, then returns the error.
-fn run_case(scene: &Scene, name: &str, out: &Path, progress: bool) -> Result<Outcome> {
+fn run_case(
+    scene: &Scene,
+    name: &str,
+    out: &Path,
+    progress: bool,
+    case: Option<&Case>,
+) -> Result<Outcome> {
     let names = scene.state_names();
     // Potential and total energy columns where the model or the loads have a potential.
     let model_potential = scene.selection.info.potential_energy;
@@ -303,7 +377,25 @@ fn run_case(scene: &Scene, name: &str, out: &Path, progress: bool) -> Result<Out
     if interrupted.is_none() {
         summary.error = ran.error.as_ref().map(RunError::to_string);
     }
-    add_family_measures(scene, &columns, &mut summary);
+    let measures = family_measures(scene, &columns);
+    for (key, value) in &measures {
+        if let Some(value) = value {
+            summary
+                .extra
+                .insert((*key).into(), serde_json::json!(value));
+        }
+    }
+    if let Some(case) = case {
+        let values: serde_json::Map<String, serde_json::Value> = case
+            .values
+            .iter()
+            .map(|(key, value)| (key.clone(), toml_to_json(value)))
+            .collect();
+        summary.extra.insert(
+            "case".into(),
+            serde_json::json!({"index": case.index, "values": values}),
+        );
+    }
     let summary_path = out.join("summary.json");
     summary
         .write(&summary_path)
@@ -317,8 +409,8 @@ fn run_case(scene: &Scene, name: &str, out: &Path, progress: bool) -> Result<Out
         let kept = format!(
             "the run stopped at t = {} s of {} s; {} holds it up to there: every row in \
              trajectory.csv, summary.json (\"interrupted\": true) and the plots",
-            report.final_time,
-            scene.integrator.end_time,
+            Short(report.final_time),
+            Short(scene.integrator.end_time),
             out.display()
         );
         return Err(Interrupted { signal, kept }.into());
@@ -333,24 +425,45 @@ fn run_case(scene: &Scene, name: &str, out: &Path, progress: bool) -> Result<Out
                 "{name} stopped early; {} holds its rows up to t = {} s, summary.json and the \
                  plots",
                 out.display(),
-                report.final_time
+                Short(report.final_time)
             ),
         };
         return Err(anyhow::Error::new(error).context(kept));
     }
-    Ok(Outcome { report, files })
+    Ok(Outcome {
+        report,
+        files,
+        measures,
+    })
 }
 
-/// What a family adds to its summary: the pendulum's period, measured from the trajectory by
-/// the swing test's own measurement ([`eom::swing::measure_period`]).
-fn add_family_measures(scene: &Scene, columns: &Columns, summary: &mut Summary) {
-    if let Body::Pendulum(_) = scene.body
-        && let Ok(period) = eom::swing::measure_period(&columns.time, &columns.state[0])
-    {
-        summary
-            .extra
-            .insert("period_s".into(), serde_json::json!(period));
+/// The figures a family adds to its summary and its sweep's table, by key.
+fn family_measure_keys(scene: &Scene) -> &'static [&'static str] {
+    match scene.body {
+        Body::Pendulum(_) => &["period_s"],
+        _ => &[],
     }
+}
+
+/// The family's figures: the pendulum's period, measured from the trajectory by the swing
+/// test's own measurement ([`eom::swing::measure_period`]); `None` where the run gives none
+/// (fewer than two swings).
+fn family_measures(scene: &Scene, columns: &Columns) -> Vec<(&'static str, Option<f64>)> {
+    family_measure_keys(scene)
+        .iter()
+        .map(|&key| {
+            let value = match key {
+                "period_s" => eom::swing::measure_period(&columns.time, &columns.state[0]).ok(),
+                _ => None,
+            };
+            (key, value)
+        })
+        .collect()
+}
+
+/// A swept value as JSON: TOML's numbers, strings, booleans and arrays as they are.
+fn toml_to_json(value: &toml::Value) -> serde_json::Value {
+    serde_json::to_value(value).unwrap_or(serde_json::Value::Null)
 }
 
 /// A progress bar on a terminal for runs longer than about a second; none otherwise.
@@ -358,6 +471,7 @@ struct Progress {
     bar: ProgressBar,
     start: Instant,
     shown: bool,
+    end_time: f64,
 }
 
 impl Progress {
@@ -367,7 +481,15 @@ impl Progress {
             self.shown = true;
         }
         self.bar.set_position((t * 1000.0) as u64);
+        if self.shown {
+            self.bar.set_message(progress_message(t, self.end_time));
+        }
     }
+}
+
+/// What the bar says beside itself: `t = 12.5 s of 20 s`.
+fn progress_message(t: f64, end_time: f64) -> String {
+    format!("t = {} s of {} s", Short(t), Short(end_time))
 }
 
 impl Drop for Progress {
@@ -384,13 +506,14 @@ fn progress_bar(end_time: f64) -> impl FnMut(f64) + 'static {
         ProgressDrawTarget::hidden(),
     );
     bar.set_style(
-        ProgressStyle::with_template("{bar:40} t = {msg} s of {len_s} s, {eta} left")
+        ProgressStyle::with_template("{bar:40} {msg}, {eta} left")
             .unwrap_or_else(|_| ProgressStyle::default_bar()),
     );
     let mut progress = Progress {
         bar,
         start: Instant::now(),
         shown: false,
+        end_time,
     };
     move |t| progress.tick_to(t)
 }
@@ -449,7 +572,7 @@ fn run_sweep(
     out: &Path,
     shard: Option<(usize, usize)>,
 ) -> Result<()> {
-    let outcomes: Vec<Result<Report>> = scenes
+    let outcomes: Vec<Result<Outcome>> = scenes
         .par_iter()
         .map(|(case, scene)| {
             if signal_received().is_some() {
@@ -457,7 +580,7 @@ fn run_sweep(
             }
             let folder = out.join(case_folder(case));
             writable_folder(&folder)?;
-            run_case(scene, name, &folder, false).map(|o| o.report)
+            run_case(scene, name, &folder, false, Some(case))
         })
         .collect();
     let table = sweep_table(scenes, &outcomes);
@@ -496,7 +619,7 @@ fn run_sweep(
 
 /// `case, <swept keys…>, variant, steps, rhs_evals, wall_seconds, energy_drift, <final
 /// state…>, error`, one line per case.
-fn sweep_table(scenes: &[(Case, Scene)], outcomes: &[Result<Report>]) -> String {
+fn sweep_table(scenes: &[(Case, Scene)], outcomes: &[Result<Outcome>]) -> String {
     let Some((first, scene)) = scenes.first() else {
         return String::new();
     };
@@ -512,6 +635,8 @@ fn sweep_table(scenes: &[(Case, Scene)], outcomes: &[Result<Report>]) -> String 
         ]
         .map(String::from),
     );
+    let measures = family_measure_keys(scene);
+    header.extend(measures.iter().map(|key| (*key).to_owned()));
     header.extend(scene.state_names().iter().map(|n| format!("final_{n}")));
     header.push("error".into());
     let mut writer = csv::Writer::from_writer(Vec::new());
@@ -521,20 +646,29 @@ fn sweep_table(scenes: &[(Case, Scene)], outcomes: &[Result<Report>]) -> String 
         row.extend(case.values.iter().map(|(_, v)| v.to_string()));
         row.push(scene.selection.info.name.to_owned());
         match outcome {
-            Ok(r) => {
+            Ok(Outcome {
+                report: r,
+                measures,
+                ..
+            }) => {
                 row.extend([
                     r.steps.to_string(),
                     r.rhs_evals.to_string(),
                     r.wall_seconds.to_string(),
                 ]);
                 row.push(r.energy_drift.map_or_else(String::new, |d| d.to_string()));
+                row.extend(
+                    measures
+                        .iter()
+                        .map(|(_, v)| v.map_or_else(String::new, |v| v.to_string())),
+                );
                 row.extend(r.final_state.iter().map(f64::to_string));
                 row.push(String::new());
             }
             Err(error) => {
                 row.extend(std::iter::repeat_n(
                     String::new(),
-                    4 + scene.state_names().len(),
+                    4 + measures.len() + scene.state_names().len(),
                 ));
                 row.push(format!("{error:#}"));
             }
@@ -542,4 +676,19 @@ fn sweep_table(scenes: &[(Case, Scene)], outcomes: &[Result<Report>]) -> String 
         let _ = writer.write_record(&row);
     }
     String::from_utf8(writer.into_inner().unwrap_or_default()).unwrap_or_default()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_progress_bar_says_the_simulated_time_and_its_end() {
+        assert_eq!(progress_message(12.5, 20.0), "t = 12.5 s of 20 s");
+        assert_eq!(
+            progress_message(1.0 / 3.0, 1e4),
+            "t = 0.333333 s of 10000 s"
+        );
+        assert!(ProgressStyle::with_template("{bar:40} {msg}, {eta} left").is_ok());
+    }
 }

@@ -25,6 +25,7 @@ pub fn run(args: Args) -> Result<()> {
     if !(args.target.is_finite() && args.target > 0.0) {
         bail!("--target must be positive and finite, got {}", args.target);
     }
+    super::serves::require_single_catalog(&args.scene)?;
     let scene = Scene::load(&args.scene)?;
     let result = tradeoff(&scene).context("running the reference")?;
     let recommended = result.recommend(args.target);

@@ -20,7 +20,10 @@ pub enum ModelError {
     Inertia(#[from] InertiaError),
     /// A product of inertia that the model's symmetry class prunes is not zero: the pruned
     /// equations would silently be wrong for this body.
-    #[error("product of inertia {field} = {value} must be zero for the {class} symmetry class")]
+    #[error(
+        "product of inertia {field} = {} must be zero for the {class} symmetry class",
+        crate::Short(*value)
+    )]
     SymmetryClass {
         /// The product, named as in the chapter (`"Ixy"`, `"Iyz"`, `"Ixz"`).
         field: &'static str,

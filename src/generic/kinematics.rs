@@ -99,3 +99,37 @@ pub fn quaternion_rate<T: RealField + Copy>(
     let half: T = nalgebra::convert(0.5);
     q * Quaternion::from_imag(*omega) * half
 }
+
+/// Uniform gravity `g` (along space Z, down) in body axes, from Euler angles: `Eᵀ (0, 0, g)
+/// = g (−sin θ, sin φ cos θ, cos φ cos θ)` (4.57 transposed; the yaw ψ does not enter). Times
+/// the mass it is the weight a spatial model takes as its body-axis force.
+///
+/// ```
+/// use eom::generic::gravity_in_body_euler;
+/// // Pitched nose-up by 90°: gravity points along body −x.
+/// let g = gravity_in_body_euler(0.0, std::f64::consts::FRAC_PI_2, 9.81);
+/// assert!((g.x + 9.81).abs() < 1e-12 && g.z.abs() < 1e-12);
+/// ```
+#[inline]
+pub fn gravity_in_body_euler<T: RealField + Copy>(phi: T, theta: T, g: T) -> Vector3<T> {
+    let (sin_phi, cos_phi) = phi.sin_cos();
+    let (sin_theta, cos_theta) = theta.sin_cos();
+    Vector3::new(-sin_theta, sin_phi * cos_theta, cos_phi * cos_theta) * g
+}
+
+/// Uniform gravity `g` (along space Z, down) in body axes, from the attitude quaternion of a
+/// quaternion state (`q0` the scalar part), normalised first, so that a state whose `|q|` has
+/// drifted still gives a vector of length `g`.
+///
+/// ```
+/// use eom::generic::{gravity_in_body_euler, gravity_in_body_quaternion, quaternion_from_euler};
+/// let q = quaternion_from_euler(0.3, -0.7, 2.0);
+/// let from_q = gravity_in_body_quaternion(q.quaternion(), 9.81);
+/// let from_angles = gravity_in_body_euler(0.3, -0.7, 9.81);
+/// assert!((from_q - from_angles).norm() < 1e-12);
+/// ```
+#[inline]
+pub fn gravity_in_body_quaternion<T: RealField + Copy>(q: &Quaternion<T>, g: T) -> Vector3<T> {
+    let attitude = UnitQuaternion::from_quaternion(*q);
+    attitude.inverse_transform_vector(&(Vector3::z() * g))
+}

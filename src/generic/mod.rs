@@ -35,7 +35,8 @@ mod state;
 
 pub use error::ModelError;
 pub use kinematics::{
-    body_rates, body_to_space, check_pitch, euler_rates, quaternion_from_euler, quaternion_rate,
+    body_rates, body_to_space, check_pitch, euler_rates, gravity_in_body_euler,
+    gravity_in_body_quaternion, quaternion_from_euler, quaternion_rate,
 };
 pub use midship::PlanarMidship;
 pub use pendulum::Pendulum;

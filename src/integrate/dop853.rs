@@ -191,6 +191,26 @@ impl Dop853 {
     /// (k = 0, 1, … up to `t_end`) to `emit` as the run goes, by dense output: the steps are
     /// chosen by the tolerance alone, nothing is stored, and `emit` returning `false` stops
     /// the run with [`IntegrateError::Stopped`]. Returns the state at `t_end`.
+    ///
+    /// ```
+    /// use eom::models::Pendulum;
+    /// use eom::{AdaptiveOptions, Constant, Dop853, Model, PendulumParameters};
+    /// use eom::nalgebra::SVector;
+    ///
+    /// // A compound pendulum released at 90°, sampled every 0.1 s for 2 s.
+    /// let parameters = PendulumParameters::new(2.0, 3.0, 9.81, 0.5)?;
+    /// let pendulum = Pendulum::<f64>::new(&parameters);
+    /// let mut dop853 = Dop853::new(AdaptiveOptions::dop853(1e-10, 1e-10));
+    /// let start = SVector::from([std::f64::consts::FRAC_PI_2, 0.0]);
+    /// let mut rows = Vec::new();
+    /// dop853.sample_every(&pendulum.driven_by(Constant::zero()), (0.0, start, 2.0), 0.1, |t, y| {
+    ///     rows.push((t, y[0]));
+    ///     true
+    /// })?;
+    /// assert_eq!(rows.len(), 21);
+    /// assert!(rows.iter().all(|(_, theta)| theta.abs() <= std::f64::consts::FRAC_PI_2 + 1e-9));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     pub fn sample_every<T, const N: usize, S>(
         &mut self,
         system: &S,

@@ -1,13 +1,14 @@
 //! Why an integration stopped: each variant names the culprit (the parameter, the time, the
 //! state component), so that a failed run can be diagnosed from its message alone.
 
+use crate::Short;
 use thiserror::Error;
 
 /// An integration that could not be carried out or could not be finished.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum IntegrateError {
     /// A step size (`h`, `h_min`, `h_max`, `h0`) is zero, negative, NaN or infinite.
-    #[error("step size {name} = {value} must be positive and finite")]
+    #[error("step size {name} = {} must be positive and finite", Short(*value))]
     InvalidStep {
         /// The parameter, e.g. `"h"`.
         name: &'static str,
@@ -41,7 +42,7 @@ pub enum IntegrateError {
     },
     /// A parameter of the step-size controller (`beta`, `safety`, `fac_min`, `fac_max`) is out
     /// of its range.
-    #[error("step-size controller parameter {name} = {value} must lie in {range}")]
+    #[error("step-size controller parameter {name} = {} must lie in {range}", Short(*value))]
     InvalidController {
         /// The parameter, e.g. `"safety"`.
         name: &'static str,
@@ -51,7 +52,7 @@ pub enum IntegrateError {
         range: &'static str,
     },
     /// The integration interval is not finite or runs backwards.
-    #[error("integration interval [{t0}, {t_end}] must be finite with t_end ≥ t0")]
+    #[error("integration interval [{}, {}] must be finite with t_end ≥ t0", Short(*t0), Short(*t_end))]
     InvalidInterval {
         /// The start time.
         t0: f64,
@@ -60,7 +61,7 @@ pub enum IntegrateError {
     },
     /// The step-size controller asked for a step below the minimum (the problem is stiff,
     /// singular, or the tolerance is below what the precision can deliver).
-    #[error("step size {h} fell below the minimum {h_min} at t = {t}")]
+    #[error("step size {} fell below the minimum {} at t = {}", Short(*h), Short(*h_min), Short(*t))]
     StepSizeTooSmall {
         /// The time reached.
         t: f64,
@@ -70,7 +71,7 @@ pub enum IntegrateError {
         h_min: f64,
     },
     /// The maximum number of steps (accepted plus rejected) was reached before `t_end`.
-    #[error("maximum number of steps {max_steps} exceeded at t = {t}")]
+    #[error("maximum number of steps {max_steps} exceeded at t = {}", Short(*t))]
     MaxStepsExceeded {
         /// The time reached.
         t: f64,
@@ -78,7 +79,7 @@ pub enum IntegrateError {
         max_steps: usize,
     },
     /// A state component became NaN or infinite (the right-hand side produced it).
-    #[error("state component {component} is not finite at t = {t}")]
+    #[error("state component {component} is not finite at t = {}", Short(*t))]
     NonFiniteState {
         /// The index of the first non-finite component.
         component: usize,
@@ -88,7 +89,7 @@ pub enum IntegrateError {
     /// An input the system computes from time and state (a load a [`Loads`](crate::Loads)
     /// closure returns) is NaN or infinite at a finite state: the culprit is the input, not
     /// the state component it would poison next.
-    #[error("load input {name} is {value} at t = {t}, at a finite state")]
+    #[error("load input {name} is {value} at t = {}, at a finite state", Short(*t))]
     NonFiniteInput {
         /// The input's index in the model's input layout.
         index: usize,
@@ -109,7 +110,7 @@ pub enum IntegrateError {
     },
     /// The run's observer asked it to stop (an output could not be written, or the user
     /// interrupted the run).
-    #[error("the run was stopped by its observer at t = {t}")]
+    #[error("the run was stopped by its observer at t = {}", Short(*t))]
     Stopped {
         /// The time reached.
         t: f64,
@@ -119,7 +120,7 @@ pub enum IntegrateError {
     SingularInertia,
     /// The implicit equation of a step did not converge (the step is too large for the
     /// angular velocity: the fixed-point iteration contracts only while h·|ω| is small).
-    #[error("implicit step did not converge in {iterations} iterations at t = {t}")]
+    #[error("implicit step did not converge in {iterations} iterations at t = {}", Short(*t))]
     NotConverged {
         /// The time at the start of the step.
         t: f64,

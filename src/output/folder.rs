@@ -208,6 +208,30 @@ impl Claim {
         })
     }
 
+    /// Takes a folder eom wrote, exclusively, to add `name` to it beside what is there (the
+    /// merged table of a sweep's shards): refused while any run holds the folder, and when
+    /// `name` exists and eom did not write it.
+    pub fn add_to(folder: &Path, name: &str) -> Result<Claim, FolderError> {
+        refuse_system_folder(folder)?;
+        if !folder.is_dir() || !is_empty_or_eoms(folder)? {
+            return Err(FolderError::NotEoms(folder.to_owned()));
+        }
+        let lock = lock_whole(folder)?;
+        let earlier = earlier_entries(folder, &Writer::Whole);
+        refuse_others_files(folder, &[name.to_owned()], &earlier)?;
+        let path = folder.join(MANIFEST);
+        let mut manifest = OpenOptions::new()
+            .create(true)
+            .append(true)
+            .open(&path)
+            .map_err(|e| FolderError::unwritable(folder, e))?;
+        writeln!(manifest, "{name}").map_err(|e| FolderError::unwritable(folder, e))?;
+        Ok(Claim {
+            folder: folder.to_owned(),
+            _locks: vec![lock],
+        })
+    }
+
     /// The folder.
     pub fn folder(&self) -> &Path {
         &self.folder

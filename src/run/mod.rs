@@ -13,6 +13,30 @@
 //! the cost of a few arithmetic operations (see [`guard`]): an Euler-angle attitude near
 //! gimbal lock, a fixed step too long for the body's rate of turn, a state or a load input
 //! that is not finite.
+//!
+//! A scene file run from a program, its rows handed to a sink of the caller's:
+//!
+//! ```
+//! use eom::run::{Row, Sink, run};
+//! use eom::scene::Scene;
+//!
+//! /// Keeps the pendulum's angle at each row.
+//! struct Angles(Vec<(f64, f64)>);
+//! impl Sink for Angles {
+//!     fn row(&mut self, row: &Row) -> bool {
+//!         self.0.push((row.t, row.state[0]));
+//!         true // false would end the run here
+//!     }
+//! }
+//!
+//! let scene = Scene::load(std::path::Path::new("scenes/pendulum.toml"))?;
+//! let mut angles = Angles(Vec::new());
+//! let report = run(&scene, &mut angles)?;
+//! assert_eq!(angles.0.len(), 4001); // a row every 0.005 s over 20 s
+//! assert!((angles.0[0].1 - 150f64.to_radians()).abs() < 1e-15);
+//! println!("{} steps, {} rhs calls", report.steps, report.rhs_evals);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
 
 use crate::integrate::{
     Dop853, Dopri5, Euler, IntegrateError, Integrator, LieMidpoint, RigidRotation, Rk4, Statistics,
@@ -352,7 +376,7 @@ impl Visitor for Runner<'_> {
             final_time,
             final_state,
             energy_drift: rows.drift(),
-            warnings: guard.warnings(),
+            warnings: [spec.warnings(), guard.warnings()].concat(),
         };
         Outcome { report, error }
     }

@@ -7,6 +7,7 @@ use super::{
     Body, DEFAULT_MAX_STEPS, DEFAULT_ROWS, DEFAULT_TOLERANCE, IntegratorSpec, MAX_ROWS, Method,
     Problem, SceneError, SceneLoads, Selection, select_spatial,
 };
+use crate::Short;
 use crate::integrate::AdaptiveOptions;
 use crate::models::{AnyModel, Family, Kinematics, ModelInfo, Symmetry};
 use crate::{InertiaTensor, ParameterError, PendulumParameters};
@@ -92,8 +93,12 @@ impl Checker<'_> {
         key: &str,
         check: impl FnOnce() -> Result<f64, ParameterError>,
     ) -> Result<f64, SceneError> {
-        check()
-            .map_err(|e| self.invalid(key, format!("must be {}, got {}", e.requirement, e.value)))
+        check().map_err(|e| {
+            self.invalid(
+                key,
+                format!("must be {}, got {}", e.requirement, Short(e.value)),
+            )
+        })
     }
 
     pub(super) fn family(&self, name: &str) -> Result<Family, SceneError> {
@@ -356,7 +361,7 @@ impl Checker<'_> {
         if value.is_finite() {
             Ok(value)
         } else {
-            Err(self.invalid(key, format!("must be finite, got {value}")))
+            Err(self.invalid(key, format!("must be finite, got {}", Short(value))))
         }
     }
 
@@ -451,7 +456,7 @@ impl Checker<'_> {
         if end_time <= 0.0 {
             return Err(self.invalid(
                 "integrator.end_time",
-                format!("must be positive, got {end_time}"),
+                format!("must be positive, got {}", Short(end_time)),
             ));
         }
         let max_steps = match t.max_steps {
@@ -481,7 +486,8 @@ impl Checker<'_> {
                     "integrator.rtol",
                     format!(
                         "must be at least {min_rtol:e}, ten rounding units of f64 (below it \
-                         the method takes more steps for no accuracy), got {rtol:e}"
+                         the method takes more steps for no accuracy), got {}",
+                        Short(rtol)
                     ),
                 ));
             }
@@ -503,9 +509,10 @@ impl Checker<'_> {
             let step = self.required("integrator.step", t.step, "the fixed step, s")?;
             let step = self.finite("integrator.step", step)?;
             if step <= 0.0 {
-                return Err(
-                    self.invalid("integrator.step", format!("must be positive, got {step}"))
-                );
+                return Err(self.invalid(
+                    "integrator.step",
+                    format!("must be positive, got {}", Short(step)),
+                ));
             }
             let steps = (end_time / step).ceil();
             if steps > max_steps as f64 {
@@ -528,7 +535,7 @@ impl Checker<'_> {
     fn tolerance(&self, key: &str, value: Option<f64>) -> Result<f64, SceneError> {
         let value = self.finite(key, value.unwrap_or(DEFAULT_TOLERANCE))?;
         if value <= 0.0 {
-            return Err(self.invalid(key, format!("must be positive, got {value}")));
+            return Err(self.invalid(key, format!("must be positive, got {}", Short(value))));
         }
         Ok(value)
     }
@@ -561,7 +568,10 @@ impl Checker<'_> {
             } else {
                 Err(self.invalid(
                     "integrator.end_time",
-                    format!("{end_time} s is too short to divide into {DEFAULT_ROWS} rows"),
+                    format!(
+                        "{} s is too short to divide into {DEFAULT_ROWS} rows",
+                        Short(end_time)
+                    ),
                 ))
             };
         };
@@ -570,7 +580,9 @@ impl Checker<'_> {
             return Err(self.invalid(
                 "output.every",
                 format!(
-                    "must be positive and at most integrator.end_time = {end_time}, got {every}"
+                    "must be positive and at most integrator.end_time = {}, got {}",
+                    Short(end_time),
+                    Short(every)
                 ),
             ));
         }
@@ -578,8 +590,11 @@ impl Checker<'_> {
             return Err(self.invalid(
                 "output.every",
                 format!(
-                    "gives {:.0} rows over integrator.end_time = {end_time}, more than {MAX_ROWS}; a longer every keeps the file readable",
-                    end_time / every
+                    "gives {} rows over integrator.end_time = {}, more than {}; a longer every \
+                     keeps the file readable",
+                    Short(end_time / every),
+                    Short(end_time),
+                    Short(MAX_ROWS as f64)
                 ),
             ));
         }

@@ -49,18 +49,63 @@ pub enum Problem {
     BodyFile(Box<BodyFileError>),
 }
 
+/// The longest line of a message, in characters: the TOML reader echoes the offending line of
+/// the file, and a generated scene's line may be 200 KB long.
+pub const MESSAGE_LINE: usize = 120;
+
 impl SceneError {
-    /// An error about `key` of `file`.
+    /// An error about `key` of `file`; every line of its message is cut to
+    /// [`MESSAGE_LINE`] characters.
     pub fn new(file: &str, key: &str, problem: Problem) -> Self {
         Self {
             file: file.to_owned(),
-            key: key.to_owned(),
-            problem,
+            key: cut_lines(key),
+            problem: problem.cut(),
         }
     }
+}
+
+impl Problem {
+    fn cut(self) -> Self {
+        match self {
+            Problem::Syntax(text) => Problem::Syntax(cut_lines(&text)),
+            Problem::Schema(text) => Problem::Schema(cut_lines(&text)),
+            Problem::Missing(text) => Problem::Missing(cut_lines(&text)),
+            Problem::Invalid(text) => Problem::Invalid(cut_lines(&text)),
+            other => other,
+        }
+    }
+}
+
+/// Each line cut to [`MESSAGE_LINE`] characters, the cut marked with "…".
+fn cut_lines(text: &str) -> String {
+    let cut = |line: &str| match line.char_indices().nth(MESSAGE_LINE - 1) {
+        Some((end, _)) => format!("{}…", &line[..end]),
+        None => line.to_owned(),
+    };
+    let lines: Vec<String> = text.split('\n').map(cut).collect();
+    lines.join("\n")
 }
 
 /// The scene file's display name.
 pub(crate) fn display_name(path: &std::path::Path) -> String {
     PathBuf::from(path).display().to_string()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_echoed_line_is_cut_to_the_message_width() {
+        let line = format!("x = [{}", "[".repeat(100_000));
+        let error = SceneError::new("deep.toml", "", Problem::Syntax(format!("at\n{line}\n^")));
+        let message = error.to_string();
+        assert!(
+            message
+                .lines()
+                .all(|l| l.chars().count() <= MESSAGE_LINE + 30)
+        );
+        assert!(message.contains("…") && message.len() < 400, "{message}");
+    }
 }

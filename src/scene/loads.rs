@@ -14,6 +14,7 @@
 
 use super::file::LoadsTable;
 use super::{Body, Problem, Selection};
+use crate::Short;
 use crate::models::{Family, Kinematics, Loads};
 use nalgebra::{Quaternion, Rotation3, UnitQuaternion, Vector3};
 
@@ -106,7 +107,7 @@ fn finite<const K: usize>(key: &str, values: [f64; K]) -> Result<[f64; K], LoadE
         None => Ok(values),
         Some(i) => Err(invalid(
             &format!("{key}[{i}]"),
-            format!("must be finite, got {}", values[i]),
+            format!("must be finite, got {}", Short(values[i])),
         )),
     }
 }
@@ -138,7 +139,7 @@ fn damping<const K: usize>(key: &str, values: &Option<Vec<f64>>) -> Result<[f64;
         None => Ok(d),
         Some(i) => Err(invalid(
             &format!("{key}[{i}]"),
-            format!("must not be negative, got {}", d[i]),
+            format!("must not be negative, got {}", Short(d[i])),
         )),
     }
 }
@@ -377,7 +378,7 @@ impl SpatialLoads {
         if buoyancy < 0.0 {
             return Err(invalid(
                 "buoyancy",
-                format!("must not be negative, got {buoyancy}"),
+                format!("must not be negative, got {}", Short(buoyancy)),
             ));
         }
         if table.buoyancy_centre.is_some() && table.buoyancy.is_none() {

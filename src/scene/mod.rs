@@ -143,6 +143,28 @@ pub struct IntegratorSpec {
     pub max_steps: usize,
 }
 
+/// Tolerances looser than this warn: the run's numbers may be wrong in the third digit.
+pub const LOOSE_TOLERANCE: f64 = 1e-3;
+
+impl IntegratorSpec {
+    /// What the run should say about its own settings: a relative tolerance looser than
+    /// [`LOOSE_TOLERANCE`] (rtol = 10 drifts a free body's energy by a third). The absolute
+    /// tolerance is in the state's own units, so no one bound fits it.
+    pub fn warnings(&self) -> Vec<String> {
+        self.adaptive
+            .iter()
+            .map(|options| options.rtol)
+            .filter(|rtol| *rtol > LOOSE_TOLERANCE)
+            .map(|rtol| {
+                format!(
+                    "integrator.rtol = {rtol:e} is looser than {LOOSE_TOLERANCE:e}: the run's \
+                     numbers may be wrong from the third digit"
+                )
+            })
+            .collect()
+    }
+}
+
 /// The default tolerances of an adaptive method when the scene gives none.
 pub const DEFAULT_TOLERANCE: f64 = 1e-9;
 /// The default limit on steps.

@@ -12,14 +12,16 @@
 //! The cases are every combination, in a fixed order (keys sorted, the last key varying
 //! fastest), numbered from 0, so that case `k` is the same case on every machine: a batch
 //! scheduler can give machine `K` of `N` the cases `k ≡ K (mod N)` (`--shard K/N`) and the
-//! per-case summaries concatenate.
+//! per-case summaries concatenate. Each machine makes only its own shard's cases, and the
+//! limit of [`MAX_CASES`] applies to them, not to the whole sweep.
 
 use super::file::SceneFile;
 use super::{Problem, SceneError};
 use toml::{Table, Value};
 
-/// The most cases a sweep may have. The cases are made before the first runs, on every
-/// machine of a sharded sweep, so a count beyond this is refused rather than tried.
+/// The most cases one run of a sweep may have: the whole sweep, or one shard of it
+/// (`--shard K/N`), so that a sweep too large for one machine can be spread over many. The
+/// cases are made before the first runs, so a count beyond this is refused rather than tried.
 pub const MAX_CASES: usize = 100_000;
 
 /// One case of a sweep: the values it sets and the scene file it makes.
@@ -33,8 +35,37 @@ pub struct Case {
     pub file: SceneFile,
 }
 
+impl Case {
+    /// The case's values as `key = value, …`, for its title and messages.
+    pub fn label(&self) -> String {
+        let pairs: Vec<String> = self
+            .values
+            .iter()
+            .map(|(key, value)| format!("{key} = {value}"))
+            .collect();
+        pairs.join(", ")
+    }
+}
+
+/// Whether scene text has a `[sweep]` table (false for text that is not TOML: reading its
+/// cases says what is wrong with it).
+pub fn is_swept(text: &str) -> bool {
+    text.parse::<Table>()
+        .is_ok_and(|table| table.contains_key("sweep"))
+}
+
 /// The cases of scene text: one case (the scene as written) when it has no `[sweep]`.
 pub fn cases(text: &str, name: &str) -> Result<Vec<Case>, SceneError> {
+    shard_cases(text, name, None)
+}
+
+/// The cases of one shard `(K, N)` of scene text, the cases k ≡ K (mod N), or every case
+/// with `None`; at most [`MAX_CASES`] of them, whatever the whole sweep's count.
+pub fn shard_cases(
+    text: &str,
+    name: &str,
+    shard: Option<(usize, usize)>,
+) -> Result<Vec<Case>, SceneError> {
     let error = |key: &str, problem| SceneError::new(name, key, problem);
     let mut table: Table = text
         .parse()
@@ -44,22 +75,37 @@ pub fn cases(text: &str, name: &str) -> Result<Vec<Case>, SceneError> {
         Some(Value::Table(sweep)) => sweep,
         Some(_) => return Err(error("sweep", Problem::Schema("must be a table".into()))),
     };
-    // The count is checked as each key is added, before the next key's values are made.
-    let mut axes: Vec<(String, Vec<Value>)> = Vec::new();
+    let (k, n) = shard.unwrap_or((0, 1));
+    let mut axes: Vec<(String, Axis)> = Vec::new();
     let mut count = 1usize;
     for (key, spec) in sweep {
         let path = format!("sweep.{key}");
-        let values = axis_values(&key, spec).map_err(|p| error(&path, p))?;
-        count = count
-            .checked_mul(values.len())
-            .filter(|count| *count <= MAX_CASES)
-            .ok_or_else(|| {
-                let message = format!("with this key the sweep has more than {MAX_CASES} cases");
-                error(&path, Problem::Invalid(message))
-            })?;
-        axes.push((key, values));
+        let axis = Axis::new(&key, spec).map_err(|p| error(&path, p))?;
+        count = count.checked_mul(axis.len()).ok_or_else(|| {
+            error(
+                &path,
+                Problem::Invalid(
+                    "with this key the sweep has more cases than can be counted".into(),
+                ),
+            )
+        })?;
+        let in_shard = count.saturating_sub(k).div_ceil(n);
+        if in_shard > MAX_CASES {
+            let message = format!(
+                "with this key {} has more than {MAX_CASES} cases; spread it over more shards \
+                 (--shard K/N)",
+                if shard.is_some() {
+                    "the shard"
+                } else {
+                    "the sweep"
+                }
+            );
+            return Err(error(&path, Problem::Invalid(message)));
+        }
+        axes.push((key, axis));
     }
-    (0..count)
+    (k..count)
+        .step_by(n)
         .map(|index| {
             let values = combination(&axes, index);
             let mut case = table.clone();
@@ -77,64 +123,82 @@ pub fn cases(text: &str, name: &str) -> Result<Vec<Case>, SceneError> {
         .collect()
 }
 
-/// The values of one swept key: a list, or `{ from, to, count }` evenly spaced.
-fn axis_values(key: &str, spec: Value) -> Result<Vec<Value>, Problem> {
-    match spec {
-        Value::Array(values) if !values.is_empty() => Ok(values),
-        Value::Table(range) => {
-            let number = |k: &str| match range.get(k) {
-                Some(Value::Float(x)) => Ok(*x),
-                Some(Value::Integer(n)) => Ok(*n as f64),
-                _ => Err(Problem::Schema(format!("a range needs a number `{k}`"))),
-            };
-            let (from, to) = (number("from")?, number("to")?);
-            let count = match range.get("count") {
-                Some(Value::Integer(n)) if *n >= 2 => *n,
-                _ => {
-                    return Err(Problem::Schema(
-                        "a range needs an integer `count` of at least 2".into(),
-                    ));
-                }
-            };
-            let count = usize::try_from(count)
-                .ok()
-                .filter(|count| *count <= MAX_CASES)
-                .ok_or_else(|| {
-                    Problem::Invalid(format!(
-                        "a range of {count} values is more than the {MAX_CASES} cases a sweep may have"
-                    ))
-                })?;
-            if let Some(extra) = range
-                .keys()
-                .find(|k| !["from", "to", "count"].contains(&k.as_str()))
-            {
-                return Err(Problem::Schema(format!("unknown key `{extra}` in a range")));
-            }
-            if !(from.is_finite() && to.is_finite()) {
-                return Err(Problem::Invalid("a range must have finite ends".into()));
-            }
-            let step = (to - from) / (count - 1) as f64;
-            Ok((0..count)
-                .map(|i| {
-                    Value::Float(if i + 1 == count {
-                        to
-                    } else {
-                        from + step * i as f64
-                    })
-                })
-                .collect())
+/// The values of one swept key: a list, or `{ from, to, count }` evenly spaced (made when a
+/// case asks, so that a range may be as long as the sweep's count allows).
+#[derive(Debug)]
+enum Axis {
+    List(Vec<Value>),
+    Range { from: f64, to: f64, count: usize },
+}
+
+impl Axis {
+    fn new(key: &str, spec: Value) -> Result<Self, Problem> {
+        match spec {
+            Value::Array(values) if !values.is_empty() => Ok(Axis::List(values)),
+            Value::Table(range) => range_axis(&range),
+            _ => Err(Problem::Schema(format!(
+                "`{key}` must be a non-empty list of values or {{ from, to, count }}"
+            ))),
         }
-        _ => Err(Problem::Schema(format!(
-            "`{key}` must be a non-empty list of values or {{ from, to, count }}"
-        ))),
+    }
+
+    fn len(&self) -> usize {
+        match self {
+            Axis::List(values) => values.len(),
+            Axis::Range { count, .. } => *count,
+        }
+    }
+
+    fn get(&self, i: usize) -> Value {
+        match self {
+            Axis::List(values) => values[i].clone(),
+            Axis::Range { from, to, count } => {
+                let step = (to - from) / (count - 1) as f64;
+                Value::Float(if i + 1 == *count {
+                    *to
+                } else {
+                    from + step * i as f64
+                })
+            }
+        }
     }
 }
 
+/// `{ from, to, count }`: finite ends and an integer count of at least 2.
+fn range_axis(range: &Table) -> Result<Axis, Problem> {
+    let number = |k: &str| match range.get(k) {
+        Some(Value::Float(x)) => Ok(*x),
+        Some(Value::Integer(n)) => Ok(*n as f64),
+        _ => Err(Problem::Schema(format!("a range needs a number `{k}`"))),
+    };
+    let (from, to) = (number("from")?, number("to")?);
+    let count = match range.get("count") {
+        Some(Value::Integer(n)) if *n >= 2 => *n,
+        _ => {
+            return Err(Problem::Schema(
+                "a range needs an integer `count` of at least 2".into(),
+            ));
+        }
+    };
+    let count = usize::try_from(count)
+        .map_err(|_| Problem::Invalid(format!("a range of {count} values cannot be counted")))?;
+    if let Some(extra) = range
+        .keys()
+        .find(|k| !["from", "to", "count"].contains(&k.as_str()))
+    {
+        return Err(Problem::Schema(format!("unknown key `{extra}` in a range")));
+    }
+    if !(from.is_finite() && to.is_finite()) {
+        return Err(Problem::Invalid("a range must have finite ends".into()));
+    }
+    Ok(Axis::Range { from, to, count })
+}
+
 /// The values of case `index`: the last axis varies fastest.
-fn combination(axes: &[(String, Vec<Value>)], mut index: usize) -> Vec<(String, Value)> {
+fn combination(axes: &[(String, Axis)], mut index: usize) -> Vec<(String, Value)> {
     let mut values = Vec::with_capacity(axes.len());
     for (key, axis) in axes.iter().rev() {
-        values.push((key.clone(), axis[index % axis.len()].clone()));
+        values.push((key.clone(), axis.get(index % axis.len())));
         index /= axis.len();
     }
     values.reverse();
@@ -245,6 +309,31 @@ end_time = 1.0
         assert_eq!(
             cases(&text, "s.toml").unwrap_err().key,
             "sweep.initial.theta_deg"
+        );
+    }
+
+    #[test]
+    fn a_shard_makes_only_its_cases_and_the_cap_is_per_shard() {
+        let shard: Vec<usize> = shard_cases(SCENE, "s.toml", Some((1, 4)))
+            .unwrap()
+            .iter()
+            .map(|c| c.index)
+            .collect();
+        assert_eq!(shard, [1, 5]);
+        let big = SCENE.replace("count = 3", &format!("count = {}", 3 * MAX_CASES));
+        // 6·10⁵ cases: too many for one run, and for each of five shards; not for eight.
+        let refusal = |shard| {
+            shard_cases(&big, "s.toml", shard)
+                .err()
+                .map(|e| e.to_string())
+        };
+        let whole = refusal(None).unwrap_or_default();
+        assert!(whole.contains("the sweep has more than"), "{whole}");
+        let spread = refusal(Some((4, 5))).unwrap_or_default();
+        assert!(spread.contains("the shard has more than"), "{spread}");
+        assert_eq!(
+            shard_cases(&big, "s.toml", Some((7, 8))).unwrap().len(),
+            75_000
         );
     }
 

@@ -229,7 +229,10 @@ impl Check<'_> {
         if value.is_finite() && value > 0.0 {
             Ok(value)
         } else {
-            Err(self.invalid(key, format!("{value} must be a positive finite number")))
+            Err(self.invalid(
+                key,
+                format!("{} must be a positive finite number", crate::Short(value)),
+            ))
         }
     }
 
@@ -237,7 +240,7 @@ impl Check<'_> {
         if value.is_finite() {
             Ok(value)
         } else {
-            Err(self.invalid(key, format!("{value} is not finite")))
+            Err(self.invalid(key, format!("{} is not finite", crate::Short(value))))
         }
     }
 

@@ -141,7 +141,7 @@ impl ShipTable {
             if !value.is_finite() {
                 return Err(ShipError::invalid(
                     key(name),
-                    format!("{value} is not finite"),
+                    format!("{} is not finite", crate::Short(value)),
                 ));
             }
             match parse_name(name) {

@@ -10,6 +10,11 @@ use std::time::{Duration, Instant};
 
 /// `eom run SCENE --out OUT`, started in the background.
 pub fn spawn_run(scene: &Path, out: &Path) -> Child {
+    spawn_run_with(scene, out, &[])
+}
+
+/// `eom run SCENE --out OUT EXTRA…`, started in the background.
+pub fn spawn_run_with(scene: &Path, out: &Path, extra: &[&str]) -> Child {
     Command::new(env!("CARGO_BIN_EXE_eom"))
         .args([
             "run",
@@ -17,6 +22,7 @@ pub fn spawn_run(scene: &Path, out: &Path) -> Child {
             "--out",
             out.to_str().unwrap(),
         ])
+        .args(extra)
         .stdout(Stdio::null())
         .stderr(Stdio::piped())
         .spawn()

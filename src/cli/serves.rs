@@ -1,0 +1,73 @@
+//! Which scenes a command serves: a command given a scene it does not serve says what it
+//! serves, instead of failing on the first key its reader does not know.
+
+use super::run::Usage;
+use anyhow::Result;
+use eom::scene::{Problem, SceneError};
+use std::path::Path;
+
+/// The kinds of scene the commands tell apart.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Kind {
+    /// A scene with `[hydrodynamics]`: a ship on its own table.
+    Ship,
+    /// A catalog scene, with or without a `[sweep]`.
+    Catalog { swept: bool },
+}
+
+/// The scene's text, read, and its kind.
+fn read(path: &Path) -> Result<(String, Kind)> {
+    let name = path.display().to_string();
+    let text =
+        std::fs::read_to_string(path).map_err(|e| SceneError::new(&name, "", Problem::Read(e)))?;
+    let kind = if eom::ship::scene::is_ship_scene(&text) {
+        Kind::Ship
+    } else {
+        Kind::Catalog {
+            swept: eom::scene::sweep::is_swept(&text),
+        }
+    };
+    Ok((text, kind))
+}
+
+/// The `[model] family` the scene names, for messages.
+fn family(text: &str) -> String {
+    text.parse::<toml::Table>()
+        .ok()
+        .and_then(|t| t.get("model")?.get("family")?.as_str().map(str::to_owned))
+        .unwrap_or_else(|| "catalog".into())
+}
+
+/// Refuses anything but a ship scene, for `eom linear`.
+pub fn require_ship(path: &Path) -> Result<()> {
+    let (text, kind) = read(path)?;
+    match kind {
+        Kind::Ship => Ok(()),
+        Kind::Catalog { .. } => Err(Usage(format!(
+            "eom linear serves ship scenes (a scene with [hydrodynamics]: the Nomoto models of \
+             its table); {} is a {} scene, which it cannot linearise yet",
+            path.display(),
+            family(&text)
+        ))
+        .into()),
+    }
+}
+
+/// Refuses anything but a single catalog scene, for `eom tradeoff`.
+pub fn require_single_catalog(path: &Path) -> Result<()> {
+    match read(path)?.1 {
+        Kind::Catalog { swept: false } => Ok(()),
+        Kind::Catalog { swept: true } => Err(Usage(format!(
+            "eom tradeoff compares the integrators on one scene; {} has a [sweep]: run it \
+             without the [sweep], with one case's values",
+            path.display()
+        ))
+        .into()),
+        Kind::Ship => Err(Usage(format!(
+            "eom tradeoff serves catalog scenes (pendulum, planar, spatial, top), whose \
+             integrators it compares; {} is a ship scene, which runs with rk4 only",
+            path.display()
+        ))
+        .into()),
+    }
+}
