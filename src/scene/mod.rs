@@ -15,6 +15,7 @@ mod check;
 mod error;
 pub mod file;
 mod loads;
+pub mod reference;
 mod select;
 pub mod sweep;
 
