@@ -53,7 +53,7 @@ fn run_scene(name: &str, out: &Path) -> Output {
     output
 }
 
-/// trajectory.csv as a header and rows of numbers.
+/// trajectory.csv as a header (each column `name[unit]`) and rows of numbers.
 fn trajectory(out: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
     let text = std::fs::read_to_string(out.join("trajectory.csv")).unwrap();
     let mut lines = text.lines();
@@ -64,11 +64,21 @@ fn trajectory(out: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
     (header, rows)
 }
 
-fn column(header: &[String], rows: &[Vec<f64>], name: &str) -> Vec<f64> {
-    let i = header
+/// A header field's name without its unit: `u` of `u[m/s]`.
+fn name_of(field: &str) -> &str {
+    field.split_once('[').map_or(field, |(name, _)| name)
+}
+
+/// The index of the column named `name` (whatever its unit).
+fn index_of(header: &[String], name: &str) -> usize {
+    header
         .iter()
-        .position(|h| h == name)
-        .unwrap_or_else(|| panic!("no column {name}"));
+        .position(|h| name_of(h) == name)
+        .unwrap_or_else(|| panic!("no column {name} in {header:?}"))
+}
+
+fn column(header: &[String], rows: &[Vec<f64>], name: &str) -> Vec<f64> {
+    let i = index_of(header, name);
     rows.iter().map(|r| r[i]).collect()
 }
 
@@ -103,10 +113,14 @@ fn the_pendulum_swings_with_the_period_of_the_elliptic_integral() {
     let out = folder("pendulum");
     run_scene("pendulum.toml", &out);
     let (header, rows) = trajectory(&out);
-    assert_eq!(header[..3], ["t", "theta", "theta_dot"]);
+    assert_eq!(header[..3], ["t[s]", "theta[rad]", "theta_dot[rad/s]"]);
     assert_eq!(
         header[3..],
-        ["kinetic_energy", "potential_energy", "total_energy"]
+        [
+            "kinetic_energy[J]",
+            "potential_energy[J]",
+            "total_energy[J]"
+        ]
     );
     let t = column(&header, &rows, "t");
     let theta = column(&header, &rows, "theta");
@@ -152,7 +166,8 @@ fn the_tennis_racket_flips_as_jacobis_solution_says_and_keeps_energy_and_momentu
     let out = folder("tennis_racket");
     run_scene("tennis_racket.toml", &out);
     let (header, rows) = trajectory(&out);
-    let expected: Vec<&str> = "t,u,v,w,p,q,r,x,y,z,q0,q1,q2,q3,kinetic_energy"
+    let expected: Vec<&str> = "t[s],u[m/s],v[m/s],w[m/s],p[rad/s],q[rad/s],r[rad/s],x[m],y[m],\
+                               z[m],q0[-],q1[-],q2[-],q3[-],kinetic_energy[J]"
         .split(',')
         .collect();
     assert_eq!(header, expected);
@@ -207,7 +222,12 @@ fn the_steady_turn_settles_at_the_yaw_rate_of_the_equations_at_rest() {
     let out = folder("steady_turn");
     run_scene("steady_turn.toml", &out);
     let (header, rows) = trajectory(&out);
-    assert_eq!(header[..7], ["t", "u", "v", "r", "x", "y", "psi"]);
+    assert_eq!(
+        header[..7],
+        [
+            "t[s]", "u[m/s]", "v[m/s]", "r[rad/s]", "x[m]", "y[m]", "psi[rad]"
+        ]
+    );
     let last = rows.last().unwrap();
     let (u, v, r) = (last[1], last[2], last[3]);
     // 4.46 with every rate zero: M(−v r − x_G r²) = X − d_u u, M u r = −d_v v,
@@ -506,11 +526,23 @@ fn the_puck_in_the_wind_keeps_its_energy_and_spin() {
     let (header, rows) = trajectory(&out);
     assert_eq!(
         header[..7],
-        ["t", "x", "y", "psi", "x_dot", "y_dot", "psi_dot"]
+        [
+            "t[s]",
+            "x[m]",
+            "y[m]",
+            "psi[rad]",
+            "x_dot[m/s]",
+            "y_dot[m/s]",
+            "psi_dot[rad/s]"
+        ]
     );
     assert_eq!(
         header[7..],
-        ["kinetic_energy", "potential_energy", "total_energy"]
+        [
+            "kinetic_energy[J]",
+            "potential_energy[J]",
+            "total_energy[J]"
+        ]
     );
     // The wind's force is constant in space: the energy T − F·r is conserved, Ẋ does not
     // change and Ẏ grows at F/M. DOPRI5 at 1e-10: 1e-9 relative.
@@ -531,10 +563,19 @@ fn the_heavy_top_keeps_its_energy_spin_and_vertical_momentum() {
     let out = folder("heavy_top");
     run_scene("heavy_top.toml", &out);
     let (header, rows) = trajectory(&out);
-    assert_eq!(header[..8], ["t", "p", "q", "r", "q0", "q1", "q2", "q3"]);
+    assert_eq!(
+        header[..8],
+        [
+            "t[s]", "p[rad/s]", "q[rad/s]", "r[rad/s]", "q0[-]", "q1[-]", "q2[-]", "q3[-]"
+        ]
+    );
     assert_eq!(
         header[8..],
-        ["kinetic_energy", "potential_energy", "total_energy"]
+        [
+            "kinetic_energy[J]",
+            "potential_energy[J]",
+            "total_energy[J]"
+        ]
     );
     let s = summary(&out);
     assert_eq!(s["variant"], "top_quaternion");
@@ -628,9 +669,7 @@ fn euler_angles_stop_at_gimbal_lock_where_the_quaternion_goes_on_and_agree_befor
     run_scene("looping.toml", &quaternion);
     let (q_header, q_rows) = trajectory(&quaternion);
     assert!(q_rows.last().unwrap()[0] == 2.0 && q_rows.len() > rows.len());
-    let at = |names: &[String], row: &[f64], name: &str| {
-        row[names.iter().position(|h| h == name).unwrap()]
-    };
+    let at = |names: &[String], row: &[f64], name: &str| row[index_of(names, name)];
     for (e, q) in rows.iter().zip(&q_rows) {
         assert_eq!(e[0], q[0]);
         for name in ["u", "v", "w", "p", "q", "r", "x", "y", "z"] {

@@ -120,7 +120,13 @@ fn the_mariner_runs_its_manoeuvres_and_is_judged() {
     for name in ["turning_circle_35", "zigzag_10_10", "zigzag_20_20"] {
         let dir = out.join(name);
         let csv = std::fs::read_to_string(dir.join("trajectory.csv")).unwrap();
-        assert!(csv.starts_with("t,u,v,r,x,y,psi,delta,command,distance\n"));
+        assert!(
+            csv.starts_with(
+                "t[s],u[m/s],v[m/s],r[rad/s],x[m],y[m],psi[rad],delta[rad],command[rad],distance[m]\n"
+            ),
+            "{}",
+            csv.lines().next().unwrap_or_default()
+        );
         for svg in ["track.svg", "heading.svg"] {
             let text = std::fs::read_to_string(dir.join(svg)).unwrap();
             let document = roxmltree::Document::parse(&text).unwrap();

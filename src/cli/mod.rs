@@ -5,6 +5,7 @@ mod eval;
 mod mass;
 mod merge;
 mod models;
+mod new;
 mod plots;
 mod run;
 mod serves;
@@ -30,6 +31,9 @@ pub enum Command {
     Swing(swing::Args),
     /// Evaluate one model's right-hand side at a state read from JSON (generic nalgebra form).
     Eval(eval::Args),
+    /// Print a scene template of a family, every key commented with its unit, axes, default
+    /// and whether it is required; it runs as printed.
+    New(new::Args),
     /// Run a scene file: integrate it and write trajectory.csv, summary.json and SVG plots.
     Run(run::Args),
     /// The linear model of a ship scene about the straight course: Nomoto's K, T₁, T₂, T₃ by
@@ -54,6 +58,7 @@ pub fn run(command: Option<Command>) -> anyhow::Result<()> {
         Command::Models(args) => models::run(args),
         Command::Swing(args) => swing::run(args),
         Command::Eval(args) => eval::run(args),
+        Command::New(args) => new::run(args),
         Command::Run(args) => run::run_command(args),
         Command::Tradeoff(args) => tradeoff::run(args),
         Command::Linear(args) => ship::linear(args),

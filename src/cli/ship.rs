@@ -16,7 +16,7 @@ use eom::output::summary::write_atomically;
 use eom::output::trajectory::push_number;
 use eom::ship::imo::{Criterion, criteria};
 use eom::ship::linear::{LinearModel, Nomoto, linearise};
-use eom::ship::manoeuvre::{Figures, Sample, run};
+use eom::ship::manoeuvre::{Figures, Sample, run, trajectory_columns};
 use eom::ship::{Manoeuvre, ManoeuvreKind, RigidBodyTerms, ShipError, ShipModel, ShipScene};
 use eom_codegen::model::ship::{Units, YawInertia};
 use serde_json::{Map, Value, json};
@@ -148,9 +148,9 @@ fn run_manoeuvre(scene: &ShipScene, model: &ShipModel, manoeuvre: &Manoeuvre) ->
 }
 
 /// `trajectory.csv`: t, the model's state (radians, m/s), the command and the distance run,
-/// numbers as every trajectory file writes them.
+/// with units in the header and numbers as every trajectory file writes them.
 fn write_trajectory(path: &Path, samples: &[Sample]) -> Result<()> {
-    let mut bytes = b"t,u,v,r,x,y,psi,delta,command,distance\n".to_vec();
+    let mut bytes = format!("{}\n", trajectory_columns().join(",")).into_bytes();
     let mut number = ryu::Buffer::new();
     for sample in samples {
         let [u, v, r, x, y, psi, delta, distance] = sample.state;

@@ -32,9 +32,11 @@ mod info;
 mod model;
 mod pendulum;
 mod planar;
+mod units;
 
 pub use info::{ModelInfo, Operations};
 pub use model::{Constant, Driven, Loads, Model};
+pub use units::{ENERGY_UNIT, TIME_UNIT, state_unit, state_with_unit, with_unit};
 
 include!(concat!(env!("OUT_DIR"), "/catalog.rs"));
 

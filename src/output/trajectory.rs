@@ -2,8 +2,11 @@
 //!
 //! The header is `t`, the model's state names as its layout names them (in identifiers:
 //! `x` for X), then `kinetic_energy`, and `potential_energy`, `total_energy` where the loads
-//! have a potential. Numbers are written in Rust's shortest form that reads back to the same
-//! bits (`NaN`, `inf` and `-inf` as Rust writes them).
+//! have a potential; each name carries its unit in brackets, `t[s]`, `u[m/s]`, `psi[rad]`,
+//! `q0[-]`, `kinetic_energy[J]` ([`crate::models::with_unit`], the states' units from
+//! [`crate::models::state_unit`]), so that a file read alone says what it holds.
+//! Numbers are written in Rust's shortest form that reads back to the same bits (`NaN`, `inf`
+//! and `-inf` as Rust writes them).
 //!
 //! What survives a run that is cut short: rows are gathered whole in the writer's own buffer
 //! and handed to the file only whole, at least every quarter of a second and whenever 64 KiB
@@ -14,6 +17,7 @@
 //! with `\n`. What reached the file survives the process, not the machine losing power (it is
 //! not synced to the disk).
 
+use crate::models::{ENERGY_UNIT, TIME_UNIT, state_with_unit, with_unit};
 use crate::run::{Row, Sink};
 use std::fs::File;
 use std::io::Write;
@@ -67,11 +71,11 @@ impl TrajectoryWriter {
         expected_rows: usize,
     ) -> std::io::Result<Self> {
         let mut file = File::create(path)?;
-        let mut header: Vec<&str> = vec!["t"];
-        header.extend(state_names.iter().map(String::as_str));
-        header.push("kinetic_energy");
+        let mut header = vec![with_unit("t", TIME_UNIT)];
+        header.extend(state_names.iter().map(|name| state_with_unit(name)));
+        header.push(with_unit("kinetic_energy", ENERGY_UNIT));
         if with_potential {
-            header.extend(["potential_energy", "total_energy"]);
+            header.extend(["potential_energy", "total_energy"].map(|n| with_unit(n, ENERGY_UNIT)));
         }
         file.write_all(format!("{}\n", header.join(",")).as_bytes())?;
         Ok(Self {

@@ -3,6 +3,7 @@
 //! path in the file (`integrator.step`).
 
 use super::file::{self, GivenKeys, SceneFile};
+use super::reference;
 use super::{
     Body, DEFAULT_MAX_STEPS, DEFAULT_ROWS, DEFAULT_TOLERANCE, IntegratorSpec, MAX_ROWS, Method,
     Problem, SceneError, SceneLoads, Selection, select_spatial,
@@ -18,61 +19,6 @@ use std::path::Path;
 pub(super) struct Checker<'a> {
     pub(super) name: &'a str,
 }
-
-/// The keys a family reads in each table; any other key given is an error.
-struct FamilyKeys {
-    body: &'static [&'static str],
-    initial: &'static [&'static str],
-    loads: &'static [&'static str],
-}
-
-fn family_keys(family: Family) -> FamilyKeys {
-    match family {
-        Family::Pendulum => FamilyKeys {
-            body: &["i0", "mass", "g", "h"],
-            initial: &["theta_deg", "theta_dot"],
-            loads: &["moment", "linear_damping", "quadratic_damping"],
-        },
-        Family::PlanarAtG | Family::PlanarSpaceFixed => FamilyKeys {
-            body: &["mass", "izz"],
-            initial: &["u", "v", "r", "x", "y", "psi_deg"],
-            loads: PLANAR_LOADS,
-        },
-        Family::PlanarMidship => FamilyKeys {
-            body: &["mass", "izz", "x_g"],
-            initial: &["u", "v", "r", "x", "y", "psi_deg"],
-            loads: PLANAR_LOADS,
-        },
-        Family::Top => FamilyKeys {
-            body: &["mass", "inertia", "h", "g"],
-            initial: &["rates", "attitude_deg"],
-            loads: &["moment_body", "linear_damping", "quadratic_damping"],
-        },
-        Family::Spatial => FamilyKeys {
-            body: &["mass", "inertia", "file"],
-            initial: &["velocity", "rates", "position", "attitude_deg"],
-            loads: &[
-                "gravity",
-                "buoyancy",
-                "buoyancy_centre",
-                "force_body",
-                "force_space",
-                "moment_body",
-                "moment_space",
-                "linear_damping",
-                "quadratic_damping",
-            ],
-        },
-    }
-}
-
-const PLANAR_LOADS: &[&str] = &[
-    "force_body",
-    "force_space",
-    "moment",
-    "linear_damping",
-    "quadratic_damping",
-];
 
 impl Checker<'_> {
     fn error(&self, key: &str, problem: Problem) -> SceneError {
@@ -114,19 +60,21 @@ impl Checker<'_> {
             })
     }
 
-    /// Refuses a key that another family reads: it would be ignored, silently.
+    /// Refuses a key that another family reads: it would be ignored, silently. What each
+    /// family reads in each table is the scene reference's ([`reference::table_keys`]).
     pub(super) fn keys_of_family(
         &self,
         file: &SceneFile,
         family: Family,
     ) -> Result<(), SceneError> {
-        let keys = family_keys(family);
-        let tables: [(&str, Vec<&str>, &[&str]); 3] = [
-            ("body", file.body.given(), keys.body),
-            ("initial", file.initial.given(), keys.initial),
-            ("loads", file.loads.given(), keys.loads),
+        let tables = [
+            ("body", file.body.given()),
+            ("model", file.model.given()),
+            ("initial", file.initial.given()),
+            ("loads", file.loads.given()),
         ];
-        for (table, given, allowed) in tables {
+        for (table, given) in tables {
+            let allowed = reference::table_keys(family, table);
             if let Some(key) = given.iter().find(|k| !allowed.contains(k)) {
                 return Err(self.error(
                     &format!("{table}.{key}"),
@@ -138,24 +86,7 @@ impl Checker<'_> {
                 ));
             }
         }
-        let has_attitude = matches!(family, Family::Spatial | Family::Top);
-        let misplaced = [
-            (
-                "model.symmetry",
-                file.model.symmetry.is_some() && family != Family::Spatial,
-            ),
-            (
-                "model.kinematics",
-                file.model.kinematics.is_some() && !has_attitude,
-            ),
-        ];
-        match misplaced.iter().find(|(_, misplaced)| *misplaced) {
-            Some((key, _)) => Err(self.error(
-                key,
-                Problem::Schema(format!("a {} scene does not take it", family.name())),
-            )),
-            None => Ok(()),
-        }
+        Ok(())
     }
 
     /// An error naming the first of `keys` that is given, where none may be.

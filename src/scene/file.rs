@@ -57,11 +57,11 @@ pub struct BodyTable {
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct ModelTable {
-    /// `pendulum`, `planar-g`, `planar-midship`, `planar-space` or `spatial`.
+    /// The family's name (`eom::models::Family::name`).
     pub family: String,
-    /// `auto`, `full`, `xz` or `principal` (spatial only).
+    /// `auto` or a symmetry class (spatial only).
     pub symmetry: Option<String>,
-    /// `euler` or `quaternion` (spatial only).
+    /// `euler` or `quaternion` (spatial and top).
     pub kinematics: Option<String>,
 }
 
@@ -165,6 +165,19 @@ macro_rules! given_keys {
             }
         }
     };
+}
+
+impl GivenKeys for ModelTable {
+    fn given(&self) -> Vec<&'static str> {
+        let mut keys = vec!["family"];
+        if self.symmetry.is_some() {
+            keys.push("symmetry");
+        }
+        if self.kinematics.is_some() {
+            keys.push("kinematics");
+        }
+        keys
+    }
 }
 
 given_keys!(BodyTable {

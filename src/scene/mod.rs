@@ -15,6 +15,7 @@ mod check;
 mod error;
 pub mod file;
 mod loads;
+pub mod reference;
 mod select;
 pub mod sweep;
 
@@ -255,8 +256,8 @@ impl Scene {
         }
     }
 
-    /// The state entries' names as the trajectory's columns: the model's layout, in
-    /// identifiers (`x` for X).
+    /// The state entries' names as the trajectory's columns name them (before their units):
+    /// the model's layout, in identifiers (`x` for X).
     pub fn state_names(&self) -> Vec<String> {
         self.selection
             .info

@@ -12,9 +12,10 @@
 
 use super::ShipError;
 use super::course::Course;
-use super::model::ShipModel;
+use super::model::{STATE, ShipModel};
 use super::rudder::{Rudder, Series};
 use crate::integrate::{OdeSystem, rk4_step};
+use crate::models::{TIME_UNIT, state_with_unit, with_unit};
 use nalgebra::SVector;
 use std::f64::consts::PI;
 
@@ -72,6 +73,21 @@ pub struct Sample {
     pub state: [f64; 8],
     /// The rudder command after saturation, rad.
     pub command: f64,
+}
+
+/// The columns of a manoeuvre's `trajectory.csv`, each labelled with its unit
+/// ([`crate::models::with_unit`]): t, the model's state in its order ([`STATE`], in
+/// identifiers: `x` for X), then the rudder command after saturation and the distance run;
+/// a [`Sample`]'s time, its first seven state entries, its command and its distance.
+pub fn trajectory_columns() -> Vec<String> {
+    let mut columns = vec![with_unit("t", TIME_UNIT)];
+    columns.extend(
+        STATE
+            .iter()
+            .map(|name| state_with_unit(&name.to_lowercase())),
+    );
+    columns.extend([with_unit("command", "rad"), with_unit("distance", "m")]);
+    columns
 }
 
 /// The figures of a manoeuvre, as (JSON key, value) pairs; `None` where the run did not get

@@ -71,7 +71,8 @@ pub struct PlotInput<'a> {
     pub title: &'a str,
     /// The sample times, ascending.
     pub time: &'a [f64],
-    /// Every state component, named as in trajectory.csv (`u`, `theta_dot`, `q0`, …).
+    /// Every state component, named as trajectory.csv names it without its unit (`u`,
+    /// `theta_dot`, `q0`, …).
     pub state: Vec<(&'a str, &'a [f64])>,
     /// Roll, pitch and yaw in degrees, where the model has an attitude.
     pub attitude_deg: Option<[&'a [f64]; 3]>,
@@ -296,7 +297,7 @@ mod tests {
         }
     }
 
-    /// The names of a spatial quaternion state, as in trajectory.csv.
+    /// The names of a spatial quaternion state, as trajectory.csv names them without their units.
     const SPATIAL: [&str; 13] = [
         "u", "v", "w", "p", "q", "r", "x", "y", "z", "q0", "q1", "q2", "q3",
     ];

@@ -1,0 +1,38 @@
+//! `eom new FAMILY`: print a scene template with every key of the family, commented, that
+//! runs as printed; `eom new --reference` prints the reference page, docs/scenes.md.
+//!
+//! Both come from the one key table of `eom::scene::reference`, so a template, the page and
+//! the scene checker cannot disagree. The family is checked by clap against that table's
+//! families: an unknown one is a usage error (exit 2) that lists them.
+
+use anyhow::Result;
+use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
+use eom::scene::reference::{SceneFamily, markdown, template};
+
+/// Options of `eom new`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// The family to write a template of.
+    #[arg(value_parser = family(), required_unless_present = "reference")]
+    family: Option<SceneFamily>,
+    /// Print the reference of every key of every family (Markdown; docs/scenes.md) instead.
+    #[arg(long, conflicts_with = "family")]
+    reference: bool,
+}
+
+/// A parser for a family's name, each with its one-line doc as help.
+fn family() -> impl TypedValueParser<Value = SceneFamily> {
+    let values = SceneFamily::ALL.map(|f| PossibleValue::new(f.name()).help(f.doc()));
+    PossibleValuesParser::new(values)
+        .map(|name| SceneFamily::from_name(&name).expect("clap accepts only the families' names"))
+}
+
+/// Runs `eom new`: the template or the page, to standard output.
+pub fn run(args: Args) -> Result<()> {
+    let text = match args.family {
+        Some(family) => template(family),
+        None => markdown(),
+    };
+    print!("{text}");
+    Ok(())
+}

@@ -1,0 +1,646 @@
+//! The keys of a catalog scene ([`SceneFile`](crate::scene::file::SceneFile)), in the order a
+//! template writes them. Each family's keys in `[body]`, `[initial]`, `[loads]` and `[model]`
+//! are what the scene checker allows there; a key that two families read differently (a force
+//! of three entries or of two) has an entry for each.
+
+use super::{Choices, Frame, Key, Kind, Required, SceneFamily, Shown};
+use crate::models::Family;
+
+const PENDULUM: SceneFamily = SceneFamily::Catalog(Family::Pendulum);
+const PLANAR_G: SceneFamily = SceneFamily::Catalog(Family::PlanarAtG);
+const PLANAR_MIDSHIP: SceneFamily = SceneFamily::Catalog(Family::PlanarMidship);
+const PLANAR_SPACE: SceneFamily = SceneFamily::Catalog(Family::PlanarSpaceFixed);
+const SPATIAL: SceneFamily = SceneFamily::Catalog(Family::Spatial);
+const TOP: SceneFamily = SceneFamily::Catalog(Family::Top);
+
+const ALL: &[SceneFamily] = &[
+    PENDULUM,
+    PLANAR_G,
+    PLANAR_MIDSHIP,
+    PLANAR_SPACE,
+    SPATIAL,
+    TOP,
+];
+const PLANAR: &[SceneFamily] = &[PLANAR_G, PLANAR_MIDSHIP, PLANAR_SPACE];
+const PLANAR_AND_PENDULUM: &[SceneFamily] = &[PENDULUM, PLANAR_G, PLANAR_MIDSHIP, PLANAR_SPACE];
+const ATTITUDE: &[SceneFamily] = &[SPATIAL, TOP];
+
+/// Every key of a catalog scene.
+pub(super) static KEYS: &[Key] = &[
+    Key {
+        path: "title",
+        families: ALL,
+        kind: Kind::Text(Choices::Free),
+        required: Required::Yes,
+        description: "What the scene is: the title of the summary and the plots.",
+        example: "\"A {family} scene from eom new\"",
+        ..Key::BLANK
+    },
+    // [body]
+    Key {
+        path: "body.i0",
+        families: &[PENDULUM],
+        unit: "kg m²",
+        required: Required::Yes,
+        description: "I₀, the moment of inertia about the pivot (4.24).",
+        example: "2.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.mass",
+        families: &[PENDULUM, PLANAR_G, PLANAR_MIDSHIP, PLANAR_SPACE, TOP],
+        unit: "kg",
+        required: Required::Yes,
+        description: "M, the body's mass.",
+        example: "1.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.mass",
+        families: &[SPATIAL],
+        unit: "kg",
+        required: Required::When("unless body.file is given"),
+        description: "M, the body's mass.",
+        example: "1.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.inertia",
+        families: &[SPATIAL],
+        kind: Kind::Tensor,
+        unit: "kg m²",
+        frame: Frame::Body,
+        required: Required::When("unless body.file is given"),
+        description: "The inertia tensor about G, [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, \
+                      Iyz, Izz]]: symmetric, each moment at most the sum of the other two. The \
+                      products are the tensor's off-diagonal entries with the chapter's sign, \
+                      Ixy = −∫xy dm, Iyz = −∫yz dm, Ixz = −∫xz dm (4.12–4.14), so H = [I]ω: a \
+                      CAD program that reports the product integral +∫xy dm is entered with \
+                      its sign changed.",
+        example: "[[2.0, 0.0, 0.0], [0.0, 3.0, 0.0], [0.0, 0.0, 4.5]]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.inertia",
+        families: &[TOP],
+        kind: Kind::Tensor,
+        unit: "kg m²",
+        frame: Frame::Body,
+        required: Required::Yes,
+        description: "The inertia tensor about G in principal axes, [[Ixx, 0, 0], [0, Iyy, 0], \
+                      [0, 0, Izz]], the body z-axis through the pivot and G.",
+        example: "[[0.25, 0.0, 0.0], [0.0, 0.25, 0.0], [0.0, 0.0, 0.2]]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.file",
+        families: &[SPATIAL],
+        kind: Kind::Text(Choices::Free),
+        description: "A body description as `eom mass` reads it (parts, each with its offset \
+                      and rotation), relative to the scene file: its mass and its tensor about \
+                      G stand for body.mass and body.inertia, which the scene then leaves out.",
+        example: "\"bodies/ship_blocks.toml\"",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.izz",
+        families: PLANAR,
+        unit: "kg m²",
+        required: Required::Yes,
+        description: "I_zz, the moment of inertia about the vertical axis through G.",
+        example: "3.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.x_g",
+        families: &[PLANAR_MIDSHIP],
+        unit: "m",
+        frame: Frame::Body,
+        required: Required::Yes,
+        description: "x_G, how far G lies ahead of midship, this family's body origin (4.45).",
+        example: "0.1",
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.h",
+        families: &[PENDULUM],
+        unit: "m",
+        required: Required::Yes,
+        description: "h, the distance from the pivot to G (4.24).",
+        example: "0.5",
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.h",
+        families: &[TOP],
+        unit: "m",
+        frame: Frame::Body,
+        required: Required::Yes,
+        description: "h, the distance from the pivot to G along the body z-axis.",
+        example: "0.5",
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.g",
+        families: &[PENDULUM, TOP],
+        unit: "m/s²",
+        required: Required::Yes,
+        description: "g, gravity: the body's weight acts at G (the top's along −Z of its own \
+                      space axes, which have Z up).",
+        example: "9.81",
+        ..Key::BLANK
+    },
+    // [model]
+    Key {
+        path: "model.family",
+        families: ALL,
+        kind: Kind::Text(Choices::Families),
+        required: Required::Yes,
+        description: "Which equations run; a key of another family is refused, not ignored.",
+        example: "\"{family}\"",
+        ..Key::BLANK
+    },
+    Key {
+        path: "model.symmetry",
+        families: &[SPATIAL],
+        kind: Kind::Text(Choices::Symmetries),
+        default: "auto",
+        description: "Which spatial model runs. `auto` runs the most pruned class the tensor \
+                      allows: every product of inertia the class sets to zero must be zero to \
+                      1e-12 of the largest moment (eom::models::PRODUCT_TOLERANCE). A class \
+                      named runs as named, if the tensor has zeros where it prunes. The summary \
+                      says which variant ran, why, and its operations per call against the full \
+                      variant's.",
+        example: "\"auto\"",
+        ..Key::BLANK
+    },
+    Key {
+        path: "model.kinematics",
+        families: ATTITUDE,
+        kind: Kind::Text(Choices::Kinematics),
+        default: "quaternion",
+        description: "How the attitude is carried: a unit quaternion (q0…q3 in the state) or \
+                      Euler angles (φ, θ, ψ by 4.60), singular at pitch ±90°. With `euler` the \
+                      run stops, naming the time and the pitch, when a step ends with the pitch \
+                      within ε|θ|/η of ±90° or crosses ±90°: there the rounding of θ alone, \
+                      amplified by 4.60's sec θ, would make the attitude rates err by more than \
+                      η = min(rtol, 1e-8) (1e-8 for a fixed step; 3.5e-8 rad at 90°). \
+                      scenes/looping.toml in Euler angles stops at 1.254 s, agreeing with the \
+                      quaternion run to 1e-10 until then.",
+        example: "\"quaternion\"",
+        ..Key::BLANK
+    },
+    // [initial]: what is left out is zero, the identity attitude.
+    Key {
+        path: "initial.theta_deg",
+        families: &[PENDULUM],
+        unit: "deg",
+        default: "0",
+        description: "θ, the angle of OG from the downward vertical.",
+        example: "90.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "initial.theta_dot",
+        families: &[PENDULUM],
+        unit: "rad/s",
+        default: "0",
+        description: "θ̇, the angular rate.",
+        example: "0.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "initial.u",
+        families: PLANAR,
+        unit: "m/s",
+        frame: Frame::Body,
+        default: "0",
+        description: "Surge, the body origin's velocity along the body x-axis (the origin is G; \
+                      midship for planar-midship). In body axes for every planar family: a \
+                      planar-space scene's state holds the space components Ẋ, Ẏ, made from \
+                      u, v and psi_deg.",
+        example: "1.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "initial.v",
+        families: PLANAR,
+        unit: "m/s",
+        frame: Frame::Body,
+        default: "0",
+        description: "Sway, the body origin's velocity along the body y-axis.",
+        example: "0.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "initial.r",
+        families: PLANAR,
+        unit: "rad/s",
+        default: "0",
+        description: "r, the yaw rate about the vertical (body z and space Z are parallel).",
+        example: "0.1",
+        ..Key::BLANK
+    },
+    Key {
+        path: "initial.x",
+        families: PLANAR,
+        unit: "m",
+        frame: Frame::Space,
+        default: "0",
+        description: "X, the body origin's position north.",
+        example: "0.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "initial.y",
+        families: PLANAR,
+        unit: "m",
+        frame: Frame::Space,
+        default: "0",
+        description: "Y, the body origin's position east.",
+        example: "0.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "initial.psi_deg",
+        families: PLANAR,
+        unit: "deg",
+        frame: Frame::Attitude,
+        default: "0",
+        description: "ψ, the heading: from X (north) to the body x-axis, positive towards Y \
+                      (east).",
+        example: "30.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "initial.velocity",
+        families: &[SPATIAL],
+        kind: Kind::Numbers("3: u, v, w"),
+        unit: "m/s",
+        frame: Frame::Body,
+        default: "zero",
+        description: "The velocity of G along the body axes.",
+        example: "[1.0, 0.0, 0.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "initial.rates",
+        families: &[SPATIAL],
+        kind: Kind::Numbers("3: p, q, r"),
+        unit: "rad/s",
+        frame: Frame::Body,
+        default: "zero",
+        description: "The angular velocity about the body axes.",
+        example: "[0.1, 0.0, 2.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "initial.rates",
+        families: &[TOP],
+        kind: Kind::Numbers("3: p, q, r"),
+        unit: "rad/s",
+        frame: Frame::Body,
+        default: "zero",
+        description: "The angular velocity about the body axes through the pivot.",
+        example: "[0.0, 0.0, 20.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "initial.position",
+        families: &[SPATIAL],
+        kind: Kind::Numbers("3: x, y, z"),
+        unit: "m",
+        frame: Frame::Space,
+        default: "zero",
+        description: "The position of G: x north, y east, z down.",
+        example: "[0.0, 0.0, 0.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "initial.attitude_deg",
+        families: &[SPATIAL],
+        kind: Kind::Numbers("3: roll, pitch, yaw"),
+        unit: "deg",
+        frame: Frame::Attitude,
+        default: "zero",
+        description: "The Euler angles φ, θ, ψ that turn space axes into body axes: yaw ψ \
+                      about z, then pitch θ about the new y, then roll φ about the new x \
+                      (4.53–4.57). A quaternion run starts from their quaternion.",
+        example: "[0.0, 10.0, 30.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "initial.attitude_deg",
+        families: &[TOP],
+        kind: Kind::Numbers("3: roll, pitch, yaw"),
+        unit: "deg",
+        frame: Frame::Attitude,
+        default: "zero",
+        description: "The Euler angles from the top's own space axes, which have Z up: zero \
+                      stands the top upright, its body z-axis along Z.",
+        example: "[28.6, 0.0, 0.0]",
+        ..Key::BLANK
+    },
+    // [loads]: what is left out is zero.
+    Key {
+        path: "loads.gravity",
+        families: &[SPATIAL],
+        unit: "m/s²",
+        frame: Frame::Space,
+        default: "0",
+        description: "g: the weight Mg acts at G along +Z, down. (The pendulum and the top \
+                      carry their own, body.g.)",
+        example: "9.81",
+        ..Key::BLANK
+    },
+    Key {
+        path: "loads.buoyancy",
+        families: &[SPATIAL],
+        unit: "N",
+        frame: Frame::Space,
+        default: "0",
+        description: "B, acting along −Z (up) at loads.buoyancy_centre.",
+        example: "9.81",
+        ..Key::BLANK
+    },
+    Key {
+        path: "loads.buoyancy_centre",
+        families: &[SPATIAL],
+        kind: Kind::Numbers("3: x, y, z"),
+        unit: "m",
+        frame: Frame::Body,
+        default: "zero",
+        description: "The centre of buoyancy, from G.",
+        example: "[0.0, 0.0, -0.05]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "loads.force_body",
+        families: &[SPATIAL],
+        kind: Kind::Numbers("3: F_x, F_y, F_z"),
+        unit: "N",
+        frame: Frame::Body,
+        default: "zero",
+        description: "A constant force at G that turns with the body (a thrust).",
+        example: "[0.5, 0.0, 0.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "loads.force_body",
+        families: PLANAR,
+        kind: Kind::Numbers("2: F_x, F_y"),
+        unit: "N",
+        frame: Frame::Body,
+        default: "zero",
+        description: "A constant force at the body origin that turns with the body (a thrust).",
+        example: "[1.0, 0.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "loads.force_space",
+        families: &[SPATIAL],
+        kind: Kind::Numbers("3: F_X, F_Y, F_Z"),
+        unit: "N",
+        frame: Frame::Space,
+        default: "zero",
+        description: "A constant force at G fixed in space (a wind); it has a potential.",
+        example: "[0.0, 0.0, 0.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "loads.force_space",
+        families: PLANAR,
+        kind: Kind::Numbers("2: F_X, F_Y"),
+        unit: "N",
+        frame: Frame::Space,
+        default: "zero",
+        description: "A constant force at the body origin fixed in space (a wind); it has a \
+                      potential.",
+        example: "[0.0, 0.5]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "loads.moment_body",
+        families: &[SPATIAL],
+        kind: Kind::Numbers("3: M_x, M_y, M_z"),
+        unit: "N m",
+        frame: Frame::Body,
+        default: "zero",
+        description: "A constant moment about G.",
+        example: "[0.0, 0.0, 0.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "loads.moment_body",
+        families: &[TOP],
+        kind: Kind::Numbers("3: M_x, M_y, M_z"),
+        unit: "N m",
+        frame: Frame::Body,
+        default: "zero",
+        description: "A constant moment about the pivot.",
+        example: "[0.0, 0.0, 0.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "loads.moment_space",
+        families: &[SPATIAL],
+        kind: Kind::Numbers("3: M_X, M_Y, M_Z"),
+        unit: "N m",
+        frame: Frame::Space,
+        default: "zero",
+        description: "A constant moment about G fixed in space.",
+        example: "[0.0, 0.0, 0.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "loads.moment",
+        families: PLANAR_AND_PENDULUM,
+        unit: "N m",
+        default: "0",
+        description: "A constant moment about the vertical (planar) or about the pivot \
+                      (pendulum); it has a potential.",
+        example: "0.1",
+        ..Key::BLANK
+    },
+    Key {
+        path: "loads.linear_damping",
+        families: &[SPATIAL],
+        kind: Kind::Numbers("6: on u, v, w, p, q, r"),
+        unit: "N s/m on u, v, w; N m s on p, q, r",
+        frame: Frame::Body,
+        default: "zero",
+        description: "Each velocity's load −dᵢxᵢ (forces on u, v, w, moments on p, q, r); no \
+                      coefficient negative.",
+        example: "[1.0, 2.0, 2.0, 0.1, 0.1, 0.1]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "loads.linear_damping",
+        families: PLANAR,
+        kind: Kind::Numbers("3: on u, v, r"),
+        unit: "N s/m on u, v; N m s on r",
+        frame: Frame::Body,
+        default: "zero",
+        description: "Each velocity's load −dᵢxᵢ; no coefficient negative.",
+        example: "[1.0, 2.0, 0.5]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "loads.linear_damping",
+        families: &[PENDULUM],
+        kind: Kind::Numbers("1: on θ̇"),
+        unit: "N m s",
+        default: "zero",
+        description: "The moment −dθ̇ about the pivot; not negative.",
+        example: "[0.05]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "loads.linear_damping",
+        families: &[TOP],
+        kind: Kind::Numbers("3: on p, q, r"),
+        unit: "N m s",
+        frame: Frame::Body,
+        default: "zero",
+        description: "Each rate's moment −dᵢωᵢ; no coefficient negative.",
+        example: "[0.0, 0.0, 0.001]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "loads.quadratic_damping",
+        families: &[SPATIAL],
+        kind: Kind::Numbers("6: on u, v, w, p, q, r"),
+        unit: "N s²/m² on u, v, w; N m s² on p, q, r",
+        frame: Frame::Body,
+        default: "zero",
+        description: "Each velocity's load −dᵢxᵢ|xᵢ|; no coefficient negative.",
+        example: "[2.0, 10.0, 10.0, 0.1, 0.5, 0.5]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "loads.quadratic_damping",
+        families: PLANAR,
+        kind: Kind::Numbers("3: on u, v, r"),
+        unit: "N s²/m² on u, v; N m s² on r",
+        frame: Frame::Body,
+        default: "zero",
+        description: "Each velocity's load −dᵢxᵢ|xᵢ|; no coefficient negative.",
+        example: "[0.5, 5.0, 1.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "loads.quadratic_damping",
+        families: &[PENDULUM],
+        kind: Kind::Numbers("1: on θ̇"),
+        unit: "N m s²",
+        default: "zero",
+        description: "The moment −dθ̇|θ̇| about the pivot; not negative.",
+        example: "[0.01]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "loads.quadratic_damping",
+        families: &[TOP],
+        kind: Kind::Numbers("3: on p, q, r"),
+        unit: "N m s²",
+        frame: Frame::Body,
+        default: "zero",
+        description: "Each rate's moment −dᵢωᵢ|ωᵢ|; no coefficient negative.",
+        example: "[0.0, 0.0, 0.0]",
+        ..Key::BLANK
+    },
+    // [integrator]
+    Key {
+        path: "integrator.method",
+        families: ALL,
+        kind: Kind::Text(Choices::Methods),
+        required: Required::Yes,
+        description: "How to integrate. Fixed step: euler, symplectic-euler, rk4, and \
+                      lie-midpoint for a free spatial body with quaternion kinematics and no \
+                      loads (the rotation by the geometric integrator, the translation \
+                      exactly). Adaptive, rows placed by dense output: dopri5, dop853.",
+        example: "\"dop853\"",
+        ..Key::BLANK
+    },
+    Key {
+        path: "integrator.rtol",
+        families: ALL,
+        unit: "-",
+        default: "1e-9",
+        description: "Adaptive methods only: the relative tolerance, at least ten rounding \
+                      units of f64 (1.1e-15), below which a method takes more steps for no \
+                      accuracy.",
+        example: "1e-9",
+        ..Key::BLANK
+    },
+    Key {
+        path: "integrator.atol",
+        families: ALL,
+        default: "1e-9",
+        description: "Adaptive methods only: the absolute tolerance, in each state entry's \
+                      own unit.",
+        example: "1e-9",
+        ..Key::BLANK
+    },
+    Key {
+        path: "integrator.step",
+        families: ALL,
+        unit: "s",
+        required: Required::When("for a fixed-step method"),
+        description: "Fixed-step methods only: the largest step. Each output interval is \
+                      integrated in equal steps of at most this, so that rows land on their \
+                      times. The run stops where h·|ω| passes the method's stability limit on \
+                      the imaginary axis (rk4 2√2 ≈ 2.83, symplectic Euler 2 on the pendulum; \
+                      |ω| the body's rate, |r| planar, √(Mgh/I₀) for the pendulum). Explicit \
+                      Euler is unstable there for every step, and so is symplectic Euler on a \
+                      body's rates, which it kicks together: they only warn, as any fixed step \
+                      does past the h·|ω| at which one turn errs by 10 % (0.0318 Euler, 1.18 \
+                      rk4). The bounds and their derivations: src/run/guard.rs.",
+        example: "0.001",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "integrator.end_time",
+        families: ALL,
+        unit: "s",
+        required: Required::Yes,
+        description: "The end of the run, which starts at t = 0.",
+        example: "1.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "integrator.max_steps",
+        families: ALL,
+        kind: Kind::Integer,
+        default: "1_000_000",
+        description: "The most steps, accepted and rejected, a run may take.",
+        example: "1_000_000",
+        ..Key::BLANK
+    },
+    // [output]
+    Key {
+        path: "output.every",
+        families: ALL,
+        unit: "s",
+        default: "end_time/500",
+        description: "Trajectory rows at exactly t = k·every (at most 10⁸ rows).",
+        example: "0.01",
+        ..Key::BLANK
+    },
+    // [sweep]
+    Key {
+        path: "sweep.*",
+        families: ALL,
+        kind: Kind::Table("key paths and values"),
+        description: "Values to vary, one run per combination, in parallel, each case into \
+                      case-NNNN/ with one line per case in sweep.csv: a key's path in quotes \
+                      and a list of values, or { from, to, count } evenly spaced. At most \
+                      100 000 cases, numbered in a fixed order (keys sorted, the last varying \
+                      fastest); `eom run --shard K/N` runs the cases k ≡ K (mod N).",
+        example: "\"body.mass\" = { from = 1.0, to = 3.0, count = 5 }",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+];

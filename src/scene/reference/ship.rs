@@ -1,0 +1,353 @@
+//! The keys of a ship scene (`eom::ship::scene::ShipSceneFile`), in the order a template
+//! writes them. The template's ship is the Esso Osaka of `scenes/esso_osaka.toml` (its
+//! sources and estimates are said there), in the prime system, with the dimensional keys
+//! shown commented out beside their prime counterparts.
+
+use super::{Choices, Frame, Key, Kind, Required, SceneFamily, Shown};
+
+const SHIP: &[SceneFamily] = &[SceneFamily::Ship];
+
+/// The yaw inertia: one of four keys, by the table's units and the point it is taken about.
+const ONE_YAW_INERTIA: Required = Required::When(
+    "as one of izz, izz_midship (dimensional), izz_prime, izz_midship_prime (prime)",
+);
+
+/// Every key of a ship scene.
+pub(super) static KEYS: &[Key] = &[
+    Key {
+        path: "title",
+        families: SHIP,
+        kind: Kind::Text(Choices::Free),
+        required: Required::Yes,
+        description: "What the scene is: the title of the summary and the plots.",
+        example: "\"A ship from eom new: the Esso Osaka of scenes/esso_osaka.toml\"",
+        ..Key::BLANK
+    },
+    Key {
+        path: "model.family",
+        families: SHIP,
+        kind: Kind::Text(Choices::These(&["planar-midship"])),
+        required: Required::Yes,
+        description: "A ship runs 4.46 at midship; the [hydrodynamics] table is what makes a \
+                      scene a ship scene.",
+        example: "\"planar-midship\"",
+        ..Key::BLANK
+    },
+    // [body]: in the table's units, one key of each quantity.
+    Key {
+        path: "body.length",
+        families: SHIP,
+        unit: "m",
+        required: Required::Yes,
+        description: "L, the ship's length: the prime system's unit of length, and the IMO \
+                      criteria's (always in metres).",
+        example: "325.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.mass",
+        families: SHIP,
+        unit: "kg",
+        required: Required::When("in a dimensional table"),
+        description: "M, the ship's mass.",
+        example: "3.184e8",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.mass_prime",
+        families: SHIP,
+        unit: "-",
+        required: Required::When("in a prime table"),
+        description: "m′ = M/(½ρL³).",
+        example: "0.0181",
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.izz",
+        families: SHIP,
+        unit: "kg m²",
+        required: ONE_YAW_INERTIA,
+        description: "The yaw inertia I_zz about G, as 4.46 writes it (dimensional).",
+        example: "2.066e12",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.izz_midship",
+        families: SHIP,
+        unit: "kg m²",
+        required: ONE_YAW_INERTIA,
+        description: "The yaw inertia I_O about midship (dimensional), as many tables' mass \
+                      matrices hold it; 4.46 takes I_zz = I_O − M x_G² (4.45), which must be \
+                      positive.",
+        example: "2.100e12",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.izz_prime",
+        families: SHIP,
+        unit: "-",
+        required: ONE_YAW_INERTIA,
+        description: "I_zz′, the yaw inertia about G over ½ρL⁵ (prime).",
+        example: "0.0011118",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.izz_midship_prime",
+        families: SHIP,
+        unit: "-",
+        required: ONE_YAW_INERTIA,
+        description: "I_O′, the yaw inertia about midship over ½ρL⁵ (prime).",
+        example: "0.00113",
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.x_g",
+        families: SHIP,
+        unit: "m",
+        frame: Frame::Body,
+        required: Required::When("in a dimensional table"),
+        description: "x_G, how far G lies ahead of midship.",
+        example: "10.30",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.x_g_prime",
+        families: SHIP,
+        unit: "-",
+        frame: Frame::Body,
+        required: Required::When("in a prime table"),
+        description: "x_G′ = x_G/L.",
+        example: "0.0316923",
+        ..Key::BLANK
+    },
+    // [hydrodynamics]
+    Key {
+        path: "hydrodynamics.units",
+        families: SHIP,
+        kind: Kind::Text(Choices::These(&["prime", "dimensional"])),
+        required: Required::Yes,
+        description: "The units of every number of the table and of the body. `dimensional`: \
+                      SI (N, N m, kg, m, s, rad), a term Y_vvr adds Y_vvr·v²r newtons. \
+                      `prime`: forces over ½ρU²L², moments over ½ρU²L³, mass over ½ρL³, I_zz \
+                      over ½ρL⁵, lengths over L, u and v over U, r over U/L, the surge variable \
+                      the perturbation (u − U₀)/U, with U = √(u² + v²) the speed at the \
+                      instant: a term adds ½ρL²U²·Y′_vvr(v/U)²(rL/U).",
+        example: "\"prime\"",
+        ..Key::BLANK
+    },
+    Key {
+        path: "hydrodynamics.rigid_body_terms",
+        families: SHIP,
+        kind: Kind::Text(Choices::These(&["folded", "separate"])),
+        required: Required::Yes,
+        description: "`separate`: the table is hydrodynamic only, and 4.46 adds its rigid-body \
+                      terms (M v r, M x_G r², M u r, M x_G u r). `folded`: the table holds them, \
+                      as many published ones do (the Mariner's X_vr = m′, Y_r − m′, …); eom \
+                      takes m′ and m′x_G′ back out of X_vr, X_rr, Y_r, Y_ur, N_r, N_ur and lists \
+                      each conversion in summary.json.",
+        example: "\"separate\"",
+        ..Key::BLANK
+    },
+    Key {
+        path: "hydrodynamics.density",
+        families: SHIP,
+        unit: "kg/m³",
+        required: Required::When("in a prime table (a dimensional one refuses it)"),
+        description: "ρ, the water's density.",
+        example: "1025.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "hydrodynamics.design_speed",
+        families: SHIP,
+        unit: "m/s",
+        required: Required::Yes,
+        description: "U₀: every manoeuvre starts straight ahead at it; the prime system's \
+                      reference of the surge perturbation.",
+        example: "4.1156",
+        ..Key::BLANK
+    },
+    Key {
+        path: "hydrodynamics.coefficients.*",
+        families: SHIP,
+        kind: Kind::Table("coefficient names and numbers"),
+        unit: "the table's units",
+        required: Required::Yes,
+        description: "The terms to model, and only those: eom derives 4.46 with exactly these \
+                      and proves it before the run. A name is the load (X, Y or N), then one \
+                      letter per power of u, v, r and δ (d), in any order: Yvvr multiplies v²r \
+                      in Y, Xrv and Xvr are one term, Nd multiplies δ in N. A 0 marks a bias \
+                      (Y0; Y0u is the same term as Yu); an underscore may follow the load \
+                      (Y_vvr). The added mass is Xudot, Yvdot, Yrdot, Nvdot, Nrdot. Each \
+                      number is kept as written.",
+        example: "Xudot = -0.0007\nYvdot = -0.0171\nNrdot = -0.00109\nXu = -0.00113\n\
+                  Xvv = -0.006\nXrr = 0.00515\nXvr = 0.0085\nYv = -0.0261\nYr = 0.00365\n\
+                  Yvrr = -0.045\nYd = 0.00717\nNv = -0.0105\nNr = -0.0048\nNvrr = 0.00611\n\
+                  Nd = -0.00399",
+        ..Key::BLANK
+    },
+    // [rudder]: every key optional.
+    Key {
+        path: "rudder.max_deg",
+        families: SHIP,
+        unit: "deg",
+        default: "no limit",
+        description: "δ_max, where the rudder saturates.",
+        example: "35.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "rudder.max_rate_deg_s",
+        families: SHIP,
+        unit: "deg/s",
+        default: "no limit",
+        description: "δ̇_max, the steering gear's rate limit; it acts on the lag's rate, so it \
+                      needs rudder.time_constant_s.",
+        example: "2.32",
+        ..Key::BLANK
+    },
+    Key {
+        path: "rudder.time_constant_s",
+        families: SHIP,
+        unit: "s",
+        default: "no lag: the rudder is at its command",
+        description: "The steering gear's first-order lag.",
+        example: "1.0",
+        ..Key::BLANK
+    },
+    // [integrator]
+    Key {
+        path: "integrator.method",
+        families: SHIP,
+        kind: Kind::Text(Choices::These(&["rk4"])),
+        required: Required::Yes,
+        description: "A ship steps with rk4, each step landing on the manoeuvre's events (the \
+                      heading passing 90°, 180°, ±ψ_a; the yaw rate passing zero), found on the \
+                      step to 1e-12 of it.",
+        example: "\"rk4\"",
+        ..Key::BLANK
+    },
+    Key {
+        path: "integrator.step",
+        families: SHIP,
+        unit: "s",
+        required: Required::Yes,
+        description: "The largest step. Each manoeuvre runs again at half the step, and \
+                      summary.json says how far each figure moves.",
+        example: "0.2",
+        ..Key::BLANK
+    },
+    // [[manoeuvre]]: at least one; each kind reads its own keys and refuses the others.
+    Key {
+        path: "manoeuvre[].name",
+        families: SHIP,
+        kind: Kind::Text(Choices::Free),
+        default: "the kind and angles: turning_circle_35, zigzag_10_10",
+        description: "The manoeuvre's output folder: letters, digits, _ - . (not imo), each \
+                      name once.",
+        example: "\"turn\"",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].kind",
+        families: SHIP,
+        kind: Kind::Text(Choices::These(&[
+            "turning_circle",
+            "zigzag",
+            "pull_out",
+            "rudder_series",
+        ])),
+        required: Required::Yes,
+        description: "Which manoeuvre. Each starts straight ahead at U₀, midship at the \
+                      origin, heading north, rudder amidships.",
+        example: "\"turning_circle\"",
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].rudder_deg",
+        families: SHIP,
+        unit: "deg",
+        required: Required::When("except for rudder_series"),
+        description: "The rudder angle put over at the execute (a zig-zag's δ_a), not zero.",
+        example: "35.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].heading_deg",
+        families: SHIP,
+        unit: "deg",
+        required: Required::When("for zigzag"),
+        description: "ψ_a, the heading change at which a zig-zag reverses its rudder.",
+        example: "10.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].execute_s",
+        families: SHIP,
+        unit: "s",
+        default: "0",
+        description: "When the rudder is put over; the figures are measured from here.",
+        example: "0.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].release_s",
+        families: SHIP,
+        unit: "s",
+        required: Required::When("for pull_out"),
+        description: "When a pull-out puts its rudder back to zero: after the execute, before \
+                      the end.",
+        example: "30.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].duration_s",
+        families: SHIP,
+        unit: "s",
+        required: Required::Yes,
+        description: "The end of the run, after the execute.",
+        example: "60.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].times_s",
+        families: SHIP,
+        kind: Kind::Numbers("the command's times, strictly increasing"),
+        unit: "s",
+        required: Required::When("for rudder_series"),
+        description: "The times of a rudder series' command, piecewise linear between them \
+                      and constant before the first and after the last.",
+        example: "[0.0, 10.0, 20.0]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].series_deg",
+        families: SHIP,
+        kind: Kind::Numbers("the command's angles, one per time"),
+        unit: "deg",
+        required: Required::When("for rudder_series"),
+        description: "The command's angle at each of times_s.",
+        example: "[0.0, 10.0, -10.0]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    // [output]
+    Key {
+        path: "output.every",
+        families: SHIP,
+        unit: "s",
+        default: "every step",
+        description: "A trajectory row every this many seconds.",
+        example: "1.0",
+        ..Key::BLANK
+    },
+];
