@@ -15,7 +15,7 @@
 //!
 //! The inputs are the same on every run (a fixed seed); `PROPTEST_RNG_SEED=<n>` explores
 //! others and `PROPTEST_CASES=<n>` sets the number of inputs per parser. Longer runs:
-//! `cargo fuzz` in `fuzz/` (README, "Fuzzing").
+//! `cargo fuzz` in `fuzz/` (docs/fuzzing.md).
 
 use eom::eval::evaluate;
 use eom::mass::{BodyFile, BodyFileError, Mesh, MeshMass};

@@ -40,7 +40,7 @@ pub const DEFAULT_NAME: &str = "tennis_racket.toml";
 /// Options of `eom run`.
 #[derive(clap::Args)]
 pub struct Args {
-    /// The scene file (TOML); see `scenes/` and README.
+    /// The scene file (TOML); see `scenes/`, `eom new` and docs/scenes.md.
     scene: PathBuf,
     /// The output folder (default: the scene file's name without `.toml`, here).
     #[arg(long)]
