@@ -18,8 +18,8 @@ use crate::integrate::{
     Dop853, Dopri5, Euler, IntegrateError, Integrator, LieMidpoint, RigidRotation, Rk4, Statistics,
     Stats, SymplecticEuler,
 };
-use crate::models::{Family, Kinematics, Model, Visitor};
-use crate::scene::{Body, Method, Scene, SceneLoads};
+use crate::models::{Family, Model, Visitor};
+use crate::scene::{Body, Method, Scene};
 use guard::Guard;
 use nalgebra::{Matrix3, Quaternion, SVector, UnitQuaternion, Vector3};
 use std::ops::Range;
@@ -451,32 +451,45 @@ impl RigidRotation<f64> for FreeRotation {
     }
 }
 
-/// A free spatial body with the Lie midpoint method: the rotation by the geometric
-/// integrator, the translation exactly (with no force the velocity of G is constant in
-/// space: v(t) = R(t)ᵀ V, x(t) = x₀ + V t).
+/// A spatial body free of moments about G with the Lie midpoint method: the rotation by the
+/// geometric integrator, the translation exactly. Uniform gravity at G, the one load such a
+/// scene may have, exerts no moment about G and accelerates G by g along +Z whatever the
+/// attitude; so the velocity of G in space is V(t) = V₀ + g t Z, its position
+/// x(t) = x₀ + V₀ t + ½ g t² Z, and its body components v(t) = R(t)ᵀ V(t).
 fn free_rotation<const N: usize>(
     scene: &Scene,
     emit: &mut impl FnMut(f64, &SVector<f64, N>) -> bool,
 ) -> (Result<SVector<f64, N>, IntegrateError>, Stats) {
-    let Body::Spatial { inertia, .. } = &scene.body else {
-        unreachable!("lie-midpoint is refused for any scene but a free spatial body");
+    let Body::Spatial { inertia, mass } = &scene.body else {
+        unreachable!("lie-midpoint is refused for any scene but a spatial body");
     };
-    debug_assert!(matches!(
-        scene.loads,
-        SceneLoads::Spatial(crate::scene::SpatialLoads {
-            kinematics: Kinematics::Quaternion,
-            ..
-        })
-    ));
+    debug_assert!(scene.loads.rotation_is_torque_free());
+    let g = scene.loads.uniform_gravity_only().unwrap_or(0.0) / mass;
     let x = &scene.initial;
     let attitude =
         |s: &[f64]| UnitQuaternion::from_quaternion(Quaternion::new(s[0], s[1], s[2], s[3]));
     let velocity_in_space = attitude(&x[9..13]) * Vector3::new(x[0], x[1], x[2]);
     let position = Vector3::new(x[6], x[7], x[8]);
+    // A free body's terms stand alone, so that its rows keep their bits (a −0 stays −0).
+    let fall = Vector3::new(0.0, 0.0, g);
+    let velocity_at = |t: f64| {
+        if g == 0.0 {
+            velocity_in_space
+        } else {
+            velocity_in_space + fall * t
+        }
+    };
+    let position_at = |t: f64| {
+        if g == 0.0 {
+            position + velocity_in_space * t
+        } else {
+            position + velocity_in_space * t + fall * (0.5 * t * t)
+        }
+    };
     let whole = |t: f64, rotation: &SVector<f64, 7>| -> SVector<f64, N> {
         let q = attitude(&rotation.as_slice()[3..7]);
-        let v = q.inverse() * velocity_in_space;
-        let p = position + velocity_in_space * t;
+        let v = q.inverse() * velocity_at(t);
+        let p = position_at(t);
         let mut state = SVector::<f64, N>::zeros();
         state.as_mut_slice()[..3].copy_from_slice(v.as_slice());
         state.as_mut_slice()[3..6].copy_from_slice(&rotation.as_slice()[..3]);

@@ -90,13 +90,7 @@ fn methods(scene: &Scene) -> Vec<Method> {
         Method::Dopri5,
         Method::Dop853,
     ];
-    let free_quaternion = matches!(
-        scene.loads,
-        SceneLoads::Spatial(crate::scene::SpatialLoads {
-            kinematics: crate::models::Kinematics::Quaternion,
-            ..
-        })
-    ) && scene.loads.is_free();
+    let free_quaternion = scene.loads.rotation_is_torque_free();
     if free_quaternion {
         methods.push(Method::LieMidpoint);
     }

@@ -10,12 +10,18 @@ use super::{
 use crate::integrate::AdaptiveOptions;
 use crate::models::{AnyModel, Family, Kinematics, ModelInfo, Symmetry};
 use crate::{InertiaTensor, ParameterError, PendulumParameters};
-use nalgebra::{Matrix3, UnitQuaternion};
+use nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
 use std::path::Path;
 
 /// The checks of one scene file, each naming its key.
 pub(super) struct Checker<'a> {
     pub(super) name: &'a str,
+}
+
+/// A planar body's initial velocity of G in body axes (u, v) and in space axes (Ẋ, Ẏ).
+struct PlanarVelocity {
+    body: [f64; 2],
+    space: [f64; 2],
 }
 
 /// The keys a family reads in each table; any other key given is an error.
@@ -34,12 +40,12 @@ fn family_keys(family: Family) -> FamilyKeys {
         },
         Family::PlanarAtG | Family::PlanarSpaceFixed => FamilyKeys {
             body: &["mass", "izz"],
-            initial: &["u", "v", "r", "x", "y", "psi_deg"],
+            initial: PLANAR_INITIAL,
             loads: PLANAR_LOADS,
         },
         Family::PlanarMidship => FamilyKeys {
             body: &["mass", "izz", "x_g"],
-            initial: &["u", "v", "r", "x", "y", "psi_deg"],
+            initial: PLANAR_INITIAL,
             loads: PLANAR_LOADS,
         },
         Family::Top => FamilyKeys {
@@ -49,13 +55,21 @@ fn family_keys(family: Family) -> FamilyKeys {
         },
         Family::Spatial => FamilyKeys {
             body: &["mass", "inertia", "file"],
-            initial: &["velocity", "rates", "position", "attitude_deg"],
+            initial: &[
+                "velocity",
+                "velocity_space",
+                "rates",
+                "position",
+                "attitude_deg",
+            ],
             loads: &[
                 "gravity",
                 "buoyancy",
                 "buoyancy_centre",
                 "force_body",
                 "force_space",
+                "force_body_at",
+                "force_space_at",
                 "moment_body",
                 "moment_space",
                 "linear_damping",
@@ -65,9 +79,13 @@ fn family_keys(family: Family) -> FamilyKeys {
     }
 }
 
+const PLANAR_INITIAL: &[&str] = &["u", "v", "x_dot", "y_dot", "r", "x", "y", "psi_deg"];
+
 const PLANAR_LOADS: &[&str] = &[
     "force_body",
     "force_space",
+    "force_body_at",
+    "force_space_at",
     "moment",
     "linear_damping",
     "quadratic_damping",
@@ -381,32 +399,33 @@ impl Checker<'_> {
                 scalar("theta_deg", i.theta_deg)?.to_radians(),
                 scalar("theta_dot", i.theta_dot)?,
             ],
-            Family::PlanarAtG | Family::PlanarMidship => vec![
-                scalar("u", i.u)?,
-                scalar("v", i.v)?,
-                scalar("r", i.r)?,
-                scalar("x", i.x)?,
-                scalar("y", i.y)?,
-                scalar("psi_deg", i.psi_deg)?.to_radians(),
-            ],
-            Family::PlanarSpaceFixed => {
-                // The scene gives surge and sway in body axes, as for the other planar
-                // families; the space-fixed state holds their space components.
-                let (u, v) = (scalar("u", i.u)?, scalar("v", i.v)?);
+            Family::PlanarAtG | Family::PlanarMidship => {
                 let psi = scalar("psi_deg", i.psi_deg)?.to_radians();
-                let (s, c) = psi.sin_cos();
+                let [u, v] = self.planar_velocity(i, psi)?.body;
+                vec![
+                    u,
+                    v,
+                    scalar("r", i.r)?,
+                    scalar("x", i.x)?,
+                    scalar("y", i.y)?,
+                    psi,
+                ]
+            }
+            Family::PlanarSpaceFixed => {
+                let psi = scalar("psi_deg", i.psi_deg)?.to_radians();
+                let [x_dot, y_dot] = self.planar_velocity(i, psi)?.space;
                 vec![
                     scalar("x", i.x)?,
                     scalar("y", i.y)?,
                     psi,
-                    u * c - v * s,
-                    u * s + v * c,
+                    x_dot,
+                    y_dot,
                     scalar("r", i.r)?,
                 ]
             }
             Family::Spatial => {
                 let mut state = Vec::with_capacity(13);
-                state.extend(self.finite3("initial.velocity", i.velocity)?);
+                state.extend(self.spatial_velocity(i)?);
                 state.extend(self.finite3("initial.rates", i.rates)?);
                 state.extend(self.finite3("initial.position", i.position)?);
                 state.extend(self.attitude(i, selection)?);
@@ -418,6 +437,65 @@ impl Checker<'_> {
                 state.extend(self.attitude(i, selection)?);
                 state
             }
+        })
+    }
+
+    /// The body velocity of G, (u, v, w): `initial.velocity` as given, or
+    /// `initial.velocity_space` turned into body axes by the attitude, v = Rᵀ V (R from body
+    /// to space axes, 4.56); never both.
+    fn spatial_velocity(&self, i: &file::InitialTable) -> Result<[f64; 3], SceneError> {
+        let Some(space) = i.velocity_space else {
+            return self.finite3("initial.velocity", i.velocity);
+        };
+        if i.velocity.is_some() {
+            return Err(self.invalid(
+                "initial.velocity_space",
+                "give the velocity of G in body axes (initial.velocity) or in space axes \
+                 (initial.velocity_space), not both",
+            ));
+        }
+        let space = self.finite3("initial.velocity_space", Some(space))?;
+        let [roll, pitch, yaw] = self
+            .finite3("initial.attitude_deg", i.attitude_deg)?
+            .map(f64::to_radians);
+        let to_space = Rotation3::from_euler_angles(roll, pitch, yaw);
+        let body = to_space.transpose() * Vector3::from(space);
+        Ok([body.x, body.y, body.z])
+    }
+
+    /// A planar body's velocity of G in both axes: `initial.u`, `initial.v` in body axes, or
+    /// `initial.x_dot`, `initial.y_dot` in space axes, turned by the heading ψ; never both.
+    fn planar_velocity(
+        &self,
+        i: &file::InitialTable,
+        psi: f64,
+    ) -> Result<PlanarVelocity, SceneError> {
+        let scalar =
+            |key: &str, v: Option<f64>| self.finite(&format!("initial.{key}"), v.unwrap_or(0.0));
+        let (s, c) = psi.sin_cos();
+        let in_space = i.x_dot.is_some() || i.y_dot.is_some();
+        if !in_space {
+            let (u, v) = (scalar("u", i.u)?, scalar("v", i.v)?);
+            return Ok(PlanarVelocity {
+                body: [u, v],
+                space: [u * c - v * s, u * s + v * c],
+            });
+        }
+        if i.u.is_some() || i.v.is_some() {
+            let body = if i.u.is_some() { "u" } else { "v" };
+            let space = if i.x_dot.is_some() { "x_dot" } else { "y_dot" };
+            return Err(self.invalid(
+                &format!("initial.{space}"),
+                format!(
+                    "give the velocity of G in body axes (initial.u, initial.v) or in space \
+                     axes (initial.x_dot, initial.y_dot), not both: initial.{body} is given too"
+                ),
+            ));
+        }
+        let (x_dot, y_dot) = (scalar("x_dot", i.x_dot)?, scalar("y_dot", i.y_dot)?);
+        Ok(PlanarVelocity {
+            body: [c * x_dot + s * y_dot, -s * x_dot + c * y_dot],
+            space: [x_dot, y_dot],
         })
     }
 
@@ -442,7 +520,6 @@ impl Checker<'_> {
     pub(super) fn integrator(
         &self,
         file: &SceneFile,
-        selection: &Selection,
         loads: &SceneLoads,
     ) -> Result<IntegratorSpec, SceneError> {
         let t = &file.integrator;
@@ -462,7 +539,7 @@ impl Checker<'_> {
             Some(n) => usize::try_from(n).unwrap_or(usize::MAX),
         };
         if method == Method::LieMidpoint {
-            self.lie_midpoint_applies(selection, loads)?;
+            self.lie_midpoint_applies(loads)?;
         }
         let (step, adaptive) = if method.is_adaptive() {
             if t.step.is_some() {
@@ -533,21 +610,17 @@ impl Checker<'_> {
         Ok(value)
     }
 
-    /// The geometric integrator turns a free body's attitude and rates (`RigidRotation`);
-    /// the translation of a free body is then exact.
-    fn lie_midpoint_applies(
-        &self,
-        selection: &Selection,
-        loads: &SceneLoads,
-    ) -> Result<(), SceneError> {
-        let free_quaternion =
-            selection.info.kinematics == Some(Kinematics::Quaternion) && loads.is_free();
-        if free_quaternion {
+    /// The geometric integrator turns a body's attitude and rates (`RigidRotation`) where no
+    /// moment acts about G: a free body, or one under uniform gravity at G alone; its
+    /// translation is then exact (constant velocity, or free fall).
+    fn lie_midpoint_applies(&self, loads: &SceneLoads) -> Result<(), SceneError> {
+        if loads.rotation_is_torque_free() {
             Ok(())
         } else {
             Err(self.invalid(
                 "integrator.method",
-                "lie-midpoint integrates the rotation of a free body: a spatial scene with quaternion kinematics and no loads",
+                "lie-midpoint integrates a rotation free of moments about G: a spatial scene \
+                 with quaternion kinematics and no loads but loads.gravity",
             ))
         }
     }

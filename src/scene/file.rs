@@ -72,6 +72,9 @@ pub struct ModelTable {
 pub struct InitialTable {
     /// Spatial: body velocity of G, (u, v, w), m/s.
     pub velocity: Option<[f64; 3]>,
+    /// Spatial: the velocity of G in space axes, (Ẋ, Ẏ, Ż), m/s: instead of `velocity`, and
+    /// turned into body axes through `attitude_deg` (v = Rᵀ V).
+    pub velocity_space: Option<[f64; 3]>,
     /// Spatial: body rates (p, q, r), rad/s.
     pub rates: Option<[f64; 3]>,
     /// Spatial: position of G in space axes, (x, y, z), m.
@@ -86,6 +89,11 @@ pub struct InitialTable {
     pub u: Option<f64>,
     /// Planar: sway velocity (body axes), or Ẏ for a space-fixed scene, m/s.
     pub v: Option<f64>,
+    /// Planar: Ẋ, the velocity of G along X in space axes, m/s: with `y_dot`, instead of `u`
+    /// and `v`, turned into body axes through `psi_deg`.
+    pub x_dot: Option<f64>,
+    /// Planar: Ẏ, the velocity of G along Y in space axes, m/s (see `x_dot`).
+    pub y_dot: Option<f64>,
     /// Planar: yaw rate, rad/s.
     pub r: Option<f64>,
     /// Planar: position X in space axes, m.
@@ -110,6 +118,11 @@ pub struct LoadsTable {
     pub force_body: Option<Vec<f64>>,
     /// A constant force in space axes, N: 3 entries (spatial) or 2 (planar).
     pub force_space: Option<Vec<f64>>,
+    /// The point where `force_body` acts, body axes from G, m: 3 entries (spatial) or 2
+    /// (planar); it adds the moment r_P × F about G (4.2). Without it the force acts at G.
+    pub force_body_at: Option<Vec<f64>>,
+    /// The point where `force_space` acts, body axes from G, m (see `force_body_at`).
+    pub force_space_at: Option<Vec<f64>>,
     /// A constant moment about G in body axes, N m (spatial).
     pub moment_body: Option<[f64; 3]>,
     /// A constant moment about G in space axes, N m (spatial).
@@ -179,6 +192,7 @@ given_keys!(BodyTable {
 });
 given_keys!(InitialTable {
     velocity,
+    velocity_space,
     rates,
     position,
     attitude_deg,
@@ -186,6 +200,8 @@ given_keys!(InitialTable {
     theta_dot,
     u,
     v,
+    x_dot,
+    y_dot,
     r,
     x,
     y,
@@ -197,6 +213,8 @@ given_keys!(LoadsTable {
     buoyancy_centre,
     force_body,
     force_space,
+    force_body_at,
+    force_space_at,
     moment_body,
     moment_space,
     moment,

@@ -7,8 +7,12 @@
 //! [`SceneLoads`] turns them into the model's inputs at each state, through the attitude the
 //! state carries.
 //!
-//! Where every load has a potential (gravity, buoyancy, constant space forces, the planar and
-//! the pendulum's constant moment), [`SceneLoads::potential_energy`] gives it, so a run can
+//! A force acts at G unless the scene names its point (`force_body_at`, `force_space_at`, body
+//! axes from G): a force F at r_P adds the moment r_P × F about G (4.2), evaluated in body axes
+//! at each state, since a space force turns in the body as the body turns.
+//!
+//! Where every load has a potential (gravity, buoyancy, constant space forces wherever they
+//! act, the planar and the pendulum's constant moment), [`SceneLoads::potential_energy`] gives it, so a run can
 //! report the total energy and its drift; body-axis forces and damping have none. The
 //! pendulum's and the top's own weight is in their models.
 
@@ -61,6 +65,10 @@ pub struct PlanarLoads {
     pub force_body: [f64; 2],
     /// Constant force, space axes.
     pub force_space: [f64; 2],
+    /// Where `force_body` acts, body axes from G (zero: at G).
+    pub force_body_at: [f64; 2],
+    /// Where `force_space` acts, body axes from G (zero: at G).
+    pub force_space_at: [f64; 2],
     /// Constant moment about the vertical.
     pub moment: f64,
     /// Linear damping of (u, v, r).
@@ -84,6 +92,10 @@ pub struct SpatialLoads {
     pub force_body: [f64; 3],
     /// Constant force, space axes.
     pub force_space: [f64; 3],
+    /// Where `force_body` acts, body axes from G (zero: at G).
+    pub force_body_at: [f64; 3],
+    /// Where `force_space` acts, body axes from G (zero: at G).
+    pub force_space_at: [f64; 3],
     /// Constant moment, body axes.
     pub moment_body: [f64; 3],
     /// Constant moment, space axes.
@@ -129,6 +141,24 @@ fn list<const K: usize>(key: &str, values: &Option<Vec<f64>>) -> Result<[f64; K]
         .try_into()
         .map_err(|_| invalid(key, format!("must have {K} entries, got {}", values.len())))?;
     finite(key, array)
+}
+
+/// The point a force acts at, body axes from G (zeros when absent), refused without its
+/// force: it would be ignored.
+fn point<const K: usize>(
+    key: &str,
+    values: &Option<Vec<f64>>,
+    force: (&str, &Option<Vec<f64>>),
+) -> Result<[f64; K], LoadError> {
+    if values.is_some() && force.1.is_none() {
+        return Err(invalid(key, format!("is given without loads.{}", force.0)));
+    }
+    list(key, values)
+}
+
+/// The moment r × F of a force F at r, in the plane: its component along the vertical.
+fn lever_2d(r: [f64; 2], f: [f64; 2]) -> f64 {
+    r[0] * f[1] - r[1] * f[0]
 }
 
 /// Damping coefficients: finite and not negative (a negative one would feed energy in).
@@ -195,6 +225,16 @@ impl SceneLoads {
                 space_fixed: family == Family::PlanarSpaceFixed,
                 force_body: list("force_body", &table.force_body)?,
                 force_space: list("force_space", &table.force_space)?,
+                force_body_at: point(
+                    "force_body_at",
+                    &table.force_body_at,
+                    ("force_body", &table.force_body),
+                )?,
+                force_space_at: point(
+                    "force_space_at",
+                    &table.force_space_at,
+                    ("force_space", &table.force_space),
+                )?,
                 moment: scalar("moment", table.moment)?,
                 linear: damping("linear_damping", &table.linear_damping)?,
                 quadratic: damping("quadratic_damping", &table.quadratic_damping)?,
@@ -214,6 +254,29 @@ impl SceneLoads {
             }
             SceneLoads::Spatial(l) => l.is_conservative() && !l.is_fixed_in_space(),
         }
+    }
+
+    /// The weight M g, N, of a spatial body on which uniform gravity at G is the only load
+    /// (`None` for any other scene): such a field exerts no moment about G, so the rotation
+    /// is torque-free and G falls freely, which is what `lie-midpoint` integrates.
+    pub fn uniform_gravity_only(&self) -> Option<f64> {
+        match self {
+            SceneLoads::Spatial(l) if l.is_weight_alone() => Some(l.weight),
+            _ => None,
+        }
+    }
+
+    /// Whether a spatial body with a quaternion attitude turns free of any moment about G:
+    /// nothing acts on it, or uniform gravity at G alone ([`uniform_gravity_only`](
+    /// Self::uniform_gravity_only)). The geometric integrator applies to exactly these.
+    pub fn rotation_is_torque_free(&self) -> bool {
+        matches!(
+            self,
+            SceneLoads::Spatial(SpatialLoads {
+                kinematics: Kinematics::Quaternion,
+                ..
+            })
+        ) && (self.is_free() || self.uniform_gravity_only().is_some())
     }
 
     /// Whether a load with a potential of its own is present, so that a trajectory has
@@ -342,11 +405,15 @@ impl PlanarLoads {
         let (s, c) = psi.sin_cos();
         // Everything in body axes first, then turned into the model's axes.
         let (fs, fb) = (self.force_space, self.force_body);
-        let mut load = [
-            fb[0] + c * fs[0] + s * fs[1],
-            fb[1] - s * fs[0] + c * fs[1],
-            self.moment,
-        ];
+        let fs_body = [c * fs[0] + s * fs[1], -s * fs[0] + c * fs[1]];
+        let mut load = [fb[0] + fs_body[0], fb[1] + fs_body[1], self.moment];
+        // A force at G adds no moment, and none is added, so that its zero keeps its sign.
+        if self.force_body_at != [0.0; 2] {
+            load[2] += lever_2d(self.force_body_at, fb);
+        }
+        if self.force_space_at != [0.0; 2] {
+            load[2] += lever_2d(self.force_space_at, fs_body);
+        }
         add_damping(acting, (&self.linear, &self.quadratic), &body, &mut load);
         let [fx, fy, moment] = load;
         if self.space_fixed {
@@ -365,7 +432,14 @@ impl PlanarLoads {
         } else {
             (state[3], state[4], state[5])
         };
-        let fs = self.force_space;
+        let (fs, r) = (self.force_space, self.force_space_at);
+        // The force's point in space: G, and r_P turned by the heading.
+        let (x, y) = if r == [0.0; 2] {
+            (x, y)
+        } else {
+            let (s, c) = psi.sin_cos();
+            (x + c * r[0] - s * r[1], y + s * r[0] + c * r[1])
+        };
         self.is_conservative()
             .then(|| -fs[0] * x - fs[1] * y - self.moment * psi)
     }
@@ -393,6 +467,16 @@ impl SpatialLoads {
             buoyancy_centre: vector("buoyancy_centre", table.buoyancy_centre)?,
             force_body: list("force_body", &table.force_body)?,
             force_space: list("force_space", &table.force_space)?,
+            force_body_at: point(
+                "force_body_at",
+                &table.force_body_at,
+                ("force_body", &table.force_body),
+            )?,
+            force_space_at: point(
+                "force_space_at",
+                &table.force_space_at,
+                ("force_space", &table.force_space),
+            )?,
             moment_body: vector("moment_body", table.moment_body)?,
             moment_space: vector("moment_space", table.moment_space)?,
             linear: damping("linear_damping", &table.linear_damping)?,
@@ -412,6 +496,14 @@ impl SpatialLoads {
         )
     }
 
+    /// Whether the weight is the only load: no buoyancy, no other force or moment, no damping.
+    fn is_weight_alone(&self) -> bool {
+        self.weight != 0.0
+            && self.buoyancy == 0.0
+            && self.is_conservative()
+            && all_zero(&self.force_space)
+    }
+
     /// Whether a load is fixed in space, so that the attitude turns it.
     fn is_fixed_in_space(&self) -> bool {
         self.weight != 0.0
@@ -422,15 +514,21 @@ impl SpatialLoads {
     fn inputs(&self, acting: Acting, state: &[f64], out: &mut [f64]) {
         let mut force = Vector3::from(self.force_body);
         let mut moment = Vector3::from(self.moment_body);
+        // A force at G adds no moment, and none is added, so that its zero keeps its sign.
+        if self.force_body_at != [0.0; 3] {
+            moment += Vector3::from(self.force_body_at).cross(&force);
+        }
         // A scene without a load fixed in space skips the rotation.
         if acting.in_space {
             let to_body = attitude(self.kinematics, &state[9..]).inverse();
             let buoyancy_force = to_body * Vector3::new(0.0, 0.0, -self.buoyancy);
-            force += to_body * Vector3::from(self.force_space)
-                + to_body * Vector3::new(0.0, 0.0, self.weight)
-                + buoyancy_force;
+            let space_force = to_body * Vector3::from(self.force_space);
+            force += space_force + to_body * Vector3::new(0.0, 0.0, self.weight) + buoyancy_force;
             moment += to_body * Vector3::from(self.moment_space)
                 + Vector3::from(self.buoyancy_centre).cross(&buoyancy_force);
+            if self.force_space_at != [0.0; 3] {
+                moment += Vector3::from(self.force_space_at).cross(&space_force);
+            }
         }
         out[..3].copy_from_slice(force.as_slice());
         out[3..6].copy_from_slice(moment.as_slice());
@@ -442,14 +540,20 @@ impl SpatialLoads {
         );
     }
 
-    /// −M g z_G + B z_B − F·r_G, with Z down.
+    /// −M g z_G + B z_B − F·r_P, with Z down (r_P the space force's point, G unless the
+    /// scene names another).
     fn potential_energy(&self, state: &[f64]) -> Option<f64> {
         let position = Vector3::new(state[6], state[7], state[8]);
-        let turned = attitude(self.kinematics, &state[9..]) * Vector3::from(self.buoyancy_centre);
-        let centre = position + turned;
+        let to_space = attitude(self.kinematics, &state[9..]);
+        let centre = position + to_space * Vector3::from(self.buoyancy_centre);
+        let pushed = if self.force_space_at == [0.0; 3] {
+            position
+        } else {
+            position + to_space * Vector3::from(self.force_space_at)
+        };
         self.is_conservative().then(|| {
             -self.weight * position.z + self.buoyancy * centre.z
-                - Vector3::from(self.force_space).dot(&position)
+                - Vector3::from(self.force_space).dot(&pushed)
         })
     }
 }

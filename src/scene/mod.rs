@@ -178,7 +178,7 @@ impl Scene {
         let initial = check.initial(file, &selection)?;
         let loads = SceneLoads::from_table(&file.loads, &selection, &body)
             .map_err(|(key, problem)| SceneError::new(name, &key, problem))?;
-        let integrator = check.integrator(file, &selection, &loads)?;
+        let integrator = check.integrator(file, &loads)?;
         let every = check.every(file, integrator.end_time)?;
         Ok(Scene {
             title: file.title.clone(),
