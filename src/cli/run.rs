@@ -17,6 +17,7 @@
 
 use anyhow::{Context, Result, bail};
 use eom::output::summary::{Summary, write_atomically};
+use eom::output::text::printable;
 use eom::output::trajectory::{Columns, TrajectoryWriter};
 use eom::run::{Report, Row, RunError, Sink, run_reporting};
 use eom::scene::sweep::{Case, cases, parse_shard};
@@ -395,7 +396,9 @@ fn print_outcome(scene: &Scene, outcome: &Outcome, out: &Path) {
     let report = &outcome.report;
     println!(
         "{}: ran {} ({})",
-        scene.title, info.name, scene.selection.reason
+        printable(&scene.title),
+        info.name,
+        scene.selection.reason
     );
     if full.arithmetic() != ops.arithmetic() {
         println!(
