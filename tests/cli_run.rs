@@ -1092,3 +1092,50 @@ fn titles_with_control_characters_are_written_safely_everywhere() {
         "no caption {shown:?}"
     );
 }
+
+#[test]
+fn the_tossed_box_stops_where_it_has_fallen_ten_metres_and_says_so() {
+    let out = folder("tossed_box");
+    let output = run_scene("tossed_box.toml", &out);
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    // Thrown up at 4 m/s from z = 0, Z down: z = −4t + ½gt² = 10 at t = (4 + √(16 + 20g))/g.
+    let g: f64 = 9.81;
+    let exact = (4.0 + (16.0 + 20.0 * g).sqrt()) / g;
+    let s = summary(&out);
+    assert_eq!(s["stop_when"], "z > 10");
+    let stopped = s["stopped_at"].as_f64().unwrap();
+    assert!((stopped - exact).abs() < 1e-12, "{stopped} against {exact}");
+    assert_eq!(s["final_time"].as_f64(), Some(stopped));
+    assert!(stdout.contains(&format!(
+        "stopped at t = {stopped} s, where `z > 10` first held"
+    )));
+    let (header, rows) = trajectory(&out);
+    let t = column(&header, &rows, "t");
+    assert_eq!(*t.last().unwrap(), stopped);
+    // Free of moments about G, the box flips as the racket does, and T + V is kept.
+    assert!(s["energy_drift"].as_f64().unwrap() < 1e-12);
+    assert!(!sign_changes(&t, &column(&header, &rows, "q")).is_empty());
+    check_svgs(
+        &out,
+        &["state.svg", "attitude.svg", "track.svg", "energy.svg"],
+    );
+}
+
+#[test]
+fn the_thruster_burn_yaws_the_satellite_by_the_moment_of_its_offset() {
+    let out = folder("thruster_burn");
+    run_scene("thruster_burn.toml", &out);
+    let final_state = &summary(&out)["final_state"];
+    // 2 N at 0.1 m to starboard for 2 s: ṙ = −0.2/0.6 while it burns, so r = −2/3 rad/s
+    // after it, exactly (the run is cut at the switches); nothing else turns.
+    let r = final_state["r"].as_f64().unwrap();
+    assert!((r + 2.0 / 3.0).abs() < 1e-12, "r = {r}");
+    for name in ["p", "q", "w"] {
+        assert_eq!(final_state[name].as_f64(), Some(0.0), "{name}");
+    }
+    let (header, rows) = trajectory(&out);
+    let u = column(&header, &rows, "u");
+    // At rest until the burn starts at 1 s (row 100), pushed from then on.
+    assert!(u[..=100].iter().all(|u| *u == 0.0) && u[101] > 0.0);
+    check_svgs(&out, &["state.svg", "attitude.svg", "track.svg"]);
+}

@@ -299,6 +299,7 @@ fn run_case(scene: &Scene, name: &str, out: &Path, progress: bool) -> Result<Out
         summary.error = ran.error.as_ref().map(RunError::to_string);
     }
     add_family_measures(scene, &columns, &mut summary);
+    add_stop(scene, &report, &mut summary);
     let summary_path = out.join("summary.json");
     summary
         .write(&summary_path)
@@ -334,6 +335,16 @@ fn run_case(scene: &Scene, name: &str, out: &Path, progress: bool) -> Result<Out
         return Err(anyhow::Error::new(error).context(kept));
     }
     Ok(Outcome { report, files })
+}
+
+/// What a scene with a stop condition adds to its summary: the condition, and the time it
+/// ended the run (`null` if it never held before the end time).
+fn add_stop(scene: &Scene, report: &Report, summary: &mut Summary) {
+    if let Some(condition) = &scene.stop {
+        let extra = &mut summary.extra;
+        extra.insert("stop_when".into(), serde_json::json!(condition.text));
+        extra.insert("stopped_at".into(), serde_json::json!(report.stopped_at));
+    }
 }
 
 /// What a family adds to its summary: the pendulum's period, measured from the trajectory by
@@ -420,6 +431,9 @@ fn print_outcome(scene: &Scene, outcome: &Outcome, out: &Path) {
         println!(
             "  energy drift {drift:.2e} (largest |E − E₀| over the rows, relative to max(|E₀|, largest T))"
         );
+    }
+    if let (Some(t), Some(condition)) = (report.stopped_at, &scene.stop) {
+        println!("  stopped at t = {t} s, where `{condition}` first held");
     }
 
     println!("  wrote into {}:", out.display());

@@ -78,6 +78,8 @@ fn end_state(scene: &Scene, spec: IntegratorSpec) -> Result<Report, RunError> {
     let mut once = scene.clone();
     once.integrator = spec;
     once.every = spec.end_time;
+    // The settings are compared at the end time, which a stop condition would move.
+    once.stop = None;
     run(&once, &mut Discard)
 }
 

@@ -5,7 +5,7 @@
 use super::file::{self, GivenKeys, SceneFile};
 use super::{
     Body, DEFAULT_MAX_STEPS, DEFAULT_ROWS, DEFAULT_TOLERANCE, IntegratorSpec, MAX_ROWS, Method,
-    Problem, SceneError, SceneLoads, Selection, select_spatial,
+    Problem, SceneError, SceneLoads, Selection, StopCondition, select_spatial,
 };
 use crate::integrate::AdaptiveOptions;
 use crate::models::{AnyModel, Family, Kinematics, ModelInfo, Symmetry};
@@ -623,6 +623,38 @@ impl Checker<'_> {
                  with quaternion kinematics and no loads but loads.gravity",
             ))
         }
+    }
+
+    /// `integrator.stop_when`, read against the model's state names; a condition that holds
+    /// at the start would end the run before it begins, and is refused.
+    pub(super) fn stop(
+        &self,
+        file: &SceneFile,
+        selection: &Selection,
+        initial: &[f64],
+    ) -> Result<Option<StopCondition>, SceneError> {
+        let Some(text) = &file.integrator.stop_when else {
+            return Ok(None);
+        };
+        let key = "integrator.stop_when";
+        let names: Vec<String> = selection
+            .info
+            .state
+            .iter()
+            .map(|s| s.to_lowercase())
+            .collect();
+        let condition =
+            StopCondition::parse(text, &names).map_err(|message| self.invalid(key, message))?;
+        if condition.holds(0.0, initial) {
+            let x = condition.index.map_or(0.0, |i| initial[i]);
+            return Err(self.invalid(
+                key,
+                format!(
+                    "`{condition}` holds at the start ({x}), so the run would end before it begins"
+                ),
+            ));
+        }
+        Ok(Some(condition))
     }
 
     pub(super) fn every(&self, file: &SceneFile, end_time: f64) -> Result<f64, SceneError> {

@@ -13,10 +13,15 @@
 //!
 //! Where every load has a potential (gravity, buoyancy, constant space forces wherever they
 //! act, the planar and the pendulum's constant moment), [`SceneLoads::potential_energy`] gives it, so a run can
-//! report the total energy and its drift; body-axis forces and damping have none. The
-//! pendulum's and the top's own weight is in their models.
+//! report the total energy and its drift; body-axis forces, damping and loads given as time
+//! tables have none. The pendulum's and the top's own weight is in their models.
+//!
+//! A force or moment given as a time table ([`super::table`]) is held in the family's
+//! [`TimedLoad`]s, its constant field zero; [`SceneLoads::inputs_at`] reads the tables at a
+//! time, and [`SceneLoads::prepared_on`] on one piece of a run between breakpoints.
 
-use super::file::LoadsTable;
+use super::file::{LoadsTable, Timed};
+use super::table::{Target, TimeTable, TimedLoad};
 use super::{Body, Problem, Selection};
 use crate::models::{Family, Kinematics, Loads};
 use nalgebra::{Quaternion, Rotation3, UnitQuaternion, Vector3};
@@ -35,7 +40,7 @@ pub enum SceneLoads {
 }
 
 /// The pendulum's: a constant moment about the pivot and damping of θ̇.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct PendulumLoads {
     /// Constant moment, N m.
     pub moment: f64,
@@ -43,10 +48,12 @@ pub struct PendulumLoads {
     pub linear: f64,
     /// Quadratic damping coefficient.
     pub quadratic: f64,
+    /// The loads given as time tables (`moment`).
+    pub tables: Vec<TimedLoad>,
 }
 
 /// The top's: a constant moment about the pivot in body axes and damping of (p, q, r).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct TopLoads {
     /// Constant moment, body axes.
     pub moment_body: [f64; 3],
@@ -54,10 +61,12 @@ pub struct TopLoads {
     pub linear: [f64; 3],
     /// Quadratic damping of (p, q, r).
     pub quadratic: [f64; 3],
+    /// The loads given as time tables (`moment_body`).
+    pub tables: Vec<TimedLoad>,
 }
 
 /// A planar body's.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct PlanarLoads {
     /// Whether the model's state is space-fixed (4.39) rather than body-fixed.
     pub space_fixed: bool,
@@ -75,10 +84,12 @@ pub struct PlanarLoads {
     pub linear: [f64; 3],
     /// Quadratic damping of (u, v, r).
     pub quadratic: [f64; 3],
+    /// The loads given as time tables (`force_body`, `force_space`, `moment`).
+    pub tables: Vec<TimedLoad>,
 }
 
 /// A spatial body's.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct SpatialLoads {
     /// Euler angles or a quaternion in the state.
     pub kinematics: Kinematics,
@@ -104,6 +115,9 @@ pub struct SpatialLoads {
     pub linear: [f64; 6],
     /// Quadratic damping of (u, v, w, p, q, r).
     pub quadratic: [f64; 6],
+    /// The loads given as time tables (`force_body`, `force_space`, `moment_body`,
+    /// `moment_space`).
+    pub tables: Vec<TimedLoad>,
 }
 
 type LoadError = (String, Problem);
@@ -148,12 +162,49 @@ fn list<const K: usize>(key: &str, values: &Option<Vec<f64>>) -> Result<[f64; K]
 fn point<const K: usize>(
     key: &str,
     values: &Option<Vec<f64>>,
-    force: (&str, &Option<Vec<f64>>),
+    force: (&str, bool),
 ) -> Result<[f64; K], LoadError> {
-    if values.is_some() && force.1.is_none() {
+    if values.is_some() && !force.1 {
         return Err(invalid(key, format!("is given without loads.{}", force.0)));
     }
     list(key, values)
+}
+
+/// A load that may be a time table: its constant (zeros when absent or tabulated), its table
+/// pushed onto `tables` for `target`.
+fn timed<const K: usize>(
+    key: &str,
+    value: &Option<Timed<Vec<f64>>>,
+    (target, tables): (Target, &mut Vec<TimedLoad>),
+) -> Result<[f64; K], LoadError> {
+    match value {
+        None => Ok([0.0; K]),
+        Some(Timed::Constant(v)) => list(key, &Some(v.clone())),
+        Some(Timed::Table(spec)) => {
+            let table = TimeTable::new(&format!("loads.{key}"), spec, K)
+                .map_err(|(key, message)| (key, Problem::Invalid(message)))?;
+            tables.push(TimedLoad { target, table });
+            Ok([0.0; K])
+        }
+    }
+}
+
+/// [`timed`] for a scalar load (`moment`).
+fn timed_scalar(
+    key: &str,
+    value: &Option<Timed<f64>>,
+    (target, tables): (Target, &mut Vec<TimedLoad>),
+) -> Result<f64, LoadError> {
+    match value {
+        None => Ok(0.0),
+        Some(Timed::Constant(v)) => scalar(key, Some(*v)),
+        Some(Timed::Table(spec)) => {
+            let table = TimeTable::scalar(&format!("loads.{key}"), spec)
+                .map_err(|(key, message)| (key, Problem::Invalid(message)))?;
+            tables.push(TimedLoad { target, table });
+            Ok(0.0)
+        }
+    }
 }
 
 /// The moment r × F of a force F at r, in the plane: its component along the vertical.
@@ -207,37 +258,53 @@ impl SceneLoads {
         selection: &Selection,
         body: &Body,
     ) -> Result<Self, LoadError> {
+        let mut tables = Vec::new();
         Ok(match (selection.info.family, body) {
             (Family::Pendulum, _) => SceneLoads::Pendulum(PendulumLoads {
-                moment: scalar("moment", table.moment)?,
+                moment: timed_scalar("moment", &table.moment, (Target::Moment, &mut tables))?,
                 linear: damping::<1>("linear_damping", &table.linear_damping)?[0],
                 quadratic: damping::<1>("quadratic_damping", &table.quadratic_damping)?[0],
+                tables,
             }),
             (Family::Top, _) => SceneLoads::Top(TopLoads {
-                moment_body: vector("moment_body", table.moment_body)?,
+                moment_body: timed(
+                    "moment_body",
+                    &table.moment_body,
+                    (Target::MomentBody, &mut tables),
+                )?,
                 linear: damping("linear_damping", &table.linear_damping)?,
                 quadratic: damping("quadratic_damping", &table.quadratic_damping)?,
+                tables,
             }),
             (Family::Spatial, Body::Spatial { mass, .. }) => {
                 SceneLoads::Spatial(SpatialLoads::from_table(table, selection, *mass)?)
             }
             (family, _) => SceneLoads::Planar(PlanarLoads {
                 space_fixed: family == Family::PlanarSpaceFixed,
-                force_body: list("force_body", &table.force_body)?,
-                force_space: list("force_space", &table.force_space)?,
+                force_body: timed(
+                    "force_body",
+                    &table.force_body,
+                    (Target::ForceBody, &mut tables),
+                )?,
+                force_space: timed(
+                    "force_space",
+                    &table.force_space,
+                    (Target::ForceSpace, &mut tables),
+                )?,
                 force_body_at: point(
                     "force_body_at",
                     &table.force_body_at,
-                    ("force_body", &table.force_body),
+                    ("force_body", table.force_body.is_some()),
                 )?,
                 force_space_at: point(
                     "force_space_at",
                     &table.force_space_at,
-                    ("force_space", &table.force_space),
+                    ("force_space", table.force_space.is_some()),
                 )?,
-                moment: scalar("moment", table.moment)?,
+                moment: timed_scalar("moment", &table.moment, (Target::Moment, &mut tables))?,
                 linear: damping("linear_damping", &table.linear_damping)?,
                 quadratic: damping("quadratic_damping", &table.quadratic_damping)?,
+                tables,
             }),
         })
     }
@@ -245,9 +312,12 @@ impl SceneLoads {
     /// True when nothing acts on the body but its model's own field.
     pub fn is_free(&self) -> bool {
         match self {
-            SceneLoads::Pendulum(l) => all_zero([&l.moment, &l.linear, &l.quadratic]),
+            SceneLoads::Pendulum(l) => {
+                all_zero([&l.moment, &l.linear, &l.quadratic]) && l.tables.is_empty()
+            }
             SceneLoads::Top(l) => {
                 all_zero(l.moment_body.iter().chain(&l.linear).chain(&l.quadratic))
+                    && l.tables.is_empty()
             }
             SceneLoads::Planar(l) => {
                 l.is_conservative() && all_zero(l.force_space.iter().chain([&l.moment]))
@@ -283,7 +353,7 @@ impl SceneLoads {
     /// potential and total energy columns even where the model has no field of its own.
     pub fn has_potential(&self) -> bool {
         match self {
-            SceneLoads::Pendulum(l) => l.moment != 0.0 && l.linear == 0.0 && l.quadratic == 0.0,
+            SceneLoads::Pendulum(l) => l.moment != 0.0 && l.is_conservative(),
             SceneLoads::Top(_) => false,
             SceneLoads::Planar(l) => {
                 l.is_conservative() && !all_zero(l.force_space.iter().chain([&l.moment]))
@@ -293,15 +363,91 @@ impl SceneLoads {
     }
 
     /// The inputs of the model at a state, into `out` (the model's input layout): every
-    /// load evaluated, zero ones included. A run evaluates [`prepared`](Self::prepared) loads,
-    /// which skip what is zero.
+    /// load evaluated, zero ones included, a time table at t = 0. A run evaluates
+    /// [`prepared`](Self::prepared) loads, which skip what is zero.
     pub fn inputs(&self, state: &[f64], out: &mut [f64]) {
+        self.inputs_at(0.0, state, out);
+    }
+
+    /// [`inputs`](Self::inputs) at time `t`: a time table read at `t` (a step's new value
+    /// from its own time on, the end values held outside the table).
+    pub fn inputs_at(&self, t: f64, state: &[f64], out: &mut [f64]) {
         let every = Acting {
             any: true,
             damping: true,
             in_space: self.is_fixed_in_space(),
         };
-        self.inputs_acting(every, state, out);
+        if self.tables().is_empty() {
+            self.inputs_acting(every, state, out);
+        } else {
+            let now = self.with_tables_read(|table| table.at(t));
+            now.inputs_acting(every, state, out);
+        }
+    }
+
+    /// The times at which a load given as a table jumps or turns, ascending, each once: where
+    /// a run is cut into pieces (see [`super::table`]).
+    pub fn breakpoints(&self) -> Vec<f64> {
+        let mut times: Vec<f64> = self
+            .tables()
+            .iter()
+            .flat_map(|timed| timed.table.times().iter().copied())
+            .collect();
+        times.sort_by(f64::total_cmp);
+        times.dedup();
+        times
+    }
+
+    /// The loads given as time tables.
+    fn tables(&self) -> &[TimedLoad] {
+        match self {
+            SceneLoads::Pendulum(l) => &l.tables,
+            SceneLoads::Top(l) => &l.tables,
+            SceneLoads::Planar(l) => &l.tables,
+            SceneLoads::Spatial(l) => &l.tables,
+        }
+    }
+
+    /// These loads with every table read by `value` into its load: constants only, and no
+    /// allocation (their table list is empty).
+    fn with_tables_read(&self, value: impl Fn(&TimeTable) -> [f64; 3]) -> SceneLoads {
+        let mut now = match self {
+            SceneLoads::Pendulum(l) => SceneLoads::Pendulum(PendulumLoads {
+                tables: Vec::new(),
+                ..*l
+            }),
+            SceneLoads::Top(l) => SceneLoads::Top(TopLoads {
+                tables: Vec::new(),
+                ..*l
+            }),
+            SceneLoads::Planar(l) => SceneLoads::Planar(PlanarLoads {
+                tables: Vec::new(),
+                ..*l
+            }),
+            SceneLoads::Spatial(l) => SceneLoads::Spatial(SpatialLoads {
+                tables: Vec::new(),
+                ..*l
+            }),
+        };
+        for timed in self.tables() {
+            now.set(timed.target, value(&timed.table));
+        }
+        now
+    }
+
+    /// Sets the load `target` (a table's) to `v`, its first entries as the load has them.
+    fn set(&mut self, target: Target, v: [f64; 3]) {
+        match (self, target) {
+            (SceneLoads::Pendulum(l), _) => l.moment = v[0],
+            (SceneLoads::Top(l), _) => l.moment_body = v,
+            (SceneLoads::Planar(l), Target::ForceBody) => l.force_body = [v[0], v[1]],
+            (SceneLoads::Planar(l), Target::ForceSpace) => l.force_space = [v[0], v[1]],
+            (SceneLoads::Planar(l), _) => l.moment = v[0],
+            (SceneLoads::Spatial(l), Target::ForceBody) => l.force_body = v,
+            (SceneLoads::Spatial(l), Target::ForceSpace) => l.force_space = v,
+            (SceneLoads::Spatial(l), Target::MomentSpace) => l.moment_space = v,
+            (SceneLoads::Spatial(l), _) => l.moment_body = v,
+        }
     }
 
     /// The loads as a run evaluates them, millions of times: which of them act is decided
@@ -314,6 +460,19 @@ impl SceneLoads {
         PreparedLoads {
             loads: self.clone(),
             acting: self.acting(),
+            timed: !self.tables().is_empty(),
+            within: None,
+        }
+    }
+
+    /// [`prepared`](Self::prepared) for the piece of a run from `a` to `b`, which no table
+    /// time falls inside: each table is read as that piece's constant or line (see
+    /// [`TimeTable::at_within`]), so that a step ending on a breakpoint sees the value
+    /// before it.
+    pub fn prepared_on(&self, a: f64, b: f64) -> PreparedLoads {
+        PreparedLoads {
+            within: Some((a, b)),
+            ..self.prepared()
         }
     }
 
@@ -369,13 +528,18 @@ impl SceneLoads {
     pub fn potential_energy(&self, state: &[f64]) -> Option<f64> {
         match self {
             // The constant moment's potential is −M_O θ.
-            SceneLoads::Pendulum(l) => {
-                (l.linear == 0.0 && l.quadratic == 0.0).then(|| -l.moment * state[0])
-            }
+            SceneLoads::Pendulum(l) => l.is_conservative().then(|| -l.moment * state[0]),
             SceneLoads::Top(_) => self.is_free().then_some(0.0),
             SceneLoads::Planar(l) => l.potential_energy(state),
             SceneLoads::Spatial(l) => l.potential_energy(state),
         }
+    }
+}
+
+impl PendulumLoads {
+    /// No damping and no table: the moment, if any, has a potential.
+    fn is_conservative(&self) -> bool {
+        self.linear == 0.0 && self.quadratic == 0.0 && self.tables.is_empty()
     }
 }
 
@@ -386,7 +550,7 @@ impl PlanarLoads {
                 .iter()
                 .chain(&self.linear)
                 .chain(&self.quadratic),
-        )
+        ) && self.tables.is_empty()
     }
 
     /// The heading and the body velocities (u, v, r), from either layout.
@@ -460,31 +624,49 @@ impl SpatialLoads {
                 "is given without loads.buoyancy".into(),
             ));
         }
+        let mut tables = Vec::new();
         Ok(SpatialLoads {
             kinematics: selection.info.kinematics.unwrap_or(Kinematics::Quaternion),
             weight: mass * scalar("gravity", table.gravity)?,
             buoyancy,
             buoyancy_centre: vector("buoyancy_centre", table.buoyancy_centre)?,
-            force_body: list("force_body", &table.force_body)?,
-            force_space: list("force_space", &table.force_space)?,
+            force_body: timed(
+                "force_body",
+                &table.force_body,
+                (Target::ForceBody, &mut tables),
+            )?,
+            force_space: timed(
+                "force_space",
+                &table.force_space,
+                (Target::ForceSpace, &mut tables),
+            )?,
             force_body_at: point(
                 "force_body_at",
                 &table.force_body_at,
-                ("force_body", &table.force_body),
+                ("force_body", table.force_body.is_some()),
             )?,
             force_space_at: point(
                 "force_space_at",
                 &table.force_space_at,
-                ("force_space", &table.force_space),
+                ("force_space", table.force_space.is_some()),
             )?,
-            moment_body: vector("moment_body", table.moment_body)?,
-            moment_space: vector("moment_space", table.moment_space)?,
+            moment_body: timed(
+                "moment_body",
+                &table.moment_body,
+                (Target::MomentBody, &mut tables),
+            )?,
+            moment_space: timed(
+                "moment_space",
+                &table.moment_space,
+                (Target::MomentSpace, &mut tables),
+            )?,
             linear: damping("linear_damping", &table.linear_damping)?,
             quadratic: damping("quadratic_damping", &table.quadratic_damping)?,
+            tables,
         })
     }
 
-    /// Body-axis forces and moments, a space moment and damping have no potential.
+    /// Body-axis forces and moments, a space moment, damping and tables have no potential.
     fn is_conservative(&self) -> bool {
         all_zero(
             self.force_body
@@ -493,7 +675,7 @@ impl SpatialLoads {
                 .chain(&self.moment_space)
                 .chain(&self.linear)
                 .chain(&self.quadratic),
-        )
+        ) && self.tables.is_empty()
     }
 
     /// Whether the weight is the only load: no buoyancy, no other force or moment, no damping.
@@ -509,6 +691,10 @@ impl SpatialLoads {
         self.weight != 0.0
             || self.buoyancy != 0.0
             || !all_zero(self.force_space.iter().chain(&self.moment_space))
+            || self
+                .tables
+                .iter()
+                .any(|timed| matches!(timed.target, Target::ForceSpace | Target::MomentSpace))
     }
 
     fn inputs(&self, acting: Acting, state: &[f64], out: &mut [f64]) {
@@ -588,9 +774,9 @@ pub fn euler_angles(kinematics: Kinematics, attitude_entries: &[f64]) -> [f64; 3
 
 impl<const N: usize, const M: usize> Loads<f64, N, M> for SceneLoads {
     #[inline]
-    fn at(&self, _t: f64, state: &[f64; N]) -> [f64; M] {
+    fn at(&self, t: f64, state: &[f64; N]) -> [f64; M] {
         let mut out = [0.0; M];
-        self.inputs(state, &mut out);
+        self.inputs_at(t, state, &mut out);
         out
     }
 }
@@ -612,14 +798,35 @@ struct Acting {
 pub struct PreparedLoads {
     loads: SceneLoads,
     acting: Acting,
+    /// Whether a load is a time table (decided once, as `acting`).
+    timed: bool,
+    /// The piece of the run its tables are read on ([`SceneLoads::prepared_on`]), or `None`
+    /// to read them at each time.
+    within: Option<(f64, f64)>,
+}
+
+impl PreparedLoads {
+    /// The inputs where a load is a time table: every table read at `t`, on the piece.
+    #[inline(never)]
+    fn timed_inputs(&self, t: f64, state: &[f64], out: &mut [f64]) {
+        let now = self.loads.with_tables_read(|table| match self.within {
+            Some(piece) => table.at_within(t, piece),
+            None => table.at(t),
+        });
+        now.inputs_acting(self.acting, state, out);
+    }
 }
 
 impl<const N: usize, const M: usize> Loads<f64, N, M> for PreparedLoads {
     #[inline(always)]
-    fn at(&self, _t: f64, state: &[f64; N]) -> [f64; M] {
+    fn at(&self, t: f64, state: &[f64; N]) -> [f64; M] {
         let mut out = [0.0; M];
         if self.acting.any {
-            self.loads.inputs_acting(self.acting, state, &mut out);
+            if !self.timed {
+                self.loads.inputs_acting(self.acting, state, &mut out);
+            } else {
+                self.timed_inputs(t, state, &mut out);
+            }
         }
         out
     }
