@@ -85,9 +85,10 @@ pub struct InitialTable {
     pub theta_deg: Option<f64>,
     /// Pendulum: the angular rate, rad/s.
     pub theta_dot: Option<f64>,
-    /// Planar: surge velocity (body axes), or Ẋ for a space-fixed scene, m/s.
+    /// Planar: surge velocity u in body axes, m/s (every planar family; the space-fixed
+    /// state is given its space components).
     pub u: Option<f64>,
-    /// Planar: sway velocity (body axes), or Ẏ for a space-fixed scene, m/s.
+    /// Planar: sway velocity v in body axes, m/s (as `u`).
     pub v: Option<f64>,
     /// Planar: Ẋ, the velocity of G along X in space axes, m/s: with `y_dot`, instead of `u`
     /// and `v`, turned into body axes through `psi_deg`.
