@@ -1047,3 +1047,135 @@ fn a_killed_run_leaves_every_complete_row_readable() {
     }
     assert!(!out.join("summary.json").exists());
 }
+
+/// Every SVG in `out` (and its subfolders) parses as XML, and its text holds none of the
+/// characters XML forbids.
+fn every_svg_is_xml(out: &Path) -> usize {
+    let mut svgs = 0;
+    for entry in std::fs::read_dir(out).unwrap() {
+        let path = entry.unwrap().path();
+        if path.is_dir() {
+            svgs += every_svg_is_xml(&path);
+        } else if path.extension().is_some_and(|e| e == "svg") {
+            let text = std::fs::read_to_string(&path).unwrap();
+            roxmltree::Document::parse(&text).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+            svgs += 1;
+        }
+    }
+    svgs
+}
+
+#[test]
+fn titles_with_control_characters_are_written_safely_everywhere() {
+    // A bell, a line break, a terminal escape, XML's own specials and a noncharacter.
+    let title = r#"title = "Bell \u0007, line\nbreak, \u001b[31mred <&> \"quoted\" \uFFFF""#;
+    let exact = "Bell \u{7}, line\nbreak, \u{1b}[31mred <&> \"quoted\" \u{ffff}";
+    let dir = folder("control_title");
+    // A catalog scene, a sweep of it, and a ship scene: every writer of a title.
+    let cases = [
+        ("tennis_racket.toml", "end_time = 20.0", "end_time = 1.0"),
+        ("pendulum.toml", "end_time = 20.0", "end_time = 1.0"),
+        ("mariner.toml", "", ""),
+    ];
+    for (name, from, to) in cases {
+        let text = std::fs::read_to_string(scene(name)).unwrap();
+        let old_title = text.lines().find(|l| l.starts_with("title = ")).unwrap();
+        let mut text = text.replacen(old_title, title, 1);
+        if !from.is_empty() {
+            assert!(text.contains(from), "{name}");
+            text = text.replacen(from, to, 1);
+        }
+        if name == "pendulum.toml" {
+            text += "\n[sweep]\n\"body.mass\" = [1.0, 2.0]\n";
+        }
+        let path = dir.join(name);
+        std::fs::write(&path, text).unwrap();
+        let out = dir.join(name.trim_end_matches(".toml"));
+        let output = eom_run(&path, &out);
+        let stdout = String::from_utf8_lossy(&output.stdout);
+        assert!(
+            output.status.success(),
+            "{name}: {}",
+            String::from_utf8_lossy(&output.stderr)
+        );
+        // The terminal is shown the title, not driven by it.
+        assert!(!stdout.contains(['\u{7}', '\u{1b}']), "{name}: {stdout:?}");
+        assert!(every_svg_is_xml(&out) >= 2, "{name}: too few plots");
+        // summary.json is valid JSON and keeps the title exactly; every CSV reads.
+        let summaries = if name == "pendulum.toml" {
+            vec![out.join("case-0000"), out.join("case-0001")]
+        } else {
+            vec![out.clone()]
+        };
+        for folder in summaries {
+            assert_eq!(summary(&folder)["title"], exact, "{name}");
+        }
+        for csv in ["trajectory.csv", "sweep.csv"] {
+            if out.join(csv).exists() {
+                let text = std::fs::read_to_string(out.join(csv)).unwrap();
+                let fields = text.lines().next().unwrap().split(',').count();
+                assert!(
+                    text.lines().all(|l| l.split(',').count() == fields),
+                    "{csv}"
+                );
+            }
+        }
+    }
+    // The tennis racket's state plot shows the title with its characters made visible.
+    let state = std::fs::read_to_string(dir.join("tennis_racket/state.svg")).unwrap();
+    let document = roxmltree::Document::parse(&state).unwrap();
+    let shown = "Bell ␇, line break, ␛[31mred <&> \"quoted\" \u{fffd}: state";
+    assert!(
+        document
+            .descendants()
+            .any(|n| n.text().is_some_and(|t| t.trim() == shown)),
+        "no caption {shown:?}"
+    );
+}
+
+#[test]
+fn the_tossed_box_stops_where_it_has_fallen_ten_metres_and_says_so() {
+    let out = folder("tossed_box");
+    let output = run_scene("tossed_box.toml", &out);
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    // Thrown up at 4 m/s from z = 0, Z down: z = −4t + ½gt² = 10 at t = (4 + √(16 + 20g))/g.
+    let g: f64 = 9.81;
+    let exact = (4.0 + (16.0 + 20.0 * g).sqrt()) / g;
+    let s = summary(&out);
+    assert_eq!(s["stop_when"], "z > 10");
+    let stopped = s["stopped_at"].as_f64().unwrap();
+    assert!((stopped - exact).abs() < 1e-12, "{stopped} against {exact}");
+    assert_eq!(s["final_time"].as_f64(), Some(stopped));
+    assert!(stdout.contains(&format!(
+        "stopped at t = {stopped} s, where `z > 10` first held"
+    )));
+    let (header, rows) = trajectory(&out);
+    let t = column(&header, &rows, "t");
+    assert_eq!(*t.last().unwrap(), stopped);
+    // Free of moments about G, the box flips as the racket does, and T + V is kept.
+    assert!(s["energy_drift"].as_f64().unwrap() < 1e-12);
+    assert!(!sign_changes(&t, &column(&header, &rows, "q")).is_empty());
+    check_svgs(
+        &out,
+        &["state.svg", "attitude.svg", "track.svg", "energy.svg"],
+    );
+}
+
+#[test]
+fn the_thruster_burn_yaws_the_satellite_by_the_moment_of_its_offset() {
+    let out = folder("thruster_burn");
+    run_scene("thruster_burn.toml", &out);
+    let final_state = &summary(&out)["final_state"];
+    // 2 N at 0.1 m to starboard for 2 s: ṙ = −0.2/0.6 while it burns, so r = −2/3 rad/s
+    // after it, exactly (the run is cut at the switches); nothing else turns.
+    let r = final_state["r"].as_f64().unwrap();
+    assert!((r + 2.0 / 3.0).abs() < 1e-12, "r = {r}");
+    for name in ["p", "q", "w"] {
+        assert_eq!(final_state[name].as_f64(), Some(0.0), "{name}");
+    }
+    let (header, rows) = trajectory(&out);
+    let u = column(&header, &rows, "u");
+    // At rest until the burn starts at 1 s (row 100), pushed from then on.
+    assert!(u[..=100].iter().all(|u| *u == 0.0) && u[101] > 0.0);
+    check_svgs(&out, &["state.svg", "attitude.svg", "track.svg"]);
+}

@@ -1,6 +1,7 @@
 //! A run evaluates a scene's loads through [`SceneLoads::prepared`], which decides once which
-//! of them act. These tests hold it to the scene's own [`SceneLoads::inputs`] at random
-//! states, for every family and for each kind of load alone, all together and none.
+//! of them act. These tests hold it to the scene's own [`SceneLoads::inputs_at`] at random
+//! states and times, for every family and for each kind of load alone, all together and
+//! none, forces at points and loads given as time tables included.
 
 use eom::models::Loads;
 use eom::scene::{Scene, SceneLoads};
@@ -96,27 +97,82 @@ fn scenes() -> Vec<(String, Scene)> {
         "tennis_racket, none".into(),
         with_loads("tennis_racket", ""),
     ));
+    let step = |values: &str| {
+        format!("{{ times = [0.5, 1.5], values = {values}, interpolation = \"step\" }}")
+    };
+    let ramp = |values: &str| {
+        format!("{{ times = [0.0, 1.0, 2.5], values = {values}, interpolation = \"linear\" }}")
+    };
+    let timed = [
+        (
+            "auv",
+            format!(
+                "force_body = {}\nforce_body_at = [0.1, -0.2, 0.3]\nforce_space = {}\n\
+                 force_space_at = [-0.4, 0.0, 0.2]\nmoment_body = {}\nmoment_space = {}\n\
+                 gravity = 9.81",
+                step("[[1.0, 2.0, 3.0], [-1.0, 0.5, 0.0]]"),
+                ramp("[[0.0, 0.0, 0.0], [4.0, -2.0, 1.0], [1.0, 1.0, 1.0]]"),
+                ramp("[[0.3, 0.0, 0.0], [0.0, 0.2, 0.0], [0.0, 0.0, -0.1]]"),
+                step("[[0.5, 0.5, 0.0], [0.0, -0.5, 0.5]]"),
+            ),
+        ),
+        (
+            "planar_drift",
+            format!(
+                "force_body = {}\nforce_body_at = [0.5, -0.25]\nforce_space = {}\n\
+                 force_space_at = [-1.0, 0.5]\nmoment = {}",
+                step("[[2.0, 1.0], [0.0, -1.0]]"),
+                ramp("[[0.0, 0.0], [1.0, 2.0], [3.0, 0.0]]"),
+                ramp("[0.0, 1.0, -1.0]"),
+            ),
+        ),
+        (
+            "puck_in_wind",
+            format!(
+                "force_space = {}\nforce_space_at = [0.01, 0.0]",
+                step("[[0.0, 0.05], [0.05, 0.0]]")
+            ),
+        ),
+        ("pendulum", format!("moment = {}", step("[0.2, -0.3]"))),
+        (
+            "heavy_top",
+            format!(
+                "moment_body = {}",
+                ramp("[[0.0, 0.0, 0.0], [0.1, 0.0, 0.0], [0.0, 0.0, 0.2]]")
+            ),
+        ),
+    ];
+    for (name, loads) in timed {
+        scenes.push((
+            format!("{name}, timed and at points"),
+            with_loads(name, &loads),
+        ));
+    }
     scenes
 }
 
-/// The inputs both ways at one state of `N` entries and `M` inputs.
-fn both_at<const N: usize, const M: usize>(loads: &SceneLoads, state: &[f64]) -> [Vec<f64>; 2] {
+/// The inputs both ways at time `t` and one state of `N` entries and `M` inputs.
+fn both_at<const N: usize, const M: usize>(
+    loads: &SceneLoads,
+    t: f64,
+    state: &[f64],
+) -> [Vec<f64>; 2] {
     let state: [f64; N] = std::array::from_fn(|i| state[i]);
     let mut direct = [0.0; M];
-    loads.inputs(&state, &mut direct);
-    let prepared = Loads::<f64, N, M>::at(&loads.prepared(), 0.0, &state);
+    loads.inputs_at(t, &state, &mut direct);
+    let prepared = Loads::<f64, N, M>::at(&loads.prepared(), t, &state);
     [direct.to_vec(), prepared.to_vec()]
 }
 
 /// The scene's inputs at `state`, directly and prepared, for each family's state and input
 /// sizes (a planar body and a top with Euler angles both have 6 and 3).
-fn both(loads: &SceneLoads, state: &[f64]) -> [Vec<f64>; 2] {
+fn both(loads: &SceneLoads, t: f64, state: &[f64]) -> [Vec<f64>; 2] {
     match state.len() {
-        2 => both_at::<2, 1>(loads, state),
-        6 => both_at::<6, 3>(loads, state),
-        7 => both_at::<7, 3>(loads, state),
-        12 => both_at::<12, 6>(loads, state),
-        13 => both_at::<13, 6>(loads, state),
+        2 => both_at::<2, 1>(loads, t, state),
+        6 => both_at::<6, 3>(loads, t, state),
+        7 => both_at::<7, 3>(loads, t, state),
+        12 => both_at::<12, 6>(loads, t, state),
+        13 => both_at::<13, 6>(loads, t, state),
         n => panic!("a state of {n} entries"),
     }
 }
@@ -130,6 +186,7 @@ proptest! {
     #[test]
     fn prepared_loads_are_the_scene_loads(
         state in prop::collection::vec(-3.0..3.0f64, 13),
+        t in prop::sample::select(vec![0.0, 0.3, 0.5, 1.0, 1.2, 1.5, 2.5, 4.0]),
     ) {
         for (name, scene) in scenes() {
             let n = scene.initial.len();
@@ -140,8 +197,8 @@ proptest! {
                 state[9..].iter_mut().for_each(|x| *x /= norm);
             }
             let loads = &scene.loads;
-            let [direct, prepared] = both(loads, &state);
-            prop_assert_eq!(&direct, &prepared, "{}", name);
+            let [direct, prepared] = both(loads, t, &state);
+            prop_assert_eq!(&direct, &prepared, "{} at t = {}", name, t);
             if loads.is_free() {
                 prop_assert!(prepared.iter().all(|x| *x == 0.0), "{name}: {prepared:?}");
             }
@@ -162,7 +219,7 @@ fn every_acting_load_reaches_the_inputs() {
         if n == 13 {
             state[9..].copy_from_slice(&[0.5; 4]);
         }
-        let [direct, prepared] = both(&scene.loads, &state);
+        let [direct, prepared] = both(&scene.loads, 1.2, &state);
         assert!(prepared.iter().any(|x| *x != 0.0), "{name}: {prepared:?}");
         assert_eq!(direct, prepared, "{name}");
     }
@@ -205,7 +262,7 @@ fn spatial_loads_by_hand() {
         + to_body * Vector3::new(-0.5, 0.4, 0.1)
         + Vector3::new(0.01, -0.02, -0.05).cross(&buoyancy)
         + damping(rates, [5.0, 20.0, 20.0], [2.0, 30.0, 30.0]);
-    let [direct, prepared] = both(&scene.loads, &state);
+    let [direct, prepared] = both(&scene.loads, 0.0, &state);
     let expected: Vec<f64> = force.iter().chain(moment.iter()).copied().collect();
     let scale = expected.iter().fold(0.0_f64, |m, x| m.max(x.abs()));
     for (i, ((d, p), e)) in direct.iter().zip(&prepared).zip(&expected).enumerate() {

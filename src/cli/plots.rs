@@ -7,8 +7,9 @@ use eom::output::trajectory::Columns;
 use eom::scene::{Scene, euler_angles};
 use std::path::{Path, PathBuf};
 
-/// Draws the state, the attitude, the track and the energy drift of a run into `out`.
-pub fn write(scene: &Scene, columns: &Columns, out: &Path) -> Result<Vec<PathBuf>> {
+/// Draws the state, the attitude, the track and the energy drift of a run into `out`, under
+/// `title`.
+pub fn write(scene: &Scene, title: &str, columns: &Columns, out: &Path) -> Result<Vec<PathBuf>> {
     let names = scene.state_names();
     let info = scene.selection.info;
     let attitude = match (info.family, info.kinematics) {
@@ -36,7 +37,7 @@ pub fn write(scene: &Scene, columns: &Columns, out: &Path) -> Result<Vec<PathBuf
             columns.energy.iter().map(|e| (e - e0) / scale).collect()
         });
     let input = PlotInput {
-        title: &scene.title,
+        title,
         time: &columns.time,
         state: names
             .iter()

@@ -21,6 +21,7 @@ use eom::Short;
 use eom::output::folder::{Claim, FolderError, Writer, sweep_identity};
 use eom::output::plots::PLOT_FILES;
 use eom::output::summary::{Summary, write_atomically};
+use eom::output::text::printable;
 use eom::output::trajectory::{Columns, TrajectoryWriter};
 use eom::run::{Report, Row, RunError, Sink, run_reporting};
 use eom::scene::sweep::{Case, is_swept, parse_shard, shard_cases};
@@ -212,10 +213,7 @@ fn execute(text: &str, name: &str, base: &Path, out: &Path, options: Options) ->
     let scenes: Vec<(Case, Scene)> = shard_cases(text, name, options.shard)?
         .into_iter()
         .map(|case| {
-            let mut scene = Scene::from_file(&case.file, name, base)?;
-            if swept {
-                scene.title = format!("{} — {}", scene.title, case.label());
-            }
+            let scene = Scene::from_file(&case.file, name, base)?;
             Ok((case, scene))
         })
         .collect::<Result<_, SceneError>>()?;
@@ -396,6 +394,7 @@ fn run_case(
             serde_json::json!({"index": case.index, "values": values}),
         );
     }
+    add_stop(scene, &report, &mut summary);
     let summary_path = out.join("summary.json");
     summary
         .write(&summary_path)
@@ -403,7 +402,13 @@ fn run_case(
     let mut files = vec![csv_path, summary_path];
     // A plot needs two rows; a run stopped at its start has at most one.
     if columns.time.len() >= 2 {
-        files.extend(super::plots::write(scene, &columns, out)?);
+        // A sweep case's plots say its values; its summary keeps the scene's title exactly
+        // and says them under "case".
+        let title = match case {
+            Some(case) => format!("{} — {}", scene.title, case.label()),
+            None => scene.title.clone(),
+        };
+        files.extend(super::plots::write(scene, &title, &columns, out)?);
     }
     if let Some(signal) = interrupted {
         let kept = format!(
@@ -435,6 +440,16 @@ fn run_case(
         files,
         measures,
     })
+}
+
+/// What a scene with a stop condition adds to its summary: the condition, and the time it
+/// ended the run (`null` if it never held before the end time).
+fn add_stop(scene: &Scene, report: &Report, summary: &mut Summary) {
+    if let Some(condition) = &scene.stop {
+        let extra = &mut summary.extra;
+        extra.insert("stop_when".into(), serde_json::json!(condition.text));
+        extra.insert("stopped_at".into(), serde_json::json!(report.stopped_at));
+    }
 }
 
 /// The figures a family adds to its summary and its sweep's table, by key.
@@ -524,7 +539,9 @@ fn print_outcome(scene: &Scene, outcome: &Outcome, out: &Path) {
     let report = &outcome.report;
     println!(
         "{}: ran {} ({})",
-        scene.title, info.name, scene.selection.reason
+        printable(&scene.title),
+        info.name,
+        scene.selection.reason
     );
     if full.arithmetic() != ops.arithmetic() {
         println!(
@@ -546,6 +563,9 @@ fn print_outcome(scene: &Scene, outcome: &Outcome, out: &Path) {
         println!(
             "  energy drift {drift:.2e} (largest |E − E₀| over the rows, relative to max(|E₀|, largest T))"
         );
+    }
+    if let (Some(t), Some(condition)) = (report.stopped_at, &scene.stop) {
+        println!("  stopped at t = {t} s, where `{condition}` first held");
     }
 
     println!("  wrote into {}:", out.display());

@@ -13,6 +13,7 @@ use anyhow::{Context, Result};
 use eom::output::plots::Mark;
 use eom::output::plots::ship::{ManoeuvrePlot, write_manoeuvre_plots};
 use eom::output::summary::write_atomically;
+use eom::output::text::printable;
 use eom::output::trajectory::push_number;
 use eom::ship::imo::{Criterion, criteria};
 use eom::ship::linear::{LinearModel, Nomoto, linearise};
@@ -336,7 +337,7 @@ fn criterion_json(criterion: &Criterion) -> Value {
 }
 
 fn print_report(scene: &ShipScene, outcomes: &[Outcome], judged: &[Criterion], out: &Path) {
-    println!("{}", scene.title);
+    println!("{}", printable(&scene.title));
     for (manoeuvre, outcome) in scene.manoeuvres.iter().zip(outcomes) {
         println!("  {}:", manoeuvre.name);
         for (key, value) in &outcome.figures.values {
@@ -388,7 +389,7 @@ pub fn linear(args: LinearArgs) -> Result<()> {
     let speed = scene.table.design_speed;
     println!(
         "{}: the linear model about the straight course at U₀ = {speed} m/s",
-        scene.title
+        printable(&scene.title)
     );
     let show = |what: &str, nomoto: Option<Nomoto>| match nomoto {
         Some(n) => println!(

@@ -14,7 +14,7 @@ use nalgebra::{RealField, SVector};
 use super::controller::{PiController, Verdict, initial_step};
 use super::{
     AdaptiveOptions, IntegrateError, OdeSystem, Probe, Stats, check_finite, check_interval,
-    explain_failure, lit, to_f64,
+    explain_failure, first_time_holding, lit, to_f64,
 };
 
 /// An embedded explicit Runge–Kutta pair with `S` stages, as [`run`] steps it.
@@ -275,7 +275,7 @@ pub(crate) fn sample<P, const S: usize, T, const N: usize>(
     system: &(impl OdeSystem<T, N> + ?Sized),
     (t0, y0, t_end): (T, SVector<T, N>, T),
     every: T,
-    (mut check, mut emit): (
+    (check, emit): (
         impl FnMut(T, &SVector<T, N>) -> bool,
         impl FnMut(T, &SVector<T, N>) -> bool,
     ),
@@ -284,40 +284,161 @@ where
     P: EmbeddedPair<S>,
     T: RealField + Copy,
 {
-    if !(every.is_finite() && every > T::zero()) {
+    let mut rows = RowClock::new(t0, every);
+    let never = |_: T, _: &SVector<T, N>| false;
+    let handlers = (check, never, emit);
+    let reached =
+        sample_until::<P, S, T, N>(run_state, system, (t0, y0, t_end), &mut rows, handlers)?;
+    Ok(reached.state)
+}
+
+/// Sample times `origin + k·every`, numbered so that a run cut into pieces (at a load
+/// table's breakpoints) goes on with the next row where the last piece stopped.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct RowClock<T> {
+    origin: T,
+    every: T,
+    /// The number k of the next row to write.
+    pub(crate) next: usize,
+}
+
+impl<T: RealField + Copy> RowClock<T> {
+    /// Rows at `origin + k·every` from k = 0.
+    pub(crate) fn new(origin: T, every: T) -> Self {
+        Self {
+            origin,
+            every,
+            next: 0,
+        }
+    }
+
+    /// The time of row k, computed, not accumulated.
+    pub(crate) fn time(&self, k: usize) -> T {
+        self.origin + self.every * lit::<T>(k as f64)
+    }
+
+    /// The time of the next row.
+    pub(crate) fn next_time(&self) -> T {
+        self.time(self.next)
+    }
+}
+
+/// Where a run ended: at its end time, or where its stop condition first held.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Reached<T: RealField + Copy, const N: usize> {
+    /// The time.
+    pub(crate) t: T,
+    /// The state there.
+    pub(crate) state: SVector<T, N>,
+    /// Whether the stop condition ended the run.
+    pub(crate) stopped: bool,
+}
+
+/// As [`sample`], continuing the rows of `rows` (those at or before `t0` are the start's),
+/// and ending the run where `stop(t, y)` first holds: on the step at whose end it holds,
+/// the dense output is searched by bisection for the first time it holds, to adjacent
+/// floating-point numbers ([`first_time_holding`]); the rows before that time are emitted,
+/// then a last row there. A condition that holds at `t0` ends the run at once.
+pub(crate) fn sample_until<P, const S: usize, T, const N: usize>(
+    (options, stats): (&AdaptiveOptions, &mut Stats),
+    system: &(impl OdeSystem<T, N> + ?Sized),
+    (t0, y0, t_end): (T, SVector<T, N>, T),
+    rows: &mut RowClock<T>,
+    (mut check, mut stop, mut emit): (
+        impl FnMut(T, &SVector<T, N>) -> bool,
+        impl FnMut(T, &SVector<T, N>) -> bool,
+        impl FnMut(T, &SVector<T, N>) -> bool,
+    ),
+) -> Result<Reached<T, N>, IntegrateError>
+where
+    P: EmbeddedPair<S>,
+    T: RealField + Copy,
+{
+    if !(rows.every.is_finite() && rows.every > T::zero()) {
         return Err(IntegrateError::InvalidStep {
             name: "every",
-            value: to_f64(every),
+            value: to_f64(rows.every),
         });
     }
     check_interval(t0, t_end)?;
-    let time = |k: usize| t0 + every * lit::<T>(k as f64);
-    if !emit(t0, &y0) {
-        return Err(IntegrateError::Stopped { t: to_f64(t0) });
+    while rows.next_time() <= t0 {
+        if !emit(rows.next_time(), &y0) {
+            return Err(IntegrateError::Stopped { t: to_f64(t0) });
+        }
+        rows.next += 1;
     }
-    let mut next = 1;
-    let y_end = run::<P, S, T, N>(run_state, system, (t0, y0, t_end), |step| {
+    if stop(t0, &y0) {
+        return Ok(Reached {
+            t: t0,
+            state: y0,
+            stopped: true,
+        });
+    }
+    let mut ended = None;
+    let run_state = (options, &mut *stats);
+    let result = run::<P, S, T, N>(run_state, system, (t0, y0, t_end), |step| {
         let t_new = step.t_old + step.h;
         if !check(t_new, step.y_new) {
             return None;
         }
-        if time(next) > t_new || time(next) > t_end {
+        let stopping = stop(t_new, step.y_new);
+        let next = rows.next_time();
+        if !stopping && (next > t_new || next > t_end) {
             return Some(0);
         }
         let state_at = P::dense_output(system, step);
-        while time(next) <= t_new && time(next) <= t_end {
-            if !emit(time(next), &state_at(time(next))) {
+        let until = if stopping {
+            let t = first_time_holding(step.t_old, t_new, |t| stop(t, &state_at(t)));
+            let state = if t == t_new { *step.y_new } else { state_at(t) };
+            (t, state)
+        } else {
+            (t_new, *step.y_new)
+        };
+        // A row at the stopping time itself is the last row, written below.
+        let before = |t: T| if stopping { t < until.0 } else { t <= until.0 };
+        while rows.next_time() <= t_end && before(rows.next_time()) {
+            let t = rows.next_time();
+            if !emit(t, &state_at(t)) {
                 return None;
             }
-            next += 1;
+            rows.next += 1;
+        }
+        if stopping {
+            if rows.next_time() == until.0 {
+                rows.next += 1;
+            }
+            if emit(until.0, &until.1) {
+                ended = Some(until);
+            }
+            return None;
         }
         Some(P::DENSE_RHS)
-    })?;
+    });
+    let y_end = match (result, ended) {
+        (Ok(y_end), _) => y_end,
+        (Err(IntegrateError::Stopped { .. }), Some((t, state))) => {
+            // The step that stopped built its dense output.
+            stats.rhs_evals += P::DENSE_RHS;
+            return Ok(Reached {
+                t,
+                state,
+                stopped: true,
+            });
+        }
+        (Err(e), _) => return Err(e),
+    };
     // A sample time at t_end that rounding kept out of the last step gets the end state.
-    if time(next) <= t_end && !emit(time(next), &y_end) {
-        return Err(IntegrateError::Stopped { t: to_f64(t_end) });
+    if rows.next_time() <= t_end {
+        if !emit(rows.next_time(), &y_end) {
+            return Err(IntegrateError::Stopped { t: to_f64(t_end) });
+        }
+        rows.next += 1;
     }
-    Ok(y_end)
+    Ok(Reached {
+        t: t_end,
+        state: y_end,
+        stopped: false,
+    })
 }
 
 /// Checks that the output times are ascending, none before `t0`, and that `out` holds one

@@ -19,7 +19,10 @@ use nalgebra::{RealField, SVector};
 use super::adaptive::{self, AcceptedStep, EmbeddedPair, combine};
 use super::controller::{in_units_of, weight};
 use super::dop853_dense::interpolant;
-use super::{AdaptiveOptions, IntegrateError, Integrator, OdeSystem, Statistics, Stats, lit};
+use super::{
+    AdaptiveOptions, IntegrateError, Integrator, OdeSystem, Reached, RowClock, Statistics, Stats,
+    lit,
+};
 
 /// The rows aᵢⱼ of stages 2–12 (Hairer's `dop853.f`).
 const A: [&[f64]; 11] = [
@@ -244,6 +247,28 @@ impl Dop853 {
         let run_state = (&self.options, &mut self.stats);
         let interval = (t0, y0, t_end);
         adaptive::sample::<Self, 12, T, N>(run_state, system, interval, every, (check, emit))
+    }
+
+    /// As [`sample_every_checked`](Self::sample_every_checked), continuing the rows of
+    /// `rows`, and ending where `stop(t, y)` first holds, located on the dense output of the
+    /// step that reaches it (see `adaptive::sample_until`).
+    pub(crate) fn sample_until<T, const N: usize, S>(
+        &mut self,
+        system: &S,
+        interval: (T, SVector<T, N>, T),
+        rows: &mut RowClock<T>,
+        handlers: (
+            impl FnMut(T, &SVector<T, N>) -> bool,
+            impl FnMut(T, &SVector<T, N>) -> bool,
+            impl FnMut(T, &SVector<T, N>) -> bool,
+        ),
+    ) -> Result<Reached<T, N>, IntegrateError>
+    where
+        T: RealField + Copy,
+        S: OdeSystem<T, N> + ?Sized,
+    {
+        let run_state = (&self.options, &mut self.stats);
+        adaptive::sample_until::<Self, 12, T, N>(run_state, system, interval, rows, handlers)
     }
 }
 

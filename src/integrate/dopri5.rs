@@ -17,7 +17,9 @@ use nalgebra::{RealField, SVector};
 
 use super::adaptive::{self, AcceptedStep, EmbeddedPair, combine};
 use super::controller::scaled_rms;
-use super::{AdaptiveOptions, IntegrateError, Integrator, OdeSystem, Statistics, Stats};
+use super::{
+    AdaptiveOptions, IntegrateError, Integrator, OdeSystem, Reached, RowClock, Statistics, Stats,
+};
 
 /// The nodes cᵢ.
 const C: [f64; 7] = [0.0, 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0, 1.0, 1.0];
@@ -153,6 +155,28 @@ impl Dopri5 {
         let run_state = (&self.options, &mut self.stats);
         let interval = (t0, y0, t_end);
         adaptive::sample::<Self, 7, T, N>(run_state, system, interval, every, (check, emit))
+    }
+
+    /// As [`sample_every_checked`](Self::sample_every_checked), continuing the rows of
+    /// `rows`, and ending where `stop(t, y)` first holds, located on the dense output of the
+    /// step that reaches it (see `adaptive::sample_until`).
+    pub(crate) fn sample_until<T, const N: usize, S>(
+        &mut self,
+        system: &S,
+        interval: (T, SVector<T, N>, T),
+        rows: &mut RowClock<T>,
+        handlers: (
+            impl FnMut(T, &SVector<T, N>) -> bool,
+            impl FnMut(T, &SVector<T, N>) -> bool,
+            impl FnMut(T, &SVector<T, N>) -> bool,
+        ),
+    ) -> Result<Reached<T, N>, IntegrateError>
+    where
+        T: RealField + Copy,
+        S: OdeSystem<T, N> + ?Sized,
+    {
+        let run_state = (&self.options, &mut self.stats);
+        adaptive::sample_until::<Self, 7, T, N>(run_state, system, interval, rows, handlers)
     }
 }
 

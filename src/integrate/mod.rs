@@ -33,6 +33,7 @@ mod rk4;
 mod stats;
 mod symplectic_euler;
 
+pub(crate) use adaptive::{Reached, RowClock};
 pub use controller::{AdaptiveOptions, min_rtol};
 pub use dop853::Dop853;
 pub use dopri5::Dopri5;
@@ -202,6 +203,29 @@ pub(crate) fn explain_failure<S: ?Sized>(
     };
     replay(&probe);
     (probe.cause.take(), probe.calls.get())
+}
+
+/// The first time in `(lo, hi]` at which `holds` is true, given that it is false at `lo`
+/// and true at `hi`: bisection until `lo` and `hi` are adjacent floating-point numbers
+/// (about 50 halvings of a step), so the time found is exact to the last bit of the
+/// solution `holds` reads. Where the condition holds and fails again within the interval,
+/// it is one of the times it starts to hold.
+pub(crate) fn first_time_holding<T: RealField + Copy>(
+    mut lo: T,
+    mut hi: T,
+    mut holds: impl FnMut(T) -> bool,
+) -> T {
+    loop {
+        let mid = lo + (hi - lo) * lit::<T>(0.5);
+        if mid <= lo || mid >= hi {
+            return hi;
+        }
+        if holds(mid) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
 }
 
 /// A fixed step `h` as it is used: the interval is cut into `n = ⌈(t_end − t0)/h⌉` equal steps

@@ -7,6 +7,10 @@
 //!  "warnings", …what the family adds}
 //! ```
 //!
+//! A scene with `integrator.stop_when` adds `"stop_when"` (the condition as written) and
+//! `"stopped_at"` (the time it first held and ended the run, `null` if it never held);
+//! `final_time` and `final_state` are then where it stopped.
+//!
 //! A run that stopped early still has its summary: `"interrupted": true` after Ctrl-C, or
 //! `"error"` with the message of what stopped it; `final_time` and `final_state` are then its
 //! last row's.

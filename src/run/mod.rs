@@ -8,6 +8,20 @@
 //! fixed-step method integrates each output interval in equal steps no longer than the
 //! scene's step, so every row lands on its time.
 //!
+//! A run is cut at the breakpoints of the loads given as time tables (see
+//! [`crate::scene::table`]), and each piece is integrated on its own, so that no step
+//! straddles a jump: a fixed-step method lands on each breakpoint, an adaptive one starts
+//! afresh from it (its step-size heuristic, its first stage), as it must after a
+//! discontinuity; the rows go on at k·every across the cuts.
+//!
+//! A scene's stop condition (`integrator.stop_when`, [`StopCondition`]) is evaluated at the
+//! end of every step. On the step where it first holds, the first time it holds is found by
+//! bisection to adjacent floating-point numbers: on the dense output of an adaptive method,
+//! and for a fixed-step method by taking the one step again from its start to each trial
+//! time. The run ends there with a last row at that time, and [`Report::stopped_at`] says
+//! when. The time found is the integrator's own crossing, to the last bit of t; its error
+//! against the exact motion is the integrator's error there.
+//!
 //! A run that cannot go on stops with a [`RunError`] that says why, where and what to change,
 //! and [`run_reporting`] reports what it did up to there. Every accepted step is checked, at
 //! the cost of a few arithmetic operations (see [`guard`]): an Euler-angle attitude near
@@ -39,11 +53,11 @@
 //! ```
 
 use crate::integrate::{
-    Dop853, Dopri5, Euler, IntegrateError, Integrator, LieMidpoint, RigidRotation, Rk4, Statistics,
-    Stats, SymplecticEuler,
+    Dop853, Dopri5, Euler, IntegrateError, Integrator, LieMidpoint, OdeSystem, Reached,
+    RigidRotation, Rk4, RowClock, Statistics, Stats, SymplecticEuler, first_time_holding,
 };
-use crate::models::{Family, Kinematics, Model, Visitor};
-use crate::scene::{Body, Method, Scene, SceneLoads};
+use crate::models::{Family, Model, Visitor};
+use crate::scene::{Body, Method, Scene, StopCondition};
 use guard::Guard;
 use nalgebra::{Matrix3, Quaternion, SVector, UnitQuaternion, Vector3};
 use std::ops::Range;
@@ -91,6 +105,8 @@ pub struct Report {
     /// What the run did not stop for but a reader should know: a fixed step past its
     /// accuracy bound for the rate of turn (see [`guard`]).
     pub warnings: Vec<String>,
+    /// The time at which the scene's stop condition first held and ended the run, if it did.
+    pub stopped_at: Option<f64>,
 }
 
 /// Why a run did not finish.
@@ -316,55 +332,25 @@ impl Visitor for Runner<'_> {
         };
         let y0 = SVector::<f64, N>::from_column_slice(&scene.initial);
         let clock = Instant::now();
-        let system = model.driven_by(loads.prepared());
-        let spec = &scene.integrator;
-        let interval = (0.0, y0, spec.end_time);
         let mut guard = Guard::new(scene);
         let (result, stats) = if !guard.check(0.0, y0.as_slice()) {
             (Err(IntegrateError::Stopped { t: 0.0 }), Stats::default())
+        } else if scene.integrator.method == Method::LieMidpoint {
+            free_rotation(scene, &mut emit)
         } else {
-            // An adaptive method samples the rows by dense output, the guard checking every
-            // accepted step.
-            macro_rules! sampled {
-                ($method:ident) => {{
-                    let mut method =
-                        $method::new(spec.adaptive.expect("an adaptive method has options"));
-                    let check = |t: f64, y: &SVector<f64, N>| guard.check(t, y.as_slice());
-                    let result = method.sample_every_checked(
-                        &system,
-                        interval,
-                        scene.every,
-                        check,
-                        &mut emit,
-                    );
-                    (result, method.stats())
-                }};
-            }
-            match spec.method {
-                Method::Dop853 => sampled!(Dop853),
-                Method::Dopri5 => sampled!(Dopri5),
-                Method::Euler => {
-                    let mut method = Euler::new(step(scene));
-                    fixed_steps(&mut method, (&system, y0), scene, &mut guard, &mut emit)
-                }
-                Method::Rk4 => {
-                    let mut method = Rk4::new(step(scene));
-                    fixed_steps(&mut method, (&system, y0), scene, &mut guard, &mut emit)
-                }
-                Method::SymplecticEuler => {
-                    let mut method = SymplecticEuler::new(step(scene), kicked(scene));
-                    fixed_steps(&mut method, (&system, y0), scene, &mut guard, &mut emit)
-                }
-                Method::LieMidpoint => free_rotation(scene, &mut emit),
-            }
+            pieces(model, scene, y0, &mut guard, &mut emit)
         };
         let wall_seconds = clock.elapsed().as_secs_f64();
         let error = result.as_ref().err().map(|e| match e {
             IntegrateError::Stopped { t } => guard.stop().unwrap_or(RunError::Stopped { t: *t }),
             other => run_error(other.clone(), &scene.state_names()),
         });
+        let stopped_at = match &result {
+            Ok(reached) if reached.stopped => Some(reached.t),
+            _ => None,
+        };
         let (final_time, final_state) = match (result, rows.last.take()) {
-            (Ok(end), _) => (spec.end_time, end.as_slice().to_vec()),
+            (Ok(end), _) => (end.t, end.state.as_slice().to_vec()),
             (Err(_), Some(last)) => last,
             (Err(_), None) => (0.0, scene.initial.clone()),
         };
@@ -376,7 +362,8 @@ impl Visitor for Runner<'_> {
             final_time,
             final_state,
             energy_drift: rows.drift(),
-            warnings: [spec.warnings(), guard.warnings()].concat(),
+            warnings: [scene.integrator.warnings(), guard.warnings()].concat(),
+            stopped_at,
         };
         Outcome { report, error }
     }
@@ -400,55 +387,159 @@ fn kicked(scene: &Scene) -> Range<usize> {
     }
 }
 
-/// The times a fixed-step run stops at: every row time k·every ≤ end_time (k ≥ 1), as
-/// `(time, is_a_row)`, then the end time if it is not a row time itself. Made as the run goes:
-/// a scene may ask for up to [`MAX_ROWS`](crate::scene::MAX_ROWS) rows.
-fn stops(scene: &Scene) -> impl Iterator<Item = (f64, bool)> + '_ {
-    let end = scene.integrator.end_time;
-    let mut k = 0u64;
-    let mut done = false;
-    std::iter::from_fn(move || {
-        if done {
-            return None;
-        }
-        k += 1;
-        let t = k as f64 * scene.every;
-        if t <= end {
-            done = t == end;
-            return Some((t, true));
-        }
-        done = true;
-        Some((end, false))
-    })
+/// What a piece of a run returns: where it ended, and what it cost.
+type Piece<const N: usize> = (Result<Reached<f64, N>, IntegrateError>, Stats);
+
+/// Adds one run's counts to a total.
+fn add(total: &mut Stats, stats: Stats) {
+    total.steps += stats.steps;
+    total.rejected += stats.rejected;
+    total.rhs_evals += stats.rhs_evals;
 }
 
-/// A fixed-step method over each output interval in turn (equal steps of at most the
-/// scene's step, so that each row lands on its time), its statistics summed. `guard` checks
-/// the state after every step; what it finds stops the run at the end of that interval,
-/// before its row is written.
-fn fixed_steps<I, S, const N: usize>(
-    method: &mut I,
-    (system, y0): (&S, SVector<f64, N>),
+/// The run cut at the breakpoints of the loads' time tables that fall inside it, each piece
+/// integrated on its own with the loads read on that piece
+/// ([`SceneLoads::prepared_on`](crate::scene::SceneLoads::prepared_on)), the rows going on
+/// across the cuts; a scene without tables is one piece.
+fn pieces<Mo: Model<f64, N, M>, const N: usize, const M: usize>(
+    model: &Mo,
     scene: &Scene,
+    y0: SVector<f64, N>,
     guard: &mut Guard,
     emit: &mut impl FnMut(f64, &SVector<f64, N>) -> bool,
-) -> (Result<SVector<f64, N>, IntegrateError>, Stats)
+) -> Piece<N> {
+    let end = scene.integrator.end_time;
+    let mut cuts: Vec<f64> = (scene.loads.breakpoints().into_iter())
+        .filter(|t| *t > 0.0 && *t < end)
+        .collect();
+    cuts.push(end);
+    let mut rows = RowClock::new(0.0, scene.every);
+    let mut total = Stats::default();
+    let mut at = Reached {
+        t: 0.0,
+        state: y0,
+        stopped: false,
+    };
+    for b in cuts {
+        let system = model.driven_by(scene.loads.prepared_on(at.t, b));
+        let interval = (at.t, at.state, b);
+        let (result, stats) = piece(&system, scene, interval, &mut rows, guard, emit);
+        add(&mut total, stats);
+        match result {
+            Ok(reached) if !reached.stopped => at = reached,
+            other => return (other, total),
+        }
+    }
+    (Ok(at), total)
+}
+
+/// One piece of a run, from `a` to `b`, with the scene's method: the guard checking every
+/// step, the stop condition ending it where it first holds.
+fn piece<S: OdeSystem<f64, N>, const N: usize>(
+    system: &S,
+    scene: &Scene,
+    interval: (f64, SVector<f64, N>, f64),
+    rows: &mut RowClock<f64>,
+    guard: &mut Guard,
+    emit: &mut impl FnMut(f64, &SVector<f64, N>) -> bool,
+) -> Piece<N> {
+    let condition = scene.stop.as_ref();
+    let holds = |c: &StopCondition, t: f64, y: &SVector<f64, N>| c.holds(t, y.as_slice());
+    let stop = |t: f64, y: &SVector<f64, N>| condition.is_some_and(|c| holds(c, t, y));
+    let stop_fixed = condition.map(|c| move |t: f64, y: &SVector<f64, N>| holds(c, t, y));
+    let stop_fixed = stop_fixed
+        .as_ref()
+        .map(|f| f as &dyn Fn(f64, &SVector<f64, N>) -> bool);
+    // An adaptive method samples the rows by dense output, the guard checking every
+    // accepted step.
+    macro_rules! sampled {
+        ($method:ident) => {{
+            let options = scene.integrator.adaptive;
+            let mut method = $method::new(options.expect("an adaptive method has options"));
+            let check = |t: f64, y: &SVector<f64, N>| guard.check(t, y.as_slice());
+            let result = method.sample_until(system, interval, rows, (check, stop, &mut *emit));
+            (result, method.stats())
+        }};
+    }
+    let method = scene.integrator.method;
+    if method.is_adaptive() {
+        return match method {
+            Method::Dopri5 => sampled!(Dopri5),
+            _ => sampled!(Dop853),
+        };
+    }
+    let fixed = (interval, rows, stop_fixed);
+    match method {
+        Method::Euler => fixed_steps(&mut Euler::new(step(scene)), system, fixed, guard, emit),
+        Method::Rk4 => fixed_steps(&mut Rk4::new(step(scene)), system, fixed, guard, emit),
+        Method::SymplecticEuler => {
+            let mut method = SymplecticEuler::new(step(scene), kicked(scene));
+            fixed_steps(&mut method, system, fixed, guard, emit)
+        }
+        Method::Dop853 | Method::Dopri5 => unreachable!("adaptive methods sample above"),
+        Method::LieMidpoint => unreachable!("lie-midpoint runs as free_rotation"),
+    }
+}
+
+/// A stop condition as a fixed-step run evaluates it.
+type Stop<'a, const N: usize> = Option<&'a dyn Fn(f64, &SVector<f64, N>) -> bool>;
+
+/// A fixed-step method from `a` to `b` over each output interval in turn (equal steps of at
+/// most the scene's step, so that each row lands on its time, and the last on `b`), its
+/// statistics summed. `guard` checks the state after every step; what it finds stops the run
+/// at the end of that interval, before its row is written. Where `stop` first holds at the
+/// end of a step, the step is taken again to trial times for the first time it holds
+/// ([`locate`]) and the run ends there.
+fn fixed_steps<I, S, const N: usize>(
+    method: &mut I,
+    system: &S,
+    ((a, y_a, b), rows, stop): ((f64, SVector<f64, N>, f64), &mut RowClock<f64>, Stop<'_, N>),
+    guard: &mut Guard,
+    emit: &mut impl FnMut(f64, &SVector<f64, N>) -> bool,
+) -> Piece<N>
 where
     I: Integrator<f64, N, S>,
 {
     let mut total = Stats::default();
-    let mut y = y0;
-    let mut t = 0.0;
-    if !emit(t, &y) {
-        return (Err(IntegrateError::Stopped { t }), total);
+    let (mut t, mut y) = (a, y_a);
+    while rows.next_time() <= a {
+        if !emit(rows.next_time(), &y) {
+            return (Err(IntegrateError::Stopped { t }), total);
+        }
+        rows.next += 1;
     }
-    for (t_next, is_row) in stops(scene) {
+    if stop.is_some_and(|stop| stop(t, &y)) {
+        let stopped = true;
+        return (
+            Ok(Reached {
+                t,
+                state: y,
+                stopped,
+            }),
+            total,
+        );
+    }
+    loop {
+        let (t_next, is_row) = match rows.next_time() {
+            row if row <= b => (row, true),
+            _ => (b, false),
+        };
+        let mut start = (t, y);
+        let mut crossed = None;
         let result = method.integrate_with(system, t, y, t_next, |t, y| {
+            if crossed.is_some() {
+                return;
+            }
             guard.check(t, y.as_slice());
+            if let Some(stop) = stop {
+                if stop(t, y) {
+                    crossed = Some((start, t));
+                } else {
+                    start = (t, *y);
+                }
+            }
         });
-        let stats = method.stats();
-        total.steps += stats.steps;
-        total.rhs_evals += stats.rhs_evals;
+        add(&mut total, method.stats());
         if guard.stopped() {
             return (Err(IntegrateError::Stopped { t: t_next }), total);
         }
@@ -456,12 +547,87 @@ where
             Ok(next) => y = next,
             Err(e) => return (Err(e), total),
         }
+        if let (Some(stop), Some(((t0, y0), t1))) = (stop, crossed) {
+            let (reached, stats) = locate(method, system, (t0, y0, t1), stop);
+            add(&mut total, stats);
+            return match reached {
+                Ok(reached) => (last_row(reached, rows, emit), total),
+                Err(e) => (Err(e), total),
+            };
+        }
         t = t_next;
-        if is_row && !emit(t, &y) {
-            return (Err(IntegrateError::Stopped { t }), total);
+        if is_row {
+            if !emit(t, &y) {
+                return (Err(IntegrateError::Stopped { t }), total);
+            }
+            rows.next += 1;
+        }
+        if t >= b {
+            let stopped = false;
+            return (
+                Ok(Reached {
+                    t,
+                    state: y,
+                    stopped,
+                }),
+                total,
+            );
         }
     }
-    (Ok(y), total)
+}
+
+/// The first time in `(t0, t1]` at which `stop` holds, for a fixed-step method whose step from
+/// `(t0, y0)` to `t1` made it hold: the one step is taken again from `t0` to each trial time
+/// of a bisection ([`first_time_holding`]).
+fn locate<I, S, const N: usize>(
+    method: &mut I,
+    system: &S,
+    (t0, y0, t1): (f64, SVector<f64, N>, f64),
+    stop: &dyn Fn(f64, &SVector<f64, N>) -> bool,
+) -> Piece<N>
+where
+    I: Integrator<f64, N, S>,
+{
+    let mut total = Stats::default();
+    let mut failure = None;
+    let mut step_to = |t: f64| {
+        let result = method.integrate(system, t0, y0, t);
+        add(&mut total, method.stats());
+        result
+    };
+    let t = first_time_holding(t0, t1, |t| match step_to(t) {
+        Ok(y) => stop(t, &y),
+        Err(e) => {
+            failure = Some(e);
+            true
+        }
+    });
+    let reached = match failure {
+        Some(e) => Err(e),
+        None => step_to(t).map(|state| Reached {
+            t,
+            state,
+            stopped: true,
+        }),
+    };
+    (reached, total)
+}
+
+/// Writes the row at which a stop condition ended the run (it takes the place of a row due
+/// at that very time).
+fn last_row<const N: usize>(
+    reached: Reached<f64, N>,
+    rows: &mut RowClock<f64>,
+    emit: &mut impl FnMut(f64, &SVector<f64, N>) -> bool,
+) -> Result<Reached<f64, N>, IntegrateError> {
+    if rows.next_time() == reached.t {
+        rows.next += 1;
+    }
+    if emit(reached.t, &reached.state) {
+        Ok(reached)
+    } else {
+        Err(IntegrateError::Stopped { t: reached.t })
+    }
 }
 
 /// A free body's rotation, `[p, q, r, q0, q1, q2, q3]`, for the geometric integrator.
@@ -475,32 +641,45 @@ impl RigidRotation<f64> for FreeRotation {
     }
 }
 
-/// A free spatial body with the Lie midpoint method: the rotation by the geometric
-/// integrator, the translation exactly (with no force the velocity of G is constant in
-/// space: v(t) = R(t)ᵀ V, x(t) = x₀ + V t).
+/// A spatial body free of moments about G with the Lie midpoint method: the rotation by the
+/// geometric integrator, the translation exactly. Uniform gravity at G, the one load such a
+/// scene may have, exerts no moment about G and accelerates G by g along +Z whatever the
+/// attitude; so the velocity of G in space is V(t) = V₀ + g t Z, its position
+/// x(t) = x₀ + V₀ t + ½ g t² Z, and its body components v(t) = R(t)ᵀ V(t).
 fn free_rotation<const N: usize>(
     scene: &Scene,
     emit: &mut impl FnMut(f64, &SVector<f64, N>) -> bool,
-) -> (Result<SVector<f64, N>, IntegrateError>, Stats) {
-    let Body::Spatial { inertia, .. } = &scene.body else {
-        unreachable!("lie-midpoint is refused for any scene but a free spatial body");
+) -> Piece<N> {
+    let Body::Spatial { inertia, mass } = &scene.body else {
+        unreachable!("lie-midpoint is refused for any scene but a spatial body");
     };
-    debug_assert!(matches!(
-        scene.loads,
-        SceneLoads::Spatial(crate::scene::SpatialLoads {
-            kinematics: Kinematics::Quaternion,
-            ..
-        })
-    ));
+    debug_assert!(scene.loads.rotation_is_torque_free());
+    let g = scene.loads.uniform_gravity_only().unwrap_or(0.0) / mass;
     let x = &scene.initial;
     let attitude =
         |s: &[f64]| UnitQuaternion::from_quaternion(Quaternion::new(s[0], s[1], s[2], s[3]));
     let velocity_in_space = attitude(&x[9..13]) * Vector3::new(x[0], x[1], x[2]);
     let position = Vector3::new(x[6], x[7], x[8]);
+    // A free body's terms stand alone, so that its rows keep their bits (a −0 stays −0).
+    let fall = Vector3::new(0.0, 0.0, g);
+    let velocity_at = |t: f64| {
+        if g == 0.0 {
+            velocity_in_space
+        } else {
+            velocity_in_space + fall * t
+        }
+    };
+    let position_at = |t: f64| {
+        if g == 0.0 {
+            position + velocity_in_space * t
+        } else {
+            position + velocity_in_space * t + fall * (0.5 * t * t)
+        }
+    };
     let whole = |t: f64, rotation: &SVector<f64, 7>| -> SVector<f64, N> {
         let q = attitude(&rotation.as_slice()[3..7]);
-        let v = q.inverse() * velocity_in_space;
-        let p = position + velocity_in_space * t;
+        let v = q.inverse() * velocity_at(t);
+        let p = position_at(t);
         let mut state = SVector::<f64, N>::zeros();
         state.as_mut_slice()[..3].copy_from_slice(v.as_slice());
         state.as_mut_slice()[3..6].copy_from_slice(&rotation.as_slice()[..3]);
@@ -515,14 +694,28 @@ fn free_rotation<const N: usize>(
     let mut method = LieMidpoint::new(step(scene));
     // Implicit midpoint is stable for every step on the imaginary axis, and the quaternion
     // has no singular attitude: nothing to check.
+    let stop = scene
+        .stop
+        .as_ref()
+        .map(|c| move |t: f64, r: &SVector<f64, 7>| c.holds(t, whole(t, r).as_slice()));
+    let stop = stop
+        .as_ref()
+        .map(|f| f as &dyn Fn(f64, &SVector<f64, 7>) -> bool);
+    let mut rows = RowClock::new(0.0, scene.every);
+    let interval = (0.0, start, scene.integrator.end_time);
     let (result, stats) = fixed_steps(
         &mut method,
-        (&system, start),
-        scene,
+        &system,
+        (interval, &mut rows, stop),
         &mut Guard::none(),
         &mut |t, r| emit(t, &whole(t, r)),
     );
-    (result.map(|r| whole(scene.integrator.end_time, &r)), stats)
+    let whole_reached = |r: Reached<f64, 7>| Reached {
+        t: r.t,
+        state: whole(r.t, &r.state),
+        stopped: r.stopped,
+    };
+    (result.map(whole_reached), stats)
 }
 
 /// An integration error as a run error, naming the state component or the load input.

@@ -78,6 +78,8 @@ fn end_state(scene: &Scene, spec: IntegratorSpec) -> Result<Report, RunError> {
     let mut once = scene.clone();
     once.integrator = spec;
     once.every = spec.end_time;
+    // The settings are compared at the end time, which a stop condition would move.
+    once.stop = None;
     run(&once, &mut Discard)
 }
 
@@ -90,13 +92,7 @@ fn methods(scene: &Scene) -> Vec<Method> {
         Method::Dopri5,
         Method::Dop853,
     ];
-    let free_quaternion = matches!(
-        scene.loads,
-        SceneLoads::Spatial(crate::scene::SpatialLoads {
-            kinematics: crate::models::Kinematics::Quaternion,
-            ..
-        })
-    ) && scene.loads.is_free();
+    let free_quaternion = scene.loads.rotation_is_torque_free();
     if free_quaternion {
         methods.push(Method::LieMidpoint);
     }

@@ -6,18 +6,24 @@ use super::file::{self, GivenKeys, SceneFile};
 use super::reference;
 use super::{
     Body, DEFAULT_MAX_STEPS, DEFAULT_ROWS, DEFAULT_TOLERANCE, IntegratorSpec, MAX_ROWS, Method,
-    Problem, SceneError, SceneLoads, Selection, select_spatial,
+    Problem, SceneError, SceneLoads, Selection, StopCondition, select_spatial,
 };
 use crate::Short;
 use crate::integrate::AdaptiveOptions;
 use crate::models::{AnyModel, Family, Kinematics, ModelInfo, Symmetry};
 use crate::{InertiaTensor, ParameterError, PendulumParameters};
-use nalgebra::{Matrix3, UnitQuaternion};
+use nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
 use std::path::Path;
 
 /// The checks of one scene file, each naming its key.
 pub(super) struct Checker<'a> {
     pub(super) name: &'a str,
+}
+
+/// A planar body's initial velocity of G in body axes (u, v) and in space axes (Ẋ, Ẏ).
+struct PlanarVelocity {
+    body: [f64; 2],
+    space: [f64; 2],
 }
 
 impl Checker<'_> {
@@ -317,32 +323,33 @@ impl Checker<'_> {
                 scalar("theta_deg", i.theta_deg)?.to_radians(),
                 scalar("theta_dot", i.theta_dot)?,
             ],
-            Family::PlanarAtG | Family::PlanarMidship => vec![
-                scalar("u", i.u)?,
-                scalar("v", i.v)?,
-                scalar("r", i.r)?,
-                scalar("x", i.x)?,
-                scalar("y", i.y)?,
-                scalar("psi_deg", i.psi_deg)?.to_radians(),
-            ],
-            Family::PlanarSpaceFixed => {
-                // The scene gives surge and sway in body axes, as for the other planar
-                // families; the space-fixed state holds their space components.
-                let (u, v) = (scalar("u", i.u)?, scalar("v", i.v)?);
+            Family::PlanarAtG | Family::PlanarMidship => {
                 let psi = scalar("psi_deg", i.psi_deg)?.to_radians();
-                let (s, c) = psi.sin_cos();
+                let [u, v] = self.planar_velocity(i, psi)?.body;
+                vec![
+                    u,
+                    v,
+                    scalar("r", i.r)?,
+                    scalar("x", i.x)?,
+                    scalar("y", i.y)?,
+                    psi,
+                ]
+            }
+            Family::PlanarSpaceFixed => {
+                let psi = scalar("psi_deg", i.psi_deg)?.to_radians();
+                let [x_dot, y_dot] = self.planar_velocity(i, psi)?.space;
                 vec![
                     scalar("x", i.x)?,
                     scalar("y", i.y)?,
                     psi,
-                    u * c - v * s,
-                    u * s + v * c,
+                    x_dot,
+                    y_dot,
                     scalar("r", i.r)?,
                 ]
             }
             Family::Spatial => {
                 let mut state = Vec::with_capacity(13);
-                state.extend(self.finite3("initial.velocity", i.velocity)?);
+                state.extend(self.spatial_velocity(i)?);
                 state.extend(self.finite3("initial.rates", i.rates)?);
                 state.extend(self.finite3("initial.position", i.position)?);
                 state.extend(self.attitude(i, selection)?);
@@ -354,6 +361,65 @@ impl Checker<'_> {
                 state.extend(self.attitude(i, selection)?);
                 state
             }
+        })
+    }
+
+    /// The body velocity of G, (u, v, w): `initial.velocity` as given, or
+    /// `initial.velocity_space` turned into body axes by the attitude, v = Rᵀ V (R from body
+    /// to space axes, 4.56); never both.
+    fn spatial_velocity(&self, i: &file::InitialTable) -> Result<[f64; 3], SceneError> {
+        let Some(space) = i.velocity_space else {
+            return self.finite3("initial.velocity", i.velocity);
+        };
+        if i.velocity.is_some() {
+            return Err(self.invalid(
+                "initial.velocity_space",
+                "give the velocity of G in body axes (initial.velocity) or in space axes \
+                 (initial.velocity_space), not both",
+            ));
+        }
+        let space = self.finite3("initial.velocity_space", Some(space))?;
+        let [roll, pitch, yaw] = self
+            .finite3("initial.attitude_deg", i.attitude_deg)?
+            .map(f64::to_radians);
+        let to_space = Rotation3::from_euler_angles(roll, pitch, yaw);
+        let body = to_space.transpose() * Vector3::from(space);
+        Ok([body.x, body.y, body.z])
+    }
+
+    /// A planar body's velocity of G in both axes: `initial.u`, `initial.v` in body axes, or
+    /// `initial.x_dot`, `initial.y_dot` in space axes, turned by the heading ψ; never both.
+    fn planar_velocity(
+        &self,
+        i: &file::InitialTable,
+        psi: f64,
+    ) -> Result<PlanarVelocity, SceneError> {
+        let scalar =
+            |key: &str, v: Option<f64>| self.finite(&format!("initial.{key}"), v.unwrap_or(0.0));
+        let (s, c) = psi.sin_cos();
+        let in_space = i.x_dot.is_some() || i.y_dot.is_some();
+        if !in_space {
+            let (u, v) = (scalar("u", i.u)?, scalar("v", i.v)?);
+            return Ok(PlanarVelocity {
+                body: [u, v],
+                space: [u * c - v * s, u * s + v * c],
+            });
+        }
+        if i.u.is_some() || i.v.is_some() {
+            let body = if i.u.is_some() { "u" } else { "v" };
+            let space = if i.x_dot.is_some() { "x_dot" } else { "y_dot" };
+            return Err(self.invalid(
+                &format!("initial.{space}"),
+                format!(
+                    "give the velocity of G in body axes (initial.u, initial.v) or in space \
+                     axes (initial.x_dot, initial.y_dot), not both: initial.{body} is given too"
+                ),
+            ));
+        }
+        let (x_dot, y_dot) = (scalar("x_dot", i.x_dot)?, scalar("y_dot", i.y_dot)?);
+        Ok(PlanarVelocity {
+            body: [c * x_dot + s * y_dot, -s * x_dot + c * y_dot],
+            space: [x_dot, y_dot],
         })
     }
 
@@ -378,7 +444,6 @@ impl Checker<'_> {
     pub(super) fn integrator(
         &self,
         file: &SceneFile,
-        selection: &Selection,
         loads: &SceneLoads,
     ) -> Result<IntegratorSpec, SceneError> {
         let t = &file.integrator;
@@ -398,7 +463,7 @@ impl Checker<'_> {
             Some(n) => usize::try_from(n).unwrap_or(usize::MAX),
         };
         if method == Method::LieMidpoint {
-            self.lie_midpoint_applies(selection, loads)?;
+            self.lie_midpoint_applies(loads)?;
         }
         let (step, adaptive) = if method.is_adaptive() {
             if t.step.is_some() {
@@ -471,23 +536,51 @@ impl Checker<'_> {
         Ok(value)
     }
 
-    /// The geometric integrator turns a free body's attitude and rates (`RigidRotation`);
-    /// the translation of a free body is then exact.
-    fn lie_midpoint_applies(
-        &self,
-        selection: &Selection,
-        loads: &SceneLoads,
-    ) -> Result<(), SceneError> {
-        let free_quaternion =
-            selection.info.kinematics == Some(Kinematics::Quaternion) && loads.is_free();
-        if free_quaternion {
+    /// The geometric integrator turns a body's attitude and rates (`RigidRotation`) where no
+    /// moment acts about G: a free body, or one under uniform gravity at G alone; its
+    /// translation is then exact (constant velocity, or free fall).
+    fn lie_midpoint_applies(&self, loads: &SceneLoads) -> Result<(), SceneError> {
+        if loads.rotation_is_torque_free() {
             Ok(())
         } else {
             Err(self.invalid(
                 "integrator.method",
-                "lie-midpoint integrates the rotation of a free body: a spatial scene with quaternion kinematics and no loads",
+                "lie-midpoint integrates a rotation free of moments about G: a spatial scene \
+                 with quaternion kinematics and no loads but loads.gravity",
             ))
         }
+    }
+
+    /// `integrator.stop_when`, read against the model's state names; a condition that holds
+    /// at the start would end the run before it begins, and is refused.
+    pub(super) fn stop(
+        &self,
+        file: &SceneFile,
+        selection: &Selection,
+        initial: &[f64],
+    ) -> Result<Option<StopCondition>, SceneError> {
+        let Some(text) = &file.integrator.stop_when else {
+            return Ok(None);
+        };
+        let key = "integrator.stop_when";
+        let names: Vec<String> = selection
+            .info
+            .state
+            .iter()
+            .map(|s| s.to_lowercase())
+            .collect();
+        let condition =
+            StopCondition::parse(text, &names).map_err(|message| self.invalid(key, message))?;
+        if condition.holds(0.0, initial) {
+            let x = condition.index.map_or(0.0, |i| initial[i]);
+            return Err(self.invalid(
+                key,
+                format!(
+                    "`{condition}` holds at the start ({x}), so the run would end before it begins"
+                ),
+            ));
+        }
+        Ok(Some(condition))
     }
 
     pub(super) fn every(&self, file: &SceneFile, end_time: f64) -> Result<f64, SceneError> {

@@ -49,17 +49,21 @@ pub enum Problem {
     BodyFile(Box<BodyFileError>),
 }
 
-/// The longest line of a message, in characters: the TOML reader echoes the offending line of
-/// the file, and a generated scene's line may be 200 KB long.
+/// The longest line the TOML reader's message may echo from the file, in characters: it
+/// quotes the offending line, and a generated scene's line may be 200 KB long.
 pub const MESSAGE_LINE: usize = 120;
+/// The longest line of a schema message (serde's), in characters: long enough for its list
+/// of the keys a table has, short enough to cut a value it echoes.
+const SCHEMA_LINE: usize = 320;
 
 impl SceneError {
-    /// An error about `key` of `file`; every line of its message is cut to
-    /// [`MESSAGE_LINE`] characters.
+    /// An error about `key` of `file`. What the TOML reader and serde echo from the file is
+    /// cut: each line of a syntax error to [`MESSAGE_LINE`] characters, of a schema error to
+    /// 320; eom's own messages are kept whole.
     pub fn new(file: &str, key: &str, problem: Problem) -> Self {
         Self {
             file: file.to_owned(),
-            key: cut_lines(key),
+            key: cut_lines(key, SCHEMA_LINE),
             problem: problem.cut(),
         }
     }
@@ -68,18 +72,16 @@ impl SceneError {
 impl Problem {
     fn cut(self) -> Self {
         match self {
-            Problem::Syntax(text) => Problem::Syntax(cut_lines(&text)),
-            Problem::Schema(text) => Problem::Schema(cut_lines(&text)),
-            Problem::Missing(text) => Problem::Missing(cut_lines(&text)),
-            Problem::Invalid(text) => Problem::Invalid(cut_lines(&text)),
+            Problem::Syntax(text) => Problem::Syntax(cut_lines(&text, MESSAGE_LINE)),
+            Problem::Schema(text) => Problem::Schema(cut_lines(&text, SCHEMA_LINE)),
             other => other,
         }
     }
 }
 
-/// Each line cut to [`MESSAGE_LINE`] characters, the cut marked with "…".
-fn cut_lines(text: &str) -> String {
-    let cut = |line: &str| match line.char_indices().nth(MESSAGE_LINE - 1) {
+/// Each line cut to `width` characters, the cut marked with "…".
+fn cut_lines(text: &str, width: usize) -> String {
+    let cut = |line: &str| match line.char_indices().nth(width - 1) {
         Some((end, _)) => format!("{}…", &line[..end]),
         None => line.to_owned(),
     };
@@ -107,5 +109,14 @@ mod tests {
                 .all(|l| l.chars().count() <= MESSAGE_LINE + 30)
         );
         assert!(message.contains("…") && message.len() < 400, "{message}");
+        let value = format!("\"{}\"", "x".repeat(100_000));
+        let error = SceneError::new("s.toml", "title", Problem::Schema(value));
+        assert!(error.to_string().len() < 400);
+        let own = "a sentence of eom's own ".repeat(10);
+        let error = SceneError::new("s.toml", "k", Problem::Invalid(own.clone()));
+        assert!(
+            error.to_string().ends_with(&own),
+            "eom's own message is kept whole"
+        );
     }
 }

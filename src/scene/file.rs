@@ -72,6 +72,9 @@ pub struct ModelTable {
 pub struct InitialTable {
     /// Spatial: body velocity of G, (u, v, w), m/s.
     pub velocity: Option<[f64; 3]>,
+    /// Spatial: the velocity of G in space axes, (Ẋ, Ẏ, Ż), m/s: instead of `velocity`, and
+    /// turned into body axes through `attitude_deg` (v = Rᵀ V).
+    pub velocity_space: Option<[f64; 3]>,
     /// Spatial: body rates (p, q, r), rad/s.
     pub rates: Option<[f64; 3]>,
     /// Spatial: position of G in space axes, (x, y, z), m.
@@ -82,10 +85,16 @@ pub struct InitialTable {
     pub theta_deg: Option<f64>,
     /// Pendulum: the angular rate, rad/s.
     pub theta_dot: Option<f64>,
-    /// Planar: surge velocity (body axes), or Ẋ for a space-fixed scene, m/s.
+    /// Planar: surge velocity u in body axes, m/s (every planar family; the space-fixed
+    /// state is given its space components).
     pub u: Option<f64>,
-    /// Planar: sway velocity (body axes), or Ẏ for a space-fixed scene, m/s.
+    /// Planar: sway velocity v in body axes, m/s (as `u`).
     pub v: Option<f64>,
+    /// Planar: Ẋ, the velocity of G along X in space axes, m/s: with `y_dot`, instead of `u`
+    /// and `v`, turned into body axes through `psi_deg`.
+    pub x_dot: Option<f64>,
+    /// Planar: Ẏ, the velocity of G along Y in space axes, m/s (see `x_dot`).
+    pub y_dot: Option<f64>,
     /// Planar: yaw rate, rad/s.
     pub r: Option<f64>,
     /// Planar: position X in space axes, m.
@@ -106,21 +115,87 @@ pub struct LoadsTable {
     pub buoyancy: Option<f64>,
     /// The centre of buoyancy relative to G, body axes, m (spatial).
     pub buoyancy_centre: Option<[f64; 3]>,
-    /// A constant force in body axes, N: 3 entries (spatial) or 2 (planar).
-    pub force_body: Option<Vec<f64>>,
-    /// A constant force in space axes, N: 3 entries (spatial) or 2 (planar).
-    pub force_space: Option<Vec<f64>>,
-    /// A constant moment about G in body axes, N m (spatial).
-    pub moment_body: Option<[f64; 3]>,
-    /// A constant moment about G in space axes, N m (spatial).
-    pub moment_space: Option<[f64; 3]>,
-    /// A constant moment about the vertical (planar) or the pivot (pendulum), N m.
-    pub moment: Option<f64>,
+    /// A force in body axes, N: 3 entries (spatial) or 2 (planar), constant or a time table.
+    pub force_body: Option<Timed<Vec<f64>>>,
+    /// A force in space axes, N: 3 entries (spatial) or 2 (planar), constant or a time table.
+    pub force_space: Option<Timed<Vec<f64>>>,
+    /// The point where `force_body` acts, body axes from G, m: 3 entries (spatial) or 2
+    /// (planar); it adds the moment r_P × F about G (4.2). Without it the force acts at G.
+    pub force_body_at: Option<Vec<f64>>,
+    /// The point where `force_space` acts, body axes from G, m (see `force_body_at`).
+    pub force_space_at: Option<Vec<f64>>,
+    /// A moment about G (the pivot for a top) in body axes, N m, 3 entries, constant or a
+    /// time table.
+    pub moment_body: Option<Timed<Vec<f64>>>,
+    /// A moment about G in space axes, N m (spatial), constant or a time table.
+    pub moment_space: Option<Timed<Vec<f64>>>,
+    /// A moment about the vertical (planar) or the pivot (pendulum), N m, constant or a time
+    /// table.
+    pub moment: Option<Timed<f64>>,
     /// Linear damping, each load −dᵢ xᵢ on a velocity: (u, v, w, p, q, r) spatial,
     /// (u, v, r) planar, (θ̇) pendulum.
     pub linear_damping: Option<Vec<f64>>,
     /// Quadratic damping, each load −dᵢ xᵢ|xᵢ|, on the same velocities.
     pub quadratic_damping: Option<Vec<f64>>,
+}
+
+/// A load's value: a constant, or a table of its values over time.
+///
+/// Read from either TOML form of the same key: `moment_body = [0.0, 0.0, 2.0]`, or a table
+/// `moment_body = { times = [0.0, 1.0], values = [[0.0, 0.0, 0.0], [0.0, 0.0, 2.0]],
+/// interpolation = "step" }` (see [`super::table`]).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Timed<V> {
+    /// The same value at every time.
+    Constant(V),
+    /// Values at given times.
+    Table(TableSpec<V>),
+}
+
+/// A time table as written: the times, the value at each, and how to read between them.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TableSpec<V> {
+    /// The times, s, strictly increasing.
+    pub times: Vec<f64>,
+    /// The value at each time.
+    pub values: Vec<V>,
+    /// `"linear"` (straight between the times) or `"step"` (each value until the next time).
+    pub interpolation: Option<String>,
+}
+
+impl<'de, V: Deserialize<'de>> Deserialize<'de> for Timed<V> {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        deserializer.deserialize_any(TimedVisitor(std::marker::PhantomData))
+    }
+}
+
+/// Reads a constant (a number or an array) or a table (an inline or a sub-table), each by
+/// its own type's reader, so that an error inside either names its own key.
+struct TimedVisitor<V>(std::marker::PhantomData<V>);
+
+impl<'de, V: Deserialize<'de>> serde::de::Visitor<'de> for TimedVisitor<V> {
+    type Value = Timed<V>;
+
+    fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.write_str("a constant, or a time table { times, values, interpolation }")
+    }
+
+    fn visit_f64<E: serde::de::Error>(self, v: f64) -> Result<Self::Value, E> {
+        V::deserialize(serde::de::value::F64Deserializer::new(v)).map(Timed::Constant)
+    }
+
+    fn visit_i64<E: serde::de::Error>(self, v: i64) -> Result<Self::Value, E> {
+        V::deserialize(serde::de::value::I64Deserializer::new(v)).map(Timed::Constant)
+    }
+
+    fn visit_seq<A: serde::de::SeqAccess<'de>>(self, seq: A) -> Result<Self::Value, A::Error> {
+        V::deserialize(serde::de::value::SeqAccessDeserializer::new(seq)).map(Timed::Constant)
+    }
+
+    fn visit_map<A: serde::de::MapAccess<'de>>(self, map: A) -> Result<Self::Value, A::Error> {
+        TableSpec::deserialize(serde::de::value::MapAccessDeserializer::new(map)).map(Timed::Table)
+    }
 }
 
 /// `[integrator]`.
@@ -139,6 +214,9 @@ pub struct IntegratorTable {
     pub end_time: f64,
     /// The most steps (accepted and rejected) a run may take.
     pub max_steps: Option<u64>,
+    /// A condition that ends the run where it first holds, `"z > 10"` (see
+    /// [`super::stop`]).
+    pub stop_when: Option<String>,
 }
 
 /// `[output]`.
@@ -192,6 +270,7 @@ given_keys!(BodyTable {
 });
 given_keys!(InitialTable {
     velocity,
+    velocity_space,
     rates,
     position,
     attitude_deg,
@@ -199,6 +278,8 @@ given_keys!(InitialTable {
     theta_dot,
     u,
     v,
+    x_dot,
+    y_dot,
     r,
     x,
     y,
@@ -210,6 +291,8 @@ given_keys!(LoadsTable {
     buoyancy_centre,
     force_body,
     force_space,
+    force_body_at,
+    force_space_at,
     moment_body,
     moment_space,
     moment,

@@ -7,12 +7,21 @@
 //! [`SceneLoads`] turns them into the model's inputs at each state, through the attitude the
 //! state carries.
 //!
-//! Where every load has a potential (gravity, buoyancy, constant space forces, the planar and
-//! the pendulum's constant moment), [`SceneLoads::potential_energy`] gives it, so a run can
-//! report the total energy and its drift; body-axis forces and damping have none. The
-//! pendulum's and the top's own weight is in their models.
+//! A force acts at G unless the scene names its point (`force_body_at`, `force_space_at`, body
+//! axes from G): a force F at r_P adds the moment r_P × F about G (4.2), evaluated in body axes
+//! at each state, since a space force turns in the body as the body turns.
+//!
+//! Where every load has a potential (gravity, buoyancy, constant space forces wherever they
+//! act, the planar and the pendulum's constant moment), [`SceneLoads::potential_energy`] gives it, so a run can
+//! report the total energy and its drift; body-axis forces, damping and loads given as time
+//! tables have none. The pendulum's and the top's own weight is in their models.
+//!
+//! A force or moment given as a time table ([`super::table`]) is held in the family's
+//! [`TimedLoad`]s, its constant field zero; [`SceneLoads::inputs_at`] reads the tables at a
+//! time, and [`SceneLoads::prepared_on`] on one piece of a run between breakpoints.
 
-use super::file::LoadsTable;
+use super::file::{LoadsTable, Timed};
+use super::table::{Target, TimeTable, TimedLoad};
 use super::{Body, Problem, Selection};
 use crate::Short;
 use crate::models::{Family, Kinematics, Loads};
@@ -32,7 +41,7 @@ pub enum SceneLoads {
 }
 
 /// The pendulum's: a constant moment about the pivot and damping of θ̇.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct PendulumLoads {
     /// Constant moment, N m.
     pub moment: f64,
@@ -40,10 +49,12 @@ pub struct PendulumLoads {
     pub linear: f64,
     /// Quadratic damping coefficient.
     pub quadratic: f64,
+    /// The loads given as time tables (`moment`).
+    pub tables: Vec<TimedLoad>,
 }
 
 /// The top's: a constant moment about the pivot in body axes and damping of (p, q, r).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct TopLoads {
     /// Constant moment, body axes.
     pub moment_body: [f64; 3],
@@ -51,10 +62,12 @@ pub struct TopLoads {
     pub linear: [f64; 3],
     /// Quadratic damping of (p, q, r).
     pub quadratic: [f64; 3],
+    /// The loads given as time tables (`moment_body`).
+    pub tables: Vec<TimedLoad>,
 }
 
 /// A planar body's.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct PlanarLoads {
     /// Whether the model's state is space-fixed (4.39) rather than body-fixed.
     pub space_fixed: bool,
@@ -62,16 +75,22 @@ pub struct PlanarLoads {
     pub force_body: [f64; 2],
     /// Constant force, space axes.
     pub force_space: [f64; 2],
+    /// Where `force_body` acts, body axes from G (zero: at G).
+    pub force_body_at: [f64; 2],
+    /// Where `force_space` acts, body axes from G (zero: at G).
+    pub force_space_at: [f64; 2],
     /// Constant moment about the vertical.
     pub moment: f64,
     /// Linear damping of (u, v, r).
     pub linear: [f64; 3],
     /// Quadratic damping of (u, v, r).
     pub quadratic: [f64; 3],
+    /// The loads given as time tables (`force_body`, `force_space`, `moment`).
+    pub tables: Vec<TimedLoad>,
 }
 
 /// A spatial body's.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct SpatialLoads {
     /// Euler angles or a quaternion in the state.
     pub kinematics: Kinematics,
@@ -85,6 +104,10 @@ pub struct SpatialLoads {
     pub force_body: [f64; 3],
     /// Constant force, space axes.
     pub force_space: [f64; 3],
+    /// Where `force_body` acts, body axes from G (zero: at G).
+    pub force_body_at: [f64; 3],
+    /// Where `force_space` acts, body axes from G (zero: at G).
+    pub force_space_at: [f64; 3],
     /// Constant moment, body axes.
     pub moment_body: [f64; 3],
     /// Constant moment, space axes.
@@ -93,6 +116,9 @@ pub struct SpatialLoads {
     pub linear: [f64; 6],
     /// Quadratic damping of (u, v, w, p, q, r).
     pub quadratic: [f64; 6],
+    /// The loads given as time tables (`force_body`, `force_space`, `moment_body`,
+    /// `moment_space`).
+    pub tables: Vec<TimedLoad>,
 }
 
 type LoadError = (String, Problem);
@@ -130,6 +156,61 @@ fn list<const K: usize>(key: &str, values: &Option<Vec<f64>>) -> Result<[f64; K]
         .try_into()
         .map_err(|_| invalid(key, format!("must have {K} entries, got {}", values.len())))?;
     finite(key, array)
+}
+
+/// The point a force acts at, body axes from G (zeros when absent), refused without its
+/// force: it would be ignored.
+fn point<const K: usize>(
+    key: &str,
+    values: &Option<Vec<f64>>,
+    force: (&str, bool),
+) -> Result<[f64; K], LoadError> {
+    if values.is_some() && !force.1 {
+        return Err(invalid(key, format!("is given without loads.{}", force.0)));
+    }
+    list(key, values)
+}
+
+/// A load that may be a time table: its constant (zeros when absent or tabulated), its table
+/// pushed onto `tables` for `target`.
+fn timed<const K: usize>(
+    key: &str,
+    value: &Option<Timed<Vec<f64>>>,
+    (target, tables): (Target, &mut Vec<TimedLoad>),
+) -> Result<[f64; K], LoadError> {
+    match value {
+        None => Ok([0.0; K]),
+        Some(Timed::Constant(v)) => list(key, &Some(v.clone())),
+        Some(Timed::Table(spec)) => {
+            let table = TimeTable::new(&format!("loads.{key}"), spec, K)
+                .map_err(|(key, message)| (key, Problem::Invalid(message)))?;
+            tables.push(TimedLoad { target, table });
+            Ok([0.0; K])
+        }
+    }
+}
+
+/// [`timed`] for a scalar load (`moment`).
+fn timed_scalar(
+    key: &str,
+    value: &Option<Timed<f64>>,
+    (target, tables): (Target, &mut Vec<TimedLoad>),
+) -> Result<f64, LoadError> {
+    match value {
+        None => Ok(0.0),
+        Some(Timed::Constant(v)) => scalar(key, Some(*v)),
+        Some(Timed::Table(spec)) => {
+            let table = TimeTable::scalar(&format!("loads.{key}"), spec)
+                .map_err(|(key, message)| (key, Problem::Invalid(message)))?;
+            tables.push(TimedLoad { target, table });
+            Ok(0.0)
+        }
+    }
+}
+
+/// The moment r × F of a force F at r, in the plane: its component along the vertical.
+fn lever_2d(r: [f64; 2], f: [f64; 2]) -> f64 {
+    r[0] * f[1] - r[1] * f[0]
 }
 
 /// Damping coefficients: finite and not negative (a negative one would feed energy in).
@@ -178,27 +259,53 @@ impl SceneLoads {
         selection: &Selection,
         body: &Body,
     ) -> Result<Self, LoadError> {
+        let mut tables = Vec::new();
         Ok(match (selection.info.family, body) {
             (Family::Pendulum, _) => SceneLoads::Pendulum(PendulumLoads {
-                moment: scalar("moment", table.moment)?,
+                moment: timed_scalar("moment", &table.moment, (Target::Moment, &mut tables))?,
                 linear: damping::<1>("linear_damping", &table.linear_damping)?[0],
                 quadratic: damping::<1>("quadratic_damping", &table.quadratic_damping)?[0],
+                tables,
             }),
             (Family::Top, _) => SceneLoads::Top(TopLoads {
-                moment_body: vector("moment_body", table.moment_body)?,
+                moment_body: timed(
+                    "moment_body",
+                    &table.moment_body,
+                    (Target::MomentBody, &mut tables),
+                )?,
                 linear: damping("linear_damping", &table.linear_damping)?,
                 quadratic: damping("quadratic_damping", &table.quadratic_damping)?,
+                tables,
             }),
             (Family::Spatial, Body::Spatial { mass, .. }) => {
                 SceneLoads::Spatial(SpatialLoads::from_table(table, selection, *mass)?)
             }
             (family, _) => SceneLoads::Planar(PlanarLoads {
                 space_fixed: family == Family::PlanarSpaceFixed,
-                force_body: list("force_body", &table.force_body)?,
-                force_space: list("force_space", &table.force_space)?,
-                moment: scalar("moment", table.moment)?,
+                force_body: timed(
+                    "force_body",
+                    &table.force_body,
+                    (Target::ForceBody, &mut tables),
+                )?,
+                force_space: timed(
+                    "force_space",
+                    &table.force_space,
+                    (Target::ForceSpace, &mut tables),
+                )?,
+                force_body_at: point(
+                    "force_body_at",
+                    &table.force_body_at,
+                    ("force_body", table.force_body.is_some()),
+                )?,
+                force_space_at: point(
+                    "force_space_at",
+                    &table.force_space_at,
+                    ("force_space", table.force_space.is_some()),
+                )?,
+                moment: timed_scalar("moment", &table.moment, (Target::Moment, &mut tables))?,
                 linear: damping("linear_damping", &table.linear_damping)?,
                 quadratic: damping("quadratic_damping", &table.quadratic_damping)?,
+                tables,
             }),
         })
     }
@@ -206,9 +313,12 @@ impl SceneLoads {
     /// True when nothing acts on the body but its model's own field.
     pub fn is_free(&self) -> bool {
         match self {
-            SceneLoads::Pendulum(l) => all_zero([&l.moment, &l.linear, &l.quadratic]),
+            SceneLoads::Pendulum(l) => {
+                all_zero([&l.moment, &l.linear, &l.quadratic]) && l.tables.is_empty()
+            }
             SceneLoads::Top(l) => {
                 all_zero(l.moment_body.iter().chain(&l.linear).chain(&l.quadratic))
+                    && l.tables.is_empty()
             }
             SceneLoads::Planar(l) => {
                 l.is_conservative() && all_zero(l.force_space.iter().chain([&l.moment]))
@@ -217,11 +327,34 @@ impl SceneLoads {
         }
     }
 
+    /// The weight M g, N, of a spatial body on which uniform gravity at G is the only load
+    /// (`None` for any other scene): such a field exerts no moment about G, so the rotation
+    /// is torque-free and G falls freely, which is what `lie-midpoint` integrates.
+    pub fn uniform_gravity_only(&self) -> Option<f64> {
+        match self {
+            SceneLoads::Spatial(l) if l.is_weight_alone() => Some(l.weight),
+            _ => None,
+        }
+    }
+
+    /// Whether a spatial body with a quaternion attitude turns free of any moment about G:
+    /// nothing acts on it, or uniform gravity at G alone ([`uniform_gravity_only`](
+    /// Self::uniform_gravity_only)). The geometric integrator applies to exactly these.
+    pub fn rotation_is_torque_free(&self) -> bool {
+        matches!(
+            self,
+            SceneLoads::Spatial(SpatialLoads {
+                kinematics: Kinematics::Quaternion,
+                ..
+            })
+        ) && (self.is_free() || self.uniform_gravity_only().is_some())
+    }
+
     /// Whether a load with a potential of its own is present, so that a trajectory has
     /// potential and total energy columns even where the model has no field of its own.
     pub fn has_potential(&self) -> bool {
         match self {
-            SceneLoads::Pendulum(l) => l.moment != 0.0 && l.linear == 0.0 && l.quadratic == 0.0,
+            SceneLoads::Pendulum(l) => l.moment != 0.0 && l.is_conservative(),
             SceneLoads::Top(_) => false,
             SceneLoads::Planar(l) => {
                 l.is_conservative() && !all_zero(l.force_space.iter().chain([&l.moment]))
@@ -231,15 +364,91 @@ impl SceneLoads {
     }
 
     /// The inputs of the model at a state, into `out` (the model's input layout): every
-    /// load evaluated, zero ones included. A run evaluates [`prepared`](Self::prepared) loads,
-    /// which skip what is zero.
+    /// load evaluated, zero ones included, a time table at t = 0. A run evaluates
+    /// [`prepared`](Self::prepared) loads, which skip what is zero.
     pub fn inputs(&self, state: &[f64], out: &mut [f64]) {
+        self.inputs_at(0.0, state, out);
+    }
+
+    /// [`inputs`](Self::inputs) at time `t`: a time table read at `t` (a step's new value
+    /// from its own time on, the end values held outside the table).
+    pub fn inputs_at(&self, t: f64, state: &[f64], out: &mut [f64]) {
         let every = Acting {
             any: true,
             damping: true,
             in_space: self.is_fixed_in_space(),
         };
-        self.inputs_acting(every, state, out);
+        if self.tables().is_empty() {
+            self.inputs_acting(every, state, out);
+        } else {
+            let now = self.with_tables_read(|table| table.at(t));
+            now.inputs_acting(every, state, out);
+        }
+    }
+
+    /// The times at which a load given as a table jumps or turns, ascending, each once: where
+    /// a run is cut into pieces (see [`super::table`]).
+    pub fn breakpoints(&self) -> Vec<f64> {
+        let mut times: Vec<f64> = self
+            .tables()
+            .iter()
+            .flat_map(|timed| timed.table.times().iter().copied())
+            .collect();
+        times.sort_by(f64::total_cmp);
+        times.dedup();
+        times
+    }
+
+    /// The loads given as time tables.
+    fn tables(&self) -> &[TimedLoad] {
+        match self {
+            SceneLoads::Pendulum(l) => &l.tables,
+            SceneLoads::Top(l) => &l.tables,
+            SceneLoads::Planar(l) => &l.tables,
+            SceneLoads::Spatial(l) => &l.tables,
+        }
+    }
+
+    /// These loads with every table read by `value` into its load: constants only, and no
+    /// allocation (their table list is empty).
+    fn with_tables_read(&self, value: impl Fn(&TimeTable) -> [f64; 3]) -> SceneLoads {
+        let mut now = match self {
+            SceneLoads::Pendulum(l) => SceneLoads::Pendulum(PendulumLoads {
+                tables: Vec::new(),
+                ..*l
+            }),
+            SceneLoads::Top(l) => SceneLoads::Top(TopLoads {
+                tables: Vec::new(),
+                ..*l
+            }),
+            SceneLoads::Planar(l) => SceneLoads::Planar(PlanarLoads {
+                tables: Vec::new(),
+                ..*l
+            }),
+            SceneLoads::Spatial(l) => SceneLoads::Spatial(SpatialLoads {
+                tables: Vec::new(),
+                ..*l
+            }),
+        };
+        for timed in self.tables() {
+            now.set(timed.target, value(&timed.table));
+        }
+        now
+    }
+
+    /// Sets the load `target` (a table's) to `v`, its first entries as the load has them.
+    fn set(&mut self, target: Target, v: [f64; 3]) {
+        match (self, target) {
+            (SceneLoads::Pendulum(l), _) => l.moment = v[0],
+            (SceneLoads::Top(l), _) => l.moment_body = v,
+            (SceneLoads::Planar(l), Target::ForceBody) => l.force_body = [v[0], v[1]],
+            (SceneLoads::Planar(l), Target::ForceSpace) => l.force_space = [v[0], v[1]],
+            (SceneLoads::Planar(l), _) => l.moment = v[0],
+            (SceneLoads::Spatial(l), Target::ForceBody) => l.force_body = v,
+            (SceneLoads::Spatial(l), Target::ForceSpace) => l.force_space = v,
+            (SceneLoads::Spatial(l), Target::MomentSpace) => l.moment_space = v,
+            (SceneLoads::Spatial(l), _) => l.moment_body = v,
+        }
     }
 
     /// The loads as a run evaluates them, millions of times: which of them act is decided
@@ -252,6 +461,19 @@ impl SceneLoads {
         PreparedLoads {
             loads: self.clone(),
             acting: self.acting(),
+            timed: !self.tables().is_empty(),
+            within: None,
+        }
+    }
+
+    /// [`prepared`](Self::prepared) for the piece of a run from `a` to `b`, which no table
+    /// time falls inside: each table is read as that piece's constant or line (see
+    /// [`TimeTable::at_within`]), so that a step ending on a breakpoint sees the value
+    /// before it.
+    pub fn prepared_on(&self, a: f64, b: f64) -> PreparedLoads {
+        PreparedLoads {
+            within: Some((a, b)),
+            ..self.prepared()
         }
     }
 
@@ -307,13 +529,18 @@ impl SceneLoads {
     pub fn potential_energy(&self, state: &[f64]) -> Option<f64> {
         match self {
             // The constant moment's potential is −M_O θ.
-            SceneLoads::Pendulum(l) => {
-                (l.linear == 0.0 && l.quadratic == 0.0).then(|| -l.moment * state[0])
-            }
+            SceneLoads::Pendulum(l) => l.is_conservative().then(|| -l.moment * state[0]),
             SceneLoads::Top(_) => self.is_free().then_some(0.0),
             SceneLoads::Planar(l) => l.potential_energy(state),
             SceneLoads::Spatial(l) => l.potential_energy(state),
         }
+    }
+}
+
+impl PendulumLoads {
+    /// No damping and no table: the moment, if any, has a potential.
+    fn is_conservative(&self) -> bool {
+        self.linear == 0.0 && self.quadratic == 0.0 && self.tables.is_empty()
     }
 }
 
@@ -324,7 +551,7 @@ impl PlanarLoads {
                 .iter()
                 .chain(&self.linear)
                 .chain(&self.quadratic),
-        )
+        ) && self.tables.is_empty()
     }
 
     /// The heading and the body velocities (u, v, r), from either layout.
@@ -343,11 +570,15 @@ impl PlanarLoads {
         let (s, c) = psi.sin_cos();
         // Everything in body axes first, then turned into the model's axes.
         let (fs, fb) = (self.force_space, self.force_body);
-        let mut load = [
-            fb[0] + c * fs[0] + s * fs[1],
-            fb[1] - s * fs[0] + c * fs[1],
-            self.moment,
-        ];
+        let fs_body = [c * fs[0] + s * fs[1], -s * fs[0] + c * fs[1]];
+        let mut load = [fb[0] + fs_body[0], fb[1] + fs_body[1], self.moment];
+        // A force at G adds no moment, and none is added, so that its zero keeps its sign.
+        if self.force_body_at != [0.0; 2] {
+            load[2] += lever_2d(self.force_body_at, fb);
+        }
+        if self.force_space_at != [0.0; 2] {
+            load[2] += lever_2d(self.force_space_at, fs_body);
+        }
         add_damping(acting, (&self.linear, &self.quadratic), &body, &mut load);
         let [fx, fy, moment] = load;
         if self.space_fixed {
@@ -366,7 +597,14 @@ impl PlanarLoads {
         } else {
             (state[3], state[4], state[5])
         };
-        let fs = self.force_space;
+        let (fs, r) = (self.force_space, self.force_space_at);
+        // The force's point in space: G, and r_P turned by the heading.
+        let (x, y) = if r == [0.0; 2] {
+            (x, y)
+        } else {
+            let (s, c) = psi.sin_cos();
+            (x + c * r[0] - s * r[1], y + s * r[0] + c * r[1])
+        };
         self.is_conservative()
             .then(|| -fs[0] * x - fs[1] * y - self.moment * psi)
     }
@@ -387,21 +625,49 @@ impl SpatialLoads {
                 "is given without loads.buoyancy".into(),
             ));
         }
+        let mut tables = Vec::new();
         Ok(SpatialLoads {
             kinematics: selection.info.kinematics.unwrap_or(Kinematics::Quaternion),
             weight: mass * scalar("gravity", table.gravity)?,
             buoyancy,
             buoyancy_centre: vector("buoyancy_centre", table.buoyancy_centre)?,
-            force_body: list("force_body", &table.force_body)?,
-            force_space: list("force_space", &table.force_space)?,
-            moment_body: vector("moment_body", table.moment_body)?,
-            moment_space: vector("moment_space", table.moment_space)?,
+            force_body: timed(
+                "force_body",
+                &table.force_body,
+                (Target::ForceBody, &mut tables),
+            )?,
+            force_space: timed(
+                "force_space",
+                &table.force_space,
+                (Target::ForceSpace, &mut tables),
+            )?,
+            force_body_at: point(
+                "force_body_at",
+                &table.force_body_at,
+                ("force_body", table.force_body.is_some()),
+            )?,
+            force_space_at: point(
+                "force_space_at",
+                &table.force_space_at,
+                ("force_space", table.force_space.is_some()),
+            )?,
+            moment_body: timed(
+                "moment_body",
+                &table.moment_body,
+                (Target::MomentBody, &mut tables),
+            )?,
+            moment_space: timed(
+                "moment_space",
+                &table.moment_space,
+                (Target::MomentSpace, &mut tables),
+            )?,
             linear: damping("linear_damping", &table.linear_damping)?,
             quadratic: damping("quadratic_damping", &table.quadratic_damping)?,
+            tables,
         })
     }
 
-    /// Body-axis forces and moments, a space moment and damping have no potential.
+    /// Body-axis forces and moments, a space moment, damping and tables have no potential.
     fn is_conservative(&self) -> bool {
         all_zero(
             self.force_body
@@ -410,7 +676,15 @@ impl SpatialLoads {
                 .chain(&self.moment_space)
                 .chain(&self.linear)
                 .chain(&self.quadratic),
-        )
+        ) && self.tables.is_empty()
+    }
+
+    /// Whether the weight is the only load: no buoyancy, no other force or moment, no damping.
+    fn is_weight_alone(&self) -> bool {
+        self.weight != 0.0
+            && self.buoyancy == 0.0
+            && self.is_conservative()
+            && all_zero(&self.force_space)
     }
 
     /// Whether a load is fixed in space, so that the attitude turns it.
@@ -418,20 +692,30 @@ impl SpatialLoads {
         self.weight != 0.0
             || self.buoyancy != 0.0
             || !all_zero(self.force_space.iter().chain(&self.moment_space))
+            || self
+                .tables
+                .iter()
+                .any(|timed| matches!(timed.target, Target::ForceSpace | Target::MomentSpace))
     }
 
     fn inputs(&self, acting: Acting, state: &[f64], out: &mut [f64]) {
         let mut force = Vector3::from(self.force_body);
         let mut moment = Vector3::from(self.moment_body);
+        // A force at G adds no moment, and none is added, so that its zero keeps its sign.
+        if self.force_body_at != [0.0; 3] {
+            moment += Vector3::from(self.force_body_at).cross(&force);
+        }
         // A scene without a load fixed in space skips the rotation.
         if acting.in_space {
             let to_body = attitude(self.kinematics, &state[9..]).inverse();
             let buoyancy_force = to_body * Vector3::new(0.0, 0.0, -self.buoyancy);
-            force += to_body * Vector3::from(self.force_space)
-                + to_body * Vector3::new(0.0, 0.0, self.weight)
-                + buoyancy_force;
+            let space_force = to_body * Vector3::from(self.force_space);
+            force += space_force + to_body * Vector3::new(0.0, 0.0, self.weight) + buoyancy_force;
             moment += to_body * Vector3::from(self.moment_space)
                 + Vector3::from(self.buoyancy_centre).cross(&buoyancy_force);
+            if self.force_space_at != [0.0; 3] {
+                moment += Vector3::from(self.force_space_at).cross(&space_force);
+            }
         }
         out[..3].copy_from_slice(force.as_slice());
         out[3..6].copy_from_slice(moment.as_slice());
@@ -443,14 +727,20 @@ impl SpatialLoads {
         );
     }
 
-    /// −M g z_G + B z_B − F·r_G, with Z down.
+    /// −M g z_G + B z_B − F·r_P, with Z down (r_P the space force's point, G unless the
+    /// scene names another).
     fn potential_energy(&self, state: &[f64]) -> Option<f64> {
         let position = Vector3::new(state[6], state[7], state[8]);
-        let turned = attitude(self.kinematics, &state[9..]) * Vector3::from(self.buoyancy_centre);
-        let centre = position + turned;
+        let to_space = attitude(self.kinematics, &state[9..]);
+        let centre = position + to_space * Vector3::from(self.buoyancy_centre);
+        let pushed = if self.force_space_at == [0.0; 3] {
+            position
+        } else {
+            position + to_space * Vector3::from(self.force_space_at)
+        };
         self.is_conservative().then(|| {
             -self.weight * position.z + self.buoyancy * centre.z
-                - Vector3::from(self.force_space).dot(&position)
+                - Vector3::from(self.force_space).dot(&pushed)
         })
     }
 }
@@ -485,9 +775,9 @@ pub fn euler_angles(kinematics: Kinematics, attitude_entries: &[f64]) -> [f64; 3
 
 impl<const N: usize, const M: usize> Loads<f64, N, M> for SceneLoads {
     #[inline]
-    fn at(&self, _t: f64, state: &[f64; N]) -> [f64; M] {
+    fn at(&self, t: f64, state: &[f64; N]) -> [f64; M] {
         let mut out = [0.0; M];
-        self.inputs(state, &mut out);
+        self.inputs_at(t, state, &mut out);
         out
     }
 }
@@ -509,14 +799,35 @@ struct Acting {
 pub struct PreparedLoads {
     loads: SceneLoads,
     acting: Acting,
+    /// Whether a load is a time table (decided once, as `acting`).
+    timed: bool,
+    /// The piece of the run its tables are read on ([`SceneLoads::prepared_on`]), or `None`
+    /// to read them at each time.
+    within: Option<(f64, f64)>,
+}
+
+impl PreparedLoads {
+    /// The inputs where a load is a time table: every table read at `t`, on the piece.
+    #[inline(never)]
+    fn timed_inputs(&self, t: f64, state: &[f64], out: &mut [f64]) {
+        let now = self.loads.with_tables_read(|table| match self.within {
+            Some(piece) => table.at_within(t, piece),
+            None => table.at(t),
+        });
+        now.inputs_acting(self.acting, state, out);
+    }
 }
 
 impl<const N: usize, const M: usize> Loads<f64, N, M> for PreparedLoads {
     #[inline(always)]
-    fn at(&self, _t: f64, state: &[f64; N]) -> [f64; M] {
+    fn at(&self, t: f64, state: &[f64; N]) -> [f64; M] {
         let mut out = [0.0; M];
         if self.acting.any {
-            self.loads.inputs_acting(self.acting, state, &mut out);
+            if !self.timed {
+                self.loads.inputs_acting(self.acting, state, &mut out);
+            } else {
+                self.timed_inputs(t, state, &mut out);
+            }
         }
         out
     }

@@ -8,6 +8,9 @@
 //! Every error names the key by its path in the file (`integrator.step`) and says what is
 //! wrong with it.
 //!
+//! A load may change with time, as a [`table`] of (t, value) that the run is cut at; a run
+//! may end early on a condition of its state, [`stop`] (`integrator.stop_when = "z > 10"`).
+//!
 //! Space axes are X north, Y east, Z down and body axes x forward, y to starboard, z down, as
 //! in the chapter's ship dynamics; angles in a scene file are in degrees, rates in rad/s.
 
@@ -17,13 +20,16 @@ pub mod file;
 mod loads;
 pub mod reference;
 mod select;
+pub mod stop;
 pub mod sweep;
+pub mod table;
 
 pub use error::{Problem, SceneError};
 pub use loads::{
     PendulumLoads, PlanarLoads, PreparedLoads, SceneLoads, SpatialLoads, TopLoads, euler_angles,
 };
 pub use select::{Selection, select_spatial};
+pub use stop::{Comparison, StopCondition};
 
 use crate::integrate::AdaptiveOptions;
 use crate::models::{AnyModel, Family, Pendulum, PlanarAtG, PlanarMidship, PlanarSpaceFixed};
@@ -49,6 +55,8 @@ pub struct Scene {
     pub integrator: IntegratorSpec,
     /// Trajectory rows at t = k·every.
     pub every: f64,
+    /// The condition that ends the run where it first holds, if the scene gives one.
+    pub stop: Option<StopCondition>,
 }
 
 /// A scene's body, by family.
@@ -201,8 +209,9 @@ impl Scene {
         let initial = check.initial(file, &selection)?;
         let loads = SceneLoads::from_table(&file.loads, &selection, &body)
             .map_err(|(key, problem)| SceneError::new(name, &key, problem))?;
-        let integrator = check.integrator(file, &selection, &loads)?;
+        let integrator = check.integrator(file, &loads)?;
         let every = check.every(file, integrator.end_time)?;
+        let stop = check.stop(file, &selection, &initial)?;
         Ok(Scene {
             title: file.title.clone(),
             selection,
@@ -211,6 +220,7 @@ impl Scene {
             loads,
             integrator,
             every,
+            stop,
         })
     }
 

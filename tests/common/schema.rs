@@ -82,11 +82,17 @@ impl<'a> Walker<'a> {
 impl<'de> Deserializer<'de> for Walker<'_> {
     type Error = Stop;
 
-    fn deserialize_any<V: de::Visitor<'de>>(self, _: V) -> Result<V::Value, Stop> {
-        Err(Stop(format!(
-            "{}: a type the walk does not know",
-            self.path
-        )))
+    /// A value read by its own visitor, as a constant or a time table (`eom::scene::file::
+    /// Timed`): the key itself is recorded, and the table's fields are walked unrecorded (the
+    /// reference describes the table form under the key).
+    fn deserialize_any<V: de::Visitor<'de>>(self, visitor: V) -> Result<V::Value, Stop> {
+        self.record();
+        visitor.visit_map(Fields {
+            walker: self.child(self.path.clone(), None),
+            fields: &["times", "values", "interpolation"],
+            next: 0,
+            recorded: false,
+        })
     }
 
     fn deserialize_bool<V: de::Visitor<'de>>(self, visitor: V) -> Result<V::Value, Stop> {
@@ -145,6 +151,7 @@ impl<'de> Deserializer<'de> for Walker<'_> {
             walker: self,
             fields: &[],
             next: 0,
+            recorded: true,
         })
     }
 
@@ -158,6 +165,7 @@ impl<'de> Deserializer<'de> for Walker<'_> {
             walker: self,
             fields,
             next: 0,
+            recorded: true,
         })
     }
 
@@ -192,11 +200,12 @@ impl<'de> SeqAccess<'de> for Entries<'_> {
     }
 }
 
-/// A struct's fields, every one given.
+/// A struct's fields, every one given; `recorded`: whether their paths are keys.
 struct Fields<'a> {
     walker: Walker<'a>,
     fields: &'static [&'static str],
     next: usize,
+    recorded: bool,
 }
 
 impl<'de> MapAccess<'de> for Fields<'_> {
@@ -216,7 +225,11 @@ impl<'de> MapAccess<'de> for Fields<'_> {
     fn next_value_seed<V: DeserializeSeed<'de>>(&mut self, seed: V) -> Result<V::Value, Stop> {
         let field = self.fields[self.next];
         self.next += 1;
-        seed.deserialize(self.walker.field(field))
+        let mut walker = self.walker.field(field);
+        if !self.recorded {
+            walker.leaf = None;
+        }
+        seed.deserialize(walker)
     }
 }
 

@@ -35,6 +35,9 @@
 //! the finite values only. A series with no finite value draws an empty panel. Values beyond
 //! ±10³⁰⁰ are drawn at that bound, so that an axis range stays finite.
 //!
+//! A title is drawn [`printable`]: XML cannot hold most control characters (see
+//! [`text`](super::text)).
+//!
 //! The output is deterministic: the same input gives the same bytes (the SVG holds no
 //! timestamp, and pixel coordinates are integers).
 //!
@@ -50,6 +53,8 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use thiserror::Error;
+
+use super::text::printable;
 
 mod energy;
 mod scale;
@@ -136,6 +141,13 @@ pub const PLOT_FILES: [&str; 4] = [STATE, ATTITUDE, TRACK, ENERGY];
 /// length is checked before anything is drawn, so a malformed input writes no file.
 pub fn write_plots(dir: &Path, input: &PlotInput) -> Result<Vec<PathBuf>, PlotError> {
     check_lengths(dir, input)?;
+    // The title as XML can hold it (see `output::text`).
+    let title = printable(input.title);
+    let input = &PlotInput {
+        title: &title,
+        state: input.state.clone(),
+        ..*input
+    };
     let mut written = Vec::new();
     if !input.state.is_empty() {
         written.push(emit(dir, STATE, |svg| draw_state(svg, input))?);

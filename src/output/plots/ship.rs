@@ -6,6 +6,7 @@
 use super::series::{Line, PanelStyle, time_panel, time_range};
 use super::track::draw_track;
 use super::{COLOURS, DrawError, Mark, PlotError, emit, render};
+use crate::output::text::printable;
 use std::path::{Path, PathBuf};
 
 /// The columns of one manoeuvre, sampled at the same times.
@@ -45,6 +46,12 @@ pub fn write_manoeuvre_plots(dir: &Path, plot: &ManoeuvrePlot) -> Result<Vec<Pat
             times: plot.time.len(),
         });
     }
+    // The title as XML can hold it (see `output::text`).
+    let title = printable(plot.title);
+    let plot = &ManoeuvrePlot {
+        title: &title,
+        ..*plot
+    };
     let caption = format!("{}: track of midship", plot.title);
     let axes = ("east Y [m]", "north X [m]");
     let track = emit(dir, "track.svg", |svg| {

@@ -234,6 +234,29 @@ pub(super) static KEYS: &[Key] = &[
         ..Key::BLANK
     },
     Key {
+        path: "initial.x_dot",
+        families: PLANAR,
+        unit: "m/s",
+        frame: Frame::Space,
+        default: "0",
+        description: "Ẋ, the body origin's velocity north, instead of u and v (never both): \
+                      turned into body axes through psi_deg.",
+        example: "1.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "initial.y_dot",
+        families: PLANAR,
+        unit: "m/s",
+        frame: Frame::Space,
+        default: "0",
+        description: "Ẏ, the body origin's velocity east, with initial.x_dot.",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
         path: "initial.r",
         families: PLANAR,
         unit: "rad/s",
@@ -282,6 +305,19 @@ pub(super) static KEYS: &[Key] = &[
         default: "zero",
         description: "The velocity of G along the body axes.",
         example: "[1.0, 0.0, 0.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "initial.velocity_space",
+        families: &[SPATIAL],
+        kind: Kind::Numbers("3: Ẋ, Ẏ, Ż"),
+        unit: "m/s",
+        frame: Frame::Space,
+        default: "zero",
+        description: "The velocity of G in space axes, instead of initial.velocity (never \
+                      both): turned into body axes through attitude_deg, v = Eᵀ V (4.57).",
+        example: "[1.0, 0.0, 0.0]",
+        shown: Shown::Commented,
         ..Key::BLANK
     },
     Key {
@@ -382,7 +418,7 @@ pub(super) static KEYS: &[Key] = &[
         unit: "N",
         frame: Frame::Body,
         default: "zero",
-        description: "A constant force at G that turns with the body (a thrust).",
+        description: "A force at G (or at force_body_at) that turns with the body (a thrust). Constant, or a time table { times = [s…], values = […], interpolation = `step` | `linear` }: the end values hold outside it, and the run is cut at its times so no step straddles a change.",
         example: "[0.5, 0.0, 0.0]",
         ..Key::BLANK
     },
@@ -393,7 +429,8 @@ pub(super) static KEYS: &[Key] = &[
         unit: "N",
         frame: Frame::Body,
         default: "zero",
-        description: "A constant force at the body origin that turns with the body (a thrust).",
+        description: "A force at the body origin (or at force_body_at) that turns with the \
+                      body (a thrust). Constant, or a time table { times = [s…], values = […], interpolation = `step` | `linear` }: the end values hold outside it, and the run is cut at its times so no step straddles a change.",
         example: "[1.0, 0.0]",
         ..Key::BLANK
     },
@@ -404,7 +441,8 @@ pub(super) static KEYS: &[Key] = &[
         unit: "N",
         frame: Frame::Space,
         default: "zero",
-        description: "A constant force at G fixed in space (a wind); it has a potential.",
+        description: "A force at G (or at force_space_at) fixed in space (a wind); constant, \
+                      it has a potential. Constant, or a time table { times = [s…], values = […], interpolation = `step` | `linear` }: the end values hold outside it, and the run is cut at its times so no step straddles a change.",
         example: "[0.0, 0.0, 0.0]",
         ..Key::BLANK
     },
@@ -415,9 +453,61 @@ pub(super) static KEYS: &[Key] = &[
         unit: "N",
         frame: Frame::Space,
         default: "zero",
-        description: "A constant force at the body origin fixed in space (a wind); it has a \
-                      potential.",
+        description: "A force at the body origin (or at force_space_at) fixed in space (a \
+                      wind); constant, it has a potential. Constant, or a time table { times = [s…], values = […], interpolation = `step` | `linear` }: the end values hold outside it, and the run is cut at its times so no step straddles a change.",
         example: "[0.0, 0.5]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "loads.force_body_at",
+        families: &[SPATIAL],
+        kind: Kind::Numbers("3: x, y, z"),
+        unit: "m",
+        frame: Frame::Body,
+        default: "G",
+        description: "Where force_body acts, from G: it adds the moment r_P × F about G (4.2). \
+                      Only with force_body.",
+        example: "[0.5, 0.0, 0.0]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "loads.force_body_at",
+        families: PLANAR,
+        kind: Kind::Numbers("2: x, y"),
+        unit: "m",
+        frame: Frame::Body,
+        default: "the body origin",
+        description: "Where force_body acts, from the body origin: it adds the moment r_P × F. \
+                      Only with force_body.",
+        example: "[1.0, 0.0]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "loads.force_space_at",
+        families: &[SPATIAL],
+        kind: Kind::Numbers("3: x, y, z"),
+        unit: "m",
+        frame: Frame::Body,
+        default: "G",
+        description: "Where force_space acts, from G, in body axes: it adds r_P × F about G \
+                      and keeps the force's potential. Only with force_space.",
+        example: "[0.5, 0.0, 0.0]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "loads.force_space_at",
+        families: PLANAR,
+        kind: Kind::Numbers("2: x, y"),
+        unit: "m",
+        frame: Frame::Body,
+        default: "the body origin",
+        description: "Where force_space acts, from the body origin, in body axes. Only with \
+                      force_space.",
+        example: "[1.0, 0.0]",
+        shown: Shown::Commented,
         ..Key::BLANK
     },
     Key {
@@ -427,7 +517,7 @@ pub(super) static KEYS: &[Key] = &[
         unit: "N m",
         frame: Frame::Body,
         default: "zero",
-        description: "A constant moment about G.",
+        description: "A moment about G. Constant, or a time table { times = [s…], values = […], interpolation = `step` | `linear` }: the end values hold outside it, and the run is cut at its times so no step straddles a change.",
         example: "[0.0, 0.0, 0.0]",
         ..Key::BLANK
     },
@@ -438,7 +528,7 @@ pub(super) static KEYS: &[Key] = &[
         unit: "N m",
         frame: Frame::Body,
         default: "zero",
-        description: "A constant moment about the pivot.",
+        description: "A moment about the pivot. Constant, or a time table { times = [s…], values = […], interpolation = `step` | `linear` }: the end values hold outside it, and the run is cut at its times so no step straddles a change.",
         example: "[0.0, 0.0, 0.0]",
         ..Key::BLANK
     },
@@ -449,7 +539,7 @@ pub(super) static KEYS: &[Key] = &[
         unit: "N m",
         frame: Frame::Space,
         default: "zero",
-        description: "A constant moment about G fixed in space.",
+        description: "A moment about G fixed in space. Constant, or a time table { times = [s…], values = […], interpolation = `step` | `linear` }: the end values hold outside it, and the run is cut at its times so no step straddles a change.",
         example: "[0.0, 0.0, 0.0]",
         ..Key::BLANK
     },
@@ -458,8 +548,8 @@ pub(super) static KEYS: &[Key] = &[
         families: PLANAR_AND_PENDULUM,
         unit: "N m",
         default: "0",
-        description: "A constant moment about the vertical (planar) or about the pivot \
-                      (pendulum); it has a potential.",
+        description: "A moment about the vertical (planar) or about the pivot (pendulum); \
+                      constant, it has a potential. Constant, or a time table { times = [s…], values = […], interpolation = `step` | `linear` }: the end values hold outside it, and the run is cut at its times so no step straddles a change.",
         example: "0.1",
         ..Key::BLANK
     },
@@ -557,9 +647,9 @@ pub(super) static KEYS: &[Key] = &[
         kind: Kind::Text(Choices::Methods),
         required: Required::Yes,
         description: "How to integrate. Fixed step: euler, symplectic-euler, rk4, and \
-                      lie-midpoint for a free spatial body with quaternion kinematics and no \
-                      loads (the rotation by the geometric integrator, the translation \
-                      exactly). Adaptive, rows placed by dense output: dopri5, dop853.",
+                      lie-midpoint for a spatial body with quaternion kinematics under no load \
+                      or uniform gravity alone (the rotation by the geometric integrator, the \
+                      translation exactly). Adaptive, rows placed by dense output: dopri5, dop853.",
         example: "\"dop853\"",
         ..Key::BLANK
     },
@@ -608,6 +698,19 @@ pub(super) static KEYS: &[Key] = &[
         required: Required::Yes,
         description: "The end of the run, which starts at t = 0.",
         example: "1.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "integrator.stop_when",
+        families: ALL,
+        kind: Kind::Text(Choices::Free),
+        default: "none: the run ends at end_time",
+        description: "A condition that ends the run where it first holds: t or a state name, \
+                      then <, >, <= or >=, then a number (`z > 10`: the ground). The crossing \
+                      is found on the step to adjacent doubles; summary.json says stop_when and \
+                      stopped_at.",
+        example: "\"t > 1e9\"",
+        shown: Shown::Commented,
         ..Key::BLANK
     },
     Key {

@@ -153,10 +153,15 @@ const RUNNING: &str = "## How a catalog scene runs\n\n\
 - **Model selection.** `model.symmetry = \"auto\"` runs the most pruned class the tensor \
 allows; the summary says which variant ran, why, and its operations per call against the \
 full variant's.\n\
-- **Integrators.** `lie-midpoint` applies to a free spatial body with quaternion kinematics \
-(the rotation by the geometric integrator, the translation exactly). A fixed-step method \
-integrates each output interval in equal steps of at most `step`, so that rows land on their \
-times; an adaptive one places rows by dense output.\n\
+- **Integrators.** `lie-midpoint` applies to a spatial body with quaternion kinematics that is \
+free or under uniform gravity alone, which acts at G and leaves the rotation torque-free (the \
+rotation by the geometric integrator, the translation exactly). A fixed-step method \
+integrates each interval between rows and a load table's times in equal steps of at most \
+`step`, so that rows land on their times and no step straddles a change of load; an adaptive \
+one places rows by dense output, and is cut at a table's times likewise.\n\
+- **Stop conditions.** `integrator.stop_when` ends a run where its condition first holds, \
+found on the step (dense output, or the step retaken) to adjacent doubles; the last row is \
+at that time.\n\
 - **Energy.** Where every load has a potential (gravity, buoyancy, constant space forces, the \
 constant planar and pendulum moments), the trajectory has potential and total energy and the \
 summary an energy drift.\n\
