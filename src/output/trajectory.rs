@@ -43,11 +43,16 @@ pub struct TrajectoryWriter {
     /// Keep every `stride`-th row for the plots.
     stride: usize,
     rows: usize,
+    /// The last row written, when the stride did not keep it (t, energy, kinetic energy, and
+    /// its state in `last_state`): added to the columns at the end, so that the plots always
+    /// reach the run's last row, a run stopped early included.
+    last_unkept: Option<(f64, f64, f64)>,
+    last_state: Vec<f64>,
     /// Called with the time of each row (a progress bar).
     on_row: Option<Box<dyn FnMut(f64)>>,
 }
 
-/// The rows kept for the plots: every `stride`-th.
+/// The rows kept for the plots: every `stride`-th, and the last.
 #[derive(Debug, Default, Clone)]
 pub struct Columns {
     /// The times.
@@ -91,6 +96,8 @@ impl TrajectoryWriter {
             },
             stride: expected_rows.div_ceil(200_000).max(1),
             rows: 0,
+            last_unkept: None,
+            last_state: vec![0.0; state_names.len()],
             on_row: None,
         })
     }
@@ -106,6 +113,10 @@ impl TrajectoryWriter {
             return Err(error);
         }
         self.flush()?;
+        if let Some((t, energy, kinetic)) = self.last_unkept.take() {
+            let state = std::mem::take(&mut self.last_state);
+            self.push_kept(t, &state, energy, kinetic);
+        }
         Ok(self.kept)
     }
 
@@ -155,17 +166,24 @@ impl TrajectoryWriter {
     }
 
     fn keep(&mut self, row: &Row) {
+        let energy = row.kinetic_energy + row.potential_energy.unwrap_or(0.0);
         if self.rows.is_multiple_of(self.stride) {
-            self.kept.time.push(row.t);
-            for (column, &x) in self.kept.state.iter_mut().zip(row.state) {
-                column.push(x);
-            }
-            self.kept
-                .energy
-                .push(row.kinetic_energy + row.potential_energy.unwrap_or(0.0));
-            self.kept.kinetic.push(row.kinetic_energy);
+            self.push_kept(row.t, row.state, energy, row.kinetic_energy);
+            self.last_unkept = None;
+        } else {
+            self.last_state.copy_from_slice(row.state);
+            self.last_unkept = Some((row.t, energy, row.kinetic_energy));
         }
         self.rows += 1;
+    }
+
+    fn push_kept(&mut self, t: f64, state: &[f64], energy: f64, kinetic: f64) {
+        self.kept.time.push(t);
+        for (column, &x) in self.kept.state.iter_mut().zip(state) {
+            column.push(x);
+        }
+        self.kept.energy.push(energy);
+        self.kept.kinetic.push(kinetic);
     }
 }
 
@@ -190,5 +208,35 @@ pub fn push_number(line: &mut Vec<u8>, number: &mut ryu::Buffer, x: f64) {
         line.extend_from_slice(number.format_finite(x).as_bytes());
     } else {
         line.extend_from_slice(x.to_string().as_bytes());
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A run stopped long before its expected end (a signal, a failure) still gives the plots
+    /// its first and its last row, however coarse the stride of the run it was meant to be.
+    #[test]
+    fn the_kept_columns_end_at_the_last_row_written() {
+        let path = std::env::temp_dir().join(format!("eom-kept-{}.csv", std::process::id()));
+        let names = ["theta".to_owned(), "theta_dot".to_owned()];
+        let mut writer = TrajectoryWriter::create(&path, &names, false, 100_000_000).unwrap();
+        assert_eq!(writer.stride, 500);
+        for k in 0..300 {
+            let state = [k as f64, 0.0];
+            let row = Row {
+                t: k as f64 * 0.01,
+                state: &state,
+                kinetic_energy: 1.0,
+                potential_energy: None,
+            };
+            assert!(writer.row(&row));
+        }
+        let kept = writer.finish().unwrap();
+        let _ = std::fs::remove_file(&path);
+        assert_eq!(kept.time, [0.0, 2.99]);
+        assert_eq!(kept.state[0], [0.0, 299.0]);
+        assert_eq!(kept.kinetic.len(), 2);
     }
 }
