@@ -8,7 +8,7 @@
 //!
 //! | stage | where |
 //! |---|---|
-//! | the physical inputs, validated once | [`InertiaTensor`], [`PendulumParameters`], [`ParameterError`], [`mass`] (mass properties of a body) |
+//! | the physical inputs, validated once, and the one set of value checks | [`InertiaTensor`], [`PendulumParameters`], [`ParameterError`], [`validate`], [`mass`] (mass properties of a body) |
 //! | the generated models, one type per catalog entry | [`models`]: [`Model`], [`Loads`], [`Constant`], [`AnyModel`] |
 //! | the independent nalgebra forms they are checked against | [`generic`] |
 //! | many bodies of one model in SIMD lanes, stepped together | [`batch`] |
@@ -63,7 +63,7 @@ pub mod scene;
 pub mod ship;
 mod short;
 pub mod swing;
-mod validate;
+pub mod validate;
 
 /// The nalgebra that eom's models, states and integrators are written in, so that a user's
 /// vectors are of the same version without choosing it by hand.

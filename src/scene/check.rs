@@ -11,6 +11,7 @@ use super::{
 use crate::Short;
 use crate::integrate::AdaptiveOptions;
 use crate::models::{AnyModel, Family, Kinematics, ModelInfo, Symmetry};
+use crate::validate::Requirement;
 use crate::{InertiaTensor, ParameterError, PendulumParameters};
 use nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
 use std::path::Path;
@@ -294,12 +295,16 @@ impl Checker<'_> {
             })
     }
 
+    /// `value` if it meets `requirement`, else the error naming `key` ([`Requirement`], the
+    /// one set of value checks).
+    fn checked(&self, key: &str, requirement: Requirement, value: f64) -> Result<f64, SceneError> {
+        requirement
+            .check(value)
+            .map_err(|violation| self.invalid(key, violation.to_string()))
+    }
+
     fn finite(&self, key: &str, value: f64) -> Result<f64, SceneError> {
-        if value.is_finite() {
-            Ok(value)
-        } else {
-            Err(self.invalid(key, format!("must be finite, got {}", Short(value))))
-        }
+        self.checked(key, Requirement::Finite, value)
     }
 
     fn finite3(&self, key: &str, value: Option<[f64; 3]>) -> Result<[f64; 3], SceneError> {
@@ -448,13 +453,7 @@ impl Checker<'_> {
     ) -> Result<IntegratorSpec, SceneError> {
         let t = &file.integrator;
         let method = self.named("integrator.method", &t.method, Method::ALL, "")?;
-        let end_time = self.finite("integrator.end_time", t.end_time)?;
-        if end_time <= 0.0 {
-            return Err(self.invalid(
-                "integrator.end_time",
-                format!("must be positive, got {}", Short(end_time)),
-            ));
-        }
+        let end_time = self.checked("integrator.end_time", Requirement::Positive, t.end_time)?;
         let max_steps = match t.max_steps {
             None => DEFAULT_MAX_STEPS,
             Some(0) => {
@@ -503,18 +502,18 @@ impl Checker<'_> {
                 &format!("{} takes a fixed step; give integrator.step", method.name()),
             )?;
             let step = self.required("integrator.step", t.step, "the fixed step, s")?;
-            let step = self.finite("integrator.step", step)?;
-            if step <= 0.0 {
-                return Err(self.invalid(
-                    "integrator.step",
-                    format!("must be positive, got {}", Short(step)),
-                ));
-            }
+            let step = self.checked("integrator.step", Requirement::Positive, step)?;
             let steps = (end_time / step).ceil();
             if steps > max_steps as f64 {
                 return Err(self.invalid(
                     "integrator.max_steps",
-                    format!("the run needs {steps} steps of {step} s to reach {end_time} s, more than max_steps = {max_steps}"),
+                    format!(
+                        "the run needs {} steps of {} s to reach {} s, more than max_steps = \
+                         {max_steps}",
+                        Short(steps),
+                        Short(step),
+                        Short(end_time)
+                    ),
                 ));
             }
             (Some(step), None)
@@ -529,11 +528,11 @@ impl Checker<'_> {
     }
 
     fn tolerance(&self, key: &str, value: Option<f64>) -> Result<f64, SceneError> {
-        let value = self.finite(key, value.unwrap_or(DEFAULT_TOLERANCE))?;
-        if value <= 0.0 {
-            return Err(self.invalid(key, format!("must be positive, got {}", Short(value))));
-        }
-        Ok(value)
+        self.checked(
+            key,
+            Requirement::Positive,
+            value.unwrap_or(DEFAULT_TOLERANCE),
+        )
     }
 
     /// The geometric integrator turns a body's attitude and rates (`RigidRotation`) where no

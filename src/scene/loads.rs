@@ -23,8 +23,8 @@
 use super::file::{LoadsTable, Timed};
 use super::table::{Target, TimeTable, TimedLoad};
 use super::{Body, Problem, Selection};
-use crate::Short;
 use crate::models::{Family, Kinematics, Loads};
+use crate::validate::Requirement;
 use nalgebra::{Quaternion, Rotation3, UnitQuaternion, Vector3};
 
 /// A scene's loads, by family.
@@ -129,13 +129,19 @@ fn invalid(key: &str, message: String) -> LoadError {
 
 /// Every entry finite; the key path names the first that is not.
 fn finite<const K: usize>(key: &str, values: [f64; K]) -> Result<[f64; K], LoadError> {
-    match values.iter().position(|v| !v.is_finite()) {
-        None => Ok(values),
-        Some(i) => Err(invalid(
-            &format!("{key}[{i}]"),
-            format!("must be finite, got {}", Short(values[i])),
-        )),
-    }
+    checked(key, Requirement::Finite, values)
+}
+
+/// Every entry meets `requirement` ([`Requirement`], the one set of value checks); the key
+/// path names the first that does not.
+fn checked<const K: usize>(
+    key: &str,
+    requirement: Requirement,
+    values: [f64; K],
+) -> Result<[f64; K], LoadError> {
+    requirement
+        .check_all(values)
+        .map_err(|(i, violation)| invalid(&format!("{key}[{i}]"), violation.to_string()))
 }
 
 fn scalar(key: &str, value: Option<f64>) -> Result<f64, LoadError> {
@@ -215,14 +221,7 @@ fn lever_2d(r: [f64; 2], f: [f64; 2]) -> f64 {
 
 /// Damping coefficients: finite and not negative (a negative one would feed energy in).
 fn damping<const K: usize>(key: &str, values: &Option<Vec<f64>>) -> Result<[f64; K], LoadError> {
-    let d = list::<K>(key, values)?;
-    match d.iter().position(|x| *x < 0.0) {
-        None => Ok(d),
-        Some(i) => Err(invalid(
-            &format!("{key}[{i}]"),
-            format!("must not be negative, got {}", Short(d[i])),
-        )),
-    }
+    checked(key, Requirement::NonNegative, list::<K>(key, values)?)
 }
 
 /// −d₁x − d₂x|x|.
@@ -612,13 +611,10 @@ impl PlanarLoads {
 
 impl SpatialLoads {
     fn from_table(table: &LoadsTable, selection: &Selection, mass: f64) -> Result<Self, LoadError> {
-        let buoyancy = scalar("buoyancy", table.buoyancy)?;
-        if buoyancy < 0.0 {
-            return Err(invalid(
-                "buoyancy",
-                format!("must not be negative, got {}", Short(buoyancy)),
-            ));
-        }
+        let buoyancy = table.buoyancy.unwrap_or(0.0);
+        let buoyancy = Requirement::NonNegative
+            .check(buoyancy)
+            .map_err(|violation| invalid("buoyancy", violation.to_string()))?;
         if table.buoyancy_centre.is_some() && table.buoyancy.is_none() {
             return Err(invalid(
                 "buoyancy_centre",

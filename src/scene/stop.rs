@@ -9,6 +9,7 @@
 //! comparison — is an error listing what is allowed, so a condition is never silently
 //! misread.
 
+use crate::validate::Requirement;
 use std::fmt;
 
 /// One comparison of a state entry, or of the time, with a number.
@@ -74,9 +75,9 @@ impl StopCondition {
             .replace('_', "")
             .parse()
             .map_err(|_| format!("`{number}` is not a number; {FORM}"))?;
-        if !value.is_finite() {
-            return Err(format!("the number must be finite, got {value}"));
-        }
+        let value = Requirement::Finite
+            .check(value)
+            .map_err(|violation| format!("the number {violation}"))?;
         Ok(Self {
             text: text.trim().to_owned(),
             index,

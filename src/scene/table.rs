@@ -27,6 +27,8 @@
 //! with time has no potential.
 
 use super::file::TableSpec;
+use crate::Short;
+use crate::validate::Requirement;
 
 /// Which of a scene's loads a table gives.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -188,14 +190,15 @@ fn check_times(times: &[f64]) -> Result<(), (usize, String)> {
         return Err((0, "a table needs at least one time".into()));
     }
     for (i, t) in times.iter().enumerate() {
-        if !t.is_finite() {
-            return Err((i, format!("must be finite, got {t}")));
-        }
+        Requirement::Finite
+            .check(*t)
+            .map_err(|violation| (i, violation.to_string()))?;
         if i > 0 && *t <= times[i - 1] {
             let message = format!(
-                "must be after the time before it, {}, got {t} (times increase strictly; a \
+                "must be after the time before it, {}, got {} (times increase strictly; a \
                  jump is a step table's switch at one time)",
-                times[i - 1]
+                Short(times[i - 1]),
+                Short(*t)
             );
             return Err((i, message));
         }
@@ -211,10 +214,9 @@ fn entries(value: &[f64], width: usize) -> Result<[f64; 3], (String, String)> {
     }
     let mut out = [0.0; 3];
     for (i, (o, v)) in out.iter_mut().zip(value).enumerate() {
-        if !v.is_finite() {
-            return Err((format!("[{i}]"), format!("must be finite, got {v}")));
-        }
-        *o = *v;
+        *o = Requirement::Finite
+            .check(*v)
+            .map_err(|violation| (format!("[{i}]"), violation.to_string()))?;
     }
     Ok(out)
 }

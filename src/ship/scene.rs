@@ -53,6 +53,7 @@ use super::manoeuvre::{Manoeuvre, ManoeuvreKind};
 use super::rudder::{Rudder, Series};
 use super::table::{GivenTable, RigidBodyTerms, ShipBody, ShipTable};
 use crate::scene::{Problem, SceneError};
+use crate::validate::Requirement;
 use eom_codegen::model::ship::{Units, YawInertia};
 use serde::Deserialize;
 use std::collections::BTreeMap;
@@ -225,23 +226,20 @@ impl Check<'_> {
         self.error(key, Problem::Invalid(why.into()))
     }
 
+    /// `value` if it meets `requirement`, else the error naming `key` (the one set of value
+    /// checks, [`Requirement`]).
+    fn checked(&self, key: &str, requirement: Requirement, value: f64) -> Result<f64, SceneError> {
+        requirement
+            .check(value)
+            .map_err(|violation| self.invalid(key, violation.to_string()))
+    }
+
     fn positive(&self, key: &str, value: f64) -> Result<f64, SceneError> {
-        if value.is_finite() && value > 0.0 {
-            Ok(value)
-        } else {
-            Err(self.invalid(
-                key,
-                format!("{} must be a positive finite number", crate::Short(value)),
-            ))
-        }
+        self.checked(key, Requirement::Positive, value)
     }
 
     fn finite(&self, key: &str, value: f64) -> Result<f64, SceneError> {
-        if value.is_finite() {
-            Ok(value)
-        } else {
-            Err(self.invalid(key, format!("{} is not finite", crate::Short(value))))
-        }
+        self.checked(key, Requirement::Finite, value)
     }
 
     /// Exactly one of the keys given, among those of the table's units; the others refused.

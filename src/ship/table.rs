@@ -17,6 +17,7 @@
 //! by m′r′(U − U₀)/U elsewhere: the run uses 4.46's exact M u r.
 
 use super::ShipError;
+use crate::validate::Requirement;
 use eom_codegen::model::ship::{ADDED_MASS, Force, Term, Units, VARIABLES, YawInertia};
 use std::collections::BTreeMap;
 
@@ -138,11 +139,8 @@ impl ShipTable {
         let mut terms: BTreeMap<Term, f64> = BTreeMap::new();
         let mut names: BTreeMap<Term, &str> = BTreeMap::new();
         for (name, &value) in &given.coefficients {
-            if !value.is_finite() {
-                return Err(ShipError::invalid(
-                    key(name),
-                    format!("{} is not finite", crate::Short(value)),
-                ));
+            if let Err(violation) = Requirement::Finite.check(value) {
+                return Err(ShipError::invalid(key(name), violation.to_string()));
             }
             match parse_name(name) {
                 None => {
