@@ -179,6 +179,39 @@ fn point<const K: usize>(
 
 /// A load that may be a time table: its constant (zeros when absent or tabulated), its table
 /// pushed onto `tables` for `target`.
+/// The forces a planar (`K` = 2) or spatial (`K` = 3) scene states, read alike: in body and
+/// in space axes, each constant or a time table, each at the body origin or at a point.
+struct Forces<const K: usize> {
+    body: [f64; K],
+    space: [f64; K],
+    body_at: [f64; K],
+    space_at: [f64; K],
+}
+
+impl<const K: usize> Forces<K> {
+    fn read(table: &LoadsTable, tables: &mut Vec<TimedLoad>) -> Result<Self, LoadError> {
+        let given = |force: &Option<Timed<Vec<f64>>>| force.is_some();
+        Ok(Forces {
+            body: timed("force_body", &table.force_body, (Target::ForceBody, tables))?,
+            space: timed(
+                "force_space",
+                &table.force_space,
+                (Target::ForceSpace, tables),
+            )?,
+            body_at: point(
+                "force_body_at",
+                &table.force_body_at,
+                ("force_body", given(&table.force_body)),
+            )?,
+            space_at: point(
+                "force_space_at",
+                &table.force_space_at,
+                ("force_space", given(&table.force_space)),
+            )?,
+        })
+    }
+}
+
 fn timed<const K: usize>(
     key: &str,
     value: &Option<Timed<Vec<f64>>>,
@@ -279,33 +312,20 @@ impl SceneLoads {
             (Family::Spatial, Body::Spatial { mass, .. }) => {
                 SceneLoads::Spatial(SpatialLoads::from_table(table, selection, *mass)?)
             }
-            (family, _) => SceneLoads::Planar(PlanarLoads {
-                space_fixed: family == Family::PlanarSpaceFixed,
-                force_body: timed(
-                    "force_body",
-                    &table.force_body,
-                    (Target::ForceBody, &mut tables),
-                )?,
-                force_space: timed(
-                    "force_space",
-                    &table.force_space,
-                    (Target::ForceSpace, &mut tables),
-                )?,
-                force_body_at: point(
-                    "force_body_at",
-                    &table.force_body_at,
-                    ("force_body", table.force_body.is_some()),
-                )?,
-                force_space_at: point(
-                    "force_space_at",
-                    &table.force_space_at,
-                    ("force_space", table.force_space.is_some()),
-                )?,
-                moment: timed_scalar("moment", &table.moment, (Target::Moment, &mut tables))?,
-                linear: damping("linear_damping", &table.linear_damping)?,
-                quadratic: damping("quadratic_damping", &table.quadratic_damping)?,
-                tables,
-            }),
+            (family, _) => {
+                let forces = Forces::<2>::read(table, &mut tables)?;
+                SceneLoads::Planar(PlanarLoads {
+                    space_fixed: family == Family::PlanarSpaceFixed,
+                    force_body: forces.body,
+                    force_space: forces.space,
+                    force_body_at: forces.body_at,
+                    force_space_at: forces.space_at,
+                    moment: timed_scalar("moment", &table.moment, (Target::Moment, &mut tables))?,
+                    linear: damping("linear_damping", &table.linear_damping)?,
+                    quadratic: damping("quadratic_damping", &table.quadratic_damping)?,
+                    tables,
+                })
+            }
         })
     }
 
@@ -622,31 +642,16 @@ impl SpatialLoads {
             ));
         }
         let mut tables = Vec::new();
+        let forces = Forces::<3>::read(table, &mut tables)?;
         Ok(SpatialLoads {
             kinematics: selection.info.kinematics.unwrap_or(Kinematics::Quaternion),
             weight: mass * scalar("gravity", table.gravity)?,
             buoyancy,
             buoyancy_centre: vector("buoyancy_centre", table.buoyancy_centre)?,
-            force_body: timed(
-                "force_body",
-                &table.force_body,
-                (Target::ForceBody, &mut tables),
-            )?,
-            force_space: timed(
-                "force_space",
-                &table.force_space,
-                (Target::ForceSpace, &mut tables),
-            )?,
-            force_body_at: point(
-                "force_body_at",
-                &table.force_body_at,
-                ("force_body", table.force_body.is_some()),
-            )?,
-            force_space_at: point(
-                "force_space_at",
-                &table.force_space_at,
-                ("force_space", table.force_space.is_some()),
-            )?,
+            force_body: forces.body,
+            force_space: forces.space,
+            force_body_at: forces.body_at,
+            force_space_at: forces.space_at,
             moment_body: timed(
                 "moment_body",
                 &table.moment_body,
