@@ -1,6 +1,6 @@
 //! What a run writes into its output folder: the trajectory ([`trajectory`], CSV), the
-//! summary ([`summary`], JSON) and the plots ([`plots`], SVG), into a folder taken for the run
-//! alone ([`folder`]). Only the command-line tool
+//! summary ([`summary`], JSON), the plots ([`plots`], SVG) and the 3-D view ([`view`], one
+//! HTML page), into a folder taken for the run alone ([`folder`]). Only the command-line tool
 //! writes these, so the module comes with the `cli` feature, and a library user who turns it
 //! off builds neither the CSV writer nor the plotting library.
 
@@ -8,3 +8,4 @@ pub mod folder;
 pub mod plots;
 pub mod summary;
 pub mod trajectory;
+pub mod view;

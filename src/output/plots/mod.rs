@@ -218,7 +218,7 @@ fn emit(
 
 /// Writes `bytes` to a temporary file in `dir`, syncs it and renames it to `dir/name`; on
 /// failure removes the temporary file.
-fn write_atomically(dir: &Path, name: &str, bytes: &[u8]) -> io::Result<()> {
+pub(crate) fn write_atomically(dir: &Path, name: &str, bytes: &[u8]) -> io::Result<()> {
     // Unique among processes (the id) and among calls in this process (the counter), so two
     // runs writing into one folder do not share a temporary file.
     static CALLS: AtomicU64 = AtomicU64::new(0);
