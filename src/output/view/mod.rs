@@ -185,6 +185,7 @@ struct Data<'a> {
     trail_name: &'a str,
     camera: &'static str,
     camera_target: [f64; 3],
+    elevation_deg: f64,
     floor: f64,
     water: bool,
     notes: Vec<String>,
@@ -267,6 +268,11 @@ fn render_view(input: &ViewInput) -> Result<String, Problem> {
         trail_name: &input.trail.1,
         camera,
         camera_target,
+        // A top is best seen from near its pivot's level, the rest from a little above.
+        elevation_deg: match input.shape {
+            Shape::Top { .. } => 8.0,
+            _ => 22.0,
+        },
         // The page draws in axes with z up.
         floor: match input.axes {
             SpaceAxes::ZDown => -input.floor,
