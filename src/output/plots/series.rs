@@ -191,11 +191,10 @@ pub(super) fn draw_state(svg: &mut String, input: &PlotInput) -> Result<(), Draw
 /// where the principal values would jump φ and ψ by 180° and fold θ back. The first sample
 /// keeps its principal values.
 pub(super) fn continuous_euler_deg(angles: [&[f64]; 3]) -> [Vec<f64>; 3] {
-    let n = angles.iter().map(|a| a.len()).min().unwrap_or(0);
     let mut out: [Vec<f64>; 3] = Default::default();
     let mut last: Option<[f64; 3]> = None;
-    for i in 0..n {
-        let [r, p, y] = [angles[0][i], angles[1][i], angles[2][i]];
+    let samples = angles[0].iter().zip(angles[1]).zip(angles[2]);
+    for ((&r, &p), &y) in samples {
         let chosen = match last {
             Some(previous) if r.is_finite() && p.is_finite() && y.is_finite() => {
                 let near = |triple: [f64; 3]| {
