@@ -1124,11 +1124,12 @@ fn titles_with_control_characters_are_written_safely_everywhere() {
     // The tennis racket's state plot shows the title with its characters made visible.
     let state = std::fs::read_to_string(dir.join("tennis_racket/state.svg")).unwrap();
     let document = roxmltree::Document::parse(&state).unwrap();
+    // (The caption goes on to name the series left out for being zero throughout.)
     let shown = "Bell ␇, line break, ␛[31mred <&> \"quoted\" \u{fffd}: state";
     assert!(
         document
             .descendants()
-            .any(|n| n.text().is_some_and(|t| t.trim() == shown)),
+            .any(|n| n.text().is_some_and(|t| t.trim().starts_with(shown))),
         "no caption {shown:?}"
     );
 }

@@ -13,6 +13,7 @@ mod ship;
 mod swing;
 mod tradeoff;
 mod values;
+mod view;
 
 use clap::Subcommand;
 

@@ -1,7 +1,7 @@
 //! `eom run SCENE`: run a scene and write what a person wants to look at.
 //!
 //! Into the output folder (default: a folder named after the scene file, in the current
-//! directory): `trajectory.csv`, `summary.json` and the SVG plots. A folder that already
+//! directory): `trajectory.csv`, `summary.json`, the SVG plots and `view.html`, the run in 3-D. A folder that already
 //! holds a run is not overwritten without `--force`, and the folder is taken for the run alone
 //! ([`eom::output::folder`]). A scene with a `[sweep]` runs every case
 //! in parallel, each into `case-NNNN/`, and writes `sweep.csv`, one line per case; `--shard
@@ -23,6 +23,7 @@ use eom::output::plots::PLOT_FILES;
 use eom::output::summary::{Summary, write_atomically};
 use eom::output::text::printable;
 use eom::output::trajectory::{Columns, TrajectoryWriter};
+use eom::output::view::VIEW_FILE;
 use eom::run::{Report, Row, RunError, Sink, run_reporting};
 use eom::scene::sweep::{Case, is_swept, parse_shard, shard_cases};
 use eom::scene::{Body, Problem, Scene, SceneError};
@@ -286,6 +287,7 @@ fn planned_entries(
     }
     let mut entries = vec!["trajectory.csv".to_owned(), "summary.json".to_owned()];
     entries.extend(PLOT_FILES.map(String::from));
+    entries.push(VIEW_FILE.to_owned());
     entries
 }
 
@@ -409,6 +411,7 @@ fn run_case(
             None => scene.title.clone(),
         };
         files.extend(super::plots::write(scene, &title, &columns, out)?);
+        files.push(super::view::write(scene, &columns, out)?);
     }
     if let Some(signal) = interrupted {
         let kept = format!(
@@ -576,12 +579,12 @@ fn print_outcome(scene: &Scene, outcome: &Outcome, out: &Path) {
                 .map_or_else(String::new, |f| f.to_string_lossy().into_owned())
         );
     }
-    if let Some(plot) = outcome
+    if let Some(view) = outcome
         .files
         .iter()
-        .find(|f| f.extension().is_some_and(|e| e == "svg"))
+        .find(|f| f.extension().is_some_and(|e| e == "html"))
     {
-        println!("  open {} in a browser to see the run", plot.display());
+        println!("  open {} in a browser to see the run", view.display());
     }
 }
 

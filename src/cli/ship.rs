@@ -1,7 +1,7 @@
 //! Ship scenes: `eom run SCENE` for a scene with `[hydrodynamics]`, and `eom linear SCENE`.
 //!
 //! `eom run` runs each `[[manoeuvre]]` from the same approach into its own folder
-//! (`trajectory.csv`, `track.svg`, `heading.svg`) and writes `summary.json` beside them: the
+//! (`trajectory.csv`, `track.svg`, `heading.svg`, `view.html`) and writes `summary.json` beside them: the
 //! model that ran, the linear model, each manoeuvre's figures under `"manoeuvre"` with how
 //! much each moves when the step is halved, and the IMO criteria under `"manoeuvre"."imo"`.
 //! Every file is written whole to a temporary name and renamed. Ctrl-C (or SIGTERM) ends the
@@ -217,6 +217,19 @@ fn write_plots(
         marks: &marks,
     };
     write_manoeuvre_plots(folder, &plot)?;
+    let state: Vec<Vec<f64>> = (0..7).map(|k| column(&|s| s.state[k])).collect();
+    let labels = trajectory_columns();
+    let ship = super::view::ShipColumns {
+        title: &title,
+        length: scene.length,
+        time: &time,
+        state: labels[1..8]
+            .iter()
+            .cloned()
+            .zip(state.iter().map(Vec::as_slice))
+            .collect(),
+    };
+    super::view::write_ship(folder, ship)?;
     Ok(())
 }
 

@@ -1,6 +1,7 @@
 //! The energy plot: the relative drift on a symmetric logarithmic axis, linear through zero
 //! within round-off and a decade per unit above it.
 
+use super::precise::PixelFrame;
 use super::scale::{bounded, decimate, extent, tick_label};
 use super::series::time_range;
 use super::{COLOURS, DrawError, FONT, render};
@@ -99,7 +100,7 @@ pub(super) fn draw_energy(
         .filter(|d| d.is_finite())
         .fold(0.0f64, |m, d| m.max(d.abs()));
     let caption = format!("{title}: relative energy drift, largest |ΔE/E₀| = {largest:.1e}");
-    render(svg, size, |root| {
+    render(svg, size, |root, overlay| {
         let windows = size.0 as usize;
         let finite = |i: usize| time[i].is_finite() && drift[i].is_finite();
         let points: Vec<(f64, f64)> = decimate(time.len(), windows, finite, &[drift])
@@ -140,7 +141,9 @@ pub(super) fn draw_energy(
             .x_desc("t [s]")
             .y_desc("(E − E₀)/|E₀|, symmetric log, linear below 1e-16")
             .draw()?;
-        chart.draw_series(LineSeries::new(points, COLOURS[0].stroke_width(1)))?;
+        let frame = PixelFrame::new(chart.plotting_area().get_pixel_range(), time_range, range);
+        let pixels = points.iter().map(|&(t, d)| frame.at((t, symlog(d))));
+        overlay.line(root, pixels, COLOURS[0], 1)?;
         Ok(())
     })
 }

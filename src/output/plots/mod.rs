@@ -22,9 +22,11 @@
 //!   target in the same folder, synced, and renamed over the target. A reader (or a crash)
 //!   never sees a half-written file, and a failed write removes its temporary file.
 //!
-//! The plots: `state.svg` has one small panel per state component, titled with its name,
-//! over one time range (stacked for up to four components, else three to a row);
-//! `attitude.svg` has roll, pitch and yaw on one panel with a legend; `track.svg` has y
+//! The plots: `state.svg` has one small panel per state component, titled with its name, its
+//! value axis labelled with its unit, over one time range (stacked for up to four components,
+//! else three to a row); a component zero for the whole run is named in the caption instead
+//! of given a panel; `attitude.svg` has roll, pitch and yaw on one panel with a legend, made
+//! continuous so that a tumbling body's angles do not wrap; `track.svg` has y
 //! against x at one scale on both axes, the start a ring and the end a dot; `energy.svg` has
 //! the relative drift on a symmetric logarithmic axis, `sign(d)·log₁₀(1 + |d|/10⁻¹⁶)`: linear
 //! through zero within round-off, a decade per unit above it, so that a drift of 10⁻¹⁴
@@ -35,11 +37,14 @@
 //! the finite values only. A series with no finite value draws an empty panel. Values beyond
 //! ±10³⁰⁰ are drawn at that bound, so that an axis range stays finite.
 //!
+//! - **Sub-pixel lines.** plotters' SVG backend writes whole pixels; the data lines are
+//!   written by [`precise`] with two decimals, so that curves are smooth when zoomed.
+//!
 //! A title is drawn [`printable`]: XML cannot hold most control characters (see
 //! [`text`](super::text)).
 //!
 //! The output is deterministic: the same input gives the same bytes (the SVG holds no
-//! timestamp, and pixel coordinates are integers).
+//! timestamp, and every coordinate is written to a fixed number of decimals).
 //!
 //! Here: the input, the errors, and writing each plot atomically. `scale` decides which
 //! samples are drawn and where the axes run; `series`, `track` and `energy` draw the plots;
@@ -57,12 +62,14 @@ use thiserror::Error;
 use super::text::printable;
 
 mod energy;
+mod precise;
 mod scale;
 mod series;
 pub mod ship;
 mod track;
 
 use energy::draw_energy;
+use precise::Overlay;
 use series::{draw_attitude, draw_state};
 pub use track::Mark;
 use track::draw_track;
@@ -230,7 +237,7 @@ fn emit(
 
 /// Writes `bytes` to a temporary file in `dir`, syncs it and renames it to `dir/name`; on
 /// failure removes the temporary file.
-fn write_atomically(dir: &Path, name: &str, bytes: &[u8]) -> io::Result<()> {
+pub(crate) fn write_atomically(dir: &Path, name: &str, bytes: &[u8]) -> io::Result<()> {
     // Unique among processes (the id) and among calls in this process (the counter), so two
     // runs writing into one folder do not share a temporary file.
     static CALLS: AtomicU64 = AtomicU64::new(0);
@@ -252,16 +259,22 @@ fn write_atomically(dir: &Path, name: &str, bytes: &[u8]) -> io::Result<()> {
     result
 }
 
-/// Draws onto an SVG of `size` pixels with a white background, into `svg`.
+/// Draws onto an SVG of `size` pixels with a white background, into `svg`; the data lines
+/// handed to the [`Overlay`] are written at sub-pixel precision once plotters is done.
 fn render(
     svg: &mut String,
     size: (u32, u32),
-    draw: impl FnOnce(&Area) -> Result<(), DrawError>,
+    draw: impl FnOnce(&Area, &mut Overlay) -> Result<(), DrawError>,
 ) -> Result<(), DrawError> {
-    let root = SVGBackend::with_string(svg, size).into_drawing_area();
-    root.fill(&WHITE)?;
-    draw(&root)?;
-    root.present()
+    let mut overlay = Overlay::default();
+    {
+        let root = SVGBackend::with_string(svg, size).into_drawing_area();
+        root.fill(&WHITE)?;
+        draw(&root, &mut overlay)?;
+        root.present()?;
+    }
+    overlay.splice(svg);
+    Ok(())
 }
 
 /// The colours of the lines, in order (colour-blind safe, from the Tableau 10 palette).
@@ -427,7 +440,7 @@ mod tests {
 
         /// The polylines of the data: plotters draws axes, ticks and grid lines as polylines
         /// of two points, and every line series as one polyline of more.
-        fn series(&self) -> Vec<Vec<(i32, i32)>> {
+        fn series(&self) -> Vec<Vec<(f64, f64)>> {
             self.elements("polyline", |n| {
                 n.attribute("points")
                     .unwrap()
@@ -462,22 +475,29 @@ mod tests {
         // Only the plots are left: no temporary file.
         assert_eq!(folder.names(), names);
 
+        // v, w and z are zero throughout: named in the caption, not drawn.
         let state = Svg::read(&folder.0.join("state.svg"));
-        assert_eq!(state.series().len(), 13);
+        assert_eq!(state.series().len(), 10);
         let texts = state.texts();
         assert!(
-            texts.contains(&"tennis racket: state".to_string()),
+            texts
+                .contains(&"tennis racket: state (v, w, z zero throughout, not drawn)".to_string()),
             "{texts:?}"
         );
         for name in SPATIAL {
-            assert!(texts.contains(&name.to_string()), "no panel titled {name}");
+            let panel = texts.contains(&name.to_string());
+            assert_eq!(panel, !["v", "w", "z"].contains(&name), "panel {name}");
+        }
+        // Every value axis carries its unit.
+        for label in ["u [m/s]", "p [rad/s]", "x [m]", "q0 [-]"] {
+            assert!(texts.contains(&label.to_string()), "no axis {label}");
         }
 
         let attitude = Svg::read(&folder.0.join("attitude.svg"));
         assert_eq!(attitude.series().len(), 3);
         let texts = attitude.texts();
         for text in [
-            "tennis racket: attitude (Euler angles)",
+            "tennis racket: attitude (Euler angles, continuous: no wraps)",
             "roll φ",
             "pitch θ",
             "yaw ψ",
@@ -523,11 +543,20 @@ mod tests {
         let run = Run::spatial(20_001);
         write_plots(&folder.0, &run.input("circle", true)).unwrap();
         let track = &Svg::read(&folder.0.join("track.svg")).series()[0];
-        let (xs, ys): (Vec<i32>, Vec<i32>) = track.iter().copied().unzip();
-        let width = xs.iter().max().unwrap() - xs.iter().min().unwrap();
-        let height = ys.iter().max().unwrap() - ys.iter().min().unwrap();
-        assert!(width > 500, "the circle fills the plot: {width} px");
-        assert!((width - height).abs() <= 2, "{width} × {height} px");
+        let (xs, ys): (Vec<f64>, Vec<f64>) = track.iter().copied().unzip();
+        let spread = |v: &[f64]| {
+            v.iter().copied().fold(f64::MIN, f64::max) - v.iter().copied().fold(f64::MAX, f64::min)
+        };
+        let (width, height) = (spread(&xs), spread(&ys));
+        assert!(width > 500.0, "the circle fills the plot: {width} px");
+        assert!((width - height).abs() <= 1.0, "{width} × {height} px");
+        // Drawn at sub-pixel precision: most points fall between whole pixels.
+        let fractional = track.iter().filter(|(x, _)| x.fract() != 0.0).count();
+        assert!(
+            fractional * 2 > track.len(),
+            "{fractional} of {}",
+            track.len()
+        );
     }
 
     #[test]
@@ -545,7 +574,9 @@ mod tests {
         // One above the other, over the same time axis.
         let (top, bottom) = (&series[0], &series[1]);
         assert_eq!(top[0].0, bottom[0].0);
-        assert!(top.iter().map(|p| p.1).max() < bottom.iter().map(|p| p.1).min());
+        let lowest_of_top = top.iter().map(|p| p.1).fold(f64::MIN, f64::max);
+        let highest_of_bottom = bottom.iter().map(|p| p.1).fold(f64::MAX, f64::min);
+        assert!(lowest_of_top < highest_of_bottom);
         // Drifts of 10⁻¹⁴ either side of zero show.
         let texts = Svg::read(&folder.0.join("energy.svg")).texts();
         for tick in ["1e-14", "-1e-14"] {
@@ -563,7 +594,7 @@ mod tests {
         let start = Instant::now();
         let written = write_plots(&folder.0, &run.input("a long run", true)).unwrap();
         let seconds = start.elapsed().as_secs_f64();
-        for (path, lines) in written.iter().zip([13, 3, 1, 1]) {
+        for (path, lines) in written.iter().zip([10, 3, 1, 1]) {
             let bytes = fs::metadata(path).unwrap().len();
             println!("{}: {bytes} bytes", path.display());
             assert!(bytes < 1_000_000, "{}: {bytes} bytes", path.display());
@@ -598,8 +629,9 @@ mod tests {
             let svg = Svg::read(path);
             assert!(!svg.text.contains("NaN") && !svg.text.contains("inf"));
         }
-        // A state of nothing but NaN draws an empty panel: 12 lines for 13 panels.
-        assert_eq!(Svg::read(&written[0]).series().len(), 12);
+        // A state of nothing but NaN (w) draws an empty panel, and v with an infinity is not
+        // zero throughout: 11 lines for 12 panels, z alone left out.
+        assert_eq!(Svg::read(&written[0]).series().len(), 11);
 
         // No samples at all.
         let empty = PlotInput {
@@ -641,6 +673,39 @@ mod tests {
         );
         assert!(error.to_string().contains("track.svg"), "{error}");
         assert!(folder.names().is_empty());
+    }
+
+    #[test]
+    fn a_tumbling_body_s_attitude_has_no_jumps() {
+        // A spin about body y at 1 rad/s: the principal values fold pitch back at ±90° and
+        // jump roll and yaw by 180°; the continuous angles run pitch on and hold the others.
+        let (mut roll, mut pitch, mut yaw) = (vec![], vec![], vec![]);
+        for i in 0..2_000 {
+            let rotation = nalgebra::Rotation3::from_euler_angles(0.0, i as f64 * 0.01, 0.0)
+                * nalgebra::Rotation3::from_euler_angles(0.0, 0.0, 0.0);
+            let (r, p, y) = rotation.euler_angles();
+            roll.push(r.to_degrees());
+            pitch.push(p.to_degrees());
+            yaw.push(y.to_degrees());
+        }
+        assert!(
+            roll.windows(2).any(|w| (w[1] - w[0]).abs() > 170.0),
+            "principal values jump"
+        );
+        let [r, p, y] = series::continuous_euler_deg([&roll, &pitch, &yaw]);
+        let largest_step = |v: &[f64]| {
+            v.windows(2)
+                .map(|w| (w[1] - w[0]).abs())
+                .fold(0.0, f64::max)
+        };
+        for column in [&r, &p, &y] {
+            assert!(largest_step(column) < 1.0, "{}", largest_step(column));
+        }
+        assert!(
+            (p[1_999] - 19.99f64.to_degrees()).abs() < 1e-6,
+            "{}",
+            p[1_999]
+        );
     }
 
     #[test]

@@ -1,8 +1,10 @@
 //! Time series: one panel of lines against time, the state plot (a panel per component) and
 //! the attitude plot (roll, pitch and yaw on one panel).
 
+use super::precise::{Overlay, PixelFrame};
 use super::scale::{axis_range, bounded, decimate, extent, tick_label};
 use super::{Area, COLOURS, DrawError, FONT, PlotInput, render};
+use crate::models::state_unit;
 use plotters::prelude::*;
 
 /// One line of a time-series panel.
@@ -34,6 +36,7 @@ pub(super) struct PanelStyle<'a> {
 /// Draws the lines against `time` onto `area`, over the time range `time_range`.
 pub(super) fn time_panel(
     area: &Area,
+    overlay: &mut Overlay,
     style: &PanelStyle,
     time: &[f64],
     time_range: (f64, f64),
@@ -76,9 +79,15 @@ pub(super) fn time_panel(
         mesh.y_desc(style.y_desc);
     }
     mesh.draw()?;
+    let frame = PixelFrame::new(
+        chart.plotting_area().get_pixel_range(),
+        time_range,
+        value_range,
+    );
     for (line, points) in lines.iter().zip(points) {
         let colour = line.colour;
-        let series = chart.draw_series(LineSeries::new(points, colour.stroke_width(1)))?;
+        overlay.line(area, points.into_iter().map(|p| frame.at(p)), colour, 1)?;
+        let series = chart.draw_series(std::iter::empty::<PathElement<(f64, f64)>>())?;
         if style.legend {
             series.label(line.name).legend(move |(x, y)| {
                 Rectangle::new([(x, y - 1), (x + 16, y + 1)], colour.filled())
@@ -104,16 +113,30 @@ pub(super) fn time_range(time: &[f64]) -> (f64, f64) {
     ))
 }
 
-/// The state plot: one small panel per component, titled with its name, all over the same
-/// time range. Up to four components are stacked in one column; more are laid out three to a
-/// row, so that the spatial states (u v w / p q r / x y z / angles or quaternion) fall into
-/// rows of three.
+/// Whether a series is zero at every sample (and has samples): such a component is named in
+/// the state plot's caption instead of given a panel.
+fn identically_zero(values: &[f64]) -> bool {
+    !values.is_empty() && values.iter().all(|v| *v == 0.0)
+}
+
+/// The state plot: one small panel per component that is not zero throughout, titled with
+/// its name, its value axis labelled with its unit, all over the same time range; the
+/// components left out are named in the caption. Up to four panels are stacked in one
+/// column; more are laid out three to a row.
 pub(super) fn draw_state(svg: &mut String, input: &PlotInput) -> Result<(), DrawError> {
-    let n = input.state.len();
+    let (zero, mut shown): (Vec<_>, Vec<_>) = input
+        .state
+        .iter()
+        .partition(|(_, values)| identically_zero(values));
+    if shown.is_empty() {
+        // Nothing moves: draw every component rather than an empty plot.
+        shown = zero.clone();
+    }
+    let n = shown.len();
     let (columns, panel) = if n <= 4 {
         (1, (1000, 220))
     } else {
-        (3, (440, 210))
+        (3, (440, 230))
     };
     let rows = n.div_ceil(columns);
     let title_height = 40;
@@ -122,17 +145,31 @@ pub(super) fn draw_state(svg: &mut String, input: &PlotInput) -> Result<(), Draw
         title_height + rows as u32 * panel.1,
     );
     let time_range = time_range(input.time);
-    render(svg, size, |root| {
-        let body = root.titled(&format!("{}: state", input.title), (FONT, 22))?;
+    let caption = match zero.len() {
+        0 => format!("{}: state", input.title),
+        _ if zero.len() == input.state.len() => format!("{}: state, zero throughout", input.title),
+        _ => format!(
+            "{}: state ({} zero throughout, not drawn)",
+            input.title,
+            zero.iter()
+                .map(|(name, _)| *name)
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+    };
+    render(svg, size, |root, overlay| {
+        let body = root.titled(&caption, (FONT, 22))?;
         let panels = body.split_evenly((rows, columns));
-        for (k, (&(name, values), area)) in input.state.iter().zip(&panels).enumerate() {
-            // The bottom panel of each column labels the time axis.
-            let bottom = k + columns >= n;
+        for (&(name, values), area) in shown.iter().zip(&panels) {
+            let y_desc = match state_unit(name) {
+                Some(unit) => format!("{name} [{unit}]"),
+                None => name.to_string(),
+            };
             let style = PanelStyle {
                 caption: name,
                 caption_size: 16,
-                y_desc: "",
-                time_desc: bottom,
+                y_desc: &y_desc,
+                time_desc: true,
                 time_ticks: if columns == 1 { 10 } else { 5 },
                 legend: false,
             };
@@ -141,21 +178,58 @@ pub(super) fn draw_state(svg: &mut String, input: &PlotInput) -> Result<(), Draw
                 values,
                 colour: COLOURS[0],
             };
-            time_panel(area, &style, input.time, time_range, &[line])?;
+            time_panel(area, overlay, &style, input.time, time_range, &[line])?;
         }
         Ok(())
     })
 }
 
-/// The attitude plot: roll, pitch and yaw in degrees on one panel, with a legend.
+/// Roll, pitch and yaw in degrees made continuous, so that a tumbling body draws lines
+/// without jumps: each sample is written as whichever of its two equivalent triples, (φ, θ, ψ)
+/// or (φ + 180°, 180° − θ, ψ + 180°), plus whole turns on each angle, lies nearest the
+/// sample before it. A body spinning about its y-axis then shows θ running on through ±90°
+/// where the principal values would jump φ and ψ by 180° and fold θ back. The first sample
+/// keeps its principal values.
+pub(super) fn continuous_euler_deg(angles: [&[f64]; 3]) -> [Vec<f64>; 3] {
+    let mut out: [Vec<f64>; 3] = Default::default();
+    let mut last: Option<[f64; 3]> = None;
+    let samples = angles[0].iter().zip(angles[1]).zip(angles[2]);
+    for ((&r, &p), &y) in samples {
+        let chosen = match last {
+            Some(previous) if r.is_finite() && p.is_finite() && y.is_finite() => {
+                let near = |triple: [f64; 3]| {
+                    let shifted = [0, 1, 2]
+                        .map(|k| triple[k] + 360.0 * ((previous[k] - triple[k]) / 360.0).round());
+                    let distance: f64 = (0..3).map(|k| (shifted[k] - previous[k]).abs()).sum();
+                    (shifted, distance)
+                };
+                let (a, da) = near([r, p, y]);
+                let (b, db) = near([r + 180.0, 180.0 - p, y + 180.0]);
+                if db < da { b } else { a }
+            }
+            _ => [r, p, y],
+        };
+        if chosen.iter().all(|v| v.is_finite()) {
+            last = Some(chosen);
+        }
+        for (column, value) in out.iter_mut().zip(chosen) {
+            column.push(value);
+        }
+    }
+    out
+}
+
+/// The attitude plot: roll, pitch and yaw in degrees, made continuous
+/// ([`continuous_euler_deg`]), on one panel, with a legend.
 pub(super) fn draw_attitude(
     svg: &mut String,
     title: &str,
     time: &[f64],
     angles: [&[f64]; 3],
 ) -> Result<(), DrawError> {
-    render(svg, (1000, 500), |root| {
-        let caption = format!("{title}: attitude (Euler angles)");
+    let unwrapped = continuous_euler_deg(angles);
+    render(svg, (1000, 500), |root, overlay| {
+        let caption = format!("{title}: attitude (Euler angles, continuous: no wraps)");
         let style = PanelStyle {
             caption: &caption,
             caption_size: 22,
@@ -166,7 +240,7 @@ pub(super) fn draw_attitude(
         };
         let lines: Vec<Line> = ["roll φ", "pitch θ", "yaw ψ"]
             .into_iter()
-            .zip(angles)
+            .zip(&unwrapped)
             .zip(COLOURS)
             .map(|((name, values), colour)| Line {
                 name,
@@ -174,6 +248,6 @@ pub(super) fn draw_attitude(
                 colour,
             })
             .collect();
-        time_panel(root, &style, time, time_range(time), &lines)
+        time_panel(root, overlay, &style, time, time_range(time), &lines)
     })
 }

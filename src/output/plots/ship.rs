@@ -89,7 +89,7 @@ fn draw_heading(svg: &mut String, plot: &ManoeuvrePlot) -> Result<(), DrawError>
         },
     ];
     let range = time_range(plot.time);
-    render(svg, (1000, 500), |root| {
-        time_panel(root, &style, plot.time, range, &lines)
+    render(svg, (1000, 500), |root, overlay| {
+        time_panel(root, overlay, &style, plot.time, range, &lines)
     })
 }

@@ -1,6 +1,7 @@
 //! The track plot: one coordinate against the other at one scale on both axes, its ends and
 //! any marked points shown.
 
+use super::precise::PixelFrame;
 use super::scale::{axis_range, bounded, decimate, extent, tick_label};
 use super::{Area, COLOURS, DrawError, FONT, render};
 use plotters::prelude::*;
@@ -64,7 +65,7 @@ pub(super) fn draw_track(
     let x_label = |v: &f64| tick_label(*v, x_range, ticks);
     let y_label = |v: &f64| tick_label(*v, y_range, ticks);
 
-    render(svg, size, |root| {
+    render(svg, size, |root, overlay| {
         let mut chart = track_builder(root, caption)
             .build_cartesian_2d(x_range.0..x_range.1, y_range.0..y_range.1)?;
         chart
@@ -79,11 +80,10 @@ pub(super) fn draw_track(
             .y_desc(y_desc)
             .draw()?;
         let colour = COLOURS[0];
+        let frame = PixelFrame::new(chart.plotting_area().get_pixel_range(), x_range, y_range);
+        overlay.line(root, points.iter().map(|p| frame.at(*p)), colour, 1)?;
         chart
-            .draw_series(LineSeries::new(
-                points.iter().copied(),
-                colour.stroke_width(1),
-            ))?
+            .draw_series(std::iter::empty::<PathElement<(f64, f64)>>())?
             .label("track")
             .legend(move |(x, y)| Rectangle::new([(x, y - 1), (x + 16, y + 1)], colour.filled()));
         // The start a ring, the end a dot inside it: both show when the track closes.
