@@ -313,3 +313,59 @@ fn ctrl_c_ends_a_ship_run_keeping_the_finished_manoeuvres() {
     );
     assert!(summary["manoeuvre"]["zigzag_10_10"].is_null());
 }
+
+/// The Mariner's turning circle over three rudder angles: one sweep run whole and as two
+/// shards gives the same table, case for case, with each case's figures and IMO verdicts.
+#[test]
+fn a_ship_sweep_over_the_rudder_runs_whole_or_in_shards_alike() {
+    let dir = folder("sweep");
+    let text = std::fs::read_to_string(scene("mariner.toml")).unwrap();
+    let approach = &text[..text.find("[[manoeuvre]]").unwrap()];
+    let text = format!(
+        "{approach}[[manoeuvre]]\nname = \"turn\"\nkind = \"turning_circle\"\nrudder_deg = 35.0\n\
+         duration_s = 450.0\n\n[sweep]\n\"manoeuvre[0].rudder_deg\" = [15.0, 25.0, 35.0]\n"
+    );
+    let path = dir.join("sweep.toml");
+    std::fs::write(&path, text).unwrap();
+    let run = |out: &Path, shard: Option<&str>| {
+        let mut args = vec![
+            "run",
+            path.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ];
+        args.extend(shard.map(|s| ["--shard", s]).into_iter().flatten());
+        succeeded(&eom(&args))
+    };
+    let whole = dir.join("whole");
+    run(&whole, None);
+    let table = std::fs::read_to_string(whole.join("sweep.csv")).unwrap();
+    let mut lines = table.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    assert_eq!(
+        &header[..3],
+        ["case", "manoeuvre[0].rudder_deg", "turn.advance_90_m"]
+    );
+    assert!(header.contains(&"imo.tactical_diameter.pass"), "{header:?}");
+    let column = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows.len(), 3);
+    // The harder the rudder, the tighter the turn.
+    let diameter: Vec<f64> = rows
+        .iter()
+        .map(|r| r[column("turn.tactical_diameter_m")].parse().unwrap())
+        .collect();
+    assert!(
+        diameter[0] > diameter[1] && diameter[1] > diameter[2],
+        "{diameter:?}"
+    );
+    for k in 0..3 {
+        assert!(whole.join(format!("case-{k:04}/summary.json")).exists());
+    }
+    let sharded = dir.join("sharded");
+    run(&sharded, Some("0/2"));
+    run(&sharded, Some("1/2"));
+    succeeded(&eom(&["sweep-merge", sharded.to_str().unwrap()]));
+    let merged = std::fs::read_to_string(sharded.join("sweep.csv")).unwrap();
+    assert_eq!(merged, table);
+}

@@ -25,7 +25,7 @@ use eom::output::text::printable;
 use eom::output::trajectory::{Columns, TrajectoryWriter};
 use eom::output::view::VIEW_FILE;
 use eom::run::{Report, Row, RunError, Sink, run_reporting};
-use eom::scene::sweep::{Case, is_swept, parse_shard, shard_cases};
+use eom::scene::sweep::{Case, TableCase, is_swept, parse_shard, shard_cases, shard_tables};
 use eom::scene::{Body, Problem, Scene, SceneError};
 use eom::ship::ShipScene;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
@@ -188,27 +188,14 @@ fn default_folder(scene: &Path) -> PathBuf {
 
 fn execute(text: &str, name: &str, base: &Path, out: &Path, options: Options) -> Result<()> {
     watch_signals();
-    if eom::ship::scene::is_ship_scene(text) {
-        let scene = ShipScene::parse(text, name)?;
-        if options.shard.is_some() {
-            return Err(Usage("--shard splits a [sweep]; a ship scene has none".into()).into());
-        }
-        let rows: f64 = scene
-            .manoeuvres
-            .iter()
-            .map(|m| m.duration / scene.every)
-            .sum();
-        refuse_large_output(rows * SHIP_ROW_BYTES, options)?;
-        let mut planned: Vec<String> = scene.manoeuvres.iter().map(|m| m.name.clone()).collect();
-        planned.push("summary.json".into());
-        let _claim = Claim::take(out, options.force, &Writer::Whole, &planned)?;
-        return super::ship::execute(&scene, name, out);
-    }
     let swept = is_swept(text);
     if options.shard.is_some() && !swept {
         let message =
             format!("--shard splits a [sweep]; {name} has none, so every shard would run it whole");
         return Err(Usage(message).into());
+    }
+    if eom::ship::scene::is_ship_scene(text) {
+        return execute_ship(text, name, out, options, swept);
     }
     // Every case is checked before any runs: a bad value fails the sweep at once.
     let scenes: Vec<(Case, Scene)> = shard_cases(text, name, options.shard)?
@@ -222,14 +209,7 @@ fn execute(text: &str, name: &str, base: &Path, out: &Path, options: Options) ->
         scenes.iter().map(|(_, s)| trajectory_bytes(s)).sum(),
         options,
     )?;
-    let writer = match options.shard {
-        Some((index, count)) => Writer::Shard {
-            index,
-            count,
-            sweep: sweep_identity(name, text, count),
-        },
-        None => Writer::Whole,
-    };
+    let writer = writer_of(name, text, options.shard);
     let planned = planned_entries(&scenes, swept, options.shard);
     let _claim = Claim::take(out, options.force, &writer, &planned)?;
     if !swept {
@@ -239,6 +219,63 @@ fn execute(text: &str, name: &str, base: &Path, out: &Path, options: Options) ->
         return Ok(());
     }
     run_sweep(&scenes, name, out, options.shard)
+}
+
+/// Runs a ship scene, or each case of its sweep, into `out`.
+fn execute_ship(text: &str, name: &str, out: &Path, options: Options, swept: bool) -> Result<()> {
+    // Every case is checked before any runs, as for every scene.
+    let cases: Vec<(TableCase, ShipScene)> = shard_tables(text, name, options.shard)?
+        .into_iter()
+        .map(|case| {
+            let scene = ShipScene::from_file(&case.read(name)?, name)?;
+            Ok((case, scene))
+        })
+        .collect::<Result<_, SceneError>>()?;
+    let rows: f64 = cases
+        .iter()
+        .flat_map(|(_, scene)| scene.manoeuvres.iter().map(|m| m.duration / scene.every))
+        .sum();
+    refuse_large_output(rows * SHIP_ROW_BYTES, options)?;
+    let single = cases.first().filter(|_| !swept).map(|(_, scene)| scene);
+    let planned: Vec<String> = match single {
+        Some(scene) => scene
+            .manoeuvres
+            .iter()
+            .map(|m| m.name.clone())
+            .chain(["summary.json".to_owned()])
+            .collect(),
+        None => cases
+            .iter()
+            .map(|(case, _)| table_case_folder(case))
+            .chain([sweep_file(options.shard)])
+            .collect(),
+    };
+    let writer = writer_of(name, text, options.shard);
+    let _claim = Claim::take(out, options.force, &writer, &planned)?;
+    match single {
+        Some(scene) => super::ship::execute(scene, name, out),
+        None => {
+            let (table, failures) = super::ship::run_sweep(&cases, name, out, table_case_folder);
+            finish_sweep(name, out, options.shard, &table, &failures)
+        }
+    }
+}
+
+/// Who writes into the folder: the whole run, or one shard of its sweep.
+fn writer_of(name: &str, text: &str, shard: Option<(usize, usize)>) -> Writer {
+    match shard {
+        Some((index, count)) => Writer::Shard {
+            index,
+            count,
+            sweep: sweep_identity(name, text, count),
+        },
+        None => Writer::Whole,
+    }
+}
+
+/// A ship sweep case's folder.
+fn table_case_folder(case: &TableCase) -> String {
+    case_folder_of(case.index)
 }
 
 /// Bytes per trajectory number as written (shortest round-trip, up to 24 characters, most
@@ -293,7 +330,12 @@ fn planned_entries(
 
 /// A case's folder, `case-NNNN`.
 fn case_folder(case: &Case) -> String {
-    format!("case-{:04}", case.index)
+    case_folder_of(case.index)
+}
+
+/// The folder of case `index`, `case-NNNN`, for a case of any kind.
+fn case_folder_of(index: usize) -> String {
+    format!("case-{index:04}")
 }
 
 /// The sweep's table: `sweep.csv`, or a shard's `sweep-shard-K-of-N.csv`.
@@ -607,35 +649,49 @@ fn run_sweep(
         })
         .collect();
     let table = sweep_table(scenes, &outcomes);
-    let file = sweep_file(shard);
-    write_atomically(&out.join(&file), table.as_bytes())
-        .with_context(|| format!("writing {}", out.join(&file).display()))?;
-    let failed = outcomes.iter().filter(|o| o.is_err()).count();
+    let failures: Vec<(usize, Option<String>)> = scenes
+        .iter()
+        .zip(&outcomes)
+        .map(|((case, _), outcome)| (case.index, outcome.as_ref().err().map(|e| format!("{e:#}"))))
+        .collect();
+    finish_sweep(name, out, shard, &table, &failures)
+}
+
+/// Writes a sweep's table (any family's) and says how it went: how many cases ran and
+/// failed, each failure, and, after a signal, what was kept.
+fn finish_sweep(
+    name: &str,
+    out: &Path,
+    shard: Option<(usize, usize)>,
+    table: &str,
+    failures: &[(usize, Option<String>)],
+) -> Result<()> {
+    let file = out.join(sweep_file(shard));
+    write_atomically(&file, table.as_bytes())
+        .with_context(|| format!("writing {}", file.display()))?;
+    let failed = failures.iter().filter(|(_, e)| e.is_some()).count();
+    let cases = failures.len();
     println!(
-        "{}: {} cases in {}, {} failed; one line per case in {}",
-        name,
-        scenes.len(),
+        "{name}: {cases} cases in {}, {failed} failed; one line per case in {}",
         out.display(),
-        failed,
-        out.join(&file).display()
+        file.display()
     );
-    for ((case, _), outcome) in scenes.iter().zip(&outcomes) {
-        if let Err(error) = outcome {
-            eprintln!("  case {}: {error:#}", case.index);
+    for (index, error) in failures {
+        if let Some(error) = error {
+            eprintln!("  case {index}: {error}");
         }
     }
     if let Some(signal) = signal_received() {
         let kept = format!(
-            "{} of {} cases finished; each interrupted case keeps its rows, summary and plots, \
-             and {} lists every case",
-            scenes.len() - failed,
-            scenes.len(),
-            out.join(&file).display()
+            "{} of {cases} cases finished; each interrupted case keeps what it ran, and {} \
+             lists every case",
+            cases - failed,
+            file.display()
         );
         return Err(Interrupted { signal, kept }.into());
     }
     if failed > 0 {
-        bail!("{failed} of {} cases failed", scenes.len());
+        bail!("{failed} of {cases} cases failed");
     }
     Ok(())
 }

@@ -15,12 +15,15 @@ use eom::output::plots::ship::{ManoeuvrePlot, write_manoeuvre_plots};
 use eom::output::summary::write_atomically;
 use eom::output::text::printable;
 use eom::output::trajectory::push_number;
+use eom::scene::sweep::TableCase;
 use eom::ship::imo::{Criterion, criteria};
 use eom::ship::linear::{LinearModel, Nomoto, linearise};
 use eom::ship::manoeuvre::{Figures, Sample, run, trajectory_columns};
 use eom::ship::{Manoeuvre, ManoeuvreKind, RigidBodyTerms, ShipError, ShipModel, ShipScene};
 use eom_codegen::model::ship::{Units, YawInertia};
+use rayon::prelude::*;
 use serde_json::{Map, Value, json};
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -42,8 +45,35 @@ struct Outcome {
     steps: u64,
 }
 
-/// Runs a ship scene, read and checked, into `out`, a folder already known to be writable.
+/// Runs a ship scene, read and checked, into `out`, a folder already known to be writable,
+/// and prints its figures and verdicts.
 pub fn execute(scene: &ShipScene, name: &str, out: &Path) -> Result<()> {
+    let run = run_into(scene, name, out)?;
+    print_report(scene, &run.outcomes, &run.judged, out);
+    match run.interrupted {
+        Some(signal) => Err(Interrupted {
+            signal,
+            kept: format!(
+                "the {} manoeuvres finished before it, and summary.json, in {}",
+                run.outcomes.len(),
+                out.display()
+            ),
+        }
+        .into()),
+        None => Ok(()),
+    }
+}
+
+/// What a ship scene's run gave: each manoeuvre's outcome, the IMO criteria judged on them,
+/// and the signal that ended it early, if one did.
+pub struct ShipRun {
+    outcomes: Vec<Outcome>,
+    judged: Vec<Criterion>,
+    interrupted: Option<i32>,
+}
+
+/// Runs every manoeuvre of `scene` into its folder under `out` and writes summary.json.
+fn run_into(scene: &ShipScene, name: &str, out: &Path) -> Result<ShipRun> {
     let started = Instant::now();
     let model = ShipModel::new(&scene.table)?;
     let linear = LinearModel::closed_form(&scene.table);
@@ -92,19 +122,116 @@ pub fn execute(scene: &ShipScene, name: &str, out: &Path) -> Result<()> {
     let bytes = serde_json::to_vec_pretty(&summary)?;
     let path = out.join("summary.json");
     write_atomically(&path, &bytes).with_context(|| format!("writing {}", path.display()))?;
-    print_report(scene, &outcomes, &judged, out);
-    match interrupted {
-        Some(signal) => Err(Interrupted {
-            signal,
-            kept: format!(
-                "the {} manoeuvres finished before it, and summary.json, in {}",
-                outcomes.len(),
-                out.display()
-            ),
+    Ok(ShipRun {
+        outcomes,
+        judged,
+        interrupted,
+    })
+}
+
+/// Runs every case of a ship sweep in parallel, each into `case-NNNN/` of `out`, and returns
+/// the lines of its table: the case, the swept values, each manoeuvre's figures
+/// (`turning_circle_35.tactical_diameter_m`), each IMO criterion's value and verdict
+/// (`imo.tactical_diameter`, `imo.tactical_diameter.pass`), and the error of a case that
+/// failed. A case that fails leaves the others running.
+pub fn run_sweep(
+    cases: &[(TableCase, ShipScene)],
+    name: &str,
+    out: &Path,
+    case_folder: impl Fn(&TableCase) -> String + Sync,
+) -> (String, Vec<(usize, Option<String>)>) {
+    let runs: Vec<Result<ShipRun>> = cases
+        .par_iter()
+        .map(|(case, scene)| {
+            if signal_received().is_some() {
+                anyhow::bail!("not run: the sweep was interrupted");
+            }
+            let folder = out.join(case_folder(case));
+            std::fs::create_dir_all(&folder)
+                .with_context(|| format!("creating {}", folder.display()))?;
+            run_into(scene, name, &folder)
+        })
+        .collect();
+    let failures = cases
+        .iter()
+        .zip(&runs)
+        .map(|((case, _), run)| (case.index, run.as_ref().err().map(|e| format!("{e:#}"))))
+        .collect();
+    (sweep_table(cases, &runs), failures)
+}
+
+/// The columns of a ship sweep's table after the case and its values, from the first case
+/// that ran (every case has the same manoeuvres and criteria).
+fn sweep_columns(cases: &[(TableCase, ShipScene)], runs: &[Result<ShipRun>]) -> Vec<String> {
+    let Some(((_, scene), run)) = cases
+        .iter()
+        .zip(runs)
+        .find_map(|(case, run)| run.as_ref().ok().map(|run| (case, run)))
+    else {
+        return Vec::new();
+    };
+    let mut columns = Vec::new();
+    for (manoeuvre, outcome) in scene.manoeuvres.iter().zip(&run.outcomes) {
+        for (key, _) in &outcome.figures.values {
+            columns.push(format!("{}.{key}", manoeuvre.name));
         }
-        .into()),
-        None => Ok(()),
     }
+    for criterion in &run.judged {
+        columns.push(format!("imo.{}", criterion.name));
+        columns.push(format!("imo.{}.pass", criterion.name));
+    }
+    columns
+}
+
+/// The value of each of `columns` in `run`, empty where it gave none.
+fn sweep_values(scene: &ShipScene, run: &ShipRun, columns: &[String]) -> Vec<String> {
+    let mut values: BTreeMap<String, String> = BTreeMap::new();
+    for (manoeuvre, outcome) in scene.manoeuvres.iter().zip(&run.outcomes) {
+        for (key, value) in &outcome.figures.values {
+            let text = value.map_or_else(String::new, |v| v.to_string());
+            values.insert(format!("{}.{key}", manoeuvre.name), text);
+        }
+    }
+    for criterion in &run.judged {
+        let value = criterion.value.map_or_else(String::new, |v| v.to_string());
+        let pass = criterion.pass().map_or_else(String::new, |p| p.to_string());
+        values.insert(format!("imo.{}", criterion.name), value);
+        values.insert(format!("imo.{}.pass", criterion.name), pass);
+    }
+    columns
+        .iter()
+        .map(|column| values.remove(column).unwrap_or_default())
+        .collect()
+}
+
+/// `case, <swept keys…>, <figures and verdicts…>, error`, one line per case.
+fn sweep_table(cases: &[(TableCase, ShipScene)], runs: &[Result<ShipRun>]) -> String {
+    let Some((first, _)) = cases.first() else {
+        return String::new();
+    };
+    let columns = sweep_columns(cases, runs);
+    let mut header = vec!["case".to_owned()];
+    header.extend(first.values.iter().map(|(k, _)| k.clone()));
+    header.extend(columns.iter().cloned());
+    header.push("error".into());
+    let mut writer = csv::Writer::from_writer(Vec::new());
+    let _ = writer.write_record(&header);
+    for ((case, scene), run) in cases.iter().zip(runs) {
+        let mut row = vec![case.index.to_string()];
+        row.extend(case.values.iter().map(|(_, v)| v.to_string()));
+        match run {
+            Ok(run) => {
+                row.extend(sweep_values(scene, run, &columns));
+                row.push(String::new());
+            }
+            Err(error) => {
+                row.extend(std::iter::repeat_n(String::new(), columns.len()));
+                row.push(format!("{error:#}"));
+            }
+        }
+        let _ = writer.write_record(&row);
+    }
+    String::from_utf8(writer.into_inner().unwrap_or_default()).unwrap_or_default()
 }
 
 /// Whether a run ended because a signal asked it to.

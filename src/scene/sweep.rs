@@ -38,13 +38,17 @@ pub struct Case {
 impl Case {
     /// The case's values as `key = value, …`, for its title and messages.
     pub fn label(&self) -> String {
-        let pairs: Vec<String> = self
-            .values
-            .iter()
-            .map(|(key, value)| format!("{key} = {value}"))
-            .collect();
-        pairs.join(", ")
+        label(&self.values)
     }
+}
+
+/// `key = value, …`.
+fn label(values: &[(String, Value)]) -> String {
+    let pairs: Vec<String> = values
+        .iter()
+        .map(|(key, value)| format!("{key} = {value}"))
+        .collect();
+    pairs.join(", ")
 }
 
 /// Whether scene text has a `[sweep]` table (false for text that is not TOML: reading its
@@ -66,6 +70,49 @@ pub fn shard_cases(
     name: &str,
     shard: Option<(usize, usize)>,
 ) -> Result<Vec<Case>, SceneError> {
+    shard_tables(text, name, shard)?
+        .into_iter()
+        .map(|case| {
+            Ok(Case {
+                file: deserialize(case.table, name)?,
+                index: case.index,
+                values: case.values,
+            })
+        })
+        .collect()
+}
+
+/// One case of a sweep as a TOML table, before it is read as a scene of its kind (a catalog
+/// scene, a ship scene).
+#[derive(Debug, Clone)]
+pub struct TableCase {
+    /// The case's number, from 0.
+    pub index: usize,
+    /// The swept keys and the values this case gives them.
+    pub values: Vec<(String, Value)>,
+    /// The scene's table with those values set, its `[sweep]` taken out.
+    pub table: Table,
+}
+
+impl TableCase {
+    /// The case read as a scene file of type `T`, errors naming the key.
+    pub fn read<T: serde::de::DeserializeOwned>(&self, name: &str) -> Result<T, SceneError> {
+        deserialize(self.table.clone(), name)
+    }
+
+    /// The case's values as `key = value, …`, for its title and messages.
+    pub fn label(&self) -> String {
+        label(&self.values)
+    }
+}
+
+/// The cases of one shard (see [`shard_cases`]) as tables, for a scene of any kind. A key may
+/// name an entry of an array of tables by its index: `"manoeuvre[0].rudder_deg"`.
+pub fn shard_tables(
+    text: &str,
+    name: &str,
+    shard: Option<(usize, usize)>,
+) -> Result<Vec<TableCase>, SceneError> {
     let error = |key: &str, problem| SceneError::new(name, key, problem);
     let mut table: Table = text
         .parse()
@@ -113,11 +160,10 @@ pub fn shard_cases(
                 set(&mut case, key, value.clone())
                     .map_err(|p| error(&format!("sweep.{key}"), p))?;
             }
-            let file = deserialize(case, name)?;
-            Ok(Case {
+            Ok(TableCase {
                 index,
                 values,
-                file,
+                table: case,
             })
         })
         .collect()
@@ -206,7 +252,8 @@ fn combination(axes: &[(String, Axis)], mut index: usize) -> Vec<(String, Value)
 }
 
 /// Sets a dotted key (`body.mass`) of a scene table; the tables on the way must exist or are
-/// made.
+/// made. A part `name[i]` is the `i`-th table of the array of tables `name`, which must exist
+/// (`manoeuvre[0].rudder_deg`).
 fn set(table: &mut Table, key: &str, value: Value) -> Result<(), Problem> {
     let mut parts: Vec<&str> = key.split('.').collect();
     let last = parts
@@ -215,20 +262,46 @@ fn set(table: &mut Table, key: &str, value: Value) -> Result<(), Problem> {
         .ok_or_else(|| Problem::Schema("an empty key".into()))?;
     let mut current = table;
     for part in parts {
-        let entry = current
-            .entry(part.to_owned())
-            .or_insert_with(|| Value::Table(Table::new()));
-        current = match entry {
-            Value::Table(t) => t,
-            _ => return Err(Problem::Schema(format!("`{part}` is not a table"))),
+        current = match indexed(part) {
+            Some((array, i)) => table_in_array(current, array, i)?,
+            None => match current
+                .entry(part.to_owned())
+                .or_insert_with(|| Value::Table(Table::new()))
+            {
+                Value::Table(t) => t,
+                _ => return Err(Problem::Schema(format!("`{part}` is not a table"))),
+            },
         };
     }
     current.insert(last.to_owned(), value);
     Ok(())
 }
 
-/// A scene table as a [`SceneFile`], errors naming the key.
-fn deserialize(table: Table, name: &str) -> Result<SceneFile, SceneError> {
+/// `("manoeuvre", 0)` of `manoeuvre[0]`.
+fn indexed(part: &str) -> Option<(&str, usize)> {
+    let (name, rest) = part.split_once('[')?;
+    let index = rest.strip_suffix(']')?.parse().ok()?;
+    Some((name, index))
+}
+
+/// The `i`-th table of the array `name` in `table`.
+fn table_in_array<'a>(
+    table: &'a mut Table,
+    name: &str,
+    i: usize,
+) -> Result<&'a mut Table, Problem> {
+    let missing = || Problem::Schema(format!("`{name}` has no table [{i}] to set a value in"));
+    match table.get_mut(name) {
+        Some(Value::Array(entries)) => match entries.get_mut(i) {
+            Some(Value::Table(entry)) => Ok(entry),
+            _ => Err(missing()),
+        },
+        _ => Err(missing()),
+    }
+}
+
+/// A scene table as a scene file of type `T`, errors naming the key.
+fn deserialize<T: serde::de::DeserializeOwned>(table: Table, name: &str) -> Result<T, SceneError> {
     serde_path_to_error::deserialize(Value::Table(table)).map_err(|e| {
         let key = e.path().to_string();
         let key = if key == "." { String::new() } else { key };
@@ -335,6 +408,22 @@ end_time = 1.0
             shard_cases(&big, "s.toml", Some((7, 8))).unwrap().len(),
             75_000
         );
+    }
+
+    #[test]
+    fn a_key_may_name_a_table_of_an_array_by_its_index() {
+        let text = "title = \"t\"\n[[manoeuvre]]\nrudder_deg = 35.0\n[[manoeuvre]]\nrudder_deg = 10.0\n\
+                    [sweep]\n\"manoeuvre[1].rudder_deg\" = [5.0, 20.0]\n";
+        let cases = shard_tables(text, "s.toml", None).unwrap();
+        let rudder = |case: &TableCase, i: usize| {
+            case.table["manoeuvre"][i]["rudder_deg"].as_float().unwrap()
+        };
+        assert_eq!(cases.len(), 2);
+        assert_eq!((rudder(&cases[0], 0), rudder(&cases[0], 1)), (35.0, 5.0));
+        assert_eq!((rudder(&cases[1], 0), rudder(&cases[1], 1)), (35.0, 20.0));
+        let missing = text.replace("manoeuvre[1]", "manoeuvre[2]");
+        let error = shard_tables(&missing, "s.toml", None).unwrap_err();
+        assert_eq!(error.key, "sweep.manoeuvre[2].rudder_deg");
     }
 
     #[test]

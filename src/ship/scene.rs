@@ -82,6 +82,8 @@ pub struct ShipSceneFile {
     /// Trajectory rows.
     #[serde(default)]
     pub output: OutputTable,
+    /// Values to sweep over (read by [`crate::scene::sweep`], which runs each case).
+    pub sweep: Option<toml::Table>,
 }
 
 /// `[model]`.

@@ -740,8 +740,9 @@ pub(super) static KEYS: &[Key] = &[
         description: "Values to vary, one run per combination, in parallel, each case into \
                       case-NNNN/ with one line per case in sweep.csv: a key's path in quotes \
                       and a list of values, or { from, to, count } evenly spaced. At most \
-                      100 000 cases, numbered in a fixed order (keys sorted, the last varying \
-                      fastest); `eom run --shard K/N` runs the cases k ≡ K (mod N).",
+                      100 000 cases a run, numbered in a fixed order (keys sorted, the last \
+                      varying fastest); `eom run --shard K/N` runs the cases k ≡ K (mod N) and \
+                      `eom sweep-merge` joins the shards' tables.",
         example: "\"body.mass\" = { from = 1.0, to = 3.0, count = 5 }",
         shown: Shown::Commented,
         ..Key::BLANK

@@ -350,4 +350,20 @@ pub(super) static KEYS: &[Key] = &[
         example: "1.0",
         ..Key::BLANK
     },
+    // [sweep]
+    Key {
+        path: "sweep.*",
+        families: SHIP,
+        kind: Kind::Table("key paths and values"),
+        description: "Values to vary, one run of every manoeuvre per combination, in parallel, \
+                      each case into case-NNNN/ with one line per case in sweep.csv (the \
+                      swept values, each manoeuvre's figures and each IMO criterion's value and \
+                      verdict): a key's path in quotes, an entry of the manoeuvre array by its \
+                      index (`manoeuvre[0].rudder_deg`), and a list of values or { from, to, \
+                      count }. At most 100 000 cases a run; `eom run --shard K/N` runs the \
+                      cases k ≡ K (mod N) and `eom sweep-merge` joins the shards' tables.",
+        example: "\"manoeuvre[0].rudder_deg\" = [5.0, 10.0, 15.0, 20.0, 25.0, 30.0, 35.0]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
 ];
