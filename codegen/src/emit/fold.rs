@@ -133,8 +133,20 @@ fn check_jacobian(
     };
     check_opaque_stages(system, program, jacobians, folded)?;
     let parts = [
-        ("∂f/∂x", &jacobian.state, &jacobians.state, &jacobians.state_pattern, &system.state),
-        ("∂f/∂u", &jacobian.input, &jacobians.input, &jacobians.input_pattern, &system.inputs),
+        (
+            "∂f/∂x",
+            &jacobian.state,
+            &jacobians.state,
+            &jacobians.state_pattern,
+            &system.state,
+        ),
+        (
+            "∂f/∂u",
+            &jacobian.input,
+            &jacobians.input,
+            &jacobians.input_pattern,
+            &system.inputs,
+        ),
     ];
     for (what, entries, function, pattern, variables) in parts {
         let wanted: Vec<(usize, usize)> = entries.iter().map(|e| (e.row, e.column)).collect();

@@ -108,7 +108,10 @@ pub fn generate(model: Model) -> Result<Generated, EmitError> {
     let jacobian = Jacobian::of(&system)?;
     let program = Program::build_with_jacobian(&system, &jacobian);
     fold::verify(&system, &program)?;
-    let jacobians = program.jacobians.as_ref().expect("built with its Jacobians");
+    let jacobians = program
+        .jacobians
+        .as_ref()
+        .expect("built with its Jacobians");
     let state_jacobian_operations = program.operations(&jacobians.state);
     let (state_jacobian, input_jacobian) = (
         jacobians.state_pattern.clone(),
