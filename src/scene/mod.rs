@@ -49,6 +49,8 @@ pub struct Scene {
     pub integrator: IntegratorSpec,
     /// Trajectory rows at t = k·every.
     pub every: f64,
+    /// Where `eom linear` linearises: the `[linear]` table, checked.
+    pub linear: crate::linear::LinearSpec,
 }
 
 /// A scene's body, by family.
@@ -203,6 +205,7 @@ impl Scene {
             .map_err(|(key, problem)| SceneError::new(name, &key, problem))?;
         let integrator = check.integrator(file, &selection, &loads)?;
         let every = check.every(file, integrator.end_time)?;
+        let linear = check.linear(file, &selection)?;
         Ok(Scene {
             title: file.title.clone(),
             selection,
@@ -211,6 +214,7 @@ impl Scene {
             loads,
             integrator,
             every,
+            linear,
         })
     }
 
