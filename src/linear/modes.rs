@@ -80,7 +80,7 @@ pub fn modes(
     let mut modes: Vec<Mode> = eigenvalues
         .iter()
         .filter(|l| l.im >= 0.0)
-        .map(|&l| mode(a, l, radius, names, heading_rate))
+        .map(|&l| mode(a, l, GROWTH_TOLERANCE * radius, names, heading_rate))
         .collect();
     name_modes(&mut modes, family);
     let tolerance = GROWTH_TOLERANCE * radius;
@@ -118,14 +118,23 @@ pub fn eigenvalues(a: &DMatrix<f64>) -> Vec<Complex<f64>> {
     schur(turned).unwrap_or_else(|| vec![Complex::new(f64::NAN, f64::NAN); n])
 }
 
+/// One mode; a real part within `tolerance` of zero counts as zero (no doubling or halving
+/// time, no damping), as the verdict counts it.
 fn mode(
     a: &DMatrix<f64>,
     eigenvalue: Complex<f64>,
-    radius: f64,
+    tolerance: f64,
     names: &[String],
     heading_rate: f64,
 ) -> Mode {
-    let (re, im) = (eigenvalue.re, eigenvalue.im);
+    let radius = tolerance / GROWTH_TOLERANCE;
+    let im = eigenvalue.im;
+    let re = if eigenvalue.re.abs() <= tolerance {
+        0.0
+    } else {
+        eigenvalue.re
+    };
+    let size = Complex::new(re, im).norm();
     let ln2 = std::f64::consts::LN_2;
     let vector = eigenvector(a, eigenvalue, radius);
     let largest = vector.iter().fold(0.0f64, |m, v| m.max(v.norm()));
@@ -138,7 +147,7 @@ fn mode(
     Mode {
         eigenvalue,
         period_s: (im > 0.0).then(|| 2.0 * std::f64::consts::PI / im),
-        damping_ratio: (eigenvalue.norm() > 0.0).then(|| -re / eigenvalue.norm()),
+        damping_ratio: (size > 0.0).then(|| -re / size),
         time_to_double_s: (re > 0.0).then(|| ln2 / re),
         time_to_half_s: (re < 0.0).then(|| ln2 / -re),
         frequency_in_space: frequency_in_space(&vector, names, im, heading_rate),
@@ -200,7 +209,7 @@ fn name_modes(modes: &mut [Mode], family: Family) {
     let mut top_oscillations: Vec<usize> = Vec::new();
     for (index, mode) in modes.iter_mut().enumerate() {
         let oscillates = mode.eigenvalue.im > 0.0;
-        let moving = mode.eigenvalue.norm() > 0.0;
+        let moving = mode.damping_ratio.is_some();
         mode.name = match family {
             Family::Pendulum if moving => Some("the pendulum's swing"),
             Family::Spatial

@@ -40,7 +40,7 @@
 //!
 //! Here: the input, the errors, and writing each plot atomically. `scale` decides which
 //! samples are drawn and where the axes run; `series`, `track` and `energy` draw the plots;
-//! `ship` draws a manoeuvre's.
+//! `ship` draws a manoeuvre's, `poles` a linear model's eigenvalues.
 
 use std::fs::{self, File};
 use std::io::{self, Write};
@@ -52,6 +52,7 @@ use plotters::prelude::*;
 use thiserror::Error;
 
 mod energy;
+pub mod poles;
 mod scale;
 mod series;
 pub mod ship;
