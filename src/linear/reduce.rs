@@ -143,9 +143,17 @@ mod tests {
                 (5, 2),
             ],
         );
+        let coordinate = [false, false, false, true, true, true];
+        let state = [2.0, 0.0, 0.0, 0.0, 0.0, 0.0];
         let at_speed = [0.0, 0.0, 0.0, 2.0, 0.0, 0.0];
         assert_eq!(
-            set_aside(&depends, &at_speed, &[2.0, 0.0, 0.0, 0.0, 0.0, 0.0]),
+            set_aside(&depends, &at_speed, &state, &coordinate),
+            vec![3, 4, 5]
+        );
+        // Slowing down, the velocities are kept: the point is not steady, which is reported.
+        let slowing = [-0.2, 0.0, 0.0, 2.0, 0.0, 0.0];
+        assert_eq!(
+            set_aside(&depends, &slowing, &state, &coordinate),
             vec![3, 4, 5]
         );
     }
@@ -154,11 +162,13 @@ mod tests {
     fn a_growing_attitude_is_set_aside_with_what_only_it_feeds() {
         // ω (0) feeds the angle pair (1, 2), which reads itself; the pair grows.
         let depends = graph(3, &[(1, 0), (1, 2), (2, 1), (2, 0)]);
+        let coordinate = [false, true, true];
+        let state = [5.0, 0.0, 0.0];
         assert_eq!(
-            set_aside(&depends, &[0.0, 5.0, 0.0], &[5.0, 0.0, 0.0]),
+            set_aside(&depends, &[0.0, 5.0, 0.0], &state, &coordinate),
             vec![1, 2]
         );
         // Not growing, the pair is kept.
-        assert!(set_aside(&depends, &[0.0, 0.0, 0.0], &[0.0, 0.0, 0.0]).is_empty());
+        assert!(set_aside(&depends, &[0.0; 3], &state, &coordinate).is_empty());
     }
 }
