@@ -92,12 +92,12 @@ fn reachability(depends: &[Vec<bool>], remaining: &[bool]) -> Vec<Vec<bool>> {
                 .collect()
         })
         .collect();
+    // Warshall: after step k, reach[i][j] holds for paths through the first k states.
     for k in 0..n {
-        for i in 0..n {
-            if reach[i][k] {
-                for j in 0..n {
-                    reach[i][j] |= reach[k][j];
-                }
+        let through = reach[k].clone();
+        for row in reach.iter_mut().filter(|row| row[k]) {
+            for (reached, via) in row.iter_mut().zip(&through) {
+                *reached |= *via;
             }
         }
     }
