@@ -51,6 +51,7 @@ pub mod eval;
 pub mod generic;
 mod inertia;
 pub mod integrate;
+pub mod linear;
 pub mod mass;
 pub mod models;
 #[cfg(feature = "cli")]

@@ -61,7 +61,9 @@ fn euler_variants_call_sin_cos_once_per_angle_and_never_tan() {
             // One kernel call for the angles, each angle's pair bound once. A spatial model
             // reads all three; the top's weight and rates do not depend on its heading ψ.
             let source = &generated.source;
-            let rhs = &source[..source.find("pub fn kinetic_energy").unwrap_or(source.len())];
+            let start = source.find("pub fn rhs").unwrap();
+            let end = source.find("pub const STATE_JACOBIAN").unwrap();
+            let rhs = &source[start..end];
             assert_eq!(
                 rhs.matches("= eom_kernel::sin_cos([").count(),
                 1,

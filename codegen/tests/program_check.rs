@@ -6,12 +6,14 @@
 //! negation or a reciprocal is replaced by its first operand (a dropped term or operation);
 //! one operand of a product is replaced by another variable; a coefficient by another
 //! coefficient; a constant by its double; a sine by the cosine of the same angle and back.
+//! The same mutants of every node the Jacobians ∂f/∂x and ∂f/∂u read fail the check of the
+//! Jacobians alone, against the exact derivative of the system.
 //! `cargo test -p eom-codegen --test program_check -- --nocapture` prints the counts.
 
 use eom_codegen::emit::Program;
-use eom_codegen::emit::fold::verify;
+use eom_codegen::emit::fold::{verify, verify_jacobian};
 use eom_codegen::emit::program::{Id, Node};
-use eom_codegen::model::Model;
+use eom_codegen::model::{Jacobian, Model};
 use num_rational::BigRational;
 
 /// Every mutant of node `index`.
@@ -81,5 +83,40 @@ fn every_single_operation_mutant_fails_the_check() {
         }
     }
     println!("program mutants: {caught} caught of {tried} tried");
+    assert!(tried > 500, "only {tried} mutants");
+}
+
+#[test]
+fn every_single_operation_mutant_of_the_jacobians_fails_their_check() {
+    let (mut tried, mut caught, mut entries) = (0, 0, 0);
+    for model in Model::all() {
+        let strategy = eom_codegen::emit::generate(model).unwrap().strategy;
+        let system = model.system(strategy).unwrap();
+        let jacobian = Jacobian::of(&system).unwrap();
+        let program = Program::build_with_jacobian(&system, &jacobian);
+        verify_jacobian(&system, &program, &jacobian).expect("the unmutated Jacobians verify");
+        let jacobians = program.jacobians.as_ref().unwrap();
+        entries += jacobian.state.len() + jacobian.input.len();
+        let mut reached = program.reached(&jacobians.state);
+        for (r, e) in reached.iter_mut().zip(program.reached(&jacobians.input)) {
+            *r |= e;
+        }
+        for index in (0..program.nodes.len()).filter(|&i| reached[i]) {
+            for mutant in mutants(&program, index) {
+                let mut mutated = program.clone();
+                mutated.nodes[index] = mutant.clone();
+                tried += 1;
+                if verify_jacobian(&system, &mutated, &jacobian).is_err() {
+                    caught += 1;
+                } else {
+                    panic!(
+                        "{}: replacing node {index} ({:?}) by {mutant:?} passed the Jacobian check",
+                        system.name, program.nodes[index]
+                    );
+                }
+            }
+        }
+    }
+    println!("Jacobian mutants: {caught} caught of {tried} tried, over {entries} proved entries");
     assert!(tried > 500, "only {tried} mutants");
 }

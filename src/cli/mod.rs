@@ -2,6 +2,7 @@
 
 mod derive;
 mod eval;
+mod linear;
 mod mass;
 mod merge;
 mod models;
@@ -37,9 +38,10 @@ pub enum Command {
     New(new::Args),
     /// Run a scene file: integrate it and write trajectory.csv, summary.json and SVG plots.
     Run(run::Args),
-    /// The linear model of a ship scene about the straight course: Nomoto's K, T₁, T₂, T₃ by
-    /// the closed form and from the linearised model, course stability, the pivot point.
-    Linear(ship::LinearArgs),
+    /// Linearise a scene: a catalog scene about the point its [linear] table names (A, B,
+    /// the modes and a stability verdict, from the proved Jacobians); a ship scene about the
+    /// straight course (Nomoto's K, T₁, T₂, T₃, course stability, the pivot point).
+    Linear(linear::Args),
     /// Merge the tables of a sweep's shards (`eom run --shard K/N`), once all are done, into
     /// one sweep.csv sorted by case.
     SweepMerge(merge::Args),
@@ -62,7 +64,7 @@ pub fn run(command: Option<Command>) -> anyhow::Result<()> {
         Command::New(args) => new::run(args),
         Command::Run(args) => run::run_command(args),
         Command::Tradeoff(args) => tradeoff::run(args),
-        Command::Linear(args) => ship::linear(args),
+        Command::Linear(args) => linear::run(args),
         Command::SweepMerge(args) => merge::run(args),
     }
 }
@@ -72,7 +74,7 @@ pub fn run(command: Option<Command>) -> anyhow::Result<()> {
 /// writing files (an output folder that another run holds, that holds a run, that eom did not write, that
 /// is a system folder or that cannot be written included), 5
 /// the run itself (gimbal lock, a step too long for the rate of turn, a state or a load that is
-/// not finite, a step below the minimum, too many steps), 128 + the signal for a run ended by
+/// not finite, a step below the minimum, too many steps, a trim that does not converge), 128 + the signal for a run ended by
 /// one (130 for Ctrl-C, 143 for SIGTERM), 1 anything else; 2 a usage error, clap's own or a
 /// command used on what it does not serve (`--shard` without a `[sweep]`, a trajectory over
 /// 100 MB without `--large-output`).
@@ -101,6 +103,9 @@ pub fn exit_code(error: &anyhow::Error) -> u8 {
             return 4;
         }
         if cause.downcast_ref::<eom::run::RunError>().is_some() {
+            return 5;
+        }
+        if cause.downcast_ref::<eom::linear::LinearError>().is_some() {
             return 5;
         }
         if let Some(ship) = cause.downcast_ref::<eom::ship::ShipError>() {

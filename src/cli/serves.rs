@@ -38,14 +38,16 @@ fn family(text: &str) -> String {
         .unwrap_or_else(|| "catalog".into())
 }
 
-/// Refuses anything but a ship scene, for `eom linear`.
-pub fn require_ship(path: &Path) -> Result<()> {
+/// What `eom linear` does with a scene: a ship's Nomoto models (`true`), or a catalog
+/// scene's linearisation (`false`); a swept catalog scene is refused, since it is many.
+pub fn linear_is_ship(path: &Path) -> Result<bool> {
     let (text, kind) = read(path)?;
     match kind {
-        Kind::Ship => Ok(()),
-        Kind::Catalog { .. } => Err(Usage(format!(
-            "eom linear serves ship scenes (a scene with [hydrodynamics]: the Nomoto models of \
-             its table); {} is a {} scene, which it cannot linearise yet",
+        Kind::Ship => Ok(true),
+        Kind::Catalog { swept: false } => Ok(false),
+        Kind::Catalog { swept: true } => Err(Usage(format!(
+            "eom linear linearises one scene; {} (a {} scene) has a [sweep]: run it without \
+             the [sweep], with one case's values",
             path.display(),
             family(&text)
         ))

@@ -24,18 +24,8 @@ use eom_codegen::model::ship::{Units, YawInertia};
 use rayon::prelude::*;
 use serde_json::{Map, Value, json};
 use std::collections::BTreeMap;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::time::Instant;
-
-/// Options of `eom linear`.
-#[derive(clap::Args)]
-pub struct LinearArgs {
-    /// A ship scene (a scene with `[hydrodynamics]`).
-    scene: PathBuf,
-    /// Print JSON instead of text.
-    #[arg(long)]
-    json: bool,
-}
 
 /// A manoeuvre run at the scene's step, and the same at half the step.
 struct Outcome {
@@ -515,14 +505,13 @@ fn print_report(scene: &ShipScene, outcomes: &[Outcome], judged: &[Criterion], o
     println!("  written to {}/", out.display());
 }
 
-/// Runs `eom linear`.
-pub fn linear(args: LinearArgs) -> Result<()> {
-    super::serves::require_ship(&args.scene)?;
-    let scene = ShipScene::load(&args.scene)?;
+/// Runs `eom linear` on a ship scene: Nomoto's models about the straight course.
+pub fn linear(path: &Path, json: bool) -> Result<()> {
+    let scene = ShipScene::load(path)?;
     let model = ShipModel::new(&scene.table)?;
     let linear = LinearModel::closed_form(&scene.table);
     let report = linear_json(&scene, &model, &linear);
-    if args.json {
+    if json {
         println!("{}", serde_json::to_string_pretty(&report)?);
         return Ok(());
     }

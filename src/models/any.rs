@@ -187,3 +187,46 @@ fn fixed<const K: usize>(
         given: values.len(),
     })
 }
+
+/// ∂f/∂x and ∂f/∂u of a model at a state and inputs, as dense matrices (rows: the rates).
+type Jacobians = (nalgebra::DMatrix<f64>, nalgebra::DMatrix<f64>);
+
+impl AnyModel {
+    /// The emitted Jacobians ∂f/∂x (N×N) and ∂f/∂u (N×M) at a state and inputs given as
+    /// slices (see [`Model::state_jacobian`]).
+    pub fn jacobians(&self, state: &[f64], input: &[f64]) -> Result<Jacobians, LayoutError> {
+        struct Both<'a>(&'a [f64], &'a [f64]);
+        impl Visitor for Both<'_> {
+            type Output = Result<Jacobians, LayoutError>;
+            fn visit<Mo: Model<f64, N, M>, const N: usize, const M: usize>(
+                self,
+                model: &Mo,
+            ) -> Self::Output {
+                let state: [f64; N] = fixed(Mo::NAME, "state entries", self.0)?;
+                let input: [f64; M] = fixed(Mo::NAME, "inputs", self.1)?;
+                let a = model.state_jacobian(&state, &input);
+                let b = model.input_jacobian(&state, &input);
+                Ok((
+                    nalgebra::DMatrix::from_fn(N, N, |i, j| a[i][j]),
+                    nalgebra::DMatrix::from_fn(N, M, |i, j| b[i][j]),
+                ))
+            }
+        }
+        self.visit(Both(state, input))
+    }
+
+    /// Where ∂f/∂x has entries that do not vanish identically ([`Model::STATE_JACOBIAN`]).
+    pub fn state_jacobian_pattern(&self) -> &'static [(usize, usize)] {
+        struct Pattern;
+        impl Visitor for Pattern {
+            type Output = &'static [(usize, usize)];
+            fn visit<Mo: Model<f64, N, M>, const N: usize, const M: usize>(
+                self,
+                _: &Mo,
+            ) -> Self::Output {
+                Mo::STATE_JACOBIAN
+            }
+        }
+        self.visit(Pattern)
+    }
+}

@@ -46,6 +46,21 @@ pub trait Model<T: SimdRealField + Copy, const N: usize, const M: usize> {
     /// The kinetic energy of `state` (4.32), emitted from the proved form.
     fn kinetic_energy(&self, state: &[T; N]) -> T;
 
+    /// Where ∂f/∂x has entries that do not vanish identically, as (row, column): row `i` is
+    /// the rate of `STATE[i]`, column `j` the state entry `STATE[j]`.
+    const STATE_JACOBIAN: &'static [(usize, usize)];
+    /// Where ∂f/∂u has entries that do not vanish identically, as (row, column), the column
+    /// indexing `INPUTS`.
+    const INPUT_JACOBIAN: &'static [(usize, usize)];
+
+    /// ∂f/∂x at `state` under `input`, row `i` the derivative of the rate of `STATE[i]`: the
+    /// emitted Jacobian, proved equal to the exact derivative of the proved equations when
+    /// it was generated, with the entries outside [`Model::STATE_JACOBIAN`] zero.
+    fn state_jacobian(&self, state: &[T; N], input: &[T; M]) -> [[T; N]; N];
+
+    /// ∂f/∂u at `state` under `input`, likewise ([`Model::INPUT_JACOBIAN`]).
+    fn input_jacobian(&self, state: &[T; N], input: &[T; M]) -> [[T; M]; N];
+
     /// The potential energy of `state` in the weight's field, emitted from the proved form,
     /// for the models that have one: the pendulum (−Mgh cos θ, 4.35) and the top
     /// (Mgh cos of the tilt); both are Mg times the height of G above the pivot. `None` for the

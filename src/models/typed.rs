@@ -54,6 +54,19 @@ macro_rules! typed_models {
                 generated::$module::kinetic_energy(&self.coefficients, state)
             }
 
+            const STATE_JACOBIAN: &'static [(usize, usize)] = &generated::$module::STATE_JACOBIAN;
+            const INPUT_JACOBIAN: &'static [(usize, usize)] = &generated::$module::INPUT_JACOBIAN;
+
+            fn state_jacobian(&self, state: &[T; $n], input: &[T; $m]) -> [[T; $n]; $n] {
+                let entries = generated::$module::state_jacobian(&self.coefficients, state, input);
+                scatter(&generated::$module::STATE_JACOBIAN, entries)
+            }
+
+            fn input_jacobian(&self, state: &[T; $n], input: &[T; $m]) -> [[T; $m]; $n] {
+                let entries = generated::$module::input_jacobian(&self.coefficients, state, input);
+                scatter(&generated::$module::INPUT_JACOBIAN, entries)
+            }
+
             typed_models!(@potential $module, $n, $potential);
         }
     )*};
@@ -120,3 +133,15 @@ macro_rules! typed_models {
 }
 
 for_each_model!(typed_models);
+
+/// A dense matrix from the entries an emitted Jacobian returns and where they sit.
+fn scatter<T: SimdRealField + Copy, const R: usize, const C: usize, const K: usize>(
+    pattern: &[(usize, usize); K],
+    entries: [T; K],
+) -> [[T; C]; R] {
+    let mut dense = [[T::zero(); C]; R];
+    for (&(row, column), value) in pattern.iter().zip(entries) {
+        dense[row][column] = value;
+    }
+    dense
+}

@@ -582,6 +582,45 @@ impl Checker<'_> {
         Ok(Some(condition))
     }
 
+    /// The `[linear]` table, its names those of the model's state entries and inputs and
+    /// its values finite.
+    pub(super) fn linear(
+        &self,
+        file: &SceneFile,
+        selection: &Selection,
+    ) -> Result<crate::linear::LinearSpec, SceneError> {
+        let Some(table) = &file.linear else {
+            return Ok(crate::linear::LinearSpec::default());
+        };
+        let (state, inputs) = (selection.info.state, selection.info.inputs);
+        let known = |key: &str, name: &str| match crate::linear::resolve(name, state, inputs) {
+            Some(_) => Ok(()),
+            None => Err(self.invalid(
+                key,
+                format!(
+                    "`{name}` is not a state entry or an input of {}: it has {} and {}",
+                    selection.info.name,
+                    state.join(", "),
+                    inputs.join(", ")
+                ),
+            )),
+        };
+        let mut spec = crate::linear::LinearSpec::default();
+        for (name, value) in table.at.iter().flatten() {
+            let key = format!("linear.at.{name}");
+            known(&key, name)?;
+            if !value.is_finite() {
+                return Err(self.invalid(&key, "must be finite"));
+            }
+            spec.at.push((name.clone(), *value));
+        }
+        for (i, name) in table.trim.iter().flatten().enumerate() {
+            known(&format!("linear.trim[{i}]"), name)?;
+            spec.trim.push(name.clone());
+        }
+        Ok(spec)
+    }
+
     pub(super) fn every(&self, file: &SceneFile, end_time: f64) -> Result<f64, SceneError> {
         let Some(every) = file.output.every else {
             // An end time within 500 of the smallest f64 would give rows 0 s apart.

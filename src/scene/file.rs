@@ -29,6 +29,19 @@ pub struct SceneFile {
     /// Values to vary, one run per combination (see [`super::sweep`]).
     #[serde(default)]
     pub sweep: Option<toml::Table>,
+    /// Where `eom linear` linearises (see [`crate::linear`]).
+    #[serde(default)]
+    pub linear: Option<LinearTable>,
+}
+
+/// `[linear]`: the operating point of `eom linear`, by default the initial state.
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LinearTable {
+    /// State entries and inputs at the point, by the model's names, SI and radians.
+    pub at: Option<std::collections::BTreeMap<String, f64>>,
+    /// The free variables solved for so that the reduced state is in equilibrium.
+    pub trim: Option<Vec<String>>,
 }
 
 /// `[body]`: each family reads its own keys and refuses the others.

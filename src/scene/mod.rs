@@ -57,6 +57,8 @@ pub struct Scene {
     pub every: f64,
     /// The condition that ends the run where it first holds, if the scene gives one.
     pub stop: Option<StopCondition>,
+    /// Where `eom linear` linearises: the `[linear]` table, checked.
+    pub linear: crate::linear::LinearSpec,
 }
 
 /// A scene's body, by family.
@@ -212,6 +214,7 @@ impl Scene {
         let integrator = check.integrator(file, &loads)?;
         let every = check.every(file, integrator.end_time)?;
         let stop = check.stop(file, &selection, &initial)?;
+        let linear = check.linear(file, &selection)?;
         Ok(Scene {
             title: file.title.clone(),
             selection,
@@ -221,6 +224,7 @@ impl Scene {
             integrator,
             every,
             stop,
+            linear,
         })
     }
 

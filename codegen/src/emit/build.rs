@@ -12,16 +12,16 @@
 //!    sum whose terms are all negative.
 
 use super::program::{
-    Coefficient, Function, Id, Named, Node, Program, identifier, rate_name, unique,
+    Coefficient, Function, Id, Jacobians, Named, Node, Program, identifier, rate_name, unique,
 };
-use crate::model::System;
+use crate::model::{Entry, Jacobian, System};
 use crate::symbolic::{Atom, Expr, Monomial, Rational};
 use num_traits::{One, Signed};
 use std::collections::{BTreeMap, HashMap};
 
 /// Builds the program of a system: its right-hand side and, where it has them, its kinetic
-/// and potential energies.
-pub(super) fn program(system: &System) -> Program {
+/// and potential energies, and the Jacobians when they are given.
+pub(super) fn program(system: &System, jacobian: Option<&Jacobian>) -> Program {
     let mut builder = Builder::new(system);
     let rhs = builder.function(&system.stages, &rhs_outputs(system));
     let mut energy = |value: &Option<Expr>, function: &str, name: &str, display: &str| {
@@ -45,13 +45,58 @@ pub(super) fn program(system: &System) -> Program {
         "v",
         "the potential energy V",
     );
+    let jacobians = jacobian.map(|jacobian| {
+        // The opaque stages are the right-hand side's own nodes again (hash-consed), named
+        // in the Jacobians as they are in `rhs`.
+        let opaque: Vec<(String, Expr)> = system
+            .stages
+            .iter()
+            .filter(|(name, _)| jacobian.opaque.contains(name))
+            .cloned()
+            .collect();
+        let state = jacobian_outputs(system, &jacobian.state, &system.state);
+        let input = jacobian_outputs(system, &jacobian.input, &system.inputs);
+        Jacobians {
+            state: builder.function(&opaque, &state),
+            input: builder.function(&opaque, &input),
+            state_pattern: pattern(&jacobian.state),
+            input_pattern: pattern(&jacobian.input),
+        }
+    });
     Program {
         nodes: builder.nodes,
         coefficients: builder.coefficients,
         rhs,
         kinetic_energy,
         potential_energy,
+        jacobians,
     }
+}
+
+/// Where each entry sits: (row, column).
+fn pattern(entries: &[Entry]) -> Vec<(usize, usize)> {
+    entries.iter().map(|e| (e.row, e.column)).collect()
+}
+
+/// A Jacobian's entries as (name, target, value): `d_theta_dot_d_theta`, the derivative of
+/// θ̇'s rate by θ. Opaque stages in the values are read as the right-hand side's stages.
+fn jacobian_outputs(
+    system: &System,
+    entries: &[Entry],
+    variables: &[&str],
+) -> Vec<(String, Target, Expr)> {
+    entries
+        .iter()
+        .map(|entry| {
+            let (state, variable) = (system.state[entry.row], variables[entry.column]);
+            let name = format!("d_{}_d_{}", rate_name(state), identifier(variable));
+            let target = Target {
+                name: name.clone(),
+                display: format!("∂(d{state}/dt)/∂{variable}"),
+            };
+            (name, target, entry.value.clone())
+        })
+        .collect()
 }
 
 /// What a sum computes, for naming the coefficients it hoists: `p_dot` and `dp/dt`.

@@ -60,7 +60,9 @@ fn catalog_tokens(generated: &[Generated]) -> TokenStream {
         ///
         /// Each module has `Parameters` (f64, as given), `Coefficients<T>` (every
         /// parameter-only coefficient, computed once), `STATE` and `INPUTS` (the array layouts),
-        /// `OPERATIONS` (the cost of one call), `rhs`, `kinetic_energy` and, for a body in the
+        /// `OPERATIONS` (the cost of one call), `rhs`, its Jacobians `state_jacobian` and
+        /// `input_jacobian` with their patterns `STATE_JACOBIAN` and `INPUT_JACOBIAN` (the
+        /// entries that do not vanish identically), `kinetic_energy` and, for a body in the
         /// weight's field (the pendulum, the top), `potential_energy`, generic over simba's
         /// `SimdRealField`. The typed models in [`crate::models`] validate the parameters; call
         /// these directly only with validated ones.

@@ -9,12 +9,16 @@
 //! system's outputs with every other stage substituted back. Each stage and each output must
 //! then equal the system's, term by term; the kinetic and potential energies likewise.
 //!
+//! The Jacobians, where the program has them, are compared in the same way with the exact
+//! derivative of the system ([`Jacobian::of`]), entry by entry and with the same pattern.
+//!
 //! Because the comparison is exact, any change to one operation — a swapped operand, a flipped
 //! sign, a dropped term, a wrong coefficient — leaves a residual and stops the build with the
 //! model's name and the output that differs (`tests/program_check.rs` tries every such mutant).
 
 use super::program::{Function, Node, Program};
-use crate::model::{BuildError, System};
+use crate::model::jacobian::expand;
+use crate::model::{BuildError, Jacobian, System};
 use crate::symbolic::{Expr, SymbolicError};
 
 /// Checks that `program` computes exactly the stages, outputs and energies of `system`.
@@ -92,6 +96,116 @@ pub fn verify(system: &System, program: &Program) -> Result<(), BuildError> {
             }
         }
     }
+    if program.jacobians.is_some() {
+        check_jacobian(system, program, &Jacobian::of(system)?, &folded)?;
+    }
+    Ok(())
+}
+
+/// Checks that the Jacobians of `program` compute exactly the entries of `jacobian`, the
+/// derivative of `system`, with the same pattern.
+pub fn verify_jacobian(
+    system: &System,
+    program: &Program,
+    jacobian: &Jacobian,
+) -> Result<(), BuildError> {
+    let opaque = opaque_stages(system, program);
+    let folded = fold(system, program, &opaque).map_err(|source| BuildError::Symbolic {
+        model: system.name.clone(),
+        source,
+    })?;
+    check_jacobian(system, program, jacobian, &folded)
+}
+
+fn check_jacobian(
+    system: &System,
+    program: &Program,
+    jacobian: &Jacobian,
+    folded: &[Expr],
+) -> Result<(), BuildError> {
+    let fail = |what: String, residual: &Expr| BuildError::Verification {
+        model: system.name.clone(),
+        what,
+        residual: residual.to_string(),
+    };
+    let Some(jacobians) = &program.jacobians else {
+        return Err(fail("the program has no Jacobians".into(), &Expr::zero()));
+    };
+    check_opaque_stages(system, program, jacobians, folded)?;
+    let parts = [
+        (
+            "∂f/∂x",
+            &jacobian.state,
+            &jacobians.state,
+            &jacobians.state_pattern,
+            &system.state,
+        ),
+        (
+            "∂f/∂u",
+            &jacobian.input,
+            &jacobians.input,
+            &jacobians.input_pattern,
+            &system.inputs,
+        ),
+    ];
+    for (what, entries, function, pattern, variables) in parts {
+        let wanted: Vec<(usize, usize)> = entries.iter().map(|e| (e.row, e.column)).collect();
+        if *pattern != wanted || function.outputs.len() != entries.len() {
+            return Err(fail(
+                format!("the emitted {what} has another pattern than the derivative"),
+                &Expr::zero(),
+            ));
+        }
+        for (entry, named) in entries.iter().zip(&function.outputs) {
+            let residual = &folded[named.id.index()] - &entry.value;
+            if !residual.is_zero() {
+                let (state, variable) = (system.state[entry.row], variables[entry.column]);
+                return Err(fail(
+                    format!(
+                        "the emitted {what} entry ∂(d{state}/dt)/∂{variable} differs from the \
+                         derivative of the proved form"
+                    ),
+                    &residual,
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The stages the Jacobians read as symbols, each equal to its definition: so that the check
+/// of the Jacobians stands on its own, without the check of `rhs`.
+fn check_opaque_stages(
+    system: &System,
+    program: &Program,
+    jacobians: &super::program::Jacobians,
+    folded: &[Expr],
+) -> Result<(), BuildError> {
+    let opaque = opaque_stages(system, program);
+    for named in jacobians.state.stages.iter().chain(&jacobians.input.stages) {
+        let definition = system
+            .stages
+            .iter()
+            .find(|(name, _)| super::program::identifier(name) == named.name)
+            .map(|(_, definition)| definition);
+        let wanted = match definition {
+            Some(definition) => {
+                expand(system, definition, &opaque).map_err(|source| BuildError::Symbolic {
+                    model: system.name.clone(),
+                    source,
+                })?
+            }
+            None => Expr::zero(),
+        };
+        let residual = &folded[named.id.index()] - &wanted;
+        if definition.is_none() || !residual.is_zero() {
+            return Err(BuildError::Verification {
+                model: system.name.clone(),
+                what: format!("the stage {} the Jacobians read differs", named.name),
+                residual: residual.to_string(),
+            });
+        }
+    }
     Ok(())
 }
 
@@ -133,18 +247,6 @@ fn opaque_stages(system: &System, program: &Program) -> Vec<String> {
         }
     }
     opaque
-}
-
-/// A value of the system with every stage but the opaque ones substituted back.
-fn expand(system: &System, value: &Expr, opaque: &[String]) -> Result<Expr, SymbolicError> {
-    system
-        .stages
-        .iter()
-        .rev()
-        .filter(|(name, _)| !opaque.contains(name))
-        .try_fold(value.clone(), |value, (name, definition)| {
-            value.subs(name, definition)
-        })
 }
 
 /// Every node of the program as an expression, by id.

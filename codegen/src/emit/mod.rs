@@ -16,7 +16,7 @@ mod writer;
 
 pub use program::{Operations, Program, identifier};
 
-use crate::model::{BuildError, Model, Strategy, System};
+use crate::model::{BuildError, Jacobian, Model, Strategy, System};
 use std::path::{Path, PathBuf};
 use thiserror::Error;
 
@@ -65,11 +65,19 @@ pub struct Generated {
     pub strategy: Strategy,
     /// The cost of one call.
     pub operations: Operations,
+    /// The cost of one call of `state_jacobian` (∂f/∂x).
+    pub state_jacobian_operations: Operations,
+    /// The entries of ∂f/∂x that do not vanish identically, as (row, column).
+    pub state_jacobian: Vec<(usize, usize)>,
+    /// The entries of ∂f/∂u that do not vanish identically, as (row, column).
+    pub input_jacobian: Vec<(usize, usize)>,
     /// The formatted source.
     pub source: String,
 }
 
-/// Generates one model's source, after proving that the program folds back to the system.
+/// Generates one model's source, after proving that the program folds back to the system:
+/// its right-hand side, its energies, and its Jacobians ∂f/∂x and ∂f/∂u against the exact
+/// derivative of the system.
 ///
 /// ```
 /// use eom_codegen::emit::generate;
@@ -77,7 +85,8 @@ pub struct Generated {
 /// let model = Model::Spatial { symmetry: Symmetry::Principal, kinematics: Kinematics::Euler };
 /// let generated = generate(model).unwrap();
 /// assert!(generated.source.contains("pub fn rhs<T: SimdRealField + Copy>"));
-/// assert_eq!(generated.source.matches("eom_kernel::sin_cos(").count(), 1); // one call, three angles
+/// // One call for the three angles in `rhs`, one in `state_jacobian`.
+/// assert_eq!(generated.source.matches("eom_kernel::sin_cos(").count(), 2);
 /// assert_eq!(generated.operations.trig, 3); // one sin_cos per Euler angle
 /// ```
 pub fn generate(model: Model) -> Result<Generated, EmitError> {
@@ -93,8 +102,21 @@ pub fn generate(model: Model) -> Result<Generated, EmitError> {
             best = Some((strategy, system, program, operations));
         }
     }
-    let (strategy, system, program, operations) = best.expect("every model has a strategy");
+    let (strategy, system, _, operations) = best.expect("every model has a strategy");
+    // The strategy is chosen by the cost of `rhs` alone; the Jacobians are built after it in
+    // the same arena, so the right-hand side's nodes and names are those it was chosen by.
+    let jacobian = Jacobian::of(&system)?;
+    let program = Program::build_with_jacobian(&system, &jacobian);
     fold::verify(&system, &program)?;
+    let jacobians = program
+        .jacobians
+        .as_ref()
+        .expect("built with its Jacobians");
+    let state_jacobian_operations = program.operations(&jacobians.state);
+    let (state_jacobian, input_jacobian) = (
+        jacobians.state_pattern.clone(),
+        jacobians.input_pattern.clone(),
+    );
     let source = rust::source(&system, &program, &format!("{strategy:?}")).map_err(|source| {
         EmitError::Syntax {
             model: system.name.clone(),
@@ -119,6 +141,9 @@ pub fn generate(model: Model) -> Result<Generated, EmitError> {
         potential_energy: system.potential_energy.is_some(),
         strategy,
         operations,
+        state_jacobian_operations,
+        state_jacobian,
+        input_jacobian,
         source,
     })
 }

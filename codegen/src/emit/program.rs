@@ -13,7 +13,7 @@
 //! Nothing here is trusted: [`super::fold`] folds the finished program back into the canonical
 //! form and proves it equal to the system before any code is written.
 
-use crate::model::System;
+use crate::model::{Jacobian, System};
 use crate::symbolic::{Expr, Rational};
 
 /// The index of a node in its program's arena.
@@ -131,6 +131,22 @@ pub struct Program {
     pub kinetic_energy: Option<Function>,
     /// The potential energy, where the system has one.
     pub potential_energy: Option<Function>,
+    /// ∂f/∂x and ∂f/∂u, where the program was built with them.
+    pub jacobians: Option<Jacobians>,
+}
+
+/// The Jacobians of the right-hand side as two functions, one output per entry that does not
+/// vanish identically, and where each entry sits in the matrix.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Jacobians {
+    /// ∂f/∂x, its entries row-major.
+    pub state: Function,
+    /// ∂f/∂u, its entries row-major.
+    pub input: Function,
+    /// (row, column) of each output of [`Jacobians::state`].
+    pub state_pattern: Vec<(usize, usize)>,
+    /// (row, column) of each output of [`Jacobians::input`].
+    pub input_pattern: Vec<(usize, usize)>,
 }
 
 /// The Rust identifier of a symbol in generated code.
@@ -150,7 +166,13 @@ impl Program {
     /// Builds the program of a system: its right-hand side and, where it has them, its
     /// kinetic and potential energies (the builder is in `build.rs` beside this file).
     pub fn build(system: &System) -> Program {
-        super::build::program(system)
+        super::build::program(system, None)
+    }
+
+    /// Builds the program of a system with its Jacobians as two more functions, sharing the
+    /// arena and the hoisted coefficients of the right-hand side.
+    pub fn build_with_jacobian(system: &System, jacobian: &Jacobian) -> Program {
+        super::build::program(system, Some(jacobian))
     }
 
     /// The node with this id.

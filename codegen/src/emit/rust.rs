@@ -11,7 +11,7 @@
 //! What goes inside each function is written by [`super::writer`]. Outputs are grouped by the
 //! equation they come from, with a comment citing it above each group.
 
-use super::program::{Coefficient, Function, Operations, Program, identifier};
+use super::program::{Coefficient, Function, Jacobians, Operations, Program, identifier};
 use super::writer::Writer;
 use crate::model::System;
 use crate::symbolic::{Atom, Expr, Rational};
@@ -101,7 +101,11 @@ fn file_tokens(
         };
         energy_function(system, program, function, energy, comments)
     });
-    let functions = quote! { #rhs #kinetic #potential };
+    let jacobians = program
+        .jacobians
+        .as_ref()
+        .map(|jacobians| jacobian_tokens(system, program, jacobians, comments));
+    let functions = quote! { #rhs #jacobians #kinetic #potential };
     // A product that feeds a sum is written `mul_add(a, b, c)` (see `writer.rs`).
     let fused = mentions(&functions, "mul_add");
     let mul_add = fused.then(|| quote! { use eom_kernel::mul_add; });
@@ -334,6 +338,156 @@ fn emission_order<'a>(
     let (mut first, rest): (Vec<_>, Vec<_>) = groups.into_iter().partition(|(_, r)| reads_trig(r));
     first.extend(rest);
     first
+}
+
+/// What differs between the two emitted Jacobians.
+struct JacobianKind<'a> {
+    /// The function's name: `state_jacobian`.
+    name: &'static str,
+    /// The name of its pattern constant: `STATE_JACOBIAN`.
+    pattern_name: &'static str,
+    /// The matrix: `∂f/∂x`.
+    symbol: &'static str,
+    /// What it differentiates by, for the doc: `the state`.
+    by: &'static str,
+    /// The layout constant its columns index: `STATE`.
+    columns: &'static str,
+    /// The function in the program.
+    function: &'a Function,
+    /// (row, column) of each output.
+    pattern: &'a [(usize, usize)],
+}
+
+fn jacobian_tokens(
+    system: &System,
+    program: &Program,
+    jacobians: &Jacobians,
+    comments: &mut Vec<String>,
+) -> TokenStream {
+    let state = JacobianKind {
+        name: "state_jacobian",
+        pattern_name: "STATE_JACOBIAN",
+        symbol: "∂f/∂x",
+        by: "the state",
+        columns: "STATE",
+        function: &jacobians.state,
+        pattern: &jacobians.state_pattern,
+    };
+    let input = JacobianKind {
+        name: "input_jacobian",
+        pattern_name: "INPUT_JACOBIAN",
+        symbol: "∂f/∂u",
+        by: "the inputs",
+        columns: "INPUTS",
+        function: &jacobians.input,
+        pattern: &jacobians.input_pattern,
+    };
+    let state = jacobian_function(system, program, state, comments);
+    let input = jacobian_function(system, program, input, comments);
+    quote! { #state #input }
+}
+
+fn jacobian_doc(system: &System, operations: &Operations, kind: &JacobianKind) -> Vec<String> {
+    let ops = operations;
+    vec![
+        format!(
+            " {} of [`rhs`]: the exact derivative of the proved equations ({}) by {}, proved \
+             equal to it when this file was generated.",
+            kind.symbol,
+            system.equations.join(", "),
+            kind.by
+        ),
+        String::new(),
+        format!(
+            " Returns the {} entries that do not vanish identically, in the order of \
+             [`{}`]; every other entry is zero.",
+            kind.pattern.len(),
+            kind.pattern_name
+        ),
+        String::new(),
+        format!(
+            " Cost per call: {} add, {} mul, {} div, {} sqrt, {} trig.",
+            ops.add, ops.mul, ops.div, ops.sqrt, ops.trig
+        ),
+    ]
+}
+
+fn jacobian_function(
+    system: &System,
+    program: &Program,
+    kind: JacobianKind,
+    comments: &mut Vec<String>,
+) -> TokenStream {
+    let function = kind.function;
+    let doc = jacobian_doc(system, &program.operations(function), &kind);
+    let (n, m, count) = (
+        Literal::usize_unsuffixed(system.state.len()),
+        Literal::usize_unsuffixed(system.inputs.len()),
+        Literal::usize_unsuffixed(kind.pattern.len()),
+    );
+    let mut writer = Writer::new(program, function);
+    let state = writer.destructure(&system.state);
+    let inputs = writer.destructure(&system.inputs);
+    let trig = writer.sin_cos();
+    let mut body = Vec::new();
+    let ends = system
+        .groups
+        .iter()
+        .skip(1)
+        .map(|g| g.first)
+        .chain([system.state.len()]);
+    for (group, end) in system.groups.iter().zip(ends) {
+        let in_group: Vec<usize> = (0..kind.pattern.len())
+            .filter(|&i| (group.first..end).contains(&kind.pattern[i].0))
+            .collect();
+        if in_group.is_empty() {
+            continue;
+        }
+        let marker = Literal::usize_unsuffixed(comments.len());
+        comments.push(format!("the derivative of {}", group.comment));
+        body.push(quote! { __eom_comment!(#marker); });
+        for i in in_group {
+            body.extend(writer.define(function.outputs[i].id));
+        }
+    }
+    let outputs: Vec<TokenStream> = function
+        .outputs
+        .iter()
+        .map(|named| writer.reference(named.id))
+        .collect();
+    let reads = quote! { #(#body)* #(#outputs)* };
+    let k = if mentions(&reads, "k") {
+        quote! { k }
+    } else {
+        quote! { _k }
+    };
+    let entries = kind.pattern.iter().map(|&(row, column)| {
+        let (row, column) = (
+            Literal::usize_unsuffixed(row),
+            Literal::usize_unsuffixed(column),
+        );
+        quote! { (#row, #column) }
+    });
+    let pattern_doc = format!(
+        " Where each entry of [`{}`] sits in {}: (row, column), the row indexing [`STATE`] (the \
+         rate differentiated), the column [`{}`].",
+        kind.name, kind.symbol, kind.columns
+    );
+    let (name, pattern_name) = (ident(kind.name), ident(kind.pattern_name));
+    quote! {
+        #[doc = #pattern_doc]
+        pub const #pattern_name: [(usize, usize); #count] = [#(#entries),*];
+
+        #(#[doc = #doc])*
+        #[inline]
+        pub fn #name<T: SimdRealField + Copy>(#k: &Coefficients<T>, state: &[T; #n], input: &[T; #m]) -> [T; #count] {
+            let [#(#state),*] = *state;
+            let [#(#inputs),*] = *input;
+            #trig
+            #(#body)*
+            [#(#outputs),*]
+        }
+    }
 }
 
 /// What differs between the emitted energy functions.

@@ -6,10 +6,12 @@
 //! back to the proved form.
 
 mod families;
+pub mod jacobian;
 pub mod ship;
 mod solve;
 mod system;
 
+pub use jacobian::{Entry, Jacobian};
 pub use solve::{Solution, solve_diagonal, solve_linear};
 pub use system::{BuildError, CoefficientName, Group, Parameter, Reciprocal, Stage, System};
 

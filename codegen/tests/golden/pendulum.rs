@@ -73,6 +73,44 @@ pub fn rhs<T: SimdRealField + Copy>(
     let theta_dot_rate = mul_add(-k.theta_dot_dot_sin_theta, sin_theta, k.inv_i0 * m_o);
     [theta_dot, theta_dot_rate]
 }
+/// Where each entry of [`state_jacobian`] sits in ∂f/∂x: (row, column), the row indexing [`STATE`] (the rate differentiated), the column [`STATE`].
+pub const STATE_JACOBIAN: [(usize, usize); 2] = [(0, 1), (1, 0)];
+/// ∂f/∂x of [`rhs`]: the exact derivative of the proved equations (4.24) by the state, proved equal to it when this file was generated.
+///
+/// Returns the 2 entries that do not vanish identically, in the order of [`STATE_JACOBIAN`]; every other entry is zero.
+///
+/// Cost per call: 1 add, 1 mul, 0 div, 0 sqrt, 1 trig.
+#[inline]
+pub fn state_jacobian<T: SimdRealField + Copy>(
+    k: &Coefficients<T>,
+    state: &[T; 2],
+    input: &[T; 1],
+) -> [T; 2] {
+    let [theta, _] = *state;
+    let [_] = *input;
+    let [(_, cos_theta)] = eom_kernel::sin_cos([theta]);
+    // the derivative of 4.24: I₀θ̈ = −Mgh sin θ + M_O
+    let d_theta_dot_rate_d_theta = -k.theta_dot_dot_sin_theta * cos_theta;
+    [T::from_subset(&1.0), d_theta_dot_rate_d_theta]
+}
+/// Where each entry of [`input_jacobian`] sits in ∂f/∂u: (row, column), the row indexing [`STATE`] (the rate differentiated), the column [`INPUTS`].
+pub const INPUT_JACOBIAN: [(usize, usize); 1] = [(1, 0)];
+/// ∂f/∂u of [`rhs`]: the exact derivative of the proved equations (4.24) by the inputs, proved equal to it when this file was generated.
+///
+/// Returns the 1 entries that do not vanish identically, in the order of [`INPUT_JACOBIAN`]; every other entry is zero.
+///
+/// Cost per call: 0 add, 0 mul, 0 div, 0 sqrt, 0 trig.
+#[inline]
+pub fn input_jacobian<T: SimdRealField + Copy>(
+    k: &Coefficients<T>,
+    state: &[T; 2],
+    input: &[T; 1],
+) -> [T; 1] {
+    let [_, _] = *state;
+    let [_] = *input;
+    // the derivative of 4.24: I₀θ̈ = −Mgh sin θ + M_O
+    [k.inv_i0]
+}
 /// The kinetic energy of the state (4.32), from the proved form. Cost per call: 0 add, 2 mul.
 #[inline]
 pub fn kinetic_energy<T: SimdRealField + Copy>(

@@ -72,6 +72,73 @@ pub fn rhs<T: SimdRealField + Copy>(
     let r_rate = k.inv_izz * m_z;
     [u_rate, v_rate, r_rate, x_rate, y_rate, r]
 }
+/// Where each entry of [`state_jacobian`] sits in ∂f/∂x: (row, column), the row indexing [`STATE`] (the rate differentiated), the column [`STATE`].
+pub const STATE_JACOBIAN: [(usize, usize); 11] = [
+    (0, 1),
+    (0, 2),
+    (1, 0),
+    (1, 2),
+    (3, 0),
+    (3, 1),
+    (3, 5),
+    (4, 0),
+    (4, 1),
+    (4, 5),
+    (5, 2),
+];
+/// ∂f/∂x of [`rhs`]: the exact derivative of the proved equations (4.43, 4.44) by the state, proved equal to it when this file was generated.
+///
+/// Returns the 11 entries that do not vanish identically, in the order of [`STATE_JACOBIAN`]; every other entry is zero.
+///
+/// Cost per call: 6 add, 4 mul, 0 div, 0 sqrt, 1 trig.
+#[inline]
+pub fn state_jacobian<T: SimdRealField + Copy>(
+    _k: &Coefficients<T>,
+    state: &[T; 6],
+    input: &[T; 3],
+) -> [T; 11] {
+    let [u, v, r, _, _, psi] = *state;
+    let [_, _, _] = *input;
+    let [(sin_psi, cos_psi)] = eom_kernel::sin_cos([psi]);
+    // the derivative of 4.43: surge, sway and yaw at G, body axes
+    let d_v_rate_d_u = -r;
+    let d_v_rate_d_r = -u;
+    // the derivative of 4.44: the track in space-fixed axes, and the heading
+    let d_x_rate_d_v = -sin_psi;
+    let d_x_rate_d_psi = -(mul_add(v, cos_psi, u * sin_psi));
+    let d_y_rate_d_psi = mul_add(-v, sin_psi, u * cos_psi);
+    [
+        r,
+        v,
+        d_v_rate_d_u,
+        d_v_rate_d_r,
+        cos_psi,
+        d_x_rate_d_v,
+        d_x_rate_d_psi,
+        sin_psi,
+        cos_psi,
+        d_y_rate_d_psi,
+        T::from_subset(&1.0),
+    ]
+}
+/// Where each entry of [`input_jacobian`] sits in ∂f/∂u: (row, column), the row indexing [`STATE`] (the rate differentiated), the column [`INPUTS`].
+pub const INPUT_JACOBIAN: [(usize, usize); 3] = [(0, 0), (1, 1), (2, 2)];
+/// ∂f/∂u of [`rhs`]: the exact derivative of the proved equations (4.43, 4.44) by the inputs, proved equal to it when this file was generated.
+///
+/// Returns the 3 entries that do not vanish identically, in the order of [`INPUT_JACOBIAN`]; every other entry is zero.
+///
+/// Cost per call: 0 add, 0 mul, 0 div, 0 sqrt, 0 trig.
+#[inline]
+pub fn input_jacobian<T: SimdRealField + Copy>(
+    k: &Coefficients<T>,
+    state: &[T; 6],
+    input: &[T; 3],
+) -> [T; 3] {
+    let [_, _, _, _, _, _] = *state;
+    let [_, _, _] = *input;
+    // the derivative of 4.43: surge, sway and yaw at G, body axes
+    [k.inv_mass, k.inv_mass, k.inv_izz]
+}
 /// The kinetic energy of the state (4.32), from the proved form. Cost per call: 2 add, 5 mul.
 #[inline]
 pub fn kinetic_energy<T: SimdRealField + Copy>(

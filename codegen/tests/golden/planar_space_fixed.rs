@@ -69,6 +69,42 @@ pub fn rhs<T: SimdRealField + Copy>(
     let psi_dot_rate = k.inv_izz * m_z;
     [x_dot, y_dot, psi_dot, x_dot_rate, y_dot_rate, psi_dot_rate]
 }
+/// Where each entry of [`state_jacobian`] sits in ∂f/∂x: (row, column), the row indexing [`STATE`] (the rate differentiated), the column [`STATE`].
+pub const STATE_JACOBIAN: [(usize, usize); 3] = [(0, 3), (1, 4), (2, 5)];
+/// ∂f/∂x of [`rhs`]: the exact derivative of the proved equations (4.39) by the state, proved equal to it when this file was generated.
+///
+/// Returns the 3 entries that do not vanish identically, in the order of [`STATE_JACOBIAN`]; every other entry is zero.
+///
+/// Cost per call: 0 add, 0 mul, 0 div, 0 sqrt, 0 trig.
+#[inline]
+pub fn state_jacobian<T: SimdRealField + Copy>(
+    _k: &Coefficients<T>,
+    state: &[T; 6],
+    input: &[T; 3],
+) -> [T; 3] {
+    let [_, _, _, _, _, _] = *state;
+    let [_, _, _] = *input;
+    // the derivative of the position and the heading
+    [T::from_subset(&1.0), T::from_subset(&1.0), T::from_subset(&1.0)]
+}
+/// Where each entry of [`input_jacobian`] sits in ∂f/∂u: (row, column), the row indexing [`STATE`] (the rate differentiated), the column [`INPUTS`].
+pub const INPUT_JACOBIAN: [(usize, usize); 3] = [(3, 0), (4, 1), (5, 2)];
+/// ∂f/∂u of [`rhs`]: the exact derivative of the proved equations (4.39) by the inputs, proved equal to it when this file was generated.
+///
+/// Returns the 3 entries that do not vanish identically, in the order of [`INPUT_JACOBIAN`]; every other entry is zero.
+///
+/// Cost per call: 0 add, 0 mul, 0 div, 0 sqrt, 0 trig.
+#[inline]
+pub fn input_jacobian<T: SimdRealField + Copy>(
+    k: &Coefficients<T>,
+    state: &[T; 6],
+    input: &[T; 3],
+) -> [T; 3] {
+    let [_, _, _, _, _, _] = *state;
+    let [_, _, _] = *input;
+    // the derivative of 4.39: Newton's and Euler's equations in space-fixed axes
+    [k.inv_mass, k.inv_mass, k.inv_izz]
+}
 /// The kinetic energy of the state (4.32), from the proved form. Cost per call: 2 add, 5 mul.
 #[inline]
 pub fn kinetic_energy<T: SimdRealField + Copy>(

@@ -122,6 +122,118 @@ pub fn rhs<T: SimdRealField + Copy>(
     let omega3_y = mul_add(-r, sin_phi, q * cos_phi);
     [p_rate, q_rate, r_rate, phi_rate, omega3_y, heading_rate]
 }
+/// Where each entry of [`state_jacobian`] sits in ∂f/∂x: (row, column), the row indexing [`STATE`] (the rate differentiated), the column [`STATE`].
+pub const STATE_JACOBIAN: [(usize, usize); 21] = [
+    (0, 1),
+    (0, 2),
+    (0, 3),
+    (0, 4),
+    (1, 0),
+    (1, 2),
+    (1, 4),
+    (2, 0),
+    (2, 1),
+    (3, 0),
+    (3, 1),
+    (3, 2),
+    (3, 3),
+    (3, 4),
+    (4, 1),
+    (4, 2),
+    (4, 3),
+    (5, 1),
+    (5, 2),
+    (5, 3),
+    (5, 4),
+];
+/// ∂f/∂x of [`rhs`]: the exact derivative of the proved equations (4.23 top, 4.50 top, 4.60) by the state, proved equal to it when this file was generated.
+///
+/// Returns the 21 entries that do not vanish identically, in the order of [`STATE_JACOBIAN`]; every other entry is zero.
+///
+/// Cost per call: 10 add, 27 mul, 1 div, 0 sqrt, 2 trig.
+#[inline]
+pub fn state_jacobian<T: SimdRealField + Copy>(
+    k: &Coefficients<T>,
+    state: &[T; 6],
+    input: &[T; 3],
+) -> [T; 21] {
+    let [p, q, r, phi, theta, _] = *state;
+    let [_, _, _] = *input;
+    let [(sin_phi, cos_phi), (sin_theta, cos_theta)] = eom_kernel::sin_cos([phi, theta]);
+    // the derivative of 4.50 about the pivot, I_O by Steiner (4.23): Euler's equations under the weight's moment r_G × Mg, body axes
+    let d_p_rate_d_q = k.p_dot_q_r * r;
+    let d_p_rate_d_r = k.p_dot_q_r * q;
+    let d_p_rate_d_phi = k.p_dot_sin_phi_cos_theta * (cos_phi * cos_theta);
+    let d_p_rate_d_theta = -k.p_dot_sin_phi_cos_theta * (sin_phi * sin_theta);
+    let d_q_rate_d_p = -k.q_dot_p_r * r;
+    let d_q_rate_d_r = -k.q_dot_p_r * p;
+    let d_q_rate_d_theta = k.q_dot_sin_theta * cos_theta;
+    let d_r_rate_d_p = k.r_dot_p_q * q;
+    let d_r_rate_d_q = k.r_dot_p_q * p;
+    // the derivative of 4.60: the Euler-angle rates
+    let sec_theta = cos_theta.simd_recip();
+    let d_psi_rate_d_q = sin_phi * sec_theta;
+    let d_phi_rate_d_q = d_psi_rate_d_q * sin_theta;
+    let d_psi_rate_d_r = cos_phi * sec_theta;
+    let d_phi_rate_d_r = d_psi_rate_d_r * sin_theta;
+    let d_phi_rate_d_phi = mul_add(-r, d_phi_rate_d_q, q * d_phi_rate_d_r);
+    let q_sec_theta = q * sec_theta;
+    let r_sec_theta = r * sec_theta;
+    let d_phi_rate_d_theta = mul_add(
+        d_psi_rate_d_r,
+        r_sec_theta,
+        d_psi_rate_d_q * q_sec_theta,
+    );
+    let d_theta_rate_d_r = -sin_phi;
+    let d_theta_rate_d_phi = -(mul_add(r, cos_phi, q * sin_phi));
+    let d_psi_rate_d_phi = mul_add(-r, d_psi_rate_d_q, q * d_psi_rate_d_r);
+    let d_psi_rate_d_theta = mul_add(
+        d_phi_rate_d_r,
+        r_sec_theta,
+        d_phi_rate_d_q * q_sec_theta,
+    );
+    [
+        d_p_rate_d_q,
+        d_p_rate_d_r,
+        d_p_rate_d_phi,
+        d_p_rate_d_theta,
+        d_q_rate_d_p,
+        d_q_rate_d_r,
+        d_q_rate_d_theta,
+        d_r_rate_d_p,
+        d_r_rate_d_q,
+        T::from_subset(&1.0),
+        d_phi_rate_d_q,
+        d_phi_rate_d_r,
+        d_phi_rate_d_phi,
+        d_phi_rate_d_theta,
+        cos_phi,
+        d_theta_rate_d_r,
+        d_theta_rate_d_phi,
+        d_psi_rate_d_q,
+        d_psi_rate_d_r,
+        d_psi_rate_d_phi,
+        d_psi_rate_d_theta,
+    ]
+}
+/// Where each entry of [`input_jacobian`] sits in ∂f/∂u: (row, column), the row indexing [`STATE`] (the rate differentiated), the column [`INPUTS`].
+pub const INPUT_JACOBIAN: [(usize, usize); 3] = [(0, 0), (1, 1), (2, 2)];
+/// ∂f/∂u of [`rhs`]: the exact derivative of the proved equations (4.23 top, 4.50 top, 4.60) by the inputs, proved equal to it when this file was generated.
+///
+/// Returns the 3 entries that do not vanish identically, in the order of [`INPUT_JACOBIAN`]; every other entry is zero.
+///
+/// Cost per call: 0 add, 0 mul, 0 div, 0 sqrt, 0 trig.
+#[inline]
+pub fn input_jacobian<T: SimdRealField + Copy>(
+    k: &Coefficients<T>,
+    state: &[T; 6],
+    input: &[T; 3],
+) -> [T; 3] {
+    let [_, _, _, _, _, _] = *state;
+    let [_, _, _] = *input;
+    // the derivative of 4.50 about the pivot, I_O by Steiner (4.23): Euler's equations under the weight's moment r_G × Mg, body axes
+    [k.inv_ixx_o, k.inv_iyy_o, k.inv_izz]
+}
 /// The kinetic energy of the state (4.32), from the proved form. Cost per call: 2 add, 6 mul.
 #[inline]
 pub fn kinetic_energy<T: SimdRealField + Copy>(

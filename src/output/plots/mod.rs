@@ -48,7 +48,7 @@
 //!
 //! Here: the input, the errors, and writing each plot atomically. `scale` decides which
 //! samples are drawn and where the axes run; `series`, `track` and `energy` draw the plots;
-//! `ship` draws a manoeuvre's.
+//! `ship` draws a manoeuvre's, `poles` a linear model's eigenvalues.
 
 use std::fs::{self, File};
 use std::io::{self, Write};
@@ -62,6 +62,7 @@ use thiserror::Error;
 use super::text::printable;
 
 mod energy;
+pub mod poles;
 mod precise;
 mod scale;
 mod series;

@@ -732,6 +732,79 @@ pub(super) static KEYS: &[Key] = &[
         example: "0.01",
         ..Key::BLANK
     },
+    // [linear]
+    Key {
+        path: "linear.trim",
+        families: &[PENDULUM],
+        kind: Kind::Names("state entries or inputs"),
+        description: "Free variables of `eom linear`: state entries or inputs solved for, by Newton's method on the reduced state, so that the operating point is an equilibrium of it (a clear error when it does not converge).",
+        example: "[\"M_O\"]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "linear.trim",
+        families: &[PLANAR_G, PLANAR_MIDSHIP],
+        kind: Kind::Names("state entries or inputs"),
+        description: "Free variables of `eom linear`: state entries or inputs solved for, by Newton's method on the reduced state, so that the operating point is an equilibrium of it (a clear error when it does not converge).",
+        example: "[\"F_x\"]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "linear.trim",
+        families: &[PLANAR_SPACE],
+        kind: Kind::Names("state entries or inputs"),
+        description: "Free variables of `eom linear`: state entries or inputs solved for, by Newton's method on the reduced state, so that the operating point is an equilibrium of it (a clear error when it does not converge).",
+        example: "[\"F_X\"]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "linear.trim",
+        families: ATTITUDE,
+        kind: Kind::Names("state entries or inputs"),
+        description: "Free variables of `eom linear`: state entries or inputs solved for, by Newton's method on the reduced state, so that the operating point is an equilibrium of it (a clear error when it does not converge).",
+        example: "[\"M_x\"]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "linear.at.*",
+        families: &[PENDULUM],
+        kind: Kind::Table("state entries and inputs by name, and values"),
+        description: "The operating point of `eom linear`, where it differs from [initial]: state entries and inputs by the model's names (as trajectory.csv names its columns, or as the model does: `theta`, `M_O`), in SI units and radians; an input is added to what the loads give. `eom linear` linearises there, by default at the initial state.",
+        example: "theta = 0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "linear.at.*",
+        families: PLANAR,
+        kind: Kind::Table("state entries and inputs by name, and values"),
+        description: "The operating point of `eom linear`, where it differs from [initial]: state entries and inputs by the model's names (as trajectory.csv names its columns, or as the model does: `theta`, `M_O`), in SI units and radians; an input is added to what the loads give. `eom linear` linearises there, by default at the initial state.",
+        example: "r = 0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "linear.at.*",
+        families: &[SPATIAL],
+        kind: Kind::Table("state entries and inputs by name, and values"),
+        description: "The operating point of `eom linear`, where it differs from [initial]: state entries and inputs by the model's names (as trajectory.csv names its columns, or as the model does: `theta`, `M_O`), in SI units and radians; an input is added to what the loads give. `eom linear` linearises there, by default at the initial state.",
+        example: "p = 6.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "linear.at.*",
+        families: &[TOP],
+        kind: Kind::Table("state entries and inputs by name, and values"),
+        description: "The operating point of `eom linear`, where it differs from [initial]: state entries and inputs by the model's names (as trajectory.csv names its columns, or as the model does: `theta`, `M_O`), in SI units and radians; an input is added to what the loads give. `eom linear` linearises there, by default at the initial state.",
+        example: "r = 60.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
     // [sweep]
     Key {
         path: "sweep.*",

@@ -148,6 +148,8 @@ pub enum Kind {
     Tensor,
     /// A table of names and values.
     Table(&'static str),
+    /// An array of names; the text says of what.
+    Names(&'static str),
 }
 
 impl Kind {
@@ -161,6 +163,7 @@ impl Kind {
             Kind::Numbers(what) => format!("array of {what}"),
             Kind::Tensor => "3×3 array of numbers".into(),
             Kind::Table(what) => format!("table of {what}"),
+            Kind::Names(what) => format!("array of names of {what}"),
         }
     }
 }

@@ -1,0 +1,71 @@
+//! Linearisation of a catalog scene: the operating point, the reduced state, A and B from
+//! the proved Jacobians, the modes and the stability verdict.
+//!
+//! Why this shape: every catalog model emits ∂f/∂x and ∂f/∂u, proved equal to the exact
+//! derivative of its equations ([`Model::state_jacobian`](crate::models::Model)), so A and B
+//! are those programs evaluated at a point, not finite differences of `rhs`. What is left to
+//! decide here is *which* point and *which* states:
+//!
+//! - [`plant`]: the model under the scene's loads, f(x) = rhs(x, loads(x) + u). The loads'
+//!   own dependence on the state (damping, a weight turned by the attitude) enters A through
+//!   ∂f/∂u · ∂loads/∂x; the loads are not emitted, so that factor is a central difference
+//!   (~10⁻¹⁰ relative, from rounding, and exactly zero for a body under no loads).
+//! - [`reduce`]: the states set aside. A steady motion may have states that grow along it
+//!   (the position, the heading of a planar body, the attitude about a spin axis) while no
+//!   other state depends on them; they are set aside and the rest, the reduced state, is
+//!   linearised, so that A is constant along the motion.
+//! - [`trim`]: Newton on the reduced state for the free variables a `[linear]` table names.
+//! - [`modes`]: eigenvalues and eigenvectors of A, each mode's period, damping, doubling or
+//!   halving time, dominant states and a name where the family knows one.
+
+pub mod modes;
+pub mod plant;
+pub mod reduce;
+mod scene;
+pub mod trim;
+
+pub use modes::{Mode, Stability, modes};
+pub use plant::Plant;
+pub use reduce::set_aside;
+pub use scene::{LinearSpec, Linearisation, linearise_scene, resolve};
+
+use thiserror::Error;
+
+/// Why a scene could not be linearised.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum LinearError {
+    /// Newton on the reduced state did not bring its rates to zero.
+    #[error(
+        "the trim did not converge: after {iterations} Newton steps on {variables} the \
+         reduced state's rates are still {residual:.6e} (largest; tolerance {tolerance:.1e}). \
+         The free variables may not be able to hold this point in equilibrium; name others \
+         in linear.trim or start closer in linear.at"
+    )]
+    NoConvergence {
+        /// The steps taken.
+        iterations: usize,
+        /// The free variables, as the table names them.
+        variables: String,
+        /// The largest rate left.
+        residual: f64,
+        /// The tolerance it had to meet.
+        tolerance: f64,
+    },
+    /// A value on the way was not finite (a state beyond the model's reach, θ at ±90° for
+    /// Euler angles).
+    #[error("the linear model at this point is not finite: {0}")]
+    NotFinite(String),
+    /// A name in `[linear]` that is neither a state entry nor an input of the model.
+    #[error("`{0}` is neither a state entry nor an input of the model linearised")]
+    Unknown(String),
+}
+
+/// The tolerance of an equilibrium: a rate below `EQUILIBRIUM_TOLERANCE · (1 + max|x|)`
+/// counts as zero. Ten thousand times the round-off of a rate computed from states of that
+/// size, far below any motion a scene means.
+pub const EQUILIBRIUM_TOLERANCE: f64 = 1e-9;
+
+/// The scale a rate is compared with: one plus the largest state entry.
+pub(crate) fn rate_scale(state: &[f64]) -> f64 {
+    1.0 + state.iter().fold(0.0f64, |m, v| m.max(v.abs()))
+}

@@ -1,0 +1,246 @@
+//! Modes of a linear model ẋ = A x: eigenvalues, eigenvectors, and what each mode means.
+//!
+//! The eigenvalues come from nalgebra's real Schur form. A real matrix that is not symmetric
+//! has complex eigenvectors, which nalgebra does not give; each is found by inverse iteration
+//! on A − λI in complex arithmetic, with λ moved off the eigenvalue by 10⁻¹⁰ of the spectral
+//! radius so that the solve is defined (three iterations take the error in the vector to the
+//! square of that ratio and below). A mode is one real eigenvalue or one pair of conjugate
+//! ones, listed once, with its period 2π/|Im λ|, damping ratio −Re λ/|λ|, time to double
+//! ln 2/Re λ or to half ln 2/(−Re λ), the states whose share of the eigenvector is at least
+//! half the largest, and a name where the family knows one.
+
+use crate::models::Family;
+use nalgebra::{Complex, DMatrix, DVector};
+
+/// One mode of ẋ = A x.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Mode {
+    /// The eigenvalue (of the pair, the one with Im λ > 0).
+    pub eigenvalue: Complex<f64>,
+    /// 2π/|Im λ|, s, for an oscillation.
+    pub period_s: Option<f64>,
+    /// −Re λ/|λ|, for λ ≠ 0.
+    pub damping_ratio: Option<f64>,
+    /// ln 2/Re λ, s, for a mode that grows.
+    pub time_to_double_s: Option<f64>,
+    /// ln 2/(−Re λ), s, for a mode that decays.
+    pub time_to_half_s: Option<f64>,
+    /// The states that dominate its eigenvector.
+    pub dominant: Vec<String>,
+    /// What the family calls it, where it has a name.
+    pub name: Option<&'static str>,
+    /// For an oscillation of roll and pitch measured in axes that turn at the heading's rate
+    /// (a top's Euler angles, whose heading ψ turns with the spin): the frequency seen in
+    /// space, rad/s, that rate less the frequency seen in the turning axes, with the sense
+    /// in which the tilt turns (from the eigenvector's roll and pitch).
+    pub frequency_in_space: Option<f64>,
+}
+
+/// The verdict on the linear model.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Stability {
+    /// Every mode decays.
+    Asymptotic,
+    /// No mode grows, some neither grow nor decay (an undamped oscillation, a neutral state).
+    Neutral,
+    /// Some mode grows.
+    Unstable,
+}
+
+impl Stability {
+    /// The verdict in words.
+    pub fn describe(self) -> &'static str {
+        match self {
+            Stability::Asymptotic => "stable: every mode decays",
+            Stability::Neutral => "stable: no mode grows (some neither grow nor decay)",
+            Stability::Unstable => "UNSTABLE: a mode grows",
+        }
+    }
+}
+
+/// A real part counts as zero below `GROWTH_TOLERANCE` times the spectral radius: the Schur
+/// form's backward error is ~ε‖A‖, and a double eigenvalue moves by its square root (~10⁻⁸),
+/// so 10⁻⁷ calls neither round-off growth nor an undamped mode unstable, while the weakest
+/// instability a scene means (10⁻³ of its fastest mode and more) is seen.
+pub const GROWTH_TOLERANCE: f64 = 1e-7;
+
+/// The eigenvalues of `a`, sorted (largest real part first, then by imaginary part), its
+/// modes and the verdict; `names` names the states of `a`, `family` the model's family and
+/// `heading_rate` the rate at which the axes of its roll and pitch turn (zero where they do
+/// not).
+pub fn modes(
+    a: &DMatrix<f64>,
+    names: &[String],
+    family: Family,
+    heading_rate: f64,
+) -> (Vec<Complex<f64>>, Vec<Mode>, Stability) {
+    let mut eigenvalues = eigenvalues(a);
+    eigenvalues.sort_by(|x, y| y.re.total_cmp(&x.re).then(y.im.total_cmp(&x.im)));
+    let radius = eigenvalues.iter().fold(0.0f64, |m, l| m.max(l.norm()));
+    let mut modes: Vec<Mode> = eigenvalues
+        .iter()
+        .filter(|l| l.im >= 0.0)
+        .map(|&l| mode(a, l, GROWTH_TOLERANCE * radius, names, heading_rate))
+        .collect();
+    name_modes(&mut modes, family);
+    let tolerance = GROWTH_TOLERANCE * radius;
+    let stability = if eigenvalues.iter().any(|l| l.re > tolerance) {
+        Stability::Unstable
+    } else if eigenvalues.iter().all(|l| l.re < -tolerance) {
+        Stability::Asymptotic
+    } else {
+        Stability::Neutral
+    };
+    (eigenvalues, modes, stability)
+}
+
+/// The most QR sweeps the Schur form may take before the matrix is turned and tried again.
+const SCHUR_ITERATIONS: usize = 10_000;
+
+/// The eigenvalues of `a` by the real Schur form. nalgebra's Francis steps can stall on a
+/// matrix of exact zeros and symmetric blocks (a sleeping top's A), where its own
+/// `complex_eigenvalues` would loop for ever; then the eigenvalues are those of Q A Qᵀ, with
+/// Q a fixed orthogonal matrix (the Q of a QR factorisation of a fixed matrix), which are
+/// the same to rounding and have no such structure.
+pub fn eigenvalues(a: &DMatrix<f64>) -> Vec<Complex<f64>> {
+    let schur = |m: DMatrix<f64>| {
+        nalgebra::linalg::Schur::try_new(m, f64::EPSILON, SCHUR_ITERATIONS)
+            .map(|s| s.complex_eigenvalues().iter().copied().collect::<Vec<_>>())
+    };
+    if let Some(found) = schur(a.clone()) {
+        return found;
+    }
+    let n = a.nrows();
+    let q = DMatrix::from_fn(n, n, |i, j| ((i * 7 + j * 3 + 1) as f64).sin())
+        .qr()
+        .q();
+    let turned = &q * a * q.transpose();
+    schur(turned).unwrap_or_else(|| vec![Complex::new(f64::NAN, f64::NAN); n])
+}
+
+/// One mode; a real part within `tolerance` of zero counts as zero (no doubling or halving
+/// time, no damping), as the verdict counts it.
+fn mode(
+    a: &DMatrix<f64>,
+    eigenvalue: Complex<f64>,
+    tolerance: f64,
+    names: &[String],
+    heading_rate: f64,
+) -> Mode {
+    let radius = tolerance / GROWTH_TOLERANCE;
+    let im = eigenvalue.im;
+    let re = if eigenvalue.re.abs() <= tolerance {
+        0.0
+    } else {
+        eigenvalue.re
+    };
+    let size = Complex::new(re, im).norm();
+    let ln2 = std::f64::consts::LN_2;
+    let vector = eigenvector(a, eigenvalue, radius);
+    let largest = vector.iter().fold(0.0f64, |m, v| m.max(v.norm()));
+    let dominant = vector
+        .iter()
+        .zip(names)
+        .filter(|(v, _)| largest > 0.0 && v.norm() >= 0.5 * largest)
+        .map(|(_, name)| name.clone())
+        .collect();
+    Mode {
+        eigenvalue,
+        period_s: (im > 0.0).then(|| 2.0 * std::f64::consts::PI / im),
+        damping_ratio: (size > 0.0).then(|| -re / size),
+        time_to_double_s: (re > 0.0).then(|| ln2 / re),
+        time_to_half_s: (re < 0.0).then(|| ln2 / -re),
+        frequency_in_space: frequency_in_space(&vector, names, im, heading_rate),
+        dominant,
+        name: None,
+    }
+}
+
+/// See [`Mode::frequency_in_space`]: `None` without a turning frame, an oscillation, or roll
+/// and pitch in the state.
+fn frequency_in_space(
+    vector: &DVector<Complex<f64>>,
+    names: &[String],
+    im: f64,
+    heading_rate: f64,
+) -> Option<f64> {
+    let entry = |name: &str| names.iter().position(|n| n == name).map(|i| vector[i]);
+    let (roll, pitch) = (entry("phi")?, entry("pitch").or_else(|| entry("theta"))?);
+    if heading_rate == 0.0 || im <= 0.0 {
+        return None;
+    }
+    let sense = (roll.conj() * pitch).im.signum();
+    Some(heading_rate - sense * im)
+}
+
+/// The eigenvector of `eigenvalue` by inverse iteration, of unit length.
+pub fn eigenvector(
+    a: &DMatrix<f64>,
+    eigenvalue: Complex<f64>,
+    radius: f64,
+) -> DVector<Complex<f64>> {
+    let n = a.nrows();
+    let shift = eigenvalue + Complex::new(1e-10, 1e-10) * radius.max(f64::MIN_POSITIVE);
+    let shifted = DMatrix::from_fn(n, n, |i, j| {
+        Complex::new(a[(i, j)], 0.0)
+            - if i == j {
+                shift
+            } else {
+                Complex::new(0.0, 0.0)
+            }
+    });
+    let lu = shifted.lu();
+    let mut vector = DVector::from_element(n, Complex::new(1.0, 0.0));
+    for _ in 0..3 {
+        match lu.solve(&vector) {
+            Some(next) if next.norm() > 0.0 && next.norm().is_finite() => {
+                vector = next.unscale(next.norm());
+            }
+            _ => break,
+        }
+    }
+    vector
+}
+
+/// Names the modes where the family knows them.
+fn name_modes(modes: &mut [Mode], family: Family) {
+    let is =
+        |mode: &Mode, names: &[&str]| mode.dominant.iter().all(|d| names.contains(&d.as_str()));
+    let mut top_oscillations: Vec<usize> = Vec::new();
+    for (index, mode) in modes.iter_mut().enumerate() {
+        let oscillates = mode.eigenvalue.im > 0.0;
+        let moving = mode.damping_ratio.is_some();
+        mode.name = match family {
+            Family::Pendulum if moving => Some("the pendulum's swing"),
+            Family::Spatial
+                if oscillates
+                    && is(mode, &["p", "phi"])
+                    && mode.dominant.iter().any(|d| d == "p") =>
+            {
+                Some("roll")
+            }
+            Family::Spatial if is(mode, &["p", "q", "r"]) && moving => Some(if oscillates {
+                "nutation"
+            } else {
+                "the spin's instability"
+            }),
+            Family::Top if oscillates => {
+                top_oscillations.push(index);
+                None
+            }
+            Family::Top if moving => Some("the top's fall"),
+            Family::PlanarAtG | Family::PlanarMidship if moving && is(mode, &["u"]) => {
+                Some("surge")
+            }
+            Family::PlanarAtG | Family::PlanarMidship if moving => Some("sway and yaw"),
+            _ => None,
+        };
+    }
+    // A sleeping top's two oscillations: the faster in space is its nutation, the slower its
+    // precession.
+    let in_space = |mode: &Mode| mode.frequency_in_space.unwrap_or(mode.eigenvalue.im).abs();
+    top_oscillations.sort_by(|&i, &j| in_space(&modes[j]).total_cmp(&in_space(&modes[i])));
+    for (rank, index) in top_oscillations.into_iter().enumerate() {
+        modes[index].name = Some(if rank == 0 { "nutation" } else { "precession" });
+    }
+}

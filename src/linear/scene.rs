@@ -1,0 +1,234 @@
+//! A catalog scene, linearised: the operating point its `[linear]` table names (by default
+//! its initial state), the states set aside, the trim, A, B and the modes.
+
+use super::modes::{Mode, Stability, modes};
+use super::plant::Plant;
+use super::reduce::set_aside;
+use super::trim::{Free, trim};
+use super::{EQUILIBRIUM_TOLERANCE, LinearError, rate_scale};
+use crate::models::{AnyModel, Family, Kinematics};
+use crate::scene::{Body, Scene, euler_angles};
+use nalgebra::{Complex, DMatrix};
+
+/// What a `[linear]` table says, its names checked against the model's layout.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct LinearSpec {
+    /// State entries and inputs set at the operating point, by the model's names (SI,
+    /// radians); an input is added to the loads'.
+    pub at: Vec<(String, f64)>,
+    /// The free variables the trim solves for.
+    pub trim: Vec<String>,
+}
+
+/// A state entry or an input of a model, by its name: exactly as the model names it, or
+/// as the trajectory does (any case) where that is unambiguous.
+pub fn resolve(name: &str, state: &[&str], inputs: &[&str]) -> Option<Free> {
+    let exact = |list: &[&str]| list.iter().position(|s| *s == name);
+    let loose = |list: &[&str]| {
+        let found: Vec<usize> = (0..list.len())
+            .filter(|&i| list[i].eq_ignore_ascii_case(name))
+            .collect();
+        (found.len() == 1).then(|| found[0])
+    };
+    exact(state)
+        .map(Free::State)
+        .or_else(|| exact(inputs).map(Free::Input))
+        .or_else(|| loose(state).map(Free::State))
+        .or_else(|| loose(inputs).map(Free::Input))
+}
+
+/// A scene, linearised about its operating point.
+#[derive(Debug, Clone)]
+pub struct Linearisation {
+    /// The model linearised (for a quaternion top, its Euler-angle twin: see `note`).
+    pub model: &'static str,
+    /// Its family.
+    pub family: Family,
+    /// Every state entry's name, in the model's layout.
+    pub state_names: Vec<&'static str>,
+    /// Every input's name.
+    pub input_names: Vec<&'static str>,
+    /// The state at the operating point.
+    pub state: Vec<f64>,
+    /// The inputs at the operating point: the loads' there plus what the table adds.
+    pub inputs: Vec<f64>,
+    /// The indices of the reduced state.
+    pub reduced: Vec<usize>,
+    /// The indices set aside.
+    pub set_aside: Vec<usize>,
+    /// The rates of the reduced state at the point (zero at an equilibrium).
+    pub residual: Vec<f64>,
+    /// Whether the point is an equilibrium of the reduced state (to
+    /// [`EQUILIBRIUM_TOLERANCE`]).
+    pub equilibrium: bool,
+    /// The free variables solved for and their values, with the Newton steps taken.
+    pub trimmed: Option<(Vec<(String, f64)>, usize)>,
+    /// A on the reduced state.
+    pub a: DMatrix<f64>,
+    /// B: the reduced state's rates by every input.
+    pub b: DMatrix<f64>,
+    /// The eigenvalues of A, largest real part first.
+    pub eigenvalues: Vec<Complex<f64>>,
+    /// The modes.
+    pub modes: Vec<Mode>,
+    /// The verdict.
+    pub stability: Stability,
+    /// What was done that the scene did not say (a quaternion top linearised in Euler angles).
+    pub note: Option<String>,
+}
+
+impl Linearisation {
+    /// The names of the reduced state.
+    pub fn reduced_names(&self) -> Vec<&'static str> {
+        self.reduced.iter().map(|&i| self.state_names[i]).collect()
+    }
+
+    /// The names of the states set aside.
+    pub fn set_aside_names(&self) -> Vec<&'static str> {
+        self.set_aside
+            .iter()
+            .map(|&i| self.state_names[i])
+            .collect()
+    }
+}
+
+/// The model to linearise and its state: a quaternion top becomes the Euler-angle top of the
+/// same body, because a top spinning about its axis turns its quaternion steadily in every
+/// component and the gravity moment reads them all, so no part of the quaternion can be set
+/// aside; in Euler angles the spin is the heading ψ alone.
+fn model_and_state(scene: &Scene, state: Vec<f64>) -> (AnyModel, Vec<f64>, Option<String>) {
+    let info = scene.selection.info;
+    match (&scene.body, info.kinematics) {
+        (
+            Body::Top {
+                mass,
+                inertia,
+                h,
+                g,
+            },
+            Some(Kinematics::Quaternion),
+        ) => {
+            let angles = euler_angles(Kinematics::Quaternion, &state[3..]);
+            let model = AnyModel::top(Kinematics::Euler, *mass, inertia, *h, *g)
+                .expect("checked when the scene was read");
+            let mut euler = state[..3].to_vec();
+            euler.extend(angles);
+            let note = "a quaternion top is linearised as the Euler-angle top of the same body \
+                        (its spin turns every component of the quaternion)";
+            (model, euler, Some(note.into()))
+        }
+        _ => (scene.model(), state, None),
+    }
+}
+
+/// Linearises a catalog scene about the point its `[linear]` table names: the initial state
+/// with the table's `at` entries, trimmed for its `trim` variables.
+pub fn linearise_scene(scene: &Scene) -> Result<Linearisation, LinearError> {
+    let spec = &scene.linear;
+    let info = scene.selection.info;
+    let mut state = scene.initial.clone();
+    let mut extra = vec![0.0; info.inputs.len()];
+    for (name, value) in &spec.at {
+        match resolve(name, info.state, info.inputs) {
+            Some(Free::State(i)) => state[i] = *value,
+            Some(Free::Input(i)) => extra[i] = *value,
+            None => return Err(unknown(name)),
+        }
+    }
+    let (model, state, note) = model_and_state(scene, state);
+    let linearised = model.info();
+    let plant = Plant {
+        model,
+        loads: &scene.loads,
+    };
+    let first = plant.evaluate(&state, &extra)?;
+    let depends = dependencies(&plant.model, &first.a);
+    let coordinate: Vec<bool> = linearised.state.iter().map(|s| is_coordinate(s)).collect();
+    let set_aside = set_aside(&depends, &first.rates, &state, &coordinate);
+    let reduced: Vec<usize> = (0..state.len())
+        .filter(|i| !set_aside.contains(i))
+        .collect();
+    let (state, extra, trimmed) = if spec.trim.is_empty() {
+        (state, extra, None)
+    } else {
+        let free = spec
+            .trim
+            .iter()
+            .map(|name| {
+                resolve(name, linearised.state, linearised.inputs).ok_or_else(|| unknown(name))
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        let names = spec.trim.join(", ");
+        let solved = trim(&plant, (&state, &extra), &reduced, &free, &names)?;
+        let values = spec
+            .trim
+            .iter()
+            .zip(&free)
+            .map(|(name, f)| match *f {
+                Free::State(i) => (name.clone(), solved.state[i]),
+                Free::Input(i) => (name.clone(), solved.extra[i]),
+            })
+            .collect();
+        (
+            solved.state,
+            solved.extra,
+            Some((values, solved.iterations)),
+        )
+    };
+    let at = plant.evaluate(&state, &extra)?;
+    let residual: Vec<f64> = reduced.iter().map(|&i| at.rates[i]).collect();
+    let tolerance = EQUILIBRIUM_TOLERANCE * rate_scale(&state);
+    let a = at.a.select_rows(&reduced).select_columns(&reduced);
+    let b = at.b.select_rows(&reduced);
+    let names: Vec<String> = reduced
+        .iter()
+        .map(|&i| linearised.state[i].to_owned())
+        .collect();
+    // A top's roll and pitch are measured in axes turned by its heading, which turns with
+    // the spin: its modes are also given as seen in space.
+    let heading_rate = match linearised.state.iter().position(|s| *s == "psi") {
+        Some(i) if linearised.family == Family::Top && set_aside.contains(&i) => at.rates[i],
+        _ => 0.0,
+    };
+    let (eigenvalues, modes, stability) = modes(&a, &names, linearised.family, heading_rate);
+    Ok(Linearisation {
+        model: linearised.name,
+        family: linearised.family,
+        state_names: linearised.state.to_vec(),
+        input_names: linearised.inputs.to_vec(),
+        inputs: plant.inputs(&state, &extra),
+        equilibrium: residual.iter().all(|r| r.abs() <= tolerance),
+        state,
+        reduced,
+        set_aside,
+        residual,
+        trimmed,
+        a,
+        b,
+        eigenvalues,
+        modes,
+        stability,
+        note,
+    })
+}
+
+/// A position, an angle or a quaternion's part, by its unit, rather than a velocity.
+fn is_coordinate(name: &str) -> bool {
+    matches!(crate::models::state_unit(name), Some("m" | "rad" | "-"))
+}
+
+fn unknown(name: &str) -> LinearError {
+    LinearError::Unknown(name.to_owned())
+}
+
+/// Row i depends on state j: the emitted pattern, and what the loads add at the point.
+fn dependencies(model: &AnyModel, a: &DMatrix<f64>) -> Vec<Vec<bool>> {
+    let n = a.nrows();
+    let mut depends: Vec<Vec<bool>> = (0..n)
+        .map(|i| (0..n).map(|j| a[(i, j)] != 0.0).collect())
+        .collect();
+    for &(i, j) in model.state_jacobian_pattern() {
+        depends[i][j] = true;
+    }
+    depends
+}

@@ -1,0 +1,64 @@
+//! The pole plot of a linear model: its eigenvalues in the complex plane, the imaginary axis
+//! (the edge of stability) drawn through zero, so that a pole to its right is a mode that
+//! grows.
+
+use super::scale::tick_label;
+use super::{COLOURS, FONT, PlotError, emit, render};
+use plotters::prelude::*;
+use std::path::{Path, PathBuf};
+
+/// The file of the pole plot.
+pub const POLES: &str = "poles.svg";
+
+/// Draws the eigenvalues `(re, im)` into `dir/poles.svg`, titled `title`.
+pub fn write_pole_plot(
+    dir: &Path,
+    title: &str,
+    eigenvalues: &[(f64, f64)],
+) -> Result<PathBuf, PlotError> {
+    let finite: Vec<(f64, f64)> = eigenvalues
+        .iter()
+        .copied()
+        .filter(|(re, im)| re.is_finite() && im.is_finite())
+        .collect();
+    // One scale on both axes, with zero inside and a tenth of room around the poles.
+    let reach = finite
+        .iter()
+        .fold(0.0f64, |m, (re, im)| m.max(re.abs()).max(im.abs()));
+    let half = if reach > 0.0 { 1.1 * reach } else { 1.0 };
+    let range = (-half, half);
+    let ticks = 8;
+    let label = |v: &f64| tick_label(*v, range, ticks);
+    let caption = format!("{title}: poles (eigenvalues of A)");
+    emit(dir, POLES, |svg| {
+        render(svg, (700, 700), |root, _| {
+            let mut chart = ChartBuilder::on(root)
+                .caption(&caption, (FONT, 18))
+                .margin(16)
+                .x_label_area_size(48)
+                .y_label_area_size(72)
+                .build_cartesian_2d(-half..half, -half..half)?;
+            chart
+                .configure_mesh()
+                .x_labels(ticks)
+                .y_labels(ticks)
+                .x_label_formatter(&label)
+                .y_label_formatter(&label)
+                .light_line_style(TRANSPARENT)
+                .label_style((FONT, 12))
+                .x_desc("Re λ [1/s]")
+                .y_desc("Im λ [rad/s]")
+                .draw()?;
+            let axis = BLACK.mix(0.5).stroke_width(1);
+            chart.draw_series(LineSeries::new([(0.0, -half), (0.0, half)], axis))?;
+            chart.draw_series(LineSeries::new([(-half, 0.0), (half, 0.0)], axis))?;
+            let colour = COLOURS[0];
+            chart.draw_series(
+                finite
+                    .iter()
+                    .map(|&point| Cross::new(point, 6, colour.stroke_width(2))),
+            )?;
+            Ok(())
+        })
+    })
+}
