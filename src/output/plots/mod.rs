@@ -62,6 +62,7 @@ use thiserror::Error;
 use super::text::printable;
 
 mod energy;
+mod polhode;
 mod precise;
 mod scale;
 mod series;
@@ -69,6 +70,8 @@ pub mod ship;
 mod track;
 
 use energy::draw_energy;
+use polhode::draw_polhode;
+pub use polhode::{Polhode, in_principal_axes};
 use precise::Overlay;
 use series::{draw_attitude, draw_state};
 pub use track::Mark;
@@ -92,6 +95,8 @@ pub struct PlotInput<'a> {
     pub track: Option<(&'a [f64], &'a [f64])>,
     /// The relative energy drift (E − E₀)/|E₀| at each time, where the run has an energy.
     pub energy_drift: Option<&'a [f64]>,
+    /// ω in principal axes, where the body turns free of moments about G.
+    pub polhode: Option<Polhode<'a>>,
 }
 
 /// Why a plot could not be drawn or written: each variant names the file.
@@ -137,11 +142,13 @@ const ATTITUDE: &str = "attitude.svg";
 const TRACK: &str = "track.svg";
 /// The file of the energy drift plot.
 const ENERGY: &str = "energy.svg";
+/// The file of the polhode plot.
+const POLHODE: &str = "polhode.svg";
 /// Every file [`write_plots`] may write, for the output folder's manifest.
-pub const PLOT_FILES: [&str; 4] = [STATE, ATTITUDE, TRACK, ENERGY];
+pub const PLOT_FILES: [&str; 5] = [STATE, ATTITUDE, TRACK, ENERGY, POLHODE];
 
 /// Draws every plot the input has data for into `dir` and returns the files written:
-/// `state.svg`, `attitude.svg`, `track.svg`, `energy.svg`.
+/// `state.svg`, `attitude.svg`, `track.svg`, `energy.svg`, `polhode.svg`.
 ///
 /// `state.svg` is written when the input has a state component, the others when their
 /// `Option` is `Some`; each replaces a file of the same name. `dir` must exist. Every column's
@@ -176,6 +183,11 @@ pub fn write_plots(dir: &Path, input: &PlotInput) -> Result<Vec<PathBuf>, PlotEr
             draw_energy(svg, input.title, input.time, drift)
         })?);
     }
+    if let Some(polhode) = &input.polhode {
+        written.push(emit(dir, POLHODE, |svg| {
+            draw_polhode(svg, input.title, polhode)
+        })?);
+    }
     Ok(written)
 }
 
@@ -198,6 +210,11 @@ fn check_lengths(dir: &Path, input: &PlotInput) -> Result<(), PlotError> {
     }
     if let Some(drift) = input.energy_drift {
         columns.push((ENERGY, "energy drift".to_string(), drift.len()));
+    }
+    if let Some(polhode) = &input.polhode {
+        for (name, values) in ["ω₁", "ω₂", "ω₃"].into_iter().zip(polhode.omega) {
+            columns.push((POLHODE, name.to_string(), values.len()));
+        }
     }
     match columns.into_iter().find(|(_, _, len)| *len != times) {
         Some((file, column, len)) => Err(PlotError::Length {
@@ -286,6 +303,17 @@ const COLOURS: [RGBColor; 3] = [
 
 /// The font of every text: resolved by the viewer, no font file is loaded.
 const FONT: &str = "sans-serif";
+
+/// The width of every plot, px: the widest GitHub shows an image in a README (the column of
+/// a repository's page, 830 px), so that a plot is shown at its own size there and its texts
+/// read at the sizes below. plotters' SVG backend writes a font of size s as s/1.24 px.
+const WIDTH: u32 = 830;
+/// A plot's title: 17.7 px.
+const TITLE_FONT: u32 = 22;
+/// A panel's title: 14.5 px.
+const PANEL_FONT: u32 = 18;
+/// Tick labels, axis labels and legends: 12.1 px, the smallest that reads at a glance.
+const LABEL_FONT: u32 = 15;
 
 #[cfg(test)]
 mod tests {
@@ -412,6 +440,7 @@ mod tests {
                 }),
                 track: spatial.then(|| (&self.x[..], &self.y[..])),
                 energy_drift: Some(&self.drift),
+                polhode: None,
             }
         }
     }
@@ -641,9 +670,13 @@ mod tests {
             attitude_deg: Some([&[], &[], &[]]),
             track: Some((&[], &[])),
             energy_drift: Some(&[]),
+            polhode: Some(Polhode {
+                moments: [1.0, 2.0, 3.0],
+                omega: [&[], &[], &[]],
+            }),
         };
-        assert_eq!(write_plots(&folder.0, &empty).unwrap().len(), 4);
-        assert_eq!(folder.names().len(), 4);
+        assert_eq!(write_plots(&folder.0, &empty).unwrap().len(), 5);
+        assert_eq!(folder.names().len(), 5);
     }
 
     #[test]
@@ -706,6 +739,58 @@ mod tests {
             "{}",
             p[1_999]
         );
+    }
+
+    /// A spinning plate's ω, I₁ = I₂ = 1, I₃ = 2: (3 cos t, 3 sin t, 4) over `n` samples.
+    fn plate(n: usize) -> [Vec<f64>; 3] {
+        let t = (0..n).map(|i| i as f64 * 1e-2);
+        [
+            t.clone().map(|t| 3.0 * t.cos()).collect(),
+            t.clone().map(|t| 3.0 * t.sin()).collect(),
+            t.map(|_| 4.0).collect(),
+        ]
+    }
+
+    /// Writes the plots of a pendulum of as many rows as `omega`, with `omega` as its polhode.
+    fn write_polhode(folder: &Folder, omega: &[Vec<f64>; 3]) -> Vec<PathBuf> {
+        let run = Run::pendulum(omega[0].len());
+        let mut input = run.input("plate", false);
+        input.polhode = Some(Polhode {
+            moments: [1.0, 1.0, 2.0],
+            omega: [&omega[0], &omega[1], &omega[2]],
+        });
+        write_plots(&folder.0, &input).unwrap()
+    }
+
+    #[test]
+    fn the_polhode_draws_the_run_and_the_dashed_curve_in_three_projections() {
+        let folder = Folder::new("polhode");
+        let written = write_polhode(&folder, &plate(700));
+        assert_eq!(written.last(), Some(&folder.0.join("polhode.svg")));
+        let svg = Svg::read(&folder.0.join("polhode.svg"));
+        let dashed = svg.elements("polyline", |n| n.attribute("stroke-dasharray").is_some());
+        // Per projection: the run, the polhode (dashed) and the ellipsoid's outline, clipped
+        // to the window; one dashed sample in the legend.
+        assert_eq!(dashed.iter().filter(|d| **d).count(), 3 + 1);
+        assert!(svg.series().len() >= 3 * 3, "{}", svg.series().len());
+        let texts = svg.texts();
+        for text in ["ω₁–ω₂", "ω₂–ω₃", "ω₃–ω₁", "the run's ω", "T = 20.5 J"]
+        {
+            assert!(texts.contains(&text.to_string()), "no {text} in {texts:?}");
+        }
+        assert!(
+            texts.contains(&"the loop goes round ω₃".to_string()),
+            "{texts:?}"
+        );
+
+        // One row, nothing, a row of NaN first: a plot, and no panic.
+        let mut broken = plate(10);
+        broken[1][0] = f64::NAN;
+        for omega in [plate(1), plate(0), broken] {
+            write_polhode(&folder, &omega);
+            let text = fs::read_to_string(folder.0.join("polhode.svg")).unwrap();
+            assert!(!text.contains("NaN"));
+        }
     }
 
     #[test]
