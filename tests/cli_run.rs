@@ -97,7 +97,7 @@ fn sign_changes(t: &[f64], x: &[f64]) -> Vec<f64> {
 
 /// Every SVG written parses as XML and holds at least one drawn series.
 /// The plots drawn only for some motions: each is checked absent where it is not expected.
-const CONDITIONAL_PLOTS: [&str; 1] = ["polhode.svg"];
+const CONDITIONAL_PLOTS: [&str; 2] = ["polhode.svg", "profile.svg"];
 
 fn check_svgs(out: &Path, expected: &[&str]) {
     for name in CONDITIONAL_PLOTS {
@@ -229,9 +229,16 @@ fn the_free_plate_keeps_its_energy_and_momentum() {
         .fold(0.0, f64::max);
     assert!(energy < 1e-8, "energy drift {energy}");
     assert!(momentum_drift(&header, &rows, [0.001, 0.001, 0.002]) < 1e-8);
+    // Thrown forward and up, it climbs: a profile beside the plan.
     check_svgs(
         &out,
-        &["state.svg", "attitude.svg", "track.svg", "polhode.svg"],
+        &[
+            "state.svg",
+            "attitude.svg",
+            "track.svg",
+            "polhode.svg",
+            "profile.svg",
+        ],
     );
 }
 
@@ -271,7 +278,7 @@ fn the_other_example_scenes_run() {
         (
             "auv.toml",
             "spatial_xz_euler",
-            &["state.svg", "attitude.svg", "track.svg"][..],
+            &["state.svg", "attitude.svg", "track.svg", "profile.svg"][..],
         ),
         (
             "looping.toml",
@@ -1185,6 +1192,7 @@ fn the_tossed_box_stops_where_it_has_fallen_ten_metres_and_says_so() {
             "track.svg",
             "energy.svg",
             "polhode.svg",
+            "profile.svg",
         ],
     );
 }

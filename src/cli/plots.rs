@@ -7,7 +7,7 @@ use eom::output::trajectory::Columns;
 use eom::scene::{Body, Scene, euler_angles};
 use std::path::{Path, PathBuf};
 
-/// Draws the state, the attitude, the track, the energy drift and, for a spatial body free of
+/// Draws the state, the attitude, the track (and a spatial body's profile), the energy drift and, for a spatial body free of
 /// moments about G, the polhode of a run into `out`, under `title`.
 pub fn write(scene: &Scene, title: &str, columns: &Columns, out: &Path) -> Result<Vec<PathBuf>> {
     let names = scene.state_names();
@@ -49,6 +49,9 @@ pub fn write(scene: &Scene, title: &str, columns: &Columns, out: &Path) -> Resul
             .as_ref()
             .map(|[r, p, y]| [r.as_slice(), p.as_slice(), y.as_slice()]),
         track: track.map(|(x, y)| (columns.state[x].as_slice(), columns.state[y].as_slice())),
+        depth: (info.family == Family::Spatial)
+            .then(|| columns.state.get(8).map(Vec::as_slice))
+            .flatten(),
         energy_drift: drift.as_deref(),
         polhode: principal.as_ref().map(|(moments, [w1, w2, w3])| Polhode {
             moments: *moments,

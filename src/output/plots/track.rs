@@ -1,9 +1,13 @@
 //! The track plot: one coordinate against the other at one scale on both axes, its ends and
-//! any marked points shown.
+//! any marked points shown. A track that is a single point (a body turning in place, as the
+//! tennis racket does) is said to be one in the caption rather than drawn as a dot that
+//! could be mistaken for a short path: its x and y spans are both within 10⁻⁹ of the
+//! largest |coordinate| (or of 1 m), round-off.
 
 use super::precise::PixelFrame;
 use super::scale::{axis_range, bounded, decimate, extent, tick_label};
 use super::{Area, COLOURS, DrawError, FONT, render};
+use crate::Short;
 use plotters::prelude::*;
 
 /// The chart builder of the track plot, the same for the layout pass and the drawing.
@@ -18,6 +22,22 @@ fn track_builder<'a, 'b>(
         .x_label_area_size(44)
         .y_label_area_size(88);
     builder
+}
+
+/// Whether the points (some) are one point to round-off: both spans within 10⁻⁹ of the
+/// largest |coordinate|, or of 1 m.
+fn single_point(points: &[(f64, f64)]) -> bool {
+    let largest = points
+        .iter()
+        .fold(1.0f64, |m, p| m.max(p.0.abs()).max(p.1.abs()));
+    let spans = (
+        extent(points.iter().map(|p| p.0)),
+        extent(points.iter().map(|p| p.1)),
+    );
+    match spans {
+        (Some(x), Some(y)) => x.1 - x.0 <= 1e-9 * largest && y.1 - y.0 <= 1e-9 * largest,
+        _ => false,
+    }
 }
 
 /// A point marked on a track, with its legend entry.
@@ -54,6 +74,17 @@ pub(super) fn draw_track(
         .collect();
     let x_range = axis_range(extent(points.iter().map(|p| p.0)));
     let y_range = axis_range(extent(points.iter().map(|p| p.1)));
+    let still = single_point(&points);
+    let caption = match (still, points.first()) {
+        (true, Some((x, y))) => format!(
+            "{caption}: a single point throughout, ({}, {}) m",
+            Short(*x),
+            Short(*y)
+        ),
+        _ => caption.to_string(),
+    };
+    let caption = caption.as_str();
+    let points = if still { Vec::new() } else { points };
     // One scale: the units per pixel of the axis that needs more, on both, centred.
     let per_pixel = ((x_range.1 - x_range.0) / width).max((y_range.1 - y_range.0) / height);
     let equal = |(lo, hi): (f64, f64), pixels: f64| {
