@@ -163,7 +163,8 @@ pub const PLOT_FILES: [&str; 6] = [STATE, ATTITUDE, TRACK, ENERGY, POLHODE, PROF
 /// `state.svg`, `attitude.svg`, `track.svg`, `energy.svg`, `polhode.svg`, `profile.svg`.
 ///
 /// `state.svg` is written when the input has a state component, `profile.svg` when the track
-/// and the depth leave the horizontal plane (see [`profile`]), the others when their `Option`
+/// and the depth leave the horizontal plane (z varies by more than 1 % of the larger of the x
+/// and y spans), the others when their `Option`
 /// is `Some`; each replaces a file of the same name. `dir` must exist. Every column's
 /// length is checked before anything is drawn, so a malformed input writes no file.
 pub fn write_plots(dir: &Path, input: &PlotInput) -> Result<Vec<PathBuf>, PlotError> {
@@ -188,7 +189,7 @@ pub fn write_plots(dir: &Path, input: &PlotInput) -> Result<Vec<PathBuf>, PlotEr
         let caption = format!("{}: track in space axes", input.title);
         let axes = ("x [m]", "y [m]");
         written.push(emit(dir, TRACK, |svg| {
-            draw_track(svg, &caption, axes, (x, y), &[])
+            draw_track(svg, &caption, axes, (x, y), &[], &[])
         })?);
     }
     if let Some(drift) = input.energy_drift {
