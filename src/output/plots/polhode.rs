@@ -159,7 +159,7 @@ impl Figure {
             format!("{title}: polhode, ω in principal axes (I = {i1}, {i2}, {i3} kg m²)");
         match (start, two_t, &curve) {
             (None, _, _) => caption.push_str(", no finite ω"),
-            (_, Some(t), None) if t == 0.0 => caption.push_str(", ω = 0"),
+            (_, Some(0.0), None) => caption.push_str(", ω = 0"),
             (_, _, None) => caption.push_str(", a permanent rotation"),
             _ => {}
         }
