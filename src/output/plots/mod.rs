@@ -24,7 +24,7 @@
 //!
 //! The plots: `state.svg` has one small panel per state component, titled with its name, its
 //! value axis labelled with its unit, over one time range (stacked for up to four components,
-//! else three to a row); a component zero for the whole run is named in the caption instead
+//! else two to a row); a component zero for the whole run is named in the caption instead
 //! of given a panel; `attitude.svg` has roll, pitch and yaw on one panel with a legend, made
 //! continuous so that a tumbling body's angles do not wrap; `track.svg` has y
 //! against x at one scale on both axes, the start a ring and the end a dot (a track that is one

@@ -125,7 +125,7 @@ fn identically_zero(values: &[f64]) -> bool {
 /// The state plot: one small panel per component that is not zero throughout, titled with
 /// its name, its value axis labelled with its unit, all over the same time range; the
 /// components left out are named in the caption. Up to four panels are stacked in one
-/// column; more are laid out three to a row.
+/// column; more are laid out two to a row, so that the plot stays 830 px wide with readable labels.
 pub(super) fn draw_state(svg: &mut String, input: &PlotInput) -> Result<(), DrawError> {
     let (zero, mut shown): (Vec<_>, Vec<_>) = input
         .state
