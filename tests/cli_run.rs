@@ -96,7 +96,18 @@ fn sign_changes(t: &[f64], x: &[f64]) -> Vec<f64> {
 }
 
 /// Every SVG written parses as XML and holds at least one drawn series.
+/// The plots drawn only for some motions: each is checked absent where it is not expected.
+const CONDITIONAL_PLOTS: [&str; 2] = ["polhode.svg", "profile.svg"];
+
 fn check_svgs(out: &Path, expected: &[&str]) {
+    for name in CONDITIONAL_PLOTS {
+        assert_eq!(
+            out.join(name).exists(),
+            expected.contains(&name),
+            "{name} in {}",
+            out.display()
+        );
+    }
     for name in expected {
         let text = std::fs::read_to_string(out.join(name)).unwrap_or_else(|_| panic!("no {name}"));
         let document = roxmltree::Document::parse(&text).unwrap_or_else(|e| panic!("{name}: {e}"));
@@ -199,7 +210,10 @@ fn the_tennis_racket_flips_as_jacobis_solution_says_and_keeps_energy_and_momentu
         ((measured - half_period) / half_period).abs() < 1e-4,
         "{measured} against {half_period}"
     );
-    check_svgs(&out, &["state.svg", "attitude.svg", "track.svg"]);
+    check_svgs(
+        &out,
+        &["state.svg", "attitude.svg", "track.svg", "polhode.svg"],
+    );
 }
 
 #[test]
@@ -215,6 +229,17 @@ fn the_free_plate_keeps_its_energy_and_momentum() {
         .fold(0.0, f64::max);
     assert!(energy < 1e-8, "energy drift {energy}");
     assert!(momentum_drift(&header, &rows, [0.001, 0.001, 0.002]) < 1e-8);
+    // Thrown forward and up, it climbs: a profile beside the plan.
+    check_svgs(
+        &out,
+        &[
+            "state.svg",
+            "attitude.svg",
+            "track.svg",
+            "polhode.svg",
+            "profile.svg",
+        ],
+    );
 }
 
 #[test]
@@ -253,7 +278,7 @@ fn the_other_example_scenes_run() {
         (
             "auv.toml",
             "spatial_xz_euler",
-            &["state.svg", "attitude.svg", "track.svg"][..],
+            &["state.svg", "attitude.svg", "track.svg", "profile.svg"][..],
         ),
         (
             "looping.toml",
@@ -1022,7 +1047,10 @@ fn ctrl_c_or_sigterm_end_a_run_with_every_row_its_summary_and_plots() {
         assert!(s["error"].is_null(), "{name}");
         assert_eq!(s["final_time"].as_f64(), Some(last[0]), "{name}");
         assert_eq!(s["final_state"]["q"].as_f64(), Some(last[5]), "{name}");
-        check_svgs(&out, &["state.svg", "attitude.svg", "track.svg"]);
+        check_svgs(
+            &out,
+            &["state.svg", "attitude.svg", "track.svg", "polhode.svg"],
+        );
     }
 }
 
@@ -1158,7 +1186,14 @@ fn the_tossed_box_stops_where_it_has_fallen_ten_metres_and_says_so() {
     assert!(!sign_changes(&t, &column(&header, &rows, "q")).is_empty());
     check_svgs(
         &out,
-        &["state.svg", "attitude.svg", "track.svg", "energy.svg"],
+        &[
+            "state.svg",
+            "attitude.svg",
+            "track.svg",
+            "energy.svg",
+            "polhode.svg",
+            "profile.svg",
+        ],
     );
 }
 

@@ -2,13 +2,13 @@
 
 use anyhow::{Context, Result};
 use eom::models::{Family, Kinematics};
-use eom::output::plots::{PlotInput, write_plots};
+use eom::output::plots::{PlotInput, Polhode, in_principal_axes, write_plots};
 use eom::output::trajectory::Columns;
-use eom::scene::{Scene, euler_angles};
+use eom::scene::{Body, Scene, euler_angles};
 use std::path::{Path, PathBuf};
 
-/// Draws the state, the attitude, the track and the energy drift of a run into `out`, under
-/// `title`.
+/// Draws the state, the attitude, the track (and a spatial body's profile), the energy drift and, for a spatial body free of
+/// moments about G, the polhode of a run into `out`, under `title`.
 pub fn write(scene: &Scene, title: &str, columns: &Columns, out: &Path) -> Result<Vec<PathBuf>> {
     let names = scene.state_names();
     let info = scene.selection.info;
@@ -36,6 +36,7 @@ pub fn write(scene: &Scene, title: &str, columns: &Columns, out: &Path) -> Resul
             let e0 = columns.energy[0];
             columns.energy.iter().map(|e| (e - e0) / scale).collect()
         });
+    let principal = free_rotation(scene, columns);
     let input = PlotInput {
         title,
         time: &columns.time,
@@ -48,7 +49,14 @@ pub fn write(scene: &Scene, title: &str, columns: &Columns, out: &Path) -> Resul
             .as_ref()
             .map(|[r, p, y]| [r.as_slice(), p.as_slice(), y.as_slice()]),
         track: track.map(|(x, y)| (columns.state[x].as_slice(), columns.state[y].as_slice())),
+        depth: (info.family == Family::Spatial)
+            .then(|| columns.state.get(8).map(Vec::as_slice))
+            .flatten(),
         energy_drift: drift.as_deref(),
+        polhode: principal.as_ref().map(|(moments, [w1, w2, w3])| Polhode {
+            moments: *moments,
+            omega: [w1, w2, w3],
+        }),
     };
     write_plots(out, &input).with_context(|| format!("drawing the plots into {}", out.display()))
 }
@@ -69,4 +77,17 @@ fn attitude_deg(columns: &Columns, kinematics: Kinematics, first: usize) -> [Vec
         }
     }
     angles
+}
+
+/// The principal moments and ω in principal axes of a spatial body that turns free of moments
+/// about G (no loads, or uniform gravity at G alone), for the polhode; `None` for any other.
+fn free_rotation(scene: &Scene, columns: &Columns) -> Option<([f64; 3], [Vec<f64>; 3])> {
+    let torque_free = scene.loads.is_free() || scene.loads.uniform_gravity_only().is_some();
+    match &scene.body {
+        Body::Spatial { inertia, .. } if torque_free && columns.state.len() >= 6 => {
+            let [p, q, r] = [3, 4, 5].map(|k| columns.state[k].as_slice());
+            Some(in_principal_axes(inertia, [p, q, r]))
+        }
+        _ => None,
+    }
 }

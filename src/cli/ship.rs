@@ -11,7 +11,7 @@
 use super::run::{Interrupted, signal_received};
 use anyhow::{Context, Result};
 use eom::output::plots::Mark;
-use eom::output::plots::ship::{ManoeuvrePlot, write_manoeuvre_plots};
+use eom::output::plots::ship::{Hull, ManoeuvrePlot, write_manoeuvre_plots};
 use eom::output::summary::write_atomically;
 use eom::output::text::printable;
 use eom::output::trajectory::push_number;
@@ -311,6 +311,7 @@ fn write_plots(
     let north = column(&|s| s.state[3]);
     let east = column(&|s| s.state[4]);
     let heading = column(&|s| (s.state[5] - psi0).to_degrees());
+    let psi = column(&|s| s.state[5]);
     let rudder = column(&|s| s.state[6].to_degrees());
     let command = column(&|s| s.command.to_degrees());
     let marks: Vec<Mark> = outcome
@@ -329,9 +330,16 @@ fn write_plots(
         north: &north,
         east: &east,
         heading_change_deg: &heading,
+        heading_rad: &psi,
         rudder_deg: &rudder,
         command_deg: &command,
         marks: &marks,
+        // The scene gives no beam: the one view.html assumes.
+        hull: Hull {
+            length: scene.length,
+            beam: scene.length / super::view::ASSUMED_LENGTH_OVER_BEAM,
+            beam_assumed: true,
+        },
     };
     write_manoeuvre_plots(folder, &plot)?;
     let state: Vec<Vec<f64>> = (0..7).map(|k| column(&|s| s.state[k])).collect();

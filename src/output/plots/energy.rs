@@ -4,7 +4,7 @@
 use super::precise::PixelFrame;
 use super::scale::{bounded, decimate, extent, tick_label};
 use super::series::time_range;
-use super::{COLOURS, DrawError, FONT, render};
+use super::{COLOURS, DrawError, FONT, LABEL_FONT, TITLE_FONT, WIDTH, render};
 use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint, KeyPointWeight};
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
@@ -93,7 +93,7 @@ pub(super) fn draw_energy(
     time: &[f64],
     drift: &[f64],
 ) -> Result<(), DrawError> {
-    let size = (1000, 500);
+    let size = (WIDTH, 460);
     let time_range = time_range(time);
     let largest = drift
         .iter()
@@ -116,13 +116,13 @@ pub(super) fn draw_energy(
             }
             _ => (-1.0, 1.0),
         };
-        let time_ticks = 10;
+        let time_ticks = 8;
         let x_label = |v: &f64| tick_label(*v, time_range, time_ticks);
         let y_label = |d: &f64| decade_label(*d);
         let mut chart = ChartBuilder::on(root)
-            .caption(&caption, (FONT, 22))
+            .caption(&caption, (FONT, TITLE_FONT))
             .margin(12)
-            .x_label_area_size(44)
+            .x_label_area_size(52)
             .y_label_area_size(96)
             .build_cartesian_2d(
                 time_range.0..time_range.1,
@@ -137,7 +137,8 @@ pub(super) fn draw_energy(
             .x_label_formatter(&x_label)
             .y_label_formatter(&y_label)
             .light_line_style(TRANSPARENT)
-            .label_style((FONT, 12))
+            .label_style((FONT, LABEL_FONT))
+            .axis_desc_style((FONT, LABEL_FONT))
             .x_desc("t [s]")
             .y_desc("(E − E₀)/|E₀|, symmetric log, linear below 1e-16")
             .draw()?;

@@ -24,10 +24,14 @@
 //!
 //! The plots: `state.svg` has one small panel per state component, titled with its name, its
 //! value axis labelled with its unit, over one time range (stacked for up to four components,
-//! else three to a row); a component zero for the whole run is named in the caption instead
+//! else two to a row); a component zero for the whole run is named in the caption instead
 //! of given a panel; `attitude.svg` has roll, pitch and yaw on one panel with a legend, made
 //! continuous so that a tumbling body's angles do not wrap; `track.svg` has y
-//! against x at one scale on both axes, the start a ring and the end a dot; `energy.svg` has
+//! against x at one scale on both axes, the start a ring and the end a dot (a track that is one
+//! point is said to be in its caption); `profile.svg`, where a spatial body's motion leaves the
+//! horizontal plane, its height against the distance run (see `profile.rs`); `polhode.svg`, for a
+//! body turning free of moments, ω in principal axes on the energy and momentum ellipsoids
+//! (see `polhode.rs`); `energy.svg` has
 //! the relative drift on a symmetric logarithmic axis, `sign(d)·log₁₀(1 + |d|/10⁻¹⁶)`: linear
 //! through zero within round-off, a decade per unit above it, so that a drift of 10⁻¹⁴
 //! and one of 10⁻³ both read on the same axis, with their sign.
@@ -47,8 +51,8 @@
 //! timestamp, and every coordinate is written to a fixed number of decimals).
 //!
 //! Here: the input, the errors, and writing each plot atomically. `scale` decides which
-//! samples are drawn and where the axes run; `series`, `track` and `energy` draw the plots;
-//! `ship` draws a manoeuvre's, `poles` a linear model's eigenvalues.
+//! samples are drawn and where the axes run; `series`, `track`, `profile`, `polhode` and
+//! `energy` draw the plots; `ship` draws a manoeuvre's, `poles` a linear model's eigenvalues.
 
 use std::fs::{self, File};
 use std::io::{self, Write};
@@ -63,14 +67,19 @@ use super::text::printable;
 
 mod energy;
 pub mod poles;
+mod polhode;
 mod precise;
+mod profile;
 mod scale;
 mod series;
 pub mod ship;
 mod track;
 
 use energy::draw_energy;
+use polhode::draw_polhode;
+pub use polhode::{Polhode, in_principal_axes};
 use precise::Overlay;
+use profile::{draw_profile, leaves_the_plane};
 use series::{draw_attitude, draw_state};
 pub use track::Mark;
 use track::draw_track;
@@ -91,8 +100,13 @@ pub struct PlotInput<'a> {
     pub attitude_deg: Option<[&'a [f64]; 3]>,
     /// The track (x, y) in space axes, where the model has a position in the plane.
     pub track: Option<(&'a [f64], &'a [f64])>,
+    /// z in space axes (down), where the model has a position in space: with the track, the
+    /// profile where the motion leaves the horizontal plane.
+    pub depth: Option<&'a [f64]>,
     /// The relative energy drift (E − E₀)/|E₀| at each time, where the run has an energy.
     pub energy_drift: Option<&'a [f64]>,
+    /// ω in principal axes, where the body turns free of moments about G.
+    pub polhode: Option<Polhode<'a>>,
 }
 
 /// Why a plot could not be drawn or written: each variant names the file.
@@ -138,14 +152,20 @@ const ATTITUDE: &str = "attitude.svg";
 const TRACK: &str = "track.svg";
 /// The file of the energy drift plot.
 const ENERGY: &str = "energy.svg";
+/// The file of the polhode plot.
+const POLHODE: &str = "polhode.svg";
+/// The file of the profile plot.
+const PROFILE: &str = "profile.svg";
 /// Every file [`write_plots`] may write, for the output folder's manifest.
-pub const PLOT_FILES: [&str; 4] = [STATE, ATTITUDE, TRACK, ENERGY];
+pub const PLOT_FILES: [&str; 6] = [STATE, ATTITUDE, TRACK, ENERGY, POLHODE, PROFILE];
 
 /// Draws every plot the input has data for into `dir` and returns the files written:
-/// `state.svg`, `attitude.svg`, `track.svg`, `energy.svg`.
+/// `state.svg`, `attitude.svg`, `track.svg`, `energy.svg`, `polhode.svg`, `profile.svg`.
 ///
-/// `state.svg` is written when the input has a state component, the others when their
-/// `Option` is `Some`; each replaces a file of the same name. `dir` must exist. Every column's
+/// `state.svg` is written when the input has a state component, `profile.svg` when the track
+/// and the depth leave the horizontal plane (z varies by more than 1 % of the larger of the x
+/// and y spans), the others when their `Option`
+/// is `Some`; each replaces a file of the same name. `dir` must exist. Every column's
 /// length is checked before anything is drawn, so a malformed input writes no file.
 pub fn write_plots(dir: &Path, input: &PlotInput) -> Result<Vec<PathBuf>, PlotError> {
     check_lengths(dir, input)?;
@@ -169,12 +189,24 @@ pub fn write_plots(dir: &Path, input: &PlotInput) -> Result<Vec<PathBuf>, PlotEr
         let caption = format!("{}: track in space axes", input.title);
         let axes = ("x [m]", "y [m]");
         written.push(emit(dir, TRACK, |svg| {
-            draw_track(svg, &caption, axes, (x, y), &[])
+            draw_track(svg, &caption, axes, (x, y), &[], &[])
         })?);
     }
     if let Some(drift) = input.energy_drift {
         written.push(emit(dir, ENERGY, |svg| {
             draw_energy(svg, input.title, input.time, drift)
+        })?);
+    }
+    if let Some(polhode) = &input.polhode {
+        written.push(emit(dir, POLHODE, |svg| {
+            draw_polhode(svg, input.title, polhode)
+        })?);
+    }
+    if let (Some((x, y)), Some(z)) = (input.track, input.depth)
+        && leaves_the_plane(x, y, z)
+    {
+        written.push(emit(dir, PROFILE, |svg| {
+            draw_profile(svg, input.title, (x, y, z))
         })?);
     }
     Ok(written)
@@ -197,8 +229,16 @@ fn check_lengths(dir: &Path, input: &PlotInput) -> Result<(), PlotError> {
         columns.push((TRACK, "track x".to_string(), x.len()));
         columns.push((TRACK, "track y".to_string(), y.len()));
     }
+    if let Some(z) = input.depth {
+        columns.push((PROFILE, "track z".to_string(), z.len()));
+    }
     if let Some(drift) = input.energy_drift {
         columns.push((ENERGY, "energy drift".to_string(), drift.len()));
+    }
+    if let Some(polhode) = &input.polhode {
+        for (name, values) in ["ω₁", "ω₂", "ω₃"].into_iter().zip(polhode.omega) {
+            columns.push((POLHODE, name.to_string(), values.len()));
+        }
     }
     match columns.into_iter().find(|(_, _, len)| *len != times) {
         Some((file, column, len)) => Err(PlotError::Length {
@@ -287,6 +327,17 @@ const COLOURS: [RGBColor; 3] = [
 
 /// The font of every text: resolved by the viewer, no font file is loaded.
 const FONT: &str = "sans-serif";
+
+/// The width of every plot, px: the widest GitHub shows an image in a README (the column of
+/// a repository's page, 830 px), so that a plot is shown at its own size there and its texts
+/// read at the sizes below. plotters' SVG backend writes a font of size s as s/1.24 px.
+const WIDTH: u32 = 830;
+/// A plot's title: 17.7 px.
+const TITLE_FONT: u32 = 22;
+/// A panel's title: 14.5 px.
+const PANEL_FONT: u32 = 18;
+/// Tick labels, axis labels and legends: 12.1 px, the smallest that reads at a glance.
+const LABEL_FONT: u32 = 15;
 
 #[cfg(test)]
 mod tests {
@@ -412,7 +463,9 @@ mod tests {
                     ]
                 }),
                 track: spatial.then(|| (&self.x[..], &self.y[..])),
+                depth: None,
                 energy_drift: Some(&self.drift),
+                polhode: None,
             }
         }
     }
@@ -641,10 +694,15 @@ mod tests {
             state: vec![("u", &[])],
             attitude_deg: Some([&[], &[], &[]]),
             track: Some((&[], &[])),
+            depth: Some(&[]),
             energy_drift: Some(&[]),
+            polhode: Some(Polhode {
+                moments: [1.0, 2.0, 3.0],
+                omega: [&[], &[], &[]],
+            }),
         };
-        assert_eq!(write_plots(&folder.0, &empty).unwrap().len(), 4);
-        assert_eq!(folder.names().len(), 4);
+        assert_eq!(write_plots(&folder.0, &empty).unwrap().len(), 5);
+        assert_eq!(folder.names().len(), 5);
     }
 
     #[test]
@@ -707,6 +765,106 @@ mod tests {
             "{}",
             p[1_999]
         );
+    }
+
+    /// A spinning plate's ω, I₁ = I₂ = 1, I₃ = 2: (3 cos t, 3 sin t, 4) over `n` samples.
+    fn plate(n: usize) -> [Vec<f64>; 3] {
+        let t = (0..n).map(|i| i as f64 * 1e-2);
+        [
+            t.clone().map(|t| 3.0 * t.cos()).collect(),
+            t.clone().map(|t| 3.0 * t.sin()).collect(),
+            t.map(|_| 4.0).collect(),
+        ]
+    }
+
+    /// Writes the plots of a pendulum of as many rows as `omega`, with `omega` as its polhode.
+    fn write_polhode(folder: &Folder, omega: &[Vec<f64>; 3]) -> Vec<PathBuf> {
+        let run = Run::pendulum(omega[0].len());
+        let mut input = run.input("plate", false);
+        input.polhode = Some(Polhode {
+            moments: [1.0, 1.0, 2.0],
+            omega: [&omega[0], &omega[1], &omega[2]],
+        });
+        write_plots(&folder.0, &input).unwrap()
+    }
+
+    #[test]
+    fn the_polhode_draws_the_run_and_the_dashed_curve_in_three_projections() {
+        let folder = Folder::new("polhode");
+        let written = write_polhode(&folder, &plate(700));
+        assert_eq!(written.last(), Some(&folder.0.join("polhode.svg")));
+        let svg = Svg::read(&folder.0.join("polhode.svg"));
+        let dashed = svg.elements("polyline", |n| n.attribute("stroke-dasharray").is_some());
+        // Per projection: the run, the polhode (dashed) and the ellipsoid's outline, clipped
+        // to the window; one dashed sample in the legend.
+        assert_eq!(dashed.iter().filter(|d| **d).count(), 3 + 1);
+        assert!(svg.series().len() >= 3 * 3, "{}", svg.series().len());
+        let texts = svg.texts();
+        for text in ["ω₁–ω₂", "ω₂–ω₃", "ω₃–ω₁", "the run's ω", "T = 20.5 J"]
+        {
+            assert!(texts.contains(&text.to_string()), "no {text} in {texts:?}");
+        }
+        assert!(
+            texts.contains(&"the loop goes round ω₃".to_string()),
+            "{texts:?}"
+        );
+
+        // One row, nothing, a row of NaN first: a plot, and no panic.
+        let mut broken = plate(10);
+        broken[1][0] = f64::NAN;
+        for omega in [plate(1), plate(0), broken] {
+            write_polhode(&folder, &omega);
+            let text = fs::read_to_string(folder.0.join("polhode.svg")).unwrap();
+            assert!(!text.contains("NaN"));
+        }
+    }
+
+    #[test]
+    fn a_track_in_place_is_said_to_be_one_and_a_climb_gets_a_profile() {
+        let folder = Folder::new("profile");
+        let mut run = Run::spatial(2_000);
+        let still = vec![0.0; 2_000];
+        // Turning in place: the track is a point, said so, with nothing drawn on it.
+        let mut input = run.input("in place", true);
+        input.track = Some((&still, &still));
+        input.depth = Some(&still);
+        let written = write_plots(&folder.0, &input).unwrap();
+        assert!(!written.contains(&folder.0.join("profile.svg")));
+        let track = Svg::read(&folder.0.join("track.svg"));
+        assert!(track.series().is_empty());
+        assert!(track.elements("circle", |_| ()).is_empty());
+        let caption = "in place: track in space axes: a single point throughout, (0, 0) m";
+        assert!(
+            track.texts().contains(&caption.to_string()),
+            "{:?}",
+            track.texts()
+        );
+
+        // Climbing 30 m on the 50 m circle (3 % of its 100 m span): a profile, the height
+        // against the distance run, which ends at 1/10 of the circumference.
+        run.x = (0..2_000)
+            .map(|i| 50.0 * (i as f64 * TAU / 20_000.0).cos())
+            .collect();
+        run.y = (0..2_000)
+            .map(|i| 50.0 * (i as f64 * TAU / 20_000.0).sin())
+            .collect();
+        let climb: Vec<f64> = (0..2_000).map(|i| -0.015 * i as f64).collect();
+        let mut input = run.input("climb", true);
+        input.depth = Some(&climb);
+        let written = write_plots(&folder.0, &input).unwrap();
+        assert_eq!(written.last(), Some(&folder.0.join("profile.svg")));
+        let profile = Svg::read(&folder.0.join("profile.svg"));
+        let line = &profile.series()[0];
+        // Up to the right: the height grows as the distance does.
+        assert!(line[0].0 < line[line.len() - 1].0 && line[0].1 > line[line.len() - 1].1);
+        let texts = profile.texts();
+        for text in ["horizontal distance run [m]", "height −z [m]", "30"] {
+            assert!(texts.contains(&text.to_string()), "no {text} in {texts:?}");
+        }
+        // A z column of the wrong length is refused before anything is drawn.
+        input.depth = Some(&climb[1..]);
+        let error = write_plots(&folder.0, &input).unwrap_err();
+        assert!(error.to_string().contains("profile.svg"), "{error}");
     }
 
     #[test]

@@ -3,7 +3,7 @@
 //! grows.
 
 use super::scale::tick_label;
-use super::{COLOURS, FONT, PlotError, emit, render};
+use super::{COLOURS, FONT, LABEL_FONT, PlotError, TITLE_FONT, WIDTH, emit, render};
 use plotters::prelude::*;
 use std::path::{Path, PathBuf};
 
@@ -31,9 +31,9 @@ pub fn write_pole_plot(
     let label = |v: &f64| tick_label(*v, range, ticks);
     let caption = format!("{title}: poles (eigenvalues of A)");
     emit(dir, POLES, |svg| {
-        render(svg, (700, 700), |root, _| {
+        render(svg, (WIDTH, WIDTH), |root, _| {
             let mut chart = ChartBuilder::on(root)
-                .caption(&caption, (FONT, 18))
+                .caption(&caption, (FONT, TITLE_FONT))
                 .margin(16)
                 .x_label_area_size(48)
                 .y_label_area_size(72)
@@ -45,7 +45,7 @@ pub fn write_pole_plot(
                 .x_label_formatter(&label)
                 .y_label_formatter(&label)
                 .light_line_style(TRANSPARENT)
-                .label_style((FONT, 12))
+                .label_style((FONT, LABEL_FONT))
                 .x_desc("Re λ [1/s]")
                 .y_desc("Im λ [rad/s]")
                 .draw()?;

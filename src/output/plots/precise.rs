@@ -66,6 +66,30 @@ impl Overlay {
         colour: RGBColor,
         width: u32,
     ) -> Result<(), DrawError> {
+        self.push(area, points, colour, width, "")
+    }
+
+    /// As [`line`](Self::line), dashed: `dash` pixels drawn, then as many left out.
+    pub(super) fn dashed(
+        &mut self,
+        area: &Area,
+        points: impl IntoIterator<Item = (f64, f64)>,
+        (colour, width): (RGBColor, u32),
+        dash: u32,
+    ) -> Result<(), DrawError> {
+        let pattern = format!(" stroke-dasharray=\"{dash} {dash}\"");
+        self.push(area, points, colour, width, &pattern)
+    }
+
+    /// Draws the placeholder and keeps the line, with `extra` attributes.
+    fn push(
+        &mut self,
+        area: &Area,
+        points: impl IntoIterator<Item = (f64, f64)>,
+        colour: RGBColor,
+        width: u32,
+        extra: &str,
+    ) -> Result<(), DrawError> {
         // The closing "-end" keeps line 1's marker from matching line 10's.
         let marker = format!("eom-precise-line-{}-end", self.lines.len());
         area.draw(&Text::new(marker.clone(), (0, 0), (FONT, 1)))?;
@@ -75,7 +99,7 @@ impl Overlay {
         }
         let RGBColor(r, g, b) = colour;
         let element = format!(
-            "<polyline fill=\"none\" stroke=\"#{r:02X}{g:02X}{b:02X}\" stroke-width=\"{width}\" \
+            "<polyline fill=\"none\" stroke=\"#{r:02X}{g:02X}{b:02X}\" stroke-width=\"{width}\"{extra} \
              stroke-linejoin=\"round\" points=\"{}\"/>",
             coordinates.trim_end()
         );

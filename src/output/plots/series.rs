@@ -3,7 +3,9 @@
 
 use super::precise::{Overlay, PixelFrame};
 use super::scale::{axis_range, bounded, decimate, extent, tick_label};
-use super::{Area, COLOURS, DrawError, FONT, PlotInput, render};
+use super::{
+    Area, COLOURS, DrawError, FONT, LABEL_FONT, PANEL_FONT, PlotInput, TITLE_FONT, WIDTH, render,
+};
 use crate::models::state_unit;
 use plotters::prelude::*;
 
@@ -62,7 +64,7 @@ pub(super) fn time_panel(
     let mut chart = ChartBuilder::on(area)
         .caption(style.caption, (FONT, style.caption_size))
         .margin(8)
-        .x_label_area_size(if style.time_desc { 40 } else { 24 })
+        .x_label_area_size(if style.time_desc { 50 } else { 24 })
         .y_label_area_size(if style.y_desc.is_empty() { 80 } else { 96 })
         .build_cartesian_2d(time_range.0..time_range.1, value_range.0..value_range.1)?;
     let mut mesh = chart.configure_mesh();
@@ -71,7 +73,8 @@ pub(super) fn time_panel(
         .x_label_formatter(&x_label)
         .y_label_formatter(&y_label)
         .light_line_style(TRANSPARENT)
-        .label_style((FONT, 12));
+        .label_style((FONT, LABEL_FONT))
+        .axis_desc_style((FONT, LABEL_FONT));
     if style.time_desc {
         mesh.x_desc("t [s]");
     }
@@ -100,7 +103,7 @@ pub(super) fn time_panel(
             .position(SeriesLabelPosition::UpperRight)
             .background_style(WHITE.mix(0.85))
             .border_style(BLACK)
-            .label_font((FONT, 13))
+            .label_font((FONT, LABEL_FONT))
             .draw()?;
     }
     Ok(())
@@ -122,7 +125,7 @@ fn identically_zero(values: &[f64]) -> bool {
 /// The state plot: one small panel per component that is not zero throughout, titled with
 /// its name, its value axis labelled with its unit, all over the same time range; the
 /// components left out are named in the caption. Up to four panels are stacked in one
-/// column; more are laid out three to a row.
+/// column; more are laid out two to a row, so that the plot stays 830 px wide with readable labels.
 pub(super) fn draw_state(svg: &mut String, input: &PlotInput) -> Result<(), DrawError> {
     let (zero, mut shown): (Vec<_>, Vec<_>) = input
         .state
@@ -134,9 +137,9 @@ pub(super) fn draw_state(svg: &mut String, input: &PlotInput) -> Result<(), Draw
     }
     let n = shown.len();
     let (columns, panel) = if n <= 4 {
-        (1, (1000, 220))
+        (1, (WIDTH, 210))
     } else {
-        (3, (440, 230))
+        (2, (WIDTH / 2, 220))
     };
     let rows = n.div_ceil(columns);
     let title_height = 40;
@@ -158,7 +161,7 @@ pub(super) fn draw_state(svg: &mut String, input: &PlotInput) -> Result<(), Draw
         ),
     };
     render(svg, size, |root, overlay| {
-        let body = root.titled(&caption, (FONT, 22))?;
+        let body = root.titled(&caption, (FONT, TITLE_FONT))?;
         let panels = body.split_evenly((rows, columns));
         for (&(name, values), area) in shown.iter().zip(&panels) {
             let y_desc = match state_unit(name) {
@@ -167,10 +170,10 @@ pub(super) fn draw_state(svg: &mut String, input: &PlotInput) -> Result<(), Draw
             };
             let style = PanelStyle {
                 caption: name,
-                caption_size: 16,
+                caption_size: PANEL_FONT,
                 y_desc: &y_desc,
                 time_desc: true,
-                time_ticks: if columns == 1 { 10 } else { 5 },
+                time_ticks: if columns == 1 { 8 } else { 5 },
                 legend: false,
             };
             let line = Line {
@@ -228,14 +231,14 @@ pub(super) fn draw_attitude(
     angles: [&[f64]; 3],
 ) -> Result<(), DrawError> {
     let unwrapped = continuous_euler_deg(angles);
-    render(svg, (1000, 500), |root, overlay| {
+    render(svg, (WIDTH, 420), |root, overlay| {
         let caption = format!("{title}: attitude (Euler angles, continuous: no wraps)");
         let style = PanelStyle {
             caption: &caption,
-            caption_size: 22,
+            caption_size: TITLE_FONT,
             y_desc: "angle [deg]",
             time_desc: true,
-            time_ticks: 10,
+            time_ticks: 8,
             legend: true,
         };
         let lines: Vec<Line> = ["roll φ", "pitch θ", "yaw ψ"]

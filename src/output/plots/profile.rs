@@ -1,0 +1,147 @@
+//! The profile of a spatial body's track: its height −z against the horizontal distance it
+//! has run. The track plot is a plan (y against x); a body that climbs, dives or falls moves
+//! in a third coordinate the plan cannot show, and the profile shows it along the path,
+//! however the path turns, which an x–z side view would fold over.
+//!
+//! It is drawn when z varies by more than [`PROFILE_FRACTION`] of the horizontal extent (the
+//! larger of the x and y spans), and by more than round-off (10⁻⁹ of the largest |z|, or of
+//! 1 m): a body that stays in its horizontal plane has no profile worth a file.
+
+use super::precise::PixelFrame;
+use super::scale::{axis_range, bounded, decimate, extent, tick_label};
+use super::{COLOURS, DrawError, FONT, LABEL_FONT, TITLE_FONT, WIDTH, render};
+use plotters::prelude::*;
+
+/// How much z must vary, as a fraction of the horizontal extent, for a profile to be drawn.
+pub(super) const PROFILE_FRACTION: f64 = 0.01;
+
+/// The span of the finite values, if any.
+fn span(values: &[f64]) -> Option<f64> {
+    extent(
+        values
+            .iter()
+            .copied()
+            .filter(|v| v.is_finite())
+            .map(bounded),
+    )
+    .map(|(lo, hi)| hi - lo)
+}
+
+/// Whether the motion leaves the horizontal plane: z varies by more than
+/// [`PROFILE_FRACTION`] of the larger of the x and y spans, and by more than round-off.
+pub(super) fn leaves_the_plane(x: &[f64], y: &[f64], z: &[f64]) -> bool {
+    let Some(z_span) = span(z) else {
+        return false;
+    };
+    let horizontal = span(x).unwrap_or(0.0).max(span(y).unwrap_or(0.0));
+    let largest = z
+        .iter()
+        .filter(|v| v.is_finite())
+        .fold(1.0f64, |m, v| m.max(bounded(*v).abs()));
+    z_span > PROFILE_FRACTION * horizontal && z_span > 1e-9 * largest
+}
+
+/// The horizontal distance run to each sample: the sum of the steps √(Δx² + Δy²) between
+/// finite samples (NaN where the sample is not finite).
+pub(super) fn distance_run(x: &[f64], y: &[f64]) -> Vec<f64> {
+    let mut run = 0.0;
+    let mut last: Option<(f64, f64)> = None;
+    x.iter()
+        .zip(y)
+        .map(|(&x, &y)| {
+            if !(x.is_finite() && y.is_finite()) {
+                return f64::NAN;
+            }
+            if let Some((lx, ly)) = last {
+                run = bounded(run + (x - lx).hypot(y - ly));
+            }
+            last = Some((x, y));
+            run
+        })
+        .collect()
+}
+
+/// The profile plot: −z (up) against the horizontal distance run, the start a ring and the
+/// end a dot, each axis to its own scale.
+pub(super) fn draw_profile(
+    svg: &mut String,
+    title: &str,
+    (x, y, z): (&[f64], &[f64], &[f64]),
+) -> Result<(), DrawError> {
+    let size = (WIDTH, 440);
+    let along = distance_run(x, y);
+    let height: Vec<f64> = z.iter().map(|z| -z).collect();
+    let finite = |i: usize| along[i].is_finite() && height[i].is_finite();
+    let points: Vec<(f64, f64)> = decimate(along.len(), size.0 as usize, finite, &[&height])
+        .into_iter()
+        .map(|i| (along[i], bounded(height[i])))
+        .collect();
+    let x_range = axis_range(extent(points.iter().map(|p| p.0)));
+    let y_range = axis_range(extent(points.iter().map(|p| p.1)));
+    let caption = format!("{title}: profile, height against distance run");
+    let ticks = (8, 6);
+    let x_label = |v: &f64| tick_label(*v, x_range, ticks.0);
+    let y_label = |v: &f64| tick_label(*v, y_range, ticks.1);
+    render(svg, size, |root, overlay| {
+        let mut chart = ChartBuilder::on(root)
+            .caption(&caption, (FONT, TITLE_FONT))
+            .margin(12)
+            .x_label_area_size(52)
+            .y_label_area_size(84)
+            .build_cartesian_2d(x_range.0..x_range.1, y_range.0..y_range.1)?;
+        chart
+            .configure_mesh()
+            .x_labels(ticks.0)
+            .y_labels(ticks.1)
+            .x_label_formatter(&x_label)
+            .y_label_formatter(&y_label)
+            .light_line_style(TRANSPARENT)
+            .label_style((FONT, LABEL_FONT))
+            .axis_desc_style((FONT, LABEL_FONT))
+            .x_desc("horizontal distance run [m]")
+            .y_desc("height −z [m]")
+            .draw()?;
+        let frame = PixelFrame::new(chart.plotting_area().get_pixel_range(), x_range, y_range);
+        overlay.line(root, points.iter().map(|p| frame.at(*p)), COLOURS[0], 2)?;
+        if let (Some(&first), Some(&last)) = (points.first(), points.last()) {
+            chart.draw_series([
+                Circle::new(first, 7, COLOURS[2].stroke_width(2)),
+                Circle::new(last, 4, RGBColor(214, 39, 40).filled()),
+            ])?;
+        }
+        Ok(())
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_profile_is_drawn_only_where_z_varies() {
+        let x: Vec<f64> = (0..100).map(f64::from).collect();
+        let flat = vec![0.0; 100];
+        // 1 % of 99 m is 0.99 m: a rise of 0.5 m is in the plane, one of 2 m is not.
+        let low: Vec<f64> = (0..100).map(|i| -0.005 * f64::from(i)).collect();
+        let high: Vec<f64> = (0..100).map(|i| -0.02 * f64::from(i)).collect();
+        assert!(!leaves_the_plane(&x, &flat, &flat));
+        assert!(!leaves_the_plane(&x, &flat, &low));
+        assert!(leaves_the_plane(&x, &flat, &high));
+        // Falling straight down from rest: no horizontal extent at all.
+        assert!(leaves_the_plane(&flat, &flat, &high));
+        // Round-off on a body at rest is not a profile; no samples are none either.
+        let noise: Vec<f64> = (0..100).map(|i| 1e-15 * f64::from(i % 3)).collect();
+        assert!(!leaves_the_plane(&flat, &flat, &noise));
+        assert!(!leaves_the_plane(&[], &[], &[]));
+        assert!(!leaves_the_plane(&[f64::NAN], &[0.0], &[f64::NAN]));
+    }
+
+    #[test]
+    fn the_distance_run_adds_the_horizontal_steps() {
+        let (x, y) = ([0.0, 3.0, f64::NAN, 3.0, 0.0], [0.0, 4.0, 1.0, 8.0, 8.0]);
+        let run = distance_run(&x, &y);
+        assert_eq!(run[..2], [0.0, 5.0]);
+        assert!(run[2].is_nan());
+        assert_eq!(run[3..], [9.0, 12.0]);
+    }
+}
