@@ -44,15 +44,17 @@ impl Ranged for SymlogAxis {
         RangedCoordf64::from(self.low..self.high).map(&symlog(*drift), limit)
     }
 
-    /// Zero and the decades ±10ᵏ inside the axis, every second or third decade when there
-    /// would be more than sixteen; no light points (no minor grid).
+    /// Zero and the decades ±10ᵏ inside the axis from 10⁻¹⁵ up, every second or third decade
+    /// when there would be more than sixteen; no light points (no minor grid). ±10⁻¹⁶, the
+    /// edge of the linear part, lies 0.3 decade from zero, where its label would overwrite
+    /// zero's; the axis's description names it instead.
     fn key_points<Hint: KeyPointHint>(&self, hint: Hint) -> Vec<f64> {
         if let KeyPointWeight::Any = hint.weight() {
             return Vec::new();
         }
         let top = symexp(self.low.abs().max(self.high.abs()));
         // Up to 10³⁰⁸, the largest finite decade (a drift past it is drawn at the top).
-        let lowest = LINEAR_BELOW.log10().round() as i32;
+        let lowest = LINEAR_BELOW.log10().round() as i32 + 1;
         let highest = (top.log10().floor().min(308.0) as i32).max(lowest);
         let inside = |d: &f64| (self.low..=self.high).contains(&symlog(*d));
         let decades: Vec<(i32, f64)> = (lowest..=highest)
@@ -168,11 +170,13 @@ mod tests {
             };
             axis.key_points(plotters::coord::ranged1d::BoldPoints(10))
         };
-        // A drift from zero to 10⁻³: every decade from round-off up.
+        // A drift from zero to 10⁻³: every decade from round-off up, but for the edge of the
+        // linear part, whose label would sit on zero's.
         let drift = ticks(0.0, 1e-3);
-        for d in [0.0, 1e-16, 1e-14, 1e-3] {
+        for d in [0.0, 1e-15, 1e-14, 1e-3] {
             assert!(drift.contains(&d), "{d:e} not in {drift:?}");
         }
+        assert!(!drift.contains(&1e-16), "{drift:?}");
         // Of either sign: every second decade, the top one kept.
         let both = ticks(-1e-3, 1e-3);
         for d in [-1e-3, -1e-15, 0.0, 1e-15, 1e-3] {
