@@ -36,6 +36,21 @@ pub(super) struct PanelStyle<'a> {
 }
 
 /// Draws the lines against `time` onto `area`, over the time range `time_range`.
+/// The value range raised so that a legend of `entries` lines in the upper corner sits above
+/// the curves instead of on them: each line of the legend takes about a ninth of the panel.
+fn with_room_for_legend(range: (f64, f64), entries: Option<usize>) -> (f64, f64) {
+    match entries {
+        Some(n) if n > 0 => {
+            let share = (n as f64 / 9.0).min(0.5);
+            (
+                range.0,
+                range.1 + (range.1 - range.0) * share / (1.0 - share),
+            )
+        }
+        _ => range,
+    }
+}
+
 pub(super) fn time_panel(
     area: &Area,
     overlay: &mut Overlay,
@@ -56,7 +71,10 @@ pub(super) fn time_panel(
                 .collect()
         })
         .collect();
-    let value_range = axis_range(extent(points.iter().flatten().map(|p| p.1)));
+    let value_range = with_room_for_legend(
+        axis_range(extent(points.iter().flatten().map(|p| p.1))),
+        style.legend.then_some(lines.len()),
+    );
     let value_ticks = 5;
     let x_label = |v: &f64| tick_label(*v, time_range, style.time_ticks);
     let y_label = |v: &f64| tick_label(*v, value_range, value_ticks);
@@ -253,4 +271,18 @@ pub(super) fn draw_attitude(
             .collect();
         time_panel(root, overlay, &style, time, time_range(time), &lines)
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::with_room_for_legend;
+
+    #[test]
+    fn a_legend_gets_room_above_the_curves() {
+        // Three lines take a third of the panel: the data keep the lower two thirds.
+        let (low, high) = with_room_for_legend((-10.0, 20.0), Some(3));
+        assert_eq!(low, -10.0);
+        assert!(((20.0 - low) / (high - low) - 2.0 / 3.0).abs() < 1e-12);
+        assert_eq!(with_room_for_legend((-10.0, 20.0), None), (-10.0, 20.0));
+    }
 }
