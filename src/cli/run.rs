@@ -610,7 +610,10 @@ fn print_outcome(scene: &Scene, outcome: &Outcome, out: &Path) {
         );
     }
     if let (Some(t), Some(condition)) = (report.stopped_at, &scene.stop) {
-        println!("  stopped at t = {t} s, where `{condition}` first held");
+        println!(
+            "  stopped at t = {} s, where `{condition}` first held (summary.json: stopped_at, every digit)",
+            Short(t)
+        );
     }
 
     println!("  wrote into {}:", out.display());

@@ -575,7 +575,8 @@ impl Checker<'_> {
             return Err(self.invalid(
                 key,
                 format!(
-                    "`{condition}` holds at the start ({x}), so the run would end before it begins"
+                    "`{condition}` holds at the start ({}), so the run would end before it begins",
+                    Short(x)
                 ),
             ));
         }
