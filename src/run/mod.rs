@@ -175,10 +175,11 @@ pub enum RunError {
     },
 }
 
-/// A time as a message writes it: to 12 significant digits, so that a step's time
-/// t₀ + k·h reads 1.829, not 1.8290000000000002.
-pub(crate) fn seconds(t: f64) -> f64 {
-    format!("{t:.11e}").parse().unwrap_or(t)
+/// A time as a message writes it: to six significant digits, as every number in a message
+/// ([`Short`](crate::Short)), so that a step's time t₀ + k·h reads 1.829, not
+/// 1.8290000000000002; the summary and the trajectory keep every digit.
+pub(crate) fn seconds(t: f64) -> crate::Short {
+    crate::Short(t)
 }
 
 /// What a [`RunError::GimbalLock`] says.
