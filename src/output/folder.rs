@@ -475,7 +475,12 @@ fn start_manifest(folder: &Path, writer: &Writer, planned: &[String]) -> Result<
         let _ = std::fs::remove_file(folder.join(SWEEP));
     }
     let lines: String = planned.iter().map(|name| format!("{name}\n")).collect();
-    std::fs::write(folder.join(writer.manifest()), lines)
+    // Whole or not at all: a run starting beside this one reads it before it takes the lock.
+    // The temporary name does not start with the manifest's, so it is never read as one.
+    let name = writer.manifest();
+    let partial = folder.join(format!(".partial{name}"));
+    std::fs::write(&partial, lines)
+        .and_then(|()| std::fs::rename(&partial, folder.join(&name)))
         .map_err(|e| FolderError::unwritable(folder, e))
 }
 
