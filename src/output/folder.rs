@@ -143,9 +143,13 @@ impl Writer {
     }
 }
 
-/// What names a sweep across the machines that run its shards: the scene's name, the number
-/// of shards and a hash (FNV-1a, 64 bits: the same on every machine and build) of its text.
+/// What names a sweep across the machines that run its shards: the scene's file name (not
+/// its path, which may be written differently on each machine), the number of shards and a
+/// hash (FNV-1a, 64 bits: the same on every machine and build) of its text.
 pub fn sweep_identity(name: &str, text: &str, count: usize) -> String {
+    let name = Path::new(name)
+        .file_name()
+        .map_or_else(|| name.to_owned(), |n| n.to_string_lossy().into_owned());
     let hash = text.bytes().fold(0xcbf2_9ce4_8422_2325u64, |h, b| {
         (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
     });
@@ -654,6 +658,15 @@ mod tests {
         assert!(matches!(other, FolderError::OtherSweep { .. }), "{other}");
         drop(first);
         Claim::take(&dir, true, &shard(1, "b"), &[]).unwrap();
+    }
+
+    #[test]
+    fn a_sweep_is_named_by_its_file_and_text_not_the_path_it_was_given_by() {
+        let text = "title = \"t\"";
+        let here = sweep_identity("scenes/s.toml", text, 4);
+        assert_eq!(here, sweep_identity("/home/u/eom/./scenes/s.toml", text, 4));
+        assert_ne!(here, sweep_identity("scenes/s.toml", "title = \"u\"", 4));
+        assert_ne!(here, sweep_identity("scenes/s.toml", text, 5));
     }
 
     #[test]
