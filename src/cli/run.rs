@@ -246,7 +246,7 @@ fn execute_ship(text: &str, name: &str, out: &Path, options: Options, swept: boo
             .collect(),
         None => cases
             .iter()
-            .map(|(case, _)| table_case_folder(case))
+            .map(|(case, _)| case_folder(case.index))
             .chain([sweep_file(options.shard)])
             .collect(),
     };
@@ -255,7 +255,11 @@ fn execute_ship(text: &str, name: &str, out: &Path, options: Options, swept: boo
     match single {
         Some(scene) => super::ship::execute(scene, name, out),
         None => {
-            let (table, failures) = super::ship::run_sweep(&cases, name, out, table_case_folder);
+            let (table, failures) = super::ship::run_sweep(&cases, name, |index| {
+                let folder = out.join(case_folder(index));
+                writable_folder(&folder)?;
+                Ok(folder)
+            });
             finish_sweep(name, out, options.shard, &table, &failures)
         }
     }
@@ -271,11 +275,6 @@ fn writer_of(name: &str, text: &str, shard: Option<(usize, usize)>) -> Writer {
         },
         None => Writer::Whole,
     }
-}
-
-/// A ship sweep case's folder.
-fn table_case_folder(case: &TableCase) -> String {
-    case_folder_of(case.index)
 }
 
 /// Bytes per trajectory number as written (shortest round-trip, up to 24 characters, most
@@ -318,7 +317,10 @@ fn planned_entries(
     shard: Option<(usize, usize)>,
 ) -> Vec<String> {
     if swept {
-        let mut entries: Vec<String> = scenes.iter().map(|(case, _)| case_folder(case)).collect();
+        let mut entries: Vec<String> = scenes
+            .iter()
+            .map(|(case, _)| case_folder(case.index))
+            .collect();
         entries.push(sweep_file(shard));
         return entries;
     }
@@ -328,13 +330,8 @@ fn planned_entries(
     entries
 }
 
-/// A case's folder, `case-NNNN`.
-fn case_folder(case: &Case) -> String {
-    case_folder_of(case.index)
-}
-
-/// The folder of case `index`, `case-NNNN`, for a case of any kind.
-fn case_folder_of(index: usize) -> String {
+/// The folder of sweep case `index`, `case-NNNN`, for a case of any kind.
+fn case_folder(index: usize) -> String {
     format!("case-{index:04}")
 }
 
@@ -646,7 +643,7 @@ fn run_sweep(
             if signal_received().is_some() {
                 bail!("not run: the sweep was interrupted");
             }
-            let folder = out.join(case_folder(case));
+            let folder = out.join(case_folder(case.index));
             writable_folder(&folder)?;
             run_case(scene, name, &folder, false, Some(case))
         })

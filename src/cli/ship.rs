@@ -24,7 +24,7 @@ use eom_codegen::model::ship::{Units, YawInertia};
 use rayon::prelude::*;
 use serde_json::{Map, Value, json};
 use std::collections::BTreeMap;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 /// A manoeuvre run at the scene's step, and the same at half the step.
@@ -119,7 +119,8 @@ fn run_into(scene: &ShipScene, name: &str, out: &Path) -> Result<ShipRun> {
     })
 }
 
-/// Runs every case of a ship sweep in parallel, each into `case-NNNN/` of `out`, and returns
+/// Runs every case of a ship sweep in parallel, each into the folder `folder_of` makes for
+/// its index (`case-NNNN/`, made and found writable by the sweep's runner), and returns
 /// the lines of its table: the case, the swept values, each manoeuvre's figures
 /// (`turning_circle_35.tactical_diameter_m`), each IMO criterion's value and verdict
 /// (`imo.tactical_diameter`, `imo.tactical_diameter.pass`), and the error of a case that
@@ -127,8 +128,7 @@ fn run_into(scene: &ShipScene, name: &str, out: &Path) -> Result<ShipRun> {
 pub fn run_sweep(
     cases: &[(TableCase, ShipScene)],
     name: &str,
-    out: &Path,
-    case_folder: impl Fn(&TableCase) -> String + Sync,
+    folder_of: impl Fn(usize) -> Result<PathBuf> + Sync,
 ) -> (String, Vec<(usize, Option<String>)>) {
     let runs: Vec<Result<ShipRun>> = cases
         .par_iter()
@@ -136,10 +136,7 @@ pub fn run_sweep(
             if signal_received().is_some() {
                 anyhow::bail!("not run: the sweep was interrupted");
             }
-            let folder = out.join(case_folder(case));
-            std::fs::create_dir_all(&folder)
-                .with_context(|| format!("creating {}", folder.display()))?;
-            run_into(scene, name, &folder)
+            run_into(scene, name, &folder_of(case.index)?)
         })
         .collect();
     let failures = cases
