@@ -311,14 +311,13 @@ fn holders(folder: &Path) -> String {
 
 /// The signatures of the folder's lock files, if any is signed.
 fn signed_holders(folder: &Path) -> Option<String> {
-    let mut names: Vec<String> = std::fs::read_dir(folder)
-        .into_iter()
-        .flatten()
-        .flatten()
-        .filter(|e| e.file_name().to_string_lossy().starts_with(LOCK))
-        .filter_map(|e| {
+    let mut names: Vec<String> = names_starting_with(folder, LOCK)
+        .filter_map(|name| {
             let mut text = String::new();
-            File::open(e.path()).ok()?.read_to_string(&mut text).ok()?;
+            File::open(folder.join(name))
+                .ok()?
+                .read_to_string(&mut text)
+                .ok()?;
             (!text.is_empty()).then_some(text)
         })
         .collect();
@@ -394,16 +393,9 @@ fn lock_shard(
 
 /// The folder's shard lock files other than `own`.
 fn shard_locks(folder: &Path, own: &str) -> Vec<PathBuf> {
-    let prefix = format!("{LOCK}-shard-");
-    std::fs::read_dir(folder)
-        .into_iter()
-        .flatten()
-        .flatten()
-        .filter(|e| {
-            let name = e.file_name().to_string_lossy().into_owned();
-            name.starts_with(&prefix) && name != own
-        })
-        .map(|e| e.path())
+    names_starting_with(folder, &format!("{LOCK}-shard-"))
+        .filter(|name| name != own)
+        .map(|name| folder.join(name))
         .collect()
 }
 
@@ -431,12 +423,18 @@ fn remove_other_shards(folder: &Path) -> Result<(), FolderError> {
 
 /// The names of the folder's manifests.
 fn manifests(folder: &Path) -> impl Iterator<Item = String> {
+    names_starting_with(folder, MANIFEST)
+}
+
+/// The names of the folder's entries that start with `prefix` (none if it cannot be read).
+fn names_starting_with(folder: &Path, prefix: &str) -> impl Iterator<Item = String> {
+    let prefix = prefix.to_owned();
     std::fs::read_dir(folder)
         .into_iter()
         .flatten()
         .flatten()
         .map(|e| e.file_name().to_string_lossy().into_owned())
-        .filter(|name| name.starts_with(MANIFEST))
+        .filter(move |name| name.starts_with(&prefix))
 }
 
 /// The entries a manifest lists; only plain names at the folder's top level are believed.
