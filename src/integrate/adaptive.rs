@@ -300,6 +300,10 @@ pub(crate) struct RowClock<T> {
     every: T,
     /// The number k of the next row to write.
     pub(crate) next: usize,
+    /// Whether a row due at the very end of the stretch being integrated is written by it
+    /// (`true`), or left to the next stretch, which writes it from the state it starts with,
+    /// where the state may jump (see [`super::segment`]).
+    pub(crate) row_at_end: bool,
 }
 
 impl<T: RealField + Copy> RowClock<T> {
@@ -309,7 +313,13 @@ impl<T: RealField + Copy> RowClock<T> {
             origin,
             every,
             next: 0,
+            row_at_end: true,
         }
+    }
+
+    /// Whether the row due at `t` is written by a stretch that ends at `t_end`.
+    pub(crate) fn writes(&self, t: T, t_end: T) -> bool {
+        t < t_end || (t == t_end && self.row_at_end)
     }
 
     /// The time of row k, computed, not accumulated.
@@ -396,7 +406,7 @@ where
         };
         // A row at the stopping time itself is the last row, written below.
         let before = |t: T| if stopping { t < until.0 } else { t <= until.0 };
-        while rows.next_time() <= t_end && before(rows.next_time()) {
+        while rows.writes(rows.next_time(), t_end) && before(rows.next_time()) {
             let t = rows.next_time();
             if !emit(t, &state_at(t)) {
                 return None;
@@ -428,7 +438,7 @@ where
         (Err(e), _) => return Err(e),
     };
     // A sample time at t_end that rounding kept out of the last step gets the end state.
-    if rows.next_time() <= t_end {
+    if rows.writes(rows.next_time(), t_end) {
         if !emit(rows.next_time(), &y_end) {
             return Err(IntegrateError::Stopped { t: to_f64(t_end) });
         }

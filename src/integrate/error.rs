@@ -115,6 +115,13 @@ pub enum IntegrateError {
         /// The time reached.
         t: f64,
     },
+    /// A method that integrates one kind of system only (the Lie midpoint method: a free
+    /// body's rotation) was given another.
+    #[error("{method} integrates a free body's rotation alone, not this system")]
+    NotApplicable {
+        /// The method's name in scene files.
+        method: &'static str,
+    },
     /// The inertia tensor given to a rotation integrator has no finite inverse.
     #[error("inertia tensor is singular: [I]⁻¹ (for ω = [I]⁻¹H) does not exist")]
     SingularInertia,

@@ -29,7 +29,9 @@ mod dopri5;
 mod error;
 mod euler;
 mod lie_midpoint;
+mod method;
 mod rk4;
+pub(crate) mod segment;
 mod stats;
 mod symplectic_euler;
 
@@ -40,7 +42,9 @@ pub use dopri5::Dopri5;
 pub use error::IntegrateError;
 pub use euler::Euler;
 pub use lie_midpoint::{LieMidpoint, RigidRotation};
+pub use method::Method;
 pub use rk4::{Rk4, rk4_array, rk4_step};
+pub use segment::Stepper;
 pub use stats::Stats;
 pub use symplectic_euler::SymplecticEuler;
 

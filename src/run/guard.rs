@@ -255,15 +255,6 @@ impl Guard {
         }
     }
 
-    /// No checks.
-    pub(crate) fn none() -> Self {
-        Guard {
-            pitch: None,
-            rate: None,
-            stop: None,
-        }
-    }
-
     /// Checks the state `y` at `t`; `false` once the run must stop (the first reason is kept,
     /// for [`Guard::stop`]).
     pub(crate) fn check(&mut self, t: f64, y: &[f64]) -> bool {
@@ -279,11 +270,6 @@ impl Guard {
             self.stop = rate.check(t, y);
         }
         self.stop.is_none()
-    }
-
-    /// Whether a check has stopped the run.
-    pub(crate) fn stopped(&self) -> bool {
-        self.stop.is_some()
     }
 
     /// Why a check stopped the run, if one did.

@@ -52,12 +52,12 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+use crate::integrate::segment::{self, Hooks, Piece, add};
 use crate::integrate::{
-    Dop853, Dopri5, Euler, IntegrateError, Integrator, LieMidpoint, OdeSystem, Reached,
-    RigidRotation, Rk4, RowClock, Statistics, Stats, SymplecticEuler, first_time_holding,
+    IntegrateError, LieMidpoint, OdeSystem, Reached, RigidRotation, RowClock, Stats, Stepper,
 };
 use crate::models::{Family, Model, Visitor};
-use crate::scene::{Body, Method, Scene, StopCondition};
+use crate::scene::{Body, Method, Scene};
 use guard::Guard;
 use nalgebra::{Matrix3, Quaternion, SVector, UnitQuaternion, Vector3};
 use std::ops::Range;
@@ -388,14 +388,14 @@ fn kicked(scene: &Scene) -> Range<usize> {
     }
 }
 
-/// What a piece of a run returns: where it ended, and what it cost.
-type Piece<const N: usize> = (Result<Reached<f64, N>, IntegrateError>, Stats);
-
-/// Adds one run's counts to a total.
-fn add(total: &mut Stats, stats: Stats) {
-    total.steps += stats.steps;
-    total.rejected += stats.rejected;
-    total.rhs_evals += stats.rhs_evals;
+/// The scene's method with its settings.
+fn stepper(scene: &Scene) -> Stepper {
+    Stepper {
+        method: scene.integrator.method,
+        step: scene.integrator.step,
+        adaptive: scene.integrator.adaptive,
+        kicked: kicked(scene),
+    }
 }
 
 /// The run cut at the breakpoints of the loads' time tables that fall inside it, each piece
@@ -445,190 +445,16 @@ fn piece<S: OdeSystem<f64, N>, const N: usize>(
     emit: &mut impl FnMut(f64, &SVector<f64, N>) -> bool,
 ) -> Piece<N> {
     let condition = scene.stop.as_ref();
-    let holds = |c: &StopCondition, t: f64, y: &SVector<f64, N>| c.holds(t, y.as_slice());
-    let stop = |t: f64, y: &SVector<f64, N>| condition.is_some_and(|c| holds(c, t, y));
-    let stop_fixed = condition.map(|c| move |t: f64, y: &SVector<f64, N>| holds(c, t, y));
-    let stop_fixed = stop_fixed
-        .as_ref()
-        .map(|f| f as &dyn Fn(f64, &SVector<f64, N>) -> bool);
-    // An adaptive method samples the rows by dense output, the guard checking every
-    // accepted step.
-    macro_rules! sampled {
-        ($method:ident) => {{
-            let options = scene.integrator.adaptive;
-            let mut method = $method::new(options.expect("an adaptive method has options"));
-            let check = |t: f64, y: &SVector<f64, N>| guard.check(t, y.as_slice());
-            let result = method.sample_until(system, interval, rows, (check, stop, &mut *emit));
-            (result, method.stats())
-        }};
-    }
-    let method = scene.integrator.method;
-    if method.is_adaptive() {
-        return match method {
-            Method::Dopri5 => sampled!(Dopri5),
-            _ => sampled!(Dop853),
-        };
-    }
-    let fixed = (interval, rows, stop_fixed);
-    match method {
-        Method::Euler => fixed_steps(&mut Euler::new(step(scene)), system, fixed, guard, emit),
-        Method::Rk4 => fixed_steps(&mut Rk4::new(step(scene)), system, fixed, guard, emit),
-        Method::SymplecticEuler => {
-            let mut method = SymplecticEuler::new(step(scene), kicked(scene));
-            fixed_steps(&mut method, system, fixed, guard, emit)
-        }
-        Method::Dop853 | Method::Dopri5 => unreachable!("adaptive methods sample above"),
-        Method::LieMidpoint => unreachable!("lie-midpoint runs as free_rotation"),
-    }
-}
-
-/// A stop condition as a fixed-step run evaluates it.
-type Stop<'a, const N: usize> = Option<&'a dyn Fn(f64, &SVector<f64, N>) -> bool>;
-
-/// A fixed-step method from `a` to `b` over each output interval in turn (equal steps of at
-/// most the scene's step, so that each row lands on its time, and the last on `b`), its
-/// statistics summed. `guard` checks the state after every step; what it finds stops the run
-/// at the end of that interval, before its row is written. Where `stop` first holds at the
-/// end of a step, the step is taken again to trial times for the first time it holds
-/// ([`locate`]) and the run ends there.
-fn fixed_steps<I, S, const N: usize>(
-    method: &mut I,
-    system: &S,
-    ((a, y_a, b), rows, stop): ((f64, SVector<f64, N>, f64), &mut RowClock<f64>, Stop<'_, N>),
-    guard: &mut Guard,
-    emit: &mut impl FnMut(f64, &SVector<f64, N>) -> bool,
-) -> Piece<N>
-where
-    I: Integrator<f64, N, S>,
-{
-    let mut total = Stats::default();
-    let (mut t, mut y) = (a, y_a);
-    while rows.next_time() <= a {
-        if !emit(rows.next_time(), &y) {
-            return (Err(IntegrateError::Stopped { t }), total);
-        }
-        rows.next += 1;
-    }
-    if stop.is_some_and(|stop| stop(t, &y)) {
-        let stopped = true;
-        return (
-            Ok(Reached {
-                t,
-                state: y,
-                stopped,
-            }),
-            total,
-        );
-    }
-    loop {
-        let (t_next, is_row) = match rows.next_time() {
-            row if row <= b => (row, true),
-            _ => (b, false),
-        };
-        let mut start = (t, y);
-        let mut crossed = None;
-        let result = method.integrate_with(system, t, y, t_next, |t, y| {
-            if crossed.is_some() {
-                return;
-            }
-            guard.check(t, y.as_slice());
-            if let Some(stop) = stop {
-                if stop(t, y) {
-                    crossed = Some((start, t));
-                } else {
-                    start = (t, *y);
-                }
-            }
-        });
-        add(&mut total, method.stats());
-        if guard.stopped() {
-            return (Err(IntegrateError::Stopped { t: t_next }), total);
-        }
-        match result {
-            Ok(next) => y = next,
-            Err(e) => return (Err(e), total),
-        }
-        if let (Some(stop), Some(((t0, y0), t1))) = (stop, crossed) {
-            let (reached, stats) = locate(method, system, (t0, y0, t1), stop);
-            add(&mut total, stats);
-            return match reached {
-                Ok(reached) => (last_row(reached, rows, emit), total),
-                Err(e) => (Err(e), total),
-            };
-        }
-        t = t_next;
-        if is_row {
-            if !emit(t, &y) {
-                return (Err(IntegrateError::Stopped { t }), total);
-            }
-            rows.next += 1;
-        }
-        if t >= b {
-            let stopped = false;
-            return (
-                Ok(Reached {
-                    t,
-                    state: y,
-                    stopped,
-                }),
-                total,
-            );
-        }
-    }
-}
-
-/// The first time in `(t0, t1]` at which `stop` holds, for a fixed-step method whose step from
-/// `(t0, y0)` to `t1` made it hold: the one step is taken again from `t0` to each trial time
-/// of a bisection ([`first_time_holding`]).
-fn locate<I, S, const N: usize>(
-    method: &mut I,
-    system: &S,
-    (t0, y0, t1): (f64, SVector<f64, N>, f64),
-    stop: &dyn Fn(f64, &SVector<f64, N>) -> bool,
-) -> Piece<N>
-where
-    I: Integrator<f64, N, S>,
-{
-    let mut total = Stats::default();
-    let mut failure = None;
-    let mut step_to = |t: f64| {
-        let result = method.integrate(system, t0, y0, t);
-        add(&mut total, method.stats());
-        result
+    let stop = condition.map(|c| move |t: f64, y: &SVector<f64, N>| c.holds(t, y.as_slice()));
+    let hooks = Hooks {
+        check: &mut |t, y: &SVector<f64, N>| guard.check(t, y.as_slice()),
+        stop: stop
+            .as_ref()
+            .map(|f| f as &dyn Fn(f64, &SVector<f64, N>) -> bool),
+        emit,
+        row_at_end: true,
     };
-    let t = first_time_holding(t0, t1, |t| match step_to(t) {
-        Ok(y) => stop(t, &y),
-        Err(e) => {
-            failure = Some(e);
-            true
-        }
-    });
-    let reached = match failure {
-        Some(e) => Err(e),
-        None => step_to(t).map(|state| Reached {
-            t,
-            state,
-            stopped: true,
-        }),
-    };
-    (reached, total)
-}
-
-/// Writes the row at which a stop condition ended the run (it takes the place of a row due
-/// at that very time).
-fn last_row<const N: usize>(
-    reached: Reached<f64, N>,
-    rows: &mut RowClock<f64>,
-    emit: &mut impl FnMut(f64, &SVector<f64, N>) -> bool,
-) -> Result<Reached<f64, N>, IntegrateError> {
-    if rows.next_time() == reached.t {
-        rows.next += 1;
-    }
-    if emit(reached.t, &reached.state) {
-        Ok(reached)
-    } else {
-        Err(IntegrateError::Stopped { t: reached.t })
-    }
+    segment::advance(&stepper(scene), system, interval, rows, hooks)
 }
 
 /// A free body's rotation, `[p, q, r, q0, q1, q2, q3]`, for the geometric integrator.
@@ -704,13 +530,13 @@ fn free_rotation<const N: usize>(
         .map(|f| f as &dyn Fn(f64, &SVector<f64, 7>) -> bool);
     let mut rows = RowClock::new(0.0, scene.every);
     let interval = (0.0, start, scene.integrator.end_time);
-    let (result, stats) = fixed_steps(
-        &mut method,
-        &system,
-        (interval, &mut rows, stop),
-        &mut Guard::none(),
-        &mut |t, r| emit(t, &whole(t, r)),
-    );
+    let hooks = Hooks {
+        check: &mut |_, _| true,
+        stop,
+        emit: &mut |t, r| emit(t, &whole(t, r)),
+        row_at_end: true,
+    };
+    let (result, stats) = segment::fixed_steps(&mut method, &system, interval, &mut rows, hooks);
     let whole_reached = |r: Reached<f64, 7>| Reached {
         t: r.t,
         state: whole(r.t, &r.state),
