@@ -277,10 +277,12 @@ fn ctrl_c_ends_a_ship_run_keeping_the_finished_manoeuvres() {
     use std::time::{Duration, Instant};
     let dir = folder("sigint");
     let text = std::fs::read_to_string(scene("mariner.toml")).unwrap();
-    // The first manoeuvre short, the second far too long to finish.
+    // The first manoeuvre short, the second far too long to finish (10⁸ steps: past the
+    // default limit, which the scene raises).
     let text = text
         .replacen("duration_s = 1500.0", "duration_s = 300.0", 1)
-        .replacen("duration_s = 800.0", "duration_s = 1.0e7", 1);
+        .replacen("duration_s = 800.0", "duration_s = 1.0e7", 1)
+        .replacen("step = 0.1 ", "max_steps = 200_000_000\nstep = 0.1 ", 1);
     let path = dir.join("long.toml");
     std::fs::write(&path, text).unwrap();
     let out = dir.join("out");

@@ -1295,9 +1295,19 @@ fn ship_scene_text(text: &str, run: bool, tally: &mut Tally) -> Result<(), TestC
             duration: first.duration.min(first.execute + 20.0),
             ..first.clone()
         };
-        let step = scene.step.max(short.duration / 1e4);
+        // At most 10⁴ steps and rows: the run is for panics, not for figures.
+        let mut stepper = scene.stepper.clone();
+        stepper.step = stepper.step.map(|step| step.max(short.duration / 1e4));
+        let every = scene.every.max(short.duration / 1e4);
         let result = guarded("ship run", text, || {
-            run_manoeuvre(&model, &scene.rudder, &short, scene.start(), step, |_| true)
+            run_manoeuvre(
+                &model,
+                &scene.rudder,
+                &short,
+                scene.start(),
+                (&stepper, every),
+                |_| true,
+            )
         })?;
         tally.count(if result.is_ok() {
             "ship run ok"

@@ -3,7 +3,9 @@
 //! `eom run` runs each `[[manoeuvre]]` from the same approach into its own folder
 //! (`trajectory.csv`, `track.svg`, `heading.svg`, `view.html`) and writes `summary.json` beside them: the
 //! model that ran, the linear model, each manoeuvre's figures under `"manoeuvre"` with how
-//! much each moves when the step is halved, and the IMO criteria under `"manoeuvre"."imo"`.
+//! much each moves when the run is refined (half the step, or tolerances a hundred times
+//! tighter), and the IMO criteria under `"manoeuvre"."imo"` (the types of
+//! `eom::ship::summary`).
 //! Every file is written whole to a temporary name and renamed. Ctrl-C (or SIGTERM) ends the
 //! run at its next step: the manoeuvres finished before it keep their folders, summary.json
 //! says `"interrupted": true` and holds their figures, and the exit code is 128 + the signal.
@@ -19,20 +21,29 @@ use eom::scene::sweep::TableCase;
 use eom::ship::imo::{Criterion, criteria};
 use eom::ship::linear::{LinearModel, Nomoto, linearise};
 use eom::ship::manoeuvre::{Figures, Sample, run, trajectory_columns};
-use eom::ship::{Manoeuvre, ManoeuvreKind, RigidBodyTerms, ShipError, ShipModel, ShipScene};
-use eom_codegen::model::ship::{Units, YawInertia};
+use eom::ship::summary::{
+    CriterionSummary, IntegratorSummary, LinearSummary, ManoeuvreSummary, Manoeuvres, ModelSummary,
+    ShipSummary, nomoto_difference,
+};
+use eom::ship::{Manoeuvre, ShipError, ShipModel, ShipScene};
 use rayon::prelude::*;
-use serde_json::{Map, Value, json};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-/// A manoeuvre run at the scene's step, and the same at half the step.
+/// A manoeuvre run with the scene's method, and the same refined (`Stepper::refined`: half
+/// the step, or tolerances a hundred times tighter).
 struct Outcome {
     samples: Vec<Sample>,
     figures: Figures,
-    halved: Figures,
+    refined: Figures,
     steps: u64,
+}
+
+/// A summary as pretty JSON with the keys of every object sorted (through
+/// `serde_json::Value`, whose objects are sorted maps), as a ship's summary is written.
+fn sorted_json(summary: &impl serde::Serialize) -> Result<Vec<u8>> {
+    Ok(serde_json::to_vec_pretty(&serde_json::to_value(summary)?)?)
 }
 
 /// Runs a ship scene, read and checked, into `out`, a folder already known to be writable,
@@ -91,25 +102,27 @@ fn run_into(scene: &ShipScene, name: &str, out: &Path) -> Result<ShipRun> {
         .map(|(m, o)| (m, &o.figures))
         .collect();
     let judged = criteria(scene.length, scene.table.design_speed, &runs);
-    let mut manoeuvres = Map::new();
-    for (manoeuvre, outcome) in scene.manoeuvres.iter().zip(&outcomes) {
-        manoeuvres.insert(manoeuvre.name.clone(), manoeuvre_json(manoeuvre, outcome));
-    }
-    manoeuvres.insert(
-        "imo".into(),
-        Value::Array(judged.iter().map(criterion_json).collect()),
-    );
-    let summary = json!({
-        "scene": name,
-        "title": scene.title,
-        "model": model_json(scene, &model),
-        "integrator": {"method": "rk4", "step": scene.step},
-        "linear": linear_json(scene, &model, &linear),
-        "manoeuvre": manoeuvres,
-        "wall_seconds": started.elapsed().as_secs_f64(),
-        "interrupted": interrupted.is_some(),
-    });
-    let bytes = serde_json::to_vec_pretty(&summary)?;
+    let runs = (scene.manoeuvres.iter().zip(&outcomes))
+        .map(|(manoeuvre, outcome)| {
+            let figures = (&outcome.figures, &outcome.refined);
+            let summary = ManoeuvreSummary::new(manoeuvre, &scene.stepper, figures, outcome.steps);
+            (manoeuvre.name.clone(), summary)
+        })
+        .collect();
+    let summary = ShipSummary {
+        scene: name.to_owned(),
+        title: scene.title.clone(),
+        model: ModelSummary::new(scene, &model),
+        integrator: IntegratorSummary::new(&scene.stepper),
+        linear: LinearSummary::new(scene, &model, &linear),
+        manoeuvre: Manoeuvres {
+            runs,
+            imo: judged.iter().map(CriterionSummary::new).collect(),
+        },
+        wall_seconds: started.elapsed().as_secs_f64(),
+        interrupted: interrupted.is_some(),
+    };
+    let bytes = sorted_json(&summary)?;
     let path = out.join("summary.json");
     write_atomically(&path, &bytes).with_context(|| format!("writing {}", path.display()))?;
     Ok(ShipRun {
@@ -230,34 +243,31 @@ fn is_stopped(error: &anyhow::Error) -> bool {
 
 fn run_manoeuvre(scene: &ShipScene, model: &ShipModel, manoeuvre: &Manoeuvre) -> Result<Outcome> {
     let mut samples = Vec::new();
-    let mut next_row = 0.0;
-    let every = scene.every;
+    let settings = (&scene.stepper, scene.every);
     let done = run(
         model,
         &scene.rudder,
         manoeuvre,
         scene.start(),
-        scene.step,
+        settings,
         |s| {
-            if s.t >= next_row || s.t == manoeuvre.duration {
-                samples.push(*s);
-                next_row = s.t + every * (1.0 - 1e-9);
-            }
+            samples.push(*s);
             signal_received().is_none()
         },
     )?;
-    let halved = run(
+    let refined = (&scene.stepper.refined(), scene.every);
+    let refined = run(
         model,
         &scene.rudder,
         manoeuvre,
         scene.start(),
-        scene.step / 2.0,
+        refined,
         |_| signal_received().is_none(),
     )?;
     Ok(Outcome {
         samples,
         figures: done.figures,
-        halved: halved.figures,
+        refined: refined.figures,
         steps: done.steps,
     })
 }
@@ -355,122 +365,6 @@ fn write_plots(
     Ok(())
 }
 
-fn model_json(scene: &ShipScene, model: &ShipModel) -> Value {
-    let table = &scene.table;
-    let operations = model.operations();
-    json!({
-        "family": "planar-midship",
-        "equations": "4.46 with the added mass and the hydrodynamic polynomial; 4.44",
-        "units": match table.units { Units::Prime => "prime", Units::Dimensional => "dimensional" },
-        "yaw_inertia": match table.body.yaw_inertia_about {
-            YawInertia::AboutG => "about G",
-            YawInertia::AboutMidship => "about midship",
-        },
-        "rigid_body_terms": match table.given_as {
-            RigidBodyTerms::Folded => "folded",
-            RigidBodyTerms::Separate => "separate",
-        },
-        "conversion": table.conversions,
-        "terms": model.terms(),
-        "operations": {
-            "add": operations.add,
-            "mul": operations.mul,
-            "div": operations.div,
-        },
-    })
-}
-
-fn nomoto_json(nomoto: Option<Nomoto>, speed: f64, length: f64) -> Value {
-    match nomoto {
-        Some(n) => json!({
-            "k_per_s": n.k, "t1_s": n.t1, "t2_s": n.t2, "t3_s": n.t3, "t_s": n.t,
-            "k_prime": n.k * length / speed, "t_prime": n.t * speed / length,
-        }),
-        None => Value::Null,
-    }
-}
-
-/// The largest relative difference between two Nomoto models' K, T₁, T₂, T₃.
-fn nomoto_difference(a: Option<Nomoto>, b: Option<Nomoto>) -> Option<f64> {
-    let (a, b) = (a?, b?);
-    let pairs = [(a.k, b.k), (a.t1, b.t1), (a.t2, b.t2), (a.t3, b.t3)];
-    Some(
-        pairs
-            .iter()
-            .map(|(x, y)| (x - y).abs() / x.abs().max(y.abs()))
-            .fold(0.0, f64::max),
-    )
-}
-
-fn linear_json(scene: &ShipScene, model: &ShipModel, linear: &LinearModel) -> Value {
-    let speed = scene.table.design_speed;
-    let closed = linear.nomoto();
-    let (a, b) = linearise(model, speed);
-    let linearised = Nomoto::from_state_space(a, b);
-    json!({
-        "speed_m_s": speed,
-        "length_m": scene.length,
-        "nomoto": nomoto_json(closed, speed, scene.length),
-        "nomoto_of_linearised_model": nomoto_json(linearised, speed, scene.length),
-        "largest_relative_difference": nomoto_difference(closed, linearised),
-        "det_n_si": linear.det_damping(),
-        "stability_index": linear.stability_index(),
-        "course_stable": linear.course_stable(),
-        "pivot_point_m": linear.pivot_point(),
-        "pivot_point_over_length": linear.pivot_point() / scene.length,
-    })
-}
-
-fn kind_json(kind: &ManoeuvreKind) -> Value {
-    match kind {
-        ManoeuvreKind::TurningCircle { rudder } => {
-            json!({"kind": "turning_circle", "rudder_deg": rudder.to_degrees()})
-        }
-        ManoeuvreKind::ZigZag { rudder, heading } => json!({
-            "kind": "zigzag", "rudder_deg": rudder.to_degrees(), "heading_deg": heading.to_degrees(),
-        }),
-        ManoeuvreKind::PullOut { rudder, release } => {
-            json!({"kind": "pull_out", "rudder_deg": rudder.to_degrees(), "release_s": release})
-        }
-        ManoeuvreKind::Series(_) => json!({"kind": "rudder_series"}),
-    }
-}
-
-fn manoeuvre_json(manoeuvre: &Manoeuvre, outcome: &Outcome) -> Value {
-    let mut object = match kind_json(&manoeuvre.kind) {
-        Value::Object(map) => map,
-        _ => Map::new(),
-    };
-    object.insert("execute_s".into(), json!(manoeuvre.execute));
-    object.insert("duration_s".into(), json!(manoeuvre.duration));
-    let mut differences = Map::new();
-    for (key, value) in &outcome.figures.values {
-        object.insert((*key).into(), json!(value));
-        let other = outcome.halved.get(key);
-        let difference = value.zip(other).map(|(a, b)| (a - b).abs());
-        differences.insert((*key).into(), json!(difference));
-    }
-    if let Some(side) = outcome.figures.side {
-        object.insert("side".into(), json!(side));
-    }
-    object.insert("half_step_difference".into(), Value::Object(differences));
-    object.insert("steps".into(), json!(outcome.steps));
-    object.insert("notes".into(), json!(outcome.figures.notes));
-    Value::Object(object)
-}
-
-fn criterion_json(criterion: &Criterion) -> Value {
-    json!({
-        "criterion": criterion.name,
-        "manoeuvre": criterion.manoeuvre,
-        "value": criterion.value,
-        "limit": criterion.limit,
-        "unit": criterion.unit,
-        "pass": criterion.pass(),
-        "judged": criterion.value.is_some(),
-    })
-}
-
 fn print_report(scene: &ShipScene, outcomes: &[Outcome], judged: &[Criterion], out: &Path) {
     println!("{}", printable(&scene.title));
     for (manoeuvre, outcome) in scene.manoeuvres.iter().zip(outcomes) {
@@ -515,9 +409,9 @@ pub fn linear(path: &Path, json: bool) -> Result<()> {
     let scene = ShipScene::load(path)?;
     let model = ShipModel::new(&scene.table)?;
     let linear = LinearModel::closed_form(&scene.table);
-    let report = linear_json(&scene, &model, &linear);
     if json {
-        println!("{}", serde_json::to_string_pretty(&report)?);
+        let report = LinearSummary::new(&scene, &model, &linear);
+        println!("{}", String::from_utf8(sorted_json(&report)?)?);
         return Ok(());
     }
     let speed = scene.table.design_speed;

@@ -304,6 +304,9 @@ pub(crate) struct RowClock<T> {
     /// (`true`), or left to the next stretch, which writes it from the state it starts with,
     /// where the state may jump (see [`super::segment`]).
     pub(crate) row_at_end: bool,
+    /// Whether the row at the instant a stop condition ends the stretch is written by it
+    /// (`true`), or by the caller, which may change the state there first.
+    pub(crate) row_at_stop: bool,
 }
 
 impl<T: RealField + Copy> RowClock<T> {
@@ -314,6 +317,7 @@ impl<T: RealField + Copy> RowClock<T> {
             every,
             next: 0,
             row_at_end: true,
+            row_at_stop: true,
         }
     }
 
@@ -417,7 +421,7 @@ where
             if rows.next_time() == until.0 {
                 rows.next += 1;
             }
-            if emit(until.0, &until.1) {
+            if !rows.row_at_stop || emit(until.0, &until.1) {
                 ended = Some(until);
             }
             return None;

@@ -20,6 +20,10 @@
 //! Two drivers step them, so that what a run checks and counts is written once: `run_fixed`
 //! (below) cuts the interval into equal steps for the fixed-step methods, and `adaptive.rs`
 //! runs the embedded pairs Dopri5 and Dop853, which are their tableaux and error estimates.
+//! Over both, `segment.rs` is the one driver of a run, a scene's or a ship's manoeuvre: any
+//! [`Method`] ([`Stepper`]) from one instant to the next, rows at t = k·every, a check after
+//! every step, and a stop condition (a time table's breakpoint, a manoeuvre's event) located
+//! where it first holds on the method's own solution.
 
 mod adaptive;
 mod controller;

@@ -13,7 +13,7 @@
 //!   integrates each output interval in equal steps no longer than its step, so every row
 //!   lands on its time. A row due at `b` itself is written by this stretch, or, where the state
 //!   may jump there, left to the next one to write from the state it starts with
-//!   ([`Hooks::row_at_end`]).
+//!   ([`Hooks::row_at_end`]); likewise the row at a located stop ([`Hooks::row_at_stop`]).
 //! - **The check** (`check`) sees the state after every accepted step; `false` ends the run.
 //! - **The stop condition** (`stop`) is evaluated at the end of every step. On the step where
 //!   it first holds, the first time it holds is found by bisection to adjacent floating-point
@@ -73,6 +73,9 @@ pub(crate) type Piece<const N: usize> = (Result<Reached<f64, N>, IntegrateError>
 /// A stop condition as a stretch evaluates it.
 pub(crate) type Stop<'a, const N: usize> = Option<&'a dyn Fn(f64, &SVector<f64, N>) -> bool>;
 
+/// Where a stretch's rows go; `false` ends the run.
+pub(crate) type Emit<'a, const N: usize> = &'a mut dyn FnMut(f64, &SVector<f64, N>) -> bool;
+
 /// What a stretch reports to, and asks of, its caller.
 pub(crate) struct Hooks<'a, const N: usize> {
     /// Sees the state after every accepted step; `false` ends the run.
@@ -80,11 +83,15 @@ pub(crate) struct Hooks<'a, const N: usize> {
     /// Ends the stretch where it first holds.
     pub(crate) stop: Stop<'a, N>,
     /// Takes each row; `false` ends the run.
-    pub(crate) emit: &'a mut dyn FnMut(f64, &SVector<f64, N>) -> bool,
+    pub(crate) emit: Emit<'a, N>,
     /// Whether a row due at the stretch's end `b` is written by it (`true`), or left to the
     /// next stretch, which writes it from the state it starts with (where the state jumps at
     /// `b`, the row then shows the state after the jump).
     pub(crate) row_at_end: bool,
+    /// Whether the row at the instant `stop` ends the stretch is written by it (`true`), or
+    /// left to the caller, which may change the state there first (an event that reverses a
+    /// rudder without a lag). A row due at that very instant is then the caller's too.
+    pub(crate) row_at_stop: bool,
 }
 
 /// Adds one run's counts to a total.
@@ -109,15 +116,16 @@ pub(crate) fn advance<S: OdeSystem<f64, N>, const N: usize>(
             stop,
             emit,
             row_at_end,
+            row_at_stop,
         } = hooks;
         let options = stepper.adaptive.expect("an adaptive method has options");
         let stop = |t: f64, y: &SVector<f64, N>| stop.is_some_and(|stop| stop(t, y));
         macro_rules! sampled {
             ($method:ident) => {{
                 let mut method = $method::new(options);
-                rows.row_at_end = row_at_end;
+                (rows.row_at_end, rows.row_at_stop) = (row_at_end, row_at_stop);
                 let result = method.sample_until(system, interval, rows, (check, stop, emit));
-                rows.row_at_end = true;
+                (rows.row_at_end, rows.row_at_stop) = (true, true);
                 (result, method.stats())
             }};
         }
@@ -165,6 +173,7 @@ where
         stop,
         emit,
         row_at_end,
+        row_at_stop,
     } = hooks;
     let mut total = Stats::default();
     let (mut t, mut y) = (a, y_a);
@@ -218,7 +227,7 @@ where
             let (reached, stats) = locate(method, system, (t0, y0, t1), stop);
             add(&mut total, stats);
             return match reached {
-                Ok(reached) => (last_row(reached, rows, emit), total),
+                Ok(reached) => (last_row(reached, rows, row_at_stop.then_some(emit)), total),
                 Err(e) => (Err(e), total),
             };
         }
@@ -281,16 +290,16 @@ where
 }
 
 /// Writes the row at which a stop condition ended the stretch (it takes the place of a row
-/// due at that very time).
+/// due at that very time), where `emit` is given; else the caller writes it.
 fn last_row<const N: usize>(
     reached: Reached<f64, N>,
     rows: &mut RowClock<f64>,
-    emit: &mut dyn FnMut(f64, &SVector<f64, N>) -> bool,
+    emit: Option<Emit<'_, N>>,
 ) -> Result<Reached<f64, N>, IntegrateError> {
     if rows.next_time() == reached.t {
         rows.next += 1;
     }
-    if emit(reached.t, &reached.state) {
+    if emit.is_none_or(|emit| emit(reached.t, &reached.state)) {
         Ok(reached)
     } else {
         Err(IntegrateError::Stopped { t: reached.t })

@@ -453,6 +453,7 @@ fn piece<S: OdeSystem<f64, N>, const N: usize>(
             .map(|f| f as &dyn Fn(f64, &SVector<f64, N>) -> bool),
         emit,
         row_at_end: true,
+        row_at_stop: true,
     };
     segment::advance(&stepper(scene), system, interval, rows, hooks)
 }
@@ -535,6 +536,7 @@ fn free_rotation<const N: usize>(
         stop,
         emit: &mut |t, r| emit(t, &whole(t, r)),
         row_at_end: true,
+        row_at_stop: true,
     };
     let (result, stats) = segment::fixed_steps(&mut method, &system, interval, &mut rows, hooks);
     let whole_reached = |r: Reached<f64, 7>| Reached {

@@ -17,8 +17,31 @@ use nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
 use std::path::Path;
 
 /// The checks of one scene file, each naming its key.
-pub(super) struct Checker<'a> {
-    pub(super) name: &'a str,
+pub(crate) struct Checker<'a> {
+    pub(crate) name: &'a str,
+}
+
+/// The keys of `[integrator]` that choose the method and its settings, as every scene, a
+/// catalog body's or a ship's, gives them.
+pub(crate) struct MethodKeys<'a> {
+    /// `integrator.method`.
+    pub(crate) method: &'a str,
+    /// `integrator.step`.
+    pub(crate) step: Option<f64>,
+    /// `integrator.rtol`.
+    pub(crate) rtol: Option<f64>,
+    /// `integrator.atol`.
+    pub(crate) atol: Option<f64>,
+    /// `integrator.max_steps`.
+    pub(crate) max_steps: Option<u64>,
+}
+
+/// A method with its settings, checked.
+pub(crate) struct MethodSettings {
+    pub(crate) method: Method,
+    pub(crate) step: Option<f64>,
+    pub(crate) adaptive: Option<AdaptiveOptions>,
+    pub(crate) max_steps: usize,
 }
 
 /// A planar body's initial velocity of G in body axes (u, v) and in space axes (Ẋ, Ẏ).
@@ -452,8 +475,36 @@ impl Checker<'_> {
         loads: &SceneLoads,
     ) -> Result<IntegratorSpec, SceneError> {
         let t = &file.integrator;
-        let method = self.named("integrator.method", &t.method, Method::ALL, "")?;
         let end_time = self.checked("integrator.end_time", Requirement::Positive, t.end_time)?;
+        let keys = MethodKeys {
+            method: &t.method,
+            step: t.step,
+            rtol: t.rtol,
+            atol: t.atol,
+            max_steps: t.max_steps,
+        };
+        let settings = self.method_settings(&keys, end_time)?;
+        if settings.method == Method::LieMidpoint {
+            self.lie_midpoint_applies(loads)?;
+        }
+        Ok(IntegratorSpec {
+            method: settings.method,
+            step: settings.step,
+            adaptive: settings.adaptive,
+            end_time,
+            max_steps: settings.max_steps,
+        })
+    }
+
+    /// The method and its settings for a run of `end_time` seconds: a fixed step for a
+    /// fixed-step method (and no more than `max_steps` of it), tolerances for an adaptive one,
+    /// and never the keys of the other kind.
+    pub(crate) fn method_settings(
+        &self,
+        t: &MethodKeys<'_>,
+        end_time: f64,
+    ) -> Result<MethodSettings, SceneError> {
+        let method = self.named("integrator.method", t.method, Method::ALL, "")?;
         let max_steps = match t.max_steps {
             None => DEFAULT_MAX_STEPS,
             Some(0) => {
@@ -461,9 +512,6 @@ impl Checker<'_> {
             }
             Some(n) => usize::try_from(n).unwrap_or(usize::MAX),
         };
-        if method == Method::LieMidpoint {
-            self.lie_midpoint_applies(loads)?;
-        }
         let (step, adaptive) = if method.is_adaptive() {
             if t.step.is_some() {
                 return Err(self.invalid(
@@ -518,11 +566,10 @@ impl Checker<'_> {
             }
             (Some(step), None)
         };
-        Ok(IntegratorSpec {
+        Ok(MethodSettings {
             method,
             step,
             adaptive,
-            end_time,
             max_steps,
         })
     }

@@ -14,7 +14,7 @@
 //! Space axes are X north, Y east, Z down and body axes x forward, y to starboard, z down, as
 //! in the chapter's ship dynamics; angles in a scene file are in degrees, rates in rad/s.
 
-mod check;
+pub(crate) mod check;
 mod error;
 pub mod file;
 mod loads;

@@ -23,6 +23,7 @@
 
 use super::model::ShipModel;
 use super::table::ShipTable;
+use crate::models::Model;
 use eom_codegen::model::ship::{Force, Term, Units};
 use num_dual::Dual64;
 use std::collections::BTreeMap;
@@ -216,7 +217,7 @@ pub fn linearise(model: &ShipModel, speed: f64) -> ([[f64; 2]; 2], [f64; 2]) {
         let mut state = [Dual64::from(0.0); 7];
         state[0] = Dual64::from(speed);
         state[index] = Dual64::from(0.0).derivative();
-        let rates = model.rhs(&state, Dual64::from(0.0));
+        let rates = Model::rhs(model, &state, &[Dual64::from(0.0)]);
         [rates[1].eps, rates[2].eps]
     };
     let (by_v, by_r, by_delta) = (column(1), column(2), column(6));

@@ -1,21 +1,28 @@
-//! The standard manoeuvres, run with RK4 steps that land on every event, and their figures.
+//! The standard manoeuvres as schedules and events over the one driver, and their figures.
 //!
-//! A manoeuvre's figures are read at instants the state defines: the heading has changed by
-//! 90° (advance, transfer), the heading has passed ±ψ_a (the zig-zag reverses the rudder),
-//! the yaw rate is zero (an overshoot is largest). Each instant is found on the step that
-//! contains it by solving g(y(s)) = 0 for the sub-step s, where y(s) is the RK4 step of size
-//! s from the step's start (the Illinois variant of regula falsi, to a bracket of 1e-12 of
-//! the step), and the run then steps to exactly that instant: the figures are those of the
-//! integrated solution at the crossing, not at the nearest step, and a zig-zag reverses its
-//! rudder where the rule says. Times where the command changes (the execute, a pull-out's
-//! release, a series' breakpoints) are stepped onto as well.
+//! A manoeuvre is the ship model ([`ShipModel`], a [`Model`] like the catalog's) under the
+//! steering gear's loads ([`Steering`]: the rudder's rate from its command), integrated by
+//! [`segment::advance`], the driver every scene runs on, with any of its methods. The run is
+//! cut into stretches at the instants its **schedule** changes the command (the execute, a
+//! pull-out's release, a series' breakpoints) and at its **events**, instants the state
+//! defines: the heading has changed by 90° (advance, transfer), the heading has passed ±ψ_a
+//! (the zig-zag reverses the rudder), the yaw rate is zero (an overshoot is largest). An event
+//! is a zero crossing of a function g of the state ([`Watch`]), located by the driver where g
+//! first has changed sign, to adjacent floating-point numbers of t on the integrator's own
+//! solution (the dense output of an adaptive method, the step taken again for a fixed-step
+//! one). So the figures are those of the integrated solution at the crossing, not at the
+//! nearest step, and a zig-zag reverses its rudder where the rule says.
+//!
+//! The trajectory's rows are at t = k·every, as every scene's are, at each event, and at each
+//! instant the schedule changes the command.
 
 use super::ShipError;
 use super::course::Course;
 use super::model::{STATE, ShipModel};
 use super::rudder::{Rudder, Series};
-use crate::integrate::{OdeSystem, rk4_step};
-use crate::models::{TIME_UNIT, state_with_unit, with_unit};
+use crate::integrate::segment::{self, Hooks, add};
+use crate::integrate::{IntegrateError, OdeSystem, Reached, RowClock, Stats, Stepper};
+use crate::models::{Driven, Loads, Model, TIME_UNIT, state_with_unit, with_unit};
 use nalgebra::SVector;
 use std::f64::consts::PI;
 
@@ -114,21 +121,22 @@ impl Figures {
     }
 }
 
-/// The ship, its rudder and the command, as one ODE system of eight states.
-struct Driven<'a> {
-    model: &'a ShipModel,
+/// The steering gear under a command, as the ship model's loads: the rudder's rate δ̇ at a
+/// time and state.
+#[derive(Debug, Clone, Copy)]
+pub struct Steering<'a> {
     rudder: &'a Rudder,
     command: Command<'a>,
 }
 
-/// The rudder command over one step.
+/// The rudder command over one stretch.
 #[derive(Debug, Clone, Copy)]
 enum Command<'a> {
     Hold(f64),
     Series(&'a Series),
 }
 
-impl Driven<'_> {
+impl Steering<'_> {
     /// The saturated command at `t`, and its slope (a series' without a lag).
     fn command(&self, t: f64) -> (f64, f64) {
         match self.command {
@@ -147,16 +155,45 @@ impl Driven<'_> {
     }
 }
 
-impl OdeSystem<f64, 8> for Driven<'_> {
-    fn rhs(&self, t: f64, y: &DriveState, dy: &mut DriveState) {
-        let state: [f64; 7] = std::array::from_fn(|i| y[i]);
+impl Steering<'_> {
+    /// ((δ_c − δ)/T_δ)² − δ̇_max² at `t` with the rudder at `delta`: negative while the lag's
+    /// rate is within its limit; `None` for a steering gear without both.
+    fn rate_margin(&self, t: f64, delta: f64) -> Option<f64> {
+        let (lag, max) = (self.rudder.time_constant?, self.rudder.max_rate?);
+        let rate = (self.command(t).0 - delta) / lag;
+        Some(rate * rate - max * max)
+    }
+}
+
+impl Loads<f64, 7, 1> for Steering<'_> {
+    /// δ̇: the lag's rate toward the saturated command, or a series' slope for a rudder
+    /// without a lag (which follows its command).
+    fn at(&self, t: f64, state: &[f64; 7]) -> [f64; 1] {
         let (command, slope) = self.command(t);
-        let delta_rate = self.rudder.rate(command, state[6]).unwrap_or(slope);
-        let rates = self.model.rhs(&state, delta_rate);
-        for (i, rate) in rates.iter().enumerate() {
-            dy[i] = *rate;
+        [self.rudder.rate(command, state[6]).unwrap_or(slope)]
+    }
+}
+
+/// The ship under its steering, with the distance run by midship as an eighth state
+/// (ṡ = U = √(u² + v²)), integrated with the rest for the zig-zag's initial turning distance.
+struct Tracked<'a> {
+    driven: Driven<'a, ShipModel, Steering<'a>, 1>,
+}
+
+impl OdeSystem<f64, 8> for Tracked<'_> {
+    fn rhs(&self, t: f64, y: &DriveState, dy: &mut DriveState) {
+        let state = SVector::<f64, 7>::from_fn(|i, _| y[i]);
+        let mut rates = SVector::<f64, 7>::zeros();
+        self.driven.rhs(t, &state, &mut rates);
+        for i in 0..7 {
+            dy[i] = rates[i];
         }
-        dy[7] = (state[0] * state[0] + state[1] * state[1]).sqrt();
+        dy[7] = y[0].hypot(y[1]);
+    }
+
+    fn explain_non_finite(&self, t: f64, y: &DriveState) -> Option<IntegrateError> {
+        self.driven
+            .explain_non_finite(t, &SVector::<f64, 7>::from_fn(|i, _| y[i]))
     }
 }
 
@@ -169,6 +206,11 @@ enum Watch {
     HeadingOnSide(f64),
     /// The yaw rate is zero: g = r.
     YawRateZero,
+    /// The steering gear's lag rate reaches its limit, or leaves it: g = ((δ_c − δ)/T_δ)² −
+    /// δ̇_max². Nothing changes there but the form of δ̇ (clamped or not), which has a kink: a
+    /// step across it is only first-order accurate in where the kink falls, so every run ends
+    /// a stretch on it, whatever its method.
+    RateLimit,
 }
 
 impl Watch {
@@ -178,6 +220,7 @@ impl Watch {
             Watch::HeadingChange(angle) => change * change - angle * angle,
             Watch::HeadingOnSide(side) => side * change - heading_a,
             Watch::YawRateZero => y[2],
+            Watch::RateLimit => unreachable!("the steering's watch is evaluated by Steering"),
         }
     }
 }
@@ -204,15 +247,18 @@ struct Log {
     course: Option<Course>,
 }
 
-/// Runs a manoeuvre from `start` (the model's seven states) with RK4 steps of at most
-/// `step`, calling `observe` at the start, after every step and at every event; `observe`
-/// returns whether to go on (false ends the run with [`ShipError::Stopped`]: Ctrl-C).
+/// The names of a [`DriveState`]'s entries, for messages.
+const DRIVE_STATE: [&str; 8] = ["u", "v", "r", "X", "Y", "psi", "delta", "distance"];
+
+/// Runs a manoeuvre from `start` (the model's seven states) with `stepper`'s method, handing
+/// each row (at t = k·`every` and at each event) to `observe`, which returns whether to go on
+/// (false ends the run with [`ShipError::Stopped`]: Ctrl-C).
 pub fn run(
     model: &ShipModel,
     rudder: &Rudder,
     manoeuvre: &Manoeuvre,
     start: [f64; 7],
-    step: f64,
+    (stepper, every): (&Stepper, f64),
     mut observe: impl FnMut(&Sample) -> bool,
 ) -> Result<ManoeuvreRun, ShipError> {
     let mut y = DriveState::zeros();
@@ -231,95 +277,78 @@ pub fn run(
     };
     let mut times = driver.command_times();
     let mut t = 0.0;
-    let mut steps = 0;
-    // Times are counted from the last event, t = anchor + k·h, so that they do not gather
-    // the round-off of a running sum over 10⁴ steps.
-    let (mut anchor, mut k) = (0.0, 0u64);
     driver.apply_times(t, &mut y, &mut times);
-    let mut go_on = observe(&driver.sample(t, &y));
+    let mut rows = RowClock::new(0.0, every);
+    let mut total = Stats::default();
     while t < manoeuvre.duration {
-        if !go_on {
+        let end = times
+            .first()
+            .map_or(manoeuvre.duration, |&b| b.min(manoeuvre.duration));
+        let stretch = driver.stretch(stepper, (t, y, end), &mut rows, &mut observe);
+        add(&mut total, stretch.stats);
+        let reached = stretch.reached.map_err(|error| run_error(error, stepper))?;
+        // The steps past an event are the stretch's trial, not the ship's course.
+        for (time, state) in stretch.steps.iter().filter(|(time, _)| *time < reached.t) {
+            driver.record(*time, state);
+        }
+        (t, y) = (reached.t, reached.state);
+        // A row at each event and at each change of the schedule, showing the state after
+        // it (a row due at a schedule's instant anyway is the next stretch's first).
+        let row = match stretch.fired {
+            // The steering's own event: only the form of δ̇ changes.
+            Some(Watch::RateLimit) => true,
+            Some(watch) => {
+                driver.fire(watch, t, &mut y);
+                true
+            }
+            None if t < manoeuvre.duration => {
+                driver.apply_times(t, &mut y, &mut times);
+                rows.next_time() != t
+            }
+            None => false,
+        };
+        if row && !observe(&driver.sample(t, &y)) {
             return Err(ShipError::Stopped { time: t });
         }
-        let next_time = times.first().copied().unwrap_or(manoeuvre.duration);
-        let boundary = next_time.min(manoeuvre.duration);
-        let h = if boundary - t <= step * (1.0 + 1e-9) {
-            boundary - t
-        } else {
-            step
-        };
-        let mut trial = y;
-        rk4_step(&driver.system(), t, h, &mut trial);
-        steps += 1;
-        match driver.first_event(t, h, &y, &trial) {
-            Some((s, watch)) => {
-                if s < h {
-                    y = driver.step_to(t, s, &y);
-                } else {
-                    y = trial;
-                }
-                t += s;
-                (anchor, k) = (t, 0);
-                driver.fire(watch, t, &mut y);
-            }
-            None => {
-                y = trial;
-                if h == boundary - t {
-                    (t, anchor, k) = (boundary, boundary, 0);
-                } else {
-                    k += 1;
-                    t = anchor + k as f64 * step;
-                }
-                driver.apply_times(t, &mut y, &mut times);
-            }
-        }
-        if let Some(i) = (0..8).find(|&i| !y[i].is_finite()) {
-            let name = ["u", "v", "r", "X", "Y", "psi", "delta", "distance"][i];
-            return Err(ShipError::Run {
-                time: t,
-                reason: format!(
-                    "{name} is not finite (the prime system's forces are undefined where the \
-                     speed U is zero; a step of {step} s may also be too long for this ship)"
-                ),
-            });
-        }
         driver.record(t, &y);
-        go_on = observe(&driver.sample(t, &y));
     }
     let figures = driver.figures(&y);
-    Ok(ManoeuvreRun { figures, steps })
+    Ok(ManoeuvreRun {
+        figures,
+        steps: total.steps as u64,
+    })
 }
 
-/// Solves g(s) = 0 on [0, h] with g(0) = g0 and g(h) = g1 of opposite signs (Illinois).
-fn locate(g: impl Fn(f64) -> f64, h: f64, g0: f64, g1: f64) -> f64 {
-    let (mut a, mut b, mut ga, mut gb) = (0.0, h, g0, g1);
-    let mut side = 0;
-    for _ in 0..100 {
-        if (b - a).abs() <= 1e-12 * h {
-            break;
-        }
-        let s = (a * gb - b * ga) / (gb - ga);
-        let gs = g(s);
-        if gs == 0.0 {
-            return s;
-        }
-        if gs.signum() == gb.signum() {
-            b = s;
-            gb = gs;
-            if side == -1 {
-                ga *= 0.5;
-            }
-            side = -1;
-        } else {
-            a = s;
-            ga = gs;
-            if side == 1 {
-                gb *= 0.5;
-            }
-            side = 1;
-        }
+/// A failed stretch as a ship's error, naming the state entry or the cause.
+fn run_error(error: IntegrateError, stepper: &Stepper) -> ShipError {
+    match error {
+        IntegrateError::Stopped { t } => ShipError::Stopped { time: t },
+        IntegrateError::NonFiniteState { component, t } => ShipError::Run {
+            time: t,
+            reason: format!(
+                "{} is not finite (the prime system's forces are undefined where the speed U \
+                 is zero; {} may also be too coarse for this ship)",
+                DRIVE_STATE.get(component).unwrap_or(&"?"),
+                match stepper.step {
+                    Some(step) => format!("a step of {step} s"),
+                    None => "the tolerances".to_owned(),
+                }
+            ),
+        },
+        other => ShipError::Run {
+            time: f64::NAN,
+            reason: other.to_string(),
+        },
     }
-    b
+}
+
+/// What one stretch of a run gave: where it ended, its cost, the state after each accepted
+/// step, and the watch whose event ended it, if one did.
+struct Stretch {
+    reached: Result<Reached<f64, 8>, IntegrateError>,
+    stats: Stats,
+    steps: Vec<(f64, DriveState)>,
+    fired: Option<Watch>,
 }
 
 /// The run's moving parts: the command, what it watches for, what it has seen.
@@ -338,58 +367,88 @@ struct Driver<'a> {
 }
 
 impl<'a> Driver<'a> {
-    fn system(&self) -> Driven<'a> {
+    /// The ship under the command as it stands.
+    fn system(&self) -> Tracked<'a> {
         let command = match &self.manoeuvre.kind {
             ManoeuvreKind::Series(series) => Command::Series(series),
             _ => Command::Hold(self.command),
         };
-        Driven {
-            model: self.model,
+        let steering = Steering {
             rudder: self.rudder,
             command,
+        };
+        Tracked {
+            driven: self.model.driven_by(steering),
         }
     }
 
-    /// The earliest watch whose function changes sign over the step of `h` from `(t, y)` to
-    /// `trial`, and the sub-step `s` at which it is zero.
-    fn first_event(
+    /// One stretch of the run from `(a, y_a)` to `b`: the driver stepping the ship under the
+    /// command as it stands, ending early where a watched function first changes sign. Returns
+    /// where it ended, its cost, and the state after every accepted step (for the course).
+    fn stretch(
         &self,
-        t: f64,
-        h: f64,
-        y: &DriveState,
-        trial: &DriveState,
-    ) -> Option<(f64, Watch)> {
+        stepper: &Stepper,
+        (a, y_a, b): (f64, DriveState, f64),
+        rows: &mut RowClock<f64>,
+        observe: &mut impl FnMut(&Sample) -> bool,
+    ) -> Stretch {
         let system = self.system();
-        let (heading0, heading_a) = (self.heading0(), self.heading_a());
-        let crossing = |&watch: &Watch| {
-            let g = |y: &DriveState| watch.g(y, heading0, heading_a);
-            let (g0, g1) = (g(y), g(trial));
-            (g0 != 0.0 && g0.signum() != g1.signum()).then(|| {
-                let at = |s: f64| {
-                    let mut probe = *y;
-                    rk4_step(&system, t, s, &mut probe);
-                    g(&probe)
-                };
-                (locate(at, h, g0, g1), watch)
-            })
+        let steering = *system.driven.loads();
+        let mut watches = self.watches.clone();
+        if steering.rate_margin(a, y_a[6]).is_some() {
+            watches.push(Watch::RateLimit);
+        }
+        let g = |watch: Watch, t: f64, y: &DriveState| match watch {
+            Watch::RateLimit => steering.rate_margin(t, y[6]).unwrap_or(0.0),
+            other => self.g(other, y),
         };
-        self.watches
-            .iter()
-            .filter_map(crossing)
-            .min_by(|a, b| a.0.total_cmp(&b.0))
+        let start: Vec<f64> = watches.iter().map(|w| g(*w, a, &y_a)).collect();
+        let changed = |t: f64, y: &DriveState| -> Vec<Watch> {
+            (watches.iter().zip(&start))
+                .filter(|(w, g0)| **g0 != 0.0 && g(**w, t, y).signum() != g0.signum())
+                .map(|(w, _)| *w)
+                .collect()
+        };
+        let stop = |t: f64, y: &DriveState| !changed(t, y).is_empty();
+        let mut steps = Vec::new();
+        let hooks = Hooks {
+            check: &mut |t, y: &DriveState| {
+                steps.push((t, *y));
+                true
+            },
+            stop: (!watches.is_empty()).then_some(&stop as &dyn Fn(f64, &DriveState) -> bool),
+            emit: &mut |t, y: &DriveState| observe(&self.sample(t, y)),
+            // A rudder without a lag jumps at a schedule's instant and at an event: the rows
+            // there show the state after the jump (the run writes them).
+            row_at_end: b >= self.manoeuvre.duration,
+            row_at_stop: false,
+        };
+        let (reached, stats) = segment::advance(stepper, &system, (a, y_a, b), rows, hooks);
+        // The watch that ended the stretch: of those whose sign has changed, the one nearest
+        // its zero, where two changed at once.
+        let fired = reached.as_ref().ok().filter(|r| r.stopped).and_then(|r| {
+            let nearness = |w: &Watch| g(*w, r.t, &r.state).abs();
+            (changed(r.t, &r.state).into_iter()).min_by(|a, b| nearness(a).total_cmp(&nearness(b)))
+        });
+        Stretch {
+            reached,
+            stats,
+            steps,
+            fired,
+        }
     }
 
-    fn step_to(&self, t: f64, s: f64, y: &DriveState) -> DriveState {
-        let mut y = *y;
-        rk4_step(&self.system(), t, s, &mut y);
-        y
+    /// The watched function's value at `y`.
+    fn g(&self, watch: Watch, y: &DriveState) -> f64 {
+        watch.g(y, self.heading0(), self.heading_a())
     }
 
+    /// The row at `t`: the state and the saturated command as it stands.
     fn sample(&self, t: f64, y: &DriveState) -> Sample {
         Sample {
             t,
             state: std::array::from_fn(|i| y[i]),
-            command: self.system().command(t).0,
+            command: self.system().driven.loads().command(t).0,
         }
     }
 
@@ -491,7 +550,7 @@ impl<'a> Driver<'a> {
                     };
                     self.watches = vec![Watch::HeadingOnSide(next_side), Watch::YawRateZero];
                 }
-                Watch::YawRateZero => {}
+                Watch::YawRateZero | Watch::RateLimit => {}
             }
         }
     }

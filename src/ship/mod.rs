@@ -10,7 +10,8 @@
 //! | the table as written: names, units, the rigid-body convention, folded tables converted | [`table`] |
 //! | 4.46 with exactly the table's terms, derived, solved and proved by `eom-codegen`, evaluated | [`model`] |
 //! | the rudder: saturation, first-order lag, rate limit; its commands | [`rudder`] |
-//! | the manoeuvres, their crossing instants found on the step, their figures | [`manoeuvre`] |
+//! | the manoeuvres as schedules and events over the one driver (any method), their figures | [`manoeuvre`] |
+//! | what a run reports, as data (`summary.json`'s types) | [`summary`] |
 //! | what the figures assume (ahead, not stopped, one way, settled), checked on the run | [`course`] |
 //! | the IMO MSC.137(76) criteria | [`imo`] |
 //! | the linear model about the straight course: Nomoto, course stability, pivot point | [`linear`] |
@@ -20,7 +21,8 @@
 //! symbolic engine derives 4.46 with the table's terms, solves it with the constant mass
 //! matrix inverted once, and proves the straight-line program equal to the equations, as it
 //! does for every catalog model at build time; [`model::ShipModel`] then evaluates that proved
-//! program. A user who wants the same model compiled calls
+//! program, and is a [`Model`](crate::Model) like the catalog's (state, input, `rhs`, exact
+//! Jacobians, kinetic energy), so it runs on every integrator. A user who wants the same model compiled calls
 //! [`eom_codegen::emit::system_source`] from a `build.rs`.
 
 pub mod course;
@@ -30,6 +32,7 @@ pub mod manoeuvre;
 pub mod model;
 pub mod rudder;
 pub mod scene;
+pub mod summary;
 pub mod table;
 
 /// The table's vocabulary, from the generator that builds the model: a term, its load, the

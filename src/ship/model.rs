@@ -9,10 +9,11 @@
 
 use super::ShipError;
 use super::table::ShipTable;
+use crate::models::Model;
 use eom_codegen::emit::program::{Node, Program};
 use eom_codegen::emit::{Operations, prove};
 use eom_codegen::model::System;
-use eom_codegen::model::ship::{ADDED_MASS, PRIME_SCALES, ShipSpec, Units, ship};
+use eom_codegen::model::ship::{ADDED_MASS, PRIME_SCALES, ShipSpec, Units, YawInertia, ship};
 use eom_codegen::symbolic::Expr;
 use simba::simd::SimdRealField;
 use std::collections::BTreeMap;
@@ -20,6 +21,26 @@ use std::collections::BTreeMap;
 /// The state: u, v, r (m/s, m/s, rad/s, body axes at midship), X, Y (m, midship in space
 /// axes), ψ (rad), δ (rad, the rudder angle).
 pub const STATE: [&str; 7] = ["u", "v", "r", "X", "Y", "psi", "delta"];
+
+/// The input: the rudder's rate δ̇ (rad/s), which the steering gear sets
+/// ([`super::rudder`]).
+pub const INPUTS: [&str; 1] = ["delta_rate"];
+
+/// Where the rates can depend on the state, for any table: u̇, v̇, ṙ on u, v, r and δ (the
+/// terms in U of a prime table are in u and v); Ẋ, Ẏ on u, v, ψ (4.44); ψ̇ on r; δ̇ on none.
+/// A table without a term in some entry makes that entry's derivative zero at every state.
+#[rustfmt::skip]
+const STATE_JACOBIAN: [(usize, usize); 19] = [
+    (0, 0), (0, 1), (0, 2), (0, 6),
+    (1, 0), (1, 1), (1, 2), (1, 6),
+    (2, 0), (2, 1), (2, 2), (2, 6),
+    (3, 0), (3, 1), (3, 5),
+    (4, 0), (4, 1), (4, 5),
+    (5, 2),
+];
+
+/// δ̇ is the rudder's rate itself.
+const INPUT_JACOBIAN: [(usize, usize); 1] = [(6, 0)];
 
 /// One node of the program, with its operands resolved to positions.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -44,6 +65,46 @@ pub struct ShipModel {
     outputs: [usize; 7],
     operations: Operations,
     terms: usize,
+    rigid_body: RigidBody,
+}
+
+/// The rigid body in SI about midship, for the kinetic energy.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct RigidBody {
+    /// M, kg.
+    mass: f64,
+    /// I_z about midship, kg m².
+    yaw_inertia_midship: f64,
+    /// G ahead of midship, m.
+    x_g: f64,
+}
+
+impl RigidBody {
+    /// The table's body in SI: a prime table's m′, I′_z and x′_G scaled by ½ρL³, ½ρL⁵ and L;
+    /// I_z taken to midship by the parallel-axis theorem (4.23) where it is given about G.
+    fn of(table: &ShipTable) -> Self {
+        let body = &table.body;
+        let (mass_scale, inertia_scale, length) = match table.units {
+            Units::Dimensional => (1.0, 1.0, 1.0),
+            Units::Prime => {
+                let length = table.length.unwrap_or(f64::NAN);
+                let half_rho = 0.5 * table.density.unwrap_or(f64::NAN);
+                (half_rho * length.powi(3), half_rho * length.powi(5), length)
+            }
+        };
+        let mass = body.mass * mass_scale;
+        let x_g = body.x_g * length;
+        let given = body.yaw_inertia * inertia_scale;
+        let yaw_inertia_midship = match body.yaw_inertia_about {
+            YawInertia::AboutMidship => given,
+            YawInertia::AboutG => given + mass * x_g * x_g,
+        };
+        RigidBody {
+            mass,
+            yaw_inertia_midship,
+            x_g,
+        }
+    }
 }
 
 impl ShipModel {
@@ -69,11 +130,12 @@ impl ShipModel {
             outputs,
             operations: program.operations(&program.rhs),
             terms: spec.terms.len(),
+            rigid_body: RigidBody::of(table),
         })
     }
 
-    /// The time derivative of the state with the rudder moving at `delta_rate`.
-    pub fn rhs<T: SimdRealField + Copy>(&self, state: &[T; 7], delta_rate: T) -> [T; 7] {
+    /// Every node of the program at `state` with the rudder moving at `delta_rate`.
+    fn values<T: SimdRealField + Copy>(&self, state: &[T; 7], delta_rate: T) -> Vec<T> {
         let speed = (state[0] * state[0] + state[1] * state[1]).simd_sqrt();
         let mut values: Vec<T> = Vec::with_capacity(self.ops.len());
         for op in &self.ops {
@@ -92,7 +154,51 @@ impl ShipModel {
             };
             values.push(value);
         }
-        self.outputs.map(|i| values[i])
+        values
+    }
+
+    /// The derivatives of the rates by the seven state entries and the input (column 7), by
+    /// the chain rule through the program node by node (forward mode): exact, as the program
+    /// is, and generic over the scalar as `rhs` is.
+    fn jacobian<T: SimdRealField + Copy>(&self, state: &[T; 7], delta_rate: T) -> [[T; 8]; 7] {
+        let values = self.values(state, delta_rate);
+        let zero = [T::zero(); 8];
+        let unit = |j: usize| {
+            let mut d = zero;
+            d[j] = T::one();
+            d
+        };
+        let scaled = |d: &[T; 8], by: T| d.map(|x| x * by);
+        let mut tangents: Vec<[T; 8]> = Vec::with_capacity(self.ops.len());
+        for op in &self.ops {
+            let d = match *op {
+                Op::State(i) => unit(i),
+                Op::DeltaRate => unit(7),
+                Op::Speed => {
+                    // U = √(u² + v²): ∂U/∂u = u/U, ∂U/∂v = v/U.
+                    let speed = (state[0] * state[0] + state[1] * state[1]).simd_sqrt();
+                    let mut d = zero;
+                    d[0] = state[0] / speed;
+                    d[1] = state[1] / speed;
+                    d
+                }
+                Op::Value(_) => zero,
+                Op::Sin(a) => scaled(&tangents[a], eom_kernel::sin_cos([values[a]])[0].1),
+                Op::Cos(a) => scaled(&tangents[a], -eom_kernel::sin_cos([values[a]])[0].0),
+                Op::Recip(a) => {
+                    let inverse = T::one() / values[a];
+                    scaled(&tangents[a], -(inverse * inverse))
+                }
+                Op::Neg(a) => tangents[a].map(|x| -x),
+                Op::Add(a, b) => std::array::from_fn(|j| tangents[a][j] + tangents[b][j]),
+                Op::Sub(a, b) => std::array::from_fn(|j| tangents[a][j] - tangents[b][j]),
+                Op::Mul(a, b) => {
+                    std::array::from_fn(|j| values[a] * tangents[b][j] + values[b] * tangents[a][j])
+                }
+            };
+            tangents.push(d);
+        }
+        self.outputs.map(|i| tangents[i])
     }
 
     /// What one call costs, as the emitter counts it.
@@ -152,6 +258,44 @@ fn coefficient_values(
         .iter()
         .map(|c| c.value.eval(&lookup))
         .collect()
+}
+
+/// The ship as a model like the catalog's: its state and input, the proved program as `rhs`,
+/// its exact Jacobians, and the rigid body's kinetic energy.
+impl<T: SimdRealField + Copy> Model<T, 7, 1> for ShipModel {
+    const NAME: &'static str = "ship";
+    const STATE: [&'static str; 7] = STATE;
+    const INPUTS: [&'static str; 1] = INPUTS;
+    const STATE_JACOBIAN: &'static [(usize, usize)] = &STATE_JACOBIAN;
+    const INPUT_JACOBIAN: &'static [(usize, usize)] = &INPUT_JACOBIAN;
+
+    /// The rates of the state with the rudder moving at `input[0]`: the proved program,
+    /// evaluated node by node.
+    fn rhs(&self, state: &[T; 7], input: &[T; 1]) -> [T; 7] {
+        let values = self.values(state, input[0]);
+        self.outputs.map(|i| values[i])
+    }
+
+    /// The rigid body's kinetic energy ½νᵀM_RBν about midship, ν = (u, v, r) (4.46's mass
+    /// matrix without the added mass): ½M(u² + v²) + M x_G v r + ½I_z r², with I_z about
+    /// midship; in J. The fluid's share (the added mass) is not in it.
+    fn kinetic_energy(&self, state: &[T; 7]) -> T {
+        let body = &self.rigid_body;
+        let [mass, inertia, x_g] =
+            [body.mass, body.yaw_inertia_midship, body.x_g].map(|x| T::from_subset(&x));
+        let (u, v, r) = (state[0], state[1], state[2]);
+        let half = T::from_subset(&0.5);
+        half * mass * (u * u + v * v) + mass * x_g * v * r + half * inertia * r * r
+    }
+
+    fn state_jacobian(&self, state: &[T; 7], input: &[T; 1]) -> [[T; 7]; 7] {
+        self.jacobian(state, input[0])
+            .map(|row| std::array::from_fn(|j| row[j]))
+    }
+
+    fn input_jacobian(&self, state: &[T; 7], input: &[T; 1]) -> [[T; 1]; 7] {
+        self.jacobian(state, input[0]).map(|row| [row[7]])
+    }
 }
 
 fn resolve(node: &Node, coefficients: &[f64]) -> Result<Op, ShipError> {

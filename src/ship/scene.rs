@@ -30,7 +30,7 @@
 //! time_constant_s = 1.0        # the first-order lag
 //!
 //! [integrator]
-//! method = "rk4"               # steps that land on every event (eom::ship::manoeuvre)
+//! method = "rk4"               # any method but lie-midpoint; events located on its solution
 //! step = 0.1                   # s
 //!
 //! [[manoeuvre]]
@@ -52,6 +52,8 @@ use super::ShipError;
 use super::manoeuvre::{Manoeuvre, ManoeuvreKind};
 use super::rudder::{Rudder, Series};
 use super::table::{GivenTable, RigidBodyTerms, ShipBody, ShipTable};
+use crate::integrate::{Method, Stepper};
+use crate::scene::check::{Checker, MethodKeys};
 use crate::scene::{Problem, SceneError};
 use crate::validate::Requirement;
 use eom_codegen::model::ship::{Units, YawInertia};
@@ -146,14 +148,21 @@ pub struct RudderTable {
     pub time_constant_s: Option<f64>,
 }
 
-/// `[integrator]`.
+/// `[integrator]`: the keys of every scene's but the end time (each manoeuvre gives its
+/// duration) and the stop condition (a manoeuvre's events end its stretches).
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct IntegratorTable {
-    /// `rk4`.
+    /// `euler`, `symplectic-euler`, `rk4`, `dopri5` or `dop853`.
     pub method: String,
-    /// The largest step, s.
-    pub step: f64,
+    /// The largest step of a fixed-step method, s.
+    pub step: Option<f64>,
+    /// Relative tolerance (adaptive methods).
+    pub rtol: Option<f64>,
+    /// Absolute tolerance (adaptive methods).
+    pub atol: Option<f64>,
+    /// The most steps (accepted and rejected) a manoeuvre may take.
+    pub max_steps: Option<u64>,
 }
 
 /// `[output]`.
@@ -199,9 +208,9 @@ pub struct ShipScene {
     pub table: ShipTable,
     /// The steering gear.
     pub rudder: Rudder,
-    /// The RK4 step, s.
-    pub step: f64,
-    /// A trajectory row every this many seconds (0: every step).
+    /// The method and its settings ([`segment`](crate::integrate::Stepper)).
+    pub stepper: Stepper,
+    /// A trajectory row at t = k·every, s.
     pub every: f64,
     /// The manoeuvres.
     pub manoeuvres: Vec<Manoeuvre>,
@@ -211,9 +220,6 @@ pub struct ShipScene {
 pub fn is_ship_scene(text: &str) -> bool {
     toml::from_str::<toml::Table>(text).is_ok_and(|t| t.contains_key("hydrodynamics"))
 }
-
-/// The most steps one manoeuvre may take.
-const MAX_STEPS: f64 = 1e8;
 
 struct Check<'a> {
     name: &'a str,
@@ -412,12 +418,50 @@ impl Check<'_> {
         })
     }
 
-    fn manoeuvre(
-        &self,
-        index: usize,
-        table: &ManoeuvreTable,
-        step: f64,
-    ) -> Result<Manoeuvre, SceneError> {
+    /// The method, read by the checker of every scene's `[integrator]` over the longest
+    /// manoeuvre, and the rows' interval: `output.every`, or the step where absent (an
+    /// adaptive method has none, so it needs `output.every`).
+    fn stepping(&self, file: &ShipSceneFile, longest: f64) -> Result<(Stepper, f64), SceneError> {
+        let t = &file.integrator;
+        let keys = MethodKeys {
+            method: &t.method,
+            step: t.step,
+            rtol: t.rtol,
+            atol: t.atol,
+            max_steps: t.max_steps,
+        };
+        let settings = Checker { name: self.name }.method_settings(&keys, longest)?;
+        if settings.method == Method::LieMidpoint {
+            return Err(self.invalid(
+                "integrator.method",
+                "lie-midpoint integrates a free body's rotation alone; a ship takes euler, \
+                 symplectic-euler, rk4, dopri5 or dop853",
+            ));
+        }
+        let every = match (file.output.every, settings.step) {
+            (Some(every), _) => self.positive("output.every", every)?,
+            (None, Some(step)) => step,
+            (None, None) => {
+                return Err(self.error(
+                    "output.every",
+                    Problem::Missing(format!(
+                        "the rows' interval, s: {} chooses its own steps",
+                        settings.method.name()
+                    )),
+                ));
+            }
+        };
+        let stepper = Stepper {
+            method: settings.method,
+            step: settings.step,
+            adaptive: settings.adaptive,
+            // u, v, r: symplectic Euler kicks the velocities first.
+            kicked: 0..3,
+        };
+        Ok((stepper, every))
+    }
+
+    fn manoeuvre(&self, index: usize, table: &ManoeuvreTable) -> Result<Manoeuvre, SceneError> {
         let key = |k: &str| format!("manoeuvre[{index}].{k}");
         let required = |k: &str, v: Option<f64>| {
             v.ok_or_else(|| self.error(&key(k), Problem::Missing(key(k))))
@@ -443,15 +487,6 @@ impl Check<'_> {
         let duration = self.positive(&key("duration_s"), table.duration_s)?;
         if duration <= execute {
             return Err(self.invalid(&key("duration_s"), "the run must go on past the execute"));
-        }
-        if duration / step > MAX_STEPS {
-            return Err(self.invalid(
-                &key("duration_s"),
-                format!(
-                    "{} steps of {step} s: more than {MAX_STEPS:e}",
-                    duration / step
-                ),
-            ));
         }
         let (kind, default_name) = match table.kind.as_str() {
             "turning_circle" => {
@@ -579,21 +614,6 @@ impl ShipScene {
         }
         let (table, length) = check.table(file)?;
         let rudder = check.rudder(&file.rudder)?;
-        if file.integrator.method != "rk4" {
-            return Err(check.invalid(
-                "integrator.method",
-                format!(
-                    "`{}`: a ship scene steps with rk4, landing each step on the manoeuvre's \
-                     events",
-                    file.integrator.method
-                ),
-            ));
-        }
-        let step = check.positive("integrator.step", file.integrator.step)?;
-        let every = match file.output.every {
-            Some(every) => check.positive("output.every", every)?,
-            None => 0.0,
-        };
         if file.manoeuvre.is_empty() {
             return Err(check.error(
                 "manoeuvre",
@@ -602,7 +622,7 @@ impl ShipScene {
         }
         let mut manoeuvres: Vec<Manoeuvre> = Vec::new();
         for (index, table) in file.manoeuvre.iter().enumerate() {
-            let manoeuvre = check.manoeuvre(index, table, step)?;
+            let manoeuvre = check.manoeuvre(index, table)?;
             if manoeuvres.iter().any(|m| m.name == manoeuvre.name) {
                 return Err(check.invalid(
                     &format!("manoeuvre[{index}].name"),
@@ -611,12 +631,14 @@ impl ShipScene {
             }
             manoeuvres.push(manoeuvre);
         }
+        let longest = manoeuvres.iter().map(|m| m.duration).fold(0.0, f64::max);
+        let (stepper, every) = check.stepping(file, longest)?;
         Ok(ShipScene {
             title: file.title.clone(),
             length,
             table,
             rudder,
-            step,
+            stepper,
             every,
             manoeuvres,
         })

@@ -4,6 +4,7 @@
 //!
 //! `cargo bench -p eom-example-user-build-rs`
 
+use eom::Model;
 use eom::ship::table::{GivenTable, ShipBody, ShipTable};
 use eom::ship::{RigidBodyTerms, ShipModel, Units, YawInertia};
 use eom_example_user_build_rs::{example_ship, ship};
@@ -76,14 +77,17 @@ fn main() {
     let evaluated = ShipModel::new(&table()).expect("the table builds");
     // The two agree before they are timed.
     let state = [6.0, 0.4, -0.02, 10.0, -5.0, 0.3, 0.1];
-    let (a, b) = (ship::rhs(&k, &state, &[0.01]), evaluated.rhs(&state, 0.01));
+    let (a, b) = (
+        ship::rhs(&k, &state, &[0.01]),
+        evaluated.rhs(&state, &[0.01]),
+    );
     for (x, y) in a.iter().zip(&b) {
         assert!((x - y).abs() <= 1e-12 * x.abs().max(1e-9), "{x} vs {y}");
     }
     let (mut compiled, mut interpreted) = (vec![], vec![]);
     for _ in 0..7 {
         compiled.push(time(|y| ship::rhs(&k, y, &[0.01])));
-        interpreted.push(time(|y| evaluated.rhs(y, 0.01)));
+        interpreted.push(time(|y| evaluated.rhs(y, &[0.01])));
     }
     let (c, i) = (median(compiled), median(interpreted));
     let ns = |s: f64| s / CALLS as f64 * 1e9;

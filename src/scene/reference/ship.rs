@@ -224,11 +224,20 @@ pub(super) static KEYS: &[Key] = &[
     Key {
         path: "integrator.method",
         families: SHIP,
-        kind: Kind::Text(Choices::These(&["rk4"])),
+        kind: Kind::Text(Choices::These(&[
+            "euler",
+            "symplectic-euler",
+            "rk4",
+            "dopri5",
+            "dop853",
+        ])),
         required: Required::Yes,
-        description: "A ship steps with rk4, each step landing on the manoeuvre's events (the \
-                      heading passing 90°, 180°, ±ψ_a; the yaw rate passing zero), found on the \
-                      step to 1e-12 of it.",
+        description: "Any method of every scene's but lie-midpoint (a free body's rotation \
+                      alone). The manoeuvre's events (the heading passing 90°, 180°, ±ψ_a; the \
+                      yaw rate passing zero; the steering gear reaching or leaving its rate \
+                      limit) end the method's stretches where they first hold, located to \
+                      adjacent floating-point numbers of t on its solution: the dense output \
+                      of dopri5 and dop853, the step taken again for the fixed-step methods.",
         example: "\"rk4\"",
         ..Key::BLANK
     },
@@ -236,10 +245,44 @@ pub(super) static KEYS: &[Key] = &[
         path: "integrator.step",
         families: SHIP,
         unit: "s",
-        required: Required::Yes,
-        description: "The largest step. Each manoeuvre runs again at half the step, and \
-                      summary.json says how far each figure moves.",
+        required: Required::When("for a fixed-step method"),
+        description: "Fixed-step methods only: the largest step. Each manoeuvre runs again at \
+                      half the step, and summary.json says how far each figure moves \
+                      (`half_step_difference`).",
         example: "0.2",
+        ..Key::BLANK
+    },
+    Key {
+        path: "integrator.rtol",
+        families: SHIP,
+        unit: "-",
+        default: "1e-9",
+        description: "Adaptive methods only: the relative tolerance. Each manoeuvre runs again \
+                      with rtol and atol a hundred times tighter, and summary.json says how far \
+                      each figure moves (`tolerance_difference`).",
+        example: "1e-9",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "integrator.atol",
+        families: SHIP,
+        default: "1e-9",
+        description: "Adaptive methods only: the absolute tolerance, in each state entry's \
+                      own unit.",
+        example: "1e-9",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "integrator.max_steps",
+        families: SHIP,
+        kind: Kind::Integer,
+        default: "1_000_000",
+        description: "The most steps, accepted and rejected, one manoeuvre may take (for a \
+                      fixed step, checked against the longest manoeuvre before it runs).",
+        example: "1_000_000",
+        shown: Shown::Commented,
         ..Key::BLANK
     },
     // [[manoeuvre]]: at least one; each kind reads its own keys and refuses the others.
@@ -345,8 +388,10 @@ pub(super) static KEYS: &[Key] = &[
         path: "output.every",
         families: SHIP,
         unit: "s",
-        default: "every step",
-        description: "A trajectory row every this many seconds.",
+        required: Required::When("for an adaptive method"),
+        default: "the step",
+        description: "Trajectory rows at exactly t = k·every, and a row at each event and \
+                      each change of the rudder's schedule.",
         example: "1.0",
         ..Key::BLANK
     },

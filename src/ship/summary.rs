@@ -1,0 +1,370 @@
+//! What a ship scene's run reports, as data: the model that ran, the method, the linear model
+//! about the straight course, each manoeuvre's figures with how far each moved when the run
+//! was refined, and the IMO criteria.
+//!
+//! These are the types `summary.json` is written from (serde), so its keys are these fields'
+//! names; the application writes them with the keys of every object sorted, as a ship's
+//! summary has always been written. A library user gets the same numbers without parsing JSON.
+
+use super::imo::Criterion;
+use super::linear::{LinearModel, Nomoto, linearise};
+use super::manoeuvre::{Figures, Manoeuvre, ManoeuvreKind};
+use super::table::RigidBodyTerms;
+use super::{ShipModel, ShipScene};
+use crate::integrate::Stepper;
+use eom_codegen::model::ship::{Units, YawInertia};
+use serde::Serialize;
+use std::collections::BTreeMap;
+
+/// `summary.json` of a ship scene.
+#[derive(Debug, Clone, Serialize)]
+pub struct ShipSummary {
+    /// The scene file as given.
+    pub scene: String,
+    /// Its title.
+    pub title: String,
+    /// The model that ran.
+    pub model: ModelSummary,
+    /// The method.
+    pub integrator: IntegratorSummary,
+    /// The linear model about the straight course.
+    pub linear: LinearSummary,
+    /// Each manoeuvre's figures by its name, and the IMO criteria under `imo`.
+    pub manoeuvre: Manoeuvres,
+    /// The run's wall time, s.
+    pub wall_seconds: f64,
+    /// Whether a signal ended the run early (the manoeuvres finished before it are here).
+    pub interrupted: bool,
+}
+
+/// The model: 4.46 with the table's terms.
+#[derive(Debug, Clone, Serialize)]
+pub struct ModelSummary {
+    /// `planar-midship`.
+    pub family: &'static str,
+    /// What it integrates.
+    pub equations: &'static str,
+    /// `prime` or `dimensional`.
+    pub units: &'static str,
+    /// `about G` or `about midship`.
+    pub yaw_inertia: &'static str,
+    /// `folded` or `separate`: how the table gave the rigid-body terms.
+    pub rigid_body_terms: &'static str,
+    /// What was converted to take folded rigid-body terms out of the table.
+    pub conversion: Vec<String>,
+    /// The terms of the polynomial the model carries.
+    pub terms: usize,
+    /// What one right-hand side costs.
+    pub operations: OperationsSummary,
+}
+
+/// The arithmetic of one right-hand side.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct OperationsSummary {
+    /// Additions, subtractions, negations.
+    pub add: u32,
+    /// Multiplications.
+    pub mul: u32,
+    /// Divisions and reciprocals.
+    pub div: u32,
+}
+
+/// The method and its settings.
+#[derive(Debug, Clone, Serialize)]
+pub struct IntegratorSummary {
+    /// Its name in scene files.
+    pub method: &'static str,
+    /// The step of a fixed-step method, s.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub step: Option<f64>,
+    /// The relative tolerance of an adaptive one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rtol: Option<f64>,
+    /// Its absolute tolerance.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub atol: Option<f64>,
+}
+
+/// Nomoto's second-order model and the course stability about the straight course.
+#[derive(Debug, Clone, Serialize)]
+pub struct LinearSummary {
+    /// U₀, m/s.
+    pub speed_m_s: f64,
+    /// L, m.
+    pub length_m: f64,
+    /// Nomoto's constants in closed form from the table; `null` where T₁, T₂ are not real.
+    pub nomoto: Option<NomotoSummary>,
+    /// The same from the exact derivative of the running model.
+    pub nomoto_of_linearised_model: Option<NomotoSummary>,
+    /// The largest relative difference between the two among K, T₁, T₂, T₃.
+    pub largest_relative_difference: Option<f64>,
+    /// det N in SI: the straight course is stable where it is positive.
+    pub det_n_si: f64,
+    /// C′ of a prime table.
+    pub stability_index: Option<f64>,
+    /// Whether the straight course is stable.
+    pub course_stable: bool,
+    /// The pivot point of the steady turn, m ahead of midship.
+    pub pivot_point_m: f64,
+    /// The same over L.
+    pub pivot_point_over_length: f64,
+}
+
+/// Nomoto's constants, dimensional and in the prime system.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct NomotoSummary {
+    /// K, 1/s.
+    pub k_per_s: f64,
+    /// T₁, s.
+    pub t1_s: f64,
+    /// T₂, s.
+    pub t2_s: f64,
+    /// T₃, s.
+    pub t3_s: f64,
+    /// T = T₁ + T₂ − T₃, s.
+    pub t_s: f64,
+    /// K′ = K L/U.
+    pub k_prime: f64,
+    /// T′ = T U/L.
+    pub t_prime: f64,
+}
+
+/// Each manoeuvre by its name, and the IMO criteria.
+#[derive(Debug, Clone, Serialize)]
+pub struct Manoeuvres {
+    /// The manoeuvres, by name.
+    #[serde(flatten)]
+    pub runs: BTreeMap<String, ManoeuvreSummary>,
+    /// The IMO MSC.137(76) criteria judged on them.
+    pub imo: Vec<CriterionSummary>,
+}
+
+/// One manoeuvre: what it did, its figures, and how far each moved when the run was refined.
+#[derive(Debug, Clone, Serialize)]
+pub struct ManoeuvreSummary {
+    /// The kind and its angles.
+    #[serde(flatten)]
+    pub kind: KindSummary,
+    /// When the rudder was put over, s.
+    pub execute_s: f64,
+    /// The end of the run, s.
+    pub duration_s: f64,
+    /// Each figure by its key; `null` where the run did not give it (see `notes`).
+    #[serde(flatten)]
+    pub figures: BTreeMap<&'static str, Option<f64>>,
+    /// `port` or `starboard`, for a turn.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub side: Option<&'static str>,
+    /// |figure − figure at half the step| (fixed-step methods).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub half_step_difference: Option<BTreeMap<&'static str, Option<f64>>>,
+    /// |figure − figure with rtol and atol a hundred times tighter| (adaptive methods).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tolerance_difference: Option<BTreeMap<&'static str, Option<f64>>>,
+    /// Steps the run took.
+    pub steps: u64,
+    /// What the run could not measure, and why.
+    pub notes: Vec<String>,
+}
+
+/// A manoeuvre's kind and the angles it was run with, in degrees.
+#[derive(Debug, Clone, Copy, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum KindSummary {
+    /// A turning circle.
+    TurningCircle {
+        /// δ.
+        rudder_deg: f64,
+    },
+    /// A zig-zag.
+    Zigzag {
+        /// δ_a.
+        rudder_deg: f64,
+        /// ψ_a.
+        heading_deg: f64,
+    },
+    /// A pull-out.
+    PullOut {
+        /// δ.
+        rudder_deg: f64,
+        /// When the rudder returned to zero, s.
+        release_s: f64,
+    },
+    /// A series of the scene's.
+    RudderSeries,
+}
+
+/// One IMO criterion, judged or not.
+#[derive(Debug, Clone, Serialize)]
+pub struct CriterionSummary {
+    /// Its name.
+    pub criterion: &'static str,
+    /// The manoeuvre it is read from.
+    pub manoeuvre: String,
+    /// The figure, `null` where the manoeuvre did not give it.
+    pub value: Option<f64>,
+    /// The largest value allowed.
+    pub limit: f64,
+    /// `m` or `deg`.
+    pub unit: &'static str,
+    /// Whether the ship meets it; `null` when not judged.
+    pub pass: Option<bool>,
+    /// Whether there was a figure to judge.
+    pub judged: bool,
+}
+
+impl ModelSummary {
+    /// The model of `scene` as built.
+    pub fn new(scene: &ShipScene, model: &ShipModel) -> Self {
+        let table = &scene.table;
+        let operations = model.operations();
+        ModelSummary {
+            family: "planar-midship",
+            equations: "4.46 with the added mass and the hydrodynamic polynomial; 4.44",
+            units: match table.units {
+                Units::Prime => "prime",
+                Units::Dimensional => "dimensional",
+            },
+            yaw_inertia: match table.body.yaw_inertia_about {
+                YawInertia::AboutG => "about G",
+                YawInertia::AboutMidship => "about midship",
+            },
+            rigid_body_terms: match table.given_as {
+                RigidBodyTerms::Folded => "folded",
+                RigidBodyTerms::Separate => "separate",
+            },
+            conversion: table.conversions.clone(),
+            terms: model.terms(),
+            operations: OperationsSummary {
+                add: operations.add,
+                mul: operations.mul,
+                div: operations.div,
+            },
+        }
+    }
+}
+
+impl IntegratorSummary {
+    /// The method of `stepper` with the settings it ran with.
+    pub fn new(stepper: &Stepper) -> Self {
+        IntegratorSummary {
+            method: stepper.method.name(),
+            step: stepper.step,
+            rtol: stepper.adaptive.map(|o| o.rtol),
+            atol: stepper.adaptive.map(|o| o.atol),
+        }
+    }
+}
+
+impl NomotoSummary {
+    fn new(nomoto: Option<Nomoto>, speed: f64, length: f64) -> Option<Self> {
+        nomoto.map(|n| NomotoSummary {
+            k_per_s: n.k,
+            t1_s: n.t1,
+            t2_s: n.t2,
+            t3_s: n.t3,
+            t_s: n.t,
+            k_prime: n.k * length / speed,
+            t_prime: n.t * speed / length,
+        })
+    }
+}
+
+/// The largest relative difference between two Nomoto models' K, T₁, T₂, T₃.
+pub fn nomoto_difference(a: Option<Nomoto>, b: Option<Nomoto>) -> Option<f64> {
+    let (a, b) = (a?, b?);
+    let pairs = [(a.k, b.k), (a.t1, b.t1), (a.t2, b.t2), (a.t3, b.t3)];
+    Some(
+        pairs
+            .iter()
+            .map(|(x, y)| (x - y).abs() / x.abs().max(y.abs()))
+            .fold(0.0, f64::max),
+    )
+}
+
+impl LinearSummary {
+    /// The linear model of `scene` in closed form beside the running model's derivative.
+    pub fn new(scene: &ShipScene, model: &ShipModel, linear: &LinearModel) -> Self {
+        let speed = scene.table.design_speed;
+        let closed = linear.nomoto();
+        let (a, b) = linearise(model, speed);
+        let linearised = Nomoto::from_state_space(a, b);
+        LinearSummary {
+            speed_m_s: speed,
+            length_m: scene.length,
+            nomoto: NomotoSummary::new(closed, speed, scene.length),
+            nomoto_of_linearised_model: NomotoSummary::new(linearised, speed, scene.length),
+            largest_relative_difference: nomoto_difference(closed, linearised),
+            det_n_si: linear.det_damping(),
+            stability_index: linear.stability_index(),
+            course_stable: linear.course_stable(),
+            pivot_point_m: linear.pivot_point(),
+            pivot_point_over_length: linear.pivot_point() / scene.length,
+        }
+    }
+}
+
+impl KindSummary {
+    /// The kind of `kind`, its angles in degrees.
+    pub fn new(kind: &ManoeuvreKind) -> Self {
+        match *kind {
+            ManoeuvreKind::TurningCircle { rudder } => KindSummary::TurningCircle {
+                rudder_deg: rudder.to_degrees(),
+            },
+            ManoeuvreKind::ZigZag { rudder, heading } => KindSummary::Zigzag {
+                rudder_deg: rudder.to_degrees(),
+                heading_deg: heading.to_degrees(),
+            },
+            ManoeuvreKind::PullOut { rudder, release } => KindSummary::PullOut {
+                rudder_deg: rudder.to_degrees(),
+                release_s: release,
+            },
+            ManoeuvreKind::Series(_) => KindSummary::RudderSeries,
+        }
+    }
+}
+
+impl ManoeuvreSummary {
+    /// A manoeuvre's figures (`figures`), those of the same run refined by `stepper`'s
+    /// [`Stepper::refined`] (`refined`), and the steps it took.
+    pub fn new(
+        manoeuvre: &Manoeuvre,
+        stepper: &Stepper,
+        (figures, refined): (&Figures, &Figures),
+        steps: u64,
+    ) -> Self {
+        let differences: BTreeMap<&'static str, Option<f64>> = (figures.values.iter())
+            .map(|(key, value)| {
+                let other = refined.get(key);
+                (*key, value.zip(other).map(|(a, b)| (a - b).abs()))
+            })
+            .collect();
+        let adaptive = stepper.method.is_adaptive();
+        ManoeuvreSummary {
+            kind: KindSummary::new(&manoeuvre.kind),
+            execute_s: manoeuvre.execute,
+            duration_s: manoeuvre.duration,
+            figures: figures.values.iter().copied().collect(),
+            side: figures.side,
+            half_step_difference: (!adaptive).then(|| differences.clone()),
+            tolerance_difference: adaptive.then_some(differences),
+            steps,
+            notes: figures.notes.clone(),
+        }
+    }
+}
+
+impl CriterionSummary {
+    /// A criterion as judged.
+    pub fn new(criterion: &Criterion) -> Self {
+        CriterionSummary {
+            criterion: criterion.name,
+            manoeuvre: criterion.manoeuvre.clone(),
+            value: criterion.value,
+            limit: criterion.limit,
+            unit: criterion.unit,
+            pass: criterion.pass(),
+            judged: criterion.value.is_some(),
+        }
+    }
+}
