@@ -3,16 +3,13 @@
 //! against its conversion, mirror symmetry, the figures' convergence, and the scenes' numbers
 //! against the published data.
 
-#[path = "common/random.rs"]
-mod random;
-
 use eom::ship::linear::{LinearModel, Nomoto, linearise};
 use eom::ship::manoeuvre::{Figures, Manoeuvre, ManoeuvreKind, Sample, run};
 use eom::ship::table::ShipTable;
 use eom::ship::{RigidBodyTerms, ShipModel, ShipScene};
 use eom_codegen::model::ship::{Force, Units, YawInertia};
+use eom_test_support::random::Random;
 use nalgebra::{Matrix3, Vector3};
-use random::Random;
 
 fn scene(file: &str) -> ShipScene {
     ShipScene::load(std::path::Path::new(&format!("scenes/{file}"))).unwrap()
