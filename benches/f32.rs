@@ -12,9 +12,6 @@
 //!
 //! ratio = f64's ns per call over f32's: above 1, f32 is faster.
 
-#[path = "models/bodies.rs"]
-mod bodies;
-
 use eom::models::{self, Model};
 use std::hint::black_box;
 use std::time::Instant;
@@ -122,7 +119,7 @@ macro_rules! spatial_rows {
         }
     };
     (@item $module:ident, $type:ident, Spatial($symmetry:ident, $kinematics:ident)) => {
-        let tensor = bodies::tensor_of(models::Symmetry::$symmetry);
+        let tensor = eom_test_support::bodies::tensor_of(models::Symmetry::$symmetry);
         let wide = models::$type::<f64>::new(5.0, &tensor).expect("a valid body");
         let single = models::$type::<f32>::new(5.0, &tensor).expect("a valid body");
         spatial_rows!(@rows $module, $kinematics, (&wide, &single));

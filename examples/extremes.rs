@@ -14,11 +14,7 @@ use std::fmt::Write;
 use eom::reference::ReferenceProblem;
 use nalgebra::Vector3;
 
-#[path = "../tests/extremes/double_double.rs"]
-#[allow(dead_code)]
-mod double_double;
-#[path = "../tests/extremes/support.rs"]
-mod support;
+use eom_test_support::extremes as support;
 
 use support::{
     Adaptive, RATES, conditioning, near_symmetric_run, racket, rod_runs, spin_run, tensor_matrix,
@@ -318,7 +314,7 @@ fn main() {
         "## Inertia ratios of 10⁶ and nearly equal moments: the rates\n\n\
          Each form computes ω̇ = [I]⁻¹(−ω × [I]ω) from f64 data. With the f64 entries of [I] \
          and ω taken as exact, a double-double (106-bit) solve of Euler's equations 4.51 by \
-         Cramer's rule (`tests/extremes/double_double.rs`) is the exact answer to about \
+         Cramer's rule (`tests/support/src/double_double.rs`) is the exact answer to about \
          10⁻²⁵, and each form's error is measured against it over {SAMPLES} random ω \
          (magnitudes 10⁻³ to 10³ rad/s) as\n\n\
          ρ = abs(ω̇ − ω̇ₑₓ) / (ε abs([I]⁻¹) abs(ω) abs([I]ω)),\n\n\

@@ -18,11 +18,7 @@ use eom::models::{Constant, Model};
 use eom::reference::ReferenceProblem;
 use nalgebra::{SVector, Vector3};
 
-#[path = "../tests/extremes/double_double.rs"]
-#[allow(dead_code)]
-mod double_double;
-#[path = "../tests/extremes/support.rs"]
-mod support;
+use eom_test_support::extremes as support;
 
 use eom::generic::{quaternion_state_of_rotation, rotation_of_quaternion_state};
 use support::{principal_model, racket, rotation_gap, top};

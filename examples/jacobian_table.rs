@@ -8,12 +8,9 @@
 //! cargo run --release --example jacobian_table
 //! ```
 
-#[path = "../benches/jacobian/models.rs"]
-mod models;
-
 use eom::models::Model;
 use eom_codegen::emit::{Operations, generate};
-use models::{Sink, by_dual_numbers, each_model, emitted, point};
+use eom_test_support::jacobian::{Sink, by_dual_numbers, each_model, emitted, point};
 use num_dual::Dual64;
 use std::hint::black_box;
 use std::time::Instant;

@@ -21,9 +21,6 @@ use eom::{InertiaTensor, PendulumParameters};
 use nalgebra::{SVector, Vector2, Vector3};
 use std::hint::black_box;
 
-#[path = "../benches/models/bodies.rs"]
-mod bodies;
-
 /// Distinct states, built before the calls so that their cost does not depend on the count.
 const STATES: usize = 64;
 
@@ -69,7 +66,7 @@ fn class_tensor(model: &str) -> InertiaTensor {
     let symmetry = catalog_entry(model)
         .and_then(|info| info.symmetry)
         .unwrap_or(Symmetry::Principal);
-    bodies::tensor_of(symmetry)
+    eom_test_support::bodies::tensor_of(symmetry)
 }
 
 /// The catalog's entry of `model`, named with or without its `spatial_` prefix.
@@ -150,10 +147,10 @@ macro_rules! generated_calls {
     (@model $type:ident, Pendulum) => { models::$type::<f64>::new(&pendulum()) };
     (@model $type:ident, PlanarMidship) => { models::$type::<f64>::new(5.0, 4.0, 0.3).ok()? };
     (@model $type:ident, Spatial($symmetry:ident, $kinematics:ident)) => {
-        models::$type::<f64>::new(5.0, &bodies::tensor_of(Symmetry::$symmetry)).ok()?
+        models::$type::<f64>::new(5.0, &eom_test_support::bodies::tensor_of(Symmetry::$symmetry)).ok()?
     };
     (@model $type:ident, Top($kinematics:ident)) => {
-        models::$type::<f64>::new(5.0, &bodies::tensor_of(Symmetry::Principal), 0.3, 9.81).ok()?
+        models::$type::<f64>::new(5.0, &eom_test_support::bodies::tensor_of(Symmetry::Principal), 0.3, 9.81).ok()?
     };
     (@model $type:ident, $planar:ident) => { models::$type::<f64>::new(5.0, 4.0).ok()? };
     (@state Pendulum) => { pendulum_state };

@@ -16,8 +16,11 @@
 //! | exact solutions and invariants for judging runs | [`reference`](mod@reference), [`energy`], [`elliptic`] |
 //! | the swing test: radius of gyration from a pendulum's period | [`swing`] |
 //! | ship manoeuvring: a hydrodynamic table on 4.46, the rudder, the standard manoeuvres, IMO criteria, Nomoto (feature `ship`) | `ship` |
-//! | the JSON inputs of `eom eval`, read to the nearest binary64 (feature `cli`) | `eval` |
-//! | what a run writes besides its numbers: the SVG plots (feature `cli`) | `output` |
+//! | what a run writes: its output folder, the trajectory (CSV) and the summary (JSON) | [`output`] |
+//!
+//! The `eom` command is a crate of its own (`eom-cli`): its plots, its 3-D view and its
+//! terminal output bring crates (clap, plotters, indicatif) that a program using this library
+//! does not build.
 //!
 //! A generated model under its loads is an ODE system, so integrating one takes no adapter:
 //!
@@ -46,15 +49,12 @@
 pub mod batch;
 pub mod elliptic;
 pub mod energy;
-#[cfg(feature = "cli")]
-pub mod eval;
 pub mod generic;
 mod inertia;
 pub mod integrate;
 pub mod linear;
 pub mod mass;
 pub mod models;
-#[cfg(feature = "cli")]
 pub mod output;
 mod pendulum;
 pub mod reference;

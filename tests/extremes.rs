@@ -13,11 +13,7 @@
 
 #[path = "extremes/conditioning.rs"]
 mod conditioning;
-#[path = "extremes/double_double.rs"]
-mod double_double;
 #[path = "extremes/single_precision.rs"]
 mod single_precision;
 #[path = "extremes/spin.rs"]
 mod spin;
-#[path = "extremes/support.rs"]
-mod support;

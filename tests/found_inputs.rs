@@ -1,4 +1,4 @@
-//! Inputs that `tests/fuzz_inputs.rs` found, each once a panic, an abort or an untyped
+//! Inputs that `app/tests/fuzz_inputs.rs` found, each once a panic, an abort or an untyped
 //! failure, kept as they were found.
 
 use eom::scene::{Problem, Scene, SceneError, sweep};

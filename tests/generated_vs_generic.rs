@@ -4,24 +4,22 @@
 //! whose pruned products are zero, f32 against f64, and SIMD lanes (f64×4, f32×8) against
 //! the scalar model, bit for bit.
 //!
-//! Every comparison is relative to the size of the terms of each output (see `common`), not
+//! Every comparison is relative to the size of the terms of each output (see `eom_test_support::properties`), not
 //! to the output itself, because the two forms add the same terms in different orders and an
 //! output may cancel.
 
-#[macro_use]
-mod common;
-
-use common::{
-    Kinematics, PendulumCase, Pitch, PlanarCase, Spatial, SpatialCase, Symmetry, at_g_scale,
-    generated, generic, inverse_scale, midship_scale, pendulum_case, pendulum_scale, planar_case,
-    relative_gap, space_fixed_scale, spatial_case, spatial_scale,
-};
 use eom::generic::{self, ModelError};
 use eom::models::{
     Model, Pendulum, PlanarAtG, PlanarMidship, PlanarSpaceFixed, SpatialFullEuler,
     SpatialFullQuaternion, SpatialPrincipalQuaternion, SpatialXzEuler, SpatialXzQuaternion,
 };
 use eom::{InertiaTensor, PendulumParameters};
+use eom_test_support::properties;
+use eom_test_support::properties::{
+    Kinematics, PendulumCase, Pitch, PlanarCase, Spatial, SpatialCase, Symmetry, at_g_scale,
+    generated, generic, inverse_scale, midship_scale, pendulum_case, pendulum_scale, planar_case,
+    relative_gap, space_fixed_scale, spatial_case, spatial_scale,
+};
 use nalgebra::{Quaternion, UnitQuaternion, Vector3, Vector6};
 use simba::scalar::SupersetOf;
 use simba::simd::{SimdRealField, WideF32x8, WideF64x4};
@@ -43,7 +41,7 @@ use simba::simd::{SimdRealField, WideF32x8, WideF64x4};
 /// few ε of the terms, as at any other pitch. What no tolerance here absorbs is a pitch that
 /// differs by an ulp between the two: that changes sec θ by ε/|cos θ| of itself, up to
 /// 2e-4 at 1e-12 rad, which is why every input is read to the nearest double
-/// (`tests/exact_inputs.rs`).
+/// (`app/tests/exact_inputs.rs`).
 ///
 /// Near the vertical the Euler rates are also held to [`EULER_RATES_TOLERANCE`], without the
 /// inverse of [I] that the 1e-12 is made for.

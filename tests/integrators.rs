@@ -2,6 +2,7 @@
 //! their order of convergence is measured on problems with exact solutions, their failures
 //! name the culprit, and the geometric integrator conserves what it claims.
 
+use eom_test_support::bodies::{racket, top};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 
@@ -11,22 +12,12 @@ use eom::integrate::{
     Statistics, SymplecticEuler, min_rtol,
 };
 use eom::reference::torque_free::PrincipalBody;
-use eom::reference::{AxisymmetricTop, LargeSwing, PlanarTurn, ReferenceProblem, TennisRacket};
+use eom::reference::{LargeSwing, PlanarTurn, ReferenceProblem};
 use nalgebra::{Quaternion, SVector, UnitQuaternion, Vector1, Vector2, Vector3};
 
 fn pendulum() -> LargeSwing {
     let parameters = PendulumParameters::new(2.0, 3.0, 9.81, 0.5).unwrap();
     LargeSwing::new(&parameters, 150f64.to_radians()).unwrap()
-}
-
-fn racket() -> TennisRacket {
-    let attitude = UnitQuaternion::from_euler_angles(0.3, -0.2, 0.5);
-    TennisRacket::new(Vector3::new(1.0, 2.0, 3.0), 1.0, 0.1, attitude).unwrap()
-}
-
-fn top() -> AxisymmetricTop {
-    let attitude = UnitQuaternion::from_euler_angles(0.1, 0.4, -0.7);
-    AxisymmetricTop::new(2.0, 3.5, Vector3::new(0.6, -0.3, 1.2), attitude).unwrap()
 }
 
 /// The error at the problem's horizon of `method` on `problem`.

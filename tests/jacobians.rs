@@ -9,9 +9,9 @@
 //! row's largest entry (or of one), is some 10⁴ ε: room for rows of a few dozen terms and
 //! their cancellation, far below any wrong term (which changes an entry by its own size).
 
-use eom::InertiaTensor;
 use eom::PendulumParameters;
 use eom::models::{Model, Symmetry};
+use eom_test_support::bodies::tensor;
 use num_dual::Dual64;
 
 /// A repeatable value in [−1, 1) for each (case, index).
@@ -22,25 +22,6 @@ fn pseudo_random(case: u64, index: usize) -> f64 {
     h = (h ^ (h >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
     h ^= h >> 31;
     2.0 * ((h >> 11) as f64 / (1u64 << 53) as f64) - 1.0
-}
-
-fn tensor(class: Symmetry) -> InertiaTensor {
-    let keep = |name: &str, value: f64| {
-        if class.pruned().contains(&name) {
-            0.0
-        } else {
-            value
-        }
-    };
-    InertiaTensor::new(
-        2.0,
-        3.0,
-        4.5,
-        keep("Ixy", 0.1),
-        keep("Iyz", -0.05),
-        keep("Ixz", 0.2),
-    )
-    .unwrap()
 }
 
 /// The states a model is checked at: random ones of several sizes, then the extremes.

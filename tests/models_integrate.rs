@@ -4,9 +4,10 @@
 //! pendulum and the top report, 4.35), so DOP853 at a tight tolerance must keep it; with a
 //! constant load the change of kinetic energy must equal the work done.
 
+use eom::PendulumParameters;
 use eom::integrate::{AdaptiveOptions, Dop853, Integrator};
 use eom::models::{Constant, Kinematics, Model, Symmetry};
-use eom::{InertiaTensor, PendulumParameters};
+use eom_test_support::bodies::tensor;
 use nalgebra::SVector;
 
 /// DOP853 at rtol = atol = 1e-12 over a few periods of the motion: the local errors are
@@ -17,26 +18,6 @@ const ENERGY_TOLERANCE: f64 = 1e-9;
 
 fn method() -> Dop853 {
     Dop853::new(AdaptiveOptions::dop853(1e-12, 1e-12))
-}
-
-/// A tensor of the class: the products it keeps are non-zero.
-fn tensor(class: Symmetry) -> InertiaTensor {
-    let keep = |name: &str, value: f64| {
-        if class.pruned().contains(&name) {
-            0.0
-        } else {
-            value
-        }
-    };
-    InertiaTensor::new(
-        2.0,
-        3.0,
-        4.5,
-        keep("Ixy", 0.1),
-        keep("Iyz", -0.05),
-        keep("Ixz", 0.2),
-    )
-    .expect("a physical tensor")
 }
 
 /// A tumbling start: translating, spinning near the middle axis, attitude away from the

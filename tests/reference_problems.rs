@@ -5,6 +5,7 @@
 use eom::integrate::OdeSystem;
 use eom::reference::{AxisymmetricTop, LargeSwing, PlanarTurn, ReferenceProblem, TennisRacket};
 use eom::{ParameterError, PendulumParameters};
+use eom_test_support::bodies::{racket, top};
 use nalgebra::{SVector, UnitQuaternion, Vector3};
 
 /// The largest relative mismatch between the central difference of `exact` and the RHS of
@@ -34,16 +35,6 @@ fn pendulum_parameters() -> PendulumParameters {
 fn pendulum() -> LargeSwing {
     // θ₀ = 150°: far outside the small-angle regime (the period is 1.76× that of 4.27).
     LargeSwing::new(&pendulum_parameters(), 150f64.to_radians()).unwrap()
-}
-
-fn racket() -> TennisRacket {
-    let attitude = UnitQuaternion::from_euler_angles(0.3, -0.2, 0.5);
-    TennisRacket::new(Vector3::new(1.0, 2.0, 3.0), 1.0, 0.1, attitude).unwrap()
-}
-
-fn top() -> AxisymmetricTop {
-    let attitude = UnitQuaternion::from_euler_angles(0.1, 0.4, -0.7);
-    AxisymmetricTop::new(2.0, 3.5, Vector3::new(0.6, -0.3, 1.2), attitude).unwrap()
 }
 
 fn turn() -> PlanarTurn {

@@ -3,9 +3,6 @@
 //! against its conversion, mirror symmetry, the figures' convergence, and the scenes' numbers
 //! against the published data.
 
-#[path = "common/random.rs"]
-mod random;
-
 use eom::Model;
 use eom::integrate::Stepper;
 use eom::ship::linear::{LinearModel, Nomoto, linearise};
@@ -13,8 +10,8 @@ use eom::ship::manoeuvre::{Figures, Manoeuvre, ManoeuvreKind, Sample, run};
 use eom::ship::table::ShipTable;
 use eom::ship::{RigidBodyTerms, ShipModel, ShipScene};
 use eom_codegen::model::ship::{Force, Units, YawInertia};
+use eom_test_support::random::Random;
 use nalgebra::{Matrix3, Vector3};
-use random::Random;
 
 fn scene(file: &str) -> ShipScene {
     ShipScene::load(std::path::Path::new(&format!("scenes/{file}"))).unwrap()

@@ -6,20 +6,18 @@
 //! a generated model that satisfies them to round-off at random states has its dynamics right
 //! up to terms that do no work.
 
-#[macro_use]
-mod common;
-
-use common::{
+use eom::energy::kinetic_energy;
+use eom::models::{Model, Pendulum, PlanarAtG, PlanarMidship, PlanarSpaceFixed};
+use eom_test_support::properties;
+use eom_test_support::properties::{
     Kinematics, PendulumCase, Pitch, PlanarCase, Spatial, SpatialCase, Symmetry, at_g_scale,
     generated, inverse_scale, midship_scale, pendulum_case, pendulum_scale, planar_case,
     space_fixed_scale, spatial_case, spatial_scale,
 };
-use eom::energy::kinetic_energy;
-use eom::models::{Model, Pendulum, PlanarAtG, PlanarMidship, PlanarSpaceFixed};
 use nalgebra::{Matrix3, Vector3};
 
 /// An identity evaluated in f64 through a generated right-hand side: the accelerations are
-/// within ~16·(ε/2) of their term sizes (the scale of `common`), and forming the power and
+/// within ~16·(ε/2) of their term sizes (the scale of `eom_test_support::properties`), and forming the power and
 /// M v·v̇ + ω·[I]ω̇ from them adds at most ~8 roundings more, so the two sides differ by at most
 /// ~12ε times the size of the terms; 64ε allows a factor of five.
 const TOLERANCE: f64 = 64.0 * f64::EPSILON;

@@ -11,15 +11,14 @@
 //! in CPU cycles (`spatial_rhs_cycles`, `planar_rhs_cycles`), which a shared machine disturbs
 //! far less.
 
-mod bodies;
 #[cfg(target_os = "linux")]
 mod cycles;
 
-use bodies::tensor_of;
 use criterion::measurement::Measurement;
 use criterion::{BenchmarkId, Criterion, Throughput};
 use eom::generic::{PlanarBody, PlanarMidship, RigidBody};
 use eom::models::{self, Model, generated};
+use eom_test_support::bodies::tensor_of;
 use nalgebra::{SVector, Vector2, Vector3};
 use simba::simd::WideF64x4;
 use std::hint::black_box;

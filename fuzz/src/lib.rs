@@ -1,7 +1,7 @@
 //! What every fuzz target checks: no panic (libFuzzer reports one with its input), every
 //! refusal the crate's error with a message, and an accepted scene builds its model and runs.
 
-use eom::eval::evaluate;
+use eom_cli::eval::evaluate;
 use eom::mass::{BodyFile, Mesh, MeshMass};
 use eom::models::{Family, Kinematics, Symmetry};
 use eom::run::{Row, Sink};

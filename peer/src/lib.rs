@@ -18,8 +18,7 @@ use nalgebra::UnitQuaternion;
 
 /// The bodies of eom's models bench, one per symmetry class: diag(2, 3, 4) turned so that
 /// every product is non-zero (`full`), only I_xz (`xz`), none (`principal`).
-#[path = "../../benches/models/bodies.rs"]
-pub mod bodies;
+pub use eom_test_support::bodies;
 
 /// A right-hand side of SymPy's C: `void f(const double *k, const double *state, const double
 /// *input, double *out)`.

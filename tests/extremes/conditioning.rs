@@ -19,7 +19,9 @@
 
 use nalgebra::Vector3;
 
-use super::support::{ROD_MOMENTS, conditioning, near_symmetric_run, rod_runs, tensor_matrix};
+use eom_test_support::extremes::{
+    ROD_MOMENTS, conditioning, near_symmetric_run, rod_runs, tensor_matrix,
+};
 
 /// The bound on ρ for every form and tensor: four times the largest seen (0.96), which is a
 /// few roundings in each of the products, the cross product and the inverse's entries.
@@ -133,7 +135,8 @@ fn a_thin_rod_tumbles_without_nan_and_keeps_energy_and_momentum() {
     //   Rotate it to principal axes.
     let (tol, t_end) = (1e-10, 100.0);
     let runs = rod_runs(tol, t_end);
-    let cond = super::support::condition(&tensor_matrix(&Vector3::from(ROD_MOMENTS), true));
+    let cond =
+        eom_test_support::extremes::condition(&tensor_matrix(&Vector3::from(ROD_MOMENTS), true));
     let (principal_steps, turned_steps) = (runs.steps.0 as f64, runs.steps.1 as f64);
     let field = cond * f64::EPSILON;
     let context = format!("{runs:?}, cond {cond:e}");
@@ -161,7 +164,7 @@ fn a_body_with_two_moments_equal_to_1e_12_moves_as_the_symmetric_top() {
     let symmetric = near_symmetric_run(0.0, tol, periods);
     let delta = 1e-12;
     let near = near_symmetric_run(delta, tol, periods);
-    let top = super::support::top_of_near_symmetric();
+    let top = eom_test_support::extremes::top_of_near_symmetric();
     let w0 = Vector3::new(0.6, -0.3, 1.2).norm();
     let turned = w0 * periods * eom::reference::ReferenceProblem::t_end(&top);
     let bound = symmetric.error + delta * turned;

@@ -14,7 +14,9 @@ use eom::models::{Constant, Model};
 use eom::reference::ReferenceProblem;
 use nalgebra::{SVector, Vector3};
 
-use super::support::{RACKET_MOMENTS, principal_model, racket, rotation_gap, top, top_moments};
+use eom_test_support::extremes::{
+    RACKET_MOMENTS, principal_model, racket, rotation_gap, top, top_moments,
+};
 
 /// f32's machine epsilon, 2⁻²³.
 const EPS32: f64 = f32::EPSILON as f64;

@@ -10,7 +10,7 @@
 use eom::reference::ReferenceProblem;
 use nalgebra::Vector3;
 
-use super::support::{Adaptive, RATES, SpinRun, racket, spin_run, top, top_moments};
+use eom_test_support::extremes::{Adaptive, RATES, SpinRun, racket, spin_run, top, top_moments};
 
 /// The tolerances (rtol = atol): loose, middling, tight.
 const TOLERANCES: [f64; 3] = [1e-6, 1e-9, 1e-12];
@@ -70,7 +70,7 @@ fn compare(name: &str, rate: f64, fast: &SpinRun, unit: &SpinRun, tol: f64, fact
 
 #[test]
 fn a_racket_spun_at_ten_thousand_rad_per_s_flips_as_accurately_as_at_one() {
-    let moments = Vector3::from(super::support::RACKET_MOMENTS);
+    let moments = Vector3::from(eom_test_support::extremes::RACKET_MOMENTS);
     for method in Adaptive::ALL {
         for tol in TOLERANCES {
             let run = |rate: f64| {

@@ -1,0 +1,249 @@
+//! `eom linear SCENE`: a catalog scene linearised about the point its `[linear]` table names
+//! (by default its initial state), or a ship scene's Nomoto models (`ship.rs`, unchanged).
+//!
+//! It prints the reduced state and what was set aside, whether the point is an equilibrium
+//! (and by how much it is not), the trim, A and B, the modes and the verdict; `--json`
+//! prints the same as one object. With `--out DIR` it also writes `A.csv`, `B.csv` (plain
+//! numbers, rows and columns in the order of `reduced_state` and `inputs`, as a control
+//! toolbox reads them) and `poles.svg`, into a folder taken as `eom run` takes one.
+
+use super::run::Usage;
+use anyhow::Result;
+use eom::linear::{Linearisation, Mode, linearise_scene};
+use eom::output::folder::{Claim, Writer};
+use eom::output::summary::write_atomically;
+use eom::scene::Scene;
+use eom_cli::plots::poles::{POLES, write_pole_plot};
+use serde_json::{Map, Value, json};
+use std::path::{Path, PathBuf};
+
+/// Options of `eom linear`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// A scene: a catalog scene, or a ship scene (with `[hydrodynamics]`).
+    scene: PathBuf,
+    /// Print JSON instead of text.
+    #[arg(long)]
+    json: bool,
+    /// Also write A.csv, B.csv and poles.svg into this folder (catalog scenes).
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Replace an earlier run in --out, or write into a folder eom did not make.
+    #[arg(long)]
+    force: bool,
+}
+
+/// The files `--out` writes.
+const FILES: [&str; 3] = ["A.csv", "B.csv", POLES];
+
+/// Runs `eom linear`.
+pub fn run(args: Args) -> Result<()> {
+    if super::serves::linear_is_ship(&args.scene)? {
+        if args.out.is_some() {
+            return Err(Usage(
+                "eom linear on a ship scene prints its Nomoto models and writes no files; \
+                 leave out --out"
+                    .into(),
+            )
+            .into());
+        }
+        return super::ship::linear(&args.scene, args.json);
+    }
+    let scene = Scene::load(&args.scene)?;
+    let linear = linearise_scene(&scene)?;
+    if let Some(out) = &args.out {
+        let planned: Vec<String> = FILES.map(String::from).to_vec();
+        let _claim = Claim::take(out, args.force, &Writer::Whole, &planned)?;
+        write_files(out, &scene.title, &linear)?;
+    }
+    if args.json {
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&report(&scene, &linear))?
+        );
+    } else {
+        print_text(&scene, &linear);
+        if let Some(out) = &args.out {
+            println!("  written to {}/: {}", out.display(), FILES.join(", "));
+        }
+    }
+    Ok(())
+}
+
+fn write_files(out: &Path, title: &str, linear: &Linearisation) -> Result<()> {
+    write_atomically(&out.join("A.csv"), csv(&linear.a).as_bytes())?;
+    write_atomically(&out.join("B.csv"), csv(&linear.b).as_bytes())?;
+    let poles: Vec<(f64, f64)> = linear.eigenvalues.iter().map(|l| (l.re, l.im)).collect();
+    write_pole_plot(out, title, &poles)?;
+    Ok(())
+}
+
+/// A matrix as CSV: one line per row, numbers in Rust's shortest round-trip form.
+fn csv(matrix: &eom::nalgebra::DMatrix<f64>) -> String {
+    let mut text = String::new();
+    for row in matrix.row_iter() {
+        let cells: Vec<String> = row.iter().map(|v| format!("{v:e}")).collect();
+        text.push_str(&cells.join(","));
+        text.push('\n');
+    }
+    text
+}
+
+fn rows(matrix: &eom::nalgebra::DMatrix<f64>) -> Value {
+    matrix
+        .row_iter()
+        .map(|row| row.iter().copied().collect::<Vec<f64>>())
+        .collect()
+}
+
+/// The JSON report.
+fn report(scene: &Scene, linear: &Linearisation) -> Value {
+    let mut point = Map::new();
+    for (name, value) in linear.state_names.iter().zip(&linear.state) {
+        point.insert((*name).into(), json!(value));
+    }
+    for (name, value) in linear.input_names.iter().zip(&linear.inputs) {
+        point.insert((*name).into(), json!(value));
+    }
+    let residual: Map<String, Value> = linear
+        .reduced_names()
+        .iter()
+        .zip(&linear.residual)
+        .map(|(name, r)| ((*name).to_owned(), json!(r)))
+        .collect();
+    json!({
+        "scene": scene.title,
+        "model": linear.model,
+        "operating_point": point,
+        "equilibrium": linear.equilibrium,
+        "residual": residual,
+        "trim": linear.trimmed.as_ref().map(|(values, steps)| json!({
+            "values": values.iter().map(|(n, v)| (n.clone(), json!(v))).collect::<Map<_, _>>(),
+            "newton_steps": steps,
+        })),
+        "reduced_state": linear.reduced_names(),
+        "set_aside": linear.set_aside_names(),
+        "inputs": linear.input_names,
+        "A": rows(&linear.a),
+        "B": rows(&linear.b),
+        "eigenvalues": linear.eigenvalues.iter().map(|l| json!({"re": l.re, "im": l.im})).collect::<Vec<_>>(),
+        "modes": linear.modes.iter().map(mode_json).collect::<Vec<_>>(),
+        "stable": linear.stability != eom::linear::Stability::Unstable,
+        "stability": linear.stability.describe(),
+        "note": linear.note,
+    })
+}
+
+fn mode_json(mode: &Mode) -> Value {
+    json!({
+        "re": mode.eigenvalue.re,
+        "im": mode.eigenvalue.im,
+        "period_s": mode.period_s,
+        "damping_ratio": mode.damping_ratio,
+        "time_to_double_s": mode.time_to_double_s,
+        "time_to_half_s": mode.time_to_half_s,
+        "dominant": mode.dominant,
+        "name": mode.name,
+        "frequency_in_space_rad_s": mode.frequency_in_space,
+    })
+}
+
+/// A number to six significant digits, or `-`.
+fn number(value: Option<f64>) -> String {
+    value.map_or_else(|| "-".into(), |v| format!("{v:.6}"))
+}
+
+fn print_text(scene: &Scene, linear: &Linearisation) {
+    println!("{}: linearised ({})", scene.title, linear.model);
+    let point: Vec<String> = linear
+        .state_names
+        .iter()
+        .zip(&linear.state)
+        .chain(linear.input_names.iter().zip(&linear.inputs))
+        .map(|(n, v)| format!("{n} = {v:.6}"))
+        .collect();
+    println!("  operating point: {}", point.join(", "));
+    let set_aside = linear.set_aside_names();
+    let aside = if set_aside.is_empty() {
+        "nothing".to_owned()
+    } else {
+        set_aside.join(", ")
+    };
+    println!(
+        "  reduced state: {}; set aside (they grow, or only integrate the rest): {aside}",
+        linear.reduced_names().join(", ")
+    );
+    if let Some((values, steps)) = &linear.trimmed {
+        let values: Vec<String> = values
+            .iter()
+            .map(|(n, v)| format!("{n} = {v:.9}"))
+            .collect();
+        println!("  trimmed in {steps} Newton steps: {}", values.join(", "));
+    }
+    print_equilibrium(linear);
+    print_matrix(
+        "A",
+        &linear.a,
+        &linear.reduced_names(),
+        &linear.reduced_names(),
+    );
+    print_matrix("B", &linear.b, &linear.reduced_names(), &linear.input_names);
+    print_modes(linear);
+    println!("  verdict: {}", linear.stability.describe());
+    if let Some(note) = &linear.note {
+        println!("  note: {note}");
+    }
+}
+
+fn print_equilibrium(linear: &Linearisation) {
+    if linear.equilibrium {
+        println!("  the point is an equilibrium of the reduced state");
+        return;
+    }
+    let (index, rate) = linear
+        .residual
+        .iter()
+        .enumerate()
+        .max_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))
+        .expect("the reduced state is not empty");
+    println!(
+        "  the point is NOT an equilibrium of the reduced state: d{}/dt = {rate:.6e} there \
+         (name free variables in linear.trim to solve for one)",
+        linear.reduced_names()[index]
+    );
+}
+
+fn print_matrix(name: &str, matrix: &eom::nalgebra::DMatrix<f64>, rows: &[&str], columns: &[&str]) {
+    println!(
+        "  {name} (rows: the rates of the reduced state; columns: {}):",
+        columns.join(", ")
+    );
+    for (row, label) in matrix.row_iter().zip(rows) {
+        let cells: Vec<String> = row.iter().map(|v| format!("{v:>13.6e}")).collect();
+        println!("    {label:>10} {}", cells.join(" "));
+    }
+}
+
+fn print_modes(linear: &Linearisation) {
+    println!(
+        "  modes:\n    {:>28} {:>12} {:>10} {:>14} {:>12}  {:<18} name",
+        "eigenvalue [1/s]", "period [s]", "damping", "to double [s]", "to half [s]", "dominant"
+    );
+    for mode in &linear.modes {
+        let l = mode.eigenvalue;
+        let eigenvalue = if l.im > 0.0 {
+            format!("{:.6e} ± {:.6e}i", l.re, l.im)
+        } else {
+            format!("{:.6e}", l.re)
+        };
+        println!(
+            "    {eigenvalue:>28} {:>12} {:>10} {:>14} {:>12}  {:<18} {}",
+            number(mode.period_s),
+            number(mode.damping_ratio),
+            number(mode.time_to_double_s),
+            number(mode.time_to_half_s),
+            mode.dominant.join(", "),
+            mode.name.unwrap_or("")
+        );
+    }
+}

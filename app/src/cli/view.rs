@@ -1,0 +1,471 @@
+//! The 3-D view of a run: the body's shape made from the scene, and the columns kept,
+//! handed to [`eom_cli::view`].
+//!
+//! How each family is drawn, and from what:
+//!
+//! - a spatial body: the uniform box with its mass and principal moments (4.20–4.21 turned
+//!   round), its sides along the principal axes (the inertia tensor's eigenvectors), so a box
+//!   of the same mass and moments turns as the body does; a body in water (buoyancy or
+//!   damping) a solid cylinder from the same moments, along the principal axis nearest
+//!   body x; ω and H = I ω drawn from G;
+//! - the heavy top: a cone from the pivot to a disc at G, its radius from I₃ = M R²/2;
+//! - the pendulum: its rod from the pivot to G and a bob at G;
+//! - a planar body: a plate (sides 2 : 1) with its mass and I_zz, or for a body about
+//!   midship a hull of length 4 √(I_zz/M) (a radius of gyration of L/4); a ship scene's
+//!   hull has its L, and a beam of L/7 where the scene gives none.
+//!
+//! The panel of the page says which of these it drew, and what it assumed.
+
+use anyhow::{Context, Result};
+use eom::Short;
+use eom::models::{Family, Kinematics, state_unit};
+use eom::nalgebra::{Matrix3, UnitQuaternion, Vector3};
+use eom::output::trajectory::Columns;
+use eom::scene::SceneLoads;
+use eom::scene::{Body, Scene};
+use eom_cli::view::{
+    CameraTarget, Shape, SpaceAxes, Vectors, ViewInput, box_sides, cylinder_size, write_view,
+};
+use std::path::{Path, PathBuf};
+
+/// A beam of L over this where a ship scene gives none (a cargo ship's L/B is 6 to 8).
+pub const ASSUMED_LENGTH_OVER_BEAM: f64 = 7.0;
+
+/// Writes `view.html` of a catalog scene's run into `out`.
+pub fn write(scene: &Scene, columns: &Columns, out: &Path) -> Result<PathBuf> {
+    let names = scene.state_names();
+    let readout: Vec<(String, &[f64])> = names
+        .iter()
+        .zip(&columns.state)
+        .map(|(name, values)| (labelled(name), values.as_slice()))
+        .collect();
+    let input = match (&scene.body, scene.selection.info.family) {
+        (Body::Spatial { mass, inertia }, _) => {
+            let kinematics = scene.selection.info.kinematics;
+            let water = in_water(&scene.loads);
+            let mut input = spatial(scene, columns, *mass, inertia.matrix(), kinematics, water);
+            input.readout = readout;
+            input
+        }
+        (
+            Body::Top {
+                mass, inertia, h, ..
+            },
+            _,
+        ) => {
+            let kinematics = scene.selection.info.kinematics;
+            let mut input = top(scene, columns, *mass, inertia.matrix(), *h, kinematics);
+            input.readout = readout;
+            input
+        }
+        (Body::Pendulum(p), _) => {
+            let mut input = pendulum(scene, columns, p.h(), p.i0(), p.mass());
+            input.readout = readout;
+            input
+        }
+        (Body::Planar { mass, izz, .. }, family) => {
+            let mut input = planar(scene, columns, family, *mass, *izz);
+            input.readout = readout;
+            input
+        }
+    };
+    write_view(out, &input).with_context(|| format!("writing the view into {}", out.display()))
+}
+
+/// A state name with its unit, as the panel shows it: `q [rad/s]`.
+fn labelled(name: &str) -> String {
+    match state_unit(name) {
+        Some(unit) => format!("{name} [{unit}]"),
+        None => name.to_string(),
+    }
+}
+
+/// Whether water acts on a spatial body: buoyancy, or any damping.
+fn in_water(loads: &SceneLoads) -> bool {
+    match loads {
+        SceneLoads::Spatial(l) => {
+            l.buoyancy != 0.0 || l.linear.iter().chain(&l.quadratic).any(|c| *c != 0.0)
+        }
+        _ => false,
+    }
+}
+
+/// A matrix as rows.
+fn rows(m: &Matrix3<f64>) -> [[f64; 3]; 3] {
+    [0, 1, 2].map(|r| [m[(r, 0)], m[(r, 1)], m[(r, 2)]])
+}
+
+/// The attitude quaternion of every row, from the state entries at `first` on.
+fn quaternions(columns: &Columns, kinematics: Option<Kinematics>, first: usize) -> [Vec<f64>; 4] {
+    let n = columns.time.len();
+    let mut q: [Vec<f64>; 4] = Default::default();
+    for row in 0..n {
+        let entry = |k: usize| columns.state.get(first + k).map_or(0.0, |c| c[row]);
+        let [w, x, y, z] = match kinematics {
+            Some(Kinematics::Euler) => {
+                let u = UnitQuaternion::from_euler_angles(entry(0), entry(1), entry(2));
+                [u.w, u.i, u.j, u.k]
+            }
+            _ => [entry(0), entry(1), entry(2), entry(3)],
+        };
+        for (column, value) in q.iter_mut().zip([w, x, y, z]) {
+            column.push(value);
+        }
+    }
+    q
+}
+
+/// A quaternion column set of a turn about one body axis by the angles given.
+fn about_axis(angles: &[f64], axis: usize) -> [Vec<f64>; 4] {
+    let mut q: [Vec<f64>; 4] = Default::default();
+    for &angle in angles {
+        let (s, c) = (angle / 2.0).sin_cos();
+        let mut value = [c, 0.0, 0.0, 0.0];
+        value[1 + axis] = s;
+        for (column, v) in q.iter_mut().zip(value) {
+            column.push(v);
+        }
+    }
+    q
+}
+
+/// The largest extent of a path, m.
+fn extent(columns: &[&[f64]]) -> f64 {
+    columns
+        .iter()
+        .map(|c| {
+            let (lo, hi) = c
+                .iter()
+                .filter(|v| v.is_finite())
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+                    (lo.min(*v), hi.max(*v))
+                });
+            if hi >= lo { hi - lo } else { 0.0 }
+        })
+        .fold(0.0, f64::max)
+}
+
+/// A spatial body: a box (or in water a cylinder) in its principal axes.
+fn spatial<'a>(
+    scene: &'a Scene,
+    columns: &'a Columns,
+    mass: f64,
+    inertia: Matrix3<f64>,
+    kinematics: Option<Kinematics>,
+    water: bool,
+) -> ViewInput<'a> {
+    let tensor = eom::InertiaTensor::from_matrix(inertia).ok();
+    let (moments, axes) = tensor.map_or((Vector3::new(1.0, 1.0, 1.0), Matrix3::identity()), |t| {
+        t.principal()
+    });
+    // Right-handed principal axes, so the drawn box is not a mirror image.
+    let axes = if axes.determinant() < 0.0 {
+        let mut a = axes;
+        a.set_column(2, &(-axes.column(2)));
+        a
+    } else {
+        axes
+    };
+    let moments = [moments[0], moments[1], moments[2]];
+    let mut notes = Vec::new();
+    let cylinder = water.then(|| vehicle(mass, moments, axes)).flatten();
+    let (shape, size) = match cylinder {
+        Some((shape, size, note)) => {
+            notes.push(note);
+            (shape, size)
+        }
+        None => {
+            let sides = box_sides(mass, moments);
+            notes.push(format!(
+                "the uniform box of mass {} kg with the principal moments {} kg m² \
+                 (sides {} × {} × {} m), along the principal axes",
+                Short(mass),
+                moments.map(|m| Short(m).to_string()).join(", "),
+                Short(sides[0]),
+                Short(sides[1]),
+                Short(sides[2])
+            ));
+            let size = sides.iter().fold(0.0f64, |m, s| m.max(*s));
+            (
+                Shape::Box {
+                    sides,
+                    axes: rows(&axes),
+                },
+                size,
+            )
+        }
+    };
+    let position = [6, 7, 8].map(|k| columns.state[k].clone());
+    let path = extent(&[&position[0], &position[1], &position[2]]);
+    // A body whose G stays put (a free spin) trails the tip of the axis it spins most about.
+    let trail = if path < 0.5 * size {
+        let spin = (3..6)
+            .max_by(|&a, &b| scene.initial[a].abs().total_cmp(&scene.initial[b].abs()))
+            .unwrap_or(3)
+            - 3;
+        let mut tip = [0.0; 3];
+        tip[spin] = 0.75 * size;
+        (tip, format!("tip of body {}", ["x", "y", "z"][spin]))
+    } else {
+        ([0.0; 3], "G".to_string())
+    };
+    let deepest = position[2]
+        .iter()
+        .filter(|z| z.is_finite())
+        .fold(f64::NEG_INFINITY, |m, z| m.max(*z));
+    let floor = if water { 0.0 } else { deepest + 0.8 * size };
+    if water {
+        notes.push("the blue plane is the water's surface, z = 0".into());
+    }
+    ViewInput {
+        title: &scene.title,
+        shape,
+        axes: SpaceAxes::ZDown,
+        time: &columns.time,
+        position,
+        attitude: quaternions(columns, kinematics, 9),
+        readout: Vec::new(),
+        vectors: Some(Vectors {
+            omega: [3, 4, 5],
+            inertia: rows(&inertia),
+        }),
+        trail,
+        camera: CameraTarget::Follow,
+        floor,
+        water,
+        notes,
+    }
+}
+
+/// A vehicle: the solid cylinder with the body's mass and moments, along the principal axis
+/// nearest body x; `None` where no cylinder has them.
+fn vehicle(mass: f64, moments: [f64; 3], axes: Matrix3<f64>) -> Option<(Shape, f64, String)> {
+    let along = (0..3).max_by(|&a, &b| axes[(0, a)].abs().total_cmp(&axes[(0, b)].abs()))?;
+    let others: Vec<usize> = (0..3).filter(|&k| k != along).collect();
+    let transverse = (moments[others[0]] + moments[others[1]]) / 2.0;
+    let (length, diameter) = cylinder_size(mass, moments[along], transverse)?;
+    // The cylinder's axis first, pointing forward (+x).
+    let sign = axes[(0, along)].signum();
+    let first = axes.column(along) * sign;
+    let second = axes.column(others[0]).into_owned();
+    let third = first.cross(&second);
+    let frame = Matrix3::from_columns(&[first, second, third]);
+    let note = format!(
+        "the solid cylinder of mass {} kg with the moments {} kg m² about its axis and {} kg m² \
+         across it: length {} m, diameter {} m",
+        Short(mass),
+        Short(moments[along]),
+        Short(transverse),
+        Short(length),
+        Short(diameter)
+    );
+    let size = length.max(diameter);
+    Some((
+        Shape::Cylinder {
+            length,
+            diameter,
+            axes: rows(&frame),
+        },
+        size,
+        note,
+    ))
+}
+
+/// The heavy top: a cone from the pivot to a disc at G, Z up.
+fn top<'a>(
+    scene: &'a Scene,
+    columns: &'a Columns,
+    mass: f64,
+    inertia: Matrix3<f64>,
+    h: f64,
+    kinematics: Option<Kinematics>,
+) -> ViewInput<'a> {
+    let n = columns.time.len();
+    let axial = inertia[(2, 2)];
+    let radius = (2.0 * axial / mass).sqrt().clamp(0.2 * h, 1.5 * h);
+    let notes = vec![format!(
+        "a cone from the pivot to a disc at G, h = {} m above it along the body z-axis; \
+         the disc's radius {} m from I₃ = M R²/2",
+        Short(h),
+        Short(radius)
+    )];
+    ViewInput {
+        title: &scene.title,
+        shape: Shape::Top { h, radius },
+        axes: SpaceAxes::ZUp,
+        time: &columns.time,
+        position: [vec![0.0; n], vec![0.0; n], vec![0.0; n]],
+        attitude: quaternions(columns, kinematics, 3),
+        readout: Vec::new(),
+        vectors: Some(Vectors {
+            omega: [0, 1, 2],
+            inertia: rows(&inertia),
+        }),
+        trail: ([0.0, 0.0, h], "G".into()),
+        camera: CameraTarget::Fixed([0.0, 0.0, 0.6 * h]),
+        floor: 0.0,
+        water: false,
+        notes,
+    }
+}
+
+/// The pendulum: a rod from the pivot down to G, swinging in the x–z plane.
+fn pendulum<'a>(
+    scene: &'a Scene,
+    columns: &'a Columns,
+    h: f64,
+    i0: f64,
+    mass: f64,
+) -> ViewInput<'a> {
+    let n = columns.time.len();
+    // A sphere of radius r about G has I_G = (2/5) M r²; drawn no larger than h/3.
+    let i_g = (i0 - mass * h * h).max(0.0);
+    let bob = (2.5 * i_g / mass).sqrt().min(h / 3.0).max(0.05 * h);
+    let notes = vec![format!(
+        "the rod from the pivot to G, h = {} m; θ turns it about the pivot's y-axis; the bob \
+         at G is drawn {} m in radius",
+        Short(h),
+        Short(bob)
+    )];
+    ViewInput {
+        title: &scene.title,
+        shape: Shape::Pendulum { length: h, bob },
+        axes: SpaceAxes::ZDown,
+        time: &columns.time,
+        position: [vec![0.0; n], vec![0.0; n], vec![0.0; n]],
+        attitude: about_axis(&columns.state[0], 1),
+        readout: Vec::new(),
+        vectors: None,
+        trail: ([0.0, 0.0, h], "G".into()),
+        camera: CameraTarget::Fixed([0.0; 3]),
+        floor: 1.4 * h,
+        water: false,
+        notes,
+    }
+}
+
+/// A planar body: a hull about midship, else a plate.
+fn planar<'a>(
+    scene: &'a Scene,
+    columns: &'a Columns,
+    family: Family,
+    mass: f64,
+    izz: f64,
+) -> ViewInput<'a> {
+    let (x, y, psi) = match family {
+        Family::PlanarSpaceFixed => (0, 1, 2),
+        _ => (3, 4, 5),
+    };
+    let n = columns.time.len();
+    let (shape, water, note) = if family == Family::PlanarMidship {
+        let length = 4.0 * (izz / mass).sqrt();
+        let beam = length / ASSUMED_LENGTH_OVER_BEAM;
+        let note = format!(
+            "a hull of length {} m (a radius of gyration of L/4 about G) and beam {} m \
+             (L/B = {} assumed)",
+            Short(length),
+            Short(beam),
+            ASSUMED_LENGTH_OVER_BEAM
+        );
+        (Shape::Hull { length, beam }, true, note)
+    } else {
+        // a² + b² = 12 I_zz/M with a = 2b.
+        let b = (12.0 * izz / (5.0 * mass)).sqrt();
+        let note = format!(
+            "a plate of {} × {} m (sides 2 : 1 assumed) with the mass and I_zz",
+            Short(2.0 * b),
+            Short(b)
+        );
+        let shape = Shape::Box {
+            sides: [2.0 * b, b, 0.1 * b],
+            axes: rows(&Matrix3::identity()),
+        };
+        (shape, false, note)
+    };
+    ViewInput {
+        title: &scene.title,
+        shape,
+        axes: SpaceAxes::ZDown,
+        time: &columns.time,
+        position: [
+            columns.state[x].clone(),
+            columns.state[y].clone(),
+            vec![0.0; n],
+        ],
+        attitude: about_axis(&columns.state[psi], 2),
+        readout: Vec::new(),
+        vectors: None,
+        trail: ([0.0; 3], "the body origin".into()),
+        camera: CameraTarget::Follow,
+        floor: 0.0,
+        water,
+        notes: vec![note],
+    }
+}
+
+/// The columns of a ship's manoeuvre: t and the state u, v, r, X, Y, ψ, δ.
+pub struct ShipColumns<'a> {
+    /// The scene's title and the manoeuvre.
+    pub title: &'a str,
+    /// L, m.
+    pub length: f64,
+    /// t, s.
+    pub time: &'a [f64],
+    /// u, v, r, X, Y, ψ, δ, each with its label.
+    pub state: Vec<(String, &'a [f64])>,
+}
+
+/// Writes a manoeuvre's `view.html` into its folder.
+pub fn write_ship(out: &Path, ship: ShipColumns) -> Result<PathBuf> {
+    let n = ship.time.len();
+    let column = |k: usize| ship.state[k].1;
+    let beam = ship.length / ASSUMED_LENGTH_OVER_BEAM;
+    let note = format!(
+        "the hull of length L = {} m; the scene gives no beam, so B = L/{} = {} m is assumed",
+        Short(ship.length),
+        ASSUMED_LENGTH_OVER_BEAM,
+        Short(beam)
+    );
+    let input = ViewInput {
+        title: ship.title,
+        shape: Shape::Hull {
+            length: ship.length,
+            beam,
+        },
+        axes: SpaceAxes::ZDown,
+        time: ship.time,
+        position: [column(3).to_vec(), column(4).to_vec(), vec![0.0; n]],
+        attitude: about_axis(column(5), 2),
+        readout: ship.state.clone(),
+        vectors: None,
+        trail: ([0.0; 3], "midship".into()),
+        camera: CameraTarget::Follow,
+        floor: 0.0,
+        water: true,
+        notes: vec![note],
+    };
+    write_view(out, &input).with_context(|| format!("writing the view into {}", out.display()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use eom::nalgebra::Rotation3;
+
+    #[test]
+    fn euler_angles_and_the_quaternion_give_one_rotation() {
+        let columns = Columns {
+            time: vec![0.0],
+            state: [0.3, -0.4, 1.1].iter().map(|v| vec![*v]).collect(),
+            energy: vec![],
+            kinetic: vec![],
+        };
+        let q = quaternions(&columns, Some(Kinematics::Euler), 0);
+        let from_q = UnitQuaternion::from_quaternion(eom::nalgebra::Quaternion::new(
+            q[0][0], q[1][0], q[2][0], q[3][0],
+        ))
+        .to_rotation_matrix();
+        let from_euler = Rotation3::from_euler_angles(0.3, -0.4, 1.1);
+        assert!((from_q.matrix() - from_euler.matrix()).abs().max() < 1e-12);
+    }
+}

@@ -1,0 +1,338 @@
+//! `eom run` and `eom linear` on ship scenes, end to end through the binary: the summary's
+//! figures, IMO verdicts and convergence, the files of each manoeuvre, and the errors.
+
+use eom_test_support::child;
+use eom_test_support::cli::{eom, folder, scene_arg, succeeded};
+use std::path::Path;
+
+#[test]
+fn the_mariner_runs_its_manoeuvres_and_is_judged() {
+    let out = folder("mariner");
+    let stdout = succeeded(&eom(&[
+        "run",
+        &scene_arg("mariner.toml"),
+        "--out",
+        out.to_str().unwrap(),
+    ]));
+    assert!(stdout.contains("IMO MSC.137(76)"), "{stdout}");
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let manoeuvre = &summary["manoeuvre"];
+    let turn = &manoeuvre["turning_circle_35"];
+    for key in [
+        "advance_90_m",
+        "transfer_90_m",
+        "tactical_diameter_m",
+        "steady_turning_radius_m",
+        "steady_speed_m_s",
+        "t_90_s",
+        "t_180_s",
+    ] {
+        let value = turn[key]
+            .as_f64()
+            .unwrap_or_else(|| panic!("{key}: {turn}"));
+        assert!(value > 0.0, "{key} = {value}");
+        let moved = turn["half_step_difference"][key].as_f64().unwrap();
+        assert!(moved < 0.01, "{key} moves {moved} when the step is halved");
+    }
+    assert_eq!(turn["side"], "port");
+    // The turn went ahead, one way, and settled: no note qualifies a figure.
+    assert_eq!(turn["notes"], serde_json::json!([]), "{turn}");
+    // The transfer at 180° is more than the transfer at 90°, and the steady diameter is near
+    // the tactical diameter (the turn has settled well before its third half-circle).
+    let number = |v: &serde_json::Value| v.as_f64().unwrap();
+    assert!(number(&turn["tactical_diameter_m"]) > number(&turn["transfer_90_m"]));
+    for name in ["zigzag_10_10", "zigzag_20_20"] {
+        let zigzag = &manoeuvre[name];
+        for key in [
+            "first_overshoot_deg",
+            "second_overshoot_deg",
+            "reach_time_s",
+            "period_s",
+        ] {
+            assert!(number(&zigzag[key]) > 0.0, "{name} {key}: {zigzag}");
+        }
+    }
+    let imo = manoeuvre["imo"].as_array().unwrap();
+    let names: Vec<&str> = imo
+        .iter()
+        .map(|c| c["criterion"].as_str().unwrap())
+        .collect();
+    assert_eq!(
+        names,
+        [
+            "advance",
+            "tactical_diameter",
+            "initial_turning",
+            "first_overshoot_10_10",
+            "second_overshoot_10_10",
+            "first_overshoot_20_20"
+        ]
+    );
+    for criterion in imo {
+        assert_eq!(criterion["judged"], true, "{criterion}");
+        let pass = number(&criterion["value"]) <= number(&criterion["limit"]);
+        assert_eq!(criterion["pass"].as_bool(), Some(pass), "{criterion}");
+    }
+    // L/V = 20.85 s: the 10°/10° first-overshoot limit is 5 + ½ L/V degrees.
+    let first = imo
+        .iter()
+        .find(|c| c["criterion"] == "first_overshoot_10_10")
+        .unwrap();
+    assert!((number(&first["limit"]) - (5.0 + 0.5 * 160.93 / 7.7175)).abs() < 1e-12);
+    assert!(summary["model"]["conversion"].as_array().unwrap().len() == 6);
+    assert_eq!(summary["linear"]["course_stable"], true);
+    for name in ["turning_circle_35", "zigzag_10_10", "zigzag_20_20"] {
+        let dir = out.join(name);
+        let csv = std::fs::read_to_string(dir.join("trajectory.csv")).unwrap();
+        assert!(
+            csv.starts_with(
+                "t[s],u[m/s],v[m/s],r[rad/s],x[m],y[m],psi[rad],delta[rad],command[rad],distance[m]\n"
+            ),
+            "{}",
+            csv.lines().next().unwrap_or_default()
+        );
+        for svg in ["track.svg", "heading.svg"] {
+            let text = std::fs::read_to_string(dir.join(svg)).unwrap();
+            let document = roxmltree::Document::parse(&text).unwrap();
+            assert!(document.descendants().any(|n| n.has_tag_name("polyline")));
+        }
+    }
+    let track = std::fs::read_to_string(out.join("turning_circle_35/track.svg")).unwrap();
+    assert!(
+        track.contains("tactical diameter"),
+        "the 180° point is marked"
+    );
+}
+
+/// A workboat on a crude made-up table whose turn drags it to a stop and astern.
+const ASTERN_WORKBOAT: &str = r#"
+title = "Made-up workboat (a crude table)"
+[model]
+family = "planar-midship"
+[body]
+length = 20.0
+mass_prime = 0.02
+izz_midship_prime = 0.0012
+x_g_prime = 0.0
+[hydrodynamics]
+units = "prime"
+rigid_body_terms = "separate"
+density = 1025.0
+design_speed = 5.0
+[hydrodynamics.coefficients]
+Xudot = -0.001
+Yvdot = -0.02
+Nrdot = -0.001
+Xu = -0.002
+Xrr = -0.03
+Yv = -0.03
+Yr = 0.005
+Yd = 0.008
+Nv = -0.01
+Nr = -0.005
+Nd = -0.004
+[rudder]
+max_deg = 35.0
+max_rate_deg_s = 5.0
+time_constant_s = 1.0
+[integrator]
+method = "rk4"
+step = 0.05
+[output]
+every = 1.0
+[[manoeuvre]]
+name = "turning_circle_35"
+kind = "turning_circle"
+rudder_deg = 35.0
+duration_s = 600.0
+"#;
+
+#[test]
+fn a_turn_that_goes_astern_gives_no_steady_figures_and_no_verdict_on_them() {
+    let dir = folder("astern");
+    let path = dir.join("workboat.toml");
+    std::fs::write(&path, ASTERN_WORKBOAT).unwrap();
+    let out = dir.join("out");
+    let stdout = succeeded(&eom(&[
+        "run",
+        path.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]));
+    let csv = std::fs::read_to_string(out.join("turning_circle_35/trajectory.csv")).unwrap();
+    let u: Vec<f64> = csv
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').nth(1).unwrap().parse().unwrap())
+        .collect();
+    // The run itself: it goes astern, and the heading still turns past 540°.
+    assert!(u.iter().any(|&u| u < -0.5), "the boat never went astern");
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let turn = &summary["manoeuvre"]["turning_circle_35"];
+    for key in [
+        "advance_90_m",
+        "transfer_90_m",
+        "tactical_diameter_m",
+        "steady_turning_radius_m",
+        "steady_speed_m_s",
+    ] {
+        assert!(turn[key].is_null(), "{key}: {turn}");
+    }
+    let notes: Vec<&str> = turn["notes"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|n| n.as_str().unwrap())
+        .collect();
+    for said in ["went astern (u < 0)", "stopped", "no steady turn"] {
+        assert!(notes.iter().any(|n| n.contains(said)), "{said}: {notes:?}");
+    }
+    for criterion in summary["manoeuvre"]["imo"].as_array().unwrap() {
+        assert_eq!(criterion["judged"], false, "{criterion}");
+        assert!(criterion["pass"].is_null() && criterion["value"].is_null());
+    }
+    assert!(!stdout.contains("pass"), "{stdout}");
+    assert!(stdout.contains("not judged"), "{stdout}");
+}
+
+#[test]
+fn eom_linear_says_the_esso_osaka_is_course_unstable() {
+    let stdout = succeeded(&eom(&["linear", &scene_arg("esso_osaka.toml"), "--json"]));
+    let linear: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    assert_eq!(linear["course_stable"], false, "{linear}");
+    assert!(linear["stability_index"].as_f64().unwrap() < 0.0);
+    assert!(linear["largest_relative_difference"].as_f64().unwrap() < 1e-9);
+    let text = succeeded(&eom(&["linear", &scene_arg("mariner.toml")]));
+    assert!(text.contains(": stable"), "{text}");
+}
+
+#[test]
+fn a_bad_ship_scene_exits_3_naming_the_key() {
+    let dir = folder("bad");
+    let text = std::fs::read_to_string(scene_arg("mariner.toml"))
+        .unwrap()
+        .replace("Yvvr = ", "Yvvq = ");
+    let path = dir.join("bad.toml");
+    std::fs::write(&path, text).unwrap();
+    let output = eom(&[
+        "run",
+        path.to_str().unwrap(),
+        "--out",
+        dir.join("out").to_str().unwrap(),
+    ]);
+    assert_eq!(output.status.code(), Some(3));
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains("hydrodynamics.coefficients.Yvvq"),
+        "{stderr}"
+    );
+    assert!(
+        !dir.join("out").exists(),
+        "nothing is written for a scene that cannot run"
+    );
+}
+
+/// Ctrl-C ends a ship run at its next step: the manoeuvre finished before it keeps its folder,
+/// summary.json says so, and the exit code is 130.
+#[cfg(unix)]
+#[test]
+fn ctrl_c_ends_a_ship_run_keeping_the_finished_manoeuvres() {
+    use std::time::{Duration, Instant};
+    let dir = folder("sigint");
+    let text = std::fs::read_to_string(scene_arg("mariner.toml")).unwrap();
+    // The first manoeuvre short, the second far too long to finish (10⁸ steps: past the
+    // default limit, which the scene raises).
+    let text = text
+        .replacen("duration_s = 1500.0", "duration_s = 300.0", 1)
+        .replacen("duration_s = 800.0", "duration_s = 1.0e7", 1)
+        .replacen("step = 0.1 ", "max_steps = 200_000_000\nstep = 0.1 ", 1);
+    let path = dir.join("long.toml");
+    std::fs::write(&path, text).unwrap();
+    let out = dir.join("out");
+    // The second's trajectory would be 2 GB: it says --large-output, and is ended long before.
+    let mut child = child::spawn_run_with(&path, &out, &["--large-output"]);
+    let first = out.join("turning_circle_35").join("heading.svg");
+    let clock = Instant::now();
+    while !first.exists() {
+        assert!(
+            clock.elapsed() < Duration::from_secs(120),
+            "the first manoeuvre never ended"
+        );
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    std::thread::sleep(Duration::from_millis(200));
+    let pid = libc::pid_t::try_from(child.id()).unwrap();
+    // SAFETY: kill(2) on the child's own pid, which has not been waited for yet.
+    assert_eq!(unsafe { libc::kill(pid, libc::SIGINT) }, 0);
+    let status = child::wait_for_exit(&mut child);
+    let stderr = child::stderr(&mut child);
+    assert_eq!(status.code(), Some(130), "{stderr}");
+    assert!(stderr.contains("interrupted by"), "{stderr}");
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(summary["interrupted"], true);
+    assert!(
+        summary["manoeuvre"]["turning_circle_35"]["advance_90_m"]
+            .as_f64()
+            .is_some()
+    );
+    assert!(summary["manoeuvre"]["zigzag_10_10"].is_null());
+}
+
+/// The Mariner's turning circle over three rudder angles: one sweep run whole and as two
+/// shards gives the same table, case for case, with each case's figures and IMO verdicts.
+#[test]
+fn a_ship_sweep_over_the_rudder_runs_whole_or_in_shards_alike() {
+    let dir = folder("sweep");
+    let text = std::fs::read_to_string(scene_arg("mariner.toml")).unwrap();
+    let approach = &text[..text.find("[[manoeuvre]]").unwrap()];
+    let text = format!(
+        "{approach}[[manoeuvre]]\nname = \"turn\"\nkind = \"turning_circle\"\nrudder_deg = 35.0\n\
+         duration_s = 450.0\n\n[sweep]\n\"manoeuvre[0].rudder_deg\" = [15.0, 25.0, 35.0]\n"
+    );
+    let path = dir.join("sweep.toml");
+    std::fs::write(&path, text).unwrap();
+    let run = |out: &Path, shard: Option<&str>| {
+        let mut args = vec![
+            "run",
+            path.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ];
+        args.extend(shard.map(|s| ["--shard", s]).into_iter().flatten());
+        succeeded(&eom(&args))
+    };
+    let whole = dir.join("whole");
+    run(&whole, None);
+    let table = std::fs::read_to_string(whole.join("sweep.csv")).unwrap();
+    let mut lines = table.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    assert_eq!(
+        &header[..3],
+        ["case", "manoeuvre[0].rudder_deg", "turn.advance_90_m"]
+    );
+    assert!(header.contains(&"imo.tactical_diameter.pass"), "{header:?}");
+    let column = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows.len(), 3);
+    // The harder the rudder, the tighter the turn.
+    let diameter: Vec<f64> = rows
+        .iter()
+        .map(|r| r[column("turn.tactical_diameter_m")].parse().unwrap())
+        .collect();
+    assert!(
+        diameter[0] > diameter[1] && diameter[1] > diameter[2],
+        "{diameter:?}"
+    );
+    for k in 0..3 {
+        assert!(whole.join(format!("case-{k:04}/summary.json")).exists());
+    }
+    let sharded = dir.join("sharded");
+    run(&sharded, Some("0/2"));
+    run(&sharded, Some("1/2"));
+    succeeded(&eom(&["sweep-merge", sharded.to_str().unwrap()]));
+    let merged = std::fs::read_to_string(sharded.join("sweep.csv")).unwrap();
+    assert_eq!(merged, table);
+}

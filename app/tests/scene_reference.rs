@@ -1,0 +1,172 @@
+//! The scene reference against what it describes: every template `eom new` prints runs as
+//! printed and writes its units into trajectory.csv; an unknown family is a usage error that
+//! lists the families; docs/scenes.md is what the reference makes; and the key table and the
+//! serde schema of scene files hold the same keys, both ways: every key the table lists is
+//! accepted by the reader with its example value, and every key the reader accepts is in
+//! the table (found by walking the schema itself, so a key added to a table struct and not
+//! to the reference fails here).
+
+use eom::scene::file::SceneFile;
+use eom::scene::reference::{Key, REGENERATE, SceneFamily, keys_of, markdown, template};
+use eom::ship::scene::ShipSceneFile;
+use eom_test_support::cli::{eom, folder, root};
+use eom_test_support::schema;
+use std::collections::BTreeSet;
+use std::path::{Path, PathBuf};
+
+/// Every trajectory.csv under `out`, at any depth (a ship writes one per manoeuvre).
+fn trajectories(out: &Path) -> Vec<PathBuf> {
+    let mut found = Vec::new();
+    for entry in std::fs::read_dir(out).unwrap() {
+        let path = entry.unwrap().path();
+        if path.is_dir() {
+            found.extend(trajectories(&path));
+        } else if path.file_name().is_some_and(|n| n == "trajectory.csv") {
+            found.push(path);
+        }
+    }
+    found
+}
+
+#[test]
+fn every_template_runs_as_printed_and_labels_its_columns_with_units() {
+    let dir = folder("templates");
+    for family in SceneFamily::ALL {
+        let name = family.name();
+        let printed = eom(&["new", name]);
+        assert!(printed.status.success(), "eom new {name}");
+        let text = String::from_utf8(printed.stdout).unwrap();
+        assert_eq!(text, template(family), "eom new {name} prints the template");
+        let scene = dir.join(format!("{name}.toml"));
+        std::fs::write(&scene, &text).unwrap();
+        let out = dir.join(name);
+        let ran = eom(&[
+            "run",
+            scene.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert!(
+            ran.status.success(),
+            "eom run of `eom new {name}`: {}",
+            String::from_utf8_lossy(&ran.stderr)
+        );
+        let files = trajectories(&out);
+        assert!(!files.is_empty(), "{name} wrote no trajectory");
+        for file in files {
+            let csv = std::fs::read_to_string(&file).unwrap();
+            let header = csv.lines().next().unwrap();
+            assert!(header.starts_with("t[s],"), "{name}: {header}");
+            for field in header.split(',') {
+                let (column, unit) = field
+                    .strip_suffix(']')
+                    .and_then(|f| f.split_once('['))
+                    .unwrap_or_else(|| panic!("{name}: `{field}` has no unit"));
+                assert!(!column.is_empty() && !unit.is_empty(), "{name}: {field}");
+            }
+            assert!(
+                csv.lines().count() > 2,
+                "{name}: {} has no rows",
+                file.display()
+            );
+        }
+    }
+}
+
+#[test]
+fn an_unknown_family_is_a_usage_error_that_lists_the_families() {
+    let output = eom(&["new", "planar"]);
+    assert_eq!(output.status.code(), Some(2));
+    assert!(output.stdout.is_empty());
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    for family in SceneFamily::ALL {
+        assert!(
+            stderr.contains(family.name()),
+            "{} in {stderr}",
+            family.name()
+        );
+    }
+    let neither = eom(&["new"]);
+    assert_eq!(neither.status.code(), Some(2));
+}
+
+#[test]
+fn docs_scenes_md_is_what_the_reference_makes() {
+    let path = root().join("docs/scenes.md");
+    let committed = std::fs::read_to_string(&path).unwrap_or_default();
+    assert!(
+        committed == markdown(),
+        "docs/scenes.md is not what src/scene/reference/ makes; regenerate it with\n\n    {REGENERATE}\n"
+    );
+    let printed = eom(&["new", "--reference"]);
+    assert_eq!(String::from_utf8(printed.stdout).unwrap(), markdown());
+}
+
+/// The template of `family` with `key` set to its example, as a TOML table.
+fn with_example(family: SceneFamily, key: &Key) -> toml::Table {
+    let mut table: toml::Table = template(family).parse().unwrap();
+    let example = key.example_for(family);
+    let value = if key.name() == "*" {
+        toml::Value::Table(example.parse().unwrap())
+    } else {
+        let wrapped: toml::Table = format!("value = {example}").parse().unwrap();
+        wrapped["value"].clone()
+    };
+    schema::set(&mut table, key.path, value);
+    table
+}
+
+#[test]
+fn every_key_in_the_reference_is_read_with_its_example() {
+    for family in SceneFamily::ALL {
+        for key in keys_of(family) {
+            let table = toml::Value::Table(with_example(family, key));
+            let read = match family {
+                SceneFamily::Ship => table.try_into::<ShipSceneFile>().map(drop),
+                SceneFamily::Catalog(_) => table.try_into::<SceneFile>().map(drop),
+            };
+            assert!(
+                read.is_ok(),
+                "{}: {} = {}: {:?}",
+                family.name(),
+                key.path,
+                key.example,
+                read.err()
+            );
+        }
+    }
+}
+
+/// The paths the reference gives `families`.
+fn reference_paths(families: &[SceneFamily]) -> BTreeSet<String> {
+    families
+        .iter()
+        .flat_map(|f| keys_of(*f))
+        .map(|k| k.path.to_owned())
+        .collect()
+}
+
+#[test]
+fn every_key_the_reader_accepts_is_in_the_reference() {
+    let catalog: Vec<SceneFamily> = SceneFamily::ALL
+        .into_iter()
+        .filter(|f| *f != SceneFamily::Ship)
+        .collect();
+    let walked = schema::keys::<SceneFile>();
+    assert!(walked.contains("integrator.step") && walked.contains("sweep.*"));
+    assert_eq!(walked, reference_paths(&catalog), "catalog scenes");
+    let walked = schema::keys::<ShipSceneFile>();
+    assert!(walked.contains("manoeuvre[].kind"));
+    assert_eq!(walked, reference_paths(&[SceneFamily::Ship]), "ship scenes");
+}
+
+#[test]
+fn a_key_of_another_family_is_refused_naming_what_the_family_takes() {
+    let text = template(SceneFamily::ALL[0]).replace("[body]\n", "[body]\nizz = 3.0\n");
+    let error = eom::scene::Scene::parse(&text, "<scene>", Path::new(".")).unwrap_err();
+    assert_eq!(error.key, "body.izz");
+    let message = error.to_string();
+    for key in keys_of(SceneFamily::ALL[0]).filter(|k| k.table() == "body") {
+        assert!(message.contains(key.name()), "{message}");
+    }
+}

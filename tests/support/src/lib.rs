@@ -1,0 +1,22 @@
+//! What eom's tests, benches and examples share, so that each is written once:
+//!
+//! | what | where |
+//! |---|---|
+//! | the `eom` binary, the example scenes, a fresh folder per test | [`cli`] (and [`child`]: a run in the background; [`eval`]: `eom eval` on standard input) |
+//! | the property tests' runner, random cases and the size of the terms | [`properties`] |
+//! | bodies several tests, benches and examples are built on | [`bodies`] |
+//! | every catalog model over f64 and dual numbers, for the Jacobian bench and its table | [`jacobian`] |
+//! | the bodies, runs and measures of the tests at the extremes | [`extremes`], [`double_double`] |
+//! | a fixed stream of random draws | [`random`] |
+//! | the keys a serde schema accepts | [`schema`] |
+
+pub mod bodies;
+pub mod child;
+pub mod cli;
+pub mod double_double;
+pub mod eval;
+pub mod extremes;
+pub mod jacobian;
+pub mod properties;
+pub mod random;
+pub mod schema;
