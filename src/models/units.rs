@@ -1,7 +1,7 @@
 //! The unit of a state entry, by its name.
 //!
 //! The layouts themselves are the catalog's ([`ModelInfo::state`](super::ModelInfo)) and the
-//! ship model's (`eom_codegen::model::ship::STATE`); this module knows only what each name
+//! ship model's (`ship::model::STATE`, with the feature `ship`); this module knows only what each name
 //! measures, so that every file that labels a state column (the trajectory header, the scene
 //! reference) reads the unit from one place. The names follow the chapter: u, v, w body
 //! velocities (m/s), p, q, r body rates (rad/s), x, y, z positions (m), φ, θ, ψ and the

@@ -24,7 +24,7 @@
 use super::model::ShipModel;
 use super::table::ShipTable;
 use crate::models::Model;
-use eom_codegen::model::ship::{Force, Term, Units};
+use super::{Force, Term, Units};
 use num_dual::Dual64;
 use std::collections::BTreeMap;
 

@@ -56,7 +56,7 @@ use crate::integrate::{Method, Stepper};
 use crate::scene::check::{Checker, MethodKeys};
 use crate::scene::{Problem, SceneError};
 use crate::validate::Requirement;
-use eom_codegen::model::ship::{Units, YawInertia};
+use super::{Units, YawInertia};
 use serde::Deserialize;
 use std::collections::BTreeMap;
 use std::path::Path;

@@ -12,7 +12,7 @@ use super::manoeuvre::{Figures, Manoeuvre, ManoeuvreKind};
 use super::table::RigidBodyTerms;
 use super::{ShipModel, ShipScene};
 use crate::integrate::Stepper;
-use eom_codegen::model::ship::{Units, YawInertia};
+use super::{Units, YawInertia};
 use serde::Serialize;
 use std::collections::BTreeMap;
 

@@ -18,7 +18,7 @@
 
 use super::ShipError;
 use crate::validate::Requirement;
-use eom_codegen::model::ship::{ADDED_MASS, Force, Term, Units, VARIABLES, YawInertia};
+use super::{ADDED_MASS, Force, Term, Units, VARIABLES, YawInertia};
 use std::collections::BTreeMap;
 
 /// Whether a table's coefficients hold the rigid-body terms of 4.46.
