@@ -14,6 +14,7 @@
 //! Space axes are X north, Y east, Z down and body axes x forward, y to starboard, z down, as
 //! in the chapter's ship dynamics; angles in a scene file are in degrees, rates in rad/s.
 
+mod any;
 pub(crate) mod check;
 mod error;
 pub mod file;
@@ -24,6 +25,7 @@ pub mod stop;
 pub mod sweep;
 pub mod table;
 
+pub use any::AnyScene;
 pub use error::{Problem, SceneError};
 pub use loads::{
     PendulumLoads, PlanarLoads, PreparedLoads, SceneLoads, SpatialLoads, TopLoads, euler_angles,

@@ -74,7 +74,7 @@ pub fn shard_cases(
         .into_iter()
         .map(|case| {
             Ok(Case {
-                file: deserialize(case.table, name)?,
+                file: read_table(case.table, name)?,
                 index: case.index,
                 values: case.values,
             })
@@ -97,7 +97,7 @@ pub struct TableCase {
 impl TableCase {
     /// The case read as a scene file of type `T`, errors naming the key.
     pub fn read<T: serde::de::DeserializeOwned>(&self, name: &str) -> Result<T, SceneError> {
-        deserialize(self.table.clone(), name)
+        read_table(self.table.clone(), name)
     }
 
     /// The case's values as `key = value, …`, for its title and messages.
@@ -301,7 +301,11 @@ fn table_in_array<'a>(
 }
 
 /// A scene table as a scene file of type `T`, errors naming the key.
-fn deserialize<T: serde::de::DeserializeOwned>(table: Table, name: &str) -> Result<T, SceneError> {
+/// Reads a scene's tables, as [`super::read_as`] reads its text, each error named by its key.
+pub(crate) fn read_table<T: serde::de::DeserializeOwned>(
+    table: Table,
+    name: &str,
+) -> Result<T, SceneError> {
     serde_path_to_error::deserialize(Value::Table(table)).map_err(|e| {
         let key = e.path().to_string();
         let key = if key == "." { String::new() } else { key };

@@ -23,8 +23,8 @@
 
 use super::model::ShipModel;
 use super::table::ShipTable;
-use crate::models::Model;
 use super::{Force, Term, Units};
+use crate::models::Model;
 use num_dual::Dual64;
 use std::collections::BTreeMap;
 

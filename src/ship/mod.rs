@@ -35,12 +35,12 @@ pub mod scene;
 pub mod summary;
 pub mod table;
 
-/// The table's vocabulary, from the generator that builds the model: a term, its load, the
-/// units, and about which point the yaw inertia is given.
-pub use eom_codegen::model::ship::{Force, Term, Units, YawInertia};
 /// The added-mass derivatives' symbols and the motion variables' letters, in the generator's
 /// order (the table reads its names by them).
 pub(crate) use eom_codegen::model::ship::{ADDED_MASS, VARIABLES};
+/// The table's vocabulary, from the generator that builds the model: a term, its load, the
+/// units, and about which point the yaw inertia is given.
+pub use eom_codegen::model::ship::{Force, Term, Units, YawInertia};
 pub use linear::{LinearModel, Nomoto};
 pub use manoeuvre::{Manoeuvre, ManoeuvreKind, ManoeuvreRun};
 pub use model::ShipModel;

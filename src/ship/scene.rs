@@ -52,11 +52,11 @@ use super::ShipError;
 use super::manoeuvre::{Manoeuvre, ManoeuvreKind};
 use super::rudder::{Rudder, Series};
 use super::table::{GivenTable, RigidBodyTerms, ShipBody, ShipTable};
+use super::{Units, YawInertia};
 use crate::integrate::{Method, Stepper};
 use crate::scene::check::{Checker, MethodKeys};
 use crate::scene::{Problem, SceneError};
 use crate::validate::Requirement;
-use super::{Units, YawInertia};
 use serde::Deserialize;
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -214,11 +214,6 @@ pub struct ShipScene {
     pub every: f64,
     /// The manoeuvres.
     pub manoeuvres: Vec<Manoeuvre>,
-}
-
-/// Whether scene text is a ship scene: one with a `[hydrodynamics]` table.
-pub fn is_ship_scene(text: &str) -> bool {
-    toml::from_str::<toml::Table>(text).is_ok_and(|t| t.contains_key("hydrodynamics"))
 }
 
 struct Check<'a> {

@@ -11,8 +11,8 @@ use super::linear::{LinearModel, Nomoto, linearise};
 use super::manoeuvre::{Figures, Manoeuvre, ManoeuvreKind};
 use super::table::RigidBodyTerms;
 use super::{ShipModel, ShipScene};
-use crate::integrate::Stepper;
 use super::{Units, YawInertia};
+use crate::integrate::Stepper;
 use serde::Serialize;
 use std::collections::BTreeMap;
 

@@ -17,8 +17,8 @@
 //! by m′r′(U − U₀)/U elsewhere: the run uses 4.46's exact M u r.
 
 use super::ShipError;
-use crate::validate::Requirement;
 use super::{ADDED_MASS, Force, Term, Units, VARIABLES, YawInertia};
+use crate::validate::Requirement;
 use std::collections::BTreeMap;
 
 /// Whether a table's coefficients hold the rigid-body terms of 4.46.

@@ -23,8 +23,8 @@ use eom::output::summary::{Summary, write_atomically};
 use eom::output::text::printable;
 use eom::output::trajectory::{Columns, TrajectoryWriter};
 use eom::run::{Report, Row, RunError, Sink, run_reporting};
-use eom::scene::sweep::{Case, TableCase, is_swept, parse_shard, shard_cases, shard_tables};
-use eom::scene::{Body, Problem, Scene, SceneError};
+use eom::scene::sweep::{TableCase, is_swept, parse_shard, shard_tables};
+use eom::scene::{AnyScene, Body, Problem, Scene, SceneError};
 use eom::ship::ShipScene;
 use eom_cli::plots::PLOT_FILES;
 use eom_cli::view::VIEW_FILE;
@@ -194,17 +194,25 @@ fn execute(text: &str, name: &str, base: &Path, out: &Path, options: Options) ->
             format!("--shard splits a [sweep]; {name} has none, so every shard would run it whole");
         return Err(Usage(message).into());
     }
-    if eom::ship::scene::is_ship_scene(text) {
-        return execute_ship(text, name, out, options, swept);
-    }
     // Every case is checked before any runs: a bad value fails the sweep at once.
-    let scenes: Vec<(Case, Scene)> = shard_cases(text, name, options.shard)?
+    let cases: Vec<(TableCase, AnyScene)> = shard_tables(text, name, options.shard)?
         .into_iter()
         .map(|case| {
-            let scene = Scene::from_file(&case.file, name, base)?;
+            let scene = AnyScene::from_table(case.table.clone(), name, base)?;
             Ok((case, scene))
         })
         .collect::<Result<_, SceneError>>()?;
+    let mut scenes: Vec<(TableCase, Scene)> = Vec::new();
+    let mut ships: Vec<(TableCase, ShipScene)> = Vec::new();
+    for (case, scene) in cases {
+        match scene {
+            AnyScene::Catalog(scene) => scenes.push((case, *scene)),
+            AnyScene::Ship(scene) => ships.push((case, *scene)),
+        }
+    }
+    if !ships.is_empty() {
+        return execute_ship(ships, text, name, out, options, swept);
+    }
     refuse_large_output(
         scenes.iter().map(|(_, s)| trajectory_bytes(s)).sum(),
         options,
@@ -222,15 +230,14 @@ fn execute(text: &str, name: &str, base: &Path, out: &Path, options: Options) ->
 }
 
 /// Runs a ship scene, or each case of its sweep, into `out`.
-fn execute_ship(text: &str, name: &str, out: &Path, options: Options, swept: bool) -> Result<()> {
-    // Every case is checked before any runs, as for every scene.
-    let cases: Vec<(TableCase, ShipScene)> = shard_tables(text, name, options.shard)?
-        .into_iter()
-        .map(|case| {
-            let scene = ShipScene::from_file(&case.read(name)?, name)?;
-            Ok((case, scene))
-        })
-        .collect::<Result<_, SceneError>>()?;
+fn execute_ship(
+    cases: Vec<(TableCase, ShipScene)>,
+    text: &str,
+    name: &str,
+    out: &Path,
+    options: Options,
+    swept: bool,
+) -> Result<()> {
     let rows: f64 = cases
         .iter()
         .flat_map(|(_, scene)| scene.manoeuvres.iter().map(|m| m.duration / scene.every))
@@ -312,7 +319,7 @@ fn refuse_large_output(bytes: f64, options: Options) -> Result<()> {
 /// Every top-level entry a run may write into its folder: a sweep's case folders and its
 /// table, or a single run's trajectory, summary and plots.
 fn planned_entries(
-    scenes: &[(Case, Scene)],
+    scenes: &[(TableCase, Scene)],
     swept: bool,
     shard: Option<(usize, usize)>,
 ) -> Vec<String> {
@@ -373,7 +380,7 @@ fn run_case(
     name: &str,
     out: &Path,
     progress: bool,
-    case: Option<&Case>,
+    case: Option<&TableCase>,
 ) -> Result<Outcome> {
     let names = scene.state_names();
     // Potential and total energy columns where the model or the loads have a potential.
@@ -632,7 +639,7 @@ fn print_outcome(scene: &Scene, outcome: &Outcome, out: &Path) {
 
 /// Runs every case of a sweep in parallel and writes `sweep.csv`.
 fn run_sweep(
-    scenes: &[(Case, Scene)],
+    scenes: &[(TableCase, Scene)],
     name: &str,
     out: &Path,
     shard: Option<(usize, usize)>,
@@ -698,7 +705,7 @@ fn finish_sweep(
 
 /// `case, <swept keys…>, variant, steps, rhs_evals, wall_seconds, energy_drift, <final
 /// state…>, error`, one line per case.
-fn sweep_table(scenes: &[(Case, Scene)], outcomes: &[Result<Outcome>]) -> String {
+fn sweep_table(scenes: &[(TableCase, Scene)], outcomes: &[Result<Outcome>]) -> String {
     let Some((first, scene)) = scenes.first() else {
         return String::new();
     };

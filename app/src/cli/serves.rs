@@ -3,7 +3,7 @@
 
 use super::run::Usage;
 use anyhow::Result;
-use eom::scene::{Problem, SceneError};
+use eom::scene::{AnyScene, Problem, SceneError};
 use std::path::Path;
 
 /// The kinds of scene the commands tell apart.
@@ -15,17 +15,19 @@ enum Kind {
     Catalog { swept: bool },
 }
 
-/// The scene's text, read, and its kind.
+/// The scene's text, read, and its kind: a swept scene is many; one scene is read and
+/// checked by the one reader of every scene ([`AnyScene`]), which says its kind.
 fn read(path: &Path) -> Result<(String, Kind)> {
     let name = path.display().to_string();
     let text =
         std::fs::read_to_string(path).map_err(|e| SceneError::new(&name, "", Problem::Read(e)))?;
-    let kind = if eom::ship::scene::is_ship_scene(&text) {
-        Kind::Ship
-    } else {
-        Kind::Catalog {
-            swept: eom::scene::sweep::is_swept(&text),
-        }
+    if eom::scene::sweep::is_swept(&text) {
+        return Ok((text, Kind::Catalog { swept: true }));
+    }
+    let base = path.parent().unwrap_or(Path::new("."));
+    let kind = match AnyScene::parse(&text, &name, base)? {
+        AnyScene::Ship(_) => Kind::Ship,
+        AnyScene::Catalog(_) => Kind::Catalog { swept: false },
     };
     Ok((text, kind))
 }
@@ -67,7 +69,8 @@ pub fn require_single_catalog(path: &Path) -> Result<()> {
         .into()),
         Kind::Ship => Err(Usage(format!(
             "eom tradeoff serves catalog scenes (pendulum, planar, spatial, top), whose \
-             integrators it compares; {} is a ship scene, which runs with rk4 only",
+             integrators it compares over one run; {} is a ship scene, whose manoeuvres name \
+             their method in [integrator]",
             path.display()
         ))
         .into()),
