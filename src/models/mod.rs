@@ -34,7 +34,8 @@ mod pendulum;
 mod planar;
 mod units;
 
-pub use info::{ModelInfo, Operations};
+pub use eom_kernel::Operations;
+pub use info::ModelInfo;
 pub use model::{Constant, Driven, Loads, Model};
 pub use units::{ENERGY_UNIT, TIME_UNIT, state_unit, state_with_unit, with_unit};
 
