@@ -88,7 +88,8 @@ mod tests {
     fn torque_free_motion_conserves_kinetic_energy_and_unit_quaternion() {
         let params = example_parameters();
         let auv = auv::Coefficients::<f64>::new(&params);
-        // 4.32 written out by hand, against the emitted energy the contract gives.
+        // 4.32 written out by hand, against the emitted energy the contract gives: the same
+        // ten or so roundings in another order (fused where the build has FMA), a few ε apart.
         let energy = |x: &[f64; 13]| {
             let (p, q, r) = (x[3], x[4], x[5]);
             let rotation = params.ixx * p * p
@@ -99,7 +100,7 @@ mod tests {
         };
         let x = state();
         let e0 = energy(&x);
-        assert!((auv.kinetic_energy(&x) - e0).abs() <= 1e-15 * e0);
+        assert!((auv.kinetic_energy(&x) - e0).abs() <= 1e-14 * e0);
         let free = auv.driven_by(Constant::zero());
         let end = Rk4::new(1e-3).integrate(&free, 0.0, x.into(), 1.0).unwrap();
         let end = end.data.0[0];
