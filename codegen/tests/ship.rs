@@ -111,7 +111,7 @@ fn prime_terms_scale_by_the_instantaneous_speed() {
 }
 
 #[test]
-fn the_mariner_builds_proves_and_emits_only_its_terms() {
+fn the_mariner_builds_proves_and_emits_only_its_terms_and_the_model_contract() {
     for units in [Units::Dimensional, Units::Prime] {
         for yaw_inertia in [YawInertia::AboutG, YawInertia::AboutMidship] {
             let spec = ShipSpec {
@@ -128,6 +128,14 @@ fn the_mariner_builds_proves_and_emits_only_its_terms() {
             }
             // A term the table does not list is not in the code.
             assert!(!source.contains("y_vrr"), "{units:?}");
+            // The proved Jacobians and the contract over them: the prime system's speed U is
+            // an input beside the rudder rate.
+            let inputs = system.inputs.len();
+            let contract = format!(
+                "impl<T: SimdRealField + Copy> eom_kernel::Model<T, 7, {inputs}> for Coefficients<T>"
+            );
+            assert!(source.contains(&contract), "{units:?}: {contract} missing");
+            assert!(source.contains("pub fn state_jacobian<T"), "{units:?}");
         }
     }
 }

@@ -1,4 +1,12 @@
-//! # eom-kernel — the sine and cosine the generated models call
+//! # eom-kernel — what the generated models call and implement
+//!
+//! Everything generated code needs at run time, and nothing more: the fused `sin_cos` and
+//! `mul_add` it calls, the model contract it implements ([`Model`], [`Loads`], [`Constant`],
+//! [`Driven`], in `contract`), and the count of what a call costs ([`Operations`]). A model
+//! emitted from a user's own `build.rs` depends on this crate, not on `eom`; `eom` re-exports
+//! the contract where its users look for it (`eom::Model`, `eom::models`).
+//!
+//! ## The sine and cosine
 //!
 //! In the trigonometric models the three `sin_cos` of the Euler angles (or the one of the
 //! heading) cost more than all the arithmetic around them, and the platform's `sin` and `cos`
@@ -45,12 +53,16 @@
 //! results must match the platform's to the last bit. [`sin_cos_f64`] stays the kernel.
 #![deny(missing_docs)]
 
+mod contract;
 mod kernel;
 mod lanes;
+mod operations;
 mod single;
 
+pub use contract::{Constant, Driven, Loads, Model, scatter};
 pub use kernel::sin_cos as sin_cos_f64;
 pub use lanes::{sin_cos_f32x8, sin_cos_f64x4};
+pub use operations::Operations;
 pub use single::sin_cos as sin_cos_f32;
 
 use core::any::Any;

@@ -16,6 +16,8 @@ use nalgebra::{Matrix2, RealField, SVector, Vector2, Vector3, Vector6};
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PlanarMidship<T> {
     mass: T,
+    /// The yaw moment of inertia about G.
+    izz: T,
     x_g: T,
     inv_mass: T,
     /// `M x_G`, the first moment of mass about midship.
@@ -47,6 +49,7 @@ impl<T: RealField + Copy> PlanarMidship<T> {
         };
         Ok(Self {
             mass: nalgebra::convert(mass),
+            izz: nalgebra::convert(izz),
             x_g: nalgebra::convert(x_g),
             inv_mass: nalgebra::convert(1.0 / mass),
             mass_x_g: nalgebra::convert(mass * x_g),
@@ -80,5 +83,24 @@ impl<T: RealField + Copy> PlanarMidship<T> {
     /// The position of G along the body x axis, `x_G`.
     pub fn x_g(&self) -> T {
         self.x_g
+    }
+
+    /// The yaw moment of inertia about G, `I_zz`.
+    pub fn izz(&self) -> T {
+        self.izz
+    }
+}
+
+impl PlanarMidship<f64> {
+    /// The same body over another scalar (dual numbers, for its Jacobians).
+    pub(super) fn cast<S: RealField + Copy>(&self) -> PlanarMidship<S> {
+        PlanarMidship {
+            mass: nalgebra::convert(self.mass),
+            izz: nalgebra::convert(self.izz),
+            x_g: nalgebra::convert(self.x_g),
+            inv_mass: nalgebra::convert(self.inv_mass),
+            mass_x_g: nalgebra::convert(self.mass_x_g),
+            inverse_mass_matrix: self.inverse_mass_matrix.map(nalgebra::convert),
+        }
     }
 }

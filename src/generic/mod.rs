@@ -21,10 +21,16 @@
 //! | spatial, Euler angles, 4.49 + 4.51 + 4.57 + 4.60 | [`RigidBody::rhs_euler`] | `[u, v, w, p, q, r, x, y, z, φ, θ, ψ]` | force and moment about G, body axes |
 //! | spatial, quaternion, 4.49 + 4.51 | [`RigidBody::rhs_quaternion`] | `[u, v, w, p, q, r, x, y, z, q0, q1, q2, q3]` | force and moment about G, body axes |
 //!
-//! Each method returns the time derivative of its state, entry by entry. The Euler-angle form
+//! Each method returns the time derivative of its state, entry by entry. In f64 each form also
+//! implements the model contract ([`Model`](crate::models::Model)) under the name, state and
+//! inputs of the generated model of the same equations (the space-fixed form as
+//! [`PlanarSpaceFixed`], the rigid body once per kinematics), its Jacobians by dual numbers
+//! through its own rates: so a test integrates a generic form and a generated model through one
+//! trait and one integrator. The Euler-angle form
 //! is singular at pitch `θ = ±90°` (4.60 divides by `cos θ`): it does not panic there, but its
 //! rates are meaningless, so callers check with [`check_pitch`] or use the quaternion form.
 
+mod contract;
 pub(crate) mod error;
 mod kinematics;
 mod midship;
@@ -40,7 +46,7 @@ pub use kinematics::{
 };
 pub use midship::PlanarMidship;
 pub use pendulum::Pendulum;
-pub use planar::{PlanarBody, track};
+pub use planar::{PlanarBody, PlanarSpaceFixed, track};
 pub use spatial::RigidBody;
 pub use state::{
     ATTITUDE, EulerState, POSITION, QuaternionState, RATES, VELOCITY, attitude_quaternion,

@@ -95,3 +95,17 @@ impl<T: RealField + Copy> Pendulum<T> {
         self.h
     }
 }
+
+impl Pendulum<f64> {
+    /// The same pendulum over another scalar (dual numbers, for its Jacobians).
+    pub(super) fn cast<S: RealField + Copy>(&self) -> Pendulum<S> {
+        Pendulum {
+            i0: nalgebra::convert(self.i0),
+            mass: nalgebra::convert(self.mass),
+            g: nalgebra::convert(self.g),
+            h: nalgebra::convert(self.h),
+            stiffness: nalgebra::convert(self.stiffness),
+            inv_i0: nalgebra::convert(self.inv_i0),
+        }
+    }
+}

@@ -87,6 +87,24 @@ impl<T: RealField + Copy> PlanarBody<T> {
     }
 }
 
+impl PlanarBody<f64> {
+    /// The same body over another scalar (dual numbers, for its Jacobians).
+    pub(super) fn cast<S: RealField + Copy>(&self) -> PlanarBody<S> {
+        PlanarBody {
+            mass: nalgebra::convert(self.mass),
+            izz: nalgebra::convert(self.izz),
+            inv_mass: nalgebra::convert(self.inv_mass),
+            inv_izz: nalgebra::convert(self.inv_izz),
+        }
+    }
+}
+
+/// A [`PlanarBody`] in the space-fixed form (4.39), as a model of its own: the body-fixed
+/// form at G and this one integrate different states, so each has its own
+/// [`Model`](crate::models::Model) implementation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PlanarSpaceFixed<T>(pub PlanarBody<T>);
+
 /// The track of the body origin, 4.44: `Ẋ = u cos ψ − v sin ψ`, `Ẏ = u sin ψ + v cos ψ`.
 #[inline]
 pub fn track<T: RealField + Copy>(u: T, v: T, psi: T) -> (T, T) {

@@ -179,3 +179,15 @@ impl<T: RealField + Copy> RigidBody<T> {
         self.inverse_inertia
     }
 }
+
+impl RigidBody<f64> {
+    /// The same body over another scalar (dual numbers, for its Jacobians).
+    pub(super) fn cast<S: RealField + Copy>(&self) -> RigidBody<S> {
+        RigidBody {
+            mass: nalgebra::convert(self.mass),
+            inv_mass: nalgebra::convert(self.inv_mass),
+            inertia: self.inertia.map(nalgebra::convert),
+            inverse_inertia: self.inverse_inertia.map(nalgebra::convert),
+        }
+    }
+}

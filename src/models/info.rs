@@ -1,40 +1,7 @@
 //! What the catalog says about each generated model: its name, family, layouts and cost.
 
 use super::{CATALOG, Family, Kinematics, Symmetry};
-
-/// Operations one call of a generated right-hand side performs (`sin_cos` of one angle counts
-/// as one trigonometric call).
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash)]
-pub struct Operations {
-    /// Additions, subtractions and negations.
-    pub add: u32,
-    /// Multiplications.
-    pub mul: u32,
-    /// Divisions and reciprocals.
-    pub div: u32,
-    /// Square roots.
-    pub sqrt: u32,
-    /// Trigonometric calls.
-    pub trig: u32,
-}
-
-impl Operations {
-    /// From a generated module's `OPERATIONS` table (add, mul, div, sqrt, trig, in that order).
-    pub const fn from_table(table: [(&str, u32); 5]) -> Self {
-        Self {
-            add: table[0].1,
-            mul: table[1].1,
-            div: table[2].1,
-            sqrt: table[3].1,
-            trig: table[4].1,
-        }
-    }
-
-    /// Additions, multiplications and divisions together.
-    pub const fn arithmetic(&self) -> u32 {
-        self.add + self.mul + self.div
-    }
-}
+use eom_kernel::Operations;
 
 /// One generated variant, as the catalog lists it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

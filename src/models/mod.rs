@@ -7,9 +7,12 @@
 //! (finite numbers, mass > 0, a physical inertia tensor, products of inertia zero where the
 //! symmetry class prunes them; the pendulum takes them already validated as a
 //! [`crate::PendulumParameters`]), computes the generated coefficients once, and implements
-//! [`Model`]: the state and input layouts, `rhs` and the kinetic energy (4.32), generic over
-//! the scalar `T: SimdRealField + Copy` (`f32`, `f64`, `simba::simd::WideF64x4` lanes, dual
-//! numbers). [`Model::driven_by`] turns a model and its [`Loads`] into an
+//! [`Model`]: the state and input layouts, `rhs`, the kinetic energy (4.32) and the
+//! Jacobians, generic over the scalar `T: SimdRealField + Copy` (`f32`, `f64`,
+//! `simba::simd::WideF64x4` lanes, dual numbers). That implementation is the generated
+//! coefficients' own, which the emitter writes into each generated file (so a model a user
+//! emits from their own `build.rs` has it too); the contract is `eom-kernel`'s, re-exported
+//! here. [`Model::driven_by`] turns a model and its [`Loads`] into an
 //! [`OdeSystem`](crate::integrate::OdeSystem).
 //!
 //! | type | state | inputs |
@@ -34,7 +37,8 @@ mod pendulum;
 mod planar;
 mod units;
 
-pub use info::{ModelInfo, Operations};
+pub use eom_kernel::Operations;
+pub use info::ModelInfo;
 pub use model::{Constant, Driven, Loads, Model};
 pub use units::{ENERGY_UNIT, TIME_UNIT, state_unit, state_with_unit, with_unit};
 

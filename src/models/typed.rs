@@ -2,8 +2,9 @@
 //! parameters and implementing [`Model`].
 //!
 //! The types are written by one macro over the catalog (`for_each_model!`); what differs
-//! between families is only what `new` takes and checks, and whether the model has a
-//! potential energy.
+//! between families is only what `new` takes and checks. Each type's [`Model`] is that of the
+//! coefficients it holds, which the emitter writes with the generated code; a typed model
+//! adds only the guarantee that its parameters were validated.
 
 use super::model::Model;
 use super::{FromBody, generated, pendulum, planar, spatial, top};
@@ -39,44 +40,38 @@ macro_rules! typed_models {
             }
         }
 
+        // The contract of the emitted coefficients, whose implementation the emitter writes.
         impl<T: SimdRealField + Copy> Model<T, $n, $m> for $type<T> {
-            const NAME: &'static str = stringify!($module);
+            const NAME: &'static str = <generated::$module::Coefficients<T> as Model<T, $n, $m>>::NAME;
             const STATE: [&'static str; $n] = generated::$module::STATE;
             const INPUTS: [&'static str; $m] = generated::$module::INPUTS;
+            const STATE_JACOBIAN: &'static [(usize, usize)] = &generated::$module::STATE_JACOBIAN;
+            const INPUT_JACOBIAN: &'static [(usize, usize)] = &generated::$module::INPUT_JACOBIAN;
 
             #[inline(always)]
             fn rhs(&self, state: &[T; $n], input: &[T; $m]) -> [T; $n] {
-                generated::$module::rhs(&self.coefficients, state, input)
+                self.coefficients.rhs(state, input)
             }
 
             #[inline]
             fn kinetic_energy(&self, state: &[T; $n]) -> T {
-                generated::$module::kinetic_energy(&self.coefficients, state)
+                self.coefficients.kinetic_energy(state)
             }
 
-            const STATE_JACOBIAN: &'static [(usize, usize)] = &generated::$module::STATE_JACOBIAN;
-            const INPUT_JACOBIAN: &'static [(usize, usize)] = &generated::$module::INPUT_JACOBIAN;
-
             fn state_jacobian(&self, state: &[T; $n], input: &[T; $m]) -> [[T; $n]; $n] {
-                let entries = generated::$module::state_jacobian(&self.coefficients, state, input);
-                scatter(&generated::$module::STATE_JACOBIAN, entries)
+                self.coefficients.state_jacobian(state, input)
             }
 
             fn input_jacobian(&self, state: &[T; $n], input: &[T; $m]) -> [[T; $m]; $n] {
-                let entries = generated::$module::input_jacobian(&self.coefficients, state, input);
-                scatter(&generated::$module::INPUT_JACOBIAN, entries)
+                self.coefficients.input_jacobian(state, input)
             }
 
-            typed_models!(@potential $module, $n, $potential);
+            #[inline]
+            fn potential_energy(&self, state: &[T; $n]) -> Option<T> {
+                self.coefficients.potential_energy(state)
+            }
         }
     )*};
-    (@potential $module:ident, $n:literal, true) => {
-        #[inline]
-        fn potential_energy(&self, state: &[T; $n]) -> Option<T> {
-            Some(generated::$module::potential_energy(&self.coefficients, state))
-        }
-    };
-    (@potential $module:ident, $n:literal, false) => {};
     (@new $module:ident, Pendulum) => {
         /// The pendulum of `parameters`, already validated (see
         /// [`PendulumParameters::new`](crate::PendulumParameters::new)).
@@ -133,15 +128,3 @@ macro_rules! typed_models {
 }
 
 for_each_model!(typed_models);
-
-/// A dense matrix from the entries an emitted Jacobian returns and where they sit.
-fn scatter<T: SimdRealField + Copy, const R: usize, const C: usize, const K: usize>(
-    pattern: &[(usize, usize); K],
-    entries: [T; K],
-) -> [[T; C]; R] {
-    let mut dense = [[T::zero(); C]; R];
-    for (&(row, column), value) in pattern.iter().zip(entries) {
-        dense[row][column] = value;
-    }
-    dense
-}

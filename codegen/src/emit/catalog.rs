@@ -8,8 +8,8 @@
 //! model (the typed wrappers, `eom eval`'s dispatch, the tests and the benches). Adding a
 //! variant to [`Model::all`](crate::model::Model::all) adds it everywhere.
 //!
-//! The file expects the including module to have `ModelInfo` and `Operations` in scope (the
-//! runtime defines them) and is formatted like every other generated file.
+//! The file expects the including module to have `ModelInfo` in scope (the runtime defines
+//! it) and is formatted like every other generated file.
 
 use super::Generated;
 use super::rust::ident;
@@ -196,7 +196,7 @@ fn entry_tokens(generated: &Generated) -> TokenStream {
             kinematics: #kinematics,
             state: &generated::#module::STATE,
             inputs: &generated::#module::INPUTS,
-            operations: Operations::from_table(generated::#module::OPERATIONS),
+            operations: generated::#module::OPERATIONS,
             potential_energy: #potential,
         }
     }

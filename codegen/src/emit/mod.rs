@@ -157,8 +157,11 @@ pub fn prove(system: &System) -> Result<Program, EmitError> {
     Ok(program)
 }
 
-/// The Rust source of a system that is not in the catalog, after [`prove`]: for a user's
-/// `build.rs` that wants a ship of its own table compiled.
+/// The Rust source of a system that is not in the catalog, proved like a catalog model's: for
+/// a user's `build.rs` that wants a ship of its own table compiled. The program is built with
+/// its Jacobians ∂f/∂x and ∂f/∂u and folded back against the system and its exact derivative
+/// before it is written, so the file implements the model contract (`eom_kernel::Model`) as
+/// every catalog model's does.
 ///
 /// ```
 /// use eom_codegen::model::ship::{Force, ShipSpec, Term, Units, YawInertia, ship};
@@ -173,9 +176,12 @@ pub fn prove(system: &System) -> Result<Program, EmitError> {
 /// let source = eom_codegen::emit::system_source(&ship("two_term_ship", &spec).unwrap()).unwrap();
 /// assert!(source.contains("pub y_v: f64") && source.contains("pub n_r: f64"));
 /// assert!(!source.contains("y_vvv"));
+/// assert!(source.contains("impl<T: SimdRealField + Copy> eom_kernel::Model<T, 7, 1> for Coefficients<T>"));
 /// ```
 pub fn system_source(system: &System) -> Result<String, EmitError> {
-    let program = prove(system)?;
+    let jacobian = Jacobian::of(system)?;
+    let program = Program::build_with_jacobian(system, &jacobian);
+    fold::verify(system, &program)?;
     rust::source(system, &program, "Expanded").map_err(|source| EmitError::Syntax {
         model: system.name.clone(),
         source,

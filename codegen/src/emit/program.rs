@@ -63,28 +63,8 @@ impl Node {
     }
 }
 
-/// Counts of the operations one call performs (`sin_cos` of one angle counts as one call).
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub struct Operations {
-    /// Additions, subtractions and negations.
-    pub add: u32,
-    /// Multiplications.
-    pub mul: u32,
-    /// Divisions and reciprocals.
-    pub div: u32,
-    /// Square roots.
-    pub sqrt: u32,
-    /// Trigonometric calls.
-    pub trig: u32,
-}
-
-impl Operations {
-    /// A cost for choosing between strategies: trigonometric calls first, then divisions,
-    /// then arithmetic.
-    pub fn cost(&self) -> (u32, u32, u32) {
-        (self.trig, self.div + self.sqrt, self.add + self.mul)
-    }
-}
+/// What a call costs: the one type the emitter, the generated files and `eom` share.
+pub use eom_kernel::Operations;
 
 /// A hoisted coefficient: a parameter expression computed once per parameter set.
 #[derive(Debug, Clone, PartialEq, Eq)]

@@ -2,9 +2,11 @@
 //!
 //! The file holds, for one model: a `Parameters` struct (f64, as the user gives them), a
 //! `Coefficients<T>` struct with every hoisted coefficient, computed once, the layouts and
-//! the operation count as constants, `rhs` and, where the model has them, `kinetic_energy`
-//! and `potential_energy`, generic over simba's `SimdRealField` so the same functions run on
-//! f32, f64, SIMD lanes and dual numbers. Sine and cosine come from `eom_kernel::sin_cos`, one call for all of a
+//! the operation count as constants, `rhs`, its Jacobians and, where the model has them,
+//! `kinetic_energy` and `potential_energy`, generic over simba's `SimdRealField` so the same
+//! functions run on f32, f64, SIMD lanes and dual numbers; and the model contract
+//! (`eom_kernel::Model`) for `Coefficients<T>`, delegating to those functions, so that any
+//! crate that emits a model gets one every integrator of `eom` takes. Sine and cosine come from `eom_kernel::sin_cos`, one call for all of a
 //! function's angles. There are no inner attributes, so the file can be `include!`d inside a
 //! module.
 //!
@@ -105,6 +107,7 @@ fn file_tokens(
         .jacobians
         .as_ref()
         .map(|jacobians| jacobian_tokens(system, program, jacobians, comments));
+    let contract = contract_impl(system, program);
     let functions = quote! { #rhs #jacobians #kinetic #potential };
     // A product that feeds a sum is written `mul_add(a, b, c)` (see `writer.rs`).
     let fused = mentions(&functions, "mul_add");
@@ -116,7 +119,67 @@ fn file_tokens(
         #coefficients
         #constants
         #functions
+        #contract
     }
+}
+
+/// The model contract, `eom_kernel::Model`, for the file's `Coefficients<T>`: every item
+/// delegates to a proved function or constant of the same file, and the dense Jacobians are
+/// `eom_kernel::scatter` of the proved entries onto their pattern. Written where the program
+/// has what the contract asks for, a kinetic energy and the Jacobians (every model the catalog
+/// and [`super::system_source`] emit).
+fn contract_impl(system: &System, program: &Program) -> Option<TokenStream> {
+    program.kinetic_energy.as_ref()?;
+    program.jacobians.as_ref()?;
+    let (n, m) = (
+        Literal::usize_unsuffixed(system.state.len()),
+        Literal::usize_unsuffixed(system.inputs.len()),
+    );
+    let name = &system.name;
+    let potential = program.potential_energy.as_ref().map(|_| {
+        quote! {
+            #[inline]
+            fn potential_energy(&self, state: &[T; #n]) -> Option<T> {
+                Some(potential_energy(self, state))
+            }
+        }
+    });
+    let doc = format!(
+        " The model contract over the coefficients of `{name}`: the functions and constants \
+         above, the Jacobians made dense."
+    );
+    Some(quote! {
+        #[doc = #doc]
+        impl<T: SimdRealField + Copy> eom_kernel::Model<T, #n, #m> for Coefficients<T> {
+            const NAME: &'static str = #name;
+            const STATE: [&'static str; #n] = STATE;
+            const INPUTS: [&'static str; #m] = INPUTS;
+            const STATE_JACOBIAN: &'static [(usize, usize)] = &STATE_JACOBIAN;
+            const INPUT_JACOBIAN: &'static [(usize, usize)] = &INPUT_JACOBIAN;
+
+            #[inline(always)]
+            fn rhs(&self, state: &[T; #n], input: &[T; #m]) -> [T; #n] {
+                rhs(self, state, input)
+            }
+
+            #[inline]
+            fn kinetic_energy(&self, state: &[T; #n]) -> T {
+                kinetic_energy(self, state)
+            }
+
+            #[inline]
+            fn state_jacobian(&self, state: &[T; #n], input: &[T; #m]) -> [[T; #n]; #n] {
+                eom_kernel::scatter(&STATE_JACOBIAN, state_jacobian(self, state, input))
+            }
+
+            #[inline]
+            fn input_jacobian(&self, state: &[T; #n], input: &[T; #m]) -> [[T; #m]; #n] {
+                eom_kernel::scatter(&INPUT_JACOBIAN, input_jacobian(self, state, input))
+            }
+
+            #potential
+        }
+    })
 }
 
 fn parameters_struct(system: &System) -> TokenStream {
@@ -211,14 +274,14 @@ fn constants(system: &System, operations: &Operations) -> TokenStream {
     );
     let state = &system.state;
     let inputs = &system.inputs;
-    let [add, mul, div, sqrt, trig] = [
-        operations.add,
-        operations.mul,
-        operations.div,
-        operations.sqrt,
-        operations.trig,
-    ]
-    .map(Literal::u32_unsuffixed);
+    let Operations {
+        add,
+        mul,
+        div,
+        sqrt,
+        trig,
+    } = *operations;
+    let [add, mul, div, sqrt, trig] = [add, mul, div, sqrt, trig].map(Literal::u32_unsuffixed);
     quote! {
         /// The state layout: the symbol of each entry of the state array.
         pub const STATE: [&str; #n] = [#(#state),*];
@@ -226,7 +289,7 @@ fn constants(system: &System, operations: &Operations) -> TokenStream {
         pub const INPUTS: [&str; #m] = [#(#inputs),*];
         /// Operations per call of [`rhs`]: additions, multiplications, divisions, square roots,
         /// trigonometric calls (`sin_cos` of one angle counts once).
-        pub const OPERATIONS: [(&str, u32); 5] = [("add", #add), ("mul", #mul), ("div", #div), ("sqrt", #sqrt), ("trig", #trig)];
+        pub const OPERATIONS: eom_kernel::Operations = eom_kernel::Operations { add: #add, mul: #mul, div: #div, sqrt: #sqrt, trig: #trig };
     }
 }
 

@@ -47,13 +47,13 @@ pub const STATE: [&str; 2] = ["theta", "theta_dot"];
 pub const INPUTS: [&str; 1] = ["M_O"];
 /// Operations per call of [`rhs`]: additions, multiplications, divisions, square roots,
 /// trigonometric calls (`sin_cos` of one angle counts once).
-pub const OPERATIONS: [(&str, u32); 5] = [
-    ("add", 1),
-    ("mul", 2),
-    ("div", 0),
-    ("sqrt", 0),
-    ("trig", 1),
-];
+pub const OPERATIONS: eom_kernel::Operations = eom_kernel::Operations {
+    add: 1,
+    mul: 2,
+    div: 0,
+    sqrt: 0,
+    trig: 1,
+};
 /// Compound pendulum about a fixed horizontal axis (equations 4.24).
 ///
 /// State: `[theta, theta_dot]`; inputs: `[M_O]`.
@@ -131,4 +131,32 @@ pub fn potential_energy<T: SimdRealField + Copy>(
     let [(_, cos_theta)] = eom_kernel::sin_cos([theta]);
     // V = −Mg·r_G = −Mgh cos θ (4.35), zero with G level with the pivot; 4.34's U = Mgh(1 − cos θ) is V + Mgh
     -k.v_cos_theta * cos_theta
+}
+/// The model contract over the coefficients of `pendulum`: the functions and constants above, the Jacobians made dense.
+impl<T: SimdRealField + Copy> eom_kernel::Model<T, 2, 1> for Coefficients<T> {
+    const NAME: &'static str = "pendulum";
+    const STATE: [&'static str; 2] = STATE;
+    const INPUTS: [&'static str; 1] = INPUTS;
+    const STATE_JACOBIAN: &'static [(usize, usize)] = &STATE_JACOBIAN;
+    const INPUT_JACOBIAN: &'static [(usize, usize)] = &INPUT_JACOBIAN;
+    #[inline(always)]
+    fn rhs(&self, state: &[T; 2], input: &[T; 1]) -> [T; 2] {
+        rhs(self, state, input)
+    }
+    #[inline]
+    fn kinetic_energy(&self, state: &[T; 2]) -> T {
+        kinetic_energy(self, state)
+    }
+    #[inline]
+    fn state_jacobian(&self, state: &[T; 2], input: &[T; 1]) -> [[T; 2]; 2] {
+        eom_kernel::scatter(&STATE_JACOBIAN, state_jacobian(self, state, input))
+    }
+    #[inline]
+    fn input_jacobian(&self, state: &[T; 2], input: &[T; 1]) -> [[T; 1]; 2] {
+        eom_kernel::scatter(&INPUT_JACOBIAN, input_jacobian(self, state, input))
+    }
+    #[inline]
+    fn potential_energy(&self, state: &[T; 2]) -> Option<T> {
+        Some(potential_energy(self, state))
+    }
 }

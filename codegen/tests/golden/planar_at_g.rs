@@ -41,13 +41,13 @@ pub const STATE: [&str; 6] = ["u", "v", "r", "X", "Y", "psi"];
 pub const INPUTS: [&str; 3] = ["F_x", "F_y", "M_z"];
 /// Operations per call of [`rhs`]: additions, multiplications, divisions, square roots,
 /// trigonometric calls (`sin_cos` of one angle counts once).
-pub const OPERATIONS: [(&str, u32); 5] = [
-    ("add", 4),
-    ("mul", 9),
-    ("div", 0),
-    ("sqrt", 0),
-    ("trig", 1),
-];
+pub const OPERATIONS: eom_kernel::Operations = eom_kernel::Operations {
+    add: 4,
+    mul: 9,
+    div: 0,
+    sqrt: 0,
+    trig: 1,
+};
 /// Planar motion in body axes at G (equations 4.43, 4.44).
 ///
 /// State: `[u, v, r, X, Y, psi]`; inputs: `[F_x, F_y, M_z]`.
@@ -148,4 +148,28 @@ pub fn kinetic_energy<T: SimdRealField + Copy>(
     let [u, v, r, _, _, _] = *state;
     // T = ½M(u² + v²) + ½I_zz r² (4.32, with what the model's state and symmetry make zero left out)
     mul_add(k.half_mass, mul_add(v, v, u * u), k.half_izz * (r * r))
+}
+/// The model contract over the coefficients of `planar_at_g`: the functions and constants above, the Jacobians made dense.
+impl<T: SimdRealField + Copy> eom_kernel::Model<T, 6, 3> for Coefficients<T> {
+    const NAME: &'static str = "planar_at_g";
+    const STATE: [&'static str; 6] = STATE;
+    const INPUTS: [&'static str; 3] = INPUTS;
+    const STATE_JACOBIAN: &'static [(usize, usize)] = &STATE_JACOBIAN;
+    const INPUT_JACOBIAN: &'static [(usize, usize)] = &INPUT_JACOBIAN;
+    #[inline(always)]
+    fn rhs(&self, state: &[T; 6], input: &[T; 3]) -> [T; 6] {
+        rhs(self, state, input)
+    }
+    #[inline]
+    fn kinetic_energy(&self, state: &[T; 6]) -> T {
+        kinetic_energy(self, state)
+    }
+    #[inline]
+    fn state_jacobian(&self, state: &[T; 6], input: &[T; 3]) -> [[T; 6]; 6] {
+        eom_kernel::scatter(&STATE_JACOBIAN, state_jacobian(self, state, input))
+    }
+    #[inline]
+    fn input_jacobian(&self, state: &[T; 6], input: &[T; 3]) -> [[T; 3]; 6] {
+        eom_kernel::scatter(&INPUT_JACOBIAN, input_jacobian(self, state, input))
+    }
 }

@@ -59,13 +59,13 @@ pub const STATE: [&str; 6] = ["u", "v", "r", "X", "Y", "psi"];
 pub const INPUTS: [&str; 3] = ["F_x", "F_y", "M_z"];
 /// Operations per call of [`rhs`]: additions, multiplications, divisions, square roots,
 /// trigonometric calls (`sin_cos` of one angle counts once).
-pub const OPERATIONS: [(&str, u32); 5] = [
-    ("add", 7),
-    ("mul", 13),
-    ("div", 0),
-    ("sqrt", 0),
-    ("trig", 1),
-];
+pub const OPERATIONS: eom_kernel::Operations = eom_kernel::Operations {
+    add: 7,
+    mul: 13,
+    div: 0,
+    sqrt: 0,
+    trig: 1,
+};
 /// Planar motion in body axes at midship (equations 4.45, 4.46, 4.44).
 ///
 /// State: `[u, v, r, X, Y, psi]`; inputs: `[F_x, F_y, M_z]`.
@@ -176,4 +176,28 @@ pub fn kinetic_energy<T: SimdRealField + Copy>(
         mul_add(v, v, u * u),
         mul_add(k.t_r_r, r * r, k.t_r_v * (r * v)),
     )
+}
+/// The model contract over the coefficients of `planar_midship`: the functions and constants above, the Jacobians made dense.
+impl<T: SimdRealField + Copy> eom_kernel::Model<T, 6, 3> for Coefficients<T> {
+    const NAME: &'static str = "planar_midship";
+    const STATE: [&'static str; 6] = STATE;
+    const INPUTS: [&'static str; 3] = INPUTS;
+    const STATE_JACOBIAN: &'static [(usize, usize)] = &STATE_JACOBIAN;
+    const INPUT_JACOBIAN: &'static [(usize, usize)] = &INPUT_JACOBIAN;
+    #[inline(always)]
+    fn rhs(&self, state: &[T; 6], input: &[T; 3]) -> [T; 6] {
+        rhs(self, state, input)
+    }
+    #[inline]
+    fn kinetic_energy(&self, state: &[T; 6]) -> T {
+        kinetic_energy(self, state)
+    }
+    #[inline]
+    fn state_jacobian(&self, state: &[T; 6], input: &[T; 3]) -> [[T; 6]; 6] {
+        eom_kernel::scatter(&STATE_JACOBIAN, state_jacobian(self, state, input))
+    }
+    #[inline]
+    fn input_jacobian(&self, state: &[T; 6], input: &[T; 3]) -> [[T; 3]; 6] {
+        eom_kernel::scatter(&INPUT_JACOBIAN, input_jacobian(self, state, input))
+    }
 }

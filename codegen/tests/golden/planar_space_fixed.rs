@@ -41,13 +41,13 @@ pub const STATE: [&str; 6] = ["X", "Y", "psi", "X_dot", "Y_dot", "psi_dot"];
 pub const INPUTS: [&str; 3] = ["F_X", "F_Y", "M_z"];
 /// Operations per call of [`rhs`]: additions, multiplications, divisions, square roots,
 /// trigonometric calls (`sin_cos` of one angle counts once).
-pub const OPERATIONS: [(&str, u32); 5] = [
-    ("add", 0),
-    ("mul", 3),
-    ("div", 0),
-    ("sqrt", 0),
-    ("trig", 0),
-];
+pub const OPERATIONS: eom_kernel::Operations = eom_kernel::Operations {
+    add: 0,
+    mul: 3,
+    div: 0,
+    sqrt: 0,
+    trig: 0,
+};
 /// Planar motion in space-fixed axes (equations 4.39).
 ///
 /// State: `[X, Y, psi, X_dot, Y_dot, psi_dot]`; inputs: `[F_X, F_Y, M_z]`.
@@ -118,4 +118,28 @@ pub fn kinetic_energy<T: SimdRealField + Copy>(
         psi_dot * psi_dot,
         k.half_mass * (mul_add(y_dot, y_dot, x_dot * x_dot)),
     )
+}
+/// The model contract over the coefficients of `planar_space_fixed`: the functions and constants above, the Jacobians made dense.
+impl<T: SimdRealField + Copy> eom_kernel::Model<T, 6, 3> for Coefficients<T> {
+    const NAME: &'static str = "planar_space_fixed";
+    const STATE: [&'static str; 6] = STATE;
+    const INPUTS: [&'static str; 3] = INPUTS;
+    const STATE_JACOBIAN: &'static [(usize, usize)] = &STATE_JACOBIAN;
+    const INPUT_JACOBIAN: &'static [(usize, usize)] = &INPUT_JACOBIAN;
+    #[inline(always)]
+    fn rhs(&self, state: &[T; 6], input: &[T; 3]) -> [T; 6] {
+        rhs(self, state, input)
+    }
+    #[inline]
+    fn kinetic_energy(&self, state: &[T; 6]) -> T {
+        kinetic_energy(self, state)
+    }
+    #[inline]
+    fn state_jacobian(&self, state: &[T; 6], input: &[T; 3]) -> [[T; 6]; 6] {
+        eom_kernel::scatter(&STATE_JACOBIAN, state_jacobian(self, state, input))
+    }
+    #[inline]
+    fn input_jacobian(&self, state: &[T; 6], input: &[T; 3]) -> [[T; 3]; 6] {
+        eom_kernel::scatter(&INPUT_JACOBIAN, input_jacobian(self, state, input))
+    }
 }

@@ -226,13 +226,13 @@ pub const STATE: [&str; 13] = [
 pub const INPUTS: [&str; 6] = ["F_x", "F_y", "F_z", "M_x", "M_y", "M_z"];
 /// Operations per call of [`rhs`]: additions, multiplications, divisions, square roots,
 /// trigonometric calls (`sin_cos` of one angle counts once).
-pub const OPERATIONS: [(&str, u32); 5] = [
-    ("add", 48),
-    ("mul", 71),
-    ("div", 1),
-    ("sqrt", 0),
-    ("trig", 0),
-];
+pub const OPERATIONS: eom_kernel::Operations = eom_kernel::Operations {
+    add: 48,
+    mul: 71,
+    div: 1,
+    sqrt: 0,
+    trig: 0,
+};
 /// Spatial 6-DOF motion, Full inertia, Quaternion kinematics (equations 4.49, 4.51, 4.57 q, 4.60 q).
 ///
 /// State: `[u, v, w, p, q, r, x, y, z, q0, q1, q2, q3]`; inputs: `[F_x, F_y, F_z, M_x, M_y, M_z]`.
@@ -883,4 +883,28 @@ pub fn kinetic_energy<T: SimdRealField + Copy>(
             ),
         ),
     )
+}
+/// The model contract over the coefficients of `spatial_full_quaternion`: the functions and constants above, the Jacobians made dense.
+impl<T: SimdRealField + Copy> eom_kernel::Model<T, 13, 6> for Coefficients<T> {
+    const NAME: &'static str = "spatial_full_quaternion";
+    const STATE: [&'static str; 13] = STATE;
+    const INPUTS: [&'static str; 6] = INPUTS;
+    const STATE_JACOBIAN: &'static [(usize, usize)] = &STATE_JACOBIAN;
+    const INPUT_JACOBIAN: &'static [(usize, usize)] = &INPUT_JACOBIAN;
+    #[inline(always)]
+    fn rhs(&self, state: &[T; 13], input: &[T; 6]) -> [T; 13] {
+        rhs(self, state, input)
+    }
+    #[inline]
+    fn kinetic_energy(&self, state: &[T; 13]) -> T {
+        kinetic_energy(self, state)
+    }
+    #[inline]
+    fn state_jacobian(&self, state: &[T; 13], input: &[T; 6]) -> [[T; 13]; 13] {
+        eom_kernel::scatter(&STATE_JACOBIAN, state_jacobian(self, state, input))
+    }
+    #[inline]
+    fn input_jacobian(&self, state: &[T; 13], input: &[T; 6]) -> [[T; 6]; 13] {
+        eom_kernel::scatter(&INPUT_JACOBIAN, input_jacobian(self, state, input))
+    }
 }

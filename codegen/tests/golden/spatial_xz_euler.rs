@@ -109,13 +109,13 @@ pub const STATE: [&str; 12] = [
 pub const INPUTS: [&str; 6] = ["F_x", "F_y", "F_z", "M_x", "M_y", "M_z"];
 /// Operations per call of [`rhs`]: additions, multiplications, divisions, square roots,
 /// trigonometric calls (`sin_cos` of one angle counts once).
-pub const OPERATIONS: [(&str, u32); 5] = [
-    ("add", 24),
-    ("mul", 43),
-    ("div", 1),
-    ("sqrt", 0),
-    ("trig", 3),
-];
+pub const OPERATIONS: eom_kernel::Operations = eom_kernel::Operations {
+    add: 24,
+    mul: 43,
+    div: 1,
+    sqrt: 0,
+    trig: 3,
+};
 /// Spatial 6-DOF motion, Xz inertia, Euler kinematics (equations 4.49, 4.51, 4.57, 4.60).
 ///
 /// State: `[u, v, w, p, q, r, x, y, z, phi, theta, psi]`; inputs: `[F_x, F_y, F_z, M_x, M_y, M_z]`.
@@ -491,4 +491,28 @@ pub fn kinetic_energy<T: SimdRealField + Copy>(
             mul_add(k.half_iyy, q * q, mul_add(k.half_ixx, p * p, k.ixz * (p * r))),
         ),
     )
+}
+/// The model contract over the coefficients of `spatial_xz_euler`: the functions and constants above, the Jacobians made dense.
+impl<T: SimdRealField + Copy> eom_kernel::Model<T, 12, 6> for Coefficients<T> {
+    const NAME: &'static str = "spatial_xz_euler";
+    const STATE: [&'static str; 12] = STATE;
+    const INPUTS: [&'static str; 6] = INPUTS;
+    const STATE_JACOBIAN: &'static [(usize, usize)] = &STATE_JACOBIAN;
+    const INPUT_JACOBIAN: &'static [(usize, usize)] = &INPUT_JACOBIAN;
+    #[inline(always)]
+    fn rhs(&self, state: &[T; 12], input: &[T; 6]) -> [T; 12] {
+        rhs(self, state, input)
+    }
+    #[inline]
+    fn kinetic_energy(&self, state: &[T; 12]) -> T {
+        kinetic_energy(self, state)
+    }
+    #[inline]
+    fn state_jacobian(&self, state: &[T; 12], input: &[T; 6]) -> [[T; 12]; 12] {
+        eom_kernel::scatter(&STATE_JACOBIAN, state_jacobian(self, state, input))
+    }
+    #[inline]
+    fn input_jacobian(&self, state: &[T; 12], input: &[T; 6]) -> [[T; 6]; 12] {
+        eom_kernel::scatter(&INPUT_JACOBIAN, input_jacobian(self, state, input))
+    }
 }

@@ -79,13 +79,13 @@ pub const STATE: [&str; 6] = ["p", "q", "r", "phi", "theta", "psi"];
 pub const INPUTS: [&str; 3] = ["M_x", "M_y", "M_z"];
 /// Operations per call of [`rhs`]: additions, multiplications, divisions, square roots,
 /// trigonometric calls (`sin_cos` of one angle counts once).
-pub const OPERATIONS: [(&str, u32); 5] = [
-    ("add", 8),
-    ("mul", 18),
-    ("div", 1),
-    ("sqrt", 0),
-    ("trig", 2),
-];
+pub const OPERATIONS: eom_kernel::Operations = eom_kernel::Operations {
+    add: 8,
+    mul: 18,
+    div: 1,
+    sqrt: 0,
+    trig: 2,
+};
 /// Heavy top about a fixed point, Euler-angle kinematics (equations 4.23 top, 4.50 top, 4.60).
 ///
 /// State: `[p, q, r, phi, theta, psi]`; inputs: `[M_x, M_y, M_z]`.
@@ -254,4 +254,32 @@ pub fn potential_energy<T: SimdRealField + Copy>(
     let [(_, cos_phi), (_, cos_theta)] = eom_kernel::sin_cos([phi, theta]);
     // V = −Mg·E r_G = Mgh cos φ cos θ: Mg times the height of G above the pivot
     k.v_cos_phi_cos_theta * (cos_phi * cos_theta)
+}
+/// The model contract over the coefficients of `top_euler`: the functions and constants above, the Jacobians made dense.
+impl<T: SimdRealField + Copy> eom_kernel::Model<T, 6, 3> for Coefficients<T> {
+    const NAME: &'static str = "top_euler";
+    const STATE: [&'static str; 6] = STATE;
+    const INPUTS: [&'static str; 3] = INPUTS;
+    const STATE_JACOBIAN: &'static [(usize, usize)] = &STATE_JACOBIAN;
+    const INPUT_JACOBIAN: &'static [(usize, usize)] = &INPUT_JACOBIAN;
+    #[inline(always)]
+    fn rhs(&self, state: &[T; 6], input: &[T; 3]) -> [T; 6] {
+        rhs(self, state, input)
+    }
+    #[inline]
+    fn kinetic_energy(&self, state: &[T; 6]) -> T {
+        kinetic_energy(self, state)
+    }
+    #[inline]
+    fn state_jacobian(&self, state: &[T; 6], input: &[T; 3]) -> [[T; 6]; 6] {
+        eom_kernel::scatter(&STATE_JACOBIAN, state_jacobian(self, state, input))
+    }
+    #[inline]
+    fn input_jacobian(&self, state: &[T; 6], input: &[T; 3]) -> [[T; 3]; 6] {
+        eom_kernel::scatter(&INPUT_JACOBIAN, input_jacobian(self, state, input))
+    }
+    #[inline]
+    fn potential_energy(&self, state: &[T; 6]) -> Option<T> {
+        Some(potential_energy(self, state))
+    }
 }

@@ -79,13 +79,13 @@ pub const STATE: [&str; 7] = ["p", "q", "r", "q0", "q1", "q2", "q3"];
 pub const INPUTS: [&str; 3] = ["M_x", "M_y", "M_z"];
 /// Operations per call of [`rhs`]: additions, multiplications, divisions, square roots,
 /// trigonometric calls (`sin_cos` of one angle counts once).
-pub const OPERATIONS: [(&str, u32); 5] = [
-    ("add", 16),
-    ("mul", 30),
-    ("div", 0),
-    ("sqrt", 0),
-    ("trig", 0),
-];
+pub const OPERATIONS: eom_kernel::Operations = eom_kernel::Operations {
+    add: 16,
+    mul: 30,
+    div: 0,
+    sqrt: 0,
+    trig: 0,
+};
 /// Heavy top about a fixed point, quaternion kinematics (equations 4.23 top, 4.50 top q, 4.60 q).
 ///
 /// State: `[p, q, r, q0, q1, q2, q3]`; inputs: `[M_x, M_y, M_z]`.
@@ -283,4 +283,32 @@ pub fn potential_energy<T: SimdRealField + Copy>(
     let [_, _, _, q0, q1, q2, q3] = *state;
     // V = −Mg·R(q) r_G = Mgh(q0² − q1² − q2² + q3²): Mg times the height of G above the pivot, times |q|² as the weight is
     k.v_q0_q0 * (mul_add(q3, q3, mul_add(-q2, q2, mul_add(-q1, q1, q0 * q0))))
+}
+/// The model contract over the coefficients of `top_quaternion`: the functions and constants above, the Jacobians made dense.
+impl<T: SimdRealField + Copy> eom_kernel::Model<T, 7, 3> for Coefficients<T> {
+    const NAME: &'static str = "top_quaternion";
+    const STATE: [&'static str; 7] = STATE;
+    const INPUTS: [&'static str; 3] = INPUTS;
+    const STATE_JACOBIAN: &'static [(usize, usize)] = &STATE_JACOBIAN;
+    const INPUT_JACOBIAN: &'static [(usize, usize)] = &INPUT_JACOBIAN;
+    #[inline(always)]
+    fn rhs(&self, state: &[T; 7], input: &[T; 3]) -> [T; 7] {
+        rhs(self, state, input)
+    }
+    #[inline]
+    fn kinetic_energy(&self, state: &[T; 7]) -> T {
+        kinetic_energy(self, state)
+    }
+    #[inline]
+    fn state_jacobian(&self, state: &[T; 7], input: &[T; 3]) -> [[T; 7]; 7] {
+        eom_kernel::scatter(&STATE_JACOBIAN, state_jacobian(self, state, input))
+    }
+    #[inline]
+    fn input_jacobian(&self, state: &[T; 7], input: &[T; 3]) -> [[T; 3]; 7] {
+        eom_kernel::scatter(&INPUT_JACOBIAN, input_jacobian(self, state, input))
+    }
+    #[inline]
+    fn potential_energy(&self, state: &[T; 7]) -> Option<T> {
+        Some(potential_energy(self, state))
+    }
 }
