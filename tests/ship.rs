@@ -576,11 +576,12 @@ fn a_pull_out_dies_out_on_a_stable_ship_only() {
     assert!(esso > 0.1, "Esso Osaka: {esso}");
 }
 
-/// The ship is a model like the catalog's: its Jacobians are the exact derivatives of its
-/// program (against dual numbers through the same program, to 1e-12 of the row's largest
-/// entry: the two are the same chain rule in another order), zero outside the pattern it
-/// declares; and its kinetic energy is the catalog's 4.46 model's (4.32, emitted from the
-/// proved form) for the same body, to 1e-13.
+/// The ship is a model like the catalog's: its Jacobians, the proved Jacobian programs (with
+/// the chain rule through U for a prime table), are the derivatives of its right-hand side
+/// (against dual numbers through `rhs`, to 1e-12 of the row's largest entry: two exact
+/// derivatives evaluated in another order), zero outside the pattern it declares; and its
+/// kinetic energy is the catalog's 4.46 model's (4.32, emitted from the proved form) for the
+/// same body, to 1e-13.
 #[test]
 fn the_ship_model_keeps_the_model_contract() {
     use eom::models::PlanarMidship;

@@ -18,14 +18,14 @@
 //! textbook's C′ = Y′_v(N′_r − m′x′_G) − (Y′_r − m′)N′_v. In a steady turn the point of the
 //! centre line that moves straight ahead, v + x_p r = 0, is the pivot point x_p = −v/r.
 //!
-//! [`linearise`] takes the same matrices from the running model instead: the exact derivative
-//! of the proved program, by dual numbers. The two agree (tests/ship.rs).
+//! [`linearise`] takes the same matrices from the running model instead: its Jacobian, the
+//! program derived from the proved system's exact derivative and proved equal to it. The two
+//! agree (tests/ship.rs).
 
 use super::model::ShipModel;
 use super::table::ShipTable;
 use super::{Force, Term, Units};
 use crate::models::Model;
-use num_dual::Dual64;
 use std::collections::BTreeMap;
 
 /// Nomoto's models of the yaw-rate response to the rudder.
@@ -211,15 +211,11 @@ impl LinearModel {
 }
 
 /// A and B of ν̇ = A ν + B δ taken from the running model about the straight course at
-/// `speed`: the exact derivatives of its proved program, by dual numbers.
+/// `speed`: its proved Jacobian program there (∂(v̇, ṙ)/∂(v, r) and ∂(v̇, ṙ)/∂δ).
 pub fn linearise(model: &ShipModel, speed: f64) -> ([[f64; 2]; 2], [f64; 2]) {
-    let column = |index: usize| {
-        let mut state = [Dual64::from(0.0); 7];
-        state[0] = Dual64::from(speed);
-        state[index] = Dual64::from(0.0).derivative();
-        let rates = Model::rhs(model, &state, &[Dual64::from(0.0)]);
-        [rates[1].eps, rates[2].eps]
-    };
-    let (by_v, by_r, by_delta) = (column(1), column(2), column(6));
-    ([[by_v[0], by_r[0]], [by_v[1], by_r[1]]], by_delta)
+    let mut state = [0.0; 7];
+    state[0] = speed;
+    let jacobian = model.state_jacobian(&state, &[0.0]);
+    let row = |i: usize| [jacobian[i][1], jacobian[i][2]];
+    ([row(1), row(2)], [jacobian[1][6], jacobian[2][6]])
 }

@@ -2,18 +2,24 @@
 //! scene is read, and evaluated here.
 //!
 //! What runs is the proved straight-line program itself ([`eom_codegen::emit::Program`]):
-//! the same arena of shared nodes the emitter writes as Rust for a catalog model, each node
-//! evaluated once per call in order, its hoisted coefficients computed once per table. It is
-//! generic over simba's `SimdRealField`, so it runs on f64 and on dual numbers (the linear
-//! model is its exact derivative, [`super::linear`]).
+//! the same arena of shared nodes the emitter writes as Rust for a catalog model, with the
+//! same functions (the right-hand side, its Jacobians ∂f/∂x and ∂f/∂u, the kinetic energy),
+//! each folded back and proved against the system and its exact derivative when the scene is
+//! read, as the catalog's are when eom is built. A call evaluates the nodes its function
+//! needs, once each, in order; the hoisted coefficients are computed once per table. It is
+//! generic over simba's `SimdRealField`, so it runs on f64, on SIMD lanes and on dual numbers.
+//!
+//! In the prime system the forces scale with the speed U = √(u² + v²), which the program takes
+//! as an input beside δ̇: this model computes U from the state, and its ∂f/∂x adds the chain
+//! rule through U (∂f/∂U · u/U and · v/U) to the program's ∂f/∂u and ∂f/∂v.
 
 use super::ShipError;
 use super::table::ShipTable;
 use crate::models::Model;
-use eom_codegen::emit::program::{Node, Program};
-use eom_codegen::emit::{Operations, prove};
+use eom_codegen::emit::program::{Function, Node, Program};
+use eom_codegen::emit::{Operations, prove_with_jacobians};
 use eom_codegen::model::System;
-use eom_codegen::model::ship::{ADDED_MASS, PRIME_SCALES, ShipSpec, Units, YawInertia, ship};
+use eom_codegen::model::ship::{ADDED_MASS, PRIME_SCALES, ShipSpec, Units, ship};
 use eom_codegen::symbolic::Expr;
 use simba::simd::SimdRealField;
 use std::collections::BTreeMap;
@@ -58,51 +64,44 @@ enum Op {
     Mul(usize, usize),
 }
 
-/// A ship's proved right-hand side, ready to evaluate.
+/// A ship's proved program, ready to evaluate.
 #[derive(Debug, Clone)]
 pub struct ShipModel {
     ops: Vec<Op>,
-    outputs: [usize; 7],
+    rhs: Plan,
+    kinetic_energy: Plan,
+    state_jacobian: Plan,
+    input_jacobian: Plan,
+    /// Where each output of the Jacobians sits: (row, column).
+    state_pattern: Vec<(usize, usize)>,
+    input_pattern: Vec<(usize, usize)>,
+    /// The column of U among the program's inputs (prime tables), after δ̇'s.
+    speed_input: Option<usize>,
     operations: Operations,
     terms: usize,
-    rigid_body: RigidBody,
 }
 
-/// The rigid body in SI about midship, for the kinetic energy.
-#[derive(Debug, Clone, Copy, PartialEq)]
-struct RigidBody {
-    /// M, kg.
-    mass: f64,
-    /// I_z about midship, kg m².
-    yaw_inertia_midship: f64,
-    /// G ahead of midship, m.
-    x_g: f64,
+/// What one function of the program evaluates: the nodes its outputs need, in the arena's
+/// order (every operand before its user), and its outputs.
+#[derive(Debug, Clone, PartialEq)]
+struct Plan {
+    needed: Vec<usize>,
+    outputs: Vec<usize>,
 }
 
-impl RigidBody {
-    /// The table's body in SI: a prime table's m′, I′_z and x′_G scaled by ½ρL³, ½ρL⁵ and L;
-    /// I_z taken to midship by the parallel-axis theorem (4.23) where it is given about G.
-    fn of(table: &ShipTable) -> Self {
-        let body = &table.body;
-        let (mass_scale, inertia_scale, length) = match table.units {
-            Units::Dimensional => (1.0, 1.0, 1.0),
-            Units::Prime => {
-                let length = table.length.unwrap_or(f64::NAN);
-                let half_rho = 0.5 * table.density.unwrap_or(f64::NAN);
-                (half_rho * length.powi(3), half_rho * length.powi(5), length)
+impl Plan {
+    /// The nodes `function`'s outputs reach through their operands.
+    fn of(program: &Program, function: &Function) -> Self {
+        let mut needed = vec![false; program.nodes.len()];
+        let mut pending: Vec<usize> = function.outputs.iter().map(|o| o.id.index()).collect();
+        while let Some(index) = pending.pop() {
+            if !std::mem::replace(&mut needed[index], true) {
+                pending.extend(program.nodes[index].children().iter().map(|c| c.index()));
             }
-        };
-        let mass = body.mass * mass_scale;
-        let x_g = body.x_g * length;
-        let given = body.yaw_inertia * inertia_scale;
-        let yaw_inertia_midship = match body.yaw_inertia_about {
-            YawInertia::AboutMidship => given,
-            YawInertia::AboutG => given + mass * x_g * x_g,
-        };
-        RigidBody {
-            mass,
-            yaw_inertia_midship,
-            x_g,
+        }
+        Plan {
+            needed: (0..needed.len()).filter(|&i| needed[i]).collect(),
+            outputs: function.outputs.iter().map(|o| o.id.index()).collect(),
         }
     }
 }
@@ -117,29 +116,41 @@ impl ShipModel {
         };
         let system = ship("ship", &spec)
             .map_err(|e| ShipError::Build(eom_codegen::emit::EmitError::Model(e)))?;
-        let program = prove(&system)?;
+        let program = prove_with_jacobians(&system)?;
         let values = parameter_values(&spec, table);
         let coefficients = coefficient_values(&system, &program, &values);
         let mut ops = Vec::with_capacity(program.nodes.len());
         for node in &program.nodes {
             ops.push(resolve(node, &coefficients)?);
         }
-        let outputs = std::array::from_fn(|i| program.rhs.outputs[i].id.index());
+        let built = |what: &str| ShipError::invalid("hydrodynamics", format!("no {what}"));
+        let jacobians = (program.jacobians.as_ref()).ok_or_else(|| built("Jacobians"))?;
+        let energy = (program.kinetic_energy.as_ref()).ok_or_else(|| built("kinetic energy"))?;
         Ok(ShipModel {
-            ops,
-            outputs,
+            rhs: Plan::of(&program, &program.rhs),
+            kinetic_energy: Plan::of(&program, energy),
+            state_jacobian: Plan::of(&program, &jacobians.state),
+            input_jacobian: Plan::of(&program, &jacobians.input),
+            state_pattern: jacobians.state_pattern.clone(),
+            input_pattern: jacobians.input_pattern.clone(),
+            speed_input: system.inputs.iter().position(|i| *i == "U"),
             operations: program.operations(&program.rhs),
             terms: spec.terms.len(),
-            rigid_body: RigidBody::of(table),
+            ops,
         })
     }
 
-    /// Every node of the program at `state` with the rudder moving at `delta_rate`.
-    fn values<T: SimdRealField + Copy>(&self, state: &[T; 7], delta_rate: T) -> Vec<T> {
+    /// The outputs of `plan` at `state` with the rudder moving at `delta_rate`.
+    fn evaluate<T: SimdRealField + Copy>(
+        &self,
+        plan: &Plan,
+        state: &[T; 7],
+        delta_rate: T,
+    ) -> impl Iterator<Item = T> {
         let speed = (state[0] * state[0] + state[1] * state[1]).simd_sqrt();
-        let mut values: Vec<T> = Vec::with_capacity(self.ops.len());
-        for op in &self.ops {
-            let value = match *op {
+        let mut values: Vec<T> = vec![T::zero(); self.ops.len()];
+        for &index in &plan.needed {
+            values[index] = match self.ops[index] {
                 Op::State(i) => state[i],
                 Op::DeltaRate => delta_rate,
                 Op::Speed => speed,
@@ -152,53 +163,35 @@ impl ShipModel {
                 Op::Sub(a, b) => values[a] - values[b],
                 Op::Mul(a, b) => values[a] * values[b],
             };
-            values.push(value);
         }
-        values
+        plan.outputs.iter().map(move |&i| values[i])
     }
 
-    /// The derivatives of the rates by the seven state entries and the input (column 7), by
-    /// the chain rule through the program node by node (forward mode): exact, as the program
-    /// is, and generic over the scalar as `rhs` is.
-    fn jacobian<T: SimdRealField + Copy>(&self, state: &[T; 7], delta_rate: T) -> [[T; 8]; 7] {
-        let values = self.values(state, delta_rate);
-        let zero = [T::zero(); 8];
-        let unit = |j: usize| {
-            let mut d = zero;
-            d[j] = T::one();
-            d
-        };
-        let scaled = |d: &[T; 8], by: T| d.map(|x| x * by);
-        let mut tangents: Vec<[T; 8]> = Vec::with_capacity(self.ops.len());
-        for op in &self.ops {
-            let d = match *op {
-                Op::State(i) => unit(i),
-                Op::DeltaRate => unit(7),
-                Op::Speed => {
-                    // U = √(u² + v²): ∂U/∂u = u/U, ∂U/∂v = v/U.
-                    let speed = (state[0] * state[0] + state[1] * state[1]).simd_sqrt();
-                    let mut d = zero;
-                    d[0] = state[0] / speed;
-                    d[1] = state[1] / speed;
-                    d
-                }
-                Op::Value(_) => zero,
-                Op::Sin(a) => scaled(&tangents[a], eom_kernel::sin_cos([values[a]])[0].1),
-                Op::Cos(a) => scaled(&tangents[a], -eom_kernel::sin_cos([values[a]])[0].0),
-                Op::Recip(a) => {
-                    let inverse = T::one() / values[a];
-                    scaled(&tangents[a], -(inverse * inverse))
-                }
-                Op::Neg(a) => tangents[a].map(|x| -x),
-                Op::Add(a, b) => std::array::from_fn(|j| tangents[a][j] + tangents[b][j]),
-                Op::Sub(a, b) => std::array::from_fn(|j| tangents[a][j] - tangents[b][j]),
-                Op::Mul(a, b) => {
-                    std::array::from_fn(|j| values[a] * tangents[b][j] + values[b] * tangents[a][j])
-                }
-            };
-            tangents.push(d);
+    /// ∂f/∂x and ∂f/∂δ̇ of the model, dense: the proved Jacobian programs scattered by their
+    /// patterns, and in the prime system the chain rule through U added.
+    fn jacobians<T: SimdRealField + Copy>(
+        &self,
+        state: &[T; 7],
+        delta_rate: T,
+    ) -> ([[T; 7]; 7], [[T; 1]; 7]) {
+        let mut by_state = [[T::zero(); 7]; 7];
+        let entries = self.evaluate(&self.state_jacobian, state, delta_rate);
+        for (&(row, column), value) in self.state_pattern.iter().zip(entries) {
+            by_state[row][column] = value;
         }
-        self.outputs.map(|i| tangents[i])
+        let mut by_input = [[T::zero(); 1]; 7];
+        let speed = (state[0] * state[0] + state[1] * state[1]).simd_sqrt();
+        let entries = self.evaluate(&self.input_jacobian, state, delta_rate);
+        for (&(row, column), value) in self.input_pattern.iter().zip(entries) {
+            if Some(column) == self.speed_input {
+                // ∂U/∂u = u/U, ∂U/∂v = v/U.
+                by_state[row][0] += value * (state[0] / speed);
+                by_state[row][1] += value * (state[1] / speed);
+            } else {
+                by_input[row][column] = value;
+            }
+        }
+        (by_state, by_input)
     }
 
     /// What one call costs, as the emitter counts it.
@@ -261,7 +254,7 @@ fn coefficient_values(
 }
 
 /// The ship as a model like the catalog's: its state and input, the proved program as `rhs`,
-/// its exact Jacobians, and the rigid body's kinetic energy.
+/// its proved Jacobians, and the rigid body's kinetic energy.
 impl<T: SimdRealField + Copy> Model<T, 7, 1> for ShipModel {
     const NAME: &'static str = "ship";
     const STATE: [&'static str; 7] = STATE;
@@ -269,32 +262,27 @@ impl<T: SimdRealField + Copy> Model<T, 7, 1> for ShipModel {
     const STATE_JACOBIAN: &'static [(usize, usize)] = &STATE_JACOBIAN;
     const INPUT_JACOBIAN: &'static [(usize, usize)] = &INPUT_JACOBIAN;
 
-    /// The rates of the state with the rudder moving at `input[0]`: the proved program,
-    /// evaluated node by node.
+    /// The rates of the state with the rudder moving at `input[0]`: the proved program.
     fn rhs(&self, state: &[T; 7], input: &[T; 1]) -> [T; 7] {
-        let values = self.values(state, input[0]);
-        self.outputs.map(|i| values[i])
+        let mut rates = self.evaluate(&self.rhs, state, input[0]);
+        std::array::from_fn(|_| rates.next().unwrap_or_else(T::zero))
     }
 
-    /// The rigid body's kinetic energy ½νᵀM_RBν about midship, ν = (u, v, r) (4.46's mass
-    /// matrix without the added mass): ½M(u² + v²) + M x_G v r + ½I_z r², with I_z about
-    /// midship; in J. The fluid's share (the added mass) is not in it.
+    /// The rigid body's kinetic energy ½M(u² + (v + x_G r)²) + ½I_z r² (4.32 about G, with
+    /// I_z about G), in J (a prime table's body scaled to SI), the program's proved form; the
+    /// fluid's share (the added mass) is not in it.
     fn kinetic_energy(&self, state: &[T; 7]) -> T {
-        let body = &self.rigid_body;
-        let [mass, inertia, x_g] =
-            [body.mass, body.yaw_inertia_midship, body.x_g].map(|x| T::from_subset(&x));
-        let (u, v, r) = (state[0], state[1], state[2]);
-        let half = T::from_subset(&0.5);
-        half * mass * (u * u + v * v) + mass * x_g * v * r + half * inertia * r * r
+        (self.evaluate(&self.kinetic_energy, state, T::zero()).next()).unwrap_or_else(T::zero)
     }
 
+    /// ∂f/∂x: the proved Jacobian program (see the module docs for U).
     fn state_jacobian(&self, state: &[T; 7], input: &[T; 1]) -> [[T; 7]; 7] {
-        self.jacobian(state, input[0])
-            .map(|row| std::array::from_fn(|j| row[j]))
+        self.jacobians(state, input[0]).0
     }
 
+    /// ∂f/∂δ̇: the proved Jacobian program.
     fn input_jacobian(&self, state: &[T; 7], input: &[T; 1]) -> [[T; 1]; 7] {
-        self.jacobian(state, input[0]).map(|row| [row[7]])
+        self.jacobians(state, input[0]).1
     }
 }
 

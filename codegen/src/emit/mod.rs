@@ -157,6 +157,16 @@ pub fn prove(system: &System) -> Result<Program, EmitError> {
     Ok(program)
 }
 
+/// As [`prove`], with the Jacobians ∂f/∂x and ∂f/∂u built in the same arena and folded back
+/// against the exact derivative of the system ([`Jacobian::of`]) too: what a scene-defined
+/// model evaluates, and what [`system_source`] writes.
+pub fn prove_with_jacobians(system: &System) -> Result<Program, EmitError> {
+    let jacobian = Jacobian::of(system)?;
+    let program = Program::build_with_jacobian(system, &jacobian);
+    fold::verify(system, &program)?;
+    Ok(program)
+}
+
 /// The Rust source of a system that is not in the catalog, proved like a catalog model's: for
 /// a user's `build.rs` that wants a ship of its own table compiled. The program is built with
 /// its Jacobians ∂f/∂x and ∂f/∂u and folded back against the system and its exact derivative
@@ -179,9 +189,7 @@ pub fn prove(system: &System) -> Result<Program, EmitError> {
 /// assert!(source.contains("impl<T: SimdRealField + Copy> eom_kernel::Model<T, 7, 1> for Coefficients<T>"));
 /// ```
 pub fn system_source(system: &System) -> Result<String, EmitError> {
-    let jacobian = Jacobian::of(system)?;
-    let program = Program::build_with_jacobian(system, &jacobian);
-    fold::verify(system, &program)?;
+    let program = prove_with_jacobians(system)?;
     rust::source(system, &program, "Expanded").map_err(|source| EmitError::Syntax {
         model: system.name.clone(),
         source,
