@@ -87,7 +87,8 @@ fn the_mariner_runs_its_manoeuvres_and_is_judged() {
         let csv = std::fs::read_to_string(dir.join("trajectory.csv")).unwrap();
         assert!(
             csv.starts_with(
-                "t[s],u[m/s],v[m/s],r[rad/s],x[m],y[m],psi[rad],delta[rad],command[rad],distance[m]\n"
+                "t[s],u[m/s],v[m/s],r[rad/s],x[m],y[m],psi[rad],delta[rad],command[rad],distance[m],\
+                 kinetic_energy[J]\n"
             ),
             "{}",
             csv.lines().next().unwrap_or_default()

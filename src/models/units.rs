@@ -59,7 +59,10 @@ fn base_unit(name: &str) -> Option<&'static str> {
         "u" | "v" | "w" => Some("m/s"),
         "p" | "q" | "r" => Some("rad/s"),
         "x" | "y" | "z" => Some("m"),
-        "phi" | "theta" | "psi" | "delta" => Some("rad"),
+        // delta: a rudder's angle; command: the angle it is commanded to.
+        "phi" | "theta" | "psi" | "delta" | "command" => Some("rad"),
+        // distance: the distance run along the track.
+        "distance" => Some("m"),
         "q0" | "q1" | "q2" | "q3" => Some("-"),
         _ => None,
     }

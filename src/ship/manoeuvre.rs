@@ -18,11 +18,11 @@
 
 use super::ShipError;
 use super::course::Course;
-use super::model::{STATE, ShipModel};
+use super::model::ShipModel;
 use super::rudder::{Rudder, Series};
 use crate::integrate::segment::{self, Hooks, add};
 use crate::integrate::{IntegrateError, OdeSystem, Reached, RowClock, Stats, Stepper};
-use crate::models::{Driven, Loads, Model, TIME_UNIT, state_with_unit, with_unit};
+use crate::models::{Driven, ENERGY_UNIT, Loads, Model, TIME_UNIT, state_with_unit, with_unit};
 use nalgebra::SVector;
 use std::f64::consts::PI;
 
@@ -82,19 +82,33 @@ pub struct Sample {
     pub command: f64,
 }
 
-/// The columns of a manoeuvre's `trajectory.csv`, each labelled with its unit
-/// ([`crate::models::with_unit`]): t, the model's state in its order ([`STATE`], in
-/// identifiers: `x` for X), then the rudder command after saturation and the distance run;
-/// a [`Sample`]'s time, its first seven state entries, its command and its distance.
+/// What a manoeuvre's row holds after its time, by name: the model's state in its order
+/// ([`STATE`](super::model::STATE), in identifiers: `x` for X), then the rudder command after saturation and the
+/// distance run ([`Sample::row`]).
+pub const ROW: [&str; 9] = [
+    "u", "v", "r", "x", "y", "psi", "delta", "command", "distance",
+];
+
+/// The columns of a manoeuvre's `trajectory.csv`, as every run's trajectory writer labels
+/// them ([`crate::models::with_unit`]): t, [`ROW`], and the rigid body's kinetic energy.
 pub fn trajectory_columns() -> Vec<String> {
     let mut columns = vec![with_unit("t", TIME_UNIT)];
-    columns.extend(
-        STATE
-            .iter()
-            .map(|name| state_with_unit(&name.to_lowercase())),
-    );
-    columns.extend([with_unit("command", "rad"), with_unit("distance", "m")]);
+    columns.extend(ROW.iter().map(|name| state_with_unit(name)));
+    columns.push(with_unit("kinetic_energy", ENERGY_UNIT));
     columns
+}
+
+impl Sample {
+    /// The row after its time, in [`ROW`]'s order.
+    pub fn row(&self) -> [f64; 9] {
+        let [u, v, r, x, y, psi, delta, distance] = self.state;
+        [u, v, r, x, y, psi, delta, self.command, distance]
+    }
+
+    /// The model's seven state entries.
+    pub fn model_state(&self) -> [f64; 7] {
+        std::array::from_fn(|i| self.state[i])
+    }
 }
 
 /// The figures of a manoeuvre, as (JSON key, value) pairs; `None` where the run did not get

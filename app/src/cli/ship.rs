@@ -12,13 +12,15 @@
 
 use super::run::{Interrupted, signal_received};
 use anyhow::{Context, Result};
+use eom::Model;
 use eom::output::summary::write_atomically;
 use eom::output::text::printable;
-use eom::output::trajectory::push_number;
+use eom::output::trajectory::{Columns, TrajectoryWriter};
+use eom::run::{Row, Sink};
 use eom::scene::sweep::TableCase;
 use eom::ship::imo::{Criterion, criteria};
 use eom::ship::linear::{LinearModel, Nomoto, linearise};
-use eom::ship::manoeuvre::{Figures, Sample, run, trajectory_columns};
+use eom::ship::manoeuvre::{Figures, ROW, run, trajectory_columns};
 use eom::ship::summary::{
     CriterionSummary, IntegratorSummary, LinearSummary, ManoeuvreSummary, Manoeuvres, ModelSummary,
     ShipSummary, nomoto_difference,
@@ -34,7 +36,8 @@ use std::time::Instant;
 /// A manoeuvre run with the scene's method, and the same refined (`Stepper::refined`: half
 /// the step, or tolerances a hundred times tighter).
 struct Outcome {
-    samples: Vec<Sample>,
+    /// The rows kept for the plots ([`ROW`]'s order).
+    columns: Columns,
     figures: Figures,
     refined: Figures,
     steps: u64,
@@ -81,17 +84,16 @@ fn run_into(scene: &ShipScene, name: &str, out: &Path) -> Result<ShipRun> {
     let mut outcomes = Vec::new();
     let mut interrupted = None;
     for manoeuvre in &scene.manoeuvres {
-        let outcome = match run_manoeuvre(scene, &model, manoeuvre) {
+        let folder = out.join(&manoeuvre.name);
+        std::fs::create_dir_all(&folder)
+            .with_context(|| format!("creating {}", folder.display()))?;
+        let outcome = match run_manoeuvre(scene, &model, manoeuvre, &folder) {
             Err(error) if is_stopped(&error) => {
                 interrupted = signal_received();
                 break;
             }
             outcome => outcome.with_context(|| format!("manoeuvre {}", manoeuvre.name))?,
         };
-        let folder = out.join(&manoeuvre.name);
-        std::fs::create_dir_all(&folder)
-            .with_context(|| format!("creating {}", folder.display()))?;
-        write_trajectory(&folder.join("trajectory.csv"), &outcome.samples)?;
         write_plots(&folder, scene, manoeuvre, &outcome)?;
         outcomes.push(outcome);
     }
@@ -241,8 +243,20 @@ fn is_stopped(error: &anyhow::Error) -> bool {
         .is_some_and(|e| matches!(e, ShipError::Stopped { .. }))
 }
 
-fn run_manoeuvre(scene: &ShipScene, model: &ShipModel, manoeuvre: &Manoeuvre) -> Result<Outcome> {
-    let mut samples = Vec::new();
+/// Runs `manoeuvre` with the scene's method, its rows streamed to `folder/trajectory.csv` by
+/// the trajectory writer every run uses (t, [`ROW`], the rigid body's kinetic energy), and
+/// again refined, for how far each figure moves.
+fn run_manoeuvre(
+    scene: &ShipScene,
+    model: &ShipModel,
+    manoeuvre: &Manoeuvre,
+    folder: &Path,
+) -> Result<Outcome> {
+    let path = folder.join("trajectory.csv");
+    let names = ROW.map(str::to_owned);
+    let expected_rows = (manoeuvre.duration / scene.every) as usize + 1;
+    let mut writer = TrajectoryWriter::create(&path, &names, false, expected_rows)
+        .with_context(|| format!("creating {}", path.display()))?;
     let settings = (&scene.stepper, scene.every);
     let done = run(
         model,
@@ -250,11 +264,23 @@ fn run_manoeuvre(scene: &ShipScene, model: &ShipModel, manoeuvre: &Manoeuvre) ->
         manoeuvre,
         scene.start(),
         settings,
-        |s| {
-            samples.push(*s);
-            signal_received().is_none()
+        |sample| {
+            let row = Row {
+                t: sample.t,
+                state: &sample.row(),
+                kinetic_energy: model.kinetic_energy(&sample.model_state()),
+                potential_energy: None,
+            };
+            writer.row(&row) && signal_received().is_none()
         },
-    )?;
+    );
+    if let Some(error) = writer.error() {
+        return Err(anyhow::anyhow!("writing {}: {error}", path.display()));
+    }
+    let done = done?;
+    let columns = writer
+        .finish()
+        .with_context(|| format!("writing {}", path.display()))?;
     let refined = (&scene.stepper.refined(), scene.every);
     let refined = run(
         model,
@@ -265,41 +291,11 @@ fn run_manoeuvre(scene: &ShipScene, model: &ShipModel, manoeuvre: &Manoeuvre) ->
         |_| signal_received().is_none(),
     )?;
     Ok(Outcome {
-        samples,
+        columns,
         figures: done.figures,
         refined: refined.figures,
         steps: done.steps,
     })
-}
-
-/// `trajectory.csv`: t, the model's state (radians, m/s), the command and the distance run,
-/// with units in the header and numbers as every trajectory file writes them.
-fn write_trajectory(path: &Path, samples: &[Sample]) -> Result<()> {
-    let mut bytes = format!("{}\n", trajectory_columns().join(",")).into_bytes();
-    let mut number = ryu::Buffer::new();
-    for sample in samples {
-        let [u, v, r, x, y, psi, delta, distance] = sample.state;
-        let row = [
-            sample.t,
-            u,
-            v,
-            r,
-            x,
-            y,
-            psi,
-            delta,
-            sample.command,
-            distance,
-        ];
-        for (i, value) in row.into_iter().enumerate() {
-            if i > 0 {
-                bytes.push(b',');
-            }
-            push_number(&mut bytes, &mut number, value);
-        }
-        bytes.push(b'\n');
-    }
-    write_atomically(path, &bytes).with_context(|| format!("writing {}", path.display()))
 }
 
 fn write_plots(
@@ -308,19 +304,19 @@ fn write_plots(
     manoeuvre: &Manoeuvre,
     outcome: &Outcome,
 ) -> Result<()> {
-    let column = |f: &dyn Fn(&Sample) -> f64| outcome.samples.iter().map(f).collect::<Vec<_>>();
-    let psi0 = outcome
-        .samples
-        .iter()
-        .find(|s| s.t >= manoeuvre.execute)
-        .map_or(0.0, |s| s.state[5]);
-    let time = column(&|s| s.t);
-    let north = column(&|s| s.state[3]);
-    let east = column(&|s| s.state[4]);
-    let heading = column(&|s| (s.state[5] - psi0).to_degrees());
-    let psi = column(&|s| s.state[5]);
-    let rudder = column(&|s| s.state[6].to_degrees());
-    let command = column(&|s| s.command.to_degrees());
+    let columns = &outcome.columns;
+    let time = &columns.time;
+    // The columns in ROW's order.
+    let [north, east, psi, rudder, command] = [3, 4, 5, 6, 7].map(|k| &columns.state[k]);
+    let psi0 = (time.iter().zip(psi))
+        .find(|(t, _)| **t >= manoeuvre.execute)
+        .map_or(0.0, |(_, psi)| *psi);
+    let degrees = |column: &[f64], from: f64| -> Vec<f64> {
+        column.iter().map(|x| (x - from).to_degrees()).collect()
+    };
+    let heading = degrees(psi, psi0);
+    let rudder = degrees(rudder, 0.0);
+    let command = degrees(command, 0.0);
     let marks: Vec<Mark> = outcome
         .figures
         .marks
@@ -333,11 +329,11 @@ fn write_plots(
     let title = format!("{} — {}", scene.title, manoeuvre.name);
     let plot = ManoeuvrePlot {
         title: &title,
-        time: &time,
-        north: &north,
-        east: &east,
+        time,
+        north,
+        east,
         heading_change_deg: &heading,
-        heading_rad: &psi,
+        heading_rad: psi,
         rudder_deg: &rudder,
         command_deg: &command,
         marks: &marks,
@@ -349,16 +345,15 @@ fn write_plots(
         },
     };
     write_manoeuvre_plots(folder, &plot)?;
-    let state: Vec<Vec<f64>> = (0..7).map(|k| column(&|s| s.state[k])).collect();
     let labels = trajectory_columns();
     let ship = super::view::ShipColumns {
         title: &title,
         length: scene.length,
-        time: &time,
+        time,
         state: labels[1..8]
             .iter()
             .cloned()
-            .zip(state.iter().map(Vec::as_slice))
+            .zip(columns.state.iter().map(Vec::as_slice))
             .collect(),
     };
     super::view::write_ship(folder, ship)?;
