@@ -56,9 +56,30 @@ pub struct Summary {
     pub error: Option<String>,
     /// What the run did not stop for but a reader should know.
     pub warnings: Vec<String>,
-    /// What the family adds (a pendulum's measured period, a free body's |H| drift), by name.
+    /// What the family and the scene add, by name, written in the names' order: a family's
+    /// measures (a pendulum's measured period, a free body's |H| drift), a sweep's `case`, a
+    /// stop condition's `stop_when` and `stopped_at`.
     #[serde(flatten)]
-    pub extra: std::collections::BTreeMap<String, serde_json::Value>,
+    pub extra: std::collections::BTreeMap<String, Extra>,
+}
+
+/// One entry a run adds to its summary ([`Summary::extra`]).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(untagged)]
+pub enum Extra {
+    /// A family's measure.
+    Number(f64),
+    /// A text: the stop condition as written.
+    Text(String),
+    /// A time that may not have come: when the stop condition held (`null` if it never did).
+    Time(Option<f64>),
+    /// The case of a sweep: its number and the values it set, by key.
+    Case {
+        /// The case's number, from 0.
+        index: usize,
+        /// Each swept key's value, as the scene gave it.
+        values: std::collections::BTreeMap<String, serde_json::Value>,
+    },
 }
 
 /// Operation counts as JSON.

@@ -19,7 +19,7 @@
 use anyhow::{Context, Result, bail};
 use eom::Short;
 use eom::output::folder::{Claim, FolderError, Writer, sweep_identity};
-use eom::output::summary::{Summary, write_atomically};
+use eom::output::summary::{Extra, Summary, write_atomically};
 use eom::output::text::printable;
 use eom::output::trajectory::{Columns, TrajectoryWriter};
 use eom::run::{Report, Row, RunError, Sink, run_reporting};
@@ -426,21 +426,17 @@ fn run_case(
     let measures = family_measures(scene, &columns);
     for (key, value) in &measures {
         if let Some(value) = value {
-            summary
-                .extra
-                .insert((*key).into(), serde_json::json!(value));
+            summary.extra.insert((*key).into(), Extra::Number(*value));
         }
     }
     if let Some(case) = case {
-        let values: serde_json::Map<String, serde_json::Value> = case
-            .values
-            .iter()
+        let values = (case.values.iter())
             .map(|(key, value)| (key.clone(), toml_to_json(value)))
             .collect();
-        summary.extra.insert(
-            "case".into(),
-            serde_json::json!({"index": case.index, "values": values}),
-        );
+        let index = case.index;
+        summary
+            .extra
+            .insert("case".into(), Extra::Case { index, values });
     }
     add_stop(scene, &report, &mut summary);
     let summary_path = out.join("summary.json");
@@ -496,8 +492,8 @@ fn run_case(
 fn add_stop(scene: &Scene, report: &Report, summary: &mut Summary) {
     if let Some(condition) = &scene.stop {
         let extra = &mut summary.extra;
-        extra.insert("stop_when".into(), serde_json::json!(condition.text));
-        extra.insert("stopped_at".into(), serde_json::json!(report.stopped_at));
+        extra.insert("stop_when".into(), Extra::Text(condition.text.clone()));
+        extra.insert("stopped_at".into(), Extra::Time(report.stopped_at));
     }
 }
 
