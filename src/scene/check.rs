@@ -51,11 +51,13 @@ struct PlanarVelocity {
 }
 
 impl Checker<'_> {
-    fn error(&self, key: &str, problem: Problem) -> SceneError {
+    /// The error naming `key`.
+    pub(crate) fn error(&self, key: &str, problem: Problem) -> SceneError {
         SceneError::new(self.name, key, problem)
     }
 
-    fn invalid(&self, key: &str, message: impl Into<String>) -> SceneError {
+    /// `key`'s value cannot be used, and why.
+    pub(crate) fn invalid(&self, key: &str, message: impl Into<String>) -> SceneError {
         self.error(key, Problem::Invalid(message.into()))
     }
 
@@ -320,14 +322,25 @@ impl Checker<'_> {
 
     /// `value` if it meets `requirement`, else the error naming `key` ([`Requirement`], the
     /// one set of value checks).
-    fn checked(&self, key: &str, requirement: Requirement, value: f64) -> Result<f64, SceneError> {
+    pub(crate) fn checked(
+        &self,
+        key: &str,
+        requirement: Requirement,
+        value: f64,
+    ) -> Result<f64, SceneError> {
         requirement
             .check(value)
             .map_err(|violation| self.invalid(key, violation.to_string()))
     }
 
-    fn finite(&self, key: &str, value: f64) -> Result<f64, SceneError> {
+    /// A finite value, the error naming `key`.
+    pub(crate) fn finite(&self, key: &str, value: f64) -> Result<f64, SceneError> {
         self.checked(key, Requirement::Finite, value)
+    }
+
+    /// A finite value above zero, the error naming `key`.
+    pub(crate) fn positive(&self, key: &str, value: f64) -> Result<f64, SceneError> {
+        self.checked(key, Requirement::Positive, value)
     }
 
     fn finite3(&self, key: &str, value: Option<[f64; 3]>) -> Result<[f64; 3], SceneError> {

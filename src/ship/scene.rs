@@ -56,7 +56,6 @@ use super::{Units, YawInertia};
 use crate::integrate::{Method, Stepper};
 use crate::scene::check::{Checker, MethodKeys};
 use crate::scene::{Problem, SceneError};
-use crate::validate::Requirement;
 use serde::Deserialize;
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -216,35 +215,9 @@ pub struct ShipScene {
     pub manoeuvres: Vec<Manoeuvre>,
 }
 
-struct Check<'a> {
-    name: &'a str,
-}
-
-impl Check<'_> {
-    fn error(&self, key: &str, problem: Problem) -> SceneError {
-        SceneError::new(self.name, key, problem)
-    }
-
-    fn invalid(&self, key: &str, why: impl Into<String>) -> SceneError {
-        self.error(key, Problem::Invalid(why.into()))
-    }
-
-    /// `value` if it meets `requirement`, else the error naming `key` (the one set of value
-    /// checks, [`Requirement`]).
-    fn checked(&self, key: &str, requirement: Requirement, value: f64) -> Result<f64, SceneError> {
-        requirement
-            .check(value)
-            .map_err(|violation| self.invalid(key, violation.to_string()))
-    }
-
-    fn positive(&self, key: &str, value: f64) -> Result<f64, SceneError> {
-        self.checked(key, Requirement::Positive, value)
-    }
-
-    fn finite(&self, key: &str, value: f64) -> Result<f64, SceneError> {
-        self.checked(key, Requirement::Finite, value)
-    }
-
+/// A ship's own tables, checked by the checker of every scene ([`Checker`]: its errors, its
+/// value checks, its method checks).
+impl Checker<'_> {
     /// Exactly one of the keys given, among those of the table's units; the others refused.
     fn one_of(
         &self,
@@ -278,7 +251,7 @@ impl Check<'_> {
         }
     }
 
-    fn body(&self, body: &BodyTable, units: Units) -> Result<(ShipBody, f64), SceneError> {
+    fn ship_body(&self, body: &BodyTable, units: Units) -> Result<(ShipBody, f64), SceneError> {
         let length = self.positive(
             "body.length",
             body.length
@@ -368,7 +341,7 @@ impl Check<'_> {
             (Units::Dimensional, None) => None,
         };
         let design_speed = self.positive("hydrodynamics.design_speed", hydro.design_speed)?;
-        let (body, length) = self.body(&file.body, units)?;
+        let (body, length) = self.ship_body(&file.body, units)?;
         let given = GivenTable {
             units,
             body,
@@ -425,7 +398,7 @@ impl Check<'_> {
             atol: t.atol,
             max_steps: t.max_steps,
         };
-        let settings = Checker { name: self.name }.method_settings(&keys, longest)?;
+        let settings = self.method_settings(&keys, longest)?;
         if settings.method == Method::LieMidpoint {
             return Err(self.invalid(
                 "integrator.method",
@@ -596,7 +569,7 @@ impl ShipScene {
 
     /// Checks the tables of a ship scene file.
     pub fn from_file(file: &ShipSceneFile, name: &str) -> Result<Self, SceneError> {
-        let check = Check { name };
+        let check = Checker { name };
         if file.model.family != "planar-midship" {
             return Err(check.invalid(
                 "model.family",
