@@ -198,16 +198,15 @@ impl Guard {
     pub(crate) fn new(scene: &Scene) -> Self {
         let info = scene.selection.info;
         let spec = &scene.integrator;
-        let pitch = match (info.family, info.kinematics) {
-            (Family::Spatial, Some(Kinematics::Euler)) => Some(10),
-            (Family::Top, Some(Kinematics::Euler)) => Some(4),
-            _ => None,
-        }
-        .map(|index| Pitch {
-            index,
-            rtol: spec.adaptive.map(|options| options.rtol),
-            band: None,
-        });
+        // The pitch θ of an Euler-angle attitude, where the catalog's layout has one.
+        let pitch = (info.kinematics == Some(Kinematics::Euler))
+            .then(|| info.state.iter().position(|name| *name == "theta"))
+            .flatten()
+            .map(|index| Pitch {
+                index,
+                rtol: spec.adaptive.map(|options| options.rtol),
+                band: None,
+            });
         // Symplectic Euler is symplectic for the pendulum only: the other families' rotation
         // lives among the rates it kicks together, which it turns as explicit Euler does.
         let scheme = match (spec.method, info.family) {

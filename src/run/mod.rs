@@ -56,7 +56,7 @@ use crate::integrate::segment::{self, Hooks, Piece, add};
 use crate::integrate::{
     IntegrateError, LieMidpoint, OdeSystem, Reached, RigidRotation, RowClock, Stats, Stepper,
 };
-use crate::models::{Family, Model, Visitor};
+use crate::models::{Model, Visitor};
 use crate::scene::{Body, Method, Scene};
 use guard::Guard;
 use nalgebra::{Matrix3, Quaternion, SVector, UnitQuaternion, Vector3};
@@ -377,15 +377,19 @@ fn step(scene: &Scene) -> f64 {
         .expect("a fixed-step method has a step")
 }
 
-/// The components symplectic Euler kicks first: the velocities of each family's state.
+/// The components symplectic Euler kicks first: the velocities of the model's state, read
+/// from the catalog's layout by their units (m/s, rad/s), which every family keeps together.
 fn kicked(scene: &Scene) -> Range<usize> {
-    match scene.selection.info.family {
-        Family::Pendulum => 1..2,
-        Family::PlanarAtG | Family::PlanarMidship => 0..3,
-        Family::PlanarSpaceFixed => 3..6,
-        Family::Spatial => 0..6,
-        Family::Top => 0..3,
-    }
+    velocities(scene.selection.info.state)
+}
+
+/// The velocities of a state layout (the entries in m/s or rad/s), as the range they fill.
+fn velocities(state: &[&str]) -> Range<usize> {
+    let is_velocity =
+        |name: &&str| matches!(crate::models::state_unit(name), Some("m/s" | "rad/s"));
+    let first = state.iter().position(is_velocity).unwrap_or(0);
+    let count = state.iter().filter(|n| is_velocity(n)).count();
+    first..first + count
 }
 
 /// The scene's method with its settings.
@@ -580,3 +584,31 @@ fn run_error(error: IntegrateError, names: &[String]) -> RunError {
 
 pub mod guard;
 pub mod tradeoff;
+
+#[cfg(test)]
+mod tests {
+    use crate::models::{CATALOG, Family};
+
+    /// Every catalog layout keeps its velocities together, where symplectic Euler kicks
+    /// them: the rates of the pendulum's angle, of a planar body in body or space axes, of a
+    /// spatial body's velocity and rate, of a top's rate.
+    #[test]
+    fn each_layouts_velocities_are_one_range() {
+        for info in CATALOG {
+            let range = super::velocities(info.state);
+            let wanted = match info.family {
+                Family::Pendulum => 1..2,
+                Family::PlanarAtG | Family::PlanarMidship => 0..3,
+                Family::PlanarSpaceFixed => 3..6,
+                Family::Spatial => 0..6,
+                Family::Top => 0..3,
+            };
+            assert_eq!(range, wanted, "{}", info.name);
+            for (i, name) in info.state.iter().enumerate() {
+                let unit = crate::models::state_unit(name);
+                let velocity = matches!(unit, Some("m/s" | "rad/s"));
+                assert_eq!(velocity, range.contains(&i), "{}: {name}", info.name);
+            }
+        }
+    }
+}
