@@ -15,6 +15,7 @@
 /// assert!(rhs.cost() < Operations { trig: 3, ..Operations::default() }.cost());
 /// ```
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Operations {
     /// Additions, subtractions and negations.
     pub add: u32,

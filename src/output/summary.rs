@@ -36,9 +36,9 @@ pub struct Summary {
     /// Why that model.
     pub reason: String,
     /// Its operations per right-hand-side call.
-    pub operations: OperationCounts,
+    pub operations: Operations,
     /// The unpruned variant's, for comparison.
-    pub full_operations: OperationCounts,
+    pub full_operations: Operations,
     /// The integration.
     pub integrator: IntegratorSummary,
     /// Wall time of the run, s.
@@ -80,33 +80,6 @@ pub enum Extra {
         /// Each swept key's value, as the scene gave it.
         values: std::collections::BTreeMap<String, serde_json::Value>,
     },
-}
-
-/// Operation counts as JSON.
-#[derive(Debug, Clone, Copy, Serialize)]
-pub struct OperationCounts {
-    /// Additions.
-    pub add: u32,
-    /// Multiplications.
-    pub mul: u32,
-    /// Divisions.
-    pub div: u32,
-    /// Square roots.
-    pub sqrt: u32,
-    /// Trigonometric calls.
-    pub trig: u32,
-}
-
-impl From<Operations> for OperationCounts {
-    fn from(o: Operations) -> Self {
-        Self {
-            add: o.add,
-            mul: o.mul,
-            div: o.div,
-            sqrt: o.sqrt,
-            trig: o.trig,
-        }
-    }
 }
 
 /// The integrator's part.
@@ -151,8 +124,8 @@ impl Summary {
             title,
             variant: info.name,
             reason,
-            operations: info.operations.into(),
-            full_operations: info.full_variant().operations.into(),
+            operations: info.operations,
+            full_operations: info.full_variant().operations,
             integrator: IntegratorSummary {
                 method,
                 steps: report.steps,

@@ -13,6 +13,7 @@ use super::table::RigidBodyTerms;
 use super::{ShipModel, ShipScene};
 use super::{Units, YawInertia};
 use crate::integrate::Stepper;
+use crate::models::Operations;
 use serde::Serialize;
 use std::collections::BTreeMap;
 
@@ -55,18 +56,7 @@ pub struct ModelSummary {
     /// The terms of the polynomial the model carries.
     pub terms: usize,
     /// What one right-hand side costs.
-    pub operations: OperationsSummary,
-}
-
-/// The arithmetic of one right-hand side.
-#[derive(Debug, Clone, Copy, Serialize)]
-pub struct OperationsSummary {
-    /// Additions, subtractions, negations.
-    pub add: u32,
-    /// Multiplications.
-    pub mul: u32,
-    /// Divisions and reciprocals.
-    pub div: u32,
+    pub operations: Operations,
 }
 
 /// The method and its settings.
@@ -235,11 +225,7 @@ impl ModelSummary {
             },
             conversion: table.conversions.clone(),
             terms: model.terms(),
-            operations: OperationsSummary {
-                add: operations.add,
-                mul: operations.mul,
-                div: operations.div,
-            },
+            operations,
         }
     }
 }
