@@ -1,0 +1,797 @@
+//! Underwater vehicles in six degrees of freedom about their table's origin O, on their own
+//! hydrodynamic tables.
+//!
+//! The equations are the proved ones of [`crate::derivation::vehicle`]: 4.1 and 4.2 about O
+//! with G at r_G (in three dimensions what 4.45 does to 4.43), with the tensor about O given
+//! or computed by Steiner (4.23) from the tensor about G. The implicit form is
+//!
+//! ```text
+//! (M_RB + M_A) ν̇ = τ_table + τ_propeller + τ_restoring + τ_applied − C_RB(ν)ν − C_A(ν)ν
+//! ```
+//!
+//! with ν = (u, v, w, p, q, r) in body axes at O, and
+//! - M_A the symmetric added-mass matrix, −(the table's acceleration derivatives): each named
+//!   entry (`Yrdot`) fills its symmetric partner (`Nvdot`), a name given for both is one
+//!   parameter whose two values must agree ([`VehicleSpec::mass_matrix_values`]);
+//! - C_A(ν)ν Kirchhoff's terms from T_A = ½νᵀM_Aν ([`AddedMassCoriolis::Derived`]), or none
+//!   where the table's cross terms already hold them ([`AddedMassCoriolis::Folded`], checked
+//!   coefficient by coefficient by [`folded_comparison`]);
+//! - τ_table the table's named terms and nothing else (see [`names`] for how a name is read);
+//!   a signed square x|x| reads |x| from an input `abs_x` that the caller sets to the absolute
+//!   value of x (the one quantity that is not a polynomial, as the ship's speed U is in the
+//!   prime system), so every proof stays exact; ∂f/∂x then holds the x in x|x| and ∂f/∂u the
+//!   |x|, and the caller adds ∂f/∂abs_x · sign(x) to the column of x;
+//! - τ_restoring the weight W at G and the buoyancy B at B, vertical in space axes with Z down
+//!   (NED), turned into body axes by the attitude: f = (W − B)k_b, m = r_G × W k_b − r_B × B k_b
+//!   with k_b = Rᵀ(0, 0, 1); for a quaternion R is its matrix, |q|² times a rotation, as for the
+//!   heavy top, so the potential below is exact along q̇ = ½ q ⊗ (0, ω).
+//!
+//! The mass matrix is constant but a general symmetric 6×6 of many parameters, whose symbolic
+//! inverse is too large to be worth emitting; it is inverted numerically once per parameter
+//! set, by Cholesky ([`VehicleSpec::inverse_mass_matrix`], which also refuses a matrix that is
+//! not positive definite and names its entries), and its 21 entries are parameters `minv_uu`,
+//! `minv_uv`, … of the system. What is proved symbolically is the implicit form and that the
+//! outputs are exactly ν̇ = −M⁻¹·bias with bias the rest of the proved residuals (staged as
+//! `bias_u` … `bias_r`); the inverse is checked numerically, ‖M·M⁻¹ − 𝟙‖ ≤ 1e-9.
+
+mod folded;
+mod mass;
+pub mod names;
+
+pub use folded::{FoldedComparison, FoldedTerm, folded_comparison, folded_terms, format_folded};
+pub use names::{
+    AddedMassEntry, Convention, Factor, ForceTerm, Load, NameError, parse_added_mass, parse_term,
+};
+
+use super::families::{
+    euler_kinematics, euler_kinematics_expected, quaternion_kinematics, verify_outputs,
+    verify_quaternion_position,
+};
+use super::ship::Units;
+use super::system::{BuildError, Group, Parameter, System};
+use super::{Kinematics, Symmetry};
+use crate::derivation::energy::rigid_body_kinetic_energy;
+use crate::derivation::kinematics::body_to_space;
+use crate::derivation::quaternion::{Quaternion, quaternion_rates, rotation_matrix};
+use crate::derivation::tensor_about_origin;
+use crate::derivation::vehicle::{
+    LOADS, VELOCITIES, centre_of_gravity, fluid_kinetic_energy, kirchhoff, rigid_body_about_origin,
+    symmetric_matrix,
+};
+use crate::symbolic::{Expr, Mat3, SymbolicError, Vec3};
+use std::borrow::Cow;
+use thiserror::Error;
+
+/// About which point the spec gives the inertia tensor.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum InertiaAbout {
+    /// About the table's origin O: `Ixx` … `Ixz`, used as given.
+    Origin,
+    /// About G: `Ixx_G` … `Ixz_G`, carried to O by Steiner (4.23).
+    Gravity,
+}
+
+/// Whether eom adds the added mass's Coriolis and centripetal terms.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum AddedMassCoriolis {
+    /// eom derives them (Kirchhoff) and adds them.
+    Derived,
+    /// The table's cross terms already hold them (Prestero's Xwq, Ywp, Mrp, …).
+    Folded,
+}
+
+/// How the propeller's thrust X_prop and torque K_prop enter.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Propeller {
+    /// No propeller loads (or the table's own terms in a control, `Xn|n|`).
+    None,
+    /// Constant at a setting: parameters `X_prop` (N) and `K_prop` (N m).
+    Constant,
+    /// Inputs `X_prop` and `K_prop`, set by the caller at every step.
+    Input,
+}
+
+/// What a vehicle model is made of. The numbers are given later, as parameters.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct VehicleSpec {
+    /// The units: SI ([`Units::Dimensional`]) only, for now.
+    pub units: Units,
+    /// How the attitude is carried.
+    pub kinematics: Kinematics,
+    /// About which point the inertia tensor is given.
+    pub inertia: InertiaAbout,
+    /// Which products of the given tensor are zero.
+    pub symmetry: Symmetry,
+    /// How the table's names are read.
+    pub convention: Convention,
+    /// The controls the table's terms may hold (`dr`, `ds`), inputs of the model.
+    pub controls: Vec<String>,
+    /// The added-mass entries by name (`Xudot`, `Yrdot`, …).
+    pub added_mass: Vec<String>,
+    /// Whether eom adds Kirchhoff's terms.
+    pub added_mass_coriolis: AddedMassCoriolis,
+    /// The force table's terms by name (`Yvv`, `Yuudr`, `Yv|v|`).
+    pub terms: Vec<String>,
+    /// The propeller's thrust and torque.
+    pub propeller: Propeller,
+    /// Whether the weight and the buoyancy act (parameters `weight`, `buoyancy`, r_B).
+    pub hydrostatics: bool,
+    /// Whether six more inputs `F_x` … `M_z` carry loads about O beyond the table.
+    pub applied_loads: bool,
+}
+
+/// Why a vehicle model could not be built or its numbers not used.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum VehicleError {
+    /// A name of the table was not read.
+    #[error(transparent)]
+    Name(#[from] NameError),
+    /// A name is listed twice.
+    #[error("the table lists `{0}` twice")]
+    ListedTwice(String),
+    /// Two names of the table are read as the same term.
+    #[error("`{0}` and `{1}` are the same term ({2})")]
+    SameTerm(String, String, String),
+    /// A control's name that could be read otherwise, or clashes.
+    #[error("the control `{name}` is refused: {why}")]
+    Control {
+        /// The control.
+        name: String,
+        /// Why.
+        why: String,
+    },
+    /// A symbol of the model would be the same identifier as another.
+    #[error("`{0}` and `{1}` would be the same identifier in the generated code")]
+    Clash(String, String),
+    /// What the generator does not do yet.
+    #[error("{0}")]
+    Unsupported(String),
+    /// A value the numeric step needs is missing or not finite.
+    #[error("no finite value for `{0}`")]
+    MissingValue(String),
+    /// An added-mass entry given under both names, with two values.
+    #[error(
+        "the added mass is symmetric, but `{name}` = {value} and its partner `{mirror}` = {mirror_value}"
+    )]
+    AsymmetricAddedMass {
+        /// The entry's name.
+        name: String,
+        /// Its value.
+        value: f64,
+        /// The symmetric partner's name.
+        mirror: String,
+        /// Its value.
+        mirror_value: f64,
+    },
+    /// The total mass matrix is not positive definite.
+    #[error(
+        "the total mass matrix M_RB + M_A is not positive definite: its leading {size}×{size} \
+         block fails at {axis} (pivot {pivot:e}); the entries of that row: {entries}"
+    )]
+    NotPositiveDefinite {
+        /// The velocity whose row fails.
+        axis: &'static str,
+        /// The size of the leading block that is not positive definite.
+        size: usize,
+        /// The Cholesky pivot left (≤ 0 or not finite).
+        pivot: f64,
+        /// The parameters of that row up to the diagonal, with their values.
+        entries: String,
+    },
+    /// The model could not be built or verified.
+    #[error(transparent)]
+    Build(#[from] BuildError),
+}
+
+fn symbolic(name: &str) -> impl Fn(SymbolicError) -> VehicleError + '_ {
+    move |source| {
+        VehicleError::Build(BuildError::Symbolic {
+            model: name.into(),
+            source,
+        })
+    }
+}
+
+/// The position of O in space axes (Z down) and the attitude, after ν.
+fn kinematic_state(kinematics: Kinematics) -> Vec<&'static str> {
+    let attitude: &[&str] = match kinematics {
+        Kinematics::Euler => &["phi", "theta", "psi"],
+        Kinematics::Quaternion => &["q0", "q1", "q2", "q3"],
+    };
+    let mut state = vec!["x", "y", "z"];
+    state.extend(attitude);
+    state
+}
+
+fn parameter(symbol: impl Into<Cow<'static, str>>, doc: impl Into<Cow<'static, str>>) -> Parameter {
+    Parameter {
+        symbol: symbol.into(),
+        doc: doc.into(),
+    }
+}
+
+fn leak(name: String) -> &'static str {
+    // The system's state and inputs are `&'static str`; a vehicle's few control names are
+    // leaked once per model built, as a ship's are not needed.
+    Box::leak(name.into_boxed_str())
+}
+
+/// The added-mass entries, one per symmetric pair, and the pairs (parameter, partner) of
+/// the names given for both of a pair's entries.
+pub type AddedMassEntries = (Vec<AddedMassEntry>, Vec<(String, String)>);
+
+/// The name of an entry of (M_RB + M_A)⁻¹, `minv_uv`, upper triangle.
+pub fn inverse_entry(i: usize, j: usize) -> String {
+    format!("minv_{}{}", VELOCITIES[i.min(j)], VELOCITIES[i.max(j)])
+}
+
+impl VehicleSpec {
+    /// The table's force terms, read under the spec's convention; a name listed twice, two
+    /// names of one term, or a name that does not read is refused.
+    pub fn force_terms(&self) -> Result<Vec<ForceTerm>, VehicleError> {
+        self.check_controls()?;
+        let mut terms: Vec<ForceTerm> = Vec::new();
+        for name in &self.terms {
+            if terms.iter().any(|t| &t.name == name) {
+                return Err(VehicleError::ListedTwice(name.clone()));
+            }
+            let term = parse_term(name, self.convention, &self.controls)?;
+            let same = terms
+                .iter()
+                .find(|t| t.load == term.load && t.product_key() == term.product_key());
+            if let Some(same) = same {
+                return Err(VehicleError::SameTerm(
+                    same.name.clone(),
+                    term.name.clone(),
+                    term.meaning(),
+                ));
+            }
+            terms.push(term);
+        }
+        Ok(terms)
+    }
+
+    fn check_controls(&self) -> Result<(), VehicleError> {
+        for name in &self.controls {
+            let refuse = |why: &str| VehicleError::Control {
+                name: name.clone(),
+                why: why.into(),
+            };
+            let identifier = name.chars().next().is_some_and(|c| c.is_ascii_lowercase())
+                && name.chars().all(|c| c.is_ascii_alphanumeric());
+            if !identifier {
+                return Err(refuse("a control is lower-case letters and digits"));
+            }
+            if name.starts_with(names::VELOCITY_LETTERS) {
+                return Err(refuse(
+                    "it starts with a velocity's letter, so a term's name could be read two ways",
+                ));
+            }
+            if name.contains("dot") {
+                return Err(refuse("`dot` marks an added-mass entry"));
+            }
+        }
+        Ok(())
+    }
+
+    /// The added-mass entries, one per symmetric pair: the first name given for a pair is its
+    /// parameter; a later name of the same pair is its partner (returned second).
+    pub fn added_mass_entries(&self) -> Result<AddedMassEntries, VehicleError> {
+        let mut entries: Vec<AddedMassEntry> = Vec::new();
+        let mut partners = Vec::new();
+        for name in &self.added_mass {
+            let entry = parse_added_mass(name)?;
+            let pair = |e: &AddedMassEntry| (e.row.min(e.column), e.row.max(e.column));
+            match entries.iter().find(|e| pair(e) == pair(&entry)) {
+                Some(first) if first.name == entry.name => {
+                    return Err(VehicleError::ListedTwice(name.clone()));
+                }
+                Some(first) => partners.push((first.name.clone(), entry.name.clone())),
+                None => entries.push(entry),
+            }
+        }
+        Ok((entries, partners))
+    }
+
+    /// M_A = −(the table's entries), symmetric.
+    pub fn added_mass_matrix(&self) -> Result<[[Expr; 6]; 6], VehicleError> {
+        let (entries, _) = self.added_mass_entries()?;
+        let table = symmetric_matrix(|i, j| {
+            entries
+                .iter()
+                .find(|e| (e.row.min(e.column), e.row.max(e.column)) == (i, j))
+                .map(|e| e.name.clone())
+                .unwrap_or_default()
+        });
+        Ok(std::array::from_fn(|i| {
+            std::array::from_fn(|j| -&table[i][j])
+        }))
+    }
+
+    /// The symbols of the given inertia tensor, row-major upper triangle order
+    /// (xx, yy, zz, xy, yz, xz), pruned products left out.
+    fn inertia_symbols(&self) -> Vec<(&'static str, &'static str)> {
+        let all = match self.inertia {
+            InertiaAbout::Origin => [
+                ("Ixx", "Ixx"),
+                ("Iyy", "Iyy"),
+                ("Izz", "Izz"),
+                ("Ixy", "Ixy"),
+                ("Iyz", "Iyz"),
+                ("Ixz", "Ixz"),
+            ],
+            InertiaAbout::Gravity => [
+                ("Ixx", "Ixx_G"),
+                ("Iyy", "Iyy_G"),
+                ("Izz", "Izz_G"),
+                ("Ixy", "Ixy_G"),
+                ("Iyz", "Iyz_G"),
+                ("Ixz", "Ixz_G"),
+            ],
+        };
+        all.into_iter()
+            .filter(|(entry, _)| !self.symmetry.pruned().contains(entry))
+            .collect()
+    }
+
+    /// The tensor about O in the spec's parameters, as substitutions for `Ixx` … `Ixz`.
+    fn inertia_about_origin(&self) -> Result<Vec<(&'static str, Expr)>, SymbolicError> {
+        let given: Vec<(&str, &str)> = self.inertia_symbols();
+        let value = |entry: &str| -> Expr {
+            given
+                .iter()
+                .find(|(e, _)| *e == entry)
+                .map(|(_, symbol)| Expr::symbol(symbol))
+                .unwrap_or_default()
+        };
+        let entries = ["Ixx", "Iyy", "Izz", "Ixy", "Iyz", "Ixz"];
+        match self.inertia {
+            InertiaAbout::Origin => Ok(entries.iter().map(|e| (*e, value(e))).collect()),
+            InertiaAbout::Gravity => {
+                let about_g = [
+                    ("Ixx_G", value("Ixx")),
+                    ("Iyy_G", value("Iyy")),
+                    ("Izz_G", value("Izz")),
+                    ("Ixy_G", value("Ixy")),
+                    ("Iyz_G", value("Iyz")),
+                    ("Izx_G", value("Ixz")),
+                ];
+                let tensor = tensor_about_origin()?;
+                let at = [(0, 0), (1, 1), (2, 2), (0, 1), (1, 2), (0, 2)];
+                entries
+                    .iter()
+                    .zip(at)
+                    .map(|(e, (r, c))| Ok((*e, tensor.0[r][c].subs_all(&about_g)?)))
+                    .collect()
+            }
+        }
+    }
+
+    /// k_b = Rᵀ(0, 0, 1): the downward vertical in body axes.
+    fn vertical_in_body(&self) -> Vec3 {
+        let rotation: Mat3 = match self.kinematics {
+            Kinematics::Euler => body_to_space(),
+            Kinematics::Quaternion => rotation_matrix(&Quaternion::symbols()),
+        };
+        rotation
+            .transpose()
+            .mul_vec(&Vec3::new(Expr::zero(), Expr::zero(), Expr::int(1)))
+    }
+
+    fn centre_of_buoyancy() -> Vec3 {
+        Vec3::symbols(["x_B", "y_B", "z_B"])
+    }
+
+    /// The restoring loads of the weight at G and the buoyancy at B, in body axes.
+    pub fn restoring(&self) -> [Expr; 6] {
+        if !self.hydrostatics {
+            return std::array::from_fn(|_| Expr::zero());
+        }
+        let k = self.vertical_in_body();
+        let (weight, buoyancy) = (Expr::symbol("weight"), Expr::symbol("buoyancy"));
+        let force = k.scale(&(&weight - &buoyancy));
+        let moment = centre_of_gravity()
+            .cross(&k.scale(&weight))
+            .sub(&Self::centre_of_buoyancy().cross(&k.scale(&buoyancy)));
+        let [x, y, z] = force.0;
+        let [kk, m, n] = moment.0;
+        [x, y, z, kk, m, n]
+    }
+
+    /// V = (B − W)z − (W r_G − B r_B)·k_b: the potential of the weight and the buoyancy, Z down.
+    fn potential_energy(&self) -> Expr {
+        let k = self.vertical_in_body();
+        let (weight, buoyancy) = (Expr::symbol("weight"), Expr::symbol("buoyancy"));
+        let lever = centre_of_gravity()
+            .scale(&weight)
+            .sub(&Self::centre_of_buoyancy().scale(&buoyancy));
+        &(&buoyancy - &weight) * &Expr::symbol("z") - lever.dot(&k)
+    }
+
+    /// The value of a term's product: |x| read from the input `abs_x`.
+    fn product(term: &ForceTerm) -> Expr {
+        term.factors
+            .iter()
+            .map(|f| {
+                if f.absolute {
+                    Expr::symbol(&format!("abs_{}", f.variable))
+                } else {
+                    Expr::symbol(&f.variable)
+                }
+            })
+            .fold(Expr::int(1), |a, b| a * b)
+    }
+
+    /// The right sides: the table's terms, the propeller, the restoring loads and the applied
+    /// loads, per load.
+    pub fn loads(&self) -> Result<[Expr; 6], VehicleError> {
+        let terms = self.force_terms()?;
+        let restoring = self.restoring();
+        let mut loads: [Expr; 6] = std::array::from_fn(|i| restoring[i].clone());
+        for term in &terms {
+            let value = Expr::symbol(&term.symbol()) * Self::product(term);
+            loads[term.load.index()] = &loads[term.load.index()] + &value;
+        }
+        if self.propeller != Propeller::None {
+            loads[0] = &loads[0] + &Expr::symbol("X_prop");
+            loads[3] = &loads[3] + &Expr::symbol("K_prop");
+        }
+        if self.applied_loads {
+            for (load, symbol) in loads.iter_mut().zip(LOADS) {
+                *load = &*load + &Expr::symbol(symbol);
+            }
+        }
+        Ok(loads)
+    }
+
+    /// The residuals of the six equations about O, left − right, in the spec's parameters:
+    /// the rigid body (derived, `derivation::vehicle`), the added mass on the left with
+    /// Kirchhoff's terms where derived, and the loads.
+    pub fn residuals(&self) -> Result<[Expr; 6], VehicleError> {
+        let err = symbolic("vehicle");
+        let rigid = rigid_body_about_origin().map_err(&err)?;
+        let loads = self.loads()?;
+        let load_symbols: Vec<(&str, Expr)> = LOADS.iter().copied().zip(loads).collect();
+        let inertia = self.inertia_about_origin().map_err(&err)?;
+        let added_mass = self.added_mass_matrix()?;
+        let fluid = match self.added_mass_coriolis {
+            AddedMassCoriolis::Derived => kirchhoff(&added_mass).map_err(&err)?,
+            AddedMassCoriolis::Folded => std::array::from_fn(|i| {
+                VELOCITIES
+                    .iter()
+                    .enumerate()
+                    .map(|(j, v)| &added_mass[i][j] * &Expr::symbol(&format!("{v}_dot")))
+                    .sum()
+            }),
+        };
+        let mut residuals: [Expr; 6] = std::array::from_fn(|_| Expr::zero());
+        for i in 0..6 {
+            // The loads first: an applied load F_x is its own symbol again afterwards.
+            let body = rigid[i].subs_all(&load_symbols).map_err(&err)?;
+            residuals[i] = &body.subs_all(&inertia).map_err(&err)? + &fluid[i];
+        }
+        Ok(residuals)
+    }
+
+    /// T = ½M|v + ω × r_G|² + ½ωᵀ[I_G]ω (4.32, v_G by 4.5) + ½νᵀM_Aν: the body's and the
+    /// fluid's kinetic energy, in the spec's parameters.
+    pub fn kinetic_energy(&self) -> Result<Expr, VehicleError> {
+        let err = symbolic("vehicle");
+        let omega = Vec3::symbols(["p", "q", "r"]);
+        let v_g = Vec3::symbols(["u", "v", "w"]).add(&omega.cross(&centre_of_gravity()));
+        let [u, v, w] = v_g.0;
+        // 4.32 in the tensor about G; that tensor is the one about O less Steiner's part.
+        let about_o = self.inertia_about_origin().map_err(&err)?;
+        let correction = tensor_about_origin().map_err(&err)?;
+        let at = [(0, 0), (1, 1), (2, 2), (0, 1), (1, 2), (0, 2)];
+        let about_g_symbols = ["Ixx_G", "Iyy_G", "Izz_G", "Ixy_G", "Iyz_G", "Izx_G"];
+        let mut tensor_g: Vec<(&str, Expr)> = Vec::new();
+        for (((entry, value), (r, c)), symbol) in about_o.iter().zip(at).zip(about_g_symbols) {
+            let steiner = &correction.0[r][c] - &Expr::symbol(symbol);
+            tensor_g.push((entry, value - &steiner));
+        }
+        let mut substitutions = vec![("u", u), ("v", v), ("w", w)];
+        substitutions.extend(tensor_g);
+        let body = rigid_body_kinetic_energy()
+            .and_then(|t| t.subs_all(&substitutions))
+            .map_err(&err)?;
+        let fluid = fluid_kinetic_energy(&self.added_mass_matrix()?).map_err(&err)?;
+        Ok(body + fluid)
+    }
+
+    /// The parameters, in order: the body, G, the hydrostatics, the added mass, the
+    /// propeller's constants, the table's coefficients, then the entries of (M_RB + M_A)⁻¹.
+    pub fn parameters(&self) -> Result<Vec<Parameter>, VehicleError> {
+        let mut parameters = vec![parameter("M", "mass M")];
+        let about = match self.inertia {
+            InertiaAbout::Origin => "about O, the table's origin",
+            InertiaAbout::Gravity => "about G",
+        };
+        for (entry, symbol) in self.inertia_symbols() {
+            let doc = if entry[1..2] == entry[2..3] {
+                format!("moment of inertia {entry} {about} (4.13)")
+            } else {
+                let (a, b) = (&entry[1..2], &entry[2..3]);
+                format!("product of inertia {entry} = −∫{a}{b} dm {about} (4.14)")
+            };
+            parameters.push(parameter(symbol, doc));
+        }
+        for axis in ["x", "y", "z"] {
+            parameters.push(parameter(
+                format!("{axis}_G"),
+                format!("position {axis}_G of G from O along body {axis}"),
+            ));
+        }
+        if self.hydrostatics {
+            parameters.push(parameter("weight", "weight W, N"));
+            parameters.push(parameter("buoyancy", "buoyancy B, N"));
+            for axis in ["x", "y", "z"] {
+                parameters.push(parameter(
+                    format!("{axis}_B"),
+                    format!("position {axis}_B of the centre of buoyancy from O along body {axis}"),
+                ));
+            }
+        }
+        let (entries, partners) = self.added_mass_entries()?;
+        for entry in &entries {
+            let partner = partners
+                .iter()
+                .find(|(first, _)| *first == entry.name)
+                .map(|(_, second)| format!(" (and its symmetric partner {second})"))
+                .unwrap_or_default();
+            parameters.push(parameter(
+                entry.name.clone(),
+                format!(
+                    "added mass {}{partner}: {} per {}-acceleration",
+                    entry.name,
+                    Load::ALL[entry.row].letter(),
+                    VELOCITIES[entry.column]
+                ),
+            ));
+        }
+        if self.propeller == Propeller::Constant {
+            parameters.push(parameter("X_prop", "propeller's thrust X_prop, N"));
+            parameters.push(parameter(
+                "K_prop",
+                "propeller's torque K_prop on the body, N m",
+            ));
+        }
+        for term in self.force_terms()? {
+            parameters.push(parameter(
+                term.symbol(),
+                format!(
+                    "hydrodynamic coefficient {} of {} in {}",
+                    term.name,
+                    term.meaning(),
+                    term.load.letter()
+                ),
+            ));
+        }
+        for (i, row) in VELOCITIES.iter().enumerate() {
+            for (j, column) in VELOCITIES.iter().enumerate().skip(i) {
+                parameters.push(parameter(
+                    inverse_entry(i, j),
+                    format!(
+                        "entry ({row}, {column}) of (M_RB + M_A)⁻¹, from `inverse_mass_matrix`"
+                    ),
+                ));
+            }
+        }
+        Ok(parameters)
+    }
+
+    /// The velocities and controls whose absolute value the table's terms read, in order:
+    /// the input `abs_x` is |x|.
+    pub fn absolute_values(&self) -> Result<Vec<String>, VehicleError> {
+        let terms = self.force_terms()?;
+        let mut order: Vec<String> = VELOCITIES.iter().map(|v| v.to_string()).collect();
+        order.extend(self.controls.iter().cloned());
+        Ok(order
+            .into_iter()
+            .filter(|x| {
+                terms
+                    .iter()
+                    .any(|t| t.factors.iter().any(|f| f.absolute && &f.variable == x))
+            })
+            .collect())
+    }
+
+    /// The inputs, in order: the controls, the propeller's (where inputs), the applied loads
+    /// (where asked for), then `abs_x` for each |x| the terms read.
+    pub fn inputs(&self) -> Result<Vec<String>, VehicleError> {
+        let mut inputs = self.controls.clone();
+        if self.propeller == Propeller::Input {
+            inputs.extend(["X_prop".into(), "K_prop".into()]);
+        }
+        if self.applied_loads {
+            inputs.extend(LOADS.iter().map(|l| l.to_string()));
+        }
+        inputs.extend(
+            self.absolute_values()?
+                .into_iter()
+                .map(|x| format!("abs_{x}")),
+        );
+        Ok(inputs)
+    }
+
+    /// The state: ν, the position of O in space axes (Z down), the attitude.
+    pub fn state(&self) -> Vec<&'static str> {
+        let mut state = VELOCITIES.to_vec();
+        state.extend(kinematic_state(self.kinematics));
+        state
+    }
+}
+
+/// The mass matrix of the residuals and the rest: residual = M ν̇ + rest, M of parameters
+/// only, symmetric, checked exactly.
+fn split(name: &str, residuals: &[Expr; 6]) -> Result<([[Expr; 6]; 6], [Expr; 6]), VehicleError> {
+    let rates: Vec<String> = VELOCITIES.iter().map(|v| format!("{v}_dot")).collect();
+    let matrix: [[Expr; 6]; 6] =
+        std::array::from_fn(|i| std::array::from_fn(|j| residuals[i].coefficient_of(&rates[j])));
+    let zeros: Vec<(&str, Expr)> = rates.iter().map(|r| (r.as_str(), Expr::zero())).collect();
+    let mut rest: [Expr; 6] = std::array::from_fn(|_| Expr::zero());
+    let fail = |what: String, residual: &Expr| {
+        VehicleError::Build(BuildError::Verification {
+            model: name.into(),
+            what,
+            residual: residual.to_string(),
+        })
+    };
+    for i in 0..6 {
+        rest[i] = residuals[i].subs_all(&zeros).map_err(symbolic(name))?;
+        let rebuilt: Expr = (0..6)
+            .map(|j| &matrix[i][j] * &Expr::symbol(&rates[j]))
+            .sum::<Expr>()
+            + &rest[i];
+        let left = &residuals[i] - &rebuilt;
+        if !left.is_zero() {
+            return Err(fail(
+                format!(
+                    "equation {} is not linear in the accelerations",
+                    Load::ALL[i].letter()
+                ),
+                &left,
+            ));
+        }
+        for (j, entry) in matrix[i].iter().enumerate() {
+            let moving = entry
+                .symbols()
+                .into_iter()
+                .find(|s| VELOCITIES.contains(&s.as_str()) || rates.contains(s));
+            if moving.is_some() || *entry != matrix[j][i] {
+                return Err(fail(
+                    format!("the mass matrix entry ({i}, {j}) is not constant and symmetric"),
+                    &(entry - &matrix[j][i]),
+                ));
+            }
+        }
+    }
+    Ok((matrix, rest))
+}
+
+/// The vehicle model of a spec: the six equations about O with the added mass, Kirchhoff's
+/// terms (where derived), the table's terms, the propeller and the restoring loads, solved
+/// as ν̇ = −(M_RB + M_A)⁻¹·bias with the inverse's entries as parameters; the position of O
+/// in space axes and the attitude by the catalog's kinematics (4.57, 4.60, or the
+/// quaternion's), each checked as the catalog checks them.
+pub fn vehicle(name: &str, spec: &VehicleSpec) -> Result<System, VehicleError> {
+    if spec.units != Units::Dimensional {
+        return Err(VehicleError::Unsupported(
+            "a vehicle's table in the prime system is not supported yet; give it in SI".into(),
+        ));
+    }
+    let err = symbolic(name);
+    let residuals = spec.residuals()?;
+    let (_, rest) = split(name, &residuals)?;
+    let bias_names: Vec<String> = VELOCITIES.iter().map(|v| format!("bias_{v}")).collect();
+    let mut stages: Vec<(String, Expr)> = bias_names.iter().cloned().zip(rest.clone()).collect();
+    let inverse = |i: usize, j: usize| Expr::symbol(&inverse_entry(i, j));
+    let solved = |values: &dyn Fn(usize) -> Expr| -> Vec<Expr> {
+        (0..6)
+            .map(|i| -(0..6).map(|j| inverse(i, j) * values(j)).sum::<Expr>())
+            .collect()
+    };
+    let mut outputs = solved(&|j| Expr::symbol(&bias_names[j]));
+    let mut expected: Vec<Expr> = solved(&|j| rest[j].clone());
+    let (kinematic_stages, kinematic_outputs, kinematic_equations) = match spec.kinematics {
+        Kinematics::Euler => {
+            let (s, o) = euler_kinematics();
+            expected.extend(euler_kinematics_expected(name)?);
+            (s, o, ["4.57", "4.60"])
+        }
+        Kinematics::Quaternion => {
+            let (s, o) = quaternion_kinematics(name)?;
+            (s, o, ["4.57 q", "4.60 q"])
+        }
+    };
+    stages.extend(kinematic_stages);
+    outputs.extend(kinematic_outputs);
+    let parameters = spec.parameters()?;
+    let inputs: Vec<&'static str> = spec.inputs()?.into_iter().map(leak).collect();
+    let mut equations = vec!["4.1", "4.2", "4.5", "4.23", "4.48", "4.50"];
+    equations.extend(kinematic_equations);
+    let system = System {
+        name: name.into(),
+        title: "Underwater vehicle in six degrees of freedom about its table's origin O".into(),
+        equations,
+        parameters,
+        reciprocals: vec![],
+        state: spec.state(),
+        inputs,
+        stages,
+        outputs,
+        groups: groups(spec),
+        kinetic_energy: Some(spec.kinetic_energy()?),
+        energy_formula: Some(
+            "T = ½M|v + ω × r_G|² + ½ωᵀ[I_G]ω + ½νᵀM_Aν, the body's and the fluid's",
+        ),
+        potential_energy: spec.hydrostatics.then(|| spec.potential_energy()),
+        potential_formula: spec
+            .hydrostatics
+            .then_some("V = (B − W)z − (W r_G − B r_B)·k_b, Z down, k_b = Rᵀ(0, 0, 1)"),
+        coefficient_names: vec![],
+    };
+    check_identifiers(&system)?;
+    let mut checks: Vec<(usize, Expr)> = expected.into_iter().enumerate().collect();
+    if spec.kinematics == Kinematics::Quaternion {
+        let rates = quaternion_rates().map_err(&err)?;
+        checks.extend((9..13).zip(rates.0));
+        verify_quaternion_position(&system)?;
+    }
+    verify_outputs(&system, &checks)?;
+    Ok(system)
+}
+
+/// No two symbols of the system may become the same identifier in the generated code.
+fn check_identifiers(system: &System) -> Result<(), VehicleError> {
+    let mut seen: Vec<(String, String)> = Vec::new();
+    let symbols = system
+        .parameters
+        .iter()
+        .map(|p| p.symbol.to_string())
+        .chain(system.state.iter().map(|s| s.to_string()))
+        .chain(system.inputs.iter().map(|s| s.to_string()))
+        .chain(system.stages.iter().map(|(s, _)| s.clone()));
+    for symbol in symbols {
+        let identifier = crate::emit::identifier(&symbol);
+        if let Some((other, _)) = seen.iter().find(|(_, id)| *id == identifier) {
+            return Err(VehicleError::Clash(other.clone(), symbol));
+        }
+        seen.push((symbol, identifier));
+    }
+    Ok(())
+}
+
+fn groups(spec: &VehicleSpec) -> Vec<Group> {
+    let fluid = match spec.added_mass_coriolis {
+        AddedMassCoriolis::Derived => "− C_A(ν)ν (Kirchhoff) ",
+        AddedMassCoriolis::Folded => "(C_A folded into the table) ",
+    };
+    let (position, attitude) = match spec.kinematics {
+        Kinematics::Euler => (
+            "4.57: the position of O in space axes, E·v one rotation at a time",
+            "4.60: the Euler-angle rates",
+        ),
+        Kinematics::Quaternion => (
+            "4.57 by the quaternion: v + 2(q₀t + q_v × t)/|q|², t = q_v × v",
+            "4.60 by the quaternion: q̇ = ½ q ⊗ (0, ω)",
+        ),
+    };
+    vec![
+        Group {
+            first: 0,
+            comment: format!(
+                "4.1, 4.2 about O (4.5, 4.23): (M_RB + M_A)ν̇ = τ − C_RB(ν)ν {fluid}+ restoring, \
+                 ν̇ = −(M_RB + M_A)⁻¹ bias"
+            ),
+        },
+        Group {
+            first: 6,
+            comment: position.into(),
+        },
+        Group {
+            first: 9,
+            comment: attitude.into(),
+        },
+    ]
+}
