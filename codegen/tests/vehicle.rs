@@ -373,6 +373,8 @@ fn the_folded_table_is_shown_against_its_added_mass() {
     ] {
         row(name);
     }
+    let exact = rows.iter().filter(|r| r.difference == Some(0.0)).count();
+    assert_eq!(exact, 10);
     // Kirchhoff's roll terms that Prestero leaves out vanish for REMUS's axisymmetric numbers.
     for row in rows.iter().filter(|r| r.name.is_none()) {
         assert_eq!(row.load, Load::K, "{row:?}");
@@ -591,4 +593,53 @@ fn body_fluid_and_hydrostatics_conserve_energy_along_the_equations() {
     let power = &kinetic + &potential;
     assert!(!kinetic.is_zero());
     assert!(power.is_zero(), "d(T + V)/dt = {power}");
+}
+
+/// The restoring loads with Euler angles are −g(η) of Fossen (2011, 4.6), Z down.
+#[test]
+fn the_restoring_loads_are_fossens_g_of_eta_with_the_sign_on_the_right() {
+    let spec = remus_spec(Kinematics::Euler, AddedMassCoriolis::Folded);
+    let g_eta = [
+        "(weight - buoyancy)*theta.sin()",
+        "-(weight - buoyancy)*theta.cos()*phi.sin()",
+        "-(weight - buoyancy)*theta.cos()*phi.cos()",
+        "-(y_G*weight - y_B*buoyancy)*theta.cos()*phi.cos() + (z_G*weight - z_B*buoyancy)*theta.cos()*phi.sin()",
+        "(z_G*weight - z_B*buoyancy)*theta.sin() + (x_G*weight - x_B*buoyancy)*theta.cos()*phi.cos()",
+        "-(x_G*weight - x_B*buoyancy)*theta.cos()*phi.sin() - (y_G*weight - y_B*buoyancy)*theta.sin()",
+    ];
+    for (restoring, book) in spec.restoring().iter().zip(g_eta) {
+        let sum = restoring + &parse(book).unwrap();
+        assert!(sum.is_zero(), "{book}: {sum}");
+    }
+}
+
+/// With a quaternion, the restoring loads at q(φ, θ, ψ) (half angles, |q| = 1 identically)
+/// are those of the Euler angles.
+#[test]
+fn the_quaternions_restoring_loads_are_the_euler_angles_ones() {
+    use eom_codegen::derivation::quaternion::{
+        body_to_space_half_angles, quaternion_of_euler_angles,
+    };
+    let spec = remus_spec(Kinematics::Quaternion, AddedMassCoriolis::Folded);
+    let q = quaternion_of_euler_angles();
+    let at_euler: Vec<(&str, Expr)> = ["q0", "q1", "q2", "q3"].into_iter().zip(q.0).collect();
+    let down = body_to_space_half_angles()
+        .transpose()
+        .mul_vec(&eom_codegen::symbolic::Vec3::new(
+            Expr::zero(),
+            Expr::zero(),
+            Expr::int(1),
+        ));
+    let (weight, buoyancy) = (Expr::symbol("weight"), Expr::symbol("buoyancy"));
+    let r_g = eom_codegen::symbolic::Vec3::symbols(["x_G", "y_G", "z_G"]);
+    let r_b = eom_codegen::symbolic::Vec3::symbols(["x_B", "y_B", "z_B"]);
+    let moment = r_g
+        .cross(&down.scale(&weight))
+        .sub(&r_b.cross(&down.scale(&buoyancy)));
+    let force = down.scale(&(&weight - &buoyancy));
+    let expected: Vec<Expr> = force.0.into_iter().chain(moment.0).collect();
+    for (restoring, expected) in spec.restoring().iter().zip(expected) {
+        let difference = &restoring.subs_all(&at_euler).unwrap() - &expected;
+        assert!(difference.is_zero(), "{difference}");
+    }
 }

@@ -674,6 +674,30 @@ fn split(name: &str, residuals: &[Expr; 6]) -> Result<([[Expr; 6]; 6], [Expr; 6]
 /// as ν̇ = −(M_RB + M_A)⁻¹·bias with the inverse's entries as parameters; the position of O
 /// in space axes and the attitude by the catalog's kinematics (4.57, 4.60, or the
 /// quaternion's), each checked as the catalog checks them.
+///
+/// ```
+/// use eom_codegen::model::ship::Units;
+/// use eom_codegen::model::vehicle::*;
+/// use eom_codegen::model::{Kinematics, Symmetry};
+/// let spec = VehicleSpec {
+///     units: Units::Dimensional,
+///     kinematics: Kinematics::Quaternion,
+///     inertia: InertiaAbout::Gravity,
+///     symmetry: Symmetry::Principal,
+///     convention: Convention::Fossen,
+///     controls: vec!["dr".into()],
+///     added_mass: vec!["Xudot".into(), "Yvdot".into(), "Nrdot".into()],
+///     added_mass_coriolis: AddedMassCoriolis::Derived,
+///     terms: vec!["Xu|u|".into(), "Yv|v|".into(), "Nuudr".into()],
+///     propeller: Propeller::Input,
+///     hydrostatics: true,
+///     applied_loads: false,
+/// };
+/// let system = vehicle("small_auv", &spec).unwrap();
+/// assert_eq!(system.inputs, ["dr", "X_prop", "K_prop", "abs_u", "abs_v"]);
+/// let source = eom_codegen::emit::system_source(&system).unwrap();
+/// assert!(source.contains("pub yv_abs_v: f64") && source.contains("pub minv_ur: f64"));
+/// ```
 pub fn vehicle(name: &str, spec: &VehicleSpec) -> Result<System, VehicleError> {
     if spec.units != Units::Dimensional {
         return Err(VehicleError::Unsupported(
