@@ -6,13 +6,13 @@
 //! together from the chapter's pieces, as 4.46 comes from 4.43 by 4.45:
 //! - the velocity of G is v_G = v + ω × r_G (4.5 with r = r_G + r′), and 4.1 with 4.48 gives
 //!   F = M([dv_G/dt] + ω × v_G);
-//! - 4.2 with 4.50 gives the moment about G, [I_G]ω̇ + ω × [I_G]ω, and the moment about O is
+//! - 4.2 with 4.50 gives the moment about G, \[I_G\]ω̇ + ω × \[I_G\]ω, and the moment about O is
 //!   that plus r_G × F (the change of origin of 4.45, in three dimensions);
 //! - the tensor about G is traded for the tensor about O by Steiner (4.23, computed).
 //!
 //! The result is proved equal to two reference forms: the component form of the standard
 //! rigid-body equations about O (Fossen's, with the chapter's sign of the products of inertia,
-//! so that the rotational part is 4.51 with [I_O]), and the matrix form
+//! so that the rotational part is 4.51 with \[I_O\]), and the matrix form
 //! M_RB ν̇ + C_RB(ν)ν = τ with M_RB = [[M𝟙, −M S(r_G)], [M S(r_G), I_O]] and
 //! C_RB = [[M S(ω), −M S(ω)S(r_G)], [M S(r_G)S(ω), −S(I_O ω)]], built from its blocks. At
 //! r_G = 0 it is 4.49 + 4.51 (see `tests/vehicle.rs`).
@@ -88,7 +88,7 @@ fn tensor_about_g_from_o() -> Result<Vec<(&'static str, Expr)>, SymbolicError> {
 }
 
 /// The left sides of the six equations about O less the loads, in the tensor about O:
-/// M([dv_G/dt] + ω × v_G) − F and [I_G]ω̇ + ω × [I_G]ω + r_G × M a_G − M_O, with
+/// M([dv_G/dt] + ω × v_G) − F and \[I_G\]ω̇ + ω × \[I_G\]ω + r_G × M a_G − M_O, with
 /// v_G = v + ω × r_G and I_G = I_O less Steiner's correction (4.23).
 pub fn rigid_body_about_origin() -> Result<[Expr; 6], SymbolicError> {
     let r_g = centre_of_gravity();
@@ -280,7 +280,7 @@ pub fn equations() -> Result<Vec<Equation>, SymbolicError> {
 }
 
 /// The standard equations about O in components (Fossen 1994, 2.96–2.101), with the products
-/// of inertia in the chapter's convention: the rotational part is 4.51 with [I_O].
+/// of inertia in the chapter's convention: the rotational part is 4.51 with \[I_O\].
 const ABOUT_ORIGIN: [&str; 6] = [
     "M*(u_dot - v*r + w*q - x_G*(q.powi(2) + r.powi(2)) + y_G*(p*q - r_dot) + z_G*(p*r + q_dot)) - F_x",
     "M*(v_dot - w*p + u*r - y_G*(r.powi(2) + p.powi(2)) + z_G*(q*r - p_dot) + x_G*(q*p + r_dot)) - F_y",
