@@ -14,6 +14,7 @@ pub mod quaternion;
 pub mod spatial;
 mod steiner;
 pub mod top;
+pub mod vehicle;
 
 use crate::check::{CheckError, Equation};
 use crate::symbolic::{Expr, SymbolicError, Vec3};
@@ -21,6 +22,7 @@ use crate::symbolic::{Expr, SymbolicError, Vec3};
 pub use body_integral::integrate_over_body;
 pub use kinematics::{rotation_x, rotation_y, rotation_z};
 pub use quaternion::Quaternion;
+pub use steiner::tensor_about_origin;
 
 /// A section's derivations.
 type Section = fn() -> Result<Vec<Equation>, SymbolicError>;

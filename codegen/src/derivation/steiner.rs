@@ -72,7 +72,7 @@ const SECOND_MOMENTS_ABOUT_G: [(&str, &str); 6] = [
 /// The tensor about O of a body whose tensor about G is `Ixx_G … Izx_G` and whose G is at
 /// `r_G = (x_G, y_G, z_G)` from O: 4.23 computed, not copied. Each entry is the integral of
 /// 4.13–4.14 about O with r = r_G + r′ substituted, and the second moments about G that it
-/// leaves are traded for the tensor about G ([`SECOND_MOMENTS_ABOUT_G`]).
+/// leaves are traded for the tensor about G (4.13–4.14 read backwards).
 pub fn tensor_about_origin() -> Result<Mat3, SymbolicError> {
     let second_moments = definitions(&SECOND_MOMENTS_ABOUT_G)?;
     let pairs: Vec<(&str, Expr)> = second_moments

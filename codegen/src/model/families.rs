@@ -40,7 +40,10 @@ fn solved(solution: &Solution) -> Vec<Expr> {
 
 /// Checks that the staged program composes back to the proved outputs, for the listed
 /// output indices.
-fn verify_outputs(system: &System, expected: &[(usize, Expr)]) -> Result<(), BuildError> {
+pub(super) fn verify_outputs(
+    system: &System,
+    expected: &[(usize, Expr)],
+) -> Result<(), BuildError> {
     for (index, wanted) in expected {
         let computed = system
             .expanded_output(*index)
@@ -343,7 +346,7 @@ fn momentum_stages(name: &str, products: &[&str]) -> Result<(Vec<Stage>, Vec<Exp
 }
 
 /// Euler-angle kinematics: the track E·v (4.57), then the rates (4.60).
-fn euler_kinematics() -> (Vec<Stage>, Vec<Expr>) {
+pub(super) fn euler_kinematics() -> (Vec<Stage>, Vec<Expr>) {
     let (mut stages, mut outputs) = euler_track();
     let (rate_stages, rates) = euler_rates();
     stages.extend(rate_stages);
@@ -387,7 +390,7 @@ fn euler_rates() -> (Vec<Stage>, Vec<Expr>) {
     (stages, outputs)
 }
 
-fn euler_kinematics_expected(name: &str) -> Result<Vec<Expr>, BuildError> {
+pub(super) fn euler_kinematics_expected(name: &str) -> Result<Vec<Expr>, BuildError> {
     let v = Vec3::symbols(["u", "v", "w"]);
     let mut expected = body_to_space().mul_vec(&v).0.to_vec();
     expected.extend(euler_rates_expected(name)?);
@@ -403,7 +406,7 @@ fn euler_rates_expected(name: &str) -> Result<Vec<Expr>, BuildError> {
 /// Quaternion kinematics: v + 2(q₀t + q_v × t)/|q|² with t = q_v × v — the sandwich
 /// q ⊗ (0, v) ⊗ q* / |q|², exact for a quaternion of any length, so a drifting integrator does
 /// not scale the track — and q̇ = ½ q ⊗ (0, ω) with the half rates staged.
-fn quaternion_kinematics(name: &str) -> Result<(Vec<Stage>, Vec<Expr>), BuildError> {
+pub(super) fn quaternion_kinematics(name: &str) -> Result<(Vec<Stage>, Vec<Expr>), BuildError> {
     let q_v = Vec3::symbols(["q1", "q2", "q3"]);
     let v = Vec3::symbols(["u", "v", "w"]);
     let (mut stages, t) = stage_all(&["t_x", "t_y", "t_z"], &q_v.cross(&v).0);
@@ -438,7 +441,7 @@ fn quaternion_attitude_rates(name: &str) -> Result<(Vec<Stage>, Vec<Expr>), Buil
 
 /// The quaternion position rate equals E·v for every unit quaternion: both sides are
 /// evaluated at q(φ, θ, ψ) in half angles, where |q| = 1 holds identically.
-fn verify_quaternion_position(system: &System) -> Result<(), BuildError> {
+pub(super) fn verify_quaternion_position(system: &System) -> Result<(), BuildError> {
     let err = symbolic(&system.name);
     let q = quaternion_of_euler_angles();
     let at_euler: Vec<(&str, Expr)> = ["q0", "q1", "q2", "q3"].into_iter().zip(q.0).collect();

@@ -10,6 +10,7 @@ pub mod jacobian;
 pub mod ship;
 mod solve;
 mod system;
+pub mod vehicle;
 
 pub use jacobian::{Entry, Jacobian};
 pub use solve::{Solution, solve_diagonal, solve_linear};
