@@ -3,8 +3,9 @@
 //! table, the REMUS model proved and emitted, the folded table against its added mass, and the
 //! mass matrix's numeric checks.
 //!
-//! The REMUS numbers (`tests/data/remus100_prestero.json`) are Prestero's (2001, Appendix B) as
-//! his public transcriptions give them; the thesis itself was not read.
+//! The REMUS numbers (`../shared/data/remus100_prestero.json`, beside the repository) are
+//! Prestero's (2001, Appendix B) as his public transcriptions give them; the thesis itself was
+//! not read.
 
 use eom_codegen::check::Equation;
 use eom_codegen::derivation::spatial;
@@ -145,7 +146,13 @@ fn every_single_term_mutant_of_the_vehicle_proofs_is_caught() {
 // The names of a table.
 
 fn remus() -> serde_json::Value {
-    serde_json::from_str(include_str!("data/remus100_prestero.json")).unwrap()
+    // The crate's tests run in codegen/; the shared data sit beside the repository.
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../shared/data/remus100_prestero.json"
+    );
+    let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{path}: {e}"));
+    serde_json::from_str(&text).unwrap()
 }
 
 fn remus_coefficients() -> BTreeMap<String, f64> {
