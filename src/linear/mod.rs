@@ -25,9 +25,9 @@ mod scene;
 pub mod trim;
 
 pub use modes::{Mode, Stability, modes};
-pub use plant::Plant;
+pub use plant::{Evaluation, LinearPlant, Plant};
 pub use reduce::set_aside;
-pub use scene::{LinearSpec, Linearisation, linearise_scene, resolve};
+pub use scene::{LinearSpec, Linearisation, linearise, linearise_scene, resolve, set_at};
 
 use thiserror::Error;
 

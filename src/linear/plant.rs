@@ -1,9 +1,31 @@
-//! The model under the scene's loads at a point: its rates, A and B.
+//! A model under what acts on it, at a point: its rates, A and B.
+//!
+//! [`LinearPlant`] is what the linearisation reads, so that a catalog model under a scene's
+//! loads ([`Plant`]) and a scene-defined model (a ship on its table) are linearised by the same
+//! code: the operating point, the states set aside, the trim, the modes.
 
 use super::LinearError;
-use crate::models::AnyModel;
+use crate::models::{AnyModel, Family};
 use crate::scene::SceneLoads;
 use nalgebra::DMatrix;
+
+/// A model under what acts on it, as the linearisation reads it.
+pub trait LinearPlant {
+    /// The model's name.
+    fn name(&self) -> &'static str;
+    /// The family whose modes' names apply.
+    fn family(&self) -> Family;
+    /// Every state entry's name, in the model's layout.
+    fn state_names(&self) -> Vec<&'static str>;
+    /// Every input's name.
+    fn input_names(&self) -> Vec<&'static str>;
+    /// The inputs at `state`: what acts there plus `extra`.
+    fn inputs(&self, state: &[f64], extra: &[f64]) -> Vec<f64>;
+    /// The rates, A and B at `state` with `extra` added to the inputs.
+    fn evaluate(&self, state: &[f64], extra: &[f64]) -> Result<Evaluation, LinearError>;
+    /// Where ∂f/∂x can be non-zero, as (row, column): the model's declared pattern.
+    fn pattern(&self) -> Vec<(usize, usize)>;
+}
 
 /// A model, the loads acting on it, and inputs added to them.
 #[derive(Debug, Clone)]
@@ -25,16 +47,36 @@ pub struct Evaluation {
     pub b: DMatrix<f64>,
 }
 
-impl Plant<'_> {
+impl LinearPlant for Plant<'_> {
+    fn name(&self) -> &'static str {
+        self.model.info().name
+    }
+
+    fn family(&self) -> Family {
+        self.model.info().family
+    }
+
+    fn state_names(&self) -> Vec<&'static str> {
+        self.model.info().state.to_vec()
+    }
+
+    fn input_names(&self) -> Vec<&'static str> {
+        self.model.info().inputs.to_vec()
+    }
+
     /// The model's inputs at `state`: the loads there plus `extra`.
-    pub fn inputs(&self, state: &[f64], extra: &[f64]) -> Vec<f64> {
+    fn inputs(&self, state: &[f64], extra: &[f64]) -> Vec<f64> {
         let mut out = vec![0.0; extra.len()];
         self.loads.inputs(state, &mut out);
         out.iter().zip(extra).map(|(l, e)| l + e).collect()
     }
 
+    fn pattern(&self) -> Vec<(usize, usize)> {
+        self.model.state_jacobian_pattern().to_vec()
+    }
+
     /// The rates, A and B at `state` with `extra` added to the loads' inputs.
-    pub fn evaluate(&self, state: &[f64], extra: &[f64]) -> Result<Evaluation, LinearError> {
+    fn evaluate(&self, state: &[f64], extra: &[f64]) -> Result<Evaluation, LinearError> {
         let layout = |e: crate::models::LayoutError| LinearError::NotFinite(e.to_string());
         let input = self.inputs(state, extra);
         let rates = self.model.rhs(state, &input).map_err(layout)?;
@@ -54,7 +96,9 @@ impl Plant<'_> {
         }
         Ok(Evaluation { rates, a, b })
     }
+}
 
+impl Plant<'_> {
     /// ∂loads/∂x by central differences, step 10⁻⁶ of each entry (at least 10⁻⁶): the
     /// loads are smooth but not emitted. The truncation error vanishes for linear damping
     /// and is ~10⁻¹² for the rest; rounding leaves ~10⁻¹⁰ relative. A load that does not

@@ -1,8 +1,8 @@
-//! A catalog scene, linearised: the operating point its `[linear]` table names (by default
+//! A scene, linearised: the operating point its `[linear]` table names (by default
 //! its initial state), the states set aside, the trim, A, B and the modes.
 
 use super::modes::{Mode, Stability, modes};
-use super::plant::Plant;
+use super::plant::{LinearPlant, Plant};
 use super::reduce::set_aside;
 use super::trim::{Free, trim};
 use super::{EQUILIBRIUM_TOLERANCE, LinearError, rate_scale};
@@ -124,44 +124,68 @@ fn model_and_state(scene: &Scene, state: Vec<f64>) -> (AnyModel, Vec<f64>, Optio
 /// Linearises a catalog scene about the point its `[linear]` table names: the initial state
 /// with the table's `at` entries, trimmed for its `trim` variables.
 pub fn linearise_scene(scene: &Scene) -> Result<Linearisation, LinearError> {
-    let spec = &scene.linear;
     let info = scene.selection.info;
     let mut state = scene.initial.clone();
     let mut extra = vec![0.0; info.inputs.len()];
+    set_at(
+        &scene.linear,
+        info.state,
+        info.inputs,
+        (&mut state, &mut extra),
+    )?;
+    let (model, state, note) = model_and_state(scene, state);
+    let plant = Plant {
+        model,
+        loads: &scene.loads,
+    };
+    let mut linearisation = linearise(&plant, (state, extra), &scene.linear.trim)?;
+    linearisation.note = note;
+    Ok(linearisation)
+}
+
+/// Sets the `at` entries of `spec` in the state and the inputs added to what acts.
+pub fn set_at(
+    spec: &LinearSpec,
+    state_names: &[&str],
+    input_names: &[&str],
+    (state, extra): (&mut [f64], &mut [f64]),
+) -> Result<(), LinearError> {
     for (name, value) in &spec.at {
-        match resolve(name, info.state, info.inputs) {
+        match resolve(name, state_names, input_names) {
             Some(Free::State(i)) => state[i] = *value,
             Some(Free::Input(i)) => extra[i] = *value,
             None => return Err(unknown(name)),
         }
     }
-    let (model, state, note) = model_and_state(scene, state);
-    let linearised = model.info();
-    let plant = Plant {
-        model,
-        loads: &scene.loads,
-    };
+    Ok(())
+}
+
+/// Linearises `plant` about `(state, extra)`, trimmed for the free variables `trim` names: the
+/// states set aside, A and B on the reduced state, the modes and the verdict.
+pub fn linearise(
+    plant: &dyn LinearPlant,
+    (state, extra): (Vec<f64>, Vec<f64>),
+    trim_names: &[String],
+) -> Result<Linearisation, LinearError> {
+    let state_names = plant.state_names();
+    let input_names = plant.input_names();
     let first = plant.evaluate(&state, &extra)?;
-    let depends = dependencies(&plant.model, &first.a);
-    let coordinate: Vec<bool> = linearised.state.iter().map(|s| is_coordinate(s)).collect();
+    let depends = dependencies(&plant.pattern(), &first.a);
+    let coordinate: Vec<bool> = state_names.iter().map(|s| is_coordinate(s)).collect();
     let set_aside = set_aside(&depends, &first.rates, &state, &coordinate);
     let reduced: Vec<usize> = (0..state.len())
         .filter(|i| !set_aside.contains(i))
         .collect();
-    let (state, extra, trimmed) = if spec.trim.is_empty() {
+    let (state, extra, trimmed) = if trim_names.is_empty() {
         (state, extra, None)
     } else {
-        let free = spec
-            .trim
+        let free = trim_names
             .iter()
-            .map(|name| {
-                resolve(name, linearised.state, linearised.inputs).ok_or_else(|| unknown(name))
-            })
+            .map(|name| resolve(name, &state_names, &input_names).ok_or_else(|| unknown(name)))
             .collect::<Result<Vec<_>, _>>()?;
-        let names = spec.trim.join(", ");
-        let solved = trim(&plant, (&state, &extra), &reduced, &free, &names)?;
-        let values = spec
-            .trim
+        let names = trim_names.join(", ");
+        let solved = trim(plant, (&state, &extra), &reduced, &free, &names)?;
+        let values = trim_names
             .iter()
             .zip(&free)
             .map(|(name, f)| match *f {
@@ -180,22 +204,20 @@ pub fn linearise_scene(scene: &Scene) -> Result<Linearisation, LinearError> {
     let tolerance = EQUILIBRIUM_TOLERANCE * rate_scale(&state);
     let a = at.a.select_rows(&reduced).select_columns(&reduced);
     let b = at.b.select_rows(&reduced);
-    let names: Vec<String> = reduced
-        .iter()
-        .map(|&i| linearised.state[i].to_owned())
-        .collect();
+    let names: Vec<String> = reduced.iter().map(|&i| state_names[i].to_owned()).collect();
+    let family = plant.family();
     // A top's roll and pitch are measured in axes turned by its heading, which turns with
     // the spin: its modes are also given as seen in space.
-    let heading_rate = match linearised.state.iter().position(|s| *s == "psi") {
-        Some(i) if linearised.family == Family::Top && set_aside.contains(&i) => at.rates[i],
+    let heading_rate = match state_names.iter().position(|s| *s == "psi") {
+        Some(i) if family == Family::Top && set_aside.contains(&i) => at.rates[i],
         _ => 0.0,
     };
-    let (eigenvalues, modes, stability) = modes(&a, &names, linearised.family, heading_rate);
+    let (eigenvalues, modes, stability) = modes(&a, &names, family, heading_rate);
     Ok(Linearisation {
-        model: linearised.name,
-        family: linearised.family,
-        state_names: linearised.state.to_vec(),
-        input_names: linearised.inputs.to_vec(),
+        model: plant.name(),
+        family,
+        state_names,
+        input_names,
         inputs: plant.inputs(&state, &extra),
         equilibrium: residual.iter().all(|r| r.abs() <= tolerance),
         state,
@@ -208,7 +230,7 @@ pub fn linearise_scene(scene: &Scene) -> Result<Linearisation, LinearError> {
         eigenvalues,
         modes,
         stability,
-        note,
+        note: None,
     })
 }
 
@@ -221,13 +243,13 @@ fn unknown(name: &str) -> LinearError {
     LinearError::Unknown(name.to_owned())
 }
 
-/// Row i depends on state j: the emitted pattern, and what the loads add at the point.
-fn dependencies(model: &AnyModel, a: &DMatrix<f64>) -> Vec<Vec<bool>> {
+/// Row i depends on state j: the declared pattern, and what the loads add at the point.
+fn dependencies(pattern: &[(usize, usize)], a: &DMatrix<f64>) -> Vec<Vec<bool>> {
     let n = a.nrows();
     let mut depends: Vec<Vec<bool>> = (0..n)
         .map(|i| (0..n).map(|j| a[(i, j)] != 0.0).collect())
         .collect();
-    for &(i, j) in model.state_jacobian_pattern() {
+    for &(i, j) in pattern {
         depends[i][j] = true;
     }
     depends

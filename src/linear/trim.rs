@@ -6,7 +6,7 @@
 //! (through the singular value decomposition), so that more equations than free variables
 //! are solved as far as they can be, and it is halved until the largest rate falls.
 
-use super::plant::Plant;
+use super::plant::LinearPlant;
 use super::{EQUILIBRIUM_TOLERANCE, LinearError, rate_scale};
 use nalgebra::{DMatrix, DVector};
 
@@ -36,7 +36,7 @@ pub struct Trimmed {
 /// Solves for `free` so that the rates of `reduced` vanish, from `state` and `extra`;
 /// `names` name the free variables in the error.
 pub fn trim(
-    plant: &Plant,
+    plant: &dyn LinearPlant,
     (state, extra): (&[f64], &[f64]),
     reduced: &[usize],
     free: &[Free],
