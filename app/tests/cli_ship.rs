@@ -417,10 +417,20 @@ fn a_ship_sweep_over_the_rudder_runs_whole_or_in_shards_alike() {
     ] {
         assert!(header.contains(&column), "{column}: {header:?}");
     }
+    // The plot of the diameters against the rudder angle, beside the table.
+    let plot = std::fs::read_to_string(whole.join("rudder_sweep.svg")).unwrap();
+    let document = roxmltree::Document::parse(&plot).unwrap();
+    assert!(document.descendants().any(|n| n.has_tag_name("polyline")));
+    assert!(plot.contains("tactical diameter") && plot.contains("steady turning radius"));
     let sharded = dir.join("sharded");
     run(&sharded, Some("0/2"));
     run(&sharded, Some("1/2"));
     succeeded(&eom(&["sweep-merge", sharded.to_str().unwrap()]));
     let merged = std::fs::read_to_string(sharded.join("sweep.csv")).unwrap();
     assert_eq!(merged, table);
+    assert_eq!(
+        std::fs::read_to_string(sharded.join("rudder_sweep.svg")).unwrap(),
+        plot,
+        "the merge draws the same plot"
+    );
 }

@@ -37,6 +37,94 @@ use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
+/// A ship sweep's plot over a rudder angle, beside its table.
+pub const SWEEP_PLOT: &str = "rudder_sweep.svg";
+
+/// The figures [`write_sweep_plot`] draws against the rudder angle, with their names.
+const SWEPT_FIGURES: [(&str, &str); 2] = [
+    ("tactical_diameter_m", "tactical diameter"),
+    ("steady_turning_radius_m", "steady turning radius"),
+];
+
+/// Whether a column of a sweep's table is a swept key (a key path of the scene: an entry of
+/// an array, `manoeuvre[0].rudder_deg`, or a key of one of its tables), not a figure.
+fn is_key_path(column: &str) -> bool {
+    let tables = [
+        "model.",
+        "body.",
+        "hydrodynamics.",
+        "rudder.",
+        "integrator.",
+        "output.",
+    ];
+    column.contains('[') || column == "title" || tables.iter().any(|t| column.starts_with(t))
+}
+
+/// `rudder_sweep.svg` in `dir`, from a ship sweep's table (`sweep.csv`'s text), when the sweep
+/// varies one key and that key is a rudder angle (`….rudder_deg`): the tactical diameter and
+/// the steady turning radius of each turning circle against it, each side's where a turn ran
+/// to both. Draws nothing for any other sweep. The table alone decides, so that a whole run
+/// and the merge of its shards draw the same plot.
+pub fn write_sweep_plot(dir: &Path, table: &str) -> Result<()> {
+    let mut reader = csv::Reader::from_reader(table.as_bytes());
+    let Ok(header) = reader.headers().cloned() else {
+        return Ok(());
+    };
+    let swept: Vec<&str> = header
+        .iter()
+        .skip(1)
+        .take_while(|c| is_key_path(c))
+        .collect();
+    let [rudder] = swept.as_slice() else {
+        return Ok(());
+    };
+    if !rudder.ends_with("rudder_deg") {
+        return Ok(());
+    }
+    let rows: Vec<csv::StringRecord> = reader.records().filter_map(Result::ok).collect();
+    let number = |row: &csv::StringRecord, i: usize| row.get(i)?.parse::<f64>().ok();
+    let mut lines: Vec<(String, Vec<(f64, f64)>)> = Vec::new();
+    for (i, column) in header.iter().enumerate() {
+        let Some((key, what)) = SWEPT_FIGURES
+            .iter()
+            .find(|(k, _)| column.ends_with(&format!(".{k}")))
+        else {
+            continue;
+        };
+        let manoeuvre = &column[..column.len() - key.len() - 1];
+        // A turn run to both sides: its sides' columns, not the worse side's.
+        let sided = ["port", "starboard"].iter().any(|side| {
+            header
+                .iter()
+                .any(|c| c == format!("{manoeuvre}.{side}.{key}"))
+        });
+        if sided {
+            continue;
+        }
+        let mut points: Vec<(f64, f64)> = rows
+            .iter()
+            .filter_map(|row| Some((number(row, 1)?, number(row, i)?)))
+            .collect();
+        points.sort_by(|a, b| a.0.total_cmp(&b.0));
+        lines.push((format!("{} {what}", manoeuvre.replace('.', " ")), points));
+    }
+    if lines.is_empty() {
+        return Ok(());
+    }
+    let curves: Vec<Curve> = (lines.iter())
+        .map(|(name, points)| Curve { name, points })
+        .collect();
+    let caption = format!("Turning circles against the rudder angle ({rudder})");
+    let plot = Curves {
+        caption: &caption,
+        x_desc: "rudder angle [deg]",
+        y_desc: "tactical diameter, steady turning radius [m]",
+        curves: &curves,
+    };
+    write_curves(dir, SWEEP_PLOT, &plot)?;
+    Ok(())
+}
+
 /// A spiral's plot, in its manoeuvre's folder.
 pub const SPIRAL_PLOT: &str = "spiral.svg";
 
