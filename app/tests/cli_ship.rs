@@ -178,7 +178,10 @@ fn the_esso_osakas_spirals_show_its_loop() {
         let height = spiral["loop_height_deg_s"].as_f64().unwrap();
         assert!(width > 0.0 && height > 0.0, "{name}: {width} {height}");
         let svg = std::fs::read_to_string(out.join(name).join("spiral.svg")).unwrap();
-        assert!(svg.contains("course-unstable"), "{name}");
+        assert!(
+            svg.contains("° wide ×"),
+            "{name}: the caption gives the loop"
+        );
     }
     let svg = std::fs::read_to_string(out.join("spiral/spiral.svg")).unwrap();
     assert!(svg.contains("first pass") && svg.contains("back"));

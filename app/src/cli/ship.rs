@@ -662,19 +662,16 @@ fn write_spiral_plot(folder: &Path, title: &str, curve: &SpiralCurve) -> Result<
             points: &reverse,
         });
     }
-    let found = curve.find_loop();
-    let verdict = match found {
-        None => "no loop: course-stable".to_owned(),
+    let verdict = match curve.find_loop() {
+        None => "no loop (course-stable)".to_owned(),
         Some(l) => format!(
-            "loop {:.2}° wide{}: course-unstable",
+            "loop {:.2}° wide{}",
             l.width.to_degrees(),
-            l.height.map_or(String::new(), |h| format!(
-                ", {:.3}°/s high",
-                h.to_degrees()
-            ))
+            l.height
+                .map_or(String::new(), |h| format!(" × {:.3}°/s", h.to_degrees()))
         ),
     };
-    let caption = format!("{title}: steady r against δ, {verdict}");
+    let caption = format!("{title}: {verdict}");
     let plot = Curves {
         caption: &caption,
         x_desc: "rudder δ [deg]",
