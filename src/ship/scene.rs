@@ -34,7 +34,7 @@
 //! step = 0.1                   # s
 //!
 //! [[manoeuvre]]
-//! kind = "turning_circle"      # turning_circle, zigzag, pull_out or rudder_series
+//! kind = "turning_circle"      # turning_circle, zigzag, pull_out, rudder_series, spiral, …
 //! rudder_deg = 35.0
 //! duration_s = 1200.0
 //! # name = "turning_circle_35" # the output folder; made from the kind and angles if absent
@@ -43,6 +43,17 @@
 //! # release_s = 300.0          # pull_out: rudder back to zero
 //! # times_s = [0, 10, 20]      # rudder_series: the command's times and angles
 //! # series_deg = [0, 10, -10]
+//! # side = "both"              # turning_circle, zigzag: both (default), port or starboard
+//!
+//! [[manoeuvre]]
+//! kind = "spiral"              # Dieudonné's direct spiral; "reverse_spiral": Bech's
+//! rudders_deg = [10, 5, 0, -5, -10] # the first pass; the run comes back through them
+//! # yaw_rates_deg_s = [0.2, 0, -0.2] # reverse_spiral: the commanded yaw rates
+//! # settle_window_s = 100.0    # r settled: within settle_tolerance_deg_s over the window
+//! # settle_tolerance_deg_s = 0.001
+//! # max_hold_s = 2000.0        # the longest an angle is held
+//! # settle_rudder_deg = 0.01   # reverse_spiral: the mean rudder settled, window to window
+//! # controller_time_s = 20.0   # reverse_spiral: the controller's closed-loop τ
 //! ```
 //!
 //! Every run starts on a straight course at U₀, midship at the origin, heading north, rudder
