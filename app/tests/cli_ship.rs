@@ -35,7 +35,14 @@ fn the_mariner_runs_its_manoeuvres_and_is_judged() {
         let moved = turn["half_step_difference"][key].as_f64().unwrap();
         assert!(moved < 0.01, "{key} moves {moved} when the step is halved");
     }
+    // Both sides ran: the figures shown are the worse side's, the larger tactical diameter.
     assert_eq!(turn["side"], "port");
+    let sides = &turn["sides"];
+    let diameter = |side: &str| sides[side]["tactical_diameter_m"].as_f64().unwrap();
+    assert!(diameter("port") >= diameter("starboard"), "{sides}");
+    assert_eq!(turn["tactical_diameter_m"].as_f64(), Some(diameter("port")));
+    assert_eq!(sides["port"]["side"], "port");
+    assert_eq!(sides["starboard"]["side"], "starboard");
     // The turn went ahead, one way, and settled: no note qualifies a figure.
     assert_eq!(turn["notes"], serde_json::json!([]), "{turn}");
     // The transfer at 180° is more than the transfer at 90°, and the steady diameter is near
@@ -73,7 +80,29 @@ fn the_mariner_runs_its_manoeuvres_and_is_judged() {
         assert_eq!(criterion["judged"], true, "{criterion}");
         let pass = number(&criterion["value"]) <= number(&criterion["limit"]);
         assert_eq!(criterion["pass"].as_bool(), Some(pass), "{criterion}");
+        // Judged on both sides: the value is the worse (larger) of the two, and its side.
+        let (port, starboard) = (
+            number(&criterion["sides"]["port"]),
+            number(&criterion["sides"]["starboard"]),
+        );
+        assert_eq!(
+            number(&criterion["value"]),
+            port.max(starboard),
+            "{criterion}"
+        );
+        let worse = if starboard > port {
+            "starboard"
+        } else {
+            "port"
+        };
+        assert_eq!(criterion["side"], worse, "{criterion}");
     }
+    // The bias makes the 10°/10° first overshoot differ by side, and the verdict reads the
+    // worse: the report prints both.
+    let first_10 = &manoeuvre["zigzag_10_10"]["sides"];
+    let overshoot = |side: &str| number(&first_10[side]["first_overshoot_deg"]);
+    assert!((overshoot("port") - overshoot("starboard")).abs() > 1.0);
+    assert!(stdout.contains("(port 3.45, starboard 4.95)"), "{stdout}");
     // L/V = 20.85 s: the 10°/10° first-overshoot limit is 5 + ½ L/V degrees.
     let first = imo
         .iter()
@@ -82,7 +111,10 @@ fn the_mariner_runs_its_manoeuvres_and_is_judged() {
     assert!((number(&first["limit"]) - (5.0 + 0.5 * 160.93 / 7.7175)).abs() < 1e-12);
     assert!(summary["model"]["conversion"].as_array().unwrap().len() == 6);
     assert_eq!(summary["linear"]["course_stable"], true);
-    for name in ["turning_circle_35", "zigzag_10_10", "zigzag_20_20"] {
+    for name in ["turning_circle_35", "zigzag_10_10", "zigzag_20_20"]
+        .into_iter()
+        .flat_map(|name| [format!("{name}/port"), format!("{name}/starboard")])
+    {
         let dir = out.join(name);
         let csv = std::fs::read_to_string(dir.join("trajectory.csv")).unwrap();
         assert!(
@@ -99,11 +131,61 @@ fn the_mariner_runs_its_manoeuvres_and_is_judged() {
             assert!(document.descendants().any(|n| n.has_tag_name("polyline")));
         }
     }
-    let track = std::fs::read_to_string(out.join("turning_circle_35/track.svg")).unwrap();
+    let track = std::fs::read_to_string(out.join("turning_circle_35/port/track.svg")).unwrap();
     assert!(
         track.contains("tactical diameter"),
         "the 180° point is marked"
     );
+    // The spiral: no loop on the course-stable Mariner, and its plot.
+    let spiral = &manoeuvre["spiral"];
+    assert_eq!(spiral["kind"], "spiral");
+    assert_eq!(
+        spiral["spiral"]["course_stable_by_spiral"], true,
+        "{spiral}"
+    );
+    assert_eq!(number(&spiral["loop_width_deg"]), 0.0);
+    let points = spiral["spiral"]["points"].as_array().unwrap();
+    assert_eq!(points.len(), 2 * 9 - 1);
+    let svg = std::fs::read_to_string(out.join("spiral/spiral.svg")).unwrap();
+    let document = roxmltree::Document::parse(&svg).unwrap();
+    assert!(document.descendants().any(|n| n.has_tag_name("polyline")));
+    assert!(
+        svg.contains("no loop"),
+        "the caption says what the curve shows"
+    );
+}
+
+/// The Esso Osaka, course-unstable: both spirals find a loop about δ = 0, the summary gives
+/// its width and height, and spiral.svg draws both passes.
+#[test]
+fn the_esso_osakas_spirals_show_its_loop() {
+    let out = folder("esso_osaka");
+    let stdout = succeeded(&eom(&[
+        "run",
+        &scene_arg("esso_osaka.toml"),
+        "--out",
+        out.to_str().unwrap(),
+    ]));
+    assert!(stdout.contains("NO (a loop)"), "{stdout}");
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    for name in ["spiral", "reverse_spiral"] {
+        let spiral = &summary["manoeuvre"][name];
+        assert_eq!(
+            spiral["spiral"]["course_stable_by_spiral"], false,
+            "{spiral}"
+        );
+        let width = spiral["loop_width_deg"].as_f64().unwrap();
+        let height = spiral["loop_height_deg_s"].as_f64().unwrap();
+        assert!(width > 0.0 && height > 0.0, "{name}: {width} {height}");
+        let svg = std::fs::read_to_string(out.join(name).join("spiral.svg")).unwrap();
+        assert!(
+            svg.contains("° wide ×"),
+            "{name}: the caption gives the loop"
+        );
+    }
+    let svg = std::fs::read_to_string(out.join("spiral/spiral.svg")).unwrap();
+    assert!(svg.contains("first pass") && svg.contains("back"));
 }
 
 /// A workboat on a crude made-up table whose turn drags it to a stop and astern.
@@ -161,7 +243,7 @@ fn a_turn_that_goes_astern_gives_no_steady_figures_and_no_verdict_on_them() {
         "--out",
         out.to_str().unwrap(),
     ]));
-    let csv = std::fs::read_to_string(out.join("turning_circle_35/trajectory.csv")).unwrap();
+    let csv = std::fs::read_to_string(out.join("turning_circle_35/port/trajectory.csv")).unwrap();
     let u: Vec<f64> = csv
         .lines()
         .skip(1)
@@ -254,7 +336,7 @@ fn ctrl_c_ends_a_ship_run_keeping_the_finished_manoeuvres() {
     let out = dir.join("out");
     // The second's trajectory would be 2 GB: it says --large-output, and is ended long before.
     let mut child = child::spawn_run_with(&path, &out, &["--large-output"]);
-    let first = out.join("turning_circle_35").join("heading.svg");
+    let first = out.join("turning_circle_35/starboard/heading.svg");
     let clock = Instant::now();
     while !first.exists() {
         assert!(
@@ -330,10 +412,29 @@ fn a_ship_sweep_over_the_rudder_runs_whole_or_in_shards_alike() {
     for k in 0..3 {
         assert!(whole.join(format!("case-{k:04}/summary.json")).exists());
     }
+    // Each side's figures and verdicts have their columns.
+    for column in [
+        "turn.port.tactical_diameter_m",
+        "turn.starboard.tactical_diameter_m",
+        "imo.tactical_diameter.port",
+        "imo.tactical_diameter.starboard",
+    ] {
+        assert!(header.contains(&column), "{column}: {header:?}");
+    }
+    // The plot of the diameters against the rudder angle, beside the table.
+    let plot = std::fs::read_to_string(whole.join("rudder_sweep.svg")).unwrap();
+    let document = roxmltree::Document::parse(&plot).unwrap();
+    assert!(document.descendants().any(|n| n.has_tag_name("polyline")));
+    assert!(plot.contains("tactical diameter") && plot.contains("steady turning radius"));
     let sharded = dir.join("sharded");
     run(&sharded, Some("0/2"));
     run(&sharded, Some("1/2"));
     succeeded(&eom(&["sweep-merge", sharded.to_str().unwrap()]));
     let merged = std::fs::read_to_string(sharded.join("sweep.csv")).unwrap();
     assert_eq!(merged, table);
+    assert_eq!(
+        std::fs::read_to_string(sharded.join("rudder_sweep.svg")).unwrap(),
+        plot,
+        "the merge draws the same plot"
+    );
 }

@@ -212,24 +212,26 @@ impl Claim {
         })
     }
 
-    /// Takes a folder eom wrote, exclusively, to add `name` to it beside what is there (the
-    /// merged table of a sweep's shards): refused while any run holds the folder, and when
-    /// `name` exists and eom did not write it.
-    pub fn add_to(folder: &Path, name: &str) -> Result<Claim, FolderError> {
+    /// Takes a folder eom wrote, exclusively, to add `names` to it beside what is there (the
+    /// merged table of a sweep's shards, and its plot): refused while any run holds the
+    /// folder, and when one of `names` exists and eom did not write it.
+    pub fn add_to(folder: &Path, names: &[String]) -> Result<Claim, FolderError> {
         refuse_system_folder(folder)?;
         if !folder.is_dir() || !is_empty_or_eoms(folder)? {
             return Err(FolderError::NotEoms(folder.to_owned()));
         }
         let lock = lock_whole(folder)?;
         let earlier = earlier_entries(folder, &Writer::Whole);
-        refuse_others_files(folder, &[name.to_owned()], &earlier)?;
+        refuse_others_files(folder, names, &earlier)?;
         let path = folder.join(MANIFEST);
         let mut manifest = OpenOptions::new()
             .create(true)
             .append(true)
             .open(&path)
             .map_err(|e| FolderError::unwritable(folder, e))?;
-        writeln!(manifest, "{name}").map_err(|e| FolderError::unwritable(folder, e))?;
+        for name in names {
+            writeln!(manifest, "{name}").map_err(|e| FolderError::unwritable(folder, e))?;
+        }
         Ok(Claim {
             folder: folder.to_owned(),
             _locks: vec![lock],

@@ -10,12 +10,21 @@
 //! | second overshoot, 10°/10° | 10°/10° zig-zag | 25° if L/V < 10 s; 40° if L/V ≥ 30 s; (17.5 + 0.75 L/V)° between |
 //! | first overshoot, 20°/20° | 20°/20° zig-zag | ≤ 25° |
 //!
-//! V is the test speed, the scene's design speed U₀. A criterion whose manoeuvre the scene
+//! V is the test speed, the scene's design speed U₀. A manoeuvre run to both sides (the
+//! default for a turning circle and a zig-zag: the resolution asks for the turning circle "to
+//! port and starboard") is judged on each, and its verdict is the worse: the value judged is
+//! the larger of the two, or the one that fails where the other side gave no figure; a side
+//! without its figure and no failing one leaves the criterion not judged. A criterion whose manoeuvre the scene
 //! does not run is left out, not passed; one whose manoeuvre ran but whose figure it did not
 //! give (the ship went astern before its heading passed 90°, say: see the manoeuvre's notes)
 //! is listed as not judged, with no verdict.
 
 use super::manoeuvre::{Figures, Manoeuvre, ManoeuvreKind};
+use super::side::Side;
+
+/// A manoeuvre as it ran: the manoeuvre, and the figures of each of its runs, by side (one run
+/// of no side for a manoeuvre run as given).
+pub type Trial<'a> = (&'a Manoeuvre, Vec<(Option<Side>, &'a Figures)>);
 
 /// One criterion, judged.
 #[derive(Debug, Clone, PartialEq)]
@@ -32,6 +41,10 @@ pub struct Criterion {
     pub limit: f64,
     /// `"m"` or `"deg"`.
     pub unit: &'static str,
+    /// Each side's figure, for a manoeuvre run to both (empty otherwise).
+    pub sides: Vec<(Side, Option<f64>)>,
+    /// The side `value` is of, for a manoeuvre run to both or to one.
+    pub side: Option<Side>,
 }
 
 impl Criterion {
@@ -69,17 +82,49 @@ fn is_zigzag(kind: &ManoeuvreKind, degrees: f64) -> bool {
     matches!(kind, ManoeuvreKind::ZigZag { rudder, heading } if close(rudder.abs()) && close(*heading))
 }
 
+/// The value judged of a figure over the sides it was read on, and its side: the larger, or
+/// one over `limit` where another side gave none; `None` where a side gave none and none
+/// fails.
+fn judged_value(values: &[(Option<Side>, Option<f64>)], limit: f64) -> (Option<f64>, Option<Side>) {
+    let present = values.iter().filter_map(|(side, v)| v.map(|v| (*side, v)));
+    let largest = present.max_by(|a, b| a.1.total_cmp(&b.1));
+    match largest {
+        Some((side, value)) if value > limit || values.iter().all(|(_, v)| v.is_some()) => {
+            (Some(value), side)
+        }
+        _ => (
+            None,
+            values
+                .iter()
+                .find(|(_, v)| v.is_none())
+                .and_then(|(s, _)| *s),
+        ),
+    }
+}
+
 /// The criteria the runs allow judging, for a ship of length `length` (m) at `speed` (m/s).
-pub fn criteria(length: f64, speed: f64, runs: &[(&Manoeuvre, &Figures)]) -> Vec<Criterion> {
+pub fn criteria(length: f64, speed: f64, runs: &[Trial]) -> Vec<Criterion> {
     let l_over_v = length / speed;
     let mut judged = Vec::new();
-    let mut judge = |name, run: &(&Manoeuvre, &Figures), key: &str, limit: f64, unit| {
+    let mut judge = |name, run: &Trial, key: &str, limit: f64, unit| {
+        let values: Vec<(Option<Side>, Option<f64>)> =
+            run.1.iter().map(|(side, f)| (*side, f.get(key))).collect();
+        let (value, side) = judged_value(&values, limit);
+        let sides = match values.as_slice() {
+            [_, _, ..] => values
+                .iter()
+                .filter_map(|(s, v)| s.map(|s| (s, *v)))
+                .collect(),
+            _ => Vec::new(),
+        };
         judged.push(Criterion {
             name,
             manoeuvre: run.0.name.clone(),
-            value: run.1.get(key),
+            value,
             limit,
             unit,
+            sides,
+            side,
         });
     };
     let turn = runs
@@ -139,6 +184,18 @@ pub fn criteria(length: f64, speed: f64, runs: &[(&Manoeuvre, &Figures)]) -> Vec
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_verdict_of_two_sides_is_the_worse() {
+        let (port, starboard) = (Some(Side::Port), Some(Side::Starboard));
+        let both = |p, s| judged_value(&[(port, p), (starboard, s)], 10.0);
+        assert_eq!(both(Some(3.0), Some(5.0)), (Some(5.0), starboard));
+        assert_eq!(both(Some(12.0), Some(5.0)), (Some(12.0), port));
+        // A side without its figure: not judged, unless the other fails anyway.
+        assert_eq!(both(Some(3.0), None), (None, starboard));
+        assert_eq!(both(None, Some(11.0)), (Some(11.0), starboard));
+        assert_eq!(judged_value(&[(None, Some(4.0))], 10.0), (Some(4.0), None));
+    }
 
     #[test]
     fn overshoot_limits_follow_the_resolution() {

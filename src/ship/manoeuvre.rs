@@ -20,6 +20,8 @@ use super::ShipError;
 use super::course::Course;
 use super::model::ShipModel;
 use super::rudder::{Rudder, Series};
+use super::side::Side;
+use super::spiral::{Progress, ReverseSpiral, Spiral, SpiralCurve};
 use crate::integrate::segment::{self, Hooks, add};
 use crate::integrate::{IntegrateError, OdeSystem, Reached, RowClock, Stats, Stepper};
 use crate::models::{Driven, ENERGY_UNIT, Loads, Model, TIME_UNIT, state_with_unit, with_unit};
@@ -53,6 +55,26 @@ pub enum ManoeuvreKind {
     },
     /// The command a piecewise-linear series of the scene gives.
     Series(Series),
+    /// Dieudonné's direct spiral: each angle held until r settles, and back
+    /// ([`super::spiral`]).
+    Spiral(Spiral),
+    /// Bech's reverse spiral: each yaw rate held by a controller on the rudder.
+    ReverseSpiral(ReverseSpiral),
+}
+
+impl ManoeuvreKind {
+    /// The same with the rudder put over to the other side (a turn's, a zig-zag's, a
+    /// pull-out's angle); the others as they are.
+    fn mirrored(&self) -> ManoeuvreKind {
+        let mut kind = self.clone();
+        match &mut kind {
+            ManoeuvreKind::TurningCircle { rudder }
+            | ManoeuvreKind::ZigZag { rudder, .. }
+            | ManoeuvreKind::PullOut { rudder, .. } => *rudder = -*rudder,
+            _ => {}
+        }
+        kind
+    }
 }
 
 /// One manoeuvre of a scene.
@@ -64,8 +86,37 @@ pub struct Manoeuvre {
     pub kind: ManoeuvreKind,
     /// When the rudder is put over, s (the figures are measured from here).
     pub execute: f64,
-    /// The end of the run, s.
+    /// The end of the run, s (a spiral's ends sooner once every angle is measured).
     pub duration: f64,
+    /// The sides it is run to, each as a run of its own ([`super::side`]): both, or one, the
+    /// rudder of `kind` turning the ship to the first; empty for a manoeuvre run as given.
+    pub sides: Vec<Side>,
+}
+
+impl Manoeuvre {
+    /// The runs it stands for: one per side, the rudder put to that side, each with that
+    /// one side; or itself, for a manoeuvre of no side.
+    pub fn runs(&self) -> Vec<(Option<Side>, Manoeuvre)> {
+        let Some(&first) = self.sides.first() else {
+            return vec![(None, self.clone())];
+        };
+        self.sides
+            .iter()
+            .map(|&side| {
+                let kind = if side == first {
+                    self.kind.clone()
+                } else {
+                    self.kind.mirrored()
+                };
+                let run = Manoeuvre {
+                    kind,
+                    sides: vec![side],
+                    ..self.clone()
+                };
+                (Some(side), run)
+            })
+            .collect()
+    }
 }
 
 /// The state a manoeuvre integrates: the model's seven and the distance run by midship.
@@ -123,6 +174,8 @@ pub struct Figures {
     pub notes: Vec<String>,
     /// Points of the track to mark on its plot: (what, [X, Y]).
     pub marks: Vec<(String, [f64; 2])>,
+    /// A spiral's r–δ curve.
+    pub spiral: Option<SpiralCurve>,
 }
 
 impl Figures {
@@ -148,13 +201,25 @@ pub struct Steering<'a> {
 enum Command<'a> {
     Hold(f64),
     Series(&'a Series),
+    /// δ_c = integral + gain (r − target): the reverse spiral's controller.
+    Track {
+        integral: f64,
+        gain: f64,
+        target: f64,
+    },
 }
 
 impl Steering<'_> {
-    /// The saturated command at `t`, and its slope (a series' without a lag).
-    fn command(&self, t: f64) -> (f64, f64) {
+    /// The saturated command at `t` with the yaw rate at `r`, and its slope (a series' without
+    /// a lag).
+    fn command(&self, t: f64, r: f64) -> (f64, f64) {
         match self.command {
             Command::Hold(angle) => (self.rudder.saturate(angle), 0.0),
+            Command::Track {
+                integral,
+                gain,
+                target,
+            } => (self.rudder.saturate(integral + gain * (r - target)), 0.0),
             Command::Series(series) => {
                 let angle = series.angle(t);
                 let saturated = self.rudder.saturate(angle);
@@ -172,9 +237,9 @@ impl Steering<'_> {
 impl Steering<'_> {
     /// ((δ_c − δ)/T_δ)² − δ̇_max² at `t` with the rudder at `delta`: negative while the lag's
     /// rate is within its limit; `None` for a steering gear without both.
-    fn rate_margin(&self, t: f64, delta: f64) -> Option<f64> {
+    fn rate_margin(&self, t: f64, r: f64, delta: f64) -> Option<f64> {
         let (lag, max) = (self.rudder.time_constant?, self.rudder.max_rate?);
-        let rate = (self.command(t).0 - delta) / lag;
+        let rate = (self.command(t, r).0 - delta) / lag;
         Some(rate * rate - max * max)
     }
 }
@@ -183,7 +248,7 @@ impl Loads<f64, 7, 1> for Steering<'_> {
     /// δ̇: the lag's rate toward the saturated command, or a series' slope for a rudder
     /// without a lag (which follows its command).
     fn at(&self, t: f64, state: &[f64; 7]) -> [f64; 1] {
-        let (command, slope) = self.command(t);
+        let (command, slope) = self.command(t, state[2]);
         [self.rudder.rate(command, state[6]).unwrap_or(slope)]
     }
 }
@@ -288,6 +353,7 @@ pub fn run(
         switches: 0,
         side: 0.0,
         log: Log::default(),
+        spiral: None,
     };
     let mut times = driver.command_times();
     let mut t = 0.0;
@@ -325,6 +391,9 @@ pub fn run(
             return Err(ShipError::Stopped { time: t });
         }
         driver.record(t, &y);
+        if driver.spiral_done() {
+            break;
+        }
     }
     let figures = driver.figures(&y);
     Ok(ManoeuvreRun {
@@ -378,13 +447,20 @@ struct Driver<'a> {
     /// The side (±1) of the heading change at the first reversal.
     side: f64,
     log: Log,
+    /// A spiral under way.
+    spiral: Option<Progress>,
 }
 
 impl<'a> Driver<'a> {
     /// The ship under the command as it stands.
     fn system(&self) -> Tracked<'a> {
-        let command = match &self.manoeuvre.kind {
-            ManoeuvreKind::Series(series) => Command::Series(series),
+        let command = match (&self.manoeuvre.kind, &self.spiral) {
+            (ManoeuvreKind::Series(series), _) => Command::Series(series),
+            (ManoeuvreKind::ReverseSpiral(reverse), Some(progress)) => Command::Track {
+                integral: progress.integral,
+                gain: reverse.gain,
+                target: progress.setpoint().unwrap_or(0.0),
+            },
             _ => Command::Hold(self.command),
         };
         let steering = Steering {
@@ -409,11 +485,11 @@ impl<'a> Driver<'a> {
         let system = self.system();
         let steering = *system.driven.loads();
         let mut watches = self.watches.clone();
-        if steering.rate_margin(a, y_a[6]).is_some() {
+        if steering.rate_margin(a, y_a[2], y_a[6]).is_some() {
             watches.push(Watch::RateLimit);
         }
         let g = |watch: Watch, t: f64, y: &DriveState| match watch {
-            Watch::RateLimit => steering.rate_margin(t, y[6]).unwrap_or(0.0),
+            Watch::RateLimit => steering.rate_margin(t, y[2], y[6]).unwrap_or(0.0),
             other => self.g(other, y),
         };
         let start: Vec<f64> = watches.iter().map(|w| g(*w, a, &y_a)).collect();
@@ -462,7 +538,7 @@ impl<'a> Driver<'a> {
         Sample {
             t,
             state: std::array::from_fn(|i| y[i]),
-            command: self.system().driven.loads().command(t).0,
+            command: self.system().driven.loads().command(t, y[2]).0,
         }
     }
 
@@ -497,6 +573,10 @@ impl<'a> Driver<'a> {
             let time = times.remove(0);
             if time == self.manoeuvre.execute {
                 self.execute(y);
+                if let Some(window) = self.settle_window() {
+                    times.push(time + window);
+                    times.sort_by(f64::total_cmp);
+                }
             }
             if let ManoeuvreKind::PullOut { release, .. } = self.manoeuvre.kind
                 && time == release
@@ -509,7 +589,59 @@ impl<'a> Driver<'a> {
             {
                 y[6] = self.rudder.saturate(series.angle(time));
             }
+            if time > self.manoeuvre.execute {
+                self.check_spiral(time, y, times);
+            }
         }
+    }
+
+    /// A spiral's check at `t`: the setpoint's point taken if it has settled, the next put on,
+    /// and the next check scheduled.
+    fn check_spiral(&mut self, t: f64, y: &mut DriveState, times: &mut Vec<f64>) {
+        let (settle, gain) = match &self.manoeuvre.kind {
+            ManoeuvreKind::Spiral(spiral) => (spiral.settle, None),
+            ManoeuvreKind::ReverseSpiral(reverse) => (reverse.settle, Some(reverse.gain)),
+            _ => return,
+        };
+        let Some(progress) = &mut self.spiral else {
+            return;
+        };
+        progress.check(t, &settle, gain);
+        // No wind-up: the integral part stays within the rudder's reach.
+        let reach = self.rudder.max_angle.unwrap_or(std::f64::consts::FRAC_PI_2);
+        progress.integral = progress.integral.clamp(-reach, reach);
+        if let Some(setpoint) = progress.setpoint() {
+            if gain.is_none() {
+                self.set_command(setpoint, y);
+            }
+            times.push(t + settle.window);
+            times.sort_by(f64::total_cmp);
+        }
+    }
+
+    /// A spiral's window: the interval of its checks.
+    fn settle_window(&self) -> Option<f64> {
+        match &self.manoeuvre.kind {
+            ManoeuvreKind::Spiral(spiral) => Some(spiral.settle.window),
+            ManoeuvreKind::ReverseSpiral(reverse) => Some(reverse.settle.window),
+            _ => None,
+        }
+    }
+
+    /// Whether a spiral has measured every setpoint.
+    fn spiral_done(&self) -> bool {
+        self.spiral.as_ref().is_some_and(|p| p.setpoint().is_none())
+    }
+
+    /// A spiral's start at the execute: its first setpoint on, its first check scheduled.
+    fn start_spiral(&mut self, y: &mut DriveState, mut progress: Progress) {
+        let t = self.manoeuvre.execute;
+        if let (ManoeuvreKind::Spiral(_), Some(angle)) = (&self.manoeuvre.kind, progress.setpoint())
+        {
+            self.set_command(angle, y);
+        }
+        progress.start(t, y[2], y[6]);
+        self.spiral = Some(progress);
     }
 
     fn set_command(&mut self, angle: f64, y: &mut DriveState) {
@@ -521,6 +653,9 @@ impl<'a> Driver<'a> {
 
     /// Adds the instant to the course, from the execute on.
     fn record(&mut self, t: f64, y: &DriveState) {
+        if let Some(progress) = &mut self.spiral {
+            progress.record(t, y[2], y[6]);
+        }
         let heading0 = self.heading0();
         if let Some(course) = &mut self.log.course {
             course.record(t, y[0], y[1], y[2], y[5] - heading0);
@@ -542,6 +677,12 @@ impl<'a> Driver<'a> {
             }
             ManoeuvreKind::PullOut { rudder, .. } => self.set_command(rudder, y),
             ManoeuvreKind::Series(_) => {}
+            ManoeuvreKind::Spiral(ref spiral) => {
+                self.start_spiral(y, Progress::direct(spiral));
+            }
+            ManoeuvreKind::ReverseSpiral(ref reverse) => {
+                self.start_spiral(y, Progress::reverse(reverse));
+            }
         }
     }
 
@@ -586,6 +727,11 @@ impl<'a> Driver<'a> {
                 pull_out_figures(self.log.release.as_ref(), end, release)
             }
             ManoeuvreKind::Series(_) => Figures::default(),
+            ManoeuvreKind::Spiral(Spiral { settle, .. })
+            | ManoeuvreKind::ReverseSpiral(ReverseSpiral { settle, .. }) => {
+                let points = self.spiral.as_ref().map(|p| p.points.clone());
+                super::spiral::figures(points.unwrap_or_default(), settle, self.spiral_done())
+            }
         };
         figures.notes.extend(course.notes());
         figures
@@ -664,6 +810,7 @@ impl<'a> Driver<'a> {
             }),
             notes,
             marks,
+            spiral: None,
         }
     }
 
@@ -718,6 +865,7 @@ impl<'a> Driver<'a> {
             side: None,
             notes,
             marks: vec![],
+            spiral: None,
         }
     }
 }
@@ -737,5 +885,6 @@ fn pull_out_figures(at_release: Option<&DriveState>, end: &DriveState, release: 
         side: None,
         notes: vec![],
         marks: vec![],
+        spiral: None,
     }
 }

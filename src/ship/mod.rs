@@ -11,6 +11,8 @@
 //! | 4.46 with exactly the table's terms, derived, solved and proved by `eom-codegen`, evaluated | [`model`] |
 //! | the rudder: saturation, first-order lag, rate limit; its commands | [`rudder`] |
 //! | the manoeuvres as schedules and events over the one driver (any method), their figures | [`manoeuvre`] |
+//! | the two sides of a turn or zig-zag, and which is the worse | [`side`] |
+//! | the spiral tests (direct and reverse), the r–δ curve and its loop | [`spiral`] |
 //! | what a run reports, as data (`summary.json`'s types) | [`summary`] |
 //! | what the figures assume (ahead, not stopped, one way, settled), checked on the run | [`course`] |
 //! | the IMO MSC.137(76) criteria | [`imo`] |
@@ -32,6 +34,8 @@ pub mod manoeuvre;
 pub mod model;
 pub mod rudder;
 pub mod scene;
+pub mod side;
+pub mod spiral;
 pub mod summary;
 pub mod table;
 
@@ -46,6 +50,7 @@ pub use manoeuvre::{Manoeuvre, ManoeuvreKind, ManoeuvreRun};
 pub use model::ShipModel;
 pub use rudder::{Rudder, Series};
 pub use scene::ShipScene;
+pub use side::Side;
 pub use table::{RigidBodyTerms, ShipTable};
 
 /// Why a ship cannot be built or run.

@@ -34,7 +34,7 @@
 //! step = 0.1                   # s
 //!
 //! [[manoeuvre]]
-//! kind = "turning_circle"      # turning_circle, zigzag, pull_out or rudder_series
+//! kind = "turning_circle"      # turning_circle, zigzag, pull_out, rudder_series, spiral, …
 //! rudder_deg = 35.0
 //! duration_s = 1200.0
 //! # name = "turning_circle_35" # the output folder; made from the kind and angles if absent
@@ -43,14 +43,28 @@
 //! # release_s = 300.0          # pull_out: rudder back to zero
 //! # times_s = [0, 10, 20]      # rudder_series: the command's times and angles
 //! # series_deg = [0, 10, -10]
+//! # side = "both"              # turning_circle, zigzag: both (default), port or starboard
+//!
+//! [[manoeuvre]]
+//! kind = "spiral"              # Dieudonné's direct spiral; "reverse_spiral": Bech's
+//! rudders_deg = [10, 5, 0, -5, -10] # the first pass; the run comes back through them
+//! # yaw_rates_deg_s = [0.2, 0, -0.2] # reverse_spiral: the commanded yaw rates
+//! # settle_window_s = 100.0    # r settled: within settle_tolerance_deg_s over the window
+//! # settle_tolerance_deg_s = 0.001
+//! # max_hold_s = 2000.0        # the longest an angle is held
+//! # settle_rudder_deg = 0.01   # reverse_spiral: the mean rudder settled, window to window
+//! # controller_time_s = 20.0   # reverse_spiral: the controller's closed-loop τ
 //! ```
 //!
 //! Every run starts on a straight course at U₀, midship at the origin, heading north, rudder
 //! amidships. Every key is checked and an error names it by its path in the file.
 
 use super::ShipError;
+use super::linear::LinearModel;
 use super::manoeuvre::{Manoeuvre, ManoeuvreKind};
 use super::rudder::{Rudder, Series};
+use super::side::Side;
+use super::spiral::{ReverseSpiral, Settle, Spiral};
 use super::table::{GivenTable, RigidBodyTerms, ShipBody, ShipTable};
 use super::{Units, YawInertia};
 use crate::integrate::{Method, Stepper};
@@ -188,12 +202,85 @@ pub struct ManoeuvreTable {
     pub execute_s: Option<f64>,
     /// A pull-out's release, s.
     pub release_s: Option<f64>,
-    /// The end of the run, s.
-    pub duration_s: f64,
+    /// The end of the run, s (a spiral's: the longest it may take, by default).
+    pub duration_s: Option<f64>,
     /// A series' times, s.
     pub times_s: Option<Vec<f64>>,
     /// A series' angles, degrees.
     pub series_deg: Option<Vec<f64>>,
+    /// `both` (default), `port` or `starboard`: the sides a turning circle or zig-zag runs to.
+    pub side: Option<String>,
+    /// A direct spiral's rudder angles, degrees, strictly monotonic.
+    pub rudders_deg: Option<Vec<f64>>,
+    /// A reverse spiral's commanded yaw rates, degrees per second.
+    pub yaw_rates_deg_s: Option<Vec<f64>>,
+    /// A spiral's settling window, s.
+    pub settle_window_s: Option<f64>,
+    /// A spiral's settling tolerance on r over the window, degrees per second.
+    pub settle_tolerance_deg_s: Option<f64>,
+    /// The longest a spiral holds an angle, s.
+    pub max_hold_s: Option<f64>,
+    /// The reverse spiral's closed-loop yaw time constant, s.
+    pub controller_time_s: Option<f64>,
+    /// The reverse spiral's settling tolerance on the mean rudder from window to window,
+    /// degrees.
+    pub settle_rudder_deg: Option<f64>,
+}
+
+/// A spiral's settling window by default, s.
+pub const SETTLE_WINDOW_S: f64 = 100.0;
+/// A spiral's settling tolerance by default, degrees per second.
+pub const SETTLE_TOLERANCE_DEG_S: f64 = 0.001;
+/// The longest a spiral holds an angle by default, s.
+pub const MAX_HOLD_S: f64 = 2000.0;
+/// The reverse spiral's settling tolerance on the mean rudder by default, degrees.
+pub const SETTLE_RUDDER_DEG: f64 = 0.01;
+/// The reverse spiral's closed-loop yaw time constant by default, s.
+pub const CONTROLLER_TIME_S: f64 = 20.0;
+
+/// The keys of `[[manoeuvre]]` that only some kinds read, with whether the table gives each.
+fn kind_keys(table: &ManoeuvreTable) -> [(&'static str, bool); 14] {
+    [
+        ("rudder_deg", table.rudder_deg.is_some()),
+        ("heading_deg", table.heading_deg.is_some()),
+        ("release_s", table.release_s.is_some()),
+        ("times_s", table.times_s.is_some()),
+        ("series_deg", table.series_deg.is_some()),
+        ("side", table.side.is_some()),
+        ("rudders_deg", table.rudders_deg.is_some()),
+        ("yaw_rates_deg_s", table.yaw_rates_deg_s.is_some()),
+        ("settle_window_s", table.settle_window_s.is_some()),
+        (
+            "settle_tolerance_deg_s",
+            table.settle_tolerance_deg_s.is_some(),
+        ),
+        ("max_hold_s", table.max_hold_s.is_some()),
+        ("controller_time_s", table.controller_time_s.is_some()),
+        ("settle_rudder_deg", table.settle_rudder_deg.is_some()),
+        ("duration_s", table.duration_s.is_some()),
+    ]
+}
+
+/// The keys of [`kind_keys`] each kind reads.
+fn keys_of(kind: &str) -> &'static [&'static str] {
+    const SETTLE: [&str; 3] = ["settle_window_s", "settle_tolerance_deg_s", "max_hold_s"];
+    match kind {
+        "turning_circle" => &["rudder_deg", "side", "duration_s"],
+        "zigzag" => &["rudder_deg", "heading_deg", "side", "duration_s"],
+        "pull_out" => &["rudder_deg", "release_s", "duration_s"],
+        "rudder_series" => &["times_s", "series_deg", "duration_s"],
+        "spiral" => &["rudders_deg", SETTLE[0], SETTLE[1], SETTLE[2], "duration_s"],
+        "reverse_spiral" => &[
+            "yaw_rates_deg_s",
+            SETTLE[0],
+            SETTLE[1],
+            SETTLE[2],
+            "controller_time_s",
+            "settle_rudder_deg",
+            "duration_s",
+        ],
+        _ => &[],
+    }
 }
 
 /// A ship scene, checked, ready to run.
@@ -429,18 +516,26 @@ impl Checker<'_> {
         Ok((stepper, every))
     }
 
-    fn manoeuvre(&self, index: usize, table: &ManoeuvreTable) -> Result<Manoeuvre, SceneError> {
+    fn manoeuvre(
+        &self,
+        index: usize,
+        table: &ManoeuvreTable,
+        linear: &LinearModel,
+    ) -> Result<Manoeuvre, SceneError> {
         let key = |k: &str| format!("manoeuvre[{index}].{k}");
         let required = |k: &str, v: Option<f64>| {
             v.ok_or_else(|| self.error(&key(k), Problem::Missing(key(k))))
         };
-        let refuse = |k: &str, given: bool| {
-            if given {
-                Err(self.invalid(&key(k), format!("not a key of a {} manoeuvre", table.kind)))
-            } else {
-                Ok(())
-            }
-        };
+        let kinds = "turning_circle, zigzag, pull_out, rudder_series, spiral or reverse_spiral";
+        if keys_of(&table.kind).is_empty() {
+            return Err(self.invalid(&key("kind"), format!("`{}`: expected {kinds}", table.kind)));
+        }
+        if let Some((k, _)) = kind_keys(table)
+            .into_iter()
+            .find(|(k, given)| *given && !keys_of(&table.kind).contains(k))
+        {
+            return Err(self.invalid(&key(k), format!("not a key of a {} manoeuvre", table.kind)));
+        }
         let rudder_angle = |v: Option<f64>| -> Result<f64, SceneError> {
             let degrees = self.finite(&key("rudder_deg"), required("rudder_deg", v)?)?;
             if degrees == 0.0 {
@@ -452,25 +547,39 @@ impl Checker<'_> {
         if execute < 0.0 {
             return Err(self.invalid(&key("execute_s"), "the run starts at 0 s"));
         }
-        let duration = self.positive(&key("duration_s"), table.duration_s)?;
+        let spiral = self.spiral(index, table, linear)?;
+        let duration = match (table.duration_s, &spiral) {
+            (Some(duration), _) => self.positive(&key("duration_s"), duration)?,
+            (None, Some((_, longest))) => execute + longest,
+            (None, None) => {
+                return Err(self.error(&key("duration_s"), Problem::Missing(key("duration_s"))));
+            }
+        };
         if duration <= execute {
             return Err(self.invalid(&key("duration_s"), "the run must go on past the execute"));
         }
+        let sides = match table.side.as_deref() {
+            None | Some("both") => Side::BOTH.to_vec(),
+            Some(name) => match Side::from_name(name) {
+                Some(side) => vec![side],
+                None => {
+                    return Err(self.invalid(
+                        &key("side"),
+                        format!("`{name}`: expected `both`, `port` or `starboard`"),
+                    ));
+                }
+            },
+        };
+        // The rudder's magnitude, put over to the first side (see `eom::ship::side`).
+        let to_first_side = |rudder: f64| rudder.abs() * sides[0].rudder_sign(linear);
         let (kind, default_name) = match table.kind.as_str() {
             "turning_circle" => {
-                refuse("heading_deg", table.heading_deg.is_some())?;
-                refuse("release_s", table.release_s.is_some())?;
-                refuse("times_s", table.times_s.is_some())?;
-                refuse("series_deg", table.series_deg.is_some())?;
-                let rudder = rudder_angle(table.rudder_deg)?;
+                let rudder = to_first_side(rudder_angle(table.rudder_deg)?);
                 let name = format!("turning_circle_{}", table.rudder_deg.unwrap_or(0.0));
                 (ManoeuvreKind::TurningCircle { rudder }, name)
             }
             "zigzag" => {
-                refuse("release_s", table.release_s.is_some())?;
-                refuse("times_s", table.times_s.is_some())?;
-                refuse("series_deg", table.series_deg.is_some())?;
-                let rudder = rudder_angle(table.rudder_deg)?;
+                let rudder = to_first_side(rudder_angle(table.rudder_deg)?);
                 let heading = self.positive(
                     &key("heading_deg"),
                     required("heading_deg", table.heading_deg)?,
@@ -484,9 +593,6 @@ impl Checker<'_> {
                 (ManoeuvreKind::ZigZag { rudder, heading }, name)
             }
             "pull_out" => {
-                refuse("heading_deg", table.heading_deg.is_some())?;
-                refuse("times_s", table.times_s.is_some())?;
-                refuse("series_deg", table.series_deg.is_some())?;
                 let rudder = rudder_angle(table.rudder_deg)?;
                 let release =
                     self.finite(&key("release_s"), required("release_s", table.release_s)?)?;
@@ -500,9 +606,6 @@ impl Checker<'_> {
                 (ManoeuvreKind::PullOut { rudder, release }, name)
             }
             "rudder_series" => {
-                refuse("rudder_deg", table.rudder_deg.is_some())?;
-                refuse("heading_deg", table.heading_deg.is_some())?;
-                refuse("release_s", table.release_s.is_some())?;
                 let times = table
                     .times_s
                     .clone()
@@ -520,15 +623,23 @@ impl Checker<'_> {
                 })?;
                 (ManoeuvreKind::Series(series), "rudder_series".to_owned())
             }
-            other => {
-                return Err(self.invalid(
-                    &key("kind"),
-                    format!(
-                        "`{other}`: expected turning_circle, zigzag, pull_out or rudder_series"
-                    ),
-                ));
-            }
+            kind => match spiral {
+                Some((kind, _)) => {
+                    let name = match kind {
+                        ManoeuvreKind::Spiral(_) => "spiral",
+                        _ => "reverse_spiral",
+                    };
+                    (kind, name.to_owned())
+                }
+                None => {
+                    return Err(self.invalid(&key("kind"), format!("`{kind}`: expected {kinds}")));
+                }
+            },
         };
+        let turns = matches!(
+            kind,
+            ManoeuvreKind::TurningCircle { .. } | ManoeuvreKind::ZigZag { .. }
+        );
         let name = table.name.clone().unwrap_or(default_name);
         let valid = !name.is_empty()
             && name
@@ -548,7 +659,101 @@ impl Checker<'_> {
             kind,
             execute,
             duration,
+            sides: if turns { sides } else { Vec::new() },
         })
+    }
+
+    /// A spiral's kind and the longest it may take (s), for the kinds `spiral` and
+    /// `reverse_spiral`; `None` for the others.
+    fn spiral(
+        &self,
+        index: usize,
+        table: &ManoeuvreTable,
+        linear: &LinearModel,
+    ) -> Result<Option<(ManoeuvreKind, f64)>, SceneError> {
+        let key = |k: &str| format!("manoeuvre[{index}].{k}");
+        let (list_key, list) = match table.kind.as_str() {
+            "spiral" => ("rudders_deg", &table.rudders_deg),
+            "reverse_spiral" => ("yaw_rates_deg_s", &table.yaw_rates_deg_s),
+            _ => return Ok(None),
+        };
+        let list = list.as_ref().ok_or_else(|| {
+            self.error(
+                &key(list_key),
+                Problem::Missing(format!("{}: the spiral's setpoints", key(list_key))),
+            )
+        })?;
+        if list.len() < 2 || list.iter().any(|v| !v.is_finite()) {
+            return Err(self.invalid(&key(list_key), "at least two finite values"));
+        }
+        let settle = Settle {
+            window: self.positive(
+                &key("settle_window_s"),
+                table.settle_window_s.unwrap_or(SETTLE_WINDOW_S),
+            )?,
+            tolerance: self
+                .positive(
+                    &key("settle_tolerance_deg_s"),
+                    table
+                        .settle_tolerance_deg_s
+                        .unwrap_or(SETTLE_TOLERANCE_DEG_S),
+                )?
+                .to_radians(),
+            max_hold: self.positive(&key("max_hold_s"), table.max_hold_s.unwrap_or(MAX_HOLD_S))?,
+            rudder_tolerance: self
+                .positive(
+                    &key("settle_rudder_deg"),
+                    table.settle_rudder_deg.unwrap_or(SETTLE_RUDDER_DEG),
+                )?
+                .to_radians(),
+        };
+        if settle.max_hold < settle.window {
+            return Err(self.invalid(
+                &key("max_hold_s"),
+                "an angle is held at least one settling window",
+            ));
+        }
+        let radians: Vec<f64> = list.iter().map(|v| v.to_radians()).collect();
+        // Each setpoint is checked at the end of each window: it ends at the first check at or
+        // past the longest hold.
+        let per_setpoint = (settle.max_hold / settle.window).ceil() * settle.window;
+        if table.kind == "spiral" {
+            let rising = radians.windows(2).all(|w| w[1] > w[0]);
+            let falling = radians.windows(2).all(|w| w[1] < w[0]);
+            if !(rising || falling) {
+                return Err(self.invalid(
+                    &key("rudders_deg"),
+                    "the angles of the first pass must be strictly monotonic, from one side to \
+                     the other (the run comes back through them)",
+                ));
+            }
+            let longest = (2 * radians.len() - 1) as f64 * per_setpoint;
+            let spiral = Spiral {
+                rudders: radians,
+                settle,
+            };
+            return Ok(Some((ManoeuvreKind::Spiral(spiral), longest)));
+        }
+        let tau = self.positive(
+            &key("controller_time_s"),
+            table.controller_time_s.unwrap_or(CONTROLLER_TIME_S),
+        )?;
+        let (_, b) = linear.state_space();
+        let gain = -1.0 / (b[1] * tau);
+        if !gain.is_finite() {
+            return Err(self.invalid(
+                &key("kind"),
+                "the table's rudder gives no yaw acceleration (B of the linear model is zero): \
+                 no controller can steer it",
+            ));
+        }
+        let longest = radians.len() as f64 * per_setpoint;
+        let reverse = ReverseSpiral {
+            yaw_rates: radians,
+            settle,
+            gain,
+        };
+        Ok(Some((ManoeuvreKind::ReverseSpiral(reverse), longest)))
     }
 }
 
@@ -582,6 +787,7 @@ impl ShipScene {
         }
         let (table, length) = check.table(file)?;
         let rudder = check.rudder(&file.rudder)?;
+        let linear = LinearModel::closed_form(&table);
         if file.manoeuvre.is_empty() {
             return Err(check.error(
                 "manoeuvre",
@@ -590,7 +796,7 @@ impl ShipScene {
         }
         let mut manoeuvres: Vec<Manoeuvre> = Vec::new();
         for (index, table) in file.manoeuvre.iter().enumerate() {
-            let manoeuvre = check.manoeuvre(index, table)?;
+            let manoeuvre = check.manoeuvre(index, table, &linear)?;
             if manoeuvres.iter().any(|m| m.name == manoeuvre.name) {
                 return Err(check.invalid(
                     &format!("manoeuvre[{index}].name"),

@@ -9,6 +9,8 @@
 use super::imo::Criterion;
 use super::linear::{LinearModel, Nomoto, linearise};
 use super::manoeuvre::{Figures, Manoeuvre, ManoeuvreKind};
+use super::side::Side;
+use super::spiral::{Branch, SpiralCurve};
 use super::table::RigidBodyTerms;
 use super::{ShipModel, ShipScene};
 use super::{Units, YawInertia};
@@ -130,6 +132,10 @@ pub struct Manoeuvres {
 }
 
 /// One manoeuvre: what it did, its figures, and how far each moved when the run was refined.
+///
+/// A manoeuvre run to both sides gives here the run of the worse side (by its tactical
+/// diameter, or first overshoot: [`super::side::deciding_figure`]), named by `side`, and
+/// each side's under `sides` (`"port"`, `"starboard"`).
 #[derive(Debug, Clone, Serialize)]
 pub struct ManoeuvreSummary {
     /// The kind and its angles.
@@ -142,9 +148,15 @@ pub struct ManoeuvreSummary {
     /// Each figure by its key; `null` where the run did not give it (see `notes`).
     #[serde(flatten)]
     pub figures: BTreeMap<&'static str, Option<f64>>,
-    /// `port` or `starboard`, for a turn.
+    /// `port` or `starboard`: the side of a turn, or of a zig-zag's first turn.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub side: Option<&'static str>,
+    /// Each side's run, by side, for a manoeuvre run to both.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sides: Option<BTreeMap<&'static str, ManoeuvreSummary>>,
+    /// A spiral's r–δ curve and its loop.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub spiral: Option<SpiralSummary>,
     /// |figure − figure at half the step| (fixed-step methods).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub half_step_difference: Option<BTreeMap<&'static str, Option<f64>>>,
@@ -157,8 +169,78 @@ pub struct ManoeuvreSummary {
     pub notes: Vec<String>,
 }
 
-/// A manoeuvre's kind and the angles it was run with, in degrees.
+/// A spiral's curve as measured, and what it says.
+#[derive(Debug, Clone, Serialize)]
+pub struct SpiralSummary {
+    /// The points in the order measured.
+    pub points: Vec<SpiralPointSummary>,
+    /// Whether the curve has no loop: one steady turn at each rudder angle.
+    pub course_stable_by_spiral: bool,
+    /// The settling criterion the points were measured by.
+    pub settle: SettleSummary,
+}
+
+/// One point of a spiral's curve.
+#[derive(Debug, Clone, Serialize)]
+pub struct SpiralPointSummary {
+    /// δ, degrees.
+    pub rudder_deg: f64,
+    /// The steady r, degrees per second.
+    pub yaw_rate_deg_s: f64,
+    /// The commanded r of a reverse spiral, degrees per second.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub commanded_yaw_rate_deg_s: Option<f64>,
+    /// `first`, `back` (direct spiral) or `reverse`.
+    pub branch: &'static str,
+    /// Whether r settled by the criterion.
+    pub settled: bool,
+    /// How long the setpoint was held, s.
+    pub held_s: f64,
+}
+
+/// The settling criterion of a spiral.
 #[derive(Debug, Clone, Copy, Serialize)]
+pub struct SettleSummary {
+    /// The window r is checked over, s.
+    pub window_s: f64,
+    /// The largest variation of r over the window, degrees per second.
+    pub tolerance_deg_s: f64,
+    /// The longest hold, s.
+    pub max_hold_s: f64,
+    /// The reverse spiral's largest change of the mean rudder from window to window, degrees.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rudder_tolerance_deg: Option<f64>,
+}
+
+impl SpiralSummary {
+    /// The summary of a measured curve.
+    pub fn new(curve: &SpiralCurve) -> Self {
+        SpiralSummary {
+            points: (curve.points.iter())
+                .map(|p| SpiralPointSummary {
+                    rudder_deg: p.rudder.to_degrees(),
+                    yaw_rate_deg_s: p.yaw_rate.to_degrees(),
+                    commanded_yaw_rate_deg_s: p.target.map(f64::to_degrees),
+                    branch: p.branch.name(),
+                    settled: p.settled,
+                    held_s: p.held,
+                })
+                .collect(),
+            course_stable_by_spiral: curve.find_loop().is_none(),
+            settle: SettleSummary {
+                window_s: curve.settle.window,
+                tolerance_deg_s: curve.settle.tolerance.to_degrees(),
+                max_hold_s: curve.settle.max_hold,
+                rudder_tolerance_deg: (curve.points.iter())
+                    .any(|p| p.branch == Branch::Reverse)
+                    .then(|| curve.settle.rudder_tolerance.to_degrees()),
+            },
+        }
+    }
+}
+
+/// A manoeuvre's kind and the angles it was run with, in degrees.
+#[derive(Debug, Clone, Serialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum KindSummary {
     /// A turning circle.
@@ -182,6 +264,18 @@ pub enum KindSummary {
     },
     /// A series of the scene's.
     RudderSeries,
+    /// A direct spiral.
+    Spiral {
+        /// The first pass's angles.
+        rudders_deg: Vec<f64>,
+    },
+    /// A reverse spiral.
+    ReverseSpiral {
+        /// The commanded yaw rates, degrees per second.
+        yaw_rates_deg_s: Vec<f64>,
+        /// g, degrees of rudder per degree per second of yaw rate.
+        controller_gain_s: f64,
+    },
 }
 
 /// One IMO criterion, judged or not.
@@ -201,6 +295,12 @@ pub struct CriterionSummary {
     pub pass: Option<bool>,
     /// Whether there was a figure to judge.
     pub judged: bool,
+    /// The side `value` is of, for a manoeuvre run to a side.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub side: Option<&'static str>,
+    /// Each side's figure, for a manoeuvre run to both; `value` is the worse.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sides: Option<BTreeMap<&'static str, Option<f64>>>,
 }
 
 impl ModelSummary {
@@ -306,6 +406,13 @@ impl KindSummary {
                 release_s: release,
             },
             ManoeuvreKind::Series(_) => KindSummary::RudderSeries,
+            ManoeuvreKind::Spiral(ref spiral) => KindSummary::Spiral {
+                rudders_deg: spiral.rudders.iter().map(|d| d.to_degrees()).collect(),
+            },
+            ManoeuvreKind::ReverseSpiral(ref reverse) => KindSummary::ReverseSpiral {
+                yaw_rates_deg_s: reverse.yaw_rates.iter().map(|r| r.to_degrees()).collect(),
+                controller_gain_s: reverse.gain,
+            },
         }
     }
 }
@@ -332,11 +439,28 @@ impl ManoeuvreSummary {
             duration_s: manoeuvre.duration,
             figures: figures.values.iter().copied().collect(),
             side: figures.side,
+            sides: None,
+            spiral: figures.spiral.as_ref().map(SpiralSummary::new),
             half_step_difference: (!adaptive).then(|| differences.clone()),
             tolerance_difference: adaptive.then_some(differences),
             steps,
             notes: figures.notes.clone(),
         }
+    }
+}
+
+impl ManoeuvreSummary {
+    /// A manoeuvre run to both sides: the `worse` side's summary, with each side's under
+    /// `sides`.
+    pub fn both(port: ManoeuvreSummary, starboard: ManoeuvreSummary, worse: Side) -> Self {
+        let mut summary = match worse {
+            Side::Port => port.clone(),
+            Side::Starboard => starboard.clone(),
+        };
+        summary.side = Some(worse.name());
+        let sides = [(Side::Port, port), (Side::Starboard, starboard)];
+        summary.sides = Some(sides.into_iter().map(|(s, m)| (s.name(), m)).collect());
+        summary
     }
 }
 
@@ -351,6 +475,12 @@ impl CriterionSummary {
             unit: criterion.unit,
             pass: criterion.pass(),
             judged: criterion.value.is_some(),
+            side: criterion.side.map(Side::name),
+            sides: (!criterion.sides.is_empty()).then(|| {
+                (criterion.sides.iter())
+                    .map(|(side, value)| (side.name(), *value))
+                    .collect()
+            }),
         }
     }
 }

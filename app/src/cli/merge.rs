@@ -4,9 +4,11 @@
 //! Each shard (`eom run SCENE --shard K/N`) writes `sweep-shard-K-of-N.csv`; the cases of one
 //! shard are k ≡ K (mod N), so the tables interleave. The merge checks that every shard of
 //! the same N is there and that their headers agree, and refuses while a shard still holds
-//! the folder.
+//! the folder. The table of a ship sweep over one rudder angle gets its plot,
+//! `rudder_sweep.svg`, as a whole run's does (drawn from the table alone).
 
 use super::run::Usage;
+use super::ship::{SWEEP_PLOT, write_sweep_plot};
 use anyhow::{Context, Result, bail};
 use eom::output::folder::Claim;
 use eom::output::summary::write_atomically;
@@ -24,7 +26,8 @@ pub struct Args {
 pub fn run(args: Args) -> Result<()> {
     let shards = shard_tables(&args.dir)?;
     let count = shards.len();
-    let _claim = Claim::add_to(&args.dir, "sweep.csv")?;
+    let planned = ["sweep.csv".to_owned(), SWEEP_PLOT.to_owned()];
+    let _claim = Claim::add_to(&args.dir, &planned)?;
     let mut header: Option<csv::StringRecord> = None;
     let mut rows: Vec<(usize, csv::StringRecord)> = Vec::new();
     for path in shards.values() {
@@ -59,8 +62,10 @@ pub fn run(args: Args) -> Result<()> {
         writer.write_record(record)?;
     }
     let path = args.dir.join("sweep.csv");
-    write_atomically(&path, &writer.into_inner()?)
-        .with_context(|| format!("writing {}", path.display()))?;
+    let table = writer.into_inner()?;
+    write_atomically(&path, &table).with_context(|| format!("writing {}", path.display()))?;
+    // A ship sweep over one rudder angle: its plot, as the whole run draws it.
+    write_sweep_plot(&args.dir, &String::from_utf8_lossy(&table))?;
     println!(
         "merged {count} shards, {} cases, into {}",
         rows.len(),

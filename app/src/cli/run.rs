@@ -255,6 +255,12 @@ fn execute_ship(
             .iter()
             .map(|(case, _)| case_folder(case.index))
             .chain([sweep_file(options.shard)])
+            .chain(
+                options
+                    .shard
+                    .is_none()
+                    .then(|| super::ship::SWEEP_PLOT.to_owned()),
+            )
             .collect(),
     };
     let writer = writer_of(name, text, options.shard);
@@ -267,6 +273,10 @@ fn execute_ship(
                 writable_folder(&folder)?;
                 Ok(folder)
             });
+            // A shard's table is a part; its plot is drawn when the shards are merged.
+            if options.shard.is_none() {
+                super::ship::write_sweep_plot(out, &table)?;
+            }
             finish_sweep(name, out, options.shard, &table, &failures)
         }
     }

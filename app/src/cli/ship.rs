@@ -18,20 +18,117 @@ use eom::output::text::printable;
 use eom::output::trajectory::{Columns, TrajectoryWriter};
 use eom::run::{Row, Sink};
 use eom::scene::sweep::TableCase;
+use eom::ship::Side;
+use eom::ship::imo::Trial;
 use eom::ship::imo::{Criterion, criteria};
 use eom::ship::linear::{LinearModel, Nomoto, linearise};
+use eom::ship::manoeuvre::ManoeuvreKind;
 use eom::ship::manoeuvre::{Figures, ROW, run, trajectory_columns};
+use eom::ship::side::{deciding_figure, worse};
+use eom::ship::spiral::{Branch, SpiralCurve};
 use eom::ship::summary::{
     CriterionSummary, IntegratorSummary, LinearSummary, ManoeuvreSummary, Manoeuvres, ModelSummary,
     ShipSummary, nomoto_difference,
 };
 use eom::ship::{Manoeuvre, ShipError, ShipModel, ShipScene};
 use eom_cli::plots::Mark;
+use eom_cli::plots::curves::{Curve, Curves, write_curves};
 use eom_cli::plots::ship::{Hull, ManoeuvrePlot, write_manoeuvre_plots};
 use rayon::prelude::*;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
+
+/// A ship sweep's plot over a rudder angle, beside its table.
+pub const SWEEP_PLOT: &str = "rudder_sweep.svg";
+
+/// The figures [`write_sweep_plot`] draws against the rudder angle, with their names.
+const SWEPT_FIGURES: [(&str, &str); 2] = [
+    ("tactical_diameter_m", "tactical diameter"),
+    ("steady_turning_radius_m", "steady turning radius"),
+];
+
+/// Whether a column of a sweep's table is a swept key (a key path of the scene: an entry of
+/// an array, `manoeuvre[0].rudder_deg`, or a key of one of its tables), not a figure.
+fn is_key_path(column: &str) -> bool {
+    let tables = [
+        "model.",
+        "body.",
+        "hydrodynamics.",
+        "rudder.",
+        "integrator.",
+        "output.",
+    ];
+    column.contains('[') || column == "title" || tables.iter().any(|t| column.starts_with(t))
+}
+
+/// `rudder_sweep.svg` in `dir`, from a ship sweep's table (`sweep.csv`'s text), when the sweep
+/// varies one key and that key is a rudder angle (`….rudder_deg`): the tactical diameter and
+/// the steady turning radius of each turning circle against it, each side's where a turn ran
+/// to both. Draws nothing for any other sweep. The table alone decides, so that a whole run
+/// and the merge of its shards draw the same plot.
+pub fn write_sweep_plot(dir: &Path, table: &str) -> Result<()> {
+    let mut reader = csv::Reader::from_reader(table.as_bytes());
+    let Ok(header) = reader.headers().cloned() else {
+        return Ok(());
+    };
+    let swept: Vec<&str> = header
+        .iter()
+        .skip(1)
+        .take_while(|c| is_key_path(c))
+        .collect();
+    let [rudder] = swept.as_slice() else {
+        return Ok(());
+    };
+    if !rudder.ends_with("rudder_deg") {
+        return Ok(());
+    }
+    let rows: Vec<csv::StringRecord> = reader.records().filter_map(Result::ok).collect();
+    let number = |row: &csv::StringRecord, i: usize| row.get(i)?.parse::<f64>().ok();
+    let mut lines: Vec<(String, Vec<(f64, f64)>)> = Vec::new();
+    for (i, column) in header.iter().enumerate() {
+        let Some((key, what)) = SWEPT_FIGURES
+            .iter()
+            .find(|(k, _)| column.ends_with(&format!(".{k}")))
+        else {
+            continue;
+        };
+        let manoeuvre = &column[..column.len() - key.len() - 1];
+        // A turn run to both sides: its sides' columns, not the worse side's.
+        let sided = ["port", "starboard"].iter().any(|side| {
+            header
+                .iter()
+                .any(|c| c == format!("{manoeuvre}.{side}.{key}"))
+        });
+        if sided {
+            continue;
+        }
+        let mut points: Vec<(f64, f64)> = rows
+            .iter()
+            .filter_map(|row| Some((number(row, 1)?, number(row, i)?)))
+            .collect();
+        points.sort_by(|a, b| a.0.total_cmp(&b.0));
+        lines.push((format!("{} {what}", manoeuvre.replace('.', " ")), points));
+    }
+    if lines.is_empty() {
+        return Ok(());
+    }
+    let curves: Vec<Curve> = (lines.iter())
+        .map(|(name, points)| Curve { name, points })
+        .collect();
+    let caption = format!("Turning circles against the rudder angle ({rudder})");
+    let plot = Curves {
+        caption: &caption,
+        x_desc: "rudder angle [deg]",
+        y_desc: "tactical diameter, steady turning radius [m]",
+        curves: &curves,
+    };
+    write_curves(dir, SWEEP_PLOT, &plot)?;
+    Ok(())
+}
+
+/// A spiral's plot, in its manoeuvre's folder.
+pub const SPIRAL_PLOT: &str = "spiral.svg";
 
 /// A manoeuvre run with the scene's method, and the same refined (`Stepper::refined`: half
 /// the step, or tolerances a hundred times tighter).
@@ -41,6 +138,29 @@ struct Outcome {
     figures: Figures,
     refined: Figures,
     steps: u64,
+}
+
+/// A manoeuvre's runs: one per side (`turning_circle_35/port/`, `…/starboard/`), or one of no
+/// side or of the one side the scene names (`turning_circle_35/`).
+type Runs = Vec<(Option<Side>, Outcome)>;
+
+/// The side of a manoeuvre run to both that its summary, table and report show first: the
+/// worse by the figure [`deciding_figure`] names.
+fn worse_side(manoeuvre: &Manoeuvre, runs: &Runs) -> Option<Side> {
+    let [(Some(Side::Port), port), (Some(Side::Starboard), starboard)] = runs.as_slice() else {
+        return None;
+    };
+    let turning = matches!(manoeuvre.kind, ManoeuvreKind::TurningCircle { .. });
+    let key = deciding_figure(turning);
+    Some(worse(port.figures.get(key), starboard.figures.get(key)))
+}
+
+/// The outcome a manoeuvre's summary shows first: the worse side's, or its one run's.
+fn shown<'a>(manoeuvre: &Manoeuvre, runs: &'a Runs) -> Option<&'a Outcome> {
+    match worse_side(manoeuvre, runs) {
+        Some(side) => runs.iter().find(|(s, _)| *s == Some(side)).map(|(_, o)| o),
+        None => runs.first().map(|(_, o)| o),
+    }
 }
 
 /// A summary as pretty JSON with the keys of every object sorted (through
@@ -71,7 +191,7 @@ pub fn execute(scene: &ShipScene, name: &str, out: &Path) -> Result<()> {
 /// What a ship scene's run gave: each manoeuvre's outcome, the IMO criteria judged on them,
 /// and the signal that ended it early, if one did.
 pub struct ShipRun {
-    outcomes: Vec<Outcome>,
+    outcomes: Vec<Runs>,
     judged: Vec<Criterion>,
     interrupted: Option<i32>,
 }
@@ -83,31 +203,56 @@ fn run_into(scene: &ShipScene, name: &str, out: &Path) -> Result<ShipRun> {
     let linear = LinearModel::closed_form(&scene.table);
     let mut outcomes = Vec::new();
     let mut interrupted = None;
-    for manoeuvre in &scene.manoeuvres {
-        let folder = out.join(&manoeuvre.name);
-        std::fs::create_dir_all(&folder)
-            .with_context(|| format!("creating {}", folder.display()))?;
-        let outcome = match run_manoeuvre(scene, &model, manoeuvre, &folder) {
-            Err(error) if is_stopped(&error) => {
-                interrupted = signal_received();
-                break;
+    'manoeuvres: for manoeuvre in &scene.manoeuvres {
+        let mut runs = Runs::new();
+        let sided = manoeuvre.runs();
+        for (side, one) in &sided {
+            let mut folder = out.join(&manoeuvre.name);
+            if sided.len() > 1 {
+                folder = folder.join(side.map_or("", Side::name));
             }
-            outcome => outcome.with_context(|| format!("manoeuvre {}", manoeuvre.name))?,
-        };
-        write_plots(&folder, scene, manoeuvre, &outcome)?;
-        outcomes.push(outcome);
+            std::fs::create_dir_all(&folder)
+                .with_context(|| format!("creating {}", folder.display()))?;
+            let outcome = match run_manoeuvre(scene, &model, one, &folder) {
+                Err(error) if is_stopped(&error) => {
+                    interrupted = signal_received();
+                    // A side finished before the signal is kept, as a manoeuvre is.
+                    if !runs.is_empty() {
+                        outcomes.push(runs);
+                    }
+                    break 'manoeuvres;
+                }
+                outcome => outcome.with_context(|| format!("manoeuvre {}", manoeuvre.name))?,
+            };
+            let name = match side {
+                Some(side) if sided.len() > 1 => format!("{} ({})", manoeuvre.name, side.name()),
+                _ => manoeuvre.name.clone(),
+            };
+            write_plots(&folder, scene, &name, one, &outcome)?;
+            runs.push((*side, outcome));
+        }
+        outcomes.push(runs);
     }
-    let runs: Vec<(&Manoeuvre, &Figures)> = scene
-        .manoeuvres
-        .iter()
-        .zip(&outcomes)
-        .map(|(m, o)| (m, &o.figures))
+    let trials: Vec<Trial> = (scene.manoeuvres.iter().zip(&outcomes))
+        .map(|(m, runs)| (m, runs.iter().map(|(s, o)| (*s, &o.figures)).collect()))
         .collect();
-    let judged = criteria(scene.length, scene.table.design_speed, &runs);
+    let judged = criteria(scene.length, scene.table.design_speed, &trials);
     let runs = (scene.manoeuvres.iter().zip(&outcomes))
-        .map(|(manoeuvre, outcome)| {
-            let figures = (&outcome.figures, &outcome.refined);
-            let summary = ManoeuvreSummary::new(manoeuvre, &scene.stepper, figures, outcome.steps);
+        .filter(|(_, runs)| !runs.is_empty())
+        .map(|(manoeuvre, runs)| {
+            let summary_of = |(side, outcome): &(Option<Side>, Outcome)| {
+                let figures = (&outcome.figures, &outcome.refined);
+                let mut summary =
+                    ManoeuvreSummary::new(manoeuvre, &scene.stepper, figures, outcome.steps);
+                summary.side = side.map(Side::name).or(summary.side);
+                summary
+            };
+            let summary = match (worse_side(manoeuvre, runs), runs.as_slice()) {
+                (Some(side), [port, starboard]) => {
+                    ManoeuvreSummary::both(summary_of(port), summary_of(starboard), side)
+                }
+                (_, runs) => summary_of(&runs[0]),
+            };
             (manoeuvre.name.clone(), summary)
         })
         .collect();
@@ -172,34 +317,48 @@ fn sweep_columns(cases: &[(TableCase, ShipScene)], runs: &[Result<ShipRun>]) -> 
     else {
         return Vec::new();
     };
-    let mut columns = Vec::new();
-    for (manoeuvre, outcome) in scene.manoeuvres.iter().zip(&run.outcomes) {
-        for (key, _) in &outcome.figures.values {
-            columns.push(format!("{}.{key}", manoeuvre.name));
+    sweep_cells(scene, run)
+        .into_iter()
+        .map(|(k, _)| k)
+        .collect()
+}
+
+/// Each column of a ship sweep's table with its value in `run`, in the table's order: each
+/// manoeuvre's figures (the worse side's, for one run to both), then each side's
+/// (`turn.port.tactical_diameter_m`), then each IMO criterion's value, verdict and sides.
+fn sweep_cells(scene: &ShipScene, run: &ShipRun) -> Vec<(String, String)> {
+    let text = |value: Option<f64>| value.map_or_else(String::new, |v| v.to_string());
+    let mut cells = Vec::new();
+    for (manoeuvre, runs) in scene.manoeuvres.iter().zip(&run.outcomes) {
+        if let Some(outcome) = shown(manoeuvre, runs) {
+            for (key, value) in &outcome.figures.values {
+                cells.push((format!("{}.{key}", manoeuvre.name), text(*value)));
+            }
+        }
+        for (side, outcome) in runs.iter().filter(|_| runs.len() > 1) {
+            let side = side.map_or("", Side::name);
+            for (key, value) in &outcome.figures.values {
+                cells.push((format!("{}.{side}.{key}", manoeuvre.name), text(*value)));
+            }
         }
     }
     for criterion in &run.judged {
-        columns.push(format!("imo.{}", criterion.name));
-        columns.push(format!("imo.{}.pass", criterion.name));
+        let pass = criterion.pass().map_or_else(String::new, |p| p.to_string());
+        cells.push((format!("imo.{}", criterion.name), text(criterion.value)));
+        cells.push((format!("imo.{}.pass", criterion.name), pass));
+        for (side, value) in &criterion.sides {
+            cells.push((
+                format!("imo.{}.{}", criterion.name, side.name()),
+                text(*value),
+            ));
+        }
     }
-    columns
+    cells
 }
 
 /// The value of each of `columns` in `run`, empty where it gave none.
 fn sweep_values(scene: &ShipScene, run: &ShipRun, columns: &[String]) -> Vec<String> {
-    let mut values: BTreeMap<String, String> = BTreeMap::new();
-    for (manoeuvre, outcome) in scene.manoeuvres.iter().zip(&run.outcomes) {
-        for (key, value) in &outcome.figures.values {
-            let text = value.map_or_else(String::new, |v| v.to_string());
-            values.insert(format!("{}.{key}", manoeuvre.name), text);
-        }
-    }
-    for criterion in &run.judged {
-        let value = criterion.value.map_or_else(String::new, |v| v.to_string());
-        let pass = criterion.pass().map_or_else(String::new, |p| p.to_string());
-        values.insert(format!("imo.{}", criterion.name), value);
-        values.insert(format!("imo.{}.pass", criterion.name), pass);
-    }
+    let mut values: BTreeMap<String, String> = sweep_cells(scene, run).into_iter().collect();
     columns
         .iter()
         .map(|column| values.remove(column).unwrap_or_default())
@@ -301,6 +460,7 @@ fn run_manoeuvre(
 fn write_plots(
     folder: &Path,
     scene: &ShipScene,
+    name: &str,
     manoeuvre: &Manoeuvre,
     outcome: &Outcome,
 ) -> Result<()> {
@@ -326,7 +486,10 @@ fn write_plots(
             point: (*y, *x),
         })
         .collect();
-    let title = format!("{} — {}", scene.title, manoeuvre.name);
+    let title = format!("{} — {name}", scene.title);
+    if let Some(curve) = &outcome.figures.spiral {
+        write_spiral_plot(folder, &title, curve)?;
+    }
     let plot = ManoeuvrePlot {
         title: &title,
         time,
@@ -360,19 +523,164 @@ fn write_plots(
     Ok(())
 }
 
-fn print_report(scene: &ShipScene, outcomes: &[Outcome], judged: &[Criterion], out: &Path) {
-    println!("{}", printable(&scene.title));
-    for (manoeuvre, outcome) in scene.manoeuvres.iter().zip(outcomes) {
-        println!("  {}:", manoeuvre.name);
-        for (key, value) in &outcome.figures.values {
-            match value {
-                Some(v) => println!("    {key:<28} {v:>12.3}"),
-                None => println!("    {key:<28} {:>12}", "—"),
+/// A figure as the report prints it: three decimals, or a dash where the run gave none.
+fn cell(value: Option<f64>) -> String {
+    value.map_or_else(|| "—".to_owned(), |v| format!("{v:.3}"))
+}
+
+/// A manoeuvre's figures as the report prints them: a column per side for one run to both
+/// (the worse side's marked), each note with its side.
+fn print_manoeuvre(manoeuvre: &Manoeuvre, runs: &Runs) {
+    let worse = worse_side(manoeuvre, runs);
+    match (runs.as_slice(), worse) {
+        ([(_, port), (_, starboard)], Some(worse)) => {
+            let mark = |side: Side| if side == worse { " (worse)" } else { "" };
+            println!(
+                "  {}:{:>31}{:>22}",
+                manoeuvre.name,
+                format!("port{}", mark(Side::Port)),
+                format!("starboard{}", mark(Side::Starboard))
+            );
+            for ((key, p), (_, s)) in port.figures.values.iter().zip(&starboard.figures.values) {
+                println!("    {key:<28} {:>12} {:>21}", cell(*p), cell(*s));
             }
         }
-        for note in &outcome.figures.notes {
-            println!("    note: {note}");
+        _ => {
+            let side = runs.first().and_then(|(s, _)| *s);
+            match side {
+                Some(side) => println!("  {} ({}):", manoeuvre.name, side.name()),
+                None => println!("  {}:", manoeuvre.name),
+            }
+            for (_, outcome) in runs {
+                for (key, value) in &outcome.figures.values {
+                    println!("    {key:<28} {:>12}", cell(*value));
+                }
+            }
         }
+    }
+    for (side, outcome) in runs {
+        if let Some(curve) = &outcome.figures.spiral {
+            print_spiral(curve);
+        }
+        let side = match side {
+            Some(side) if runs.len() > 1 => format!(" ({})", side.name()),
+            _ => String::new(),
+        };
+        for note in &outcome.figures.notes {
+            println!("    note{side}: {note}");
+        }
+    }
+}
+
+/// A spiral's curve: one line per angle (the two passes side by side for a direct spiral).
+fn print_spiral(curve: &SpiralCurve) {
+    let stable = curve.find_loop().is_none();
+    println!(
+        "    course stable by the spiral        {}",
+        if stable {
+            "yes (no loop)"
+        } else {
+            "NO (a loop)"
+        }
+    );
+    let settle = curve.settle;
+    println!(
+        "    settled: r within {}°/s over {} s (held at most {} s)",
+        settle.tolerance.to_degrees(),
+        settle.window,
+        settle.max_hold
+    );
+    let reverse = curve.points.iter().any(|p| p.branch == Branch::Reverse);
+    if reverse {
+        println!(
+            "    {:>14} {:>14} {:>14}",
+            "r_c [°/s]", "r [°/s]", "mean δ [°]"
+        );
+        for p in &curve.points {
+            let target = p.target.map_or(f64::NAN, f64::to_degrees);
+            let (r, d) = (p.yaw_rate.to_degrees(), p.rudder.to_degrees());
+            println!("    {target:>14.4} {r:>14.4} {d:>14.3}");
+        }
+        return;
+    }
+    println!(
+        "    {:>10} {:>14} {:>14}",
+        "δ [°]", "r first [°/s]", "r back [°/s]"
+    );
+    for first in curve.points.iter().filter(|p| p.branch == Branch::First) {
+        let back = (curve.points.iter())
+            .find(|p| p.branch == Branch::Back && p.rudder == first.rudder)
+            .map(|p| p.yaw_rate.to_degrees());
+        println!(
+            "    {:>10.2} {:>14.4} {:>14}",
+            first.rudder.to_degrees(),
+            first.yaw_rate.to_degrees(),
+            back.map_or_else(|| "—".to_owned(), |r| format!("{r:.4}"))
+        );
+    }
+}
+
+/// `spiral.svg`: r against δ, each pass of a direct spiral a curve, a reverse spiral's one
+/// in the order of r.
+fn write_spiral_plot(folder: &Path, title: &str, curve: &SpiralCurve) -> Result<()> {
+    let pass = |branch: Branch| -> Vec<(f64, f64)> {
+        let mut points: Vec<(f64, f64)> = (curve.points.iter())
+            .filter(|p| p.branch == branch)
+            .map(|p| (p.rudder.to_degrees(), p.yaw_rate.to_degrees()))
+            .collect();
+        if branch == Branch::Reverse {
+            points.sort_by(|a, b| a.1.total_cmp(&b.1));
+        }
+        points
+    };
+    let (first, back, reverse) = (
+        pass(Branch::First),
+        pass(Branch::Back),
+        pass(Branch::Reverse),
+    );
+    let mut curves = Vec::new();
+    if !first.is_empty() {
+        curves.push(Curve {
+            name: "first pass",
+            points: &first,
+        });
+    }
+    if !back.is_empty() {
+        curves.push(Curve {
+            name: "back",
+            points: &back,
+        });
+    }
+    if !reverse.is_empty() {
+        curves.push(Curve {
+            name: "reverse spiral",
+            points: &reverse,
+        });
+    }
+    let verdict = match curve.find_loop() {
+        None => "no loop (course-stable)".to_owned(),
+        Some(l) => format!(
+            "loop {:.2}° wide{}",
+            l.width.to_degrees(),
+            l.height
+                .map_or(String::new(), |h| format!(" × {:.3}°/s", h.to_degrees()))
+        ),
+    };
+    let caption = format!("{title}: {verdict}");
+    let plot = Curves {
+        caption: &caption,
+        x_desc: "rudder δ [deg]",
+        y_desc: "yaw rate r [deg/s]",
+        curves: &curves,
+    };
+    write_curves(folder, SPIRAL_PLOT, &plot)?;
+    Ok(())
+}
+
+fn print_report(scene: &ShipScene, outcomes: &[Runs], judged: &[Criterion], out: &Path) {
+    println!("{}", printable(&scene.title));
+    for (manoeuvre, runs) in scene.manoeuvres.iter().zip(outcomes) {
+        print_manoeuvre(manoeuvre, runs);
     }
     if !judged.is_empty() {
         println!(
@@ -381,16 +689,29 @@ fn print_report(scene: &ShipScene, outcomes: &[Outcome], judged: &[Criterion], o
             scene.length / scene.table.design_speed
         );
         for c in judged {
+            let sides: Vec<String> = (c.sides.iter())
+                .map(|(side, v)| {
+                    format!(
+                        "{} {}",
+                        side.name(),
+                        v.map_or("—".into(), |v| format!("{v:.2}"))
+                    )
+                })
+                .collect();
+            let sides = match sides.is_empty() {
+                true => String::new(),
+                false => format!("  ({})", sides.join(", ")),
+            };
             match (c.value, c.pass()) {
                 (Some(value), Some(pass)) => println!(
-                    "    {:<24} {value:>10.2} {:<3} ≤ {:>9.2}  {}",
+                    "    {:<24} {value:>10.2} {:<3} ≤ {:>9.2}  {}{sides}",
                     c.name,
                     c.unit,
                     c.limit,
                     if pass { "pass" } else { "FAIL" }
                 ),
                 _ => println!(
-                    "    {:<24} not judged: {} did not give the figure (see its notes)",
+                    "    {:<24} not judged: {} did not give the figure (see its notes){sides}",
                     c.name, c.manoeuvre
                 ),
             }

@@ -52,7 +52,8 @@
 //!
 //! Here: the input, the errors, and writing each plot atomically. `scale` decides which
 //! samples are drawn and where the axes run; `series`, `track`, `profile`, `polhode` and
-//! `energy` draw the plots; `ship` draws a manoeuvre's, `poles` a linear model's eigenvalues.
+//! `energy` draw the plots; `ship` draws a manoeuvre's, `poles` a linear model's eigenvalues,
+//! `curves` one quantity against another (a spiral's r–δ curve, a rudder sweep's diameters).
 
 use std::fs::{self, File};
 use std::io::{self, Write};
@@ -65,6 +66,7 @@ use thiserror::Error;
 
 use eom::output::text::printable;
 
+pub mod curves;
 mod energy;
 pub mod poles;
 mod polhode;

@@ -305,10 +305,14 @@ pub(super) static KEYS: &[Key] = &[
             "zigzag",
             "pull_out",
             "rudder_series",
+            "spiral",
+            "reverse_spiral",
         ])),
         required: Required::Yes,
         description: "Which manoeuvre. Each starts straight ahead at U₀, midship at the \
-                      origin, heading north, rudder amidships.",
+                      origin, heading north, rudder amidships. spiral: Dieudonné's direct \
+                      spiral; reverse_spiral: Bech's reverse spiral (the steady yaw rate \
+                      against the rudder angle, and its loop; see eom::ship::spiral).",
         example: "\"turning_circle\"",
         ..Key::BLANK
     },
@@ -316,9 +320,27 @@ pub(super) static KEYS: &[Key] = &[
         path: "manoeuvre[].rudder_deg",
         families: SHIP,
         unit: "deg",
-        required: Required::When("except for rudder_series"),
-        description: "The rudder angle put over at the execute (a zig-zag's δ_a), not zero.",
+        required: Required::When("for turning_circle, zigzag and pull_out"),
+        description: "The rudder angle put over at the execute (a zig-zag's δ_a), not zero. A \
+                      turning circle or zig-zag puts its magnitude to the side (or sides) of \
+                      `side`; a pull-out uses it as signed (positive δ turns the tables here \
+                      to port).",
         example: "35.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].side",
+        families: SHIP,
+        kind: Kind::Text(Choices::These(&["both", "port", "starboard"])),
+        default: "both",
+        description: "turning_circle and zigzag: the side the rudder turns the ship to \
+                      (a zig-zag's first turn). both: one run to each, written into \
+                      NAME/port/ and NAME/starboard/, the summary's figures those of the worse \
+                      side with each side's under `sides`, each IMO criterion judged on both \
+                      and its verdict the worse. Which sign of δ turns to port is read from \
+                      the table's linear model (the yaw acceleration a rudder angle gives).",
+        example: "\"both\"",
+        shown: Shown::Commented,
         ..Key::BLANK
     },
     Key {
@@ -355,8 +377,10 @@ pub(super) static KEYS: &[Key] = &[
         path: "manoeuvre[].duration_s",
         families: SHIP,
         unit: "s",
-        required: Required::Yes,
-        description: "The end of the run, after the execute.",
+        required: Required::When("except for spiral and reverse_spiral"),
+        default: "a spiral's: the longest it may take, every setpoint held max_hold_s",
+        description: "The end of the run, after the execute. A spiral ends once every \
+                      setpoint is measured.",
         example: "60.0",
         ..Key::BLANK
     },
@@ -380,6 +404,91 @@ pub(super) static KEYS: &[Key] = &[
         required: Required::When("for rudder_series"),
         description: "The command's angle at each of times_s.",
         example: "[0.0, 10.0, -10.0]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].rudders_deg",
+        families: SHIP,
+        kind: Kind::Numbers("the first pass's angles, strictly monotonic"),
+        unit: "deg",
+        required: Required::When("for spiral"),
+        description: "The direct spiral's rudder angles, from one side through zero to the \
+                      other; the run holds each until r settles, then comes back through \
+                      them in reverse.",
+        example: "[10.0, 5.0, 2.0, 1.0, 0.0, -1.0, -2.0, -5.0, -10.0]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].yaw_rates_deg_s",
+        families: SHIP,
+        kind: Kind::Numbers("the commanded yaw rates, in the order run"),
+        unit: "deg/s",
+        required: Required::When("for reverse_spiral"),
+        description: "The reverse spiral's commanded yaw rates, each held by a controller on \
+                      the rudder until r and the mean rudder settle.",
+        example: "[0.15, 0.1, 0.05, 0.0, -0.05, -0.1, -0.15]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].settle_window_s",
+        families: SHIP,
+        unit: "s",
+        default: "100",
+        description: "spiral, reverse_spiral: r is checked at the end of each window of this \
+                      length from the setpoint's start; it has settled when it varied by at \
+                      most settle_tolerance_deg_s over the window.",
+        example: "100.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].settle_tolerance_deg_s",
+        families: SHIP,
+        unit: "deg/s",
+        default: "0.001",
+        description: "spiral, reverse_spiral: the largest variation of r (max − min) over the \
+                      window for a settled setpoint (and, for the reverse spiral, the largest \
+                      distance of the mean r from the commanded one). For an approach as one \
+                      exponential of time constant T, a settled r is within \
+                      tolerance/(e^(W/T) − 1) of the steady one.",
+        example: "0.001",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].settle_rudder_deg",
+        families: SHIP,
+        unit: "deg",
+        default: "0.01",
+        description: "reverse_spiral: the largest change of the mean rudder angle from one \
+                      window to the next for a settled setpoint.",
+        example: "0.01",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].max_hold_s",
+        families: SHIP,
+        unit: "s",
+        default: "2000",
+        description: "spiral, reverse_spiral: the longest a setpoint is held; one not settled \
+                      by then is taken as it stands, marked settled: false, with a note.",
+        example: "2000.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].controller_time_s",
+        families: SHIP,
+        unit: "s",
+        default: "20",
+        description: "reverse_spiral: τ of the controller δ_c = δ_i + g (r − r_c), g = \
+                      −1/(b_r τ) with b_r the yaw acceleration per radian of rudder about \
+                      the straight course; δ_i moves at each check by g (r̄ − r_c).",
+        example: "20.0",
         shown: Shown::Commented,
         ..Key::BLANK
     },
