@@ -957,3 +957,48 @@ fn the_spirals_steady_rate_at_small_rudder_is_nomotos_k_delta() {
         }
     }
 }
+
+/// A ship goes through the linearisation of every scene: about its approach the position and
+/// the heading are set aside, A is on (u, v, r), and the sway–yaw eigenvalues are −1/T₁ and
+/// −1/T₂ of Nomoto's closed form, to 1e-9 relative (two routes through the same derivatives:
+/// the closed form's 2×2 algebra against an eigen-solver of the 3×3, whose surge row is
+/// apart). The Mariner is stable, the Esso Osaka (C′ < 0) is not.
+#[test]
+fn a_ships_modes_are_nomotos_time_constants() {
+    use eom::linear::Stability;
+    use eom::ship::linear::linearise_ship;
+    for (file, stable) in [("mariner.toml", true), ("esso_osaka.toml", false)] {
+        let scene = scene(file);
+        let model = ShipModel::new(&scene.table).unwrap();
+        let linear = linearise_ship(&scene, &model).unwrap();
+        assert_eq!(linear.reduced_names(), ["u", "v", "r"], "{file}");
+        assert_eq!(linear.set_aside_names(), ["X", "Y", "psi"], "{file}");
+        let nomoto = LinearModel::closed_form(&scene.table).nomoto().unwrap();
+        let mut wanted = [-1.0 / nomoto.t1, -1.0 / nomoto.t2];
+        let sway_yaw = |l: &eom::nalgebra::Complex<f64>| {
+            // The surge eigenvalue is ∂u̇/∂u; the other two are the sway–yaw pair.
+            (l.re - linear.a[(0, 0)]).abs() > 1e-12 * l.re.abs()
+        };
+        let mut found: Vec<f64> = linear
+            .eigenvalues
+            .iter()
+            .filter(|l| sway_yaw(l))
+            .map(|l| {
+                assert_eq!(l.im, 0.0, "{file}: {l}");
+                l.re
+            })
+            .collect();
+        found.sort_by(f64::total_cmp);
+        wanted.sort_by(f64::total_cmp);
+        assert_eq!(found.len(), 2, "{file}: {:?}", linear.eigenvalues);
+        for (got, want) in found.iter().zip(wanted) {
+            assert!(
+                (got - want).abs() <= 1e-9 * want.abs(),
+                "{file}: {got} against {want}"
+            );
+        }
+        assert_eq!(linear.stability != Stability::Unstable, stable, "{file}");
+        let named: Vec<_> = linear.modes.iter().filter_map(|m| m.name).collect();
+        assert!(named.contains(&"sway and yaw"), "{file}: {named:?}");
+    }
+}

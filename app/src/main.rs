@@ -15,6 +15,12 @@ struct Cli {
 }
 
 fn main() -> ExitCode {
+    #[cfg(unix)]
+    // SAFETY: signal(2) with the default action, before any other thread exists; Rust's
+    // runtime had set SIGPIPE to be ignored, which turns a closed pipe into a panic of print!.
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
+    }
     match cli::run(Cli::parse().command) {
         Ok(()) => ExitCode::SUCCESS,
         Err(error) => {

@@ -287,6 +287,17 @@ fn eom_linear_says_the_esso_osaka_is_course_unstable() {
     assert_eq!(linear["course_stable"], false, "{linear}");
     assert!(linear["stability_index"].as_f64().unwrap() < 0.0);
     assert!(linear["largest_relative_difference"].as_f64().unwrap() < 1e-9);
+    // Every scene's report beside the Nomoto block: the reduced state, the modes, the verdict.
+    assert_eq!(linear["reduced_state"], serde_json::json!(["u", "v", "r"]));
+    assert_eq!(linear["set_aside"], serde_json::json!(["X", "Y", "psi"]));
+    assert_eq!(linear["inputs"], serde_json::json!(["delta"]));
+    assert_eq!(linear["stable"], false, "{linear}");
+    let growing = linear["modes"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|m| m["re"].as_f64().unwrap() > 0.0 && m["name"] == "sway and yaw");
+    assert_eq!(growing.count(), 1, "{linear}");
     let text = succeeded(&eom(&["linear", &scene_arg("mariner.toml")]));
     assert!(text.contains(": stable"), "{text}");
 }

@@ -229,7 +229,11 @@ fn name_modes(modes: &mut [Mode], family: Family) {
                 None
             }
             Family::Top if moving => Some("the top's fall"),
-            Family::PlanarAtG | Family::PlanarMidship if moving && is(mode, &["u"]) => {
+            // Surge among the dominant entries: where u̇ depends on u alone (a straight course),
+            // the sway–yaw modes have no u at all, and the surge mode drags some sway along.
+            Family::PlanarAtG | Family::PlanarMidship
+                if moving && mode.dominant.iter().any(|d| d == "u") =>
+            {
                 Some("surge")
             }
             Family::PlanarAtG | Family::PlanarMidship if moving => Some("sway and yaw"),

@@ -20,12 +20,16 @@
 //!
 //! [`linearise`] takes the same matrices from the running model instead: its Jacobian, the
 //! program derived from the proved system's exact derivative and proved equal to it. The two
-//! agree (tests/ship.rs).
+//! agree (tests/ship.rs). And [`linearise_ship`] hands the ship to the linearisation of every
+//! scene ([`crate::linear`]): the states set aside, A and B on (u, v, r), the modes and the
+//! verdict, whose sway–yaw eigenvalues are −1/T₁ and −1/T₂.
 
 use super::model::ShipModel;
 use super::table::ShipTable;
 use super::{Force, Term, Units};
-use crate::models::Model;
+use crate::linear::{Evaluation, LinearError, LinearPlant, Linearisation};
+use crate::models::{Family, Model};
+use nalgebra::DMatrix;
 use std::collections::BTreeMap;
 
 /// Nomoto's models of the yaw-rate response to the rudder.
@@ -218,4 +222,78 @@ pub fn linearise(model: &ShipModel, speed: f64) -> ([[f64; 2]; 2], [f64; 2]) {
     let jacobian = model.state_jacobian(&state, &[0.0]);
     let row = |i: usize| [jacobian[i][1], jacobian[i][2]];
     ([row(1), row(2)], [jacobian[1][6], jacobian[2][6]])
+}
+
+/// The ship as the linearisation of every scene reads it ([`crate::linear::LinearPlant`]):
+/// the state (u, v, r, X, Y, ψ) and the rudder angle δ as its control input, held where it is
+/// put (the steering gear's lag and limits left out, as Nomoto's models leave them); A and B
+/// from the running model's proved Jacobian, ∂f/∂(u, v, r, X, Y, ψ) and ∂f/∂δ.
+#[derive(Debug, Clone, Copy)]
+pub struct ShipPlant<'a> {
+    /// The ship.
+    pub model: &'a ShipModel,
+}
+
+impl ShipPlant<'_> {
+    /// The model's state with the rudder at `delta`.
+    fn full(state: &[f64], delta: f64) -> [f64; 7] {
+        std::array::from_fn(|i| if i < 6 { state[i] } else { delta })
+    }
+}
+
+impl LinearPlant for ShipPlant<'_> {
+    fn name(&self) -> &'static str {
+        <ShipModel as Model<f64, 7, 1>>::NAME
+    }
+
+    /// The ship's modes are named as a planar body's at midship (surge; sway and yaw).
+    fn family(&self) -> Family {
+        Family::PlanarMidship
+    }
+
+    fn state_names(&self) -> Vec<&'static str> {
+        super::model::STATE[..6].to_vec()
+    }
+
+    fn input_names(&self) -> Vec<&'static str> {
+        vec!["delta"]
+    }
+
+    fn inputs(&self, _state: &[f64], extra: &[f64]) -> Vec<f64> {
+        extra.to_vec()
+    }
+
+    fn evaluate(&self, state: &[f64], extra: &[f64]) -> Result<Evaluation, LinearError> {
+        let full = Self::full(state, extra[0]);
+        let rates = self.model.rhs(&full, &[0.0]);
+        let jacobian = self.model.state_jacobian(&full, &[0.0]);
+        let a = DMatrix::from_fn(6, 6, |i, j| jacobian[i][j]);
+        let b = DMatrix::from_fn(6, 1, |i, _| jacobian[i][6]);
+        let rates = rates[..6].to_vec();
+        if !(rates.iter().chain(a.iter()).chain(b.iter())).all(|v| v.is_finite()) {
+            return Err(LinearError::NotFinite(format!("the ship at {full:?}")));
+        }
+        Ok(Evaluation { rates, a, b })
+    }
+
+    fn pattern(&self) -> Vec<(usize, usize)> {
+        let pattern = <ShipModel as Model<f64, 7, 1>>::STATE_JACOBIAN;
+        (pattern.iter().copied())
+            .filter(|&(i, j)| i < 6 && j < 6)
+            .collect()
+    }
+}
+
+/// The ship linearised by the linearisation of every scene about its approach (straight ahead
+/// at U₀, the rudder amidships): the states set aside (the position and the heading), A and B
+/// on (u, v, r), the modes (surge; sway and yaw, at −1/T₁ and −1/T₂ of Nomoto's model) and the
+/// verdict. A table with bias terms (the Mariner's Y₀, N₀) is not in equilibrium there, and the
+/// linearisation says by how much.
+pub fn linearise_ship(
+    scene: &super::ShipScene,
+    model: &ShipModel,
+) -> Result<Linearisation, LinearError> {
+    let plant = ShipPlant { model };
+    let start = scene.start();
+    crate::linear::linearise(&plant, (start[..6].to_vec(), vec![start[6]]), &[])
 }

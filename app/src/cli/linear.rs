@@ -1,5 +1,6 @@
-//! `eom linear SCENE`: a catalog scene linearised about the point its `[linear]` table names
-//! (by default its initial state), or a ship scene's Nomoto models (`ship.rs`, unchanged).
+//! `eom linear SCENE`: a scene linearised about the point its `[linear]` table names (by
+//! default its initial state); a ship about its approach, with its Nomoto models beside
+//! (`ship.rs`).
 //!
 //! It prints the reduced state and what was set aside, whether the point is an equilibrium
 //! (and by how much it is not), the trim, A and B, the modes and the verdict; `--json`
@@ -7,7 +8,6 @@
 //! numbers, rows and columns in the order of `reduced_state` and `inputs`, as a control
 //! toolbox reads them) and `poles.svg`, into a folder taken as `eom run` takes one.
 
-use super::run::Usage;
 use anyhow::Result;
 use eom::linear::{Linearisation, Mode, linearise_scene};
 use eom::output::folder::{Claim, Writer};
@@ -21,16 +21,16 @@ use std::path::{Path, PathBuf};
 #[derive(clap::Args)]
 pub struct Args {
     /// A scene: a catalog scene, or a ship scene (with `[hydrodynamics]`).
-    scene: PathBuf,
+    pub scene: PathBuf,
     /// Print JSON instead of text.
     #[arg(long)]
-    json: bool,
-    /// Also write A.csv, B.csv and poles.svg into this folder (catalog scenes).
+    pub json: bool,
+    /// Also write A.csv, B.csv and poles.svg into this folder.
     #[arg(long)]
-    out: Option<PathBuf>,
+    pub out: Option<PathBuf>,
     /// Replace an earlier run in --out, or write into a folder eom did not make.
     #[arg(long)]
-    force: bool,
+    pub force: bool,
 }
 
 /// The files `--out` writes.
@@ -39,33 +39,29 @@ const FILES: [&str; 3] = ["A.csv", "B.csv", POLES];
 /// Runs `eom linear`.
 pub fn run(args: Args) -> Result<()> {
     if super::serves::linear_is_ship(&args.scene)? {
-        if args.out.is_some() {
-            return Err(Usage(
-                "eom linear on a ship scene prints its Nomoto models and writes no files; \
-                 leave out --out"
-                    .into(),
-            )
-            .into());
-        }
-        return super::ship::linear(&args.scene, args.json);
+        return super::ship::linear(&args);
     }
     let scene = Scene::load(&args.scene)?;
     let linear = linearise_scene(&scene)?;
-    if let Some(out) = &args.out {
-        let planned: Vec<String> = FILES.map(String::from).to_vec();
-        let _claim = Claim::take(out, args.force, &Writer::Whole, &planned)?;
-        write_files(out, &scene.title, &linear)?;
-    }
+    write_out(&args, &scene.title, &linear)?;
     if args.json {
-        println!(
-            "{}",
-            serde_json::to_string_pretty(&report(&scene, &linear))?
-        );
+        let report = report(&scene.title, &linear);
+        println!("{}", serde_json::to_string_pretty(&report)?);
     } else {
-        print_text(&scene, &linear);
+        print_text(&scene.title, &linear);
         if let Some(out) = &args.out {
             println!("  written to {}/: {}", out.display(), FILES.join(", "));
         }
+    }
+    Ok(())
+}
+
+/// With `--out`, A.csv, B.csv and poles.svg into a folder taken as `eom run` takes one.
+pub fn write_out(args: &Args, title: &str, linear: &Linearisation) -> Result<()> {
+    if let Some(out) = &args.out {
+        let planned: Vec<String> = FILES.map(String::from).to_vec();
+        let _claim = Claim::take(out, args.force, &Writer::Whole, &planned)?;
+        write_files(out, title, linear)?;
     }
     Ok(())
 }
@@ -97,7 +93,7 @@ fn rows(matrix: &eom::nalgebra::DMatrix<f64>) -> Value {
 }
 
 /// The JSON report.
-fn report(scene: &Scene, linear: &Linearisation) -> Value {
+pub fn report(title: &str, linear: &Linearisation) -> Value {
     let mut point = Map::new();
     for (name, value) in linear.state_names.iter().zip(&linear.state) {
         point.insert((*name).into(), json!(value));
@@ -112,7 +108,7 @@ fn report(scene: &Scene, linear: &Linearisation) -> Value {
         .map(|(name, r)| ((*name).to_owned(), json!(r)))
         .collect();
     json!({
-        "scene": scene.title,
+        "scene": title,
         "model": linear.model,
         "operating_point": point,
         "equilibrium": linear.equilibrium,
@@ -153,8 +149,9 @@ fn number(value: Option<f64>) -> String {
     value.map_or_else(|| "-".into(), |v| format!("{v:.6}"))
 }
 
-fn print_text(scene: &Scene, linear: &Linearisation) {
-    println!("{}: linearised ({})", scene.title, linear.model);
+/// The report as text.
+pub fn print_text(title: &str, linear: &Linearisation) {
+    println!("{title}: linearised ({})", linear.model);
     let point: Vec<String> = linear
         .state_names
         .iter()

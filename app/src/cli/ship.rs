@@ -21,7 +21,7 @@ use eom::scene::sweep::TableCase;
 use eom::ship::Side;
 use eom::ship::imo::Trial;
 use eom::ship::imo::{Criterion, criteria};
-use eom::ship::linear::{LinearModel, Nomoto, linearise};
+use eom::ship::linear::{LinearModel, Nomoto, linearise, linearise_ship};
 use eom::ship::manoeuvre::ManoeuvreKind;
 use eom::ship::manoeuvre::{Figures, ROW, run, trajectory_columns};
 use eom::ship::side::{deciding_figure, worse};
@@ -721,15 +721,24 @@ fn print_report(scene: &ShipScene, outcomes: &[Runs], judged: &[Criterion], out:
 }
 
 /// Runs `eom linear` on a ship scene: Nomoto's models about the straight course.
-pub fn linear(path: &Path, json: bool) -> Result<()> {
-    let scene = ShipScene::load(path)?;
+pub fn linear(args: &super::linear::Args) -> Result<()> {
+    let scene = ShipScene::load(&args.scene)?;
     let model = ShipModel::new(&scene.table)?;
     let linear = LinearModel::closed_form(&scene.table);
-    if json {
-        let report = LinearSummary::new(&scene, &model, &linear);
-        println!("{}", String::from_utf8(sorted_json(&report)?)?);
+    let linearised = linearise_ship(&scene, &model)?;
+    super::linear::write_out(args, &scene.title, &linearised)?;
+    if args.json {
+        // Every scene's report, with the ship's Nomoto block beside it.
+        let mut report = super::linear::report(&scene.title, &linearised);
+        let nomoto = serde_json::to_value(LinearSummary::new(&scene, &model, &linear))?;
+        if let (Some(report), serde_json::Value::Object(nomoto)) = (report.as_object_mut(), nomoto)
+        {
+            report.extend(nomoto);
+        }
+        println!("{}", serde_json::to_string_pretty(&report)?);
         return Ok(());
     }
+    super::linear::print_text(&scene.title, &linearised);
     let speed = scene.table.design_speed;
     println!(
         "{}: the linear model about the straight course at U₀ = {speed} m/s",
