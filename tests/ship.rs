@@ -747,8 +747,8 @@ fn the_mariners_figures_agree_with_dop853() {
 }
 
 /// The steering gear's rate limit is a kink in δ̇: a step across it is first-order accurate
-/// in where it falls. The run ends a stretch on it, so the Esso Osaka's zig-zag (35° at
-/// 2.32°/s, whose kinks fall between steps) converges at RK4's order: its figures at the
+/// in where it falls. The run ends a stretch on it, so the Esso Osaka's zig-zag (its steering
+/// gear limited to 2.32°/s, whose kinks fall between steps) converges at RK4's order: its figures at the
 /// scene's step and at half of it agree to 1e-8 (stepping across the kinks, they moved by
 /// 2.6e-4 s and 1e-5°).
 #[test]
