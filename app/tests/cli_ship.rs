@@ -73,9 +73,16 @@ fn the_mariner_runs_its_manoeuvres_and_is_judged() {
             "initial_turning",
             "first_overshoot_10_10",
             "second_overshoot_10_10",
-            "first_overshoot_20_20"
+            "first_overshoot_20_20",
+            "track_reach"
         ]
     );
+    // Stopping is listed, not judged: the Mariner's table has no propulsion model.
+    let (stopping, imo) = imo.split_last().unwrap();
+    assert_eq!(stopping["judged"], false, "{stopping}");
+    assert!(stopping["pass"].is_null() && stopping["value"].is_null());
+    let why = stopping["not_judged_because"].as_str().unwrap();
+    assert!(why.contains("no propulsion model"), "{why}");
     for criterion in imo {
         assert_eq!(criterion["judged"], true, "{criterion}");
         let pass = number(&criterion["value"]) <= number(&criterion["limit"]);

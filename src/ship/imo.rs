@@ -9,6 +9,7 @@
 //! | first overshoot, 10°/10° | 10°/10° zig-zag | 10° if L/V < 10 s; 20° if L/V ≥ 30 s; (5 + ½ L/V)° between |
 //! | second overshoot, 10°/10° | 10°/10° zig-zag | 25° if L/V < 10 s; 40° if L/V ≥ 30 s; (17.5 + 0.75 L/V)° between |
 //! | first overshoot, 20°/20° | 20°/20° zig-zag | ≤ 25° |
+//! | track reach | full astern stop from the test speed | ≤ 15 L (not judged: no scene has a propulsion model yet) |
 //!
 //! V is the test speed, the scene's design speed U₀. A manoeuvre run to both sides (the
 //! default for a turning circle and a zig-zag: the resolution asks for the turning circle "to
@@ -30,7 +31,8 @@ pub type Trial<'a> = (&'a Manoeuvre, Vec<(Option<Side>, &'a Figures)>);
 #[derive(Debug, Clone, PartialEq)]
 pub struct Criterion {
     /// Its key in the summary: `advance`, `tactical_diameter`, `initial_turning`,
-    /// `first_overshoot_10_10`, `second_overshoot_10_10`, `first_overshoot_20_20`.
+    /// `first_overshoot_10_10`, `second_overshoot_10_10`, `first_overshoot_20_20`,
+    /// `track_reach`.
     pub name: &'static str,
     /// The manoeuvre it is read from.
     pub manoeuvre: String,
@@ -45,6 +47,8 @@ pub struct Criterion {
     pub sides: Vec<(Side, Option<f64>)>,
     /// The side `value` is of, for a manoeuvre run to both or to one.
     pub side: Option<Side>,
+    /// Why it is not judged, where that is not a missing figure of a manoeuvre that ran.
+    pub not_judged_because: Option<&'static str>,
 }
 
 impl Criterion {
@@ -125,6 +129,7 @@ pub fn criteria(length: f64, speed: f64, runs: &[Trial]) -> Vec<Criterion> {
             unit,
             sides,
             side,
+            not_judged_because: None,
         });
     };
     let turn = runs
@@ -178,8 +183,24 @@ pub fn criteria(length: f64, speed: f64, runs: &[Trial]) -> Vec<Criterion> {
             "deg",
         );
     }
+    // The stopping ability: the track reach of a full astern stop from the test speed. A ship
+    // table without a propulsion model cannot go astern, so the criterion is listed as not
+    // judged rather than left out.
+    judged.push(Criterion {
+        name: "track_reach",
+        manoeuvre: "crash_stop".to_owned(),
+        value: None,
+        limit: 15.0 * length,
+        unit: "m",
+        sides: Vec::new(),
+        side: None,
+        not_judged_because: Some(NO_PROPULSION),
+    });
     judged
 }
+
+/// Why the stopping criterion is not judged.
+pub const NO_PROPULSION: &str = "the scene gives no propulsion model, so no crash stop can be run";
 
 #[cfg(test)]
 mod tests {

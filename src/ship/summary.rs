@@ -301,6 +301,9 @@ pub struct CriterionSummary {
     /// Each side's figure, for a manoeuvre run to both; `value` is the worse.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub sides: Option<BTreeMap<&'static str, Option<f64>>>,
+    /// Why it is not judged, where no manoeuvre of the scene could give its figure.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub not_judged_because: Option<&'static str>,
 }
 
 impl ModelSummary {
@@ -481,6 +484,7 @@ impl CriterionSummary {
                     .map(|(side, value)| (side.name(), *value))
                     .collect()
             }),
+            not_judged_because: criterion.not_judged_because,
         }
     }
 }

@@ -710,10 +710,14 @@ fn print_report(scene: &ShipScene, outcomes: &[Runs], judged: &[Criterion], out:
                     c.limit,
                     if pass { "pass" } else { "FAIL" }
                 ),
-                _ => println!(
-                    "    {:<24} not judged: {} did not give the figure (see its notes){sides}",
-                    c.name, c.manoeuvre
-                ),
+                _ => match c.not_judged_because {
+                    Some(why) => println!("    {:<24} not judged: {why}", c.name),
+                    None => println!(
+                        "    {:<24} not judged: {} did not give the figure (see its notes)\
+                         {sides}",
+                        c.name, c.manoeuvre
+                    ),
+                },
             }
         }
     }
