@@ -305,6 +305,21 @@ fn eom_linear_says_the_esso_osaka_is_course_unstable() {
         .iter()
         .filter(|m| m["re"].as_f64().unwrap() > 0.0 && m["name"] == "sway and yaw");
     assert_eq!(growing.count(), 1, "{linear}");
+    // --out writes A and B on the reduced state (u, v, r) and the poles, as for any scene.
+    let out = folder("linear").join("out");
+    let out_arg = out.to_str().unwrap();
+    succeeded(&eom(&[
+        "linear",
+        &scene_arg("mariner.toml"),
+        "--out",
+        out_arg,
+    ]));
+    let a = std::fs::read_to_string(out.join("A.csv")).unwrap();
+    let b = std::fs::read_to_string(out.join("B.csv")).unwrap();
+    assert_eq!(a.lines().count(), 3, "{a}");
+    assert!(a.lines().all(|l| l.split(',').count() == 3), "{a}");
+    assert_eq!(b.lines().count(), 3, "{b}");
+    assert!(out.join("poles.svg").exists());
     let text = succeeded(&eom(&["linear", &scene_arg("mariner.toml")]));
     assert!(text.contains(": stable"), "{text}");
 }
