@@ -52,6 +52,8 @@ pub mod energy;
 pub mod generic;
 mod inertia;
 pub mod integrate;
+#[cfg(feature = "ship")]
+mod interpreter;
 pub mod linear;
 pub mod mass;
 pub mod models;
