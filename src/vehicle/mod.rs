@@ -96,7 +96,7 @@ impl VehicleError {
                 )
                 | Table::ListedTwice(name)
                 | Table::SameTerm(_, name, _) => entry(name),
-                Table::AsymmetricAddedMass { mirror, .. } => entry(mirror),
+                Table::AsymmetricAddedMass { name, .. } => entry(name),
                 Table::NotPositiveDefinite { .. } => "hydrodynamics.added_mass".into(),
                 _ => "hydrodynamics".into(),
             },
