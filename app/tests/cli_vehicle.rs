@@ -61,7 +61,7 @@ fn remus_runs_its_rudder_steps_into_a_folder() {
     assert!(header.starts_with("t[s],u[m/s],v[m/s],w[m/s]") && header.contains("dr[rad]"));
     assert!(header.ends_with("psi[rad],kinetic_energy[J]"), "{header}");
     assert_eq!(lines.count(), 801);
-    for plot in ["track.svg", "heading.svg"] {
+    for plot in ["track.svg", "profile.svg", "attitude.svg", "fins.svg"] {
         assert!(out.join("rudder_4").join(plot).is_file(), "{plot}");
     }
 }

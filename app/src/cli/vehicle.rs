@@ -1,11 +1,12 @@
 //! Vehicle scenes: `eom run SCENE` for a scene with `[model] family = "vehicle"` and
 //! `[hydrodynamics]`.
 //!
-//! Each `[[manoeuvre]]` runs from the cruise into its own folder (`trajectory.csv`, the plan
-//! track and the heading with the rudder as SVG), and `summary.json` beside them holds the
-//! model that ran, the method, the folded table against its added mass per coefficient, the
-//! cruise against its closed forms, and each manoeuvre's figures with how far they move when
-//! the run is refined (the types of `eom::vehicle::summary`). Ctrl-C ends the run at its next
+//! Each `[[manoeuvre]]` runs from the cruise into its own folder (`trajectory.csv`; as SVG the
+//! track in plan, the profile, the attitude and the fins with their commands), and
+//! `summary.json` beside them holds the model that ran, the method, the folded table against
+//! its added mass per coefficient, the cruise against its closed forms, and each manoeuvre's
+//! figures with how far they move when the run is refined (the types of
+//! `eom::vehicle::summary`). Ctrl-C ends the run at its next
 //! step, keeping the manoeuvres finished before it.
 
 use super::run::{Interrupted, signal_received};
@@ -22,7 +23,7 @@ use eom::vehicle::summary::{
     largest_difference,
 };
 use eom::vehicle::{VehicleError, VehicleScene, format_folded};
-use eom_cli::plots::ship::{Hull, ManoeuvrePlot, write_manoeuvre_plots};
+use eom_cli::plots::vehicle::{VehiclePlot, write_vehicle_plots};
 use std::collections::BTreeMap;
 use std::path::Path;
 
@@ -143,7 +144,7 @@ fn run_manoeuvre(
     Ok(Outcome { steps, summary })
 }
 
-/// The plan track (north, east) and the heading with the rudder and its command.
+/// The track in plan, the profile, the attitude and the fins.
 fn write_plots(
     folder: &Path,
     scene: &VehicleScene,
@@ -151,29 +152,19 @@ fn write_plots(
     columns: &Columns,
 ) -> Result<()> {
     // The columns in ROW's order.
-    let [north, east, rudder, command, psi] = [6, 7, 13, 15, 19].map(|k| &columns.state[k]);
-    let degrees = |column: &[f64]| -> Vec<f64> { column.iter().map(|x| x.to_degrees()).collect() };
+    let column = |name: &str| -> &[f64] {
+        let index = ROW.iter().position(|r| *r == name).unwrap_or(0);
+        &columns.state[index]
+    };
     let title = format!("{} — {}", scene.title, manoeuvre.name);
-    let heading = degrees(psi);
-    let (rudder, command) = (degrees(rudder), degrees(command));
-    let plot = ManoeuvrePlot {
+    let plot = VehiclePlot {
         title: &title,
         time: &columns.time,
-        north,
-        east,
-        heading_change_deg: &heading,
-        heading_rad: psi,
-        rudder_deg: &rudder,
-        command_deg: &command,
-        marks: &[],
-        // No outline drawn: the scene gives no hull's shape.
-        hull: Hull {
-            length: 0.0,
-            beam: 0.0,
-            beam_assumed: false,
-        },
+        position: ["x", "y", "z"].map(column),
+        attitude: ["phi", "theta", "psi"].map(column),
+        fins: ["dr", "ds", "dr_command", "ds_command"].map(column),
     };
-    write_manoeuvre_plots(folder, &plot)?;
+    write_vehicle_plots(folder, &plot)?;
     Ok(())
 }
 
