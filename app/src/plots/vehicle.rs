@@ -52,8 +52,13 @@ pub fn write_vehicle_plots(dir: &Path, plot: &VehiclePlot) -> Result<Vec<PathBuf
     let profile = emit(dir, "profile.svg", |svg| {
         draw_profile(svg, &title, (x, y, z))
     })?;
+    // The attitude plot reads degrees, and makes them continuous.
+    let degrees = plot
+        .attitude
+        .map(|c| c.iter().map(|x| x.to_degrees()).collect::<Vec<f64>>());
     let attitude = emit(dir, "attitude.svg", |svg| {
-        draw_attitude(svg, &title, plot.time, plot.attitude)
+        let [roll, pitch, yaw] = &degrees;
+        draw_attitude(svg, &title, plot.time, [roll, pitch, yaw])
     })?;
     let fins = emit(dir, "fins.svg", |svg| draw_fins(svg, &title, plot))?;
     Ok(vec![track, profile, attitude, fins])
