@@ -16,6 +16,7 @@
 //! | exact solutions and invariants for judging runs | [`reference`](mod@reference), [`energy`], [`elliptic`] |
 //! | the swing test: radius of gyration from a pendulum's period | [`swing`] |
 //! | ship manoeuvring: a hydrodynamic table on 4.46, the rudder, the standard manoeuvres, IMO criteria, Nomoto (feature `ship`) | `ship` |
+//! | underwater vehicles in six degrees of freedom on their own tables: the model, fins, step manoeuvres (feature `ship`) | `vehicle` |
 //! | what a run writes: its output folder, the trajectory (CSV) and the summary (JSON) | [`output`] |
 //!
 //! The `eom` command is a crate of its own (`eom-cli`): its plots, its 3-D view and its
@@ -52,6 +53,8 @@ pub mod energy;
 pub mod generic;
 mod inertia;
 pub mod integrate;
+#[cfg(feature = "ship")]
+mod interpreter;
 pub mod linear;
 pub mod mass;
 pub mod models;
@@ -65,6 +68,8 @@ pub mod ship;
 mod short;
 pub mod swing;
 pub mod validate;
+#[cfg(feature = "ship")]
+pub mod vehicle;
 
 /// The nalgebra that eom's models, states and integrators are written in, so that a user's
 /// vectors are of the same version without choosing it by hand.

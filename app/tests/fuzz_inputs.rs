@@ -20,10 +20,11 @@
 use eom::mass::{BodyFile, BodyFileError, Mesh, MeshMass};
 use eom::models::{Family, Kinematics, Symmetry};
 use eom::run::{Row, Sink};
-use eom::scene::{Problem, Scene, SceneError, sweep};
+use eom::scene::{AnyScene, Problem, Scene, SceneError, sweep};
 use eom::ship::linear::LinearModel;
 use eom::ship::manoeuvre::{Manoeuvre, run as run_manoeuvre};
 use eom::ship::{ShipModel, ShipScene};
+use eom::vehicle::manoeuvre::{VehicleManoeuvre, run as run_vehicle};
 use eom_cli::eval::evaluate;
 use eom_test_support::cli::root;
 use nalgebra::Vector3;
@@ -45,6 +46,9 @@ const EVAL_CASES: u32 = 3000;
 const BODY_CASES: u32 = 2000;
 const STL_CASES: u32 = 2000;
 const BYTES_CASES: u32 = 1000;
+/// Fewer: a vehicle scene that reads has its model derived and proved (a few tenths of a
+/// second each).
+const VEHICLE_CASES: u32 = 120;
 
 fn config(cases: u32) -> Config {
     let mut config = Config::with_cases(
@@ -1474,6 +1478,66 @@ fn mutated_scenes_never_panic() {
     fuzz("scenes", SCENE_CASES, strategy, |(m, run), tally| {
         scene_text(&m.apply(&seeds, Format::Toml), run, tally)
     });
+}
+
+/// A vehicle scene's text through the one reader: where it reads, its model was built and
+/// proved; for `run`, the cruise found and two seconds of its first manoeuvre run.
+fn vehicle_scene_text(text: &str, run: bool, tally: &mut Tally) -> Result<(), TestCaseError> {
+    tally.count("input");
+    remember(text.as_bytes());
+    let base = root().join("scenes");
+    let read = guarded("AnyScene::parse", text, || {
+        AnyScene::parse(text, "fuzz.toml", &base)
+    })?;
+    let scene = match read {
+        Ok(AnyScene::Vehicle(scene)) => *scene,
+        Ok(_) => return Ok(()),
+        Err(error) => return check_scene_error(&error, text, tally),
+    };
+    tally.count("vehicle scene read");
+    if run {
+        let first = &scene.manoeuvres[0];
+        let short = VehicleManoeuvre {
+            duration: first.duration.min(2.0),
+            ..first.clone()
+        };
+        // At most 10⁴ steps and rows: the run is for panics, not for figures.
+        let mut stepper = scene.stepper.clone();
+        stepper.step = stepper.step.map(|step| step.max(short.duration / 1e4));
+        let every = scene.every.max(short.duration / 1e4);
+        let result = guarded("vehicle run", text, || {
+            let start = scene.start()?;
+            run_vehicle(
+                &scene.model,
+                &scene.fins,
+                &short,
+                start,
+                (&stepper, every),
+                |_| true,
+            )
+        })?;
+        match result {
+            Ok(_) => tally.count("vehicle run ok"),
+            Err(error) if !error.to_string().trim().is_empty() => {
+                tally.count("vehicle run stopped")
+            }
+            Err(_) => return Err(failure("a vehicle run", text, "an empty error")),
+        }
+    }
+    Ok(())
+}
+
+#[test]
+fn mutated_vehicle_scenes_never_panic() {
+    let text = std::fs::read_to_string(root().join("scenes/remus100.toml")).unwrap();
+    let seeds = vec![toml_seed(text)];
+    let strategy = (mutation(), prop::bool::weighted(0.3));
+    fuzz(
+        "vehicle scenes",
+        VEHICLE_CASES,
+        strategy,
+        |(m, run), tally| vehicle_scene_text(&m.apply(&seeds, Format::Toml), run, tally),
+    );
 }
 
 // ---------------------------------------------------------------------------------------------

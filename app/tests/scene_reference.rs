@@ -9,6 +9,7 @@
 use eom::scene::file::SceneFile;
 use eom::scene::reference::{Key, REGENERATE, SceneFamily, keys_of, markdown, template};
 use eom::ship::scene::ShipSceneFile;
+use eom::vehicle::scene::VehicleSceneFile;
 use eom_test_support::cli::{eom, folder, root};
 use eom_test_support::schema;
 use std::collections::BTreeSet;
@@ -123,6 +124,7 @@ fn every_key_in_the_reference_is_read_with_its_example() {
             let table = toml::Value::Table(with_example(family, key));
             let read = match family {
                 SceneFamily::Ship => table.try_into::<ShipSceneFile>().map(drop),
+                SceneFamily::Vehicle => table.try_into::<VehicleSceneFile>().map(drop),
                 SceneFamily::Catalog(_) => table.try_into::<SceneFile>().map(drop),
             };
             assert!(
@@ -150,7 +152,7 @@ fn reference_paths(families: &[SceneFamily]) -> BTreeSet<String> {
 fn every_key_the_reader_accepts_is_in_the_reference() {
     let catalog: Vec<SceneFamily> = SceneFamily::ALL
         .into_iter()
-        .filter(|f| *f != SceneFamily::Ship)
+        .filter(|f| !matches!(f, SceneFamily::Ship | SceneFamily::Vehicle))
         .collect();
     let walked = schema::keys::<SceneFile>();
     assert!(walked.contains("integrator.step") && walked.contains("sweep.*"));
@@ -158,6 +160,13 @@ fn every_key_the_reader_accepts_is_in_the_reference() {
     let walked = schema::keys::<ShipSceneFile>();
     assert!(walked.contains("manoeuvre[].kind"));
     assert_eq!(walked, reference_paths(&[SceneFamily::Ship]), "ship scenes");
+    let walked = schema::keys::<VehicleSceneFile>();
+    assert!(walked.contains("hydrodynamics.added_mass.*"));
+    assert_eq!(
+        walked,
+        reference_paths(&[SceneFamily::Vehicle]),
+        "vehicle scenes"
+    );
 }
 
 #[test]

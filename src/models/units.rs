@@ -61,6 +61,8 @@ fn base_unit(name: &str) -> Option<&'static str> {
         "x" | "y" | "z" => Some("m"),
         // delta: a rudder's angle; command: the angle it is commanded to.
         "phi" | "theta" | "psi" | "delta" | "command" => Some("rad"),
+        // A vehicle's rudder and stern planes, and their commands.
+        "dr" | "ds" | "dr_command" | "ds_command" => Some("rad"),
         // distance: the distance run along the track.
         "distance" => Some("m"),
         "q0" | "q1" | "q2" | "q3" => Some("-"),

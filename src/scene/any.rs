@@ -1,6 +1,7 @@
-//! A scene of either kind, read by one entry: a catalog body's, whose model is a variant the
+//! A scene of any kind, read by one entry: a catalog body's, whose model is a variant the
 //! build generated, or one whose model the scene's own table defines (a ship's 4.46 on its
-//! hydrodynamic table, derived and proved when the scene is read).
+//! hydrodynamic table, or a vehicle's six equations about its table's origin, derived and
+//! proved when the scene is read).
 //!
 //! Both kinds are read by the same reader ([`super::read_as`]: TOML through serde, every table
 //! closed, errors by key path), their method checked by the same checker
@@ -13,8 +14,18 @@ use super::{Problem, Scene, SceneError};
 use std::path::Path;
 use toml::Table;
 
-/// The table whose presence says that the scene defines its own model: a ship's 4.46 terms.
+/// The table whose presence says that the scene defines its own model: a ship's 4.46 terms
+/// or a vehicle's six equations.
 const MODEL_TABLE: &str = "hydrodynamics";
+
+/// The family that says a scene with [`MODEL_TABLE`] is a vehicle's (a ship's otherwise).
+const VEHICLE_FAMILY: &str = "vehicle";
+
+/// Whether a scene's tables say it is a vehicle's: `model.family = "vehicle"`.
+fn is_vehicle(table: &Table) -> bool {
+    (table.get("model").and_then(|m| m.get("family"))).and_then(|f| f.as_str())
+        == Some(VEHICLE_FAMILY)
+}
 
 /// A checked scene, of either kind.
 #[derive(Debug, Clone)]
@@ -24,6 +35,9 @@ pub enum AnyScene {
     /// A ship on its own hydrodynamic table, with its manoeuvres.
     #[cfg(feature = "ship")]
     Ship(Box<crate::ship::ShipScene>),
+    /// An underwater vehicle on its own hydrodynamic table, with its manoeuvres.
+    #[cfg(feature = "ship")]
+    Vehicle(Box<crate::vehicle::VehicleScene>),
 }
 
 impl AnyScene {
@@ -42,6 +56,9 @@ impl AnyScene {
         let table: Table = text.parse().map_err(|e: toml::de::Error| {
             SceneError::new(name, "", Problem::Syntax(e.to_string()))
         })?;
+        if table.contains_key(MODEL_TABLE) && is_vehicle(&table) {
+            return Self::vehicle(|| super::read_as(text, name), name);
+        }
         if table.contains_key(MODEL_TABLE) {
             return Self::defined_by_table(|| super::read_as(text, name), name);
         }
@@ -50,6 +67,9 @@ impl AnyScene {
 
     /// Checks a scene's tables: one case of a sweep ([`super::sweep::TableCase`]).
     pub fn from_table(table: Table, name: &str, base: &Path) -> Result<Self, SceneError> {
+        if table.contains_key(MODEL_TABLE) && is_vehicle(&table) {
+            return Self::vehicle(|| super::sweep::read_table(table, name), name);
+        }
         if table.contains_key(MODEL_TABLE) {
             return Self::defined_by_table(|| super::sweep::read_table(table, name), name);
         }
@@ -69,6 +89,24 @@ impl AnyScene {
         Ok(AnyScene::Ship(Box::new(scene)))
     }
 
+    /// The vehicle scene whose tables `read` reads.
+    #[cfg(feature = "ship")]
+    fn vehicle(
+        read: impl FnOnce() -> Result<crate::vehicle::scene::VehicleSceneFile, SceneError>,
+        name: &str,
+    ) -> Result<Self, SceneError> {
+        let scene = crate::vehicle::VehicleScene::from_file(&read()?, name)?;
+        Ok(AnyScene::Vehicle(Box::new(scene)))
+    }
+
+    #[cfg(not(feature = "ship"))]
+    fn vehicle<T>(
+        read: impl FnOnce() -> Result<T, SceneError>,
+        name: &str,
+    ) -> Result<Self, SceneError> {
+        Self::defined_by_table(read, name)
+    }
+
     #[cfg(not(feature = "ship"))]
     fn defined_by_table<T>(
         _read: impl FnOnce() -> Result<T, SceneError>,
@@ -78,8 +116,9 @@ impl AnyScene {
             name,
             MODEL_TABLE,
             Problem::Invalid(
-                "a scene whose table defines its model (a ship's 4.46) needs eom's feature \
-                 `ship`, which builds it with the symbolic engine"
+                "a scene whose table defines its model (a ship's 4.46, a vehicle's six \
+                 equations) needs eom's feature `ship`, which builds it with the symbolic \
+                 engine"
                     .into(),
             ),
         ))
@@ -91,6 +130,8 @@ impl AnyScene {
             AnyScene::Catalog(scene) => &scene.title,
             #[cfg(feature = "ship")]
             AnyScene::Ship(scene) => &scene.title,
+            #[cfg(feature = "ship")]
+            AnyScene::Vehicle(scene) => &scene.title,
         }
     }
 }

@@ -1,13 +1,10 @@
 //! The ship model: 4.46 with a table's terms, built and proved by `eom-codegen` when the
 //! scene is read, and evaluated here.
 //!
-//! What runs is the proved straight-line program itself ([`eom_codegen::emit::Program`]):
-//! the same arena of shared nodes the emitter writes as Rust for a catalog model, with the
-//! same functions (the right-hand side, its Jacobians ∂f/∂x and ∂f/∂u, the kinetic energy),
-//! each folded back and proved against the system and its exact derivative when the scene is
-//! read, as the catalog's are when eom is built. A call evaluates the nodes its function
-//! needs, once each, in order; the hoisted coefficients are computed once per table. It is
-//! generic over simba's `SimdRealField`, so it runs on f64, on SIMD lanes and on dual numbers.
+//! What runs is the proved straight-line program itself, through the one interpreter of
+//! scene-defined models ([`crate::interpreter`]): the right-hand side, its Jacobians ∂f/∂x and
+//! ∂f/∂u, the kinetic energy, each folded back and proved against the system and its exact
+//! derivative when the scene is read, as the catalog's are when eom is built.
 //!
 //! In the prime system the forces scale with the speed U = √(u² + v²), which the program takes
 //! as an input beside δ̇: this model computes U from the state, and its ∂f/∂x adds the chain
@@ -15,12 +12,10 @@
 
 use super::ShipError;
 use super::table::ShipTable;
+use crate::interpreter::{Interpreter, Plan, coefficient_values};
 use crate::models::Model;
-use eom_codegen::emit::program::{Function, Node, Program};
 use eom_codegen::emit::{Operations, prove_with_jacobians};
-use eom_codegen::model::System;
 use eom_codegen::model::ship::{ADDED_MASS, PRIME_SCALES, ShipSpec, Units, ship};
-use eom_codegen::symbolic::Expr;
 use simba::simd::SimdRealField;
 use std::collections::BTreeMap;
 
@@ -48,26 +43,10 @@ const STATE_JACOBIAN: [(usize, usize); 19] = [
 /// δ̇ is the rudder's rate itself.
 const INPUT_JACOBIAN: [(usize, usize); 1] = [(6, 0)];
 
-/// One node of the program, with its operands resolved to positions.
-#[derive(Debug, Clone, Copy, PartialEq)]
-enum Op {
-    State(usize),
-    DeltaRate,
-    Speed,
-    Value(f64),
-    Sin(usize),
-    Cos(usize),
-    Recip(usize),
-    Neg(usize),
-    Add(usize, usize),
-    Sub(usize, usize),
-    Mul(usize, usize),
-}
-
 /// A ship's proved program, ready to evaluate.
 #[derive(Debug, Clone)]
 pub struct ShipModel {
-    ops: Vec<Op>,
+    program: Interpreter,
     rhs: Plan,
     kinetic_energy: Plan,
     state_jacobian: Plan,
@@ -79,31 +58,6 @@ pub struct ShipModel {
     speed_input: Option<usize>,
     operations: Operations,
     terms: usize,
-}
-
-/// What one function of the program evaluates: the nodes its outputs need, in the arena's
-/// order (every operand before its user), and its outputs.
-#[derive(Debug, Clone, PartialEq)]
-struct Plan {
-    needed: Vec<usize>,
-    outputs: Vec<usize>,
-}
-
-impl Plan {
-    /// The nodes `function`'s outputs reach through their operands.
-    fn of(program: &Program, function: &Function) -> Self {
-        let mut needed = vec![false; program.nodes.len()];
-        let mut pending: Vec<usize> = function.outputs.iter().map(|o| o.id.index()).collect();
-        while let Some(index) = pending.pop() {
-            if !std::mem::replace(&mut needed[index], true) {
-                pending.extend(program.nodes[index].children().iter().map(|c| c.index()));
-            }
-        }
-        Plan {
-            needed: (0..needed.len()).filter(|&i| needed[i]).collect(),
-            outputs: function.outputs.iter().map(|o| o.id.index()).collect(),
-        }
-    }
 }
 
 impl ShipModel {
@@ -119,10 +73,15 @@ impl ShipModel {
         let program = prove_with_jacobians(&system)?;
         let values = parameter_values(&spec, table);
         let coefficients = coefficient_values(&system, &program, &values);
-        let mut ops = Vec::with_capacity(program.nodes.len());
-        for node in &program.nodes {
-            ops.push(resolve(node, &coefficients)?);
-        }
+        // The variables in `evaluate`'s order: the state, δ̇, U.
+        let position = |name: &str| match name {
+            "delta_rate" => Some(7),
+            "U" => Some(8),
+            _ => STATE.iter().position(|s| *s == name),
+        };
+        let interpreter = Interpreter::new(&program, &coefficients, position).map_err(|name| {
+            ShipError::invalid("hydrodynamics", format!("the program reads `{name}`"))
+        })?;
         let built = |what: &str| ShipError::invalid("hydrodynamics", format!("no {what}"));
         let jacobians = (program.jacobians.as_ref()).ok_or_else(|| built("Jacobians"))?;
         let energy = (program.kinetic_energy.as_ref()).ok_or_else(|| built("kinetic energy"))?;
@@ -136,35 +95,23 @@ impl ShipModel {
             speed_input: system.inputs.iter().position(|i| *i == "U"),
             operations: program.operations(&program.rhs),
             terms: spec.terms.len(),
-            ops,
+            program: interpreter,
         })
     }
 
     /// The outputs of `plan` at `state` with the rudder moving at `delta_rate`.
-    fn evaluate<T: SimdRealField + Copy>(
+    fn evaluate<'a, T: SimdRealField + Copy>(
         &self,
-        plan: &Plan,
+        plan: &'a Plan,
         state: &[T; 7],
         delta_rate: T,
-    ) -> impl Iterator<Item = T> {
+    ) -> impl Iterator<Item = T> + use<'a, T> {
         let speed = (state[0] * state[0] + state[1] * state[1]).simd_sqrt();
-        let mut values: Vec<T> = vec![T::zero(); self.ops.len()];
-        for &index in &plan.needed {
-            values[index] = match self.ops[index] {
-                Op::State(i) => state[i],
-                Op::DeltaRate => delta_rate,
-                Op::Speed => speed,
-                Op::Value(x) => T::from_subset(&x),
-                Op::Sin(a) => eom_kernel::sin_cos([values[a]])[0].0,
-                Op::Cos(a) => eom_kernel::sin_cos([values[a]])[0].1,
-                Op::Recip(a) => T::one() / values[a],
-                Op::Neg(a) => -values[a],
-                Op::Add(a, b) => values[a] + values[b],
-                Op::Sub(a, b) => values[a] - values[b],
-                Op::Mul(a, b) => values[a] * values[b],
-            };
-        }
-        plan.outputs.iter().map(move |&i| values[i])
+        let mut variables = [T::zero(); 9];
+        variables[..7].copy_from_slice(state);
+        variables[7] = delta_rate;
+        variables[8] = speed;
+        self.program.evaluate(plan, &variables)
     }
 
     /// ∂f/∂x and ∂f/∂δ̇ of the model, dense: the proved Jacobian programs scattered by their
@@ -231,28 +178,6 @@ fn parameter_values(spec: &ShipSpec, table: &ShipTable) -> BTreeMap<String, f64>
     values
 }
 
-/// The hoisted coefficients, each computed once from the parameters (and the reciprocals of
-/// parameter polynomials, computed first).
-fn coefficient_values(
-    system: &System,
-    program: &Program,
-    parameters: &BTreeMap<String, f64>,
-) -> Vec<f64> {
-    let mut known = parameters.clone();
-    for reciprocal in &system.reciprocals {
-        let of = reciprocal
-            .of
-            .eval(&|s| known.get(s).copied().unwrap_or(f64::NAN));
-        known.insert(reciprocal.symbol.clone(), 1.0 / of);
-    }
-    let lookup = |s: &str| known.get(s).copied().unwrap_or(f64::NAN);
-    program
-        .coefficients
-        .iter()
-        .map(|c| c.value.eval(&lookup))
-        .collect()
-}
-
 /// The ship as a model like the catalog's: its state and input, the proved program as `rhs`,
 /// its proved Jacobians, and the rigid body's kinetic energy.
 impl<T: SimdRealField + Copy> Model<T, 7, 1> for ShipModel {
@@ -284,25 +209,4 @@ impl<T: SimdRealField + Copy> Model<T, 7, 1> for ShipModel {
     fn input_jacobian(&self, state: &[T; 7], input: &[T; 1]) -> [[T; 1]; 7] {
         self.jacobians(state, input[0]).1
     }
-}
-
-fn resolve(node: &Node, coefficients: &[f64]) -> Result<Op, ShipError> {
-    Ok(match node {
-        Node::Variable(name) => match name.as_str() {
-            "delta_rate" => Op::DeltaRate,
-            "U" => Op::Speed,
-            _ => Op::State(STATE.iter().position(|s| s == name).ok_or_else(|| {
-                ShipError::invalid("hydrodynamics", format!("the program reads `{name}`"))
-            })?),
-        },
-        Node::Coefficient(i) => Op::Value(coefficients[*i]),
-        Node::Constant(c) => Op::Value(Expr::constant(c.clone()).eval(&|_| f64::NAN)),
-        Node::Sin(a) => Op::Sin(a.index()),
-        Node::Cos(a) => Op::Cos(a.index()),
-        Node::Recip(a) => Op::Recip(a.index()),
-        Node::Neg(a) => Op::Neg(a.index()),
-        Node::Add(a, b) => Op::Add(a.index(), b.index()),
-        Node::Sub(a, b) => Op::Sub(a.index(), b.index()),
-        Node::Mul(a, b) => Op::Mul(a.index(), b.index()),
-    })
 }

@@ -14,6 +14,7 @@ mod ship;
 mod swing;
 mod tradeoff;
 mod values;
+mod vehicle;
 mod view;
 
 use clap::Subcommand;

@@ -26,6 +26,7 @@ use eom::run::{Report, Row, RunError, Sink, run_reporting};
 use eom::scene::sweep::{TableCase, is_swept, parse_shard, shard_tables};
 use eom::scene::{AnyScene, Body, Problem, Scene, SceneError};
 use eom::ship::ShipScene;
+use eom::vehicle::VehicleScene;
 use eom_cli::plots::PLOT_FILES;
 use eom_cli::view::VIEW_FILE;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
@@ -204,11 +205,28 @@ fn execute(text: &str, name: &str, base: &Path, out: &Path, options: Options) ->
         .collect::<Result<_, SceneError>>()?;
     let mut scenes: Vec<(TableCase, Scene)> = Vec::new();
     let mut ships: Vec<(TableCase, ShipScene)> = Vec::new();
+    let mut vehicles: Vec<VehicleScene> = Vec::new();
     for (case, scene) in cases {
         match scene {
             AnyScene::Catalog(scene) => scenes.push((case, *scene)),
             AnyScene::Ship(scene) => ships.push((case, *scene)),
+            AnyScene::Vehicle(scene) => vehicles.push(*scene),
         }
+    }
+    if let Some(scene) = vehicles.first() {
+        if swept {
+            let message = format!("{name}: a vehicle scene does not take a [sweep] yet");
+            return Err(Usage(message).into());
+        }
+        let rows: f64 = (scene.manoeuvres.iter())
+            .map(|m| m.duration / scene.every)
+            .sum();
+        refuse_large_output(rows * VEHICLE_ROW_BYTES, options)?;
+        let planned: Vec<String> = (scene.manoeuvres.iter().map(|m| m.name.clone()))
+            .chain(["summary.json".to_owned()])
+            .collect();
+        let _claim = Claim::take(out, options.force, &Writer::Whole, &planned)?;
+        return super::vehicle::execute(scene, out);
     }
     if !ships.is_empty() {
         return execute_ship(ships, text, name, out, options, swept);
@@ -299,6 +317,8 @@ fn writer_of(name: &str, text: &str, shard: Option<(usize, usize)>) -> Writer {
 const NUMBER_BYTES: f64 = 21.0;
 /// Bytes per row of a ship's trajectory: ten numbers.
 const SHIP_ROW_BYTES: f64 = 10.0 * NUMBER_BYTES;
+/// Bytes per row of a vehicle's trajectory: twenty-two numbers.
+const VEHICLE_ROW_BYTES: f64 = 22.0 * NUMBER_BYTES;
 
 /// About how many bytes a scene's trajectory.csv takes.
 fn trajectory_bytes(scene: &Scene) -> f64 {

@@ -11,6 +11,8 @@ use std::path::Path;
 enum Kind {
     /// A scene with `[hydrodynamics]`: a ship on its own table.
     Ship,
+    /// A scene with `[hydrodynamics]` and `family = "vehicle"`: a vehicle on its own table.
+    Vehicle,
     /// A catalog scene, with or without a `[sweep]`.
     Catalog { swept: bool },
 }
@@ -27,6 +29,7 @@ fn read(path: &Path) -> Result<(String, Kind)> {
     let base = path.parent().unwrap_or(Path::new("."));
     let kind = match AnyScene::parse(&text, &name, base)? {
         AnyScene::Ship(_) => Kind::Ship,
+        AnyScene::Vehicle(_) => Kind::Vehicle,
         AnyScene::Catalog(_) => Kind::Catalog { swept: false },
     };
     Ok((text, kind))
@@ -46,6 +49,12 @@ pub fn linear_is_ship(path: &Path) -> Result<bool> {
     let (text, kind) = read(path)?;
     match kind {
         Kind::Ship => Ok(true),
+        Kind::Vehicle => Err(Usage(format!(
+            "eom linear serves catalog and ship scenes; {} is a vehicle scene, whose \
+             linearisation is not there yet",
+            path.display()
+        ))
+        .into()),
         Kind::Catalog { swept: false } => Ok(false),
         Kind::Catalog { swept: true } => Err(Usage(format!(
             "eom linear linearises one scene; {} (a {} scene) has a [sweep]: run it without \
@@ -64,6 +73,13 @@ pub fn require_single_catalog(path: &Path) -> Result<()> {
         Kind::Catalog { swept: true } => Err(Usage(format!(
             "eom tradeoff compares the integrators on one scene; {} has a [sweep]: run it \
              without the [sweep], with one case's values",
+            path.display()
+        ))
+        .into()),
+        Kind::Vehicle => Err(Usage(format!(
+            "eom tradeoff serves catalog scenes (pendulum, planar, spatial, top), whose \
+             integrators it compares over one run; {} is a vehicle scene, whose manoeuvres \
+             name their method in [integrator]",
             path.display()
         ))
         .into()),

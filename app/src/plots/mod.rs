@@ -76,6 +76,7 @@ mod scale;
 mod series;
 pub mod ship;
 mod track;
+pub mod vehicle;
 
 use energy::draw_energy;
 use polhode::draw_polhode;

@@ -18,6 +18,7 @@ pub fn markdown() -> String {
         RUNNING.to_owned(),
         ship_keys(),
         SHIP_TABLE.to_owned(),
+        vehicle_keys(),
         trajectory_columns(),
     ]
     .join("\n")
@@ -186,6 +187,23 @@ fn ship_keys() -> String {
     out
 }
 
+fn vehicle_keys() -> String {
+    let mut out = String::from(
+        "## Vehicle scenes\n\n\
+         A scene with `[model] family = \"vehicle\"` and a `[hydrodynamics]` table is a \
+         vehicle scene: the six equations about the table's origin O with G at r_G, the added \
+         mass, Kirchhoff's terms folded or derived, exactly the terms the table lists, the \
+         propeller and the hydrostatics, derived and proved when the scene is read, run \
+         through each `[[manoeuvre]]` from the cruise (`scenes/remus100.toml`; `eom new \
+         vehicle`; docs/vehicles.md).\n\n",
+    );
+    out.push_str(&table_header(false));
+    for key in keys_of(SceneFamily::Vehicle) {
+        out.push_str(&row(key, false));
+    }
+    out
+}
+
 const SHIP_TABLE: &str = "### The hydrodynamic table\n\n\
 - **Term names.** A coefficient's name is its load, X, Y or N, then one letter per power of u, \
 v, r and δ (`d`), in any order: `Yvvr` is the coefficient of v²r in Y, `Xrv` and `Xvr` name one \
@@ -248,10 +266,17 @@ fn ship_columns() -> String {
         .iter()
         .map(|c| format!("`{c}`"))
         .collect();
+    let vehicle: Vec<String> = crate::vehicle::manoeuvre::trajectory_columns()
+        .iter()
+        .map(|c| format!("`{c}`"))
+        .collect();
     format!(
         "\nA ship writes one `trajectory.csv` per manoeuvre, with the rudder command after \
-         saturation and the distance run by midship: {}.\n",
-        columns.join(", ")
+         saturation and the distance run by midship: {}.\n\n\
+         A vehicle writes one per manoeuvre, with the fins' commands after saturation and the \
+         Euler angles of its quaternion: {}.\n",
+        columns.join(", "),
+        vehicle.join(", ")
     )
 }
 

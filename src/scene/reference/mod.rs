@@ -12,6 +12,7 @@ mod catalog;
 mod markdown;
 mod ship;
 mod template;
+mod vehicle;
 
 pub use markdown::{REGENERATE, markdown};
 pub use template::template;
@@ -26,11 +27,13 @@ pub enum SceneFamily {
     Catalog(Family),
     /// A ship scene: `planar-midship` with a `[hydrodynamics]` table and its manoeuvres.
     Ship,
+    /// A vehicle scene: `vehicle` with a `[hydrodynamics]` table, fins and manoeuvres.
+    Vehicle,
 }
 
 impl SceneFamily {
-    /// Every family, the catalog's in its order, then the ship.
-    pub const ALL: [SceneFamily; 7] = [
+    /// Every family, the catalog's in its order, then the ship and the vehicle.
+    pub const ALL: [SceneFamily; 8] = [
         SceneFamily::Catalog(Family::ALL[0]),
         SceneFamily::Catalog(Family::ALL[1]),
         SceneFamily::Catalog(Family::ALL[2]),
@@ -38,6 +41,7 @@ impl SceneFamily {
         SceneFamily::Catalog(Family::ALL[4]),
         SceneFamily::Catalog(Family::ALL[5]),
         SceneFamily::Ship,
+        SceneFamily::Vehicle,
     ];
 
     /// Its name on the command line: the catalog family's own, or `ship`.
@@ -45,6 +49,7 @@ impl SceneFamily {
         match self {
             SceneFamily::Catalog(family) => family.name(),
             SceneFamily::Ship => "ship",
+            SceneFamily::Vehicle => "vehicle",
         }
     }
 
@@ -55,6 +60,10 @@ impl SceneFamily {
             SceneFamily::Ship => {
                 "A ship on its hydrodynamic table: planar-midship (4.46) with [hydrodynamics], \
                  a rudder and the standard manoeuvres."
+            }
+            SceneFamily::Vehicle => {
+                "An underwater vehicle on its hydrodynamic table: six degrees of freedom about \
+                 the table's origin with [hydrodynamics], a propeller, fins and their steps."
             }
         }
     }
@@ -262,10 +271,10 @@ pub enum Shown {
     Commented,
 }
 
-/// Every key of every scene file, the catalog's and then the ship's, in the order a template
-/// writes them.
+/// Every key of every scene file, the catalog's, the ship's and the vehicle's, in the order a
+/// template writes them.
 pub fn keys() -> impl Iterator<Item = &'static Key> {
-    catalog::KEYS.iter().chain(ship::KEYS)
+    catalog::KEYS.iter().chain(ship::KEYS).chain(vehicle::KEYS)
 }
 
 /// The keys `family` reads, in template order.

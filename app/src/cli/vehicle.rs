@@ -1,0 +1,215 @@
+//! Vehicle scenes: `eom run SCENE` for a scene with `[model] family = "vehicle"` and
+//! `[hydrodynamics]`.
+//!
+//! Each `[[manoeuvre]]` runs from the cruise into its own folder (`trajectory.csv`; as SVG the
+//! track in plan, the profile, the attitude and the fins with their commands), and
+//! `summary.json` beside them holds the model that ran, the method, the folded table against
+//! its added mass per coefficient, the cruise against its closed forms, and each manoeuvre's
+//! figures with how far they move when the run is refined (the types of
+//! `eom::vehicle::summary`). Ctrl-C ends the run at its next
+//! step, keeping the manoeuvres finished before it.
+
+use super::run::{Interrupted, signal_received};
+use anyhow::{Context, Result};
+use eom::Model;
+use eom::output::summary::write_atomically;
+use eom::output::text::printable;
+use eom::output::trajectory::{Columns, TrajectoryWriter};
+use eom::run::{Row, Sink};
+use eom::ship::summary::IntegratorSummary;
+use eom::vehicle::manoeuvre::{ROW, VehicleManoeuvre, run};
+use eom::vehicle::summary::{
+    CruiseSummary, KirchhoffRow, ManoeuvreSummary, ModelSummary, StepFigures, VehicleSummary,
+    largest_difference,
+};
+use eom::vehicle::{VehicleError, VehicleScene, format_folded};
+use eom_cli::plots::vehicle::{VehiclePlot, write_vehicle_plots};
+use std::collections::BTreeMap;
+use std::path::Path;
+
+/// A manoeuvre run with the scene's method, and its figures refined.
+struct Outcome {
+    steps: Vec<StepFigures>,
+    summary: ManoeuvreSummary,
+}
+
+/// Runs a vehicle scene, read and checked, into `out`, a folder already known to be writable,
+/// and prints its figures.
+pub fn execute(scene: &VehicleScene, out: &Path) -> Result<()> {
+    let start = scene.start()?;
+    let mut manoeuvres = BTreeMap::new();
+    let mut outcomes = Vec::new();
+    let mut interrupted = None;
+    for manoeuvre in &scene.manoeuvres {
+        let folder = out.join(&manoeuvre.name);
+        std::fs::create_dir_all(&folder)
+            .with_context(|| format!("creating {}", folder.display()))?;
+        let outcome = match run_manoeuvre(scene, manoeuvre, start, &folder) {
+            Err(error) if is_stopped(&error) => {
+                interrupted = signal_received();
+                break;
+            }
+            outcome => outcome.with_context(|| format!("manoeuvre {}", manoeuvre.name))?,
+        };
+        manoeuvres.insert(manoeuvre.name.clone(), outcome.summary.clone());
+        outcomes.push(outcome);
+    }
+    let summary = VehicleSummary {
+        title: scene.title.clone(),
+        model: ModelSummary::new(scene),
+        integrator: IntegratorSummary::new(&scene.stepper),
+        kirchhoff: scene.model.folded().iter().map(KirchhoffRow::new).collect(),
+        cruise: CruiseSummary::new(scene, &start),
+        manoeuvre: manoeuvres,
+        interrupted: interrupted.is_some(),
+    };
+    let bytes = serde_json::to_vec_pretty(&serde_json::to_value(&summary)?)?;
+    let path = out.join("summary.json");
+    write_atomically(&path, &bytes).with_context(|| format!("writing {}", path.display()))?;
+    print_report(scene, &summary, &outcomes, out);
+    match interrupted {
+        Some(signal) => Err(Interrupted {
+            signal,
+            kept: format!(
+                "the {} manoeuvres finished before it, and summary.json, in {}",
+                outcomes.len(),
+                out.display()
+            ),
+        }
+        .into()),
+        None => Ok(()),
+    }
+}
+
+/// Whether a run ended because a signal asked it to.
+fn is_stopped(error: &anyhow::Error) -> bool {
+    error
+        .downcast_ref::<VehicleError>()
+        .is_some_and(|e| matches!(e, VehicleError::Stopped { .. }))
+}
+
+/// Runs `manoeuvre` with the scene's method, its rows streamed to `folder/trajectory.csv`
+/// (t, [`ROW`], the kinetic energy of the body and the fluid), then refined, and draws it.
+fn run_manoeuvre(
+    scene: &VehicleScene,
+    manoeuvre: &VehicleManoeuvre,
+    start: [f64; 15],
+    folder: &Path,
+) -> Result<Outcome> {
+    let path = folder.join("trajectory.csv");
+    let names = ROW.map(str::to_owned);
+    let expected_rows = (manoeuvre.duration / scene.every) as usize + 1;
+    let mut writer = TrajectoryWriter::create(&path, &names, false, expected_rows)
+        .with_context(|| format!("creating {}", path.display()))?;
+    let model = &scene.model;
+    let done = run(
+        model,
+        &scene.fins,
+        manoeuvre,
+        start,
+        (&scene.stepper, scene.every),
+        |sample| {
+            let row = Row {
+                t: sample.t,
+                state: &sample.row(),
+                kinetic_energy: model.kinetic_energy(&sample.state),
+                potential_energy: None,
+            };
+            writer.row(&row) && signal_received().is_none()
+        },
+    );
+    if let Some(error) = writer.error() {
+        return Err(anyhow::anyhow!("writing {}: {error}", path.display()));
+    }
+    let done = done?;
+    let columns = writer
+        .finish()
+        .with_context(|| format!("writing {}", path.display()))?;
+    let refined = run(
+        model,
+        &scene.fins,
+        manoeuvre,
+        start,
+        (&scene.stepper.refined(), scene.every),
+        |_| signal_received().is_none(),
+    )?;
+    let steps = StepFigures::of(&done);
+    let summary = ManoeuvreSummary {
+        steps: steps.clone(),
+        refined_difference: largest_difference(&steps, &StepFigures::of(&refined)),
+        refinement: scene.stepper.refinement(),
+        steps_taken: done.steps,
+    };
+    write_plots(folder, scene, manoeuvre, &columns)?;
+    Ok(Outcome { steps, summary })
+}
+
+/// The track in plan, the profile, the attitude and the fins.
+fn write_plots(
+    folder: &Path,
+    scene: &VehicleScene,
+    manoeuvre: &VehicleManoeuvre,
+    columns: &Columns,
+) -> Result<()> {
+    // The columns in ROW's order.
+    let column = |name: &str| -> &[f64] {
+        let index = ROW.iter().position(|r| *r == name).unwrap_or(0);
+        &columns.state[index]
+    };
+    let title = format!("{} — {}", scene.title, manoeuvre.name);
+    let plot = VehiclePlot {
+        title: &title,
+        time: &columns.time,
+        position: ["x", "y", "z"].map(column),
+        attitude: ["phi", "theta", "psi"].map(column),
+        fins: ["dr", "ds", "dr_command", "ds_command"].map(column),
+    };
+    write_vehicle_plots(folder, &plot)?;
+    Ok(())
+}
+
+fn print_report(scene: &VehicleScene, summary: &VehicleSummary, outcomes: &[Outcome], out: &Path) {
+    println!("{}", printable(&scene.title));
+    let cruise = &summary.cruise;
+    let closed = |x: Option<f64>, unit: &str| {
+        x.map_or_else(String::new, |x| format!(" (closed form {x:.4} {unit})"))
+    };
+    println!(
+        "  cruise: u = {:.4} m/s{}, roll trim φ = {:.4}°{}",
+        cruise.speed_m_s,
+        closed(cruise.speed_closed_form_m_s, "m/s"),
+        cruise.roll_deg,
+        closed(cruise.roll_closed_form_deg, "°")
+    );
+    for (manoeuvre, outcome) in scene.manoeuvres.iter().zip(outcomes) {
+        println!(
+            "  {}: (refined: {:.1e})",
+            manoeuvre.name, outcome.summary.refined_difference
+        );
+        println!(
+            "    {:>6} {:>6} {:>7} {:>7} {:>10} {:>8} {:>8} {:>8} {:>8}",
+            "from s", "to s", "δr °", "δs °", "r °/s", "U m/s", "φ °", "θ °", "z m"
+        );
+        for s in &outcome.steps {
+            println!(
+                "    {:>6.1} {:>6.1} {:>7.2} {:>7.2} {:>10.4} {:>8.4} {:>8.3} {:>8.3} {:>8.3}",
+                s.from_s,
+                s.to_s,
+                s.rudder_deg,
+                s.stern_planes_deg,
+                s.yaw_rate_deg_s,
+                s.speed_m_s,
+                s.roll_deg,
+                s.pitch_deg,
+                s.depth_m
+            );
+        }
+    }
+    if !scene.model.folded().is_empty() {
+        println!("  the folded table against its added mass:");
+        for line in format_folded(scene.model.folded()).lines() {
+            println!("    {line}");
+        }
+    }
+    println!("  written to {}/", out.display());
+}

@@ -1,0 +1,134 @@
+//! The one interpreter of proved programs: what a scene-defined model (a ship's 4.46, a
+//! vehicle's six equations) evaluates once its table has been derived and proved.
+//!
+//! What runs is the proved straight-line program itself ([`Program`]): the arena of shared
+//! nodes the emitter writes as Rust for a catalog model, with its functions (the right-hand
+//! side, the Jacobians ∂f/∂x and ∂f/∂u, the kinetic energy), each folded back and proved
+//! against the system and its exact derivative before it gets here. A call evaluates the nodes
+//! its function needs, once each, in order; the hoisted coefficients are computed once per
+//! table. It is generic over simba's `SimdRealField`, so it runs on f64, on SIMD lanes and on
+//! dual numbers. The program's variables (state, inputs, and whatever the model computes from
+//! the state, like a ship's U) are read from one slice whose order the model chooses.
+
+use eom_codegen::emit::program::{Function, Node, Program};
+use eom_codegen::model::System;
+use eom_codegen::symbolic::Expr;
+use simba::simd::SimdRealField;
+use std::collections::BTreeMap;
+
+/// One node of the program, with its operands resolved to positions.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Op {
+    Variable(usize),
+    Value(f64),
+    Sin(usize),
+    Cos(usize),
+    Recip(usize),
+    Neg(usize),
+    Add(usize, usize),
+    Sub(usize, usize),
+    Mul(usize, usize),
+}
+
+/// A proved program resolved to operations on numbers.
+#[derive(Debug, Clone)]
+pub(crate) struct Interpreter {
+    ops: Vec<Op>,
+}
+
+/// What one function of the program evaluates: the nodes its outputs need, in the arena's
+/// order (every operand before its user), and its outputs.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Plan {
+    needed: Vec<usize>,
+    outputs: Vec<usize>,
+}
+
+impl Plan {
+    /// The nodes `function`'s outputs reach through their operands.
+    pub(crate) fn of(program: &Program, function: &Function) -> Self {
+        let mut needed = vec![false; program.nodes.len()];
+        let mut pending: Vec<usize> = function.outputs.iter().map(|o| o.id.index()).collect();
+        while let Some(index) = pending.pop() {
+            if !std::mem::replace(&mut needed[index], true) {
+                pending.extend(program.nodes[index].children().iter().map(|c| c.index()));
+            }
+        }
+        Plan {
+            needed: (0..needed.len()).filter(|&i| needed[i]).collect(),
+            outputs: function.outputs.iter().map(|o| o.id.index()).collect(),
+        }
+    }
+}
+
+impl Interpreter {
+    /// The program's nodes with the hoisted `coefficients` put in and each variable read from
+    /// the position `variable` gives it; a variable without one is returned as the error.
+    pub(crate) fn new(
+        program: &Program,
+        coefficients: &[f64],
+        variable: impl Fn(&str) -> Option<usize>,
+    ) -> Result<Self, String> {
+        let mut ops = Vec::with_capacity(program.nodes.len());
+        for node in &program.nodes {
+            ops.push(match node {
+                Node::Variable(name) => Op::Variable(variable(name).ok_or_else(|| name.clone())?),
+                Node::Coefficient(i) => Op::Value(coefficients[*i]),
+                Node::Constant(c) => Op::Value(Expr::constant(c.clone()).eval(&|_| f64::NAN)),
+                Node::Sin(a) => Op::Sin(a.index()),
+                Node::Cos(a) => Op::Cos(a.index()),
+                Node::Recip(a) => Op::Recip(a.index()),
+                Node::Neg(a) => Op::Neg(a.index()),
+                Node::Add(a, b) => Op::Add(a.index(), b.index()),
+                Node::Sub(a, b) => Op::Sub(a.index(), b.index()),
+                Node::Mul(a, b) => Op::Mul(a.index(), b.index()),
+            });
+        }
+        Ok(Interpreter { ops })
+    }
+
+    /// The outputs of `plan` with the program's variables at `variables`.
+    pub(crate) fn evaluate<'a, T: SimdRealField + Copy>(
+        &self,
+        plan: &'a Plan,
+        variables: &[T],
+    ) -> impl Iterator<Item = T> + use<'a, T> {
+        let mut values: Vec<T> = vec![T::zero(); self.ops.len()];
+        for &index in &plan.needed {
+            values[index] = match self.ops[index] {
+                Op::Variable(i) => variables[i],
+                Op::Value(x) => T::from_subset(&x),
+                Op::Sin(a) => eom_kernel::sin_cos([values[a]])[0].0,
+                Op::Cos(a) => eom_kernel::sin_cos([values[a]])[0].1,
+                Op::Recip(a) => T::one() / values[a],
+                Op::Neg(a) => -values[a],
+                Op::Add(a, b) => values[a] + values[b],
+                Op::Sub(a, b) => values[a] - values[b],
+                Op::Mul(a, b) => values[a] * values[b],
+            };
+        }
+        plan.outputs.iter().map(move |&i| values[i])
+    }
+}
+
+/// The hoisted coefficients, each computed once from the parameters (and the reciprocals of
+/// parameter polynomials, computed first); a parameter without a value makes NaN.
+pub(crate) fn coefficient_values(
+    system: &System,
+    program: &Program,
+    parameters: &BTreeMap<String, f64>,
+) -> Vec<f64> {
+    let mut known = parameters.clone();
+    for reciprocal in &system.reciprocals {
+        let of = reciprocal
+            .of
+            .eval(&|s| known.get(s).copied().unwrap_or(f64::NAN));
+        known.insert(reciprocal.symbol.clone(), 1.0 / of);
+    }
+    let lookup = |s: &str| known.get(s).copied().unwrap_or(f64::NAN);
+    program
+        .coefficients
+        .iter()
+        .map(|c| c.value.eval(&lookup))
+        .collect()
+}

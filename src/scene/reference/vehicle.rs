@@ -1,0 +1,359 @@
+//! The keys of a vehicle scene (`eom::vehicle::scene::VehicleSceneFile`), in the order a
+//! template writes them. The template's vehicle is REMUS on Prestero's table, as in
+//! `scenes/remus100.toml` (its sources and the readings that differ are said there), with a
+//! short turn so that the template runs in a moment.
+
+use super::{Choices, Key, Kind, Required, SceneFamily, Shown};
+
+const VEHICLE: &[SceneFamily] = &[SceneFamily::Vehicle];
+
+/// A fin's keys, for `[rudder]` and `[stern_planes]`.
+macro_rules! fin_keys {
+    ($table:literal, $what:literal) => {
+        [
+            Key {
+                path: concat!($table, ".max_deg"),
+                families: VEHICLE,
+                unit: "deg",
+                default: "no limit",
+                description: concat!("Where the ", $what, " saturate(s)."),
+                example: "13.6",
+                shown: Shown::Commented,
+                ..Key::BLANK
+            },
+            Key {
+                path: concat!($table, ".max_rate_deg_s"),
+                families: VEHICLE,
+                unit: "deg/s",
+                default: "no limit",
+                description: concat!(
+                    "The ",
+                    $what,
+                    "' rate limit; it acts on the lag's rate, so it needs ",
+                    $table,
+                    ".time_constant_s. Where it starts or stops acting, the rate has a kink \
+                     the run does not locate yet (first-order accurate there)."
+                ),
+                example: "20.0",
+                shown: Shown::Commented,
+                ..Key::BLANK
+            },
+            Key {
+                path: concat!($table, ".time_constant_s"),
+                families: VEHICLE,
+                unit: "s",
+                default: "no lag: at the command at once",
+                description: concat!("The ", $what, "' first-order lag."),
+                example: "0.1",
+                shown: Shown::Commented,
+                ..Key::BLANK
+            },
+        ]
+    };
+}
+
+const RUDDER: [Key; 3] = fin_keys!("rudder", "rudder");
+const STERN_PLANES: [Key; 3] = fin_keys!("stern_planes", "stern planes");
+
+/// Every key of a vehicle scene.
+pub(super) static KEYS: &[Key] = &[
+    Key {
+        path: "title",
+        families: VEHICLE,
+        kind: Kind::Text(Choices::Free),
+        required: Required::Yes,
+        description: "What the scene is: the title of the summary and the plots.",
+        example: "\"A vehicle from eom new: REMUS 100 on Prestero's table\"",
+        ..Key::BLANK
+    },
+    Key {
+        path: "model.family",
+        families: VEHICLE,
+        kind: Kind::Text(Choices::These(&["vehicle"])),
+        required: Required::Yes,
+        description: "A vehicle runs the six equations about its table's origin O; `vehicle` \
+                      with a [hydrodynamics] table is what makes a scene a vehicle scene.",
+        example: "\"vehicle\"",
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.mass",
+        families: VEHICLE,
+        unit: "kg",
+        required: Required::Yes,
+        description: "M, the vehicle's mass.",
+        example: "30.48",
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.weight",
+        families: VEHICLE,
+        unit: "N",
+        required: Required::Yes,
+        description: "W, acting at G, vertical in space axes (tables give it apart from M).",
+        example: "299.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.buoyancy",
+        families: VEHICLE,
+        unit: "N",
+        required: Required::Yes,
+        description: "B, acting at the centre of buoyancy, up in space axes.",
+        example: "299.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.centre_of_gravity",
+        families: VEHICLE,
+        kind: Kind::Numbers("3: x_G, y_G, z_G"),
+        unit: "m",
+        frame: super::Frame::Body,
+        required: Required::Yes,
+        description: "r_G, from the table's origin O.",
+        example: "[0.0, 0.0, 0.0196]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.centre_of_buoyancy",
+        families: VEHICLE,
+        kind: Kind::Numbers("3: x_B, y_B, z_B"),
+        unit: "m",
+        frame: super::Frame::Body,
+        required: Required::Yes,
+        description: "r_B, from O.",
+        example: "[0.0, 0.0, 0.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.inertia",
+        families: VEHICLE,
+        kind: Kind::Numbers("3: I_xx, I_yy, I_zz"),
+        unit: "kg m²",
+        frame: super::Frame::Body,
+        required: Required::Yes,
+        description: "The principal moments of inertia about G, the principal axes along the \
+                      body axes; eom carries them to O by Steiner (4.23).",
+        example: "[0.177, 3.45, 3.45]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "hydrodynamics.convention",
+        families: VEHICLE,
+        kind: Kind::Text(Choices::These(&["prestero", "fossen"])),
+        required: Required::Yes,
+        description: "How the names are read. fossen: every factor written, |x| an absolute \
+                      value (Yv|v| = v|v|, Xuu = u²). prestero: a doubled velocity in its \
+                      load's plane is x|x| (Xuu = u|u|, Yvv = v|v|, Nrr = r|r|), Xqq and Xrr \
+                      are q², r², a doubled u before controls only is u² (Yuudr); any other \
+                      repetition is refused as ambiguous.",
+        example: "\"prestero\"",
+        ..Key::BLANK
+    },
+    Key {
+        path: "hydrodynamics.added_mass_coriolis",
+        families: VEHICLE,
+        kind: Kind::Text(Choices::These(&["folded", "derived"])),
+        required: Required::Yes,
+        description: "folded: the table's cross terms already hold the added mass's Coriolis \
+                      and centripetal terms (Prestero's Xwq, Ywp, Mrp, …), and summary.json \
+                      shows each against what the added mass implies. derived: eom adds \
+                      Kirchhoff's terms from T_A = ½νᵀM_Aν.",
+        example: "\"folded\"",
+        ..Key::BLANK
+    },
+    Key {
+        path: "hydrodynamics.added_mass.*",
+        families: VEHICLE,
+        kind: Kind::Table("added-mass names and numbers"),
+        unit: "kg, kg m, kg m²",
+        required: Required::Yes,
+        description: "The acceleration derivatives: a load letter, a velocity, `dot` (Xudot, \
+                      Yrdot, …); M_A = −(these), symmetric, each filling its partner; both \
+                      names of a pair (Yrdot, Nvdot) must agree. M_RB + M_A must be positive \
+                      definite (an error names the row's entries otherwise).",
+        example: "Xudot = -0.93\nYvdot = -35.5\nYrdot = 1.93\nZwdot = -35.5\nZqdot = -1.93\n\
+                  Kpdot = -0.0704\nMwdot = -1.93\nMqdot = -4.88\nNvdot = 1.93\nNrdot = -4.88",
+        ..Key::BLANK
+    },
+    Key {
+        path: "hydrodynamics.coefficients.*",
+        families: VEHICLE,
+        kind: Kind::Table("coefficient names and numbers"),
+        unit: "SI",
+        required: Required::Yes,
+        description: "The terms to model, and only those: a load letter (X, Y, Z, K, M, N) and \
+                      the factors of its term, read under the convention: the velocities u, \
+                      v, w, p, q, r, the controls dr (rudder) and ds (stern planes), 0 for a \
+                      constant. An unknown or ambiguous name, or two names of one term, is \
+                      refused naming it.",
+        example: "Xuu = -1.62\nXwq = -35.5\nXqq = -1.93\nXvr = 35.5\nXrr = -1.93\n\
+                  Yvv = -1310.0\nYrr = 0.632\nYuv = -28.6\nYwp = 35.5\nYur = 5.22\n\
+                  Ypq = 1.93\nYuudr = 9.64\nZww = -131.0\nZqq = -0.632\nZuw = -28.6\n\
+                  Zuq = -5.22\nZvp = -35.5\nZrp = 1.93\nZuuds = -9.64\nKpp = -0.130\n\
+                  Mww = 3.18\nMqq = -188.0\nMuw = 24.0\nMuq = -2.0\nMvp = -1.93\n\
+                  Mrp = 4.86\nMuuds = -6.15\nNvv = -3.18\nNrr = -94.0\nNuv = -24.0\n\
+                  Nur = -2.0\nNwp = -1.93\nNpq = -4.86\nNuudr = -6.15",
+        ..Key::BLANK
+    },
+    Key {
+        path: "propeller.thrust",
+        families: VEHICLE,
+        unit: "N",
+        frame: super::Frame::Body,
+        required: Required::When("with [propeller]"),
+        description: "X_prop, constant at the setting, along body x. Every run starts from the \
+                      cruise it makes: u and the roll angle trimmed so that u̇ = ṗ = 0.",
+        example: "3.86",
+        ..Key::BLANK
+    },
+    Key {
+        path: "propeller.torque",
+        families: VEHICLE,
+        unit: "N m",
+        frame: super::Frame::Body,
+        required: Required::When("with [propeller]"),
+        description: "K_prop, the propeller's torque on the hull about body x, constant.",
+        example: "-0.543",
+        ..Key::BLANK
+    },
+    RUDDER[0],
+    RUDDER[1],
+    RUDDER[2],
+    STERN_PLANES[0],
+    STERN_PLANES[1],
+    STERN_PLANES[2],
+    Key {
+        path: "integrator.method",
+        families: VEHICLE,
+        kind: Kind::Text(Choices::These(&[
+            "euler",
+            "symplectic-euler",
+            "rk4",
+            "dopri5",
+            "dop853",
+        ])),
+        required: Required::Yes,
+        description: "Any method of every scene's but lie-midpoint. A run is cut at each \
+                      change of the fins' commands, so each step's figures are read exactly \
+                      where it ends.",
+        example: "\"rk4\"",
+        ..Key::BLANK
+    },
+    Key {
+        path: "integrator.step",
+        families: VEHICLE,
+        unit: "s",
+        required: Required::When("for a fixed-step method"),
+        description: "Fixed-step methods only: the largest step. Each manoeuvre runs again at \
+                      half the step, and summary.json says how far its figures move \
+                      (`refined_difference`).",
+        example: "0.01",
+        ..Key::BLANK
+    },
+    Key {
+        path: "integrator.rtol",
+        families: VEHICLE,
+        unit: "-",
+        default: "1e-9",
+        description: "Adaptive methods only: the relative tolerance (the refined run's is a \
+                      hundred times tighter).",
+        example: "1e-9",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "integrator.atol",
+        families: VEHICLE,
+        default: "1e-9",
+        description: "Adaptive methods only: the absolute tolerance, in each state entry's \
+                      own unit.",
+        example: "1e-9",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "integrator.max_steps",
+        families: VEHICLE,
+        kind: Kind::Integer,
+        default: "1_000_000",
+        description: "The most steps, accepted and rejected, one manoeuvre may take.",
+        example: "1_000_000",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].name",
+        families: VEHICLE,
+        kind: Kind::Text(Choices::Free),
+        default: "fin_steps",
+        description: "The manoeuvre's output folder: letters, digits, _ - ., each name once.",
+        example: "\"turn\"",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].kind",
+        families: VEHICLE,
+        kind: Kind::Text(Choices::These(&["fin_steps"])),
+        required: Required::Yes,
+        description: "fin_steps: the fins' commands step at times_s to the angles given, zero \
+                      before the first. Each manoeuvre starts from the cruise, at the origin, \
+                      heading north.",
+        example: "\"fin_steps\"",
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].times_s",
+        families: VEHICLE,
+        kind: Kind::Numbers("the steps' times, strictly increasing"),
+        unit: "s",
+        required: Required::Yes,
+        description: "When the commands step, the first within the run.",
+        example: "[2.0, 4.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].rudder_deg",
+        families: VEHICLE,
+        kind: Kind::Numbers("the rudder's commands, one per time"),
+        unit: "deg",
+        required: Required::When("unless stern_planes_deg is given"),
+        default: "zero",
+        description: "The rudder's command from each time on.",
+        example: "[4.0, -4.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].stern_planes_deg",
+        families: VEHICLE,
+        kind: Kind::Numbers("the stern planes' commands, one per time"),
+        unit: "deg",
+        required: Required::When("unless rudder_deg is given"),
+        default: "zero",
+        description: "The stern planes' command from each time on.",
+        example: "[0.0, 0.0]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].duration_s",
+        families: VEHICLE,
+        unit: "s",
+        required: Required::Yes,
+        description: "The end of the run.",
+        example: "6.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "output.every",
+        families: VEHICLE,
+        unit: "s",
+        required: Required::When("for an adaptive method"),
+        default: "the step",
+        description: "Trajectory rows at exactly t = k·every, and a row at each change of the \
+                      commands.",
+        example: "0.1",
+        ..Key::BLANK
+    },
+];

@@ -1,0 +1,223 @@
+//! A vehicle's manoeuvre: its fins under step commands, integrated by the one driver
+//! ([`segment::advance`], any method), and the figures read where the commands change.
+//!
+//! The run is cut into stretches at the instants the commands change, so each stretch holds
+//! its commands and ends exactly at the next change: the figures of a step (the yaw rate, the
+//! speed, the roll and pitch, the depth reached when it ends) are those of the integrated
+//! solution at that instant, not at the nearest step. The trajectory's rows are at
+//! t = k·every, as every scene's are, and at each change of the commands.
+
+use super::VehicleError;
+use super::fins::{FinSteps, Fins, Steering};
+use super::model::VehicleModel;
+use crate::integrate::segment::{self, Hooks, add};
+use crate::integrate::{IntegrateError, RowClock, Stats, Stepper};
+use crate::models::{ENERGY_UNIT, Model, TIME_UNIT, state_with_unit, with_unit};
+use nalgebra::SVector;
+
+/// One manoeuvre of a scene: the fins' steps, from the cruise.
+#[derive(Debug, Clone, PartialEq)]
+pub struct VehicleManoeuvre {
+    /// Its name, for the output folder and the summary.
+    pub name: String,
+    /// The fins' commands.
+    pub steps: FinSteps,
+    /// The end of the run, s.
+    pub duration: f64,
+}
+
+/// The state a run integrates.
+pub type VehicleState = SVector<f64, 15>;
+
+/// One instant of a run.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Sample {
+    /// t, s.
+    pub t: f64,
+    /// The model's state ([`super::model::STATE`]).
+    pub state: [f64; 15],
+    /// The fins' commands after saturation, rad.
+    pub commands: [f64; 2],
+}
+
+/// What a row holds after its time, by name: the model's state, the fins' commands, the Euler
+/// angles of the attitude (for reading; the run carries the quaternion).
+pub const ROW: [&str; 20] = [
+    "u",
+    "v",
+    "w",
+    "p",
+    "q",
+    "r",
+    "x",
+    "y",
+    "z",
+    "q0",
+    "q1",
+    "q2",
+    "q3",
+    "dr",
+    "ds",
+    "dr_command",
+    "ds_command",
+    "phi",
+    "theta",
+    "psi",
+];
+
+/// The columns of a manoeuvre's `trajectory.csv`: t, [`ROW`], and the kinetic energy of the
+/// body and the fluid.
+pub fn trajectory_columns() -> Vec<String> {
+    let mut columns = vec![with_unit("t", TIME_UNIT)];
+    columns.extend(ROW.iter().map(|name| state_with_unit(name)));
+    columns.push(with_unit("kinetic_energy", ENERGY_UNIT));
+    columns
+}
+
+impl Sample {
+    /// The row after its time, in [`ROW`]'s order.
+    pub fn row(&self) -> [f64; 20] {
+        let [phi, theta, psi] = euler_angles(&self.state);
+        std::array::from_fn(|i| match i {
+            0..15 => self.state[i],
+            15 | 16 => self.commands[i - 15],
+            17 => phi,
+            18 => theta,
+            _ => psi,
+        })
+    }
+}
+
+/// Roll, pitch and yaw (φ, θ, ψ, rad; Z·Y·X) of the state's quaternion, scaled to unit length.
+pub fn euler_angles(state: &[f64; 15]) -> [f64; 3] {
+    let [q0, q1, q2, q3] = [state[9], state[10], state[11], state[12]];
+    let norm = q0 * q0 + q1 * q1 + q2 * q2 + q3 * q3;
+    [
+        (2.0 * (q0 * q1 + q2 * q3)).atan2(q0 * q0 - q1 * q1 - q2 * q2 + q3 * q3),
+        (2.0 * (q0 * q2 - q1 * q3) / norm).clamp(-1.0, 1.0).asin(),
+        (2.0 * (q0 * q3 + q1 * q2)).atan2(q0 * q0 + q1 * q1 - q2 * q2 - q3 * q3),
+    ]
+}
+
+/// Where the run stood when a command changed or the run ended: the figures of the step that
+/// ends there.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StepEnd {
+    /// t, s.
+    pub t: f64,
+    /// The state just before the change.
+    pub state: [f64; 15],
+    /// The commands that held up to here (rad, saturated).
+    pub commands: [f64; 2],
+}
+
+/// A manoeuvre run: where the commands changed and the run ended, and what it cost.
+#[derive(Debug, Clone)]
+pub struct VehicleRun {
+    /// The state at the end of each step of the commands (the first: the cruise before the
+    /// first change), in order, the last at the end of the run.
+    pub ends: Vec<StepEnd>,
+    /// Steps taken.
+    pub steps: u64,
+}
+
+/// Runs a manoeuvre from `start` with `stepper`'s method, handing each row (at t = k·`every`
+/// and at each change of the commands) to `observe`, which returns whether to go on (false
+/// ends the run with [`VehicleError::Stopped`]: Ctrl-C).
+pub fn run(
+    model: &VehicleModel,
+    fins: &Fins,
+    manoeuvre: &VehicleManoeuvre,
+    start: [f64; 15],
+    (stepper, every): (&Stepper, f64),
+    mut observe: impl FnMut(&Sample) -> bool,
+) -> Result<VehicleRun, VehicleError> {
+    let mut y = VehicleState::from(start);
+    let mut changes: Vec<f64> = (manoeuvre.steps.times().iter().copied())
+        .filter(|&t| t > 0.0 && t < manoeuvre.duration)
+        .collect();
+    changes.push(manoeuvre.duration);
+    let mut t = 0.0;
+    let mut steering = steering_at(fins, &manoeuvre.steps, t, &mut y);
+    let mut rows = RowClock::new(0.0, every);
+    let mut total = Stats::default();
+    let mut ends = Vec::new();
+    for b in changes {
+        let last = b >= manoeuvre.duration;
+        let system = model.driven_by(steering);
+        let sample = |t: f64, y: &VehicleState| Sample {
+            t,
+            state: y.data.0[0],
+            commands: steering.saturated(),
+        };
+        let hooks = Hooks {
+            check: &mut |_, _| true,
+            stop: None,
+            emit: &mut |t, y: &VehicleState| observe(&sample(t, y)),
+            // A fin without a lag jumps at a change: the row there shows it after the jump.
+            row_at_end: last,
+            row_at_stop: true,
+        };
+        let (reached, stats) = segment::advance(stepper, &system, (t, y, b), &mut rows, hooks);
+        add(&mut total, stats);
+        let reached = reached.map_err(|error| run_error(error, stepper))?;
+        (t, y) = (reached.t, reached.state);
+        ends.push(StepEnd {
+            t,
+            state: y.data.0[0],
+            commands: steering.saturated(),
+        });
+        if !last {
+            steering = steering_at(fins, &manoeuvre.steps, t, &mut y);
+            let after = Sample {
+                t,
+                state: y.data.0[0],
+                commands: steering.saturated(),
+            };
+            if rows.next_time() != t && !observe(&after) {
+                return Err(VehicleError::Stopped { time: t });
+            }
+        }
+    }
+    Ok(VehicleRun {
+        ends,
+        steps: total.steps as u64,
+    })
+}
+
+/// The fins' loads from `t` on; a fin without a lag is set to its saturated command.
+fn steering_at<'a>(fins: &'a Fins, steps: &FinSteps, t: f64, y: &mut VehicleState) -> Steering<'a> {
+    let steering = Steering {
+        fins,
+        commands: steps.angles(t),
+    };
+    let saturated = steering.saturated();
+    for (i, fin) in [fins.rudder, fins.stern_planes].iter().enumerate() {
+        if fin.time_constant.is_none() {
+            y[13 + i] = saturated[i];
+        }
+    }
+    steering
+}
+
+/// A failed stretch as a vehicle's error, naming the state entry or the cause.
+fn run_error(error: IntegrateError, stepper: &Stepper) -> VehicleError {
+    match error {
+        IntegrateError::Stopped { t } => VehicleError::Stopped { time: t },
+        IntegrateError::NonFiniteState { component, t } => VehicleError::Run {
+            time: t,
+            reason: format!(
+                "{} is not finite ({} may be too coarse for this vehicle)",
+                super::model::STATE.get(component).unwrap_or(&"?"),
+                match stepper.step {
+                    Some(step) => format!("a step of {step} s"),
+                    None => "the tolerances".to_owned(),
+                }
+            ),
+        },
+        other => VehicleError::Run {
+            time: f64::NAN,
+            reason: other.to_string(),
+        },
+    }
+}

@@ -1,0 +1,106 @@
+//! Underwater vehicles in six degrees of freedom about their table's origin, on their own
+//! hydrodynamic tables.
+//!
+//! | step | where |
+//! |---|---|
+//! | the table as the scene gives it: body, hydrostatics, added mass, named terms, propeller | [`table`] |
+//! | the six equations about O with exactly the table's terms, derived and proved by `eom-codegen`, evaluated | [`model`] |
+//! | the fins (rudder, stern planes): saturation, lag, rate limit; their step commands | [`fins`] |
+//! | a manoeuvre over the one driver (any method), its figures | [`manoeuvre`] |
+//! | what a run reports, as data (`summary.json`'s types) | [`summary`] |
+//! | the scene file | [`scene`] |
+//!
+//! The model is built when the scene is read, because the table is known only then: the
+//! symbolic engine derives the six equations about O (4.1 and 4.2 with r = r_G + r′, the
+//! added mass and, where the table does not fold them, Kirchhoff's terms), inverts the total
+//! mass matrix once (refusing one that is not positive definite), and proves the straight-line
+//! program and its Jacobians equal to the equations; [`model::VehicleModel`] then evaluates
+//! that proved program as a [`Model`](crate::Model), so it runs on every integrator.
+
+pub mod fins;
+pub mod manoeuvre;
+pub mod model;
+pub mod scene;
+pub mod summary;
+pub mod table;
+
+/// The table's vocabulary, from the generator that builds the model: how names are read,
+/// whether Kirchhoff's terms are folded, a folded coefficient against its added mass.
+pub use eom_codegen::model::vehicle::{
+    AddedMassCoriolis, Convention, FoldedComparison, format_folded,
+};
+pub use fins::{FinSteps, Fins};
+pub use manoeuvre::{VehicleManoeuvre, VehicleRun};
+pub use model::VehicleModel;
+pub use scene::VehicleScene;
+pub use table::{PropellerSetting, VehicleTable};
+
+/// Why a vehicle cannot be built or run.
+#[derive(Debug, thiserror::Error)]
+pub enum VehicleError {
+    /// A table value or key that cannot be used; `key` is its path in the scene.
+    #[error("`{key}`: {reason}")]
+    Invalid {
+        /// The key's path, `hydrodynamics.coefficients.Yvv`.
+        key: String,
+        /// What is wrong.
+        reason: String,
+    },
+    /// The table cannot make a model: a name not read, a mass matrix not positive definite.
+    #[error("the vehicle's table: {0}")]
+    Table(#[from] eom_codegen::model::vehicle::VehicleError),
+    /// The symbolic engine could not prove the model.
+    #[error("the vehicle model cannot be proved: {0}")]
+    Prove(#[from] eom_codegen::emit::EmitError),
+    /// A run that cannot go on, with the time and the reason.
+    #[error("the run stopped at t = {} s: {reason}", crate::Short(*time))]
+    Run {
+        /// When.
+        time: f64,
+        /// Why.
+        reason: String,
+    },
+    /// A run its observer asked to end (Ctrl-C).
+    #[error("the run was stopped at t = {} s", crate::Short(*time))]
+    Stopped {
+        /// When.
+        time: f64,
+    },
+}
+
+impl VehicleError {
+    pub(crate) fn invalid(key: impl Into<String>, reason: impl Into<String>) -> Self {
+        VehicleError::Invalid {
+            key: key.into(),
+            reason: reason.into(),
+        }
+    }
+
+    /// The scene key a table's error is about: the coefficient or added-mass entry it names,
+    /// else the table.
+    pub fn key(&self) -> String {
+        use eom_codegen::model::vehicle::{NameError, VehicleError as Table};
+        let entry = |name: &str| {
+            let table = if name.ends_with("dot") {
+                "added_mass"
+            } else {
+                "coefficients"
+            };
+            format!("hydrodynamics.{table}.{name}")
+        };
+        match self {
+            VehicleError::Invalid { key, .. } => key.clone(),
+            VehicleError::Table(table) => match table {
+                Table::Name(
+                    NameError::Ambiguous { name, .. } | NameError::Unknown { name, .. },
+                )
+                | Table::ListedTwice(name)
+                | Table::SameTerm(_, name, _) => entry(name),
+                Table::AsymmetricAddedMass { name, .. } => entry(name),
+                Table::NotPositiveDefinite { .. } => "hydrodynamics.added_mass".into(),
+                _ => "hydrodynamics".into(),
+            },
+            _ => "hydrodynamics".into(),
+        }
+    }
+}

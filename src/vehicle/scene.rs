@@ -1,0 +1,468 @@
+//! The vehicle scene: `[model] family = "vehicle"` with a `[hydrodynamics]` table, the body,
+//! the propeller, the fins and the `[[manoeuvre]]`s to run.
+//!
+//! ```toml
+//! title = "…"
+//!
+//! [model]
+//! family = "vehicle"                 # six degrees of freedom about the table's origin O
+//!
+//! [body]                             # SI, body axes at O (x forward, y starboard, z down)
+//! mass = 30.48                       # M, kg
+//! weight = 299.0                     # W, N
+//! buoyancy = 299.0                   # B, N
+//! centre_of_gravity = [0, 0, 0.0196] # r_G from O, m
+//! centre_of_buoyancy = [0, 0, 0]     # r_B from O, m
+//! inertia = [0.177, 3.45, 3.45]      # I_xx, I_yy, I_zz about G, principal, kg m²
+//!
+//! [hydrodynamics]
+//! convention = "prestero"            # or "fossen": how the names are read
+//! added_mass_coriolis = "folded"     # or "derived": eom adds Kirchhoff's terms
+//!
+//! [hydrodynamics.added_mass]         # Xudot, Yvdot, Yrdot, …
+//! [hydrodynamics.coefficients]       # the terms to model, and only those; controls dr, ds
+//!
+//! [propeller]                        # constant thrust and torque at the setting
+//! thrust = 3.86                      # X_prop, N
+//! torque = -0.543                    # K_prop, N m
+//!
+//! [rudder]                           # and [stern_planes]: every key optional
+//! max_deg = 13.6
+//! max_rate_deg_s = 20.0              # needs the lag
+//! time_constant_s = 0.1
+//!
+//! [integrator]
+//! method = "rk4"
+//! step = 0.01
+//!
+//! [[manoeuvre]]
+//! kind = "fin_steps"                 # the commands step at times_s
+//! times_s = [10, 40, 70]
+//! rudder_deg = [4, -4, 0]
+//! stern_planes_deg = [0, 0, 0]       # optional: zero
+//! duration_s = 80
+//! ```
+//!
+//! Every run starts from the cruise at the propeller's setting: at the origin, heading north,
+//! fins at zero, with u and the roll angle φ trimmed so that u̇ = ṗ = 0 (Newton on the proved
+//! model and its proved Jacobian). Every key is checked and an error names it by its path.
+
+use super::fins::{FinSteps, Fins, Rudder};
+use super::manoeuvre::VehicleManoeuvre;
+use super::model::VehicleModel;
+use super::table::{PropellerSetting, VehicleTable};
+use super::{AddedMassCoriolis, Convention, VehicleError};
+use crate::integrate::{Method, Stepper};
+use crate::models::Model;
+use crate::scene::check::{Checker, MethodKeys};
+use crate::scene::{Problem, SceneError};
+use crate::ship::scene::{IntegratorTable, OutputTable, RudderTable};
+use serde::Deserialize;
+use std::collections::BTreeMap;
+
+/// The file as written.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct VehicleSceneFile {
+    /// What the scene is.
+    pub title: String,
+    /// `family = "vehicle"`.
+    pub model: crate::ship::scene::ModelTable,
+    /// The body.
+    pub body: BodyTable,
+    /// The hydrodynamic table.
+    pub hydrodynamics: HydrodynamicsTable,
+    /// The propeller at its setting.
+    pub propeller: Option<PropellerTable>,
+    /// The rudder's steering gear.
+    #[serde(default)]
+    pub rudder: RudderTable,
+    /// The stern planes' steering gear.
+    #[serde(default)]
+    pub stern_planes: RudderTable,
+    /// The method.
+    pub integrator: IntegratorTable,
+    /// The manoeuvres, each run from the cruise.
+    #[serde(default)]
+    pub manoeuvre: Vec<ManoeuvreTable>,
+    /// Trajectory rows.
+    #[serde(default)]
+    pub output: OutputTable,
+}
+
+/// `[body]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BodyTable {
+    /// M, kg.
+    pub mass: f64,
+    /// W, N.
+    pub weight: f64,
+    /// B, N.
+    pub buoyancy: f64,
+    /// r_G from O, m.
+    pub centre_of_gravity: [f64; 3],
+    /// r_B from O, m.
+    pub centre_of_buoyancy: [f64; 3],
+    /// I_xx, I_yy, I_zz about G, kg m².
+    pub inertia: [f64; 3],
+}
+
+/// `[hydrodynamics]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct HydrodynamicsTable {
+    /// `prestero` or `fossen`.
+    pub convention: String,
+    /// `folded` or `derived`.
+    pub added_mass_coriolis: String,
+    /// The added-mass entries by name.
+    pub added_mass: BTreeMap<String, f64>,
+    /// The force terms by name.
+    pub coefficients: BTreeMap<String, f64>,
+}
+
+/// `[propeller]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PropellerTable {
+    /// X_prop, N.
+    pub thrust: f64,
+    /// K_prop, N m.
+    pub torque: f64,
+}
+
+/// `[[manoeuvre]]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ManoeuvreTable {
+    /// The output folder's name.
+    pub name: Option<String>,
+    /// `fin_steps`.
+    pub kind: String,
+    /// When the commands step, s.
+    pub times_s: Vec<f64>,
+    /// The rudder's command from each time on, degrees.
+    pub rudder_deg: Option<Vec<f64>>,
+    /// The stern planes' command from each time on, degrees.
+    pub stern_planes_deg: Option<Vec<f64>>,
+    /// The end of the run, s.
+    pub duration_s: f64,
+}
+
+/// A vehicle scene, checked, its model built and proved, ready to run.
+#[derive(Debug, Clone)]
+pub struct VehicleScene {
+    /// The title.
+    pub title: String,
+    /// The table.
+    pub table: VehicleTable,
+    /// The model of the table.
+    pub model: VehicleModel,
+    /// The fins' steering gears.
+    pub fins: Fins,
+    /// The method.
+    pub stepper: Stepper,
+    /// A trajectory row at t = k·every, s.
+    pub every: f64,
+    /// The manoeuvres.
+    pub manoeuvres: Vec<VehicleManoeuvre>,
+}
+
+impl Checker<'_> {
+    fn vehicle_table(&self, file: &VehicleSceneFile) -> Result<VehicleTable, SceneError> {
+        let body = &file.body;
+        let vector = |key: &str, v: [f64; 3]| -> Result<[f64; 3], SceneError> {
+            for (i, x) in v.iter().enumerate() {
+                self.finite(&format!("body.{key}[{i}]"), *x)?;
+            }
+            Ok(v)
+        };
+        let mut inertia = [0.0; 3];
+        for (i, x) in body.inertia.iter().enumerate() {
+            inertia[i] = self.positive(&format!("body.inertia[{i}]"), *x)?;
+        }
+        let hydro = &file.hydrodynamics;
+        let convention = match hydro.convention.as_str() {
+            "prestero" => Convention::Prestero,
+            "fossen" => Convention::Fossen,
+            other => {
+                return Err(self.invalid(
+                    "hydrodynamics.convention",
+                    format!("`{other}`: expected `prestero` or `fossen`"),
+                ));
+            }
+        };
+        let added_mass_coriolis = match hydro.added_mass_coriolis.as_str() {
+            "folded" => AddedMassCoriolis::Folded,
+            "derived" => AddedMassCoriolis::Derived,
+            other => {
+                return Err(self.invalid(
+                    "hydrodynamics.added_mass_coriolis",
+                    format!("`{other}`: expected `folded` or `derived`"),
+                ));
+            }
+        };
+        for (table, entries) in [
+            ("added_mass", &hydro.added_mass),
+            ("coefficients", &hydro.coefficients),
+        ] {
+            for (name, value) in entries {
+                self.finite(&format!("hydrodynamics.{table}.{name}"), *value)?;
+                if table == "coefficients" && name.ends_with("dot") {
+                    return Err(self.invalid(
+                        &format!("hydrodynamics.coefficients.{name}"),
+                        "an added-mass entry: give it in [hydrodynamics.added_mass]",
+                    ));
+                }
+            }
+        }
+        let propeller = match &file.propeller {
+            Some(p) => Some(PropellerSetting {
+                thrust: self.finite("propeller.thrust", p.thrust)?,
+                torque: self.finite("propeller.torque", p.torque)?,
+            }),
+            None => None,
+        };
+        Ok(VehicleTable {
+            mass: self.positive("body.mass", body.mass)?,
+            weight: self.positive("body.weight", body.weight)?,
+            buoyancy: self.positive("body.buoyancy", body.buoyancy)?,
+            centre_of_gravity: vector("centre_of_gravity", body.centre_of_gravity)?,
+            centre_of_buoyancy: vector("centre_of_buoyancy", body.centre_of_buoyancy)?,
+            inertia,
+            convention,
+            added_mass_coriolis,
+            added_mass: hydro.added_mass.clone(),
+            coefficients: hydro.coefficients.clone(),
+            propeller,
+        })
+    }
+
+    fn fin(&self, table: &str, fin: &RudderTable) -> Result<Rudder, SceneError> {
+        let key = |k: &str| format!("{table}.{k}");
+        let angle = |k: &str, value: Option<f64>| {
+            value
+                .map(|v| self.positive(&key(k), v).map(f64::to_radians))
+                .transpose()
+        };
+        let max_angle = angle("max_deg", fin.max_deg)?;
+        let max_rate = angle("max_rate_deg_s", fin.max_rate_deg_s)?;
+        let time_constant = (fin.time_constant_s)
+            .map(|t| self.positive(&key("time_constant_s"), t))
+            .transpose()?;
+        if max_rate.is_some() && time_constant.is_none() {
+            return Err(self.invalid(
+                &key("max_rate_deg_s"),
+                format!("a rate limit acts on the lag's rate: give {table}.time_constant_s too"),
+            ));
+        }
+        Ok(Rudder {
+            max_angle,
+            max_rate,
+            time_constant,
+        })
+    }
+
+    fn vehicle_manoeuvre(
+        &self,
+        index: usize,
+        table: &ManoeuvreTable,
+    ) -> Result<VehicleManoeuvre, SceneError> {
+        let key = |k: &str| format!("manoeuvre[{index}].{k}");
+        if table.kind != "fin_steps" {
+            return Err(self.invalid(
+                &key("kind"),
+                format!("`{}`: expected fin_steps", table.kind),
+            ));
+        }
+        let duration = self.positive(&key("duration_s"), table.duration_s)?;
+        let n = table.times_s.len();
+        let angles = |k: &str, given: &Option<Vec<f64>>| -> Result<Vec<f64>, SceneError> {
+            let degrees = given.clone().unwrap_or_else(|| vec![0.0; n]);
+            if degrees.len() != n {
+                return Err(
+                    self.invalid(&key(k), format!("{} angles for {n} times", degrees.len()))
+                );
+            }
+            Ok(degrees.iter().map(|d| d.to_radians()).collect())
+        };
+        if table.rudder_deg.is_none() && table.stern_planes_deg.is_none() {
+            return Err(self.error(
+                &key("rudder_deg"),
+                Problem::Missing("rudder_deg or stern_planes_deg".into()),
+            ));
+        }
+        let rudder = angles("rudder_deg", &table.rudder_deg)?;
+        let stern = angles("stern_planes_deg", &table.stern_planes_deg)?;
+        let pairs = rudder.into_iter().zip(stern).map(|(r, s)| [r, s]).collect();
+        let steps = FinSteps::new(table.times_s.clone(), pairs).ok_or_else(|| {
+            self.invalid(
+                &key("times_s"),
+                "the times and angles must be finite, at least one, the times strictly \
+                 increasing",
+            )
+        })?;
+        if table.times_s[0] < 0.0 || table.times_s[0] >= duration {
+            return Err(self.invalid(&key("times_s"), "the first step must fall within the run"));
+        }
+        let name = table.name.clone().unwrap_or_else(|| "fin_steps".to_owned());
+        let valid = !name.is_empty()
+            && name
+                .chars()
+                .all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-' || c == '.')
+            && name != "."
+            && name != "..";
+        if !valid {
+            return Err(self.invalid(
+                &key("name"),
+                format!("`{name}` must be a folder name: letters, digits, _ - ."),
+            ));
+        }
+        Ok(VehicleManoeuvre {
+            name,
+            steps,
+            duration,
+        })
+    }
+
+    fn vehicle_stepping(
+        &self,
+        file: &VehicleSceneFile,
+        longest: f64,
+    ) -> Result<(Stepper, f64), SceneError> {
+        let t = &file.integrator;
+        let keys = MethodKeys {
+            method: &t.method,
+            step: t.step,
+            rtol: t.rtol,
+            atol: t.atol,
+            max_steps: t.max_steps,
+        };
+        let settings = self.method_settings(&keys, longest)?;
+        if settings.method == Method::LieMidpoint {
+            return Err(self.invalid(
+                "integrator.method",
+                "lie-midpoint integrates a free body's rotation alone; a vehicle takes euler, \
+                 symplectic-euler, rk4, dopri5 or dop853",
+            ));
+        }
+        let every = match (file.output.every, settings.step) {
+            (Some(every), _) => self.positive("output.every", every)?,
+            (None, Some(step)) => step,
+            (None, None) => {
+                return Err(self.error(
+                    "output.every",
+                    Problem::Missing(format!(
+                        "the rows' interval, s: {} chooses its own steps",
+                        settings.method.name()
+                    )),
+                ));
+            }
+        };
+        let stepper = Stepper {
+            method: settings.method,
+            step: settings.step,
+            adaptive: settings.adaptive,
+            // ν: symplectic Euler kicks the velocities first.
+            kicked: 0..6,
+        };
+        Ok((stepper, every))
+    }
+}
+
+impl VehicleScene {
+    /// Reads and checks vehicle scene text; `name` is how errors name it.
+    pub fn parse(text: &str, name: &str) -> Result<Self, SceneError> {
+        let file: VehicleSceneFile = crate::scene::read_as(text, name)?;
+        Self::from_file(&file, name)
+    }
+
+    /// Checks the tables of a vehicle scene file and builds its model.
+    pub fn from_file(file: &VehicleSceneFile, name: &str) -> Result<Self, SceneError> {
+        let check = Checker { name };
+        if file.model.family != "vehicle" {
+            return Err(check.invalid(
+                "model.family",
+                format!("`{}`: expected `vehicle`", file.model.family),
+            ));
+        }
+        let table = check.vehicle_table(file)?;
+        let model =
+            VehicleModel::new(&table).map_err(|e| check.invalid(&e.key(), e.to_string()))?;
+        let fins = Fins {
+            rudder: check.fin("rudder", &file.rudder)?,
+            stern_planes: check.fin("stern_planes", &file.stern_planes)?,
+        };
+        if file.manoeuvre.is_empty() {
+            return Err(check.error(
+                "manoeuvre",
+                Problem::Missing("at least one [[manoeuvre]]".into()),
+            ));
+        }
+        let mut manoeuvres: Vec<VehicleManoeuvre> = Vec::new();
+        for (index, table) in file.manoeuvre.iter().enumerate() {
+            let manoeuvre = check.vehicle_manoeuvre(index, table)?;
+            if manoeuvres.iter().any(|m| m.name == manoeuvre.name) {
+                return Err(check.invalid(
+                    &format!("manoeuvre[{index}].name"),
+                    format!("`{}` is taken by an earlier manoeuvre", manoeuvre.name),
+                ));
+            }
+            manoeuvres.push(manoeuvre);
+        }
+        let longest = manoeuvres.iter().map(|m| m.duration).fold(0.0, f64::max);
+        let (stepper, every) = check.vehicle_stepping(file, longest)?;
+        Ok(VehicleScene {
+            title: file.title.clone(),
+            table,
+            model,
+            fins,
+            stepper,
+            every,
+            manoeuvres,
+        })
+    }
+
+    /// The cruise every run starts from (see the module docs).
+    pub fn start(&self) -> Result<[f64; 15], VehicleError> {
+        cruise(&self.model)
+    }
+}
+
+/// The cruise: at the origin, heading north, fins at zero, u and φ found by Newton so that
+/// u̇ = ṗ = 0 on the model (its proved Jacobian, the chain rule through |u| added), from
+/// u = 1 m/s, φ = 0; converged when both rates are below 1e-13 (in m/s² and rad/s²: rounding
+/// of rates of order one).
+pub fn cruise(model: &VehicleModel) -> Result<[f64; 15], VehicleError> {
+    let state = |u: f64, phi: f64| {
+        let mut x = [0.0; 15];
+        x[0] = u;
+        x[9] = (phi / 2.0).cos();
+        x[10] = (phi / 2.0).sin();
+        x
+    };
+    let (mut u, mut phi) = (1.0, 0.0);
+    for _ in 0..50 {
+        let x = state(u, phi);
+        let f = Model::<f64, 15, 2>::rhs(model, &x, &[0.0; 2]);
+        let (r_u, r_p) = (f[0], f[3]);
+        if r_u.abs() < 1e-13 && r_p.abs() < 1e-13 {
+            return Ok(x);
+        }
+        let j = Model::<f64, 15, 2>::state_jacobian(model, &x, &[0.0; 2]);
+        let dq = [-(phi / 2.0).sin() / 2.0, (phi / 2.0).cos() / 2.0];
+        let d_phi = |row: usize| j[row][9] * dq[0] + j[row][10] * dq[1];
+        let (a, b, c, d) = (j[0][0], d_phi(0), j[3][0], d_phi(3));
+        let det = a * d - b * c;
+        if det == 0.0 || !det.is_finite() {
+            break;
+        }
+        u -= (d * r_u - b * r_p) / det;
+        phi -= (a * r_p - c * r_u) / det;
+    }
+    Err(VehicleError::invalid(
+        "propeller",
+        "no cruise: Newton on u̇ = ṗ = 0 (surge and roll) did not converge from u = 1 m/s",
+    ))
+}

@@ -1,0 +1,57 @@
+//! A vehicle's table as the scene gives it: the body, the hydrostatics, the added mass, the
+//! named force terms under a declared convention, and the propeller at its setting.
+
+use super::{AddedMassCoriolis, Convention};
+use std::collections::BTreeMap;
+
+/// The controls a vehicle's terms may hold: the rudder δ_r and the stern planes δ_s (rad),
+/// each a fin the scene's steering gear moves ([`super::fins`]).
+pub const CONTROLS: [&str; 2] = ["dr", "ds"];
+
+/// The propeller at its setting: constant thrust and torque on the body.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PropellerSetting {
+    /// X_prop, N, along body x.
+    pub thrust: f64,
+    /// K_prop, N m, about body x (the propeller's reaction on the hull).
+    pub torque: f64,
+}
+
+/// The numbers of a vehicle, checked by the scene ([`super::scene`]) and in SI.
+#[derive(Debug, Clone, PartialEq)]
+pub struct VehicleTable {
+    /// M, kg.
+    pub mass: f64,
+    /// W, N.
+    pub weight: f64,
+    /// B, N.
+    pub buoyancy: f64,
+    /// r_G from the table's origin O, m, body axes.
+    pub centre_of_gravity: [f64; 3],
+    /// r_B from O, m, body axes.
+    pub centre_of_buoyancy: [f64; 3],
+    /// I_xx, I_yy, I_zz about G, kg m², principal axes along the body axes.
+    pub inertia: [f64; 3],
+    /// How the table's names are read.
+    pub convention: Convention,
+    /// Whether the table's cross terms hold Kirchhoff's terms or eom adds them.
+    pub added_mass_coriolis: AddedMassCoriolis,
+    /// The added-mass entries by name (`Xudot`, `Yrdot`, …).
+    pub added_mass: BTreeMap<String, f64>,
+    /// The force terms by name (`Yvv`, `Yuudr`, …).
+    pub coefficients: BTreeMap<String, f64>,
+    /// The propeller, if it acts.
+    pub propeller: Option<PropellerSetting>,
+}
+
+impl VehicleTable {
+    /// The same vehicle with its propeller torque taken off (thrust kept): the vehicle whose
+    /// port and starboard turns mirror each other.
+    pub fn without_propeller_torque(&self) -> Self {
+        let mut table = self.clone();
+        if let Some(propeller) = table.propeller.as_mut() {
+            propeller.torque = 0.0;
+        }
+        table
+    }
+}

@@ -1,0 +1,325 @@
+//! The vehicle at run time: REMUS on Prestero's table (`scenes/remus100.toml`) against the
+//! shared data, its cruise against the closed forms, the turn of the thesis's Chapter 8 test,
+//! the mirror of port and starboard turns, the proved Jacobian with the chain rule through
+//! |x|, the folded table against its added mass, and bad tables each refused by key.
+
+use eom::Model;
+use eom::scene::AnyScene;
+use eom::vehicle::manoeuvre::{self, VehicleManoeuvre, VehicleRun};
+use eom::vehicle::scene::cruise;
+use eom::vehicle::summary::{CruiseSummary, StepFigures, largest_difference};
+use eom::vehicle::{VehicleModel, VehicleScene, format_folded};
+use std::path::Path;
+
+const SCENE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/remus100.toml");
+
+fn scene_text() -> String {
+    std::fs::read_to_string(SCENE).unwrap()
+}
+
+fn parse(text: &str) -> Result<VehicleScene, String> {
+    match AnyScene::parse(text, "remus100.toml", Path::new(".")) {
+        Ok(AnyScene::Vehicle(scene)) => Ok(*scene),
+        Ok(_) => Err("not read as a vehicle".into()),
+        Err(e) => Err(e.to_string()),
+    }
+}
+
+fn remus() -> VehicleScene {
+    parse(&scene_text()).unwrap()
+}
+
+fn data() -> serde_json::Value {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../shared/data/remus100_prestero.json"
+    );
+    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+}
+
+fn run_with(
+    scene: &VehicleScene,
+    model: &VehicleModel,
+    m: &VehicleManoeuvre,
+    start: [f64; 15],
+) -> VehicleRun {
+    let stepping = (&scene.stepper, scene.every);
+    manoeuvre::run(model, &scene.fins, m, start, stepping, |_| true).unwrap()
+}
+
+#[test]
+fn the_remus_scene_holds_the_shared_data_bit_for_bit() {
+    let scene = remus();
+    let data = data();
+    let number = |v: &serde_json::Value| v.as_f64().unwrap();
+    let coefficients = data["coefficients"].as_object().unwrap();
+    let table = &scene.table;
+    assert_eq!(
+        table.added_mass.len() + table.coefficients.len(),
+        coefficients.len()
+    );
+    for (name, value) in coefficients {
+        let given = table
+            .added_mass
+            .get(name)
+            .or_else(|| table.coefficients.get(name))
+            .unwrap_or_else(|| panic!("{name} missing"));
+        assert_eq!(given.to_bits(), number(value).to_bits(), "{name}");
+    }
+    let body = &data["mass_properties"];
+    assert_eq!(table.mass.to_bits(), number(&body["mass_kg"]).to_bits());
+    assert_eq!(table.weight.to_bits(), number(&body["weight_N"]).to_bits());
+    // The one number the scene changes, and says so: neutral buoyancy, as the data's note
+    // says the thesis's turning runs are.
+    assert_eq!(table.buoyancy.to_bits(), table.weight.to_bits());
+    assert!(
+        body["buoyancy_note"]
+            .as_str()
+            .unwrap()
+            .contains("buoyancy = weight")
+    );
+    for (i, axis) in ["Ixx", "Iyy", "Izz"].iter().enumerate() {
+        let value = number(&body["inertia_about_G_kg_m2"][axis]);
+        assert_eq!(table.inertia[i].to_bits(), value.to_bits(), "{axis}");
+    }
+    for i in 0..3 {
+        let g = number(&body["centre_of_gravity_m"][i]);
+        let b = number(&body["centre_of_buoyancy_m"][i]);
+        assert_eq!(table.centre_of_gravity[i].to_bits(), g.to_bits());
+        assert_eq!(table.centre_of_buoyancy[i].to_bits(), b.to_bits());
+    }
+    let propeller = table.propeller.unwrap();
+    let setting = &data["propeller_at_1500_rpm"];
+    assert_eq!(
+        propeller.thrust.to_bits(),
+        number(&setting["X_prop_N"]).to_bits()
+    );
+    assert_eq!(
+        propeller.torque.to_bits(),
+        number(&setting["K_prop_N_m"]).to_bits()
+    );
+    // Every reading that differs between the transcriptions is listed in the scene.
+    let text = scene_text();
+    for reading in data["readings_that_differ"].as_array().unwrap() {
+        let name = reading.as_str().unwrap().split(':').next().unwrap();
+        assert!(text.contains(&format!("# - {name}:")), "{name} not listed");
+    }
+}
+
+#[test]
+fn the_cruise_is_the_closed_form_speed_and_roll_trim_and_holds() {
+    let scene = remus();
+    let start = scene.start().unwrap();
+    let cruise = CruiseSummary::new(&scene, &start);
+    println!("{cruise:#?}");
+    // Newton stops when u̇ and ṗ are below 1e-13 (m/s², rad/s²); ∂u̇/∂u ≈ 0.16 /s and
+    // ∂ṗ/∂φ ≈ 24 /s², so u and φ are within 1e-12 of the trim.
+    let speed = cruise.speed_closed_form_m_s.unwrap();
+    assert!((cruise.speed_m_s - speed).abs() < 1e-11, "{cruise:?}");
+    assert!((speed - 1.5436).abs() < 1e-4, "the data's note: 1.5436 m/s");
+    let roll = cruise.roll_closed_form_deg.unwrap();
+    assert!((cruise.roll_deg - roll).abs() < 1e-9, "{cruise:?}");
+    // The propeller's torque rolls REMUS to port by about 5.3°.
+    assert!((roll + 5.3164).abs() < 1e-4, "{roll}");
+    // The cruise is a trim of the whole model: ten seconds of it leave it where it was, to
+    // the rounding of 1000 RK4 steps.
+    let run = run_with(&scene, &scene.model, &scene.manoeuvres[0], start);
+    let before = run.ends[0];
+    assert_eq!(before.t, 10.0);
+    for (i, (a, b)) in before.state.iter().zip(&start).enumerate() {
+        let moved = if i == 6 { a - b - speed * 10.0 } else { a - b };
+        assert!(moved.abs() < 1e-9, "state {i} moved by {moved:e}");
+    }
+}
+
+#[test]
+fn remus_turns_at_the_thesis_s_rate_under_four_degrees_of_rudder() {
+    let scene = remus();
+    let start = scene.start().unwrap();
+    let figures = StepFigures::of(&run_with(&scene, &scene.model, &scene.manoeuvres[0], start));
+    for f in &figures {
+        println!("{f:?}");
+    }
+    let turn = figures[1];
+    assert_eq!((turn.from_s, turn.to_s, turn.rudder_deg), (10.0, 40.0, 4.0));
+    // The thesis's figure reads about −9.0 °/s; a reading of a plot, so 0.5 °/s.
+    assert!((turn.yaw_rate_deg_s + 9.0).abs() < 0.5, "{turn:?}");
+    let back = figures[2];
+    assert!((back.yaw_rate_deg_s - 9.0).abs() < 0.5, "{back:?}");
+    // Converged: half the step moves no figure by more than 1e-6 (RK4's error at 0.01 s is
+    // of order h⁴ = 1e-8 times the motion's fourth derivative).
+    let mut finer = scene.clone();
+    finer.stepper = scene.stepper.refined();
+    let refined = StepFigures::of(&run_with(&finer, &scene.model, &scene.manoeuvres[0], start));
+    let difference = largest_difference(&figures, &refined);
+    println!("half-step difference {difference:e}");
+    assert!(difference < 1e-6, "{difference:e}");
+}
+
+#[test]
+fn port_and_starboard_turns_mirror_each_other_without_propeller_torque() {
+    let scene = remus();
+    let table = scene.table.without_propeller_torque();
+    let model = VehicleModel::new(&table).unwrap();
+    let start = cruise(&model).unwrap();
+    assert_eq!(start[10], 0.0, "no torque, no roll trim");
+    let starboard = &scene.manoeuvres[0];
+    let port = VehicleManoeuvre {
+        steps: starboard.steps.mirrored(),
+        ..starboard.clone()
+    };
+    let (a, b) = (
+        run_with(&scene, &model, starboard, start),
+        run_with(&scene, &model, &port, start),
+    );
+    // Reflected in the x–z plane: v, p, r, y, q1, q3 and the fins change sign.
+    let sign = |i: usize| {
+        if [1, 3, 5, 7, 10, 12, 13, 14].contains(&i) {
+            -1.0
+        } else {
+            1.0
+        }
+    };
+    let mut worst: f64 = 0.0;
+    for (x, y) in a.ends.iter().zip(&b.ends) {
+        for i in 0..15 {
+            worst = worst.max((x.state[i] - sign(i) * y.state[i]).abs());
+        }
+    }
+    println!("largest mirror difference {worst:e}");
+    assert!(worst < 1e-9, "{worst:e}");
+    assert!(a.ends[1].state[5].abs() > 0.1, "the vehicle turned");
+}
+
+#[test]
+fn the_model_s_jacobian_is_the_derivative_of_its_rates_with_the_sign_chain_rule() {
+    let scene = remus();
+    let model = &scene.model;
+    // A state with every entry moving, some velocities negative (|x| then −x).
+    let mut x = [
+        1.2, -0.2, 0.15, -0.3, 0.25, -0.4, 1.0, 2.0, 3.0, 0.9, 0.1, -0.2, 0.3, 0.05, -0.04,
+    ];
+    let norm = (9..13).map(|i| x[i] * x[i]).sum::<f64>().sqrt();
+    for q in &mut x[9..13] {
+        *q /= norm;
+    }
+    let input = [0.01, -0.02];
+    let exact = Model::<f64, 15, 2>::state_jacobian(model, &x, &input);
+    let mut worst: f64 = 0.0;
+    for column in 0..15 {
+        let h = 1e-6;
+        let (mut up, mut down) = (x, x);
+        up[column] += h;
+        down[column] -= h;
+        let f_up = Model::<f64, 15, 2>::rhs(model, &up, &input);
+        let f_down = Model::<f64, 15, 2>::rhs(model, &down, &input);
+        for row in 0..15 {
+            let numeric = (f_up[row] - f_down[row]) / (2.0 * h);
+            let scale = 1.0 + exact[row][column].abs();
+            worst = worst.max((numeric - exact[row][column]).abs() / scale);
+        }
+    }
+    // Central differences at h = 1e-6: truncation h² ~ 1e-12 times the third derivative,
+    // rounding 1e-16/h ~ 1e-10 times the rates (of order 100 here).
+    assert!(worst < 1e-6, "{worst:e}");
+    for (row, column) in <VehicleModel as Model<f64, 15, 2>>::STATE_JACOBIAN
+        .iter()
+        .copied()
+    {
+        assert!(row < 15 && column < 15);
+    }
+}
+
+#[test]
+fn the_folded_table_is_shown_against_its_added_mass() {
+    let scene = remus();
+    let rows = scene.model.folded();
+    println!("{}", format_folded(rows));
+    let printed: Vec<_> = rows.iter().filter(|r| r.printed.is_some()).collect();
+    let exact = printed.iter().filter(|r| r.difference == Some(0.0)).count();
+    assert_eq!((printed.len(), exact), (18, 10));
+    let mrp = rows
+        .iter()
+        .find(|r| r.name.as_deref() == Some("Mrp"))
+        .unwrap();
+    // Mrp = K_ṗ − N_ṙ: −0.0704 + 4.88 = 4.8096 against 4.86 printed.
+    assert!(
+        (mrp.implied - 4.8096).abs() < 1e-12 && (mrp.difference.unwrap() - 0.0504).abs() < 1e-12
+    );
+    let muw = rows
+        .iter()
+        .find(|r| r.name.as_deref() == Some("Muw"))
+        .unwrap();
+    assert!(
+        (muw.implied - 34.57).abs() < 1e-9,
+        "the Munk moment {}",
+        muw.implied
+    );
+}
+
+/// The scene with `from` replaced by `to` (which must be there).
+fn edited(from: &str, to: &str) -> String {
+    let text = scene_text();
+    assert!(text.contains(from), "{from}");
+    text.replacen(from, to, 1)
+}
+
+#[test]
+fn bad_tables_are_refused_naming_the_key() {
+    let cases = [
+        (
+            "Yvv = -1310.0",
+            "Yfoo = -1310.0",
+            "hydrodynamics.coefficients.Yfoo",
+        ),
+        (
+            "Yvv = -1310.0",
+            "Yvvr = -1310.0",
+            "hydrodynamics.coefficients.Yvvr",
+        ),
+        (
+            "Yuv = -28.6",
+            "Yuv = -28.6\nYvu = -28.6",
+            "hydrodynamics.coefficients.Yvu",
+        ),
+        (
+            "Nvdot = 1.93",
+            "Nvdot = 2.0",
+            "hydrodynamics.added_mass.Nvdot",
+        ),
+        ("Xudot = -0.93", "Xudot = 40.0", "hydrodynamics.added_mass"),
+        (
+            "Xuu = -1.62",
+            "Xuu = -1.62\nXudot = -0.93",
+            "hydrodynamics.coefficients.Xudot",
+        ),
+        (
+            "[integrator]",
+            "[rudder]\nmax_rate_deg_s = 20.0\n\n[integrator]",
+            "rudder.max_rate_deg_s",
+        ),
+        (
+            "convention = \"prestero\"",
+            "convention = \"abkowitz\"",
+            "hydrodynamics.convention",
+        ),
+        ("inertia = [0.177", "inertia = [-0.177", "body.inertia[0]"),
+        (
+            "kind = \"fin_steps\"",
+            "kind = \"zigzag\"",
+            "manoeuvre[0].kind",
+        ),
+    ];
+    for (from, to, key) in cases {
+        let error = parse(&edited(from, to))
+            .err()
+            .unwrap_or_else(|| panic!("{to} accepted"));
+        println!("{error}");
+        assert!(error.contains(&format!("`{key}`")), "{to}: {error}");
+    }
+    // What each refusal says of the table.
+    let not_definite = parse(&edited("Xudot = -0.93", "Xudot = 40.0")).unwrap_err();
+    assert!(not_definite.contains("not positive definite") && not_definite.contains("Xudot"));
+    let ambiguous = parse(&edited("Yvv = -1310.0", "Yvvr = -1310.0")).unwrap_err();
+    assert!(ambiguous.contains("ambiguous"), "{ambiguous}");
+}
