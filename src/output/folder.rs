@@ -184,8 +184,16 @@ impl Claim {
         if !force && !is_empty_or_eoms(folder)? {
             return Err(FolderError::NotEoms(folder.to_owned()));
         }
-        // Read before anything is written, so that a refusal leaves the folder as it was.
-        refuse_others_files(folder, planned, &earlier_entries(folder, writer))?;
+        // Read before anything is written, so that a refusal leaves the folder as it was. A
+        // run claiming the folder at this moment may have begun its files while its manifest
+        // was still being renamed into place: where the folder bears eom's marks, the lock
+        // below (busy while the other holds it) and the reading under it decide instead.
+        let before = refuse_others_files(folder, planned, &earlier_entries(folder, writer));
+        if let Err(error) = before
+            && !bears_eoms_marks(folder)
+        {
+            return Err(error);
+        }
         std::fs::create_dir_all(folder).map_err(|e| FolderError::unwritable(folder, e))?;
         let (locks, setup) = match writer {
             Writer::Whole => (vec![lock_whole(folder)?], None),
@@ -278,6 +286,16 @@ fn is_empty_or_eoms(folder: &Path) -> Result<bool, FolderError> {
         }
     }
     Ok(empty)
+}
+
+/// Whether the folder holds a lock or a manifest of eom's (of a run, or of a shard).
+fn bears_eoms_marks(folder: &Path) -> bool {
+    std::fs::read_dir(folder).is_ok_and(|entries| {
+        entries.flatten().any(|entry| {
+            let name = entry.file_name().to_string_lossy().into_owned();
+            name.starts_with(MANIFEST) || name.starts_with(LOCK)
+        })
+    })
 }
 
 /// Opens (creating it) a lock file of the folder.
