@@ -48,13 +48,13 @@
 #![deny(missing_docs)]
 
 pub mod batch;
+#[cfg(feature = "ship")]
+mod defined;
 pub mod elliptic;
 pub mod energy;
 pub mod generic;
 mod inertia;
 pub mod integrate;
-#[cfg(feature = "ship")]
-mod interpreter;
 pub mod linear;
 pub mod mass;
 pub mod models;

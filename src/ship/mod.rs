@@ -23,9 +23,10 @@
 //! symbolic engine derives 4.46 with the table's terms, solves it with the constant mass
 //! matrix inverted once, and proves the straight-line program equal to the equations, as it
 //! does for every catalog model at build time; [`model::ShipModel`] then evaluates that proved
-//! program, and is a [`Model`](crate::Model) like the catalog's (state, input, `rhs`, exact
-//! Jacobians, kinetic energy), so it runs on every integrator. A user who wants the same model compiled calls
-//! [`eom_codegen::emit::system_source`] from a `build.rs`.
+//! program, and is a [`Model`](crate::Model) like the catalog's (state, input, `rhs`, proved
+//! Jacobians, kinetic energy), so it runs on every integrator. The engine is reached through
+//! one seam, `crate::defined`. A user who wants the same model compiled calls the generator's
+//! `emit::system_source` (crate `eom-codegen`) from a `build.rs`.
 
 pub mod course;
 pub mod imo;
@@ -41,10 +42,10 @@ pub mod table;
 
 /// The added-mass derivatives' symbols and the motion variables' letters, in the generator's
 /// order (the table reads its names by them).
-pub(crate) use eom_codegen::model::ship::{ADDED_MASS, VARIABLES};
+pub(crate) use crate::defined::engine::{ADDED_MASS, VARIABLES};
 /// The table's vocabulary, from the generator that builds the model: a term, its load, the
 /// units, and about which point the yaw inertia is given.
-pub use eom_codegen::model::ship::{Force, Term, Units, YawInertia};
+pub use crate::defined::engine::{Force, Term, Units, YawInertia};
 pub use linear::{LinearModel, Nomoto};
 pub use manoeuvre::{Manoeuvre, ManoeuvreKind, ManoeuvreRun};
 pub use model::ShipModel;
@@ -66,7 +67,7 @@ pub enum ShipError {
     },
     /// The symbolic engine could not build or prove the model.
     #[error("the ship model cannot be built: {0}")]
-    Build(#[from] eom_codegen::emit::EmitError),
+    Build(#[from] crate::defined::engine::EmitError),
     /// A run that cannot go on, with the time and the reason.
     #[error("the run stopped at t = {} s: {reason}", crate::Short(*time))]
     Run {

@@ -2,7 +2,7 @@
 //! scene is read, and evaluated here.
 //!
 //! What runs is the proved straight-line program itself, through the one interpreter of
-//! scene-defined models ([`crate::interpreter`]): the right-hand side, its Jacobians ∂f/∂x and
+//! scene-defined models ([`crate::defined`]): the right-hand side, its Jacobians ∂f/∂x and
 //! ∂f/∂u, the kinetic energy, each folded back and proved against the system and its exact
 //! derivative when the scene is read, as the catalog's are when eom is built.
 //!
@@ -12,10 +12,11 @@
 
 use super::ShipError;
 use super::table::ShipTable;
-use crate::interpreter::{Interpreter, Plan, coefficient_values};
+use crate::defined::engine::{
+    ADDED_MASS, EmitError, Operations, PRIME_SCALES, ShipSpec, Units, prove_with_jacobians, ship,
+};
+use crate::defined::{Interpreter, Plan, coefficient_values};
 use crate::models::Model;
-use eom_codegen::emit::{Operations, prove_with_jacobians};
-use eom_codegen::model::ship::{ADDED_MASS, PRIME_SCALES, ShipSpec, Units, ship};
 use simba::simd::SimdRealField;
 use std::collections::BTreeMap;
 
@@ -68,8 +69,7 @@ impl ShipModel {
             yaw_inertia: table.body.yaw_inertia_about,
             terms: table.terms.keys().copied().collect(),
         };
-        let system = ship("ship", &spec)
-            .map_err(|e| ShipError::Build(eom_codegen::emit::EmitError::Model(e)))?;
+        let system = ship("ship", &spec).map_err(|e| ShipError::Build(EmitError::Model(e)))?;
         let program = prove_with_jacobians(&system)?;
         let values = parameter_values(&spec, table);
         let coefficients = coefficient_values(&system, &program, &values);

@@ -26,9 +26,7 @@ pub mod table;
 
 /// The table's vocabulary, from the generator that builds the model: how names are read,
 /// whether Kirchhoff's terms are folded, a folded coefficient against its added mass.
-pub use eom_codegen::model::vehicle::{
-    AddedMassCoriolis, Convention, FoldedComparison, format_folded,
-};
+pub use crate::defined::engine::{AddedMassCoriolis, Convention, FoldedComparison, format_folded};
 pub use fins::{FinSteps, Fins};
 pub use manoeuvre::{VehicleManoeuvre, VehicleRun};
 pub use model::VehicleModel;
@@ -48,10 +46,10 @@ pub enum VehicleError {
     },
     /// The table cannot make a model: a name not read, a mass matrix not positive definite.
     #[error("the vehicle's table: {0}")]
-    Table(#[from] eom_codegen::model::vehicle::VehicleError),
+    Table(#[from] crate::defined::engine::VehicleError),
     /// The symbolic engine could not prove the model.
     #[error("the vehicle model cannot be proved: {0}")]
-    Prove(#[from] eom_codegen::emit::EmitError),
+    Prove(#[from] crate::defined::engine::EmitError),
     /// A run that cannot go on, with the time and the reason.
     #[error("the run stopped at t = {} s: {reason}", crate::Short(*time))]
     Run {
@@ -79,7 +77,7 @@ impl VehicleError {
     /// The scene key a table's error is about: the coefficient or added-mass entry it names,
     /// else the table.
     pub fn key(&self) -> String {
-        use eom_codegen::model::vehicle::{NameError, VehicleError as Table};
+        use crate::defined::engine::{NameError, VehicleError as Table};
         let entry = |name: &str| {
             let table = if name.ends_with("dot") {
                 "added_mass"

@@ -1,6 +1,6 @@
 //! The vehicle model: the six equations about the table's origin O with its table's terms,
 //! built and proved by `eom-codegen` when the scene is read, and evaluated by the one
-//! interpreter of proved programs ([`crate::interpreter`]).
+//! interpreter of proved programs ([`crate::defined`]).
 //!
 //! The state is the generator's (ν = u, v, w, p, q, r in body axes at O; the position x, y, z
 //! of O in space axes, Z down; the quaternion q0 … q3) followed by the fins' angles δ_r, δ_s,
@@ -12,14 +12,12 @@
 
 use super::VehicleError;
 use super::table::{CONTROLS, VehicleTable};
-use crate::interpreter::{Interpreter, Plan, coefficient_values};
-use crate::models::Model;
-use eom_codegen::emit::{Operations, prove_with_jacobians};
-use eom_codegen::model::ship::Units;
-use eom_codegen::model::vehicle::{
-    FoldedComparison, InertiaAbout, Propeller, VehicleSpec, folded_comparison, vehicle,
+use crate::defined::engine::{
+    FoldedComparison, InertiaAbout, Kinematics, Operations, Propeller, Symmetry, Units,
+    VehicleSpec, folded_comparison, prove_with_jacobians, vehicle,
 };
-use eom_codegen::model::{Kinematics, Symmetry};
+use crate::defined::{Interpreter, Plan, coefficient_values};
+use crate::models::Model;
 use simba::simd::SimdRealField;
 use std::collections::BTreeMap;
 

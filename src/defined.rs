@@ -1,5 +1,11 @@
-//! The one interpreter of proved programs: what a scene-defined model (a ship's 4.46, a
-//! vehicle's six equations) evaluates once its table has been derived and proved.
+//! Scene-defined models: where the symbolic engine enters the library, and the one
+//! interpreter of the programs it proves.
+//!
+//! A ship's 4.46 and a vehicle's six equations are known only when their scene is read, so
+//! their builders (`ship::model`, `vehicle::model`) call `eom-codegen` at run time: to derive
+//! the system from the table, prove its program and Jacobians, and name the table's terms.
+//! Everything of the engine they use comes through [`engine`] here, so the library's use of it
+//! has one seam, behind the feature `ship`; and what they build, they evaluate here.
 //!
 //! What runs is the proved straight-line program itself ([`Program`]): the arena of shared
 //! nodes the emitter writes as Rust for a catalog model, with its functions (the right-hand
@@ -10,9 +16,24 @@
 //! dual numbers. The program's variables (state, inputs, and whatever the model computes from
 //! the state, like a ship's U) are read from one slice whose order the model chooses.
 
-use eom_codegen::emit::program::{Function, Node, Program};
-use eom_codegen::model::System;
-use eom_codegen::symbolic::Expr;
+use engine::{Expr, Function, Node, Program, System};
+
+/// What the builders of scene-defined models use of the symbolic engine, and the table
+/// vocabularies the library re-exports from it (`ship::{Force, Term, Units, YawInertia}`,
+/// `vehicle::{Convention, …}`).
+pub(crate) mod engine {
+    pub use eom_codegen::emit::program::{Function, Node, Program};
+    pub use eom_codegen::emit::{EmitError, Operations, prove_with_jacobians};
+    pub use eom_codegen::model::ship::{
+        ADDED_MASS, Force, PRIME_SCALES, ShipSpec, Term, Units, VARIABLES, YawInertia, ship,
+    };
+    pub use eom_codegen::model::vehicle::{
+        AddedMassCoriolis, Convention, FoldedComparison, InertiaAbout, NameError, Propeller,
+        VehicleError, VehicleSpec, folded_comparison, format_folded, vehicle,
+    };
+    pub use eom_codegen::model::{Kinematics, Symmetry, System};
+    pub use eom_codegen::symbolic::Expr;
+}
 use simba::simd::SimdRealField;
 use std::collections::BTreeMap;
 
