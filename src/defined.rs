@@ -57,6 +57,37 @@ pub(crate) struct Interpreter {
     ops: Vec<Op>,
 }
 
+/// The functions of a proved program a scene-defined model evaluates, and where each
+/// Jacobian entry sits.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Functions {
+    pub(crate) rhs: Plan,
+    pub(crate) kinetic_energy: Plan,
+    pub(crate) state_jacobian: Plan,
+    pub(crate) input_jacobian: Plan,
+    /// (row, column) of each output of the state Jacobian.
+    pub(crate) state_pattern: Vec<(usize, usize)>,
+    /// (row, column) of each output of the input Jacobian.
+    pub(crate) input_pattern: Vec<(usize, usize)>,
+}
+
+impl Functions {
+    /// The functions of `program`, which must have been built with its Jacobians and have a
+    /// kinetic energy; else the name of what it lacks.
+    pub(crate) fn of(program: &Program) -> Result<Self, &'static str> {
+        let jacobians = program.jacobians.as_ref().ok_or("Jacobians")?;
+        let energy = program.kinetic_energy.as_ref().ok_or("kinetic energy")?;
+        Ok(Functions {
+            rhs: Plan::of(program, &program.rhs),
+            kinetic_energy: Plan::of(program, energy),
+            state_jacobian: Plan::of(program, &jacobians.state),
+            input_jacobian: Plan::of(program, &jacobians.input),
+            state_pattern: jacobians.state_pattern.clone(),
+            input_pattern: jacobians.input_pattern.clone(),
+        })
+    }
+}
+
 /// What one function of the program evaluates: the nodes its outputs need, in the arena's
 /// order (every operand before its user), and its outputs.
 #[derive(Debug, Clone, PartialEq)]

@@ -15,7 +15,7 @@ use super::table::ShipTable;
 use crate::defined::engine::{
     ADDED_MASS, EmitError, Operations, PRIME_SCALES, ShipSpec, Units, prove_with_jacobians, ship,
 };
-use crate::defined::{Interpreter, Plan, coefficient_values};
+use crate::defined::{Functions, Interpreter, Plan, coefficient_values};
 use crate::models::Model;
 use simba::simd::SimdRealField;
 use std::collections::BTreeMap;
@@ -48,13 +48,7 @@ const INPUT_JACOBIAN: [(usize, usize); 1] = [(6, 0)];
 #[derive(Debug, Clone)]
 pub struct ShipModel {
     program: Interpreter,
-    rhs: Plan,
-    kinetic_energy: Plan,
-    state_jacobian: Plan,
-    input_jacobian: Plan,
-    /// Where each output of the Jacobians sits: (row, column).
-    state_pattern: Vec<(usize, usize)>,
-    input_pattern: Vec<(usize, usize)>,
+    functions: Functions,
     /// The column of U among the program's inputs (prime tables), after δ̇'s.
     speed_input: Option<usize>,
     operations: Operations,
@@ -82,16 +76,10 @@ impl ShipModel {
         let interpreter = Interpreter::new(&program, &coefficients, position).map_err(|name| {
             ShipError::invalid("hydrodynamics", format!("the program reads `{name}`"))
         })?;
-        let built = |what: &str| ShipError::invalid("hydrodynamics", format!("no {what}"));
-        let jacobians = (program.jacobians.as_ref()).ok_or_else(|| built("Jacobians"))?;
-        let energy = (program.kinetic_energy.as_ref()).ok_or_else(|| built("kinetic energy"))?;
+        let functions = Functions::of(&program)
+            .map_err(|what| ShipError::invalid("hydrodynamics", format!("no {what}")))?;
         Ok(ShipModel {
-            rhs: Plan::of(&program, &program.rhs),
-            kinetic_energy: Plan::of(&program, energy),
-            state_jacobian: Plan::of(&program, &jacobians.state),
-            input_jacobian: Plan::of(&program, &jacobians.input),
-            state_pattern: jacobians.state_pattern.clone(),
-            input_pattern: jacobians.input_pattern.clone(),
+            functions,
             speed_input: system.inputs.iter().position(|i| *i == "U"),
             operations: program.operations(&program.rhs),
             terms: spec.terms.len(),
@@ -122,14 +110,14 @@ impl ShipModel {
         delta_rate: T,
     ) -> ([[T; 7]; 7], [[T; 1]; 7]) {
         let mut by_state = [[T::zero(); 7]; 7];
-        let entries = self.evaluate(&self.state_jacobian, state, delta_rate);
-        for (&(row, column), value) in self.state_pattern.iter().zip(entries) {
+        let entries = self.evaluate(&self.functions.state_jacobian, state, delta_rate);
+        for (&(row, column), value) in self.functions.state_pattern.iter().zip(entries) {
             by_state[row][column] = value;
         }
         let mut by_input = [[T::zero(); 1]; 7];
         let speed = (state[0] * state[0] + state[1] * state[1]).simd_sqrt();
-        let entries = self.evaluate(&self.input_jacobian, state, delta_rate);
-        for (&(row, column), value) in self.input_pattern.iter().zip(entries) {
+        let entries = self.evaluate(&self.functions.input_jacobian, state, delta_rate);
+        for (&(row, column), value) in self.functions.input_pattern.iter().zip(entries) {
             if Some(column) == self.speed_input {
                 // ∂U/∂u = u/U, ∂U/∂v = v/U.
                 by_state[row][0] += value * (state[0] / speed);
@@ -189,7 +177,7 @@ impl<T: SimdRealField + Copy> Model<T, 7, 1> for ShipModel {
 
     /// The rates of the state with the rudder moving at `input[0]`: the proved program.
     fn rhs(&self, state: &[T; 7], input: &[T; 1]) -> [T; 7] {
-        let mut rates = self.evaluate(&self.rhs, state, input[0]);
+        let mut rates = self.evaluate(&self.functions.rhs, state, input[0]);
         std::array::from_fn(|_| rates.next().unwrap_or_else(T::zero))
     }
 
@@ -197,7 +185,10 @@ impl<T: SimdRealField + Copy> Model<T, 7, 1> for ShipModel {
     /// I_z about G), in J (a prime table's body scaled to SI), the program's proved form; the
     /// fluid's share (the added mass) is not in it.
     fn kinetic_energy(&self, state: &[T; 7]) -> T {
-        (self.evaluate(&self.kinetic_energy, state, T::zero()).next()).unwrap_or_else(T::zero)
+        (self
+            .evaluate(&self.functions.kinetic_energy, state, T::zero())
+            .next())
+        .unwrap_or_else(T::zero)
     }
 
     /// ∂f/∂x: the proved Jacobian program (see the module docs for U).

@@ -473,11 +473,17 @@ impl Checker<'_> {
         })
     }
 
-    /// The method, read by the checker of every scene's `[integrator]` over the longest
-    /// manoeuvre, and the rows' interval: `output.every`, or the step where absent (an
-    /// adaptive method has none, so it needs `output.every`).
-    fn stepping(&self, file: &ShipSceneFile, longest: f64) -> Result<(Stepper, f64), SceneError> {
-        let t = &file.integrator;
+    /// The method of a scene-defined model's manoeuvres (a ship's, a vehicle's: `what` names
+    /// it in the message, `kicked` are its velocities), read by the checker of every scene's
+    /// `[integrator]` over the longest manoeuvre, and the rows' interval: `output.every`, or
+    /// the step where absent (an adaptive method has none, so it needs `output.every`).
+    pub(crate) fn stepping(
+        &self,
+        (integrator, output): (&IntegratorTable, &OutputTable),
+        longest: f64,
+        (what, kicked): (&str, std::ops::Range<usize>),
+    ) -> Result<(Stepper, f64), SceneError> {
+        let t = integrator;
         let keys = MethodKeys {
             method: &t.method,
             step: t.step,
@@ -489,11 +495,13 @@ impl Checker<'_> {
         if settings.method == Method::LieMidpoint {
             return Err(self.invalid(
                 "integrator.method",
-                "lie-midpoint integrates a free body's rotation alone; a ship takes euler, \
-                 symplectic-euler, rk4, dopri5 or dop853",
+                format!(
+                    "lie-midpoint integrates a free body's rotation alone; {what} takes euler, \
+                     symplectic-euler, rk4, dopri5 or dop853"
+                ),
             ));
         }
-        let every = match (file.output.every, settings.step) {
+        let every = match (output.every, settings.step) {
             (Some(every), _) => self.positive("output.every", every)?,
             (None, Some(step)) => step,
             (None, None) => {
@@ -510,8 +518,7 @@ impl Checker<'_> {
             method: settings.method,
             step: settings.step,
             adaptive: settings.adaptive,
-            // u, v, r: symplectic Euler kicks the velocities first.
-            kicked: 0..3,
+            kicked,
         };
         Ok((stepper, every))
     }
@@ -806,7 +813,9 @@ impl ShipScene {
             manoeuvres.push(manoeuvre);
         }
         let longest = manoeuvres.iter().map(|m| m.duration).fold(0.0, f64::max);
-        let (stepper, every) = check.stepping(file, longest)?;
+        // u, v, r: symplectic Euler kicks the velocities first.
+        let (stepper, every) =
+            check.stepping((&file.integrator, &file.output), longest, ("a ship", 0..3))?;
         Ok(ShipScene {
             title: file.title.clone(),
             length,

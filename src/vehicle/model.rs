@@ -16,7 +16,7 @@ use crate::defined::engine::{
     FoldedComparison, InertiaAbout, Kinematics, Operations, Propeller, Symmetry, Units,
     VehicleSpec, folded_comparison, prove_with_jacobians, vehicle,
 };
-use crate::defined::{Interpreter, Plan, coefficient_values};
+use crate::defined::{Functions, Interpreter, coefficient_values};
 use crate::models::Model;
 use simba::simd::SimdRealField;
 use std::collections::BTreeMap;
@@ -72,12 +72,7 @@ const INPUT_JACOBIAN: [(usize, usize); 2] = [(13, 0), (14, 1)];
 #[derive(Debug, Clone)]
 pub struct VehicleModel {
     program: Interpreter,
-    rhs: Plan,
-    kinetic_energy: Plan,
-    state_jacobian: Plan,
-    input_jacobian: Plan,
-    state_pattern: Vec<(usize, usize)>,
-    input_pattern: Vec<(usize, usize)>,
+    functions: Functions,
     /// For each program input, what it is.
     inputs: Vec<Variable>,
     operations: Operations,
@@ -181,16 +176,10 @@ impl VehicleModel {
         let interpreter = Interpreter::new(&program, &coefficients, position).map_err(|name| {
             VehicleError::invalid("hydrodynamics", format!("the program reads `{name}`"))
         })?;
-        let built = |what: &str| VehicleError::invalid("hydrodynamics", format!("no {what}"));
-        let jacobians = (program.jacobians.as_ref()).ok_or_else(|| built("Jacobians"))?;
-        let energy = (program.kinetic_energy.as_ref()).ok_or_else(|| built("kinetic energy"))?;
+        let functions = Functions::of(&program)
+            .map_err(|what| VehicleError::invalid("hydrodynamics", format!("no {what}")))?;
         Ok(VehicleModel {
-            rhs: Plan::of(&program, &program.rhs),
-            kinetic_energy: Plan::of(&program, energy),
-            state_jacobian: Plan::of(&program, &jacobians.state),
-            input_jacobian: Plan::of(&program, &jacobians.input),
-            state_pattern: jacobians.state_pattern.clone(),
-            input_pattern: jacobians.input_pattern.clone(),
+            functions,
             inputs,
             operations: program.operations(&program.rhs),
             terms: spec.terms.len(),
@@ -214,12 +203,16 @@ impl VehicleModel {
     fn jacobians<T: SimdRealField + Copy>(&self, state: &[T; 15]) -> ([[T; 15]; 15], [[T; 2]; 15]) {
         let variables = self.variables(state);
         let mut by_state = [[T::zero(); 15]; 15];
-        let entries = self.program.evaluate(&self.state_jacobian, &variables);
-        for (&(row, column), value) in self.state_pattern.iter().zip(entries) {
+        let entries = self
+            .program
+            .evaluate(&self.functions.state_jacobian, &variables);
+        for (&(row, column), value) in self.functions.state_pattern.iter().zip(entries) {
             by_state[row][column] = value;
         }
-        let entries = self.program.evaluate(&self.input_jacobian, &variables);
-        for (&(row, column), value) in self.input_pattern.iter().zip(entries) {
+        let entries = self
+            .program
+            .evaluate(&self.functions.input_jacobian, &variables);
+        for (&(row, column), value) in self.functions.input_pattern.iter().zip(entries) {
             match self.inputs[column] {
                 Variable::Fin(i) => by_state[row][i] += value,
                 Variable::Absolute(i) => by_state[row][i] += value * state[i].simd_signum(),
@@ -274,7 +267,7 @@ impl<T: SimdRealField + Copy> Model<T, 15, 2> for VehicleModel {
     /// fins' rates.
     fn rhs(&self, state: &[T; 15], input: &[T; 2]) -> [T; 15] {
         let variables = self.variables(state);
-        let mut rates = self.program.evaluate(&self.rhs, &variables);
+        let mut rates = self.program.evaluate(&self.functions.rhs, &variables);
         std::array::from_fn(|i| match i {
             13 => input[0],
             14 => input[1],
@@ -288,7 +281,7 @@ impl<T: SimdRealField + Copy> Model<T, 15, 2> for VehicleModel {
         let variables = self.variables(state);
         (self
             .program
-            .evaluate(&self.kinetic_energy, &variables)
+            .evaluate(&self.functions.kinetic_energy, &variables)
             .next())
         .unwrap_or_else(T::zero)
     }

@@ -52,9 +52,9 @@ use super::manoeuvre::VehicleManoeuvre;
 use super::model::VehicleModel;
 use super::table::{PropellerSetting, VehicleTable};
 use super::{AddedMassCoriolis, Convention, VehicleError};
-use crate::integrate::{Method, Stepper};
+use crate::integrate::Stepper;
 use crate::models::Model;
-use crate::scene::check::{Checker, MethodKeys};
+use crate::scene::check::Checker;
 use crate::scene::{Problem, SceneError};
 use crate::ship::scene::{IntegratorTable, OutputTable, RudderTable};
 use serde::Deserialize;
@@ -325,50 +325,6 @@ impl Checker<'_> {
             duration,
         })
     }
-
-    fn vehicle_stepping(
-        &self,
-        file: &VehicleSceneFile,
-        longest: f64,
-    ) -> Result<(Stepper, f64), SceneError> {
-        let t = &file.integrator;
-        let keys = MethodKeys {
-            method: &t.method,
-            step: t.step,
-            rtol: t.rtol,
-            atol: t.atol,
-            max_steps: t.max_steps,
-        };
-        let settings = self.method_settings(&keys, longest)?;
-        if settings.method == Method::LieMidpoint {
-            return Err(self.invalid(
-                "integrator.method",
-                "lie-midpoint integrates a free body's rotation alone; a vehicle takes euler, \
-                 symplectic-euler, rk4, dopri5 or dop853",
-            ));
-        }
-        let every = match (file.output.every, settings.step) {
-            (Some(every), _) => self.positive("output.every", every)?,
-            (None, Some(step)) => step,
-            (None, None) => {
-                return Err(self.error(
-                    "output.every",
-                    Problem::Missing(format!(
-                        "the rows' interval, s: {} chooses its own steps",
-                        settings.method.name()
-                    )),
-                ));
-            }
-        };
-        let stepper = Stepper {
-            method: settings.method,
-            step: settings.step,
-            adaptive: settings.adaptive,
-            // ν: symplectic Euler kicks the velocities first.
-            kicked: 0..6,
-        };
-        Ok((stepper, every))
-    }
 }
 
 impl VehicleScene {
@@ -412,7 +368,12 @@ impl VehicleScene {
             manoeuvres.push(manoeuvre);
         }
         let longest = manoeuvres.iter().map(|m| m.duration).fold(0.0, f64::max);
-        let (stepper, every) = check.vehicle_stepping(file, longest)?;
+        // ν: symplectic Euler kicks the velocities first.
+        let (stepper, every) = check.stepping(
+            (&file.integrator, &file.output),
+            longest,
+            ("a vehicle", 0..6),
+        )?;
         Ok(VehicleScene {
             title: file.title.clone(),
             table,
