@@ -115,6 +115,13 @@ pub enum IntegrateError {
         /// The time reached.
         t: f64,
     },
+    /// A method was given without a setting it needs: a fixed step, or an adaptive method's
+    /// tolerances.
+    #[error("the method needs its {what}")]
+    MissingSetting {
+        /// What is missing.
+        what: &'static str,
+    },
     /// A method that integrates one kind of system only (the Lie midpoint method: a free
     /// body's rotation) was given another.
     #[error("{method} integrates a free body's rotation alone, not this system")]

@@ -94,6 +94,12 @@ pub(crate) struct Hooks<'a, const N: usize> {
     pub(crate) row_at_stop: bool,
 }
 
+/// A `Stepper` built by hand without the setting its method needs (the scene checkers always
+/// give it): an error, not a panic.
+fn missing(what: &'static str) -> IntegrateError {
+    IntegrateError::MissingSetting { what }
+}
+
 /// Adds one run's counts to a total.
 pub(crate) fn add(total: &mut Stats, stats: Stats) {
     total.steps += stats.steps;
@@ -118,7 +124,12 @@ pub(crate) fn advance<S: OdeSystem<f64, N>, const N: usize>(
             row_at_end,
             row_at_stop,
         } = hooks;
-        let options = stepper.adaptive.expect("an adaptive method has options");
+        let Some(options) = stepper.adaptive else {
+            return (
+                Err(missing("adaptive options (rtol, atol)")),
+                Stats::default(),
+            );
+        };
         let stop = |t: f64, y: &SVector<f64, N>| stop.is_some_and(|stop| stop(t, y));
         macro_rules! sampled {
             ($method:ident) => {{
@@ -134,7 +145,9 @@ pub(crate) fn advance<S: OdeSystem<f64, N>, const N: usize>(
             _ => sampled!(Dop853),
         };
     }
-    let step = stepper.step.expect("a fixed-step method has a step");
+    let Some(step) = stepper.step else {
+        return (Err(missing("step")), Stats::default());
+    };
     match method {
         Method::Euler => fixed_steps(&mut Euler::new(step), system, interval, rows, hooks),
         Method::Rk4 => fixed_steps(&mut Rk4::new(step), system, interval, rows, hooks),
@@ -303,5 +316,63 @@ fn last_row<const N: usize>(
         Ok(reached)
     } else {
         Err(IntegrateError::Stopped { t: reached.t })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Vector1;
+
+    /// A stepper built by hand without its step or its tolerances is an error, not a panic;
+    /// with them, a stretch of ẏ = 1 reaches its end with its rows on k·every.
+    #[test]
+    fn a_stepper_without_its_setting_is_an_error() {
+        let system = |_t: f64, _y: &Vector1<f64>, dy: &mut Vector1<f64>| dy[0] = 1.0;
+        let mut rows_seen = Vec::new();
+        let mut run = |stepper: &Stepper| {
+            let mut rows = RowClock::new(0.0, 0.25);
+            let hooks = Hooks {
+                check: &mut |_, _| true,
+                stop: None,
+                emit: &mut |t, _| {
+                    rows_seen.push(t);
+                    true
+                },
+                row_at_end: true,
+                row_at_stop: true,
+            };
+            advance(
+                stepper,
+                &system,
+                (0.0, Vector1::new(0.0), 1.0),
+                &mut rows,
+                hooks,
+            )
+            .0
+        };
+        for method in [Method::Rk4, Method::Dop853] {
+            let bare = Stepper {
+                method,
+                step: None,
+                adaptive: None,
+                kicked: 0..1,
+            };
+            assert!(matches!(
+                run(&bare),
+                Err(IntegrateError::MissingSetting { .. })
+            ));
+        }
+        let rk4 = Stepper {
+            method: Method::Rk4,
+            step: Some(0.1),
+            adaptive: None,
+            kicked: 0..1,
+        };
+        let reached = run(&rk4).unwrap();
+        assert_eq!((reached.t, reached.stopped), (1.0, false));
+        // RK4 integrates a constant rate exactly, up to the rounding of 12 steps' sums.
+        assert!((reached.state[0] - 1.0).abs() <= 4.0 * f64::EPSILON);
+        assert_eq!(rows_seen, [0.0, 0.25, 0.5, 0.75, 1.0]);
     }
 }
