@@ -12,11 +12,15 @@
 //! | the generated models, one type per catalog entry | [`models`]: [`Model`], [`Loads`], [`Constant`], [`AnyModel`] |
 //! | the independent nalgebra forms they are checked against | [`generic`] |
 //! | many bodies of one model in SIMD lanes, stepped together | [`batch`] |
-//! | integrators: one trait, tableaux over one adaptive driver | [`integrate`]: [`Integrator`], [`OdeSystem`], [`Dop853`], [`Dopri5`], [`Rk4`], … |
+//! | integrators: one trait, tableaux over one adaptive driver, and the one driver of a run's stretches (any method, events located where they first hold) | [`integrate`]: [`Integrator`], [`OdeSystem`], [`Dop853`], [`Dopri5`], [`Rk4`], `Stepper`, … |
+//! | scenes as data: one entry for a scene of either kind, one checker, sweeps and shards | [`scene`]: `AnyScene`, `Scene` |
+//! | a scene run: rows to a sink, the guards, the trade-off | [`run`] |
+//! | linearisation of any model: the operating point, A and B from the proved Jacobians, the modes | [`linear`] |
 //! | exact solutions and invariants for judging runs | [`reference`](mod@reference), [`energy`], [`elliptic`] |
 //! | the swing test: radius of gyration from a pendulum's period | [`swing`] |
 //! | ship manoeuvring: a hydrodynamic table on 4.46, the rudder, the standard manoeuvres, IMO criteria, Nomoto (feature `ship`) | `ship` |
 //! | underwater vehicles in six degrees of freedom on their own tables: the model, fins, step manoeuvres (feature `ship`) | `vehicle` |
+//! | where the symbolic engine enters for the scene-defined models, and the one interpreter of their proved programs (feature `ship`) | `defined` (private) |
 //! | what a run writes: its output folder, the trajectory (CSV) and the summary (JSON) | [`output`] |
 //!
 //! The `eom` command is a crate of its own (`eom-cli`): its plots, its 3-D view and its

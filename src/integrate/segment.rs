@@ -30,11 +30,11 @@ use super::{
 use nalgebra::SVector;
 use std::ops::Range;
 
-/// A run's method with its settings: what [`advance`] steps with.
+/// A run's method with its settings: what a run's stretches are stepped with.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Stepper {
     /// The method. [`Method::LieMidpoint`] is not a general method (it integrates a free
-    /// body's rotation alone) and is refused by [`advance`].
+    /// body's rotation alone) and is refused here.
     pub method: Method,
     /// The step of a fixed-step method, s.
     pub step: Option<f64>,

@@ -14,7 +14,7 @@
 //! afresh from it (its step-size heuristic, its first stage), as it must after a
 //! discontinuity; the rows go on at k·every across the cuts.
 //!
-//! A scene's stop condition (`integrator.stop_when`, [`StopCondition`]) is evaluated at the
+//! A scene's stop condition (`integrator.stop_when`, [`StopCondition`](crate::scene::StopCondition)) is evaluated at the
 //! end of every step. On the step where it first holds, the first time it holds is found by
 //! bisection to adjacent floating-point numbers: on the dense output of an adaptive method,
 //! and for a fixed-step method by taking the one step again from its start to each trial

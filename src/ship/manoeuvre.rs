@@ -2,12 +2,12 @@
 //!
 //! A manoeuvre is the ship model ([`ShipModel`], a [`Model`] like the catalog's) under the
 //! steering gear's loads ([`Steering`]: the rudder's rate from its command), integrated by
-//! [`segment::advance`], the driver every scene runs on, with any of its methods. The run is
+//! `segment::advance`, the driver every scene runs on, with any of its methods. The run is
 //! cut into stretches at the instants its **schedule** changes the command (the execute, a
 //! pull-out's release, a series' breakpoints) and at its **events**, instants the state
 //! defines: the heading has changed by 90° (advance, transfer), the heading has passed ±ψ_a
 //! (the zig-zag reverses the rudder), the yaw rate is zero (an overshoot is largest). An event
-//! is a zero crossing of a function g of the state ([`Watch`]), located by the driver where g
+//! is a zero crossing of a function g of the state (`Watch`), located by the driver where g
 //! first has changed sign, to adjacent floating-point numbers of t on the integrator's own
 //! solution (the dense output of an adaptive method, the step taken again for a fixed-step
 //! one). So the figures are those of the integrated solution at the crossing, not at the

@@ -2,7 +2,7 @@
 //! scene is read, and evaluated here.
 //!
 //! What runs is the proved straight-line program itself, through the one interpreter of
-//! scene-defined models ([`crate::defined`]): the right-hand side, its Jacobians ∂f/∂x and
+//! scene-defined models (`crate::defined`): the right-hand side, its Jacobians ∂f/∂x and
 //! ∂f/∂u, the kinetic energy, each folded back and proved against the system and its exact
 //! derivative when the scene is read, as the catalog's are when eom is built.
 //!

@@ -1,5 +1,5 @@
 //! A vehicle's manoeuvre: its fins under step commands, integrated by the one driver
-//! ([`segment::advance`], any method), and the figures read where the commands change.
+//! (`integrate::segment::advance`, any method), and the figures read where the commands change.
 //!
 //! The run is cut into stretches at the instants the commands change, so each stretch holds
 //! its commands and ends exactly at the next change: the figures of a step (the yaw rate, the

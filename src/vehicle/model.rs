@@ -1,6 +1,6 @@
 //! The vehicle model: the six equations about the table's origin O with its table's terms,
 //! built and proved by `eom-codegen` when the scene is read, and evaluated by the one
-//! interpreter of proved programs ([`crate::defined`]).
+//! interpreter of proved programs (`crate::defined`).
 //!
 //! The state is the generator's (ν = u, v, w, p, q, r in body axes at O; the position x, y, z
 //! of O in space axes, Z down; the quaternion q0 … q3) followed by the fins' angles δ_r, δ_s,
@@ -275,7 +275,7 @@ impl<T: SimdRealField + Copy> Model<T, 15, 2> for VehicleModel {
         })
     }
 
-    /// T = ½M|v + ω × r_G|² + ½ωᵀ[I_G]ω + ½νᵀM_Aν, the body's and the fluid's, in J: the
+    /// T = ½M|v + ω × r_G|² + ½ωᵀ I_G ω + ½νᵀM_Aν, the body's and the fluid's, in J: the
     /// program's proved form.
     fn kinetic_energy(&self, state: &[T; 15]) -> T {
         let variables = self.variables(state);
