@@ -5,8 +5,9 @@
 //! `vehicle`, chained). Three things are made from it, so that they cannot disagree: the
 //! family check of a scene file (a key another family reads is refused, [`table_keys`]), the
 //! commented TOML template `eom new FAMILY` prints ([`template`]), and the reference page
-//! `docs/scenes.md` ([`markdown`], printed by `eom new --reference`). The tests keep the table and the serde schema of
-//! [`file`](super::file) and the ship scene in step, both ways, and run every template.
+//! `docs/scenes.md` ([`markdown`], printed by `eom new --reference`). The tests keep the
+//! table and the serde schema of [`file`](super::file) and the ship scene in step, both ways,
+//! and run every template.
 
 mod catalog;
 mod markdown;
