@@ -76,12 +76,7 @@ impl TrajectoryWriter {
         expected_rows: usize,
     ) -> std::io::Result<Self> {
         let mut file = File::create(path)?;
-        let mut header = vec![with_unit("t", TIME_UNIT)];
-        header.extend(state_names.iter().map(|name| state_with_unit(name)));
-        header.push(with_unit("kinetic_energy", ENERGY_UNIT));
-        if with_potential {
-            header.extend(["potential_energy", "total_energy"].map(|n| with_unit(n, ENERGY_UNIT)));
-        }
+        let header = header(state_names, with_potential);
         file.write_all(format!("{}\n", header.join(",")).as_bytes())?;
         Ok(Self {
             path: path.to_owned(),
@@ -199,6 +194,23 @@ impl Sink for TrajectoryWriter {
         }
         true
     }
+}
+
+/// The columns of `trajectory.csv` as [`TrajectoryWriter`] labels them: `t`, each state
+/// entry by its name, `kinetic_energy`, and `potential_energy`, `total_energy` where
+/// `with_potential`, each with its unit.
+pub fn header(state_names: &[impl AsRef<str>], with_potential: bool) -> Vec<String> {
+    let mut header = vec![with_unit("t", TIME_UNIT)];
+    header.extend(
+        state_names
+            .iter()
+            .map(|name| state_with_unit(name.as_ref())),
+    );
+    header.push(with_unit("kinetic_energy", ENERGY_UNIT));
+    if with_potential {
+        header.extend(["potential_energy", "total_energy"].map(|n| with_unit(n, ENERGY_UNIT)));
+    }
+    header
 }
 
 /// Appends `x` as every trajectory file writes a number: in Rust's shortest form that reads

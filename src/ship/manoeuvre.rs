@@ -24,7 +24,7 @@ use super::side::Side;
 use super::spiral::{Progress, ReverseSpiral, Spiral, SpiralCurve};
 use crate::integrate::segment::{self, Hooks, add};
 use crate::integrate::{IntegrateError, OdeSystem, Reached, RowClock, Stats, Stepper};
-use crate::models::{Driven, ENERGY_UNIT, Loads, Model, TIME_UNIT, state_with_unit, with_unit};
+use crate::models::{Driven, Loads, Model};
 use nalgebra::SVector;
 use std::f64::consts::PI;
 
@@ -143,10 +143,7 @@ pub const ROW: [&str; 9] = [
 /// The columns of a manoeuvre's `trajectory.csv`, as every run's trajectory writer labels
 /// them ([`crate::models::with_unit`]): t, [`ROW`], and the rigid body's kinetic energy.
 pub fn trajectory_columns() -> Vec<String> {
-    let mut columns = vec![with_unit("t", TIME_UNIT)];
-    columns.extend(ROW.iter().map(|name| state_with_unit(name)));
-    columns.push(with_unit("kinetic_energy", ENERGY_UNIT));
-    columns
+    crate::output::trajectory::header(&ROW, false)
 }
 
 impl Sample {

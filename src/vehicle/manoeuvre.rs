@@ -12,7 +12,7 @@ use super::fins::{FinSteps, Fins, Steering};
 use super::model::VehicleModel;
 use crate::integrate::segment::{self, Hooks, add};
 use crate::integrate::{IntegrateError, RowClock, Stats, Stepper};
-use crate::models::{ENERGY_UNIT, Model, TIME_UNIT, state_with_unit, with_unit};
+use crate::models::Model;
 use nalgebra::SVector;
 
 /// One manoeuvre of a scene: the fins' steps, from the cruise.
@@ -68,10 +68,7 @@ pub const ROW: [&str; 20] = [
 /// The columns of a manoeuvre's `trajectory.csv`: t, [`ROW`], and the kinetic energy of the
 /// body and the fluid.
 pub fn trajectory_columns() -> Vec<String> {
-    let mut columns = vec![with_unit("t", TIME_UNIT)];
-    columns.extend(ROW.iter().map(|name| state_with_unit(name)));
-    columns.push(with_unit("kinetic_energy", ENERGY_UNIT));
-    columns
+    crate::output::trajectory::header(&ROW, false)
 }
 
 impl Sample {
