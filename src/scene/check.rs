@@ -296,6 +296,26 @@ impl Checker<'_> {
         }
     }
 
+    /// One of `choices` by the word a scene-defined table gives, or the error naming `key`
+    /// that the tables' words have always given: "`x`: expected `a` or `b`".
+    pub(crate) fn word<V: Copy, const K: usize>(
+        &self,
+        key: &str,
+        given: &str,
+        choices: [(V, &str); K],
+    ) -> Result<V, SceneError> {
+        if let Some((value, _)) = choices.iter().find(|(_, name)| *name == given) {
+            return Ok(*value);
+        }
+        let names: Vec<String> = choices.iter().map(|(_, n)| format!("`{n}`")).collect();
+        let listed = match names.split_last() {
+            Some((last, [])) => last.clone(),
+            Some((last, rest)) => format!("{} or {last}", rest.join(", ")),
+            None => String::new(),
+        };
+        Err(self.invalid(key, format!("`{given}`: expected {listed}")))
+    }
+
     /// One of `values` by its name, or an error listing the names.
     fn named<V: Copy, const K: usize>(
         &self,

@@ -391,26 +391,19 @@ impl Checker<'_> {
 
     fn table(&self, file: &ShipSceneFile) -> Result<(ShipTable, f64), SceneError> {
         let hydro = &file.hydrodynamics;
-        let units = match hydro.units.as_str() {
-            "prime" => Units::Prime,
-            "dimensional" => Units::Dimensional,
-            other => {
-                return Err(self.invalid(
-                    "hydrodynamics.units",
-                    format!("`{other}`: expected `prime` or `dimensional`"),
-                ));
-            }
-        };
-        let rigid_body_terms = match hydro.rigid_body_terms.as_str() {
-            "folded" => RigidBodyTerms::Folded,
-            "separate" => RigidBodyTerms::Separate,
-            other => {
-                return Err(self.invalid(
-                    "hydrodynamics.rigid_body_terms",
-                    format!("`{other}`: expected `folded` or `separate`"),
-                ));
-            }
-        };
+        let units = self.word(
+            "hydrodynamics.units",
+            &hydro.units,
+            [(Units::Prime, "prime"), (Units::Dimensional, "dimensional")],
+        )?;
+        let rigid_body_terms = self.word(
+            "hydrodynamics.rigid_body_terms",
+            &hydro.rigid_body_terms,
+            [
+                (RigidBodyTerms::Folded, "folded"),
+                (RigidBodyTerms::Separate, "separate"),
+            ],
+        )?;
         let density = match (units, hydro.density) {
             (Units::Prime, Some(rho)) => Some(self.positive("hydrodynamics.density", rho)?),
             (Units::Prime, None) => {

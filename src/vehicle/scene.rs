@@ -183,26 +183,22 @@ impl Checker<'_> {
             inertia[i] = self.positive(&format!("body.inertia[{i}]"), *x)?;
         }
         let hydro = &file.hydrodynamics;
-        let convention = match hydro.convention.as_str() {
-            "prestero" => Convention::Prestero,
-            "fossen" => Convention::Fossen,
-            other => {
-                return Err(self.invalid(
-                    "hydrodynamics.convention",
-                    format!("`{other}`: expected `prestero` or `fossen`"),
-                ));
-            }
-        };
-        let added_mass_coriolis = match hydro.added_mass_coriolis.as_str() {
-            "folded" => AddedMassCoriolis::Folded,
-            "derived" => AddedMassCoriolis::Derived,
-            other => {
-                return Err(self.invalid(
-                    "hydrodynamics.added_mass_coriolis",
-                    format!("`{other}`: expected `folded` or `derived`"),
-                ));
-            }
-        };
+        let convention = self.word(
+            "hydrodynamics.convention",
+            &hydro.convention,
+            [
+                (Convention::Prestero, "prestero"),
+                (Convention::Fossen, "fossen"),
+            ],
+        )?;
+        let added_mass_coriolis = self.word(
+            "hydrodynamics.added_mass_coriolis",
+            &hydro.added_mass_coriolis,
+            [
+                (AddedMassCoriolis::Folded, "folded"),
+                (AddedMassCoriolis::Derived, "derived"),
+            ],
+        )?;
         for (table, entries) in [
             ("added_mass", &hydro.added_mass),
             ("coefficients", &hydro.coefficients),
