@@ -1002,3 +1002,50 @@ fn a_ships_modes_are_nomotos_time_constants() {
         assert!(named.contains(&"sway and yaw"), "{file}: {named:?}");
     }
 }
+
+#[test]
+fn a_ship_with_bias_terms_is_trimmed_to_a_straight_course_by_rudder_and_drift() {
+    use eom::ship::linear::linearise_ship;
+    let text = std::fs::read_to_string("scenes/mariner.toml").unwrap();
+    let with = |linear: &str| ShipScene::parse(&format!("{text}\n[linear]\n{linear}\n"), "mariner");
+    // At the approach the Mariner's bias terms Y₀, N₀ turn it: not an equilibrium.
+    let approach = scene("mariner.toml");
+    let model = ShipModel::new(&approach.table).unwrap();
+    let untrimmed = linearise_ship(&approach, &model).unwrap();
+    assert!(!untrimmed.equilibrium);
+    // The rudder, the drift and the speed that hold it straight: the drift and the rudder
+    // add resistance (X_vv v², X_δδ δ²), so the speed the table's thrust holds is a little
+    // below U₀.
+    let scene = with("trim = [\"rudder\", \"v\", \"u\"]").unwrap();
+    let linear = linearise_ship(&scene, &model).unwrap();
+    assert!(linear.equilibrium, "{:?}", linear.residual);
+    let (values, steps) = linear.trimmed.clone().unwrap();
+    println!(
+        "{values:?} in {steps} steps; modes {:?}",
+        linear.eigenvalues
+    );
+    let (rudder, drift, speed) = (values[0].1, values[1].1, values[2].1);
+    let design = scene.table.design_speed;
+    assert!(speed < design && speed > 0.99 * design, "{speed}");
+    // The bias needs a small rudder, not one at the stops (35°), and the trim is a straight
+    // course.
+    assert!(
+        rudder != 0.0 && rudder.abs() < 2f64.to_radians(),
+        "{rudder}"
+    );
+    assert!(drift.abs() < 0.1, "{drift}");
+    assert_eq!(linear.state[2], 0.0, "r stays zero: it is not free");
+    // Without the speed, u̇, v̇ and ṙ cannot all vanish: the trim says it did not converge.
+    let scene = with("trim = [\"rudder\", \"v\"]").unwrap();
+    let error = linearise_ship(&scene, &model).unwrap_err().to_string();
+    assert!(
+        error.contains("did not converge") && error.contains("rudder"),
+        "{error}"
+    );
+    // A name the ship does not have is refused when the scene is read, naming the key.
+    let error = with("trim = [\"w\"]").unwrap_err().to_string();
+    assert!(
+        error.contains("linear.trim[0]") && error.contains("rudder"),
+        "{error}"
+    );
+}

@@ -323,3 +323,189 @@ fn bad_tables_are_refused_naming_the_key() {
     let ambiguous = parse(&edited("Yvv = -1310.0", "Yvvr = -1310.0")).unwrap_err();
     assert!(ambiguous.contains("ambiguous"), "{ambiguous}");
 }
+
+/// The quaternion of roll φ, pitch θ, heading ψ (4.57's rotation Rz(ψ)Ry(θ)Rx(φ)).
+fn quaternion<
+    T: Copy + std::ops::Mul<Output = T> + std::ops::Add<Output = T> + std::ops::Sub<Output = T>,
+>(
+    (c, s): ([T; 3], [T; 3]),
+) -> [T; 4] {
+    let ([cf, ct, cp], [sf, st, sp]) = (c, s);
+    [
+        cf * ct * cp + sf * st * sp,
+        sf * ct * cp - cf * st * sp,
+        cf * st * cp + sf * ct * sp,
+        cf * ct * sp - sf * st * cp,
+    ]
+}
+
+#[test]
+fn the_linearised_vehicle_is_the_running_model_in_euler_angles() {
+    use eom::linear::LinearPlant;
+    use eom::vehicle::linear::VehiclePlant;
+    use num_dual::{Dual64, DualNum};
+    let scene = remus();
+    let plant = VehiclePlant::new(&scene.table).unwrap();
+    // Every velocity moving (some negative, for |x|), an attitude far from level, the fins
+    // turned.
+    let nu = [1.3, -0.15, 0.1, -0.2, 0.12, 0.25];
+    let angles = [0.2, -0.3, 0.7];
+    let fins = [0.05, -0.03];
+    let mut state: Vec<f64> = nu.to_vec();
+    state.extend([1.0, -2.0, 3.0]);
+    state.extend(angles);
+    let twin = plant.evaluate(&state, &fins).unwrap();
+    // The running model at the same point, over dual numbers in each angle in turn: its rates
+    // and their exact derivatives by φ, θ, ψ through the quaternion.
+    for (column, _) in angles.iter().enumerate() {
+        let half: [Dual64; 3] = std::array::from_fn(|i| {
+            let a = Dual64::from(angles[i] / 2.0);
+            if i == column {
+                Dual64::new(a.re, 0.5)
+            } else {
+                a
+            }
+        });
+        let q = quaternion((half.map(|a| a.cos()), half.map(|a| a.sin())));
+        let mut x = [Dual64::from(0.0); 15];
+        for i in 0..9 {
+            x[i] = Dual64::from(state[i]);
+        }
+        x[9..13].copy_from_slice(&q);
+        x[13] = Dual64::from(fins[0]);
+        x[14] = Dual64::from(fins[1]);
+        let rates = Model::<Dual64, 15, 2>::rhs(&scene.model, &x, &[Dual64::from(0.0); 2]);
+        // ν̇ and the position's rates, and their derivatives by the angle: the same equations
+        // in two attitudes' coordinates, to rounding (rates of order 10, 1e-12 relative).
+        for (row, rate) in rates.iter().enumerate().take(9) {
+            let (value, slope) = (rate.re, rate.eps);
+            let scale = 1.0 + value.abs().max(slope.abs());
+            assert!(
+                (twin.rates[row] - value).abs() < 1e-12 * scale,
+                "rate {row}: {} against {value}",
+                twin.rates[row]
+            );
+            let derivative = twin.a[(row, 9 + column)];
+            assert!(
+                (derivative - slope).abs() < 1e-12 * scale,
+                "∂(rate {row})/∂(angle {column}): {derivative} against {slope}"
+            );
+        }
+    }
+    // The velocity and fin columns are the running model's.
+    let mut x = [0.0; 15];
+    x[..9].copy_from_slice(&state[..9]);
+    let half = angles.map(|a| a / 2.0);
+    x[9..13].copy_from_slice(&quaternion((half.map(f64::cos), half.map(f64::sin))));
+    x[13..].copy_from_slice(&fins);
+    let model = Model::<f64, 15, 2>::state_jacobian(&scene.model, &x, &[0.0; 2]);
+    for row in 0..9 {
+        for column in 0..6 {
+            let (twin, model) = (twin.a[(row, column)], model[row][column]);
+            assert!(
+                (twin - model).abs() < 1e-12 * (1.0 + model.abs()),
+                "A[{row}][{column}]"
+            );
+        }
+        for fin in 0..2 {
+            let (twin, model) = (twin.b[(row, fin)], model[row][13 + fin]);
+            assert!(
+                (twin - model).abs() < 1e-12 * (1.0 + model.abs()),
+                "B[{row}][{fin}]"
+            );
+        }
+    }
+}
+
+fn with_linear(table: &str) -> VehicleScene {
+    parse(&format!("{}\n[linear]\n{table}\n", scene_text())).unwrap()
+}
+
+#[test]
+fn remus_at_cruise_is_unstable_open_loop_in_yaw_and_in_pitch() {
+    use eom::linear::Stability;
+    use eom::vehicle::linear::linearise_vehicle;
+    let scene = remus();
+    let linear = linearise_vehicle(&scene).unwrap();
+    for m in &linear.modes {
+        println!("{:?} {:?} {:?}", m.eigenvalue, m.dominant, m.name);
+    }
+    assert!(linear.equilibrium, "{:?}", linear.residual);
+    assert_eq!(linear.set_aside_names(), ["x", "y", "z", "psi"]);
+    assert_eq!(
+        linear.reduced_names(),
+        ["u", "v", "w", "p", "q", "r", "phi", "theta"]
+    );
+    assert_eq!(linear.input_names, ["dr", "ds"]);
+    assert_eq!(linear.stability, Stability::Unstable);
+    let growing: Vec<Option<&str>> = (linear.modes.iter())
+        .filter(|m| m.time_to_double_s.is_some())
+        .map(|m| m.name)
+        .collect();
+    assert_eq!(growing, [Some("sway and yaw"), Some("heave and pitch")]);
+    // Roll is the pendulum of z_G W under the roll inertia and added mass, lightly damped
+    // (Prestero's roll damping Kpp p|p| has no linear part): a period near 2π √((I_xx −
+    // K_ṗ)/(z_G W)), moved by the coupling to sway and yaw.
+    let roll = (linear.modes.iter())
+        .find(|m| m.name == Some("roll"))
+        .expect("a roll mode");
+    let pendulum = std::f64::consts::TAU * ((0.177 + 0.0704) / (0.0196 * 299.0f64)).sqrt();
+    let period = roll.period_s.unwrap();
+    assert!(
+        (period / pendulum - 1.0).abs() < 0.1,
+        "{period} against {pendulum}"
+    );
+    assert!(roll.damping_ratio.unwrap().abs() < 0.01);
+    // The fins act where they should: the rudder on sway, roll and yaw, the stern planes on
+    // surge, heave and pitch.
+    let acts = |row: usize, fin: usize| linear.b[(row, fin)] != 0.0;
+    assert!([1, 3, 5].iter().all(|&i| acts(i, 0)) && [0, 2, 4].iter().all(|&i| !acts(i, 0)));
+    assert!([0, 2, 4].iter().all(|&i| acts(i, 1)) && [1, 3, 5].iter().all(|&i| !acts(i, 1)));
+}
+
+#[test]
+fn a_vehicle_is_trimmed_for_the_variables_its_linear_table_names() {
+    use eom::vehicle::linear::linearise_vehicle;
+    let scene = remus();
+    let start = scene.start().unwrap();
+    let cruise_roll =
+        eom::scene::euler_angles(eom::models::Kinematics::Quaternion, &start[9..13])[0];
+    // From 1 m/s level, the speed and roll the propeller holds: the cruise again.
+    let trimmed = linearise_vehicle(&with_linear(
+        "at = { u = 1.0, phi = 0.0 }\ntrim = [\"u\", \"phi\"]",
+    ))
+    .unwrap();
+    let (values, steps) = trimmed.trimmed.clone().unwrap();
+    println!("{values:?} in {steps}");
+    assert!(trimmed.equilibrium);
+    // Newton stops at rates below 1e-9 (1 + max|x|); ∂u̇/∂u ≈ 0.16 /s and ∂ṗ/∂φ ≈ 23 /s², so
+    // u is within 2e-8 of the cruise and φ within 1e-10.
+    assert!((values[0].1 - start[0]).abs() < 2e-8, "{values:?}");
+    assert!((values[1].1 - cruise_roll).abs() < 1e-10, "{values:?}");
+    // Pitched up 3° with the planes at 2°, the pitch and the planes that hold it level again,
+    // by the fins' other name.
+    let trimmed = linearise_vehicle(&with_linear(
+        "at = { theta = 0.05, ds = 0.035 }\ntrim = [\"theta\", \"stern_planes\"]",
+    ))
+    .unwrap();
+    let (values, _) = trimmed.trimmed.clone().unwrap();
+    assert!(trimmed.equilibrium);
+    assert!(
+        values[0].1.abs() < 1e-9 && values[1].1.abs() < 1e-9,
+        "{values:?}"
+    );
+    // The speed cannot be held by the planes alone.
+    let error = linearise_vehicle(&with_linear("at = { u = 1.0 }\ntrim = [\"stern_planes\"]"))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        error.contains("did not converge") && error.contains("stern_planes"),
+        "{error}"
+    );
+    // A name the vehicle does not have is refused when the scene is read, naming the key.
+    let error = parse(&format!("{}\n[linear]\ntrim = [\"delta\"]\n", scene_text())).unwrap_err();
+    assert!(
+        error.contains("linear.trim[0]") && error.contains("stern_planes"),
+        "{error}"
+    );
+}

@@ -1,6 +1,6 @@
 //! `eom run` on a vehicle scene, end to end through the binary: REMUS's Chapter 8 turn into
 //! its folder (trajectory.csv, the plots, summary.json with the folded table and the
-//! figures), and a vehicle scene refused by the commands that do not serve it yet.
+//! figures), and `eom linear` on it: A, B and the modes at the cruise.
 
 use eom_test_support::cli::{eom, folder, scene_arg, succeeded};
 
@@ -67,9 +67,39 @@ fn remus_runs_its_rudder_steps_into_a_folder() {
 }
 
 #[test]
-fn eom_linear_refuses_a_vehicle_scene_saying_why() {
-    let output = eom(&["linear", &scene_arg("remus100.toml")]);
-    assert!(!output.status.success());
-    let stderr = String::from_utf8_lossy(&output.stderr);
-    assert!(stderr.contains("vehicle scene"), "{stderr}");
+fn eom_linear_linearises_a_vehicle_at_its_cruise_and_writes_its_matrices() {
+    let out = folder("remus100_linear");
+    let stdout = succeeded(&eom(&[
+        "linear",
+        &scene_arg("remus100.toml"),
+        "--json",
+        "--out",
+        out.to_str().unwrap(),
+    ]));
+    let report: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    assert_eq!(report["model"], "vehicle");
+    assert_eq!(report["equilibrium"], true);
+    assert_eq!(
+        report["reduced_state"],
+        serde_json::json!(["u", "v", "w", "p", "q", "r", "phi", "theta"])
+    );
+    assert_eq!(
+        report["set_aside"],
+        serde_json::json!(["x", "y", "z", "psi"])
+    );
+    assert_eq!(report["inputs"], serde_json::json!(["dr", "ds"]));
+    assert_eq!(report["stable"], false);
+    let names: Vec<&str> = (report["modes"].as_array().unwrap().iter())
+        .filter_map(|m| m["name"].as_str())
+        .collect();
+    for plane in ["surge", "sway and yaw", "heave and pitch", "roll"] {
+        assert!(names.contains(&plane), "{names:?}");
+    }
+    let csv = std::fs::read_to_string(out.join("A.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 8);
+    assert!(
+        csv.lines().all(|line| line.split(',').count() == 8),
+        "{csv}"
+    );
+    assert!(out.join("B.csv").is_file() && out.join("poles.svg").is_file());
 }

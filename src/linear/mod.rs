@@ -24,10 +24,12 @@ pub mod reduce;
 mod scene;
 pub mod trim;
 
-pub use modes::{Mode, Stability, modes};
+pub use modes::{Mode, Naming, Stability, modes};
 pub use plant::{Evaluation, LinearPlant, Plant};
 pub use reduce::set_aside;
-pub use scene::{LinearSpec, Linearisation, linearise, linearise_scene, resolve, set_at};
+pub use scene::{
+    LinearSpec, Linearisation, linearise, linearise_scene, resolve, resolve_aliased, set_at,
+};
 
 use thiserror::Error;
 

@@ -64,14 +64,24 @@ impl Stability {
 /// instability a scene means (10⁻³ of its fastest mode and more) is seen.
 pub const GROWTH_TOLERANCE: f64 = 1e-7;
 
+/// Whose names a mode is given: a catalog family's, or a vehicle's (surge, sway and yaw,
+/// heave and pitch, roll: the planes of motion a vehicle's designer reads).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Naming {
+    /// The family's names.
+    Family(Family),
+    /// A vehicle's planes.
+    Vehicle,
+}
+
 /// The eigenvalues of `a`, sorted (largest real part first, then by imaginary part), its
-/// modes and the verdict; `names` names the states of `a`, `family` the model's family and
+/// modes and the verdict; `names` names the states of `a`, `naming` whose names the modes get and
 /// `heading_rate` the rate at which the axes of its roll and pitch turn (zero where they do
 /// not).
 pub fn modes(
     a: &DMatrix<f64>,
     names: &[String],
-    family: Family,
+    naming: Naming,
     heading_rate: f64,
 ) -> (Vec<Complex<f64>>, Vec<Mode>, Stability) {
     let mut eigenvalues = eigenvalues(a);
@@ -82,7 +92,14 @@ pub fn modes(
         .filter(|l| l.im >= 0.0)
         .map(|&l| mode(a, l, GROWTH_TOLERANCE * radius, names, heading_rate))
         .collect();
-    name_modes(&mut modes, family);
+    match naming {
+        Naming::Family(family) => name_modes(&mut modes, family),
+        Naming::Vehicle => {
+            for mode in &mut modes {
+                mode.name = vehicle_plane(mode);
+            }
+        }
+    }
     let tolerance = GROWTH_TOLERANCE * radius;
     let stability = if eigenvalues.iter().any(|l| l.re > tolerance) {
         Stability::Unstable
@@ -200,6 +217,24 @@ pub fn eigenvector(
         }
     }
     vector
+}
+
+/// A vehicle's mode by the plane of motion its dominant states lie in: surge (u), sway and yaw
+/// (v, r, ψ), heave and pitch (w, q, θ), roll (p, φ); none where they span planes, or for a
+/// state that neither grows nor decays.
+fn vehicle_plane(mode: &Mode) -> Option<&'static str> {
+    const PLANES: [(&str, &[&str]); 4] = [
+        ("surge", &["u"]),
+        ("sway and yaw", &["v", "r", "psi"]),
+        ("heave and pitch", &["w", "q", "theta"]),
+        ("roll", &["p", "phi"]),
+    ];
+    let moving = mode.damping_ratio.is_some();
+    PLANES
+        .iter()
+        .find(|(_, states)| (mode.dominant.iter()).all(|d| states.contains(&d.as_str())))
+        .filter(|_| moving && !mode.dominant.is_empty())
+        .map(|(name, _)| *name)
 }
 
 /// Names the modes where the family knows them.

@@ -5,6 +5,7 @@
 //! code: the operating point, the states set aside, the trim, the modes.
 
 use super::LinearError;
+use super::modes::Naming;
 use crate::models::{AnyModel, Family};
 use crate::scene::SceneLoads;
 use nalgebra::DMatrix;
@@ -15,10 +16,19 @@ pub trait LinearPlant {
     fn name(&self) -> &'static str;
     /// The family whose modes' names apply.
     fn family(&self) -> Family;
+    /// Whose names its modes get: by default its family's.
+    fn naming(&self) -> Naming {
+        Naming::Family(self.family())
+    }
     /// Every state entry's name, in the model's layout.
     fn state_names(&self) -> Vec<&'static str>;
     /// Every input's name.
     fn input_names(&self) -> Vec<&'static str>;
+    /// Other names of state entries and inputs, as (alias, name): what a `[linear]` table may
+    /// also call them (a ship's rudder angle `delta`, `rudder`).
+    fn aliases(&self) -> &'static [(&'static str, &'static str)] {
+        &[]
+    }
     /// The inputs at `state`: what acts there plus `extra`.
     fn inputs(&self, state: &[f64], extra: &[f64]) -> Vec<f64>;
     /// The rates, A and B at `state` with `extra` added to the inputs.

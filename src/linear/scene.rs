@@ -37,6 +37,20 @@ pub fn resolve(name: &str, state: &[&str], inputs: &[&str]) -> Option<Free> {
         .or_else(|| loose(inputs).map(Free::Input))
 }
 
+/// [`resolve`], or by one of `aliases` (alias, name), any case.
+pub fn resolve_aliased(
+    name: &str,
+    (state, inputs): (&[&str], &[&str]),
+    aliases: &[(&str, &str)],
+) -> Option<Free> {
+    resolve(name, state, inputs).or_else(|| {
+        let (_, named) = aliases
+            .iter()
+            .find(|(alias, _)| alias.eq_ignore_ascii_case(name))?;
+        resolve(named, state, inputs)
+    })
+}
+
 /// A scene, linearised about its operating point.
 #[derive(Debug, Clone)]
 pub struct Linearisation {
@@ -129,8 +143,7 @@ pub fn linearise_scene(scene: &Scene) -> Result<Linearisation, LinearError> {
     let mut extra = vec![0.0; info.inputs.len()];
     set_at(
         &scene.linear,
-        info.state,
-        info.inputs,
+        (info.state, info.inputs, &[]),
         (&mut state, &mut extra),
     )?;
     let (model, state, note) = model_and_state(scene, state);
@@ -143,15 +156,15 @@ pub fn linearise_scene(scene: &Scene) -> Result<Linearisation, LinearError> {
     Ok(linearisation)
 }
 
-/// Sets the `at` entries of `spec` in the state and the inputs added to what acts.
+/// Sets the `at` entries of `spec` in the state and the inputs added to what acts, by the
+/// names of the state entries, of the inputs and their aliases.
 pub fn set_at(
     spec: &LinearSpec,
-    state_names: &[&str],
-    input_names: &[&str],
+    (state_names, input_names, aliases): (&[&str], &[&str], &[(&str, &str)]),
     (state, extra): (&mut [f64], &mut [f64]),
 ) -> Result<(), LinearError> {
     for (name, value) in &spec.at {
-        match resolve(name, state_names, input_names) {
+        match resolve_aliased(name, (state_names, input_names), aliases) {
             Some(Free::State(i)) => state[i] = *value,
             Some(Free::Input(i)) => extra[i] = *value,
             None => return Err(unknown(name)),
@@ -181,7 +194,10 @@ pub fn linearise(
     } else {
         let free = trim_names
             .iter()
-            .map(|name| resolve(name, &state_names, &input_names).ok_or_else(|| unknown(name)))
+            .map(|name| {
+                resolve_aliased(name, (&state_names, &input_names), plant.aliases())
+                    .ok_or_else(|| unknown(name))
+            })
             .collect::<Result<Vec<_>, _>>()?;
         let names = trim_names.join(", ");
         let solved = trim(plant, (&state, &extra), &reduced, &free, &names)?;
@@ -212,7 +228,7 @@ pub fn linearise(
         Some(i) if family == Family::Top && set_aside.contains(&i) => at.rates[i],
         _ => 0.0,
     };
-    let (eigenvalues, modes, stability) = modes(&a, &names, family, heading_rate);
+    let (eigenvalues, modes, stability) = modes(&a, &names, plant.naming(), heading_rate);
     Ok(Linearisation {
         model: plant.name(),
         family,

@@ -663,28 +663,44 @@ impl Checker<'_> {
         Ok(Some(condition))
     }
 
-    /// The `[linear]` table, its names those of the model's state entries and inputs and
-    /// its values finite.
-    pub(super) fn linear(
+    /// The `[linear]` table, its names those of `model`'s state entries, inputs and their
+    /// aliases, and its values finite.
+    pub(crate) fn linear(
         &self,
-        file: &SceneFile,
-        selection: &Selection,
+        table: Option<&crate::scene::file::LinearTable>,
+        model: &str,
+        (state, inputs, aliases): (&[&str], &[&str], &[(&str, &str)]),
     ) -> Result<crate::linear::LinearSpec, SceneError> {
-        let Some(table) = &file.linear else {
+        let Some(table) = table else {
             return Ok(crate::linear::LinearSpec::default());
         };
-        let (state, inputs) = (selection.info.state, selection.info.inputs);
-        let known = |key: &str, name: &str| match crate::linear::resolve(name, state, inputs) {
+        let known = |key: &str, name: &str| match crate::linear::resolve_aliased(
+            name,
+            (state, inputs),
+            aliases,
+        ) {
             Some(_) => Ok(()),
-            None => Err(self.invalid(
-                key,
-                format!(
-                    "`{name}` is not a state entry or an input of {}: it has {} and {}",
-                    selection.info.name,
-                    state.join(", "),
-                    inputs.join(", ")
-                ),
-            )),
+            None => {
+                let also = aliases
+                    .iter()
+                    .map(|(alias, _)| *alias)
+                    .collect::<Vec<_>>()
+                    .join(", ");
+                let also = if also.is_empty() {
+                    String::new()
+                } else {
+                    format!(" (also named {also})")
+                };
+                Err(self.invalid(
+                    key,
+                    format!(
+                        "`{name}` is not a state entry or an input of {model}: it has {} \
+                             and {}{also}",
+                        state.join(", "),
+                        inputs.join(", ")
+                    ),
+                ))
+            }
         };
         let mut spec = crate::linear::LinearSpec::default();
         for (name, value) in table.at.iter().flatten() {

@@ -176,7 +176,12 @@ impl Scene {
         let integrator = check.integrator(file, &loads)?;
         let every = check.every(file, integrator.end_time)?;
         let stop = check.stop(file, &selection, &initial)?;
-        let linear = check.linear(file, &selection)?;
+        let info = selection.info;
+        let linear = check.linear(
+            file.linear.as_ref(),
+            info.name,
+            (info.state, info.inputs, &[]),
+        )?;
         Ok(Scene {
             title: file.title.clone(),
             selection,

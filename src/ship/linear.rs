@@ -24,7 +24,7 @@
 //! scene ([`crate::linear`]): the states set aside, A and B on (u, v, r), the modes and the
 //! verdict, whose sway–yaw eigenvalues are −1/T₁ and −1/T₂.
 
-use super::model::ShipModel;
+use super::model::{STATE, ShipModel};
 use super::table::ShipTable;
 use super::{Force, Term, Units};
 use crate::linear::{Evaluation, LinearError, LinearPlant, Linearisation};
@@ -252,11 +252,15 @@ impl LinearPlant for ShipPlant<'_> {
     }
 
     fn state_names(&self) -> Vec<&'static str> {
-        super::model::STATE[..6].to_vec()
+        STATE[..6].to_vec()
     }
 
     fn input_names(&self) -> Vec<&'static str> {
         vec!["delta"]
+    }
+
+    fn aliases(&self) -> &'static [(&'static str, &'static str)] {
+        &ALIASES
     }
 
     fn inputs(&self, _state: &[f64], extra: &[f64]) -> Vec<f64> {
@@ -284,16 +288,24 @@ impl LinearPlant for ShipPlant<'_> {
     }
 }
 
-/// The ship linearised by the linearisation of every scene about its approach (straight ahead
-/// at U₀, the rudder amidships): the states set aside (the position and the heading), A and B
-/// on (u, v, r), the modes (surge; sway and yaw, at −1/T₁ and −1/T₂ of Nomoto's model) and the
-/// verdict. A table with bias terms (the Mariner's Y₀, N₀) is not in equilibrium there, and the
-/// linearisation says by how much.
+/// The rudder angle, as a `[linear]` table may also call it.
+pub(crate) const ALIASES: [(&str, &str); 1] = [("rudder", "delta")];
+
+/// The ship linearised by the linearisation of every scene about the point its `[linear]`
+/// table names, by default its approach (straight ahead at U₀, the rudder amidships): the
+/// states set aside (the position and the heading), A and B on (u, v, r), the modes (surge;
+/// sway and yaw, at −1/T₁ and −1/T₂ of Nomoto's model about the approach) and the verdict. A
+/// table with bias terms (the Mariner's Y₀, N₀) is not in equilibrium at the approach, and the
+/// linearisation says by how much; `trim = ["rudder", "v", "u"]` finds the rudder angle, the
+/// drift and the speed that hold it on a straight course.
 pub fn linearise_ship(
     scene: &super::ShipScene,
     model: &ShipModel,
 ) -> Result<Linearisation, LinearError> {
     let plant = ShipPlant { model };
     let start = scene.start();
-    crate::linear::linearise(&plant, (start[..6].to_vec(), vec![start[6]]), &[])
+    let (mut state, mut extra) = (start[..6].to_vec(), vec![start[6]]);
+    let names = (&STATE[..6], &STATE[6..], &ALIASES[..]);
+    crate::linear::set_at(&scene.linear, names, (&mut state, &mut extra))?;
+    crate::linear::linearise(&plant, (state, extra), &scene.linear.trim)
 }

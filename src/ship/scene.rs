@@ -99,6 +99,8 @@ pub struct ShipSceneFile {
     pub output: OutputTable,
     /// Values to sweep over (read by [`crate::scene::sweep`], which runs each case).
     pub sweep: Option<toml::Table>,
+    /// The operating point of `eom linear`.
+    pub linear: Option<crate::scene::file::LinearTable>,
 }
 
 /// `[model]`.
@@ -300,6 +302,8 @@ pub struct ShipScene {
     pub every: f64,
     /// The manoeuvres.
     pub manoeuvres: Vec<Manoeuvre>,
+    /// The operating point of `eom linear` (`[linear]`), by default the approach.
+    pub linear: crate::linear::LinearSpec,
 }
 
 /// A ship's own tables, checked by the checker of every scene ([`Checker`]: its errors, its
@@ -809,6 +813,12 @@ impl ShipScene {
         // u, v, r: symplectic Euler kicks the velocities first.
         let (stepper, every) =
             check.stepping((&file.integrator, &file.output), longest, ("a ship", 0..3))?;
+        let state = &super::model::STATE;
+        let linear = check.linear(
+            file.linear.as_ref(),
+            "the ship",
+            (&state[..6], &state[6..], &super::linear::ALIASES),
+        )?;
         Ok(ShipScene {
             title: file.title.clone(),
             length,
@@ -817,6 +827,7 @@ impl ShipScene {
             stepper,
             every,
             manoeuvres,
+            linear,
         })
     }
 

@@ -6,6 +6,7 @@
 //! | the table as the scene gives it: body, hydrostatics, added mass, named terms, propeller | [`table`] |
 //! | the six equations about O with exactly the table's terms, derived and proved by `eom-codegen`, evaluated | [`model`] |
 //! | the fins (rudder, stern planes): saturation, lag, rate limit; their step commands | [`fins`] |
+//! | linearised about a cruise: A, B, the modes (the Euler-angle twin of the table) | [`linear`] |
 //! | a manoeuvre over the one driver (any method), its figures | [`manoeuvre`] |
 //! | what a run reports, as data (`summary.json`'s types) | [`summary`] |
 //! | the scene file | [`scene`] |
@@ -18,6 +19,7 @@
 //! that proved program as a [`Model`](crate::Model), so it runs on every integrator.
 
 pub mod fins;
+pub mod linear;
 pub mod manoeuvre;
 pub mod model;
 pub mod scene;
@@ -50,6 +52,10 @@ pub enum VehicleError {
     /// The symbolic engine could not prove the model.
     #[error("the vehicle model cannot be proved: {0}")]
     Prove(#[from] crate::defined::engine::EmitError),
+    /// The linearisation could not be made (a trim that does not converge, a point beyond
+    /// the model's reach).
+    #[error("{0}")]
+    Linear(#[from] crate::linear::LinearError),
     /// A run that cannot go on, with the time and the reason.
     #[error("the run stopped at t = {} s: {reason}", crate::Short(*time))]
     Run {

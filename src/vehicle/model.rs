@@ -68,16 +68,32 @@ const fn pattern() -> [(usize, usize); 121] {
 /// δ̇_r and δ̇_s are the fins' rates themselves.
 const INPUT_JACOBIAN: [(usize, usize); 2] = [(13, 0), (14, 1)];
 
+/// The state of the Euler-angle twin ([`Proved::new`] with [`Kinematics::Euler`]): ν, the
+/// position, the roll, pitch and heading angles of 4.57–4.60, then the fins' angles.
+pub const EULER_STATE: [&str; 14] = [
+    "u", "v", "w", "p", "q", "r", "x", "y", "z", "phi", "theta", "psi", "dr", "ds",
+];
+
 /// A vehicle's proved program, ready to evaluate.
 #[derive(Debug, Clone)]
 pub struct VehicleModel {
+    proved: Proved,
+    terms: usize,
+    folded: Vec<FoldedComparison>,
+}
+
+/// A table's proved program in one kinematics, evaluated on a state laid out as the
+/// generator's (ν, the position, the attitude) followed by the fins' angles: the quaternion
+/// model runs, and the Euler-angle twin is what the linearisation reads (`super::linear`).
+#[derive(Debug, Clone)]
+pub(crate) struct Proved {
     program: Interpreter,
     functions: Functions,
     /// For each program input, what it is.
     inputs: Vec<Variable>,
+    /// The number of the generator's state entries (before the fins').
+    body: usize,
     operations: Operations,
-    terms: usize,
-    folded: Vec<FoldedComparison>,
 }
 
 /// A program input, by what the model sets it from.
@@ -89,12 +105,12 @@ enum Variable {
     Absolute(usize),
 }
 
-/// The spec of a table: quaternion kinematics, inertia about G in principal axes, the fins as
+/// The spec of a table: `kinematics`, inertia about G in principal axes, the fins as
 /// controls, the propeller constant.
-pub fn spec(table: &VehicleTable) -> VehicleSpec {
+pub fn spec(table: &VehicleTable, kinematics: Kinematics) -> VehicleSpec {
     VehicleSpec {
         units: Units::Dimensional,
-        kinematics: Kinematics::Quaternion,
+        kinematics,
         inertia: InertiaAbout::Gravity,
         symmetry: Symmetry::Principal,
         convention: table.convention,
@@ -145,11 +161,15 @@ fn table_values(
     Ok(values)
 }
 
-impl VehicleModel {
-    /// Derives and proves the six equations with the table's terms, inverts the mass matrix
-    /// (refusing one that is not positive definite), then resolves the program.
-    pub fn new(table: &VehicleTable) -> Result<Self, VehicleError> {
-        let spec = spec(table);
+impl Proved {
+    /// Derives and proves the six equations with the table's terms in `kinematics`, inverts
+    /// the mass matrix (refusing one that is not positive definite), then resolves the
+    /// program; with the folded table against its added mass.
+    pub(crate) fn new(
+        table: &VehicleTable,
+        kinematics: Kinematics,
+    ) -> Result<(Self, Vec<FoldedComparison>), VehicleError> {
+        let spec = spec(table, kinematics);
         let system = vehicle("vehicle", &spec)?;
         let program = prove_with_jacobians(&system)?;
         let mut values = table_values(&spec, table)?;
@@ -167,8 +187,12 @@ impl VehicleModel {
                 format!("the coefficient `{}` is not finite", c.0.value),
             ));
         }
+        let body = system.state.len();
+        let state: Vec<&str> = (system.state.iter().map(|s| s.as_ref()))
+            .chain(["dr", "ds"])
+            .collect();
         let inputs = (system.inputs.iter())
-            .map(|name| input_variable(name))
+            .map(|name| input_variable(name, &state, body))
             .collect::<Result<Vec<_>, _>>()?;
         // The variables in `variables`'s order: the generator's state, then its inputs.
         let position =
@@ -178,19 +202,24 @@ impl VehicleModel {
         })?;
         let functions = Functions::of(&program)
             .map_err(|what| VehicleError::invalid("hydrodynamics", format!("no {what}")))?;
-        Ok(VehicleModel {
+        let proved = Proved {
             functions,
             inputs,
+            body,
             operations: program.operations(&program.rhs),
-            terms: spec.terms.len(),
-            folded,
             program: interpreter,
-        })
+        };
+        Ok((proved, folded))
+    }
+
+    /// The number of the generator's state entries (before the fins').
+    pub(crate) fn body(&self) -> usize {
+        self.body
     }
 
     /// The program's variables at `state`: the generator's state, then its inputs.
-    fn variables<T: SimdRealField + Copy>(&self, state: &[T; 15]) -> Vec<T> {
-        let mut variables = state[..BODY].to_vec();
+    fn variables<T: SimdRealField + Copy>(&self, state: &[T]) -> Vec<T> {
+        let mut variables = state[..self.body].to_vec();
         variables.extend(self.inputs.iter().map(|input| match *input {
             Variable::Fin(i) => state[i],
             Variable::Absolute(i) => state[i].simd_abs(),
@@ -198,26 +227,88 @@ impl VehicleModel {
         variables
     }
 
-    /// ∂f/∂x and ∂f/∂δ̇ of the model, dense: the proved Jacobian programs scattered by their
-    /// patterns, the fins' columns and the chain rule through |x| added.
-    fn jacobians<T: SimdRealField + Copy>(&self, state: &[T; 15]) -> ([[T; 15]; 15], [[T; 2]; 15]) {
+    /// The rates of the generator's state entries.
+    pub(crate) fn rates<T: SimdRealField + Copy>(
+        &self,
+        state: &[T],
+    ) -> impl Iterator<Item = T> + use<'_, T> {
         let variables = self.variables(state);
-        let mut by_state = [[T::zero(); 15]; 15];
+        self.program.evaluate(&self.functions.rhs, &variables)
+    }
+
+    /// The kinetic energy of the body and the fluid.
+    fn kinetic_energy<T: SimdRealField + Copy>(&self, state: &[T]) -> T {
+        let variables = self.variables(state);
+        (self
+            .program
+            .evaluate(&self.functions.kinetic_energy, &variables)
+            .next())
+        .unwrap_or_else(T::zero)
+    }
+
+    /// ∂(rates)/∂(state), each entry that is not identically zero handed to `set` as (row,
+    /// column, value), where a column may come more than once (its values add): the proved
+    /// Jacobian programs scattered by their patterns, the program's ∂f/∂δ put in the fins'
+    /// columns and the chain rule through |x| added.
+    pub(crate) fn state_jacobian<T: SimdRealField + Copy>(
+        &self,
+        state: &[T],
+        mut set: impl FnMut(usize, usize, T),
+    ) {
+        let variables = self.variables(state);
         let entries = self
             .program
             .evaluate(&self.functions.state_jacobian, &variables);
         for (&(row, column), value) in self.functions.state_pattern.iter().zip(entries) {
-            by_state[row][column] = value;
+            set(row, column, value);
         }
         let entries = self
             .program
             .evaluate(&self.functions.input_jacobian, &variables);
         for (&(row, column), value) in self.functions.input_pattern.iter().zip(entries) {
             match self.inputs[column] {
-                Variable::Fin(i) => by_state[row][i] += value,
-                Variable::Absolute(i) => by_state[row][i] += value * state[i].simd_signum(),
+                Variable::Fin(i) => set(row, i, value),
+                Variable::Absolute(i) => set(row, i, value * state[i].simd_signum()),
             }
         }
+    }
+
+    /// Where [`Self::state_jacobian`] can be non-zero, as (row, column).
+    pub(crate) fn state_pattern(&self) -> Vec<(usize, usize)> {
+        let through_inputs =
+            self.functions
+                .input_pattern
+                .iter()
+                .map(|&(row, column)| match self.inputs[column] {
+                    Variable::Fin(i) | Variable::Absolute(i) => (row, i),
+                });
+        let mut pattern: Vec<(usize, usize)> = (self.functions.state_pattern.iter().copied())
+            .chain(through_inputs)
+            .collect();
+        pattern.sort_unstable();
+        pattern.dedup();
+        pattern
+    }
+}
+
+impl VehicleModel {
+    /// Derives and proves the six equations with the table's terms, inverts the mass matrix
+    /// (refusing one that is not positive definite), then resolves the program.
+    pub fn new(table: &VehicleTable) -> Result<Self, VehicleError> {
+        let (proved, folded) = Proved::new(table, Kinematics::Quaternion)?;
+        Ok(VehicleModel {
+            proved,
+            terms: table.coefficients.len(),
+            folded,
+        })
+    }
+
+    /// ∂f/∂x and ∂f/∂δ̇ of the model, dense (see [`Proved::state_jacobian`]); the fins'
+    /// rates are the inputs.
+    fn jacobians<T: SimdRealField + Copy>(&self, state: &[T; 15]) -> ([[T; 15]; 15], [[T; 2]; 15]) {
+        let mut by_state = [[T::zero(); 15]; 15];
+        self.proved
+            .state_jacobian(state, |row, column, value| by_state[row][column] += value);
         let mut by_input = [[T::zero(); 2]; 15];
         by_input[13][0] = T::one();
         by_input[14][1] = T::one();
@@ -226,7 +317,7 @@ impl VehicleModel {
 
     /// What one call costs, as the emitter counts it.
     pub fn operations(&self) -> Operations {
-        self.operations
+        self.proved.operations
     }
 
     /// How many named force terms the model carries.
@@ -240,11 +331,13 @@ impl VehicleModel {
     }
 }
 
-fn input_variable(name: &str) -> Result<Variable, VehicleError> {
-    let state = |x: &str| STATE.iter().position(|s| *s == x);
+/// What the program's input `name` is set from, in a state named `state` whose first `body`
+/// entries are the generator's.
+fn input_variable(name: &str, state: &[&str], body: usize) -> Result<Variable, VehicleError> {
+    let index = |x: &str| state.iter().position(|s| *s == x);
     let found = match name.strip_prefix("abs_") {
-        Some(x) => state(x).filter(|&i| i < 6).map(Variable::Absolute),
-        None => state(name).filter(|&i| i >= BODY).map(Variable::Fin),
+        Some(x) => index(x).filter(|&i| i < 6).map(Variable::Absolute),
+        None => index(name).filter(|&i| i >= body).map(Variable::Fin),
     };
     found.ok_or_else(|| {
         VehicleError::invalid(
@@ -266,8 +359,7 @@ impl<T: SimdRealField + Copy> Model<T, 15, 2> for VehicleModel {
     /// The rates of the state with the fins moving at `input`: the proved program, and the
     /// fins' rates.
     fn rhs(&self, state: &[T; 15], input: &[T; 2]) -> [T; 15] {
-        let variables = self.variables(state);
-        let mut rates = self.program.evaluate(&self.functions.rhs, &variables);
+        let mut rates = self.proved.rates(state);
         std::array::from_fn(|i| match i {
             13 => input[0],
             14 => input[1],
@@ -278,12 +370,7 @@ impl<T: SimdRealField + Copy> Model<T, 15, 2> for VehicleModel {
     /// T = ½M|v + ω × r_G|² + ½ωᵀ I_G ω + ½νᵀM_Aν, the body's and the fluid's, in J: the
     /// program's proved form.
     fn kinetic_energy(&self, state: &[T; 15]) -> T {
-        let variables = self.variables(state);
-        (self
-            .program
-            .evaluate(&self.functions.kinetic_energy, &variables)
-            .next())
-        .unwrap_or_else(T::zero)
+        self.proved.kinetic_energy(state)
     }
 
     /// ∂f/∂x: the proved Jacobian program (see the module docs for |x| and the fins).

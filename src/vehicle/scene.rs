@@ -88,6 +88,8 @@ pub struct VehicleSceneFile {
     /// Trajectory rows.
     #[serde(default)]
     pub output: OutputTable,
+    /// The operating point of `eom linear`.
+    pub linear: Option<crate::scene::file::LinearTable>,
 }
 
 /// `[body]`.
@@ -167,6 +169,8 @@ pub struct VehicleScene {
     pub every: f64,
     /// The manoeuvres.
     pub manoeuvres: Vec<VehicleManoeuvre>,
+    /// The operating point of `eom linear` (`[linear]`), by default the cruise.
+    pub linear: crate::linear::LinearSpec,
 }
 
 impl Checker<'_> {
@@ -370,6 +374,12 @@ impl VehicleScene {
             longest,
             ("a vehicle", 0..6),
         )?;
+        let (names, body) = (&super::model::EULER_STATE, super::linear::BODY);
+        let linear = check.linear(
+            file.linear.as_ref(),
+            "the vehicle (in Euler angles)",
+            (&names[..body], &names[body..], &super::linear::ALIASES),
+        )?;
         Ok(VehicleScene {
             title: file.title.clone(),
             table,
@@ -378,6 +388,7 @@ impl VehicleScene {
             stepper,
             every,
             manoeuvres,
+            linear,
         })
     }
 

@@ -12,7 +12,8 @@ use anyhow::Result;
 use eom::linear::{Linearisation, Mode, linearise_scene};
 use eom::output::folder::{Claim, Writer};
 use eom::output::summary::write_atomically;
-use eom::scene::Scene;
+use eom::scene::AnyScene;
+use eom::vehicle::linear::linearise_vehicle;
 use eom_cli::plots::poles::{POLES, write_pole_plot};
 use serde_json::{Map, Value, json};
 use std::path::{Path, PathBuf};
@@ -20,7 +21,7 @@ use std::path::{Path, PathBuf};
 /// Options of `eom linear`.
 #[derive(clap::Args)]
 pub struct Args {
-    /// A scene: a catalog scene, or a ship scene (with `[hydrodynamics]`).
+    /// A scene: a catalog, ship or vehicle scene.
     pub scene: PathBuf,
     /// Print JSON instead of text.
     #[arg(long)]
@@ -38,17 +39,17 @@ const FILES: [&str; 3] = ["A.csv", "B.csv", POLES];
 
 /// Runs `eom linear`.
 pub fn run(args: Args) -> Result<()> {
-    if super::serves::linear_is_ship(&args.scene)? {
-        return super::ship::linear(&args);
-    }
-    let scene = Scene::load(&args.scene)?;
-    let linear = linearise_scene(&scene)?;
-    write_out(&args, &scene.title, &linear)?;
+    let (title, linear) = match super::serves::linearised(&args.scene)? {
+        AnyScene::Ship(scene) => return super::ship::linear(&args, &scene),
+        AnyScene::Vehicle(scene) => (scene.title.clone(), linearise_vehicle(&scene)?),
+        AnyScene::Catalog(scene) => (scene.title.clone(), linearise_scene(&scene)?),
+    };
+    write_out(&args, &title, &linear)?;
     if args.json {
-        let report = report(&scene.title, &linear);
+        let report = report(&title, &linear);
         println!("{}", serde_json::to_string_pretty(&report)?);
     } else {
-        print_text(&scene.title, &linear);
+        print_text(&title, &linear);
         if let Some(out) = &args.out {
             println!("  written to {}/: {}", out.display(), FILES.join(", "));
         }

@@ -43,27 +43,22 @@ fn family(text: &str) -> String {
         .unwrap_or_else(|| "catalog".into())
 }
 
-/// What `eom linear` does with a scene: a ship's Nomoto models (`true`), or a catalog
-/// scene's linearisation (`false`); a swept catalog scene is refused, since it is many.
-pub fn linear_is_ship(path: &Path) -> Result<bool> {
-    let (text, kind) = read(path)?;
-    match kind {
-        Kind::Ship => Ok(true),
-        Kind::Vehicle => Err(Usage(format!(
-            "eom linear serves catalog and ship scenes; {} is a vehicle scene, whose \
-             linearisation is not there yet",
-            path.display()
-        ))
-        .into()),
-        Kind::Catalog { swept: false } => Ok(false),
-        Kind::Catalog { swept: true } => Err(Usage(format!(
+/// The one scene `eom linear` linearises, read; a swept scene is refused, since it is many.
+pub fn linearised(path: &Path) -> Result<AnyScene> {
+    let name = path.display().to_string();
+    let text =
+        std::fs::read_to_string(path).map_err(|e| SceneError::new(&name, "", Problem::Read(e)))?;
+    if eom::scene::sweep::is_swept(&text) {
+        return Err(Usage(format!(
             "eom linear linearises one scene; {} (a {} scene) has a [sweep]: run it without \
              the [sweep], with one case's values",
             path.display(),
             family(&text)
         ))
-        .into()),
+        .into());
     }
+    let base = path.parent().unwrap_or(Path::new("."));
+    Ok(AnyScene::parse(&text, &name, base)?)
 }
 
 /// Refuses anything but a single catalog scene, for `eom tradeoff`.

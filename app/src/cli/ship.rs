@@ -725,16 +725,15 @@ fn print_report(scene: &ShipScene, outcomes: &[Runs], judged: &[Criterion], out:
 }
 
 /// Runs `eom linear` on a ship scene: Nomoto's models about the straight course.
-pub fn linear(args: &super::linear::Args) -> Result<()> {
-    let scene = ShipScene::load(&args.scene)?;
+pub fn linear(args: &super::linear::Args, scene: &ShipScene) -> Result<()> {
     let model = ShipModel::new(&scene.table)?;
     let linear = LinearModel::closed_form(&scene.table);
-    let linearised = linearise_ship(&scene, &model)?;
+    let linearised = linearise_ship(scene, &model)?;
     super::linear::write_out(args, &scene.title, &linearised)?;
     if args.json {
         // Every scene's report, with the ship's Nomoto block beside it.
         let mut report = super::linear::report(&scene.title, &linearised);
-        let nomoto = serde_json::to_value(LinearSummary::new(&scene, &model, &linear))?;
+        let nomoto = serde_json::to_value(LinearSummary::new(scene, &model, &linear))?;
         if let (Some(report), serde_json::Value::Object(nomoto)) = (report.as_object_mut(), nomoto)
         {
             report.extend(nomoto);

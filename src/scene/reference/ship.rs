@@ -504,6 +504,30 @@ pub(super) static KEYS: &[Key] = &[
         example: "1.0",
         ..Key::BLANK
     },
+    // [linear]
+    Key {
+        path: "linear.at.*",
+        families: SHIP,
+        kind: Kind::Table("state entries and inputs by name, and values"),
+        description: "The operating point of `eom linear`, where it differs from the approach \
+                      (straight ahead at U₀, the rudder amidships): `u`, `v`, `r` (SI), `psi` \
+                      and the rudder angle `delta` (or `rudder`) in radians.",
+        example: "delta = 0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "linear.trim",
+        families: SHIP,
+        kind: Kind::Names("state entries or inputs"),
+        description: "Free variables of `eom linear`, solved for by Newton's method on (u, v, r) \
+                      so that the point is an equilibrium: `[\"rudder\", \"v\", \"u\"]` finds \
+                      the rudder angle, the drift and the speed that keep a ship with bias \
+                      terms on a straight course (a clear error when it does not converge).",
+        example: "[\"rudder\", \"v\", \"u\"]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
     // [sweep]
     Key {
         path: "sweep.*",

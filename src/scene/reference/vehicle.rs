@@ -356,4 +356,30 @@ pub(super) static KEYS: &[Key] = &[
         example: "0.1",
         ..Key::BLANK
     },
+    // [linear]
+    Key {
+        path: "linear.at.*",
+        families: VEHICLE,
+        kind: Kind::Table("state entries and inputs by name, and values"),
+        description: "The operating point of `eom linear`, where it differs from the cruise: \
+                      `u`, `v`, `w`, `p`, `q`, `r` (SI), `phi`, `theta`, `psi` (rad) and the \
+                      fins' angles `dr`, `ds` (or `rudder`, `stern_planes`, rad). The vehicle is \
+                      linearised in Euler angles, the Euler-angle twin of its table.",
+        example: "theta = 0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "linear.trim",
+        families: VEHICLE,
+        kind: Kind::Names("state entries or inputs"),
+        description: "Free variables of `eom linear`, solved for by Newton's method on the \
+                      reduced state so that the point is an equilibrium (a clear error when it \
+                      does not converge): `[\"u\", \"phi\"]` is the cruise the propeller holds, \
+                      `[\"theta\", \"stern_planes\"]` a vehicle's pitch and planes at a depth \
+                      rate of zero.",
+        example: "[\"u\", \"phi\"]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
 ];
