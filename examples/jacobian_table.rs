@@ -2,7 +2,9 @@
 //! of ∂f/∂x and ∂f/∂u that the generator proved and emitted (of N² and N·M), the cost of the
 //! emitted ∂f/∂x, and the time of one evaluation of both Jacobians, emitted and by dual
 //! numbers (the median of 11 rounds of 20 000 evaluations; `cargo bench --bench jacobian`
-//! measures the same calls with criterion).
+//! measures the same calls with criterion). Then the same for the scene-defined models of
+//! `scenes/mariner.toml` and `scenes/remus100.toml`, whose proved programs are interpreted:
+//! their Jacobian programs against dual numbers through their interpreted `rhs`.
 //!
 //! ```sh
 //! cargo run --release --example jacobian_table
@@ -76,4 +78,44 @@ fn main() {
     );
     println!("|---|---|---|---|---|---|---|---|");
     each_model(&mut Table);
+    println!();
+    println!(
+        "| scene model (interpreted) | `rhs` | ∂f/∂x entries | ∂f/∂u entries | Jacobian \
+         programs [ns] | dual numbers [ns] | ratio |"
+    );
+    println!("|---|---|---|---|---|---|---|");
+    let mariner = eom::ship::ShipScene::load("scenes/mariner.toml".as_ref()).expect("the scene");
+    let ship = eom::ship::ShipModel::new(&mariner.table).expect("the Mariner builds");
+    let mut state = mariner.start();
+    (state[1], state[2], state[6]) = (0.3, 0.004, 0.05);
+    scene_row("mariner", &ship, ship.operations(), (&state, &[0.0]));
+    let remus = std::fs::read_to_string("scenes/remus100.toml").expect("the scene");
+    let remus = eom::vehicle::VehicleScene::parse(&remus, "remus100.toml").expect("REMUS builds");
+    let mut state = remus.start().expect("REMUS cruises");
+    (state[1], state[2], state[4], state[13]) = (0.05, -0.02, 0.01, 0.03);
+    let operations = remus.model.operations();
+    scene_row("remus100", &remus.model, operations, (&state, &[0.0; 2]));
+}
+
+/// One scene-defined model's row: its Jacobian programs against dual numbers through `rhs`.
+fn scene_row<Mo, const N: usize, const M: usize>(
+    name: &str,
+    model: &Mo,
+    operations: Operations,
+    (state, input): (&[f64; N], &[f64; M]),
+) where
+    Mo: Model<f64, N, M> + Model<Dual64, N, M>,
+{
+    let fast = nanoseconds(|| emitted::<Mo, N, M>(model, black_box(state), black_box(input)));
+    let slow =
+        nanoseconds(|| by_dual_numbers::<Mo, N, M>(model, black_box(state), black_box(input)));
+    println!(
+        "| {name} | {} | {} of {} | {} of {} | {fast:.0} | {slow:.0} | {:.1} |",
+        cost(&operations),
+        <Mo as Model<f64, N, M>>::STATE_JACOBIAN.len(),
+        N * N,
+        <Mo as Model<f64, N, M>>::INPUT_JACOBIAN.len(),
+        N * M,
+        slow / fast
+    );
 }

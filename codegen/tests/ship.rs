@@ -1,5 +1,7 @@
 //! The ship model: 4.46 with the added mass and the hydrodynamic polynomial of a table.
 
+mod mutants;
+
 use eom_codegen::emit::{prove, system_source};
 use eom_codegen::model::ship::{Force, ShipSpec, Term, Units, YawInertia, ship};
 use eom_codegen::symbolic::{Expr, parse};
@@ -161,4 +163,23 @@ fn the_rudder_angle_moves_at_its_input() {
     let system = ship("bare", &spec).unwrap();
     assert_eq!(system.state[6], "delta");
     assert_eq!(system.outputs[6], Expr::symbol("delta_rate"));
+}
+
+/// The Jacobians of a ship's program, proved when the scene is read, cannot be fooled: every
+/// single-operation mutant (`mutants/mod.rs`) of every node the Mariner's Jacobians read, in
+/// the prime system, fails their check against the exact derivative.
+#[test]
+fn single_operation_mutants_of_the_mariner_s_jacobians_fail_their_check() {
+    let spec = ShipSpec {
+        units: Units::Prime,
+        yaw_inertia: YawInertia::AboutMidship,
+        terms: mariner_terms(),
+    };
+    let system = ship("mariner", &spec).unwrap();
+    let caught = mutants::jacobian_mutants(&system, 1);
+    println!(
+        "Mariner: {} Jacobian mutants caught of {}, over {} proved entries; ∂f/∂x {:?}, ∂f/∂u {:?}",
+        caught.tried, caught.tried, caught.entries, caught.operations[0], caught.operations[1]
+    );
+    assert!(caught.tried > 100, "only {}", caught.tried);
 }

@@ -7,6 +7,8 @@
 //! Prestero's (2001, Appendix B) as his public transcriptions give them; the thesis itself was
 //! not read.
 
+mod mutants;
+
 use eom_codegen::check::Equation;
 use eom_codegen::derivation::spatial;
 use eom_codegen::derivation::vehicle::{
@@ -648,5 +650,22 @@ fn the_quaternions_restoring_loads_are_the_euler_angles_ones() {
     for (restoring, expected) in spec.restoring().iter().zip(expected) {
         let difference = &restoring.subs_all(&at_euler).unwrap() - &expected;
         assert!(difference.is_zero(), "{difference}");
+    }
+}
+
+/// The Jacobians of a vehicle's program, proved when the scene is read, cannot be fooled
+/// either: REMUS in quaternions (the model that runs) and in Euler angles (the twin that is
+/// linearised), every mutant of every node their Jacobians read.
+#[test]
+fn single_operation_mutants_of_remus_s_jacobians_fail_their_check() {
+    for kinematics in [Kinematics::Quaternion, Kinematics::Euler] {
+        let spec = remus_spec(kinematics, AddedMassCoriolis::Folded);
+        let system = vehicle("remus", &spec).unwrap();
+        let caught = mutants::jacobian_mutants(&system, 1);
+        println!(
+            "REMUS ({kinematics:?}): {} Jacobian mutants caught of {}, over {} proved entries; ∂f/∂x {:?}, ∂f/∂u {:?}",
+            caught.tried, caught.tried, caught.entries, caught.operations[0], caught.operations[1]
+        );
+        assert!(caught.tried > 100, "only {}", caught.tried);
     }
 }
