@@ -294,8 +294,8 @@ fn bad_tables_are_refused_naming_the_key() {
             "hydrodynamics.coefficients.Xudot",
         ),
         (
-            "[integrator]",
-            "[rudder]\nmax_rate_deg_s = 20.0\n\n[integrator]",
+            "[rudder]\nmax_deg = 15.0",
+            "[rudder]\nmax_deg = 15.0\nmax_rate_deg_s = 20.0",
             "rudder.max_rate_deg_s",
         ),
         (
@@ -507,5 +507,165 @@ fn a_vehicle_is_trimmed_for_the_variables_its_linear_table_names() {
     assert!(
         error.contains("linear.trim[0]") && error.contains("stern_planes"),
         "{error}"
+    );
+}
+
+/// REMUS's scene with `autopilot` and `manoeuvres` in place of its own.
+fn autopiloted(autopilot: &str, manoeuvres: &str) -> String {
+    let text = scene_text();
+    let own_autopilot = text.find("[autopilot]").unwrap();
+    let integrator = text.find("[integrator]").unwrap();
+    let own_manoeuvres = text.find("[[manoeuvre]]").unwrap();
+    format!(
+        "{}{autopilot}\n{}{manoeuvres}",
+        &text[..own_autopilot],
+        &text[integrator..own_manoeuvres]
+    )
+}
+
+const AUTOPILOTS: &str = "[autopilot]\nsample_s = 0.1\n\n\
+    [autopilot.heading]\nkp = 1.0\nki = 0.02\nkd = 1.0\n\n\
+    [autopilot.depth]\nkp = 0.2\nmax_pitch_deg = 20.0\nkp_pitch = 2.0\nkd_pitch = 1.0\n";
+
+const TURN_AND_DIVE: &str = "[[manoeuvre]]\nname = \"turn_and_dive\"\nkind = \"autopilot\"\n\
+    times_s = [5.0]\nheading_deg = [30.0]\ndepth_m = [5.0]\nduration_s = 120.0\n";
+
+#[test]
+fn the_autopilots_take_remus_to_a_new_heading_and_depth_and_hold_them() {
+    use eom::vehicle::summary::{SETTLING_BAND, SetpointFigures, largest_setpoint_difference};
+    let scene = parse(&autopiloted(AUTOPILOTS, TURN_AND_DIVE)).unwrap();
+    let start = scene.start().unwrap();
+    let m = &scene.manoeuvres[0];
+    let run = run_with(&scene, &scene.model, m, start);
+    let figures = SetpointFigures::of(&run);
+    println!("{figures:#?}");
+    assert_eq!(figures.len(), 2);
+    let (heading, depth) = (figures[0], figures[1]);
+    assert_eq!(
+        (heading.what, heading.from, heading.to),
+        ("heading", 0.0, 30.0)
+    );
+    assert_eq!((depth.what, depth.from, depth.to), ("depth", 0.0, 5.0));
+    // Both settle within 2 % of the change and stay there to the end, 115 s later.
+    for f in [heading, depth] {
+        let settled = f.settling_time_s.expect("settles");
+        assert!(settled > 0.0 && settled < 60.0, "{f:?}");
+        assert!(
+            f.steady_error.abs() <= SETTLING_BAND * (f.to - f.from).abs(),
+            "{f:?}"
+        );
+        assert_eq!(f.at_s, 5.0);
+        assert_eq!(f.until_s, 120.0);
+    }
+    // The last sample is the run's end: the heading and depth there are the state's.
+    let last = run.tracked.last().unwrap();
+    let end = run.ends.last().unwrap();
+    assert_eq!(last.t, 120.0);
+    assert_eq!(last.value.1, end.state[8]);
+    // The samples are at k·T_s: 1200 of them and the end, each with its setpoints.
+    assert_eq!(run.tracked.len(), 1201);
+    assert!((run.tracked[1].t - 0.1).abs() < 1e-15);
+    assert_eq!(run.tracked[49].setpoint, (Some(0.0), Some(0.0)));
+    assert_eq!(run.tracked[50].setpoint, (Some(30.0), Some(5.0)));
+    // Half the step, the same control law: the figures move by the integrator's error only
+    // (RK4 at 0.01 s against 0.005 s over 120 s: below 1e-5 in degrees, m and s). A settling
+    // time is a sample instant, so it either stays or moves by a sample (0.1 s).
+    let refined = manoeuvre::run(
+        &scene.model,
+        &scene.fins,
+        m,
+        start,
+        (&scene.stepper.refined(), scene.every),
+        |_| true,
+    )
+    .unwrap();
+    let difference = largest_setpoint_difference(&figures, &SetpointFigures::of(&refined));
+    assert!(difference < 1e-5, "{difference:e}");
+}
+
+#[test]
+fn the_autopilot_reads_the_rudder_s_sense_from_the_table() {
+    // The same vehicle with its rudder's sign reversed (Yuudr, Nuudr negated: a positive
+    // rudder now turns it to starboard) turns the same way under the same gains: the rudder's
+    // commands are negated, and since negation is exact, the motion is the same to the bit.
+    let text = autopiloted(AUTOPILOTS, TURN_AND_DIVE);
+    let reversed = text
+        .replace("Yuudr = 9.64", "Yuudr = -9.64")
+        .replace("Nuudr = -6.15", "Nuudr = 6.15");
+    assert_ne!(text, reversed);
+    let runs: Vec<VehicleRun> = [text, reversed]
+        .iter()
+        .map(|text| {
+            let scene = parse(text).unwrap();
+            let start = scene.start().unwrap();
+            run_with(&scene, &scene.model, &scene.manoeuvres[0], start)
+        })
+        .collect();
+    let (a, b) = (runs[0].ends.last().unwrap(), runs[1].ends.last().unwrap());
+    assert_eq!(a.state[..13], b.state[..13]);
+    assert_eq!(a.state[13], -b.state[13], "the rudder's angle, negated");
+    assert_eq!(runs[0].tracked, runs[1].tracked);
+}
+
+#[test]
+fn bad_autopilots_are_refused_naming_the_key() {
+    let error =
+        |autopilot: &str, manoeuvre: &str| parse(&autopiloted(autopilot, manoeuvre)).unwrap_err();
+    let cases = [
+        (
+            AUTOPILOTS.replace("kp = 1.0", "kp = -1.0"),
+            TURN_AND_DIVE.to_owned(),
+            "autopilot.heading.kp",
+        ),
+        (
+            AUTOPILOTS.replace("sample_s = 0.1", "sample_s = 0.0"),
+            TURN_AND_DIVE.to_owned(),
+            "autopilot.sample_s",
+        ),
+        (
+            AUTOPILOTS.replace("max_pitch_deg = 20.0", "max_pitch_deg = 95.0"),
+            TURN_AND_DIVE.to_owned(),
+            "autopilot.depth.max_pitch_deg",
+        ),
+        (
+            AUTOPILOTS.replace("kd = 1.0", "kd = nan"),
+            TURN_AND_DIVE.to_owned(),
+            "autopilot.heading.kd",
+        ),
+        // A heading to hold without a heading autopilot.
+        (
+            AUTOPILOTS[..AUTOPILOTS.find("[autopilot.heading]").unwrap()].to_owned(),
+            TURN_AND_DIVE.to_owned(),
+            "manoeuvre[0].heading_deg",
+        ),
+        // The rudder commanded while the heading autopilot holds it; setpoints in fin steps.
+        (
+            AUTOPILOTS.to_owned(),
+            TURN_AND_DIVE.replace("depth_m = [5.0]", "rudder_deg = [5.0]"),
+            "manoeuvre[0].rudder_deg",
+        ),
+        (
+            AUTOPILOTS.to_owned(),
+            TURN_AND_DIVE.replace("kind = \"autopilot\"", "kind = \"fin_steps\""),
+            "manoeuvre[0].heading_deg",
+        ),
+        (
+            AUTOPILOTS.to_owned(),
+            TURN_AND_DIVE.replace("depth_m = [5.0]", "depth_m = [5.0, 6.0]"),
+            "manoeuvre[0].depth_m",
+        ),
+    ];
+    for (autopilot, manoeuvre, key) in cases {
+        let message = error(&autopilot, &manoeuvre);
+        assert!(message.contains(key), "{key}: {message}");
+    }
+    // A rudder the table does not act with cannot steer: its autopilot is refused.
+    let text = autopiloted(AUTOPILOTS, TURN_AND_DIVE)
+        .replace("Yuudr = 9.64\n", "")
+        .replace("Nuudr = -6.15\n", "");
+    let message = parse(&text).unwrap_err();
+    assert!(
+        message.contains("autopilot.heading") && message.contains("∂ṙ/∂δ_r"),
+        "{message}"
     );
 }

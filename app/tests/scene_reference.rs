@@ -7,7 +7,7 @@
 //! to the reference fails here).
 
 use eom::scene::file::SceneFile;
-use eom::scene::reference::{Key, REGENERATE, SceneFamily, keys_of, markdown, template};
+use eom::scene::reference::{Key, REGENERATE, Required, SceneFamily, keys_of, markdown, template};
 use eom::ship::scene::ShipSceneFile;
 use eom::vehicle::scene::VehicleSceneFile;
 use eom_test_support::cli::{eom, folder, root};
@@ -103,17 +103,31 @@ fn docs_scenes_md_is_what_the_reference_makes() {
     assert_eq!(String::from_utf8(printed.stdout).unwrap(), markdown());
 }
 
-/// The template of `family` with `key` set to its example, as a TOML table.
+/// The template of `family` with `key` set to its example, as a TOML table, beside the keys
+/// that the tables holding it require (`required with [autopilot]`), at their examples.
 fn with_example(family: SceneFamily, key: &Key) -> toml::Table {
     let mut table: toml::Table = template(family).parse().unwrap();
-    let example = key.example_for(family);
-    let value = if key.name() == "*" {
-        toml::Value::Table(example.parse().unwrap())
-    } else {
-        let wrapped: toml::Table = format!("value = {example}").parse().unwrap();
-        wrapped["value"].clone()
+    let set = |table: &mut toml::Table, key: &Key| {
+        let example = key.example_for(family);
+        let value = if key.name() == "*" {
+            toml::Value::Table(example.parse().unwrap())
+        } else {
+            let wrapped: toml::Table = format!("value = {example}").parse().unwrap();
+            wrapped["value"].clone()
+        };
+        schema::set(table, key.path, value);
     };
-    schema::set(&mut table, key.path, value);
+    let holders: Vec<String> = (1..key.path.split('.').count())
+        .map(|n| key.path.split('.').take(n).collect::<Vec<_>>().join("."))
+        .collect();
+    for other in keys_of(family) {
+        let needed = matches!(other.required, Required::When(when)
+            if holders.iter().any(|holder| when == format!("with [{holder}]")));
+        if needed {
+            set(&mut table, other);
+        }
+    }
+    set(&mut table, key);
     table
 }
 

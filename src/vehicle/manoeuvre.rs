@@ -1,13 +1,16 @@
-//! A vehicle's manoeuvre: its fins under step commands, integrated by the one driver
-//! (`integrate::segment::advance`, any method), and the figures read where the commands change.
+//! A vehicle's manoeuvre: its fins under step commands or under the autopilots, integrated by
+//! the one driver (`integrate::segment::advance`, any method), and the figures read where the
+//! commands change.
 //!
-//! The run is cut into stretches at the instants the commands change, so each stretch holds
-//! its commands and ends exactly at the next change: the figures of a step (the yaw rate, the
+//! The run is cut into stretches at the instants the commands change (the steps, the
+//! setpoints, and the autopilots' samples, [`super::autopilot`]), so each stretch holds its
+//! commands and ends exactly at the next change: the figures of a step (the yaw rate, the
 //! speed, the roll and pitch, the depth reached when it ends) are those of the integrated
 //! solution at that instant, not at the nearest step. The trajectory's rows are at
 //! t = k·every, as every scene's are, and at each change of the commands.
 
 use super::VehicleError;
+use super::autopilot::{Autopilots, Controller, Setpoints};
 use super::fins::{FinSteps, Fins, Steering};
 use super::model::VehicleModel;
 use crate::integrate::segment::{self, Hooks, add};
@@ -15,13 +18,16 @@ use crate::integrate::{IntegrateError, RowClock, Stats, Stepper};
 use crate::models::Model;
 use nalgebra::SVector;
 
-/// One manoeuvre of a scene: the fins' steps, from the cruise.
+/// One manoeuvre of a scene: the fins' steps, from the cruise, and the autopilots with what
+/// they are commanded to hold.
 #[derive(Debug, Clone, PartialEq)]
 pub struct VehicleManoeuvre {
     /// Its name, for the output folder and the summary.
     pub name: String,
-    /// The fins' commands.
+    /// The fins' commands (of a fin whose autopilot is on, overridden by it).
     pub steps: FinSteps,
+    /// The autopilots and their setpoints, for an autopiloted manoeuvre.
+    pub autopilot: Option<(Autopilots, Setpoints)>,
     /// The end of the run, s.
     pub duration: f64,
 }
@@ -108,12 +114,26 @@ pub struct StepEnd {
     pub commands: [f64; 2],
 }
 
+/// Where an autopilot's error stood at one of its samples.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Tracked {
+    /// t, s.
+    pub t: f64,
+    /// The heading ψ and depth z then (degrees, m).
+    pub value: (f64, f64),
+    /// What the autopilots were commanded to hold (degrees, m; `None` where off).
+    pub setpoint: (Option<f64>, Option<f64>),
+}
+
 /// A manoeuvre run: where the commands changed and the run ended, and what it cost.
 #[derive(Debug, Clone)]
 pub struct VehicleRun {
     /// The state at the end of each step of the commands (the first: the cruise before the
-    /// first change), in order, the last at the end of the run.
+    /// first change), in order, the last at the end of the run. Under an autopilot the steps
+    /// are those of the manoeuvre's fin steps and setpoints, not its samples.
     pub ends: Vec<StepEnd>,
+    /// Under an autopilot, the heading and depth at each of its samples and at the end.
+    pub tracked: Vec<Tracked>,
     /// Steps taken.
     pub steps: u64,
 }
@@ -130,12 +150,12 @@ pub fn run(
     mut observe: impl FnMut(&Sample) -> bool,
 ) -> Result<VehicleRun, VehicleError> {
     let mut y = VehicleState::from(start);
-    let mut changes: Vec<f64> = (manoeuvre.steps.times().iter().copied())
-        .filter(|&t| t > 0.0 && t < manoeuvre.duration)
-        .collect();
+    let schedule = schedule(manoeuvre);
+    let mut changes: Vec<f64> = instants(manoeuvre);
     changes.push(manoeuvre.duration);
     let mut t = 0.0;
-    let mut steering = steering_at(fins, &manoeuvre.steps, t, &mut y);
+    let mut command = Command::new(manoeuvre, &start);
+    let mut steering = command.at(fins, t, &mut y);
     let mut rows = RowClock::new(0.0, every);
     let mut total = Stats::default();
     let mut ends = Vec::new();
@@ -159,13 +179,17 @@ pub fn run(
         add(&mut total, stats);
         let reached = reached.map_err(|error| run_error(error, stepper))?;
         (t, y) = (reached.t, reached.state);
-        ends.push(StepEnd {
-            t,
-            state: y.data.0[0],
-            commands: steering.saturated(),
-        });
-        if !last {
-            steering = steering_at(fins, &manoeuvre.steps, t, &mut y);
+        if last || schedule.contains(&t) {
+            ends.push(StepEnd {
+                t,
+                state: y.data.0[0],
+                commands: steering.saturated(),
+            });
+        }
+        if last {
+            command.track(t, &y.data.0[0]);
+        } else {
+            steering = command.at(fins, t, &mut y);
             let after = Sample {
                 t,
                 state: y.data.0[0],
@@ -178,23 +202,106 @@ pub fn run(
     }
     Ok(VehicleRun {
         ends,
+        tracked: command.tracked,
         steps: total.steps as u64,
     })
 }
 
-/// The fins' loads from `t` on; a fin without a lag is set to its saturated command.
-fn steering_at<'a>(fins: &'a Fins, steps: &FinSteps, t: f64, y: &mut VehicleState) -> Steering<'a> {
-    let steering = Steering {
-        fins,
-        commands: steps.angles(t),
-    };
-    let saturated = steering.saturated();
-    for (i, fin) in [fins.rudder, fins.stern_planes].iter().enumerate() {
-        if fin.time_constant.is_none() {
-            y[13 + i] = saturated[i];
+/// The instants within the run where the steps or the setpoints change.
+fn schedule(manoeuvre: &VehicleManoeuvre) -> Vec<f64> {
+    let setpoints = manoeuvre.autopilot.as_ref().map(|(_, s)| &s.times[..]);
+    let mut times: Vec<f64> = (manoeuvre.steps.times().iter())
+        .chain(setpoints.into_iter().flatten())
+        .copied()
+        .filter(|&t| t > 0.0 && t < manoeuvre.duration)
+        .collect();
+    times.sort_by(f64::total_cmp);
+    times.dedup();
+    times
+}
+
+/// Where the run is cut: the schedule's instants, and the autopilots' samples k·T_s (one
+/// within a millionth of a period of a scheduled instant is that instant).
+fn instants(manoeuvre: &VehicleManoeuvre) -> Vec<f64> {
+    let mut times = schedule(manoeuvre);
+    if let Some((autopilots, _)) = &manoeuvre.autopilot {
+        let period = autopilots.sample;
+        let count = (manoeuvre.duration / period).ceil() as u64;
+        let scheduled = times.clone();
+        let near = |t: f64| scheduled.iter().any(|&s| (s - t).abs() <= 1e-6 * period);
+        times.extend(
+            (1..count)
+                .map(|k| k as f64 * period)
+                .filter(|&t| t < manoeuvre.duration && !near(t)),
+        );
+        times.sort_by(f64::total_cmp);
+    }
+    times
+}
+
+/// What commands the fins through a run: the steps, and the autopilots where they are on.
+struct Command<'a> {
+    manoeuvre: &'a VehicleManoeuvre,
+    /// The heading (degrees) and depth of the cruise, held before the first setpoint.
+    cruise: (f64, f64),
+    controller: Controller,
+    last: f64,
+    tracked: Vec<Tracked>,
+}
+
+impl<'a> Command<'a> {
+    fn new(manoeuvre: &'a VehicleManoeuvre, start: &[f64; 15]) -> Self {
+        Command {
+            manoeuvre,
+            cruise: (euler_angles(start)[2].to_degrees(), start[8]),
+            controller: Controller::default(),
+            last: 0.0,
+            tracked: Vec::new(),
         }
     }
-    steering
+
+    /// Records the heading and depth at `t` against the setpoints, under an autopilot.
+    fn track(&mut self, t: f64, state: &[f64; 15]) {
+        if let Some((_, setpoints)) = &self.manoeuvre.autopilot {
+            self.tracked.push(Tracked {
+                t,
+                value: (euler_angles(state)[2].to_degrees(), state[8]),
+                setpoint: setpoints.at(t, self.cruise),
+            });
+        }
+    }
+
+    /// The fins' loads from `t` on: the steps' commands, those of the autopilots that are on
+    /// in their place; a fin without a lag is set to its saturated command.
+    fn at(&mut self, fins: &'a Fins, t: f64, y: &mut VehicleState) -> Steering<'a> {
+        let mut commands = self.manoeuvre.steps.angles(t);
+        if let Some((autopilots, setpoints)) = &self.manoeuvre.autopilot {
+            let state = y.data.0[0];
+            self.track(t, &state);
+            let limits = [fins.rudder.max_angle, fins.stern_planes.max_angle];
+            let computed = self.controller.commands(
+                autopilots,
+                (&state, euler_angles(&state)),
+                setpoints.at(t, self.cruise),
+                limits,
+                t - self.last,
+            );
+            self.last = t;
+            for (command, computed) in commands.iter_mut().zip(computed) {
+                if let Some(value) = computed {
+                    *command = value;
+                }
+            }
+        }
+        let steering = Steering { fins, commands };
+        let saturated = steering.saturated();
+        for (i, fin) in [fins.rudder, fins.stern_planes].iter().enumerate() {
+            if fin.time_constant.is_none() {
+                y[13 + i] = saturated[i];
+            }
+        }
+        steering
+    }
 }
 
 /// A failed stretch as a vehicle's error, naming the state entry or the cause.

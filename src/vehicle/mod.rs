@@ -6,6 +6,7 @@
 //! | the table as the scene gives it: body, hydrostatics, added mass, named terms, propeller | [`table`] |
 //! | the six equations about O with exactly the table's terms, derived and proved by `eom-codegen`, evaluated | [`model`] |
 //! | the fins (rudder, stern planes): saturation, lag, rate limit; their step commands | [`fins`] |
+//! | the autopilots: heading (PID on ψ), depth (depth to pitch to the planes), sampled | [`autopilot`] |
 //! | linearised about a cruise: A, B, the modes (the Euler-angle twin of the table) | [`linear`] |
 //! | a manoeuvre over the one driver (any method), its figures | [`manoeuvre`] |
 //! | what a run reports, as data (`summary.json`'s types) | [`summary`] |
@@ -18,6 +19,7 @@
 //! program and its Jacobians equal to the equations; [`model::VehicleModel`] then evaluates
 //! that proved program as a [`Model`](crate::Model), so it runs on every integrator.
 
+pub mod autopilot;
 pub mod fins;
 pub mod linear;
 pub mod manoeuvre;

@@ -35,11 +35,32 @@
 //! method = "rk4"
 //! step = 0.01
 //!
+//! [autopilot]                        # optional: the autopilots, sampled every sample_s
+//! sample_s = 0.1
+//! [autopilot.heading]                # PID on ψ to the rudder; gains positive
+//! kp = 1.0                           # rad of rudder per rad of heading error
+//! ki = 0.0                           # 1/s
+//! kd = 0.5                           # s
+//! [autopilot.depth]                  # depth to pitch (kp, ki, max_pitch_deg) to the planes
+//! kp = 0.2                           # rad of pitch per m of depth error
+//! ki = 0.0                           # rad per m s
+//! max_pitch_deg = 20.0
+//! kp_pitch = 1.0                     # rad of planes per rad of pitch error
+//! ki_pitch = 0.0                     # 1/s
+//! kd_pitch = 0.5                     # s
+//!
 //! [[manoeuvre]]
 //! kind = "fin_steps"                 # the commands step at times_s
 //! times_s = [10, 40, 70]
 //! rudder_deg = [4, -4, 0]
 //! stern_planes_deg = [0, 0, 0]       # optional: zero
+//! duration_s = 80
+//!
+//! [[manoeuvre]]
+//! kind = "autopilot"                 # the autopilots hold what is commanded from times_s on
+//! times_s = [5]
+//! heading_deg = [30]                 # needs [autopilot.heading]
+//! depth_m = [5]                      # needs [autopilot.depth]
 //! duration_s = 80
 //! ```
 //!
@@ -47,6 +68,7 @@
 //! fins at zero, with u and the roll angle φ trimmed so that u̇ = ṗ = 0 (Newton on the proved
 //! model and its proved Jacobian). Every key is checked and an error names it by its path.
 
+use super::autopilot::{Autopilots, DepthGains, HeadingGains, Setpoints};
 use super::fins::{FinSteps, Fins, Rudder};
 use super::manoeuvre::VehicleManoeuvre;
 use super::model::VehicleModel;
@@ -90,6 +112,55 @@ pub struct VehicleSceneFile {
     pub output: OutputTable,
     /// The operating point of `eom linear`.
     pub linear: Option<crate::scene::file::LinearTable>,
+    /// The autopilots.
+    pub autopilot: Option<AutopilotTable>,
+}
+
+/// `[autopilot]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AutopilotTable {
+    /// T_s, s.
+    pub sample_s: f64,
+    /// The heading autopilot.
+    pub heading: Option<HeadingTable>,
+    /// The depth autopilot.
+    pub depth: Option<DepthTable>,
+}
+
+/// `[autopilot.heading]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct HeadingTable {
+    /// k_p.
+    pub kp: f64,
+    /// k_i, 1/s.
+    #[serde(default)]
+    pub ki: f64,
+    /// k_d, s.
+    #[serde(default)]
+    pub kd: f64,
+}
+
+/// `[autopilot.depth]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DepthTable {
+    /// k_p, rad per m.
+    pub kp: f64,
+    /// k_i, rad per m s.
+    #[serde(default)]
+    pub ki: f64,
+    /// θ_max, degrees.
+    pub max_pitch_deg: f64,
+    /// k_p,θ.
+    pub kp_pitch: f64,
+    /// k_i,θ, 1/s.
+    #[serde(default)]
+    pub ki_pitch: f64,
+    /// k_d,θ, s.
+    #[serde(default)]
+    pub kd_pitch: f64,
 }
 
 /// `[body]`.
@@ -140,7 +211,7 @@ pub struct PropellerTable {
 pub struct ManoeuvreTable {
     /// The output folder's name.
     pub name: Option<String>,
-    /// `fin_steps`.
+    /// `fin_steps` or `autopilot`.
     pub kind: String,
     /// When the commands step, s.
     pub times_s: Vec<f64>,
@@ -148,6 +219,10 @@ pub struct ManoeuvreTable {
     pub rudder_deg: Option<Vec<f64>>,
     /// The stern planes' command from each time on, degrees.
     pub stern_planes_deg: Option<Vec<f64>>,
+    /// The heading the autopilot holds from each time on, degrees.
+    pub heading_deg: Option<Vec<f64>>,
+    /// The depth the autopilot holds from each time on, m.
+    pub depth_m: Option<Vec<f64>>,
     /// The end of the run, s.
     pub duration_s: f64,
 }
@@ -268,33 +343,61 @@ impl Checker<'_> {
         &self,
         index: usize,
         table: &ManoeuvreTable,
+        autopilots: Option<&Autopilots>,
     ) -> Result<VehicleManoeuvre, SceneError> {
         let key = |k: &str| format!("manoeuvre[{index}].{k}");
-        if table.kind != "fin_steps" {
-            return Err(self.invalid(
-                &key("kind"),
-                format!("`{}`: expected fin_steps", table.kind),
-            ));
-        }
         let duration = self.positive(&key("duration_s"), table.duration_s)?;
         let n = table.times_s.len();
+        let listed = |k: &str, given: &Option<Vec<f64>>| self.listed(&key(k), given, n);
         let angles = |k: &str, given: &Option<Vec<f64>>| -> Result<Vec<f64>, SceneError> {
-            let degrees = given.clone().unwrap_or_else(|| vec![0.0; n]);
-            if degrees.len() != n {
-                return Err(
-                    self.invalid(&key(k), format!("{} angles for {n} times", degrees.len()))
-                );
-            }
+            let degrees = listed(k, given)?.unwrap_or_else(|| vec![0.0; n]);
             Ok(degrees.iter().map(|d| d.to_radians()).collect())
         };
-        if table.rudder_deg.is_none() && table.stern_planes_deg.is_none() {
-            return Err(self.error(
-                &key("rudder_deg"),
-                Problem::Missing("rudder_deg or stern_planes_deg".into()),
-            ));
-        }
-        let rudder = angles("rudder_deg", &table.rudder_deg)?;
-        let stern = angles("stern_planes_deg", &table.stern_planes_deg)?;
+        let (rudder, stern, autopilot) = match table.kind.as_str() {
+            "fin_steps" => {
+                for k in ["heading_deg", "depth_m"] {
+                    let given = if k == "heading_deg" {
+                        &table.heading_deg
+                    } else {
+                        &table.depth_m
+                    };
+                    if given.is_some() {
+                        return Err(self.invalid(
+                            &key(k),
+                            "a fin_steps manoeuvre commands the fins; kind = \"autopilot\" \
+                             commands headings and depths",
+                        ));
+                    }
+                }
+                if table.rudder_deg.is_none() && table.stern_planes_deg.is_none() {
+                    return Err(self.error(
+                        &key("rudder_deg"),
+                        Problem::Missing("rudder_deg or stern_planes_deg".into()),
+                    ));
+                }
+                let rudder = angles("rudder_deg", &table.rudder_deg)?;
+                (
+                    rudder,
+                    angles("stern_planes_deg", &table.stern_planes_deg)?,
+                    None,
+                )
+            }
+            "autopilot" => {
+                let setpoints = self.setpoints(index, table, autopilots)?;
+                let rudder = angles("rudder_deg", &table.rudder_deg)?;
+                (
+                    rudder,
+                    angles("stern_planes_deg", &table.stern_planes_deg)?,
+                    Some(setpoints),
+                )
+            }
+            other => {
+                return Err(self.invalid(
+                    &key("kind"),
+                    format!("`{other}`: expected fin_steps or autopilot"),
+                ));
+            }
+        };
         let pairs = rudder.into_iter().zip(stern).map(|(r, s)| [r, s]).collect();
         let steps = FinSteps::new(table.times_s.clone(), pairs).ok_or_else(|| {
             self.invalid(
@@ -306,7 +409,7 @@ impl Checker<'_> {
         if table.times_s[0] < 0.0 || table.times_s[0] >= duration {
             return Err(self.invalid(&key("times_s"), "the first step must fall within the run"));
         }
-        let name = table.name.clone().unwrap_or_else(|| "fin_steps".to_owned());
+        let name = (table.name.clone()).unwrap_or_else(|| table.kind.clone());
         let valid = !name.is_empty()
             && name
                 .chars()
@@ -322,8 +425,136 @@ impl Checker<'_> {
         Ok(VehicleManoeuvre {
             name,
             steps,
+            autopilot: autopilot
+                .map(|setpoints| (*autopilots.expect("checked by setpoints"), setpoints)),
             duration,
         })
+    }
+
+    /// A list of `n` finite values, one per time, if given.
+    fn listed(
+        &self,
+        key: &str,
+        given: &Option<Vec<f64>>,
+        n: usize,
+    ) -> Result<Option<Vec<f64>>, SceneError> {
+        let Some(values) = given else {
+            return Ok(None);
+        };
+        if values.len() != n {
+            return Err(self.invalid(key, format!("{} values for {n} times", values.len())));
+        }
+        for (i, v) in values.iter().enumerate() {
+            self.finite(&format!("{key}[{i}]"), *v)?;
+        }
+        Ok(Some(values.clone()))
+    }
+
+    /// An autopilot manoeuvre's setpoints, each list needing its autopilot.
+    fn setpoints(
+        &self,
+        index: usize,
+        table: &ManoeuvreTable,
+        autopilots: Option<&Autopilots>,
+    ) -> Result<Setpoints, SceneError> {
+        let key = |k: &str| format!("manoeuvre[{index}].{k}");
+        let listed =
+            |k: &str, given: &Option<Vec<f64>>| self.listed(&key(k), given, table.times_s.len());
+        let heading = listed("heading_deg", &table.heading_deg)?;
+        let depth = listed("depth_m", &table.depth_m)?;
+        for (fin, given, held, by) in [
+            ("rudder_deg", &table.rudder_deg, &heading, "heading_deg"),
+            (
+                "stern_planes_deg",
+                &table.stern_planes_deg,
+                &depth,
+                "depth_m",
+            ),
+        ] {
+            if given.is_some() && held.is_some() {
+                return Err(self.invalid(
+                    &key(fin),
+                    format!("the autopilot holding {by} commands this fin: give one or the other"),
+                ));
+            }
+        }
+        if heading.is_none() && depth.is_none() {
+            return Err(self.error(
+                &key("heading_deg"),
+                Problem::Missing("heading_deg or depth_m".into()),
+            ));
+        }
+        let on = |k: &str, needed: bool, has: bool, which: &str| {
+            if needed && !has {
+                Err(self.error(
+                    &key(k),
+                    Problem::Missing(format!("[autopilot.{which}] to hold it")),
+                ))
+            } else {
+                Ok(())
+            }
+        };
+        let (has_heading, has_depth) =
+            autopilots.map_or((false, false), |a| (a.heading.is_some(), a.depth.is_some()));
+        on("heading_deg", heading.is_some(), has_heading, "heading")?;
+        on("depth_m", depth.is_some(), has_depth, "depth")?;
+        Ok(Setpoints {
+            times: table.times_s.clone(),
+            heading_deg: heading,
+            depth,
+        })
+    }
+
+    /// `[autopilot]`: the gains, positive, and each fin's sense on `model` at its cruise.
+    fn autopilots(
+        &self,
+        table: &AutopilotTable,
+        model: &VehicleModel,
+    ) -> Result<Autopilots, SceneError> {
+        let sample = self.positive("autopilot.sample_s", table.sample_s)?;
+        let gain = |key: &str, value: f64| -> Result<f64, SceneError> {
+            self.finite(key, value)?;
+            if value < 0.0 {
+                return Err(self.invalid(
+                    key,
+                    "gains are positive: the fin's sense comes from the vehicle's own \
+                     Jacobian (see docs/vehicles.md)",
+                ));
+            }
+            Ok(value)
+        };
+        let heading = table
+            .heading
+            .as_ref()
+            .map(|h| -> Result<HeadingGains, SceneError> {
+                Ok(HeadingGains {
+                    kp: gain("autopilot.heading.kp", h.kp)?,
+                    ki: gain("autopilot.heading.ki", h.ki)?,
+                    kd: gain("autopilot.heading.kd", h.kd)?,
+                })
+            })
+            .transpose()?;
+        let depth = table
+            .depth
+            .as_ref()
+            .map(|d| -> Result<DepthGains, SceneError> {
+                let max = self.positive("autopilot.depth.max_pitch_deg", d.max_pitch_deg)?;
+                if max >= 90.0 {
+                    return Err(self.invalid("autopilot.depth.max_pitch_deg", "must be below 90°"));
+                }
+                Ok(DepthGains {
+                    kp: gain("autopilot.depth.kp", d.kp)?,
+                    ki: gain("autopilot.depth.ki", d.ki)?,
+                    max_pitch: max.to_radians(),
+                    kp_pitch: gain("autopilot.depth.kp_pitch", d.kp_pitch)?,
+                    ki_pitch: gain("autopilot.depth.ki_pitch", d.ki_pitch)?,
+                    kd_pitch: gain("autopilot.depth.kd_pitch", d.kd_pitch)?,
+                })
+            })
+            .transpose()?;
+        let start = cruise(model).map_err(|e| self.invalid(&e.key(), e.to_string()))?;
+        Autopilots::new(model, &start, sample, (heading, depth))
+            .map_err(|e| self.invalid(&e.key(), e.to_string()))
     }
 }
 
@@ -356,9 +587,12 @@ impl VehicleScene {
                 Problem::Missing("at least one [[manoeuvre]]".into()),
             ));
         }
+        let autopilots = (file.autopilot.as_ref())
+            .map(|table| check.autopilots(table, &model))
+            .transpose()?;
         let mut manoeuvres: Vec<VehicleManoeuvre> = Vec::new();
         for (index, table) in file.manoeuvre.iter().enumerate() {
-            let manoeuvre = check.vehicle_manoeuvre(index, table)?;
+            let manoeuvre = check.vehicle_manoeuvre(index, table, autopilots.as_ref())?;
             if manoeuvres.iter().any(|m| m.name == manoeuvre.name) {
                 return Err(check.invalid(
                     &format!("manoeuvre[{index}].name"),

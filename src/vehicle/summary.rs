@@ -3,7 +3,8 @@
 
 use super::FoldedComparison;
 use super::VehicleScene;
-use super::manoeuvre::{VehicleRun, euler_angles};
+use super::autopilot::wrapped;
+use super::manoeuvre::{Tracked, VehicleRun, euler_angles};
 use crate::ship::summary::IntegratorSummary;
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -115,11 +116,122 @@ pub struct StepFigures {
     pub depth_m: f64,
 }
 
+/// How an autopilot answered one change of what it holds.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SetpointFigures {
+    /// `heading` (degrees) or `depth` (m).
+    pub what: &'static str,
+    /// When the setpoint changed, s.
+    pub at_s: f64,
+    /// The setpoint before, degrees or m.
+    pub from: f64,
+    /// The setpoint after.
+    pub to: f64,
+    /// How far past the new setpoint the motion went, in the direction of the change (zero
+    /// if it never passed it), at the autopilot's samples.
+    pub overshoot: f64,
+    /// From the change until the error stays within [`SETTLING_BAND`] of the change for the
+    /// rest of the step, s; `None` if it is outside at the step's end.
+    pub settling_time_s: Option<f64>,
+    /// The error (setpoint − value) at the step's end.
+    pub steady_error: f64,
+    /// When the step ended (the next change, or the run's end), s.
+    pub until_s: f64,
+}
+
+/// The settling band, as a fraction of the change: 2 %, the control engineer's settling time.
+pub const SETTLING_BAND: f64 = 0.02;
+
+impl SetpointFigures {
+    /// The answer to every change of a setpoint in a run under the autopilots.
+    pub fn of(run: &VehicleRun) -> Vec<Self> {
+        let mut figures = Vec::new();
+        for what in ["heading", "depth"] {
+            let pick = |tracked: &Tracked| match what {
+                "heading" => (tracked.setpoint.0, tracked.value.0),
+                _ => (tracked.setpoint.1, tracked.value.1),
+            };
+            let error = |setpoint: f64, value: f64| match what {
+                "heading" => wrapped(setpoint - value, 360.0),
+                _ => setpoint - value,
+            };
+            let tracked = &run.tracked;
+            let mut start = 0;
+            for i in 1..=tracked.len() {
+                let changes = i == tracked.len() || pick(&tracked[i]).0 != pick(&tracked[i - 1]).0;
+                if !changes {
+                    continue;
+                }
+                // The step tracked[start..i] holds one setpoint; it is a change if the one
+                // before it differs.
+                let (Some(to), _) = pick(&tracked[start]) else {
+                    start = i;
+                    continue;
+                };
+                let from = match start {
+                    0 => None,
+                    _ => pick(&tracked[start - 1]).0,
+                };
+                if let Some(from) = from.filter(|&f| f != to) {
+                    let change = error(to, from);
+                    let errors: Vec<(f64, f64)> = (tracked[start..i].iter())
+                        .map(|t| (t.t, error(to, pick(t).1)))
+                        .collect();
+                    let band = SETTLING_BAND * change.abs();
+                    let settled_from = errors
+                        .iter()
+                        .rposition(|(_, e)| e.abs() > band)
+                        .map_or(Some(0), |k| (k + 1 < errors.len()).then_some(k + 1));
+                    let end = i.min(tracked.len() - 1);
+                    figures.push(SetpointFigures {
+                        what,
+                        at_s: tracked[start].t,
+                        from,
+                        to,
+                        overshoot: errors
+                            .iter()
+                            .map(|(_, e)| -e * change.signum())
+                            .fold(0.0, f64::max),
+                        settling_time_s: settled_from.map(|k| errors[k].0 - tracked[start].t),
+                        steady_error: errors.last().map_or(0.0, |(_, e)| *e),
+                        until_s: tracked[end].t,
+                    });
+                }
+                start = i;
+            }
+        }
+        figures
+    }
+
+    fn values(&self) -> [f64; 3] {
+        [
+            self.overshoot,
+            self.settling_time_s.unwrap_or(f64::INFINITY),
+            self.steady_error,
+        ]
+    }
+}
+
+/// The largest difference between two runs' autopilot figures (infinite where they differ in
+/// number, or one settles and the other does not).
+pub fn largest_setpoint_difference(a: &[SetpointFigures], b: &[SetpointFigures]) -> f64 {
+    if a.len() != b.len() {
+        return f64::INFINITY;
+    }
+    (a.iter().zip(b))
+        .flat_map(|(x, y)| x.values().into_iter().zip(y.values()))
+        .map(|(x, y)| if x == y { 0.0 } else { (x - y).abs() })
+        .fold(0.0, f64::max)
+}
+
 /// A manoeuvre's figures and how far they move when the run is refined.
 #[derive(Debug, Clone, Serialize)]
 pub struct ManoeuvreSummary {
     /// Each step of the commands, the first being the cruise before the first change.
     pub steps: Vec<StepFigures>,
+    /// Under the autopilots, how they answered each change of what they hold.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub autopilot: Vec<SetpointFigures>,
     /// The largest |figure − figure of the refined run| over every step's figures (degrees,
     /// degrees per second, m/s and m alike).
     pub refined_difference: f64,

@@ -19,8 +19,8 @@ use eom::run::{Row, Sink};
 use eom::ship::summary::IntegratorSummary;
 use eom::vehicle::manoeuvre::{ROW, VehicleManoeuvre, run};
 use eom::vehicle::summary::{
-    CruiseSummary, KirchhoffRow, ManoeuvreSummary, ModelSummary, StepFigures, VehicleSummary,
-    largest_difference,
+    CruiseSummary, KirchhoffRow, ManoeuvreSummary, ModelSummary, SetpointFigures, StepFigures,
+    VehicleSummary, largest_difference, largest_setpoint_difference,
 };
 use eom::vehicle::{VehicleError, VehicleScene, format_folded};
 use eom_cli::plots::vehicle::{VehiclePlot, write_vehicle_plots};
@@ -134,9 +134,14 @@ fn run_manoeuvre(
         |_| signal_received().is_none(),
     )?;
     let steps = StepFigures::of(&done);
+    let autopilot = SetpointFigures::of(&done);
+    let refined_difference = largest_difference(&steps, &StepFigures::of(&refined)).max(
+        largest_setpoint_difference(&autopilot, &SetpointFigures::of(&refined)),
+    );
     let summary = ManoeuvreSummary {
         steps: steps.clone(),
-        refined_difference: largest_difference(&steps, &StepFigures::of(&refined)),
+        autopilot,
+        refined_difference,
         refinement: scene.stepper.refinement(),
         steps_taken: done.steps,
     };
@@ -204,6 +209,7 @@ fn print_report(scene: &VehicleScene, summary: &VehicleSummary, outcomes: &[Outc
                 s.depth_m
             );
         }
+        print_autopilot(&outcome.summary.autopilot);
     }
     if !scene.model.folded().is_empty() {
         println!("  the folded table against its added mass:");
@@ -212,4 +218,25 @@ fn print_report(scene: &VehicleScene, summary: &VehicleSummary, outcomes: &[Outc
         }
     }
     println!("  written to {}/", out.display());
+}
+
+/// How the autopilots answered each change of what they hold.
+fn print_autopilot(figures: &[SetpointFigures]) {
+    if figures.is_empty() {
+        return;
+    }
+    println!(
+        "    {:<8} {:>6} {:>9} {:>9} {:>10} {:>12} {:>12}",
+        "holds", "at s", "from", "to", "overshoot", "settles in s", "steady error"
+    );
+    for f in figures {
+        let unit = if f.what == "heading" { "°" } else { " m" };
+        let settles = f
+            .settling_time_s
+            .map_or_else(|| "not settled".to_owned(), |t| format!("{t:.1}"));
+        println!(
+            "    {:<8} {:>6.1} {:>8.2}{unit} {:>8.2}{unit} {:>9.3}{unit} {settles:>12} {:>11.4}{unit}",
+            f.what, f.at_s, f.from, f.to, f.overshoot, f.steady_error
+        );
+    }
 }

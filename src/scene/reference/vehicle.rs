@@ -223,6 +223,105 @@ pub(super) static KEYS: &[Key] = &[
     STERN_PLANES[0],
     STERN_PLANES[1],
     STERN_PLANES[2],
+    // [autopilot]
+    Key {
+        path: "autopilot.sample_s",
+        families: VEHICLE,
+        unit: "s",
+        required: Required::When("with [autopilot]"),
+        description: "The autopilots' sampling period: each computes its fin's command at t = k·sample_s (and at each change of what it holds) and holds it until the next; the run is cut there.",
+        example: "0.1",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "autopilot.heading.kp",
+        families: VEHICLE,
+        required: Required::When("with [autopilot.heading]"),
+        description: "The heading autopilot (PID on ψ to the rudder), rad of rudder per rad of heading error. Every gain is positive: the rudder's sense comes from the vehicle's own proved Jacobian at its cruise (∂ṙ/∂δ_r), so a gain means the same on every table.",
+        example: "1.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "autopilot.heading.ki",
+        families: VEHICLE,
+        unit: "1/s",
+        default: "0",
+        description: "The heading autopilot's integral gain (the rectangle rule at the samples, held while the rudder is at its stop in the error's direction).",
+        example: "0.02",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "autopilot.heading.kd",
+        families: VEHICLE,
+        unit: "s",
+        default: "0",
+        description: "The heading autopilot's gain on the yaw rate r.",
+        example: "1.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "autopilot.depth.kp",
+        families: VEHICLE,
+        unit: "rad/m",
+        required: Required::When("with [autopilot.depth]"),
+        description: "The depth autopilot's outer loop: rad of pitch commanded per m of depth error, nose down to go deeper.",
+        example: "0.2",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "autopilot.depth.ki",
+        families: VEHICLE,
+        unit: "rad/(m s)",
+        default: "0",
+        description: "The outer loop's integral gain.",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "autopilot.depth.max_pitch_deg",
+        families: VEHICLE,
+        unit: "deg",
+        required: Required::When("with [autopilot.depth]"),
+        description: "The largest pitch the outer loop commands, below 90°.",
+        example: "20.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "autopilot.depth.kp_pitch",
+        families: VEHICLE,
+        required: Required::When("with [autopilot.depth]"),
+        description: "The inner loop (PID on θ to the stern planes): rad of planes per rad of pitch error; the planes' sense from the vehicle's ∂q̇/∂δ_s at its cruise.",
+        example: "2.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "autopilot.depth.ki_pitch",
+        families: VEHICLE,
+        unit: "1/s",
+        default: "0",
+        description: "The inner loop's integral gain.",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "autopilot.depth.kd_pitch",
+        families: VEHICLE,
+        unit: "s",
+        default: "0",
+        description: "The inner loop's gain on the pitch rate q.",
+        example: "1.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
     Key {
         path: "integrator.method",
         families: VEHICLE,
@@ -286,7 +385,7 @@ pub(super) static KEYS: &[Key] = &[
         path: "manoeuvre[].name",
         families: VEHICLE,
         kind: Kind::Text(Choices::Free),
-        default: "fin_steps",
+        default: "its kind",
         description: "The manoeuvre's output folder: letters, digits, _ - ., each name once.",
         example: "\"turn\"",
         shown: Shown::Commented,
@@ -295,11 +394,14 @@ pub(super) static KEYS: &[Key] = &[
     Key {
         path: "manoeuvre[].kind",
         families: VEHICLE,
-        kind: Kind::Text(Choices::These(&["fin_steps"])),
+        kind: Kind::Text(Choices::These(&["fin_steps", "autopilot"])),
         required: Required::Yes,
         description: "fin_steps: the fins' commands step at times_s to the angles given, zero \
-                      before the first. Each manoeuvre starts from the cruise, at the origin, \
-                      heading north.",
+                      before the first. autopilot: the autopilots hold the heading_deg and \
+                      depth_m given from times_s on, the cruise's before (a fin whose \
+                      autopilot holds nothing may take steps); each change is reported with \
+                      its overshoot, 2 % settling time and steady error. Each \
+                      manoeuvre starts from the cruise, at the origin, heading north.",
         example: "\"fin_steps\"",
         ..Key::BLANK
     },
@@ -318,7 +420,7 @@ pub(super) static KEYS: &[Key] = &[
         families: VEHICLE,
         kind: Kind::Numbers("the rudder's commands, one per time"),
         unit: "deg",
-        required: Required::When("unless stern_planes_deg is given"),
+        required: Required::When("fin_steps: unless stern_planes_deg is given"),
         default: "zero",
         description: "The rudder's command from each time on.",
         example: "[4.0, -4.0]",
@@ -329,10 +431,32 @@ pub(super) static KEYS: &[Key] = &[
         families: VEHICLE,
         kind: Kind::Numbers("the stern planes' commands, one per time"),
         unit: "deg",
-        required: Required::When("unless rudder_deg is given"),
+        required: Required::When("fin_steps: unless rudder_deg is given"),
         default: "zero",
         description: "The stern planes' command from each time on.",
         example: "[0.0, 0.0]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].heading_deg",
+        families: VEHICLE,
+        kind: Kind::Numbers("headings, one per time"),
+        unit: "deg",
+        required: Required::When("autopilot: unless depth_m is given"),
+        description: "An autopilot manoeuvre: the heading [autopilot.heading] holds from each time on (north 0, east 90).",
+        example: "[0.0, 30.0]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].depth_m",
+        families: VEHICLE,
+        kind: Kind::Numbers("depths, one per time"),
+        unit: "m",
+        required: Required::When("autopilot: unless heading_deg is given"),
+        description: "An autopilot manoeuvre: the depth [autopilot.depth] holds from each time on (down positive, the cruise at 0).",
+        example: "[0.0, 5.0]",
         shown: Shown::Commented,
         ..Key::BLANK
     },
