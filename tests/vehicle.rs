@@ -306,7 +306,7 @@ fn bad_tables_are_refused_naming_the_key() {
         ("inertia = [0.177", "inertia = [-0.177", "body.inertia[0]"),
         (
             "kind = \"fin_steps\"",
-            "kind = \"zigzag\"",
+            "kind = \"crash_back\"",
             "manoeuvre[0].kind",
         ),
     ];
@@ -668,4 +668,176 @@ fn bad_autopilots_are_refused_naming_the_key() {
         message.contains("autopilot.heading") && message.contains("∂ṙ/∂δ_r"),
         "{message}"
     );
+}
+
+const TRIALS: &str = "[[manoeuvre]]\nname = \"turning_circle\"\nkind = \"turning_circle\"\n\
+    times_s = [5.0]\nrudder_deg = [10.0]\ndepth_m = [0.0]\nduration_s = 150.0\n\n\
+    [[manoeuvre]]\nname = \"zigzag\"\nkind = \"zigzag\"\nplane = \"horizontal\"\nfin_deg = 10.0\n\
+    switch_deg = 10.0\ntimes_s = [5.0]\ndepth_m = [0.0]\nduration_s = 30.0\n\n\
+    [[manoeuvre]]\nname = \"zigzag_vertical\"\nkind = \"zigzag\"\nplane = \"vertical\"\n\
+    fin_deg = 10.0\nswitch_deg = 10.0\ntimes_s = [5.0]\nheading_deg = [0.0]\nduration_s = 30.0\n";
+
+#[test]
+fn a_turning_circle_s_figures_are_read_at_its_events_and_once_it_has_settled() {
+    use eom::vehicle::summary::trial_figures;
+    use eom::vehicle::trial::{TrialFigures, Watch, largest_trial_difference};
+    let scene = parse(&autopiloted(AUTOPILOTS, TRIALS)).unwrap();
+    let start = scene.start().unwrap();
+    let m = &scene.manoeuvres[0];
+    let run = run_with(&scene, &scene.model, m, start);
+    let progress = run.trial.as_ref().unwrap();
+    // The events are where the heading has changed by 90° and 180° (REMUS turns to port under
+    // a positive rudder), located to the rounding of the heading (1e-12 rad).
+    let heading = |state: &[f64; 15]| manoeuvre::euler_angles(state)[2];
+    let turned: Vec<f64> = (progress.events.iter())
+        .map(|e| {
+            assert!(matches!(e.watch, Watch::Turned(_)), "{:?}", e.watch);
+            heading(&e.state).to_degrees()
+        })
+        .collect();
+    assert_eq!(turned.len(), 2, "{turned:?}");
+    assert!((turned[0] + 90.0).abs() < 1e-10, "{turned:?}");
+    assert!((turned[1].abs() - 180.0).abs() < 1e-10, "{turned:?}");
+    let Some(TrialFigures::TurningCircle(figures)) = trial_figures(&run, m) else {
+        panic!("a turning circle's figures");
+    };
+    println!("{figures:#?}");
+    // Settled under the depth autopilot: the steady diameter is 2 V_h/|ψ̇| at the end.
+    let steady = figures.steady_diameter_m.expect("settled");
+    let end = run.ends.last().unwrap().state;
+    let (psi_dot, _) = eom::vehicle::trial::heading_and_pitch_rates(&end);
+    let v_h = eom::vehicle::trial::horizontal_speed(&end);
+    assert_eq!(steady, 2.0 * v_h / psi_dot.abs());
+    // The tactical diameter, read at 180°, is near the steady one (a small vehicle settles
+    // within the first half turn), and the advance at 90° is more than half of it.
+    let tactical = figures.tactical_diameter_m.unwrap();
+    assert!(
+        (tactical / steady - 1.0).abs() < 0.05,
+        "{tactical} against {steady}"
+    );
+    assert!(figures.advance_m.unwrap() > 0.5 * tactical);
+    assert!(figures.depth_change_m.abs() < 0.1, "the depth is held");
+    // Half the step: the figures move by the integrator's error (below 1e-6 m and °).
+    let refined = manoeuvre::run(
+        &scene.model,
+        &scene.fins,
+        m,
+        start,
+        (&scene.stepper.refined(), scene.every),
+        |_| true,
+    )
+    .unwrap();
+    let a = trial_figures(&run, m).unwrap();
+    let b = trial_figures(&refined, m).unwrap();
+    let difference = largest_trial_difference(&a, &b);
+    assert!(difference < 1e-6, "{difference:e}");
+    // Without the depth autopilot REMUS's pitch does not settle in the turn (its heave and
+    // pitch are unstable at the cruise): no steady figures, and the reason.
+    let free = parse(&autopiloted(
+        AUTOPILOTS,
+        &TRIALS.replacen("depth_m = [0.0]\n", "", 1),
+    ))
+    .unwrap();
+    let m = &free.manoeuvres[0];
+    let run = run_with(&free, &free.model, m, start);
+    let Some(TrialFigures::TurningCircle(figures)) = trial_figures(&run, m) else {
+        panic!("a turning circle's figures");
+    };
+    assert_eq!(figures.steady_diameter_m, None);
+    let why = figures.not_steady_because.unwrap();
+    assert!(why.contains("has not settled"), "{why}");
+}
+
+#[test]
+fn a_zigzag_switches_at_its_angle_and_reads_each_overshoot_where_the_rate_is_zero() {
+    use eom::vehicle::summary::trial_figures;
+    use eom::vehicle::trial::{TrialFigures, Watch, heading_and_pitch_rates};
+    let scene = parse(&autopiloted(AUTOPILOTS, TRIALS)).unwrap();
+    let start = scene.start().unwrap();
+    for (m, vertical) in [(&scene.manoeuvres[1], false), (&scene.manoeuvres[2], true)] {
+        let run = run_with(&scene, &scene.model, m, start);
+        let progress = run.trial.as_ref().unwrap();
+        let angle = |state: &[f64; 15]| {
+            let [_, theta, psi] = manoeuvre::euler_angles(state);
+            if vertical { theta } else { psi }
+        };
+        let (mut switches, mut zeros) = (0, 0);
+        for event in &progress.events {
+            match event.watch {
+                Watch::Switch(at) => {
+                    switches += 1;
+                    assert!((angle(&event.state) - at).abs() < 1e-12, "{event:?}");
+                    assert_eq!(at.abs(), 10f64.to_radians());
+                }
+                Watch::RateZero => {
+                    zeros += 1;
+                    let (psi_dot, theta_dot) = heading_and_pitch_rates(&event.state);
+                    let rate = if vertical { theta_dot } else { psi_dot };
+                    assert!(rate.abs() < 1e-12, "{rate:e}");
+                }
+                Watch::Turned(_) => panic!("a zig-zag watches no turn"),
+            }
+        }
+        assert!(
+            switches >= 4 && zeros >= 3,
+            "{switches} switches, {zeros} zeros"
+        );
+        let Some(TrialFigures::ZigZag(figures)) = trial_figures(&run, m) else {
+            panic!("a zig-zag's figures");
+        };
+        println!("{figures:?}");
+        // Each overshoot is past the switch angle, and the fin switched sides each time.
+        assert!(figures.overshoots_deg.iter().all(|&o| o > 0.0 && o < 20.0));
+        assert_eq!(figures.switches_s.len(), switches);
+    }
+}
+
+#[test]
+fn bad_trials_are_refused_naming_the_key() {
+    let zigzag = "[[manoeuvre]]\nkind = \"zigzag\"\nplane = \"horizontal\"\nfin_deg = 10.0\n\
+        switch_deg = 10.0\ntimes_s = [5.0]\nduration_s = 30.0\n";
+    let circle = "[[manoeuvre]]\nkind = \"turning_circle\"\ntimes_s = [5.0]\n\
+        rudder_deg = [10.0]\nduration_s = 30.0\n";
+    let cases = [
+        (
+            zigzag.replace("fin_deg = 10.0\n", ""),
+            "manoeuvre[0].fin_deg",
+        ),
+        (
+            zigzag.replace("switch_deg = 10.0", "switch_deg = -1.0"),
+            "manoeuvre[0].switch_deg",
+        ),
+        (
+            zigzag.replace("horizontal", "diagonal"),
+            "manoeuvre[0].plane",
+        ),
+        (
+            zigzag.replace("times_s = [5.0]", "times_s = [5.0, 6.0]"),
+            "manoeuvre[0].times_s",
+        ),
+        (
+            zigzag.replace("times_s = [5.0]", "times_s = [5.0]\nheading_deg = [0.0]"),
+            "manoeuvre[0].heading_deg",
+        ),
+        (
+            zigzag.replace("times_s = [5.0]", "times_s = [5.0]\nrudder_deg = [1.0]"),
+            "manoeuvre[0].rudder_deg",
+        ),
+        (
+            circle.replace("rudder_deg = [10.0]", "rudder_deg = [10.0, 0.0]"),
+            "manoeuvre[0].rudder_deg",
+        ),
+        (
+            circle.replace("times_s = [5.0]", "times_s = [5.0]\nheading_deg = [0.0]"),
+            "manoeuvre[0].heading_deg",
+        ),
+        (
+            circle.replace("times_s = [5.0]", "times_s = [5.0]\nfin_deg = 3.0"),
+            "manoeuvre[0].fin_deg",
+        ),
+    ];
+    for (manoeuvre, key) in cases {
+        let message = parse(&autopiloted(AUTOPILOTS, &manoeuvre)).unwrap_err();
+        assert!(message.contains(key), "{key}: {message}");
+    }
 }

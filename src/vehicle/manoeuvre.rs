@@ -13,6 +13,7 @@ use super::VehicleError;
 use super::autopilot::{Autopilots, Controller, Setpoints};
 use super::fins::{FinSteps, Fins, Steering};
 use super::model::VehicleModel;
+use super::trial::{Progress, Trial, Watch};
 use crate::integrate::segment::{self, Hooks, add};
 use crate::integrate::{IntegrateError, RowClock, Stats, Stepper};
 use crate::models::Model;
@@ -28,6 +29,8 @@ pub struct VehicleManoeuvre {
     pub steps: FinSteps,
     /// The autopilots and their setpoints, for an autopiloted manoeuvre.
     pub autopilot: Option<(Autopilots, Setpoints)>,
+    /// The standard trial it is, if it is one: its events and figures.
+    pub trial: Option<Trial>,
     /// The end of the run, s.
     pub duration: f64,
 }
@@ -134,6 +137,8 @@ pub struct VehicleRun {
     pub ends: Vec<StepEnd>,
     /// Under an autopilot, the heading and depth at each of its samples and at the end.
     pub tracked: Vec<Tracked>,
+    /// A trial's events and course.
+    pub trial: Option<Progress>,
     /// Steps taken.
     pub steps: u64,
 }
@@ -155,30 +160,46 @@ pub fn run(
     changes.push(manoeuvre.duration);
     let mut t = 0.0;
     let mut command = Command::new(manoeuvre, &start);
-    let mut steering = command.at(fins, t, &mut y);
+    let mut steering = command.at(fins, t, &mut y, true);
     let mut rows = RowClock::new(0.0, every);
     let mut total = Stats::default();
     let mut ends = Vec::new();
     for b in changes {
         let last = b >= manoeuvre.duration;
-        let system = model.driven_by(steering);
-        let sample = |t: f64, y: &VehicleState| Sample {
-            t,
-            state: y.data.0[0],
-            commands: steering.saturated(),
-        };
-        let hooks = Hooks {
-            check: &mut |_, _| true,
-            stop: None,
-            emit: &mut |t, y: &VehicleState| observe(&sample(t, y)),
-            // A fin without a lag jumps at a change: the row there shows it after the jump.
-            row_at_end: last,
-            row_at_stop: true,
-        };
-        let (reached, stats) = segment::advance(stepper, &system, (t, y, b), &mut rows, hooks);
-        add(&mut total, stats);
-        let reached = reached.map_err(|error| run_error(error, stepper))?;
-        (t, y) = (reached.t, reached.state);
+        loop {
+            let (reached, stats, fired) = stretch(
+                model,
+                steering,
+                &mut command,
+                (stepper, &mut rows),
+                (t, y, b),
+                last,
+                &mut observe,
+            );
+            add(&mut total, stats);
+            let reached = reached.map_err(|error| run_error(error, stepper))?;
+            (t, y) = (reached.t, reached.state);
+            let Some(watch) = fired else {
+                break;
+            };
+            // An event: the trial takes it (a zig-zag reverses its fin), and a row shows the
+            // state after it.
+            if let Some(progress) = command.progress.as_mut() {
+                progress.fire(watch, t, &y.data.0[0]);
+            }
+            steering = command.at(fins, t, &mut y, false);
+            let after = Sample {
+                t,
+                state: y.data.0[0],
+                commands: steering.saturated(),
+            };
+            if !observe(&after) {
+                return Err(VehicleError::Stopped { time: t });
+            }
+            if t >= b {
+                break;
+            }
+        }
         if last || schedule.contains(&t) {
             ends.push(StepEnd {
                 t,
@@ -189,7 +210,7 @@ pub fn run(
         if last {
             command.track(t, &y.data.0[0]);
         } else {
-            steering = command.at(fins, t, &mut y);
+            steering = command.at(fins, t, &mut y, true);
             let after = Sample {
                 t,
                 state: y.data.0[0],
@@ -203,8 +224,75 @@ pub fn run(
     Ok(VehicleRun {
         ends,
         tracked: command.tracked,
+        trial: command.progress,
         steps: total.steps as u64,
     })
+}
+
+/// What one stretch gives back: where it ended, its cost, and the trial's watch that ended it.
+type Stretch = (
+    Result<crate::integrate::Reached<f64, 15>, IntegrateError>,
+    Stats,
+    Option<Watch>,
+);
+
+/// One stretch from `(a, y_a)` to `b` under `steering`, ending early where one of the trial's
+/// watched functions first changes sign; the trial's course records every accepted step.
+fn stretch(
+    model: &VehicleModel,
+    steering: Steering<'_>,
+    command: &mut Command<'_>,
+    (stepper, rows): (&Stepper, &mut RowClock<f64>),
+    (a, y_a, b): (f64, VehicleState, f64),
+    last: bool,
+    observe: &mut impl FnMut(&Sample) -> bool,
+) -> Stretch {
+    let system = model.driven_by(steering);
+    let progress = command.progress.take();
+    let watches = progress.as_ref().map_or_else(Vec::new, Progress::watches);
+    let g = |watch: Watch, y: &VehicleState| {
+        (progress.as_ref()).map_or(0.0, |p| p.g(watch, &y.data.0[0]))
+    };
+    let start: Vec<f64> = watches.iter().map(|w| g(*w, &y_a)).collect();
+    let changed = |y: &VehicleState| -> Vec<Watch> {
+        (watches.iter().zip(&start))
+            .filter(|(w, g0)| **g0 != 0.0 && g(**w, y).signum() != g0.signum())
+            .map(|(w, _)| *w)
+            .collect()
+    };
+    let stop = |_: f64, y: &VehicleState| !changed(y).is_empty();
+    let sample = |t: f64, y: &VehicleState| Sample {
+        t,
+        state: y.data.0[0],
+        commands: steering.saturated(),
+    };
+    let mut steps: Vec<(f64, [f64; 15])> = Vec::new();
+    let hooks = Hooks {
+        check: &mut |t, y: &VehicleState| {
+            steps.push((t, y.data.0[0]));
+            true
+        },
+        stop: (!watches.is_empty()).then_some(&stop as &dyn Fn(f64, &VehicleState) -> bool),
+        emit: &mut |t, y: &VehicleState| observe(&sample(t, y)),
+        // A fin without a lag jumps at a change: the row there shows it after the jump.
+        row_at_end: last,
+        // An event may reverse a fin: the run writes the row there, after it.
+        row_at_stop: false,
+    };
+    let (reached, stats) = segment::advance(stepper, &system, (a, y_a, b), rows, hooks);
+    // The watch that ended the stretch: of those whose sign has changed, the one nearest its
+    // zero, where two changed at once.
+    let fired = reached.as_ref().ok().filter(|r| r.stopped).and_then(|r| {
+        let nearness = |w: &Watch| g(*w, &r.state).abs();
+        (changed(&r.state).into_iter()).min_by(|a, b| nearness(a).total_cmp(&nearness(b)))
+    });
+    command.progress = progress.map(|mut p| {
+        for (t, state) in &steps {
+            p.record(*t, state);
+        }
+        p
+    });
+    (reached, stats, fired)
 }
 
 /// The instants within the run where the steps or the setpoints change.
@@ -247,6 +335,10 @@ struct Command<'a> {
     controller: Controller,
     last: f64,
     tracked: Vec<Tracked>,
+    /// The trial under way, if the manoeuvre is one.
+    progress: Option<Progress>,
+    /// The autopilots' commands since their last sample.
+    held: Option<[Option<f64>; 2]>,
 }
 
 impl<'a> Command<'a> {
@@ -257,6 +349,8 @@ impl<'a> Command<'a> {
             controller: Controller::default(),
             last: 0.0,
             tracked: Vec::new(),
+            progress: manoeuvre.trial.map(|trial| Progress::new(trial, start)),
+            held: None,
         }
     }
 
@@ -271,11 +365,27 @@ impl<'a> Command<'a> {
         }
     }
 
-    /// The fins' loads from `t` on: the steps' commands, those of the autopilots that are on
-    /// in their place; a fin without a lag is set to its saturated command.
-    fn at(&mut self, fins: &'a Fins, t: f64, y: &mut VehicleState) -> Steering<'a> {
+    /// The fins' loads from `t` on: the steps' commands, a trial's fin and those of the
+    /// autopilots that are on in their place, the autopilots sampled anew if `sample` (else
+    /// holding their last commands: an event is not a sample); a fin without a lag is set to
+    /// its saturated command.
+    fn at(&mut self, fins: &'a Fins, t: f64, y: &mut VehicleState, sample: bool) -> Steering<'a> {
         let mut commands = self.manoeuvre.steps.angles(t);
-        if let Some((autopilots, setpoints)) = &self.manoeuvre.autopilot {
+        if let Some(progress) = self.progress.as_mut() {
+            if !progress.started() && t >= progress.execute_time() {
+                progress.execute(&y.data.0[0]);
+            }
+            if let Some((fin, angle)) = progress.fin() {
+                commands[fin] = angle;
+            }
+        }
+        if let Some(held) = self.held.filter(|_| !sample) {
+            for (command, held) in commands.iter_mut().zip(held) {
+                if let Some(value) = held {
+                    *command = value;
+                }
+            }
+        } else if let Some((autopilots, setpoints)) = &self.manoeuvre.autopilot {
             let state = y.data.0[0];
             self.track(t, &state);
             let limits = [fins.rudder.max_angle, fins.stern_planes.max_angle];
@@ -287,6 +397,7 @@ impl<'a> Command<'a> {
                 t - self.last,
             );
             self.last = t;
+            self.held = Some(computed);
             for (command, computed) in commands.iter_mut().zip(computed) {
                 if let Some(value) = computed {
                     *command = value;

@@ -27,6 +27,7 @@ pub mod model;
 pub mod scene;
 pub mod summary;
 pub mod table;
+pub mod trial;
 
 /// The table's vocabulary, from the generator that builds the model: how names are read,
 /// whether Kirchhoff's terms are folded, a folded coefficient against its added mass.

@@ -73,6 +73,7 @@ use super::fins::{FinSteps, Fins, Rudder};
 use super::manoeuvre::VehicleManoeuvre;
 use super::model::VehicleModel;
 use super::table::{PropellerSetting, VehicleTable};
+use super::trial::{Plane, Trial};
 use super::{AddedMassCoriolis, Convention, VehicleError};
 use crate::integrate::Stepper;
 use crate::models::Model;
@@ -211,7 +212,7 @@ pub struct PropellerTable {
 pub struct ManoeuvreTable {
     /// The output folder's name.
     pub name: Option<String>,
-    /// `fin_steps` or `autopilot`.
+    /// `fin_steps`, `autopilot`, `turning_circle` or `zigzag`.
     pub kind: String,
     /// When the commands step, s.
     pub times_s: Vec<f64>,
@@ -223,6 +224,13 @@ pub struct ManoeuvreTable {
     pub heading_deg: Option<Vec<f64>>,
     /// The depth the autopilot holds from each time on, m.
     pub depth_m: Option<Vec<f64>>,
+    /// A zig-zag's plane: `horizontal` (the rudder, on the heading) or `vertical` (the stern
+    /// planes, on the pitch).
+    pub plane: Option<String>,
+    /// A zig-zag's fin angle, degrees.
+    pub fin_deg: Option<f64>,
+    /// A zig-zag's switch angle, degrees.
+    pub switch_deg: Option<f64>,
     /// The end of the run, s.
     pub duration_s: f64,
 }
@@ -353,21 +361,45 @@ impl Checker<'_> {
             let degrees = listed(k, given)?.unwrap_or_else(|| vec![0.0; n]);
             Ok(degrees.iter().map(|d| d.to_radians()).collect())
         };
-        let (rudder, stern, autopilot) = match table.kind.as_str() {
-            "fin_steps" => {
-                for k in ["heading_deg", "depth_m"] {
-                    let given = if k == "heading_deg" {
-                        &table.heading_deg
-                    } else {
-                        &table.depth_m
-                    };
-                    if given.is_some() {
+        let zigzag_keys = [
+            ("plane", table.plane.is_some()),
+            ("fin_deg", table.fin_deg.is_some()),
+            ("switch_deg", table.switch_deg.is_some()),
+        ];
+        if table.kind != "zigzag"
+            && let Some((k, _)) = zigzag_keys.iter().find(|(_, given)| *given)
+        {
+            return Err(self.invalid(&key(k), "only a zigzag manoeuvre takes it"));
+        }
+        let (rudder, stern, autopilot, trial) = match table.kind.as_str() {
+            kind @ ("fin_steps" | "turning_circle") => {
+                let circle = kind == "turning_circle";
+                // A turning circle may hold its depth: the depth autopilot works the planes.
+                for (k, given, allowed) in [
+                    ("heading_deg", table.heading_deg.is_some(), false),
+                    ("depth_m", table.depth_m.is_some(), circle),
+                ] {
+                    if given && !allowed {
                         return Err(self.invalid(
                             &key(k),
-                            "a fin_steps manoeuvre commands the fins; kind = \"autopilot\" \
-                             commands headings and depths",
+                            format!(
+                                "a {kind} manoeuvre commands the fins; kind = \"autopilot\" \
+                                 commands headings and depths"
+                            ),
                         ));
                     }
+                }
+                let trial = circle.then(|| Trial::TurningCircle {
+                    execute: table.times_s.first().copied().unwrap_or(0.0),
+                });
+                if circle
+                    && (table.rudder_deg.is_none() || table.stern_planes_deg.is_some() || n != 1)
+                {
+                    return Err(self.invalid(
+                        &key("rudder_deg"),
+                        "a turning circle holds one rudder angle from one time: times_s = [t], \
+                         rudder_deg = [δ]",
+                    ));
                 }
                 if table.rudder_deg.is_none() && table.stern_planes_deg.is_none() {
                     return Err(self.error(
@@ -376,25 +408,30 @@ impl Checker<'_> {
                     ));
                 }
                 let rudder = angles("rudder_deg", &table.rudder_deg)?;
-                (
-                    rudder,
-                    angles("stern_planes_deg", &table.stern_planes_deg)?,
-                    None,
-                )
+                let stern = angles("stern_planes_deg", &table.stern_planes_deg)?;
+                let setpoints = (table.depth_m.is_some())
+                    .then(|| self.setpoints(index, table, autopilots))
+                    .transpose()?;
+                (rudder, stern, setpoints, trial)
             }
             "autopilot" => {
                 let setpoints = self.setpoints(index, table, autopilots)?;
                 let rudder = angles("rudder_deg", &table.rudder_deg)?;
-                (
-                    rudder,
-                    angles("stern_planes_deg", &table.stern_planes_deg)?,
-                    Some(setpoints),
-                )
+                let stern = angles("stern_planes_deg", &table.stern_planes_deg)?;
+                (rudder, stern, Some(setpoints), None)
+            }
+            "zigzag" => {
+                let trial = self.zigzag(index, table)?;
+                let held = table.heading_deg.is_some() || table.depth_m.is_some();
+                let setpoints = held
+                    .then(|| self.setpoints(index, table, autopilots))
+                    .transpose()?;
+                (vec![0.0; n], vec![0.0; n], setpoints, Some(trial))
             }
             other => {
                 return Err(self.invalid(
                     &key("kind"),
-                    format!("`{other}`: expected fin_steps or autopilot"),
+                    format!("`{other}`: expected fin_steps, autopilot, turning_circle or zigzag"),
                 ));
             }
         };
@@ -425,9 +462,61 @@ impl Checker<'_> {
         Ok(VehicleManoeuvre {
             name,
             steps,
-            autopilot: autopilot
-                .map(|setpoints| (*autopilots.expect("checked by setpoints"), setpoints)),
+            autopilot,
+            trial,
             duration,
+        })
+    }
+
+    /// A zig-zag: its plane, fin and switch angles, its execute at times_s[0]; the fin it
+    /// switches is not also an autopilot's.
+    fn zigzag(&self, index: usize, table: &ManoeuvreTable) -> Result<Trial, SceneError> {
+        let key = |k: &str| format!("manoeuvre[{index}].{k}");
+        let plane = self.word(
+            &key("plane"),
+            table.plane.as_deref().unwrap_or("horizontal"),
+            [
+                (Plane::Horizontal, "horizontal"),
+                (Plane::Vertical, "vertical"),
+            ],
+        )?;
+        let angle = |k: &str, value: Option<f64>, below: f64| -> Result<f64, SceneError> {
+            let value = value.ok_or_else(|| self.error(&key(k), Problem::Missing(k.into())))?;
+            let value = self.positive(&key(k), value)?;
+            if value >= below {
+                return Err(self.invalid(&key(k), format!("must be below {below}°")));
+            }
+            Ok(value.to_radians())
+        };
+        let fin = angle("fin_deg", table.fin_deg, 90.0)?;
+        let switch = angle("switch_deg", table.switch_deg, 90.0)?;
+        for (fin_key, given, in_plane) in [
+            ("rudder_deg", table.rudder_deg.is_some(), true),
+            ("stern_planes_deg", table.stern_planes_deg.is_some(), true),
+            (
+                "heading_deg",
+                table.heading_deg.is_some(),
+                plane == Plane::Horizontal,
+            ),
+            ("depth_m", table.depth_m.is_some(), plane == Plane::Vertical),
+        ] {
+            if given && in_plane {
+                return Err(self.invalid(
+                    &key(fin_key),
+                    "a zigzag commands its fin itself; only the other plane's autopilot may \
+                     hold a setpoint (heading_deg in a vertical zigzag, depth_m in a \
+                     horizontal one)",
+                ));
+            }
+        }
+        if table.times_s.len() != 1 {
+            return Err(self.invalid(&key("times_s"), "a zigzag has one execute: times_s = [t]"));
+        }
+        Ok(Trial::ZigZag {
+            plane,
+            fin,
+            switch,
+            execute: table.times_s[0],
         })
     }
 
@@ -450,13 +539,14 @@ impl Checker<'_> {
         Ok(Some(values.clone()))
     }
 
-    /// An autopilot manoeuvre's setpoints, each list needing its autopilot.
+    /// An autopilot manoeuvre's setpoints, each list needing its autopilot, with the scene's
+    /// autopilots.
     fn setpoints(
         &self,
         index: usize,
         table: &ManoeuvreTable,
         autopilots: Option<&Autopilots>,
-    ) -> Result<Setpoints, SceneError> {
+    ) -> Result<(Autopilots, Setpoints), SceneError> {
         let key = |k: &str| format!("manoeuvre[{index}].{k}");
         let listed =
             |k: &str, given: &Option<Vec<f64>>| self.listed(&key(k), given, table.times_s.len());
@@ -498,11 +588,15 @@ impl Checker<'_> {
             autopilots.map_or((false, false), |a| (a.heading.is_some(), a.depth.is_some()));
         on("heading_deg", heading.is_some(), has_heading, "heading")?;
         on("depth_m", depth.is_some(), has_depth, "depth")?;
-        Ok(Setpoints {
+        let setpoints = Setpoints {
             times: table.times_s.clone(),
             heading_deg: heading,
             depth,
-        })
+        };
+        match autopilots {
+            Some(autopilots) => Ok((*autopilots, setpoints)),
+            None => Err(self.error(&key("heading_deg"), Problem::Missing("[autopilot]".into()))),
+        }
     }
 
     /// `[autopilot]`: the gains, positive, and each fin's sense on `model` at its cruise.

@@ -4,7 +4,8 @@
 use super::FoldedComparison;
 use super::VehicleScene;
 use super::autopilot::wrapped;
-use super::manoeuvre::{Tracked, VehicleRun, euler_angles};
+use super::manoeuvre::{Tracked, VehicleManoeuvre, VehicleRun, euler_angles};
+use super::trial::TrialFigures;
 use crate::ship::summary::IntegratorSummary;
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -212,6 +213,14 @@ impl SetpointFigures {
     }
 }
 
+/// A trial's figures from its run, if the manoeuvre is a trial.
+pub fn trial_figures(run: &VehicleRun, manoeuvre: &VehicleManoeuvre) -> Option<TrialFigures> {
+    let progress = run.trial.as_ref()?;
+    let rudder = manoeuvre.steps.angles(progress.execute_time())[0];
+    let end = run.ends.last()?;
+    Some(TrialFigures::of(progress, (rudder, &end.state)))
+}
+
 /// The largest difference between two runs' autopilot figures (infinite where they differ in
 /// number, or one settles and the other does not).
 pub fn largest_setpoint_difference(a: &[SetpointFigures], b: &[SetpointFigures]) -> f64 {
@@ -232,6 +241,9 @@ pub struct ManoeuvreSummary {
     /// Under the autopilots, how they answered each change of what they hold.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub autopilot: Vec<SetpointFigures>,
+    /// A standard trial's figures (a turning circle's, a zig-zag's).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub trial: Option<TrialFigures>,
     /// The largest |figure − figure of the refined run| over every step's figures (degrees,
     /// degrees per second, m/s and m alike).
     pub refined_difference: f64,

@@ -20,8 +20,9 @@ use eom::ship::summary::IntegratorSummary;
 use eom::vehicle::manoeuvre::{ROW, VehicleManoeuvre, run};
 use eom::vehicle::summary::{
     CruiseSummary, KirchhoffRow, ManoeuvreSummary, ModelSummary, SetpointFigures, StepFigures,
-    VehicleSummary, largest_difference, largest_setpoint_difference,
+    VehicleSummary, largest_difference, largest_setpoint_difference, trial_figures,
 };
+use eom::vehicle::trial::{TrialFigures, largest_trial_difference};
 use eom::vehicle::{VehicleError, VehicleScene, format_folded};
 use eom_cli::plots::vehicle::{VehiclePlot, write_vehicle_plots};
 use std::collections::BTreeMap;
@@ -135,12 +136,21 @@ fn run_manoeuvre(
     )?;
     let steps = StepFigures::of(&done);
     let autopilot = SetpointFigures::of(&done);
-    let refined_difference = largest_difference(&steps, &StepFigures::of(&refined)).max(
-        largest_setpoint_difference(&autopilot, &SetpointFigures::of(&refined)),
-    );
+    let trial = trial_figures(&done, manoeuvre);
+    let trial_difference = match (&trial, trial_figures(&refined, manoeuvre)) {
+        (Some(a), Some(b)) => largest_trial_difference(a, &b),
+        _ => 0.0,
+    };
+    let refined_difference = largest_difference(&steps, &StepFigures::of(&refined))
+        .max(largest_setpoint_difference(
+            &autopilot,
+            &SetpointFigures::of(&refined),
+        ))
+        .max(trial_difference);
     let summary = ManoeuvreSummary {
         steps: steps.clone(),
         autopilot,
+        trial,
         refined_difference,
         refinement: scene.stepper.refinement(),
         steps_taken: done.steps,
@@ -210,6 +220,9 @@ fn print_report(scene: &VehicleScene, summary: &VehicleSummary, outcomes: &[Outc
             );
         }
         print_autopilot(&outcome.summary.autopilot);
+        if let Some(trial) = &outcome.summary.trial {
+            print_trial(trial);
+        }
     }
     if !scene.model.folded().is_empty() {
         println!("  the folded table against its added mass:");
@@ -238,5 +251,47 @@ fn print_autopilot(figures: &[SetpointFigures]) {
             "    {:<8} {:>6.1} {:>8.2}{unit} {:>8.2}{unit} {:>9.3}{unit} {settles:>12} {:>11.4}{unit}",
             f.what, f.at_s, f.from, f.to, f.overshoot, f.steady_error
         );
+    }
+}
+
+/// A trial's figures.
+fn print_trial(trial: &TrialFigures) {
+    let metres = |x: Option<f64>| x.map_or_else(|| "—".to_owned(), |x| format!("{x:.2} m"));
+    match trial {
+        TrialFigures::TurningCircle(f) => {
+            println!(
+                "    turning circle at {:.1}°: advance {}, transfer {}, tactical diameter {}, \
+                 steady diameter {}",
+                f.rudder_deg,
+                metres(f.advance_m),
+                metres(f.transfer_m),
+                metres(f.tactical_diameter_m),
+                metres(f.steady_diameter_m)
+            );
+            println!(
+                "      at the end: U = {:.4} m/s, ψ̇ = {:.4} °/s, φ = {:.3}°, θ = {:.3}°, depth \
+                 change {:.3} m",
+                f.speed_m_s, f.heading_rate_deg_s, f.roll_deg, f.pitch_deg, f.depth_change_m
+            );
+            if let Some(why) = &f.not_steady_because {
+                println!("      no steady figures: {why}");
+            }
+        }
+        TrialFigures::ZigZag(f) => {
+            let list = |v: &[f64]| {
+                v.iter()
+                    .map(|x| format!("{x:.3}"))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            };
+            println!(
+                "    {:?} zig-zag {:.0}°/{:.0}°: overshoots {} °, switches at {} s",
+                f.plane,
+                f.fin_deg,
+                f.switch_deg,
+                list(&f.overshoots_deg),
+                list(&f.switches_s)
+            );
+        }
     }
 }

@@ -394,13 +394,23 @@ pub(super) static KEYS: &[Key] = &[
     Key {
         path: "manoeuvre[].kind",
         families: VEHICLE,
-        kind: Kind::Text(Choices::These(&["fin_steps", "autopilot"])),
+        kind: Kind::Text(Choices::These(&[
+            "fin_steps",
+            "autopilot",
+            "turning_circle",
+            "zigzag",
+        ])),
         required: Required::Yes,
         description: "fin_steps: the fins' commands step at times_s to the angles given, zero \
                       before the first. autopilot: the autopilots hold the heading_deg and \
                       depth_m given from times_s on, the cruise's before (a fin whose \
                       autopilot holds nothing may take steps); each change is reported with \
-                      its overshoot, 2 % settling time and steady error. Each \
+                      its overshoot, 2 % settling time and steady error. turning_circle: the \
+                      rudder held at rudder_deg from times_s (one of each), the depth held if \
+                      depth_m is given; advance and transfer at 90°, tactical diameter at \
+                      180°, the steady diameter once the turn has settled. zigzag: the fin of \
+                      `plane` to ±fin_deg from times_s, reversed each time the heading (pitch) \
+                      passes ±switch_deg; each overshoot read where its rate is zero. Each \
                       manoeuvre starts from the cruise, at the origin, heading north.",
         example: "\"fin_steps\"",
         ..Key::BLANK
@@ -457,6 +467,36 @@ pub(super) static KEYS: &[Key] = &[
         required: Required::When("autopilot: unless heading_deg is given"),
         description: "An autopilot manoeuvre: the depth [autopilot.depth] holds from each time on (down positive, the cruise at 0).",
         example: "[0.0, 5.0]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].plane",
+        families: VEHICLE,
+        kind: Kind::Text(Choices::These(&["horizontal", "vertical"])),
+        default: "horizontal",
+        description: "A zigzag's plane: `horizontal` (the rudder, switched on the heading change) or `vertical` (the stern planes, switched on the pitch).",
+        example: "\"vertical\"",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].fin_deg",
+        families: VEHICLE,
+        unit: "deg",
+        required: Required::When("for a zigzag"),
+        description: "A zigzag's fin angle, below 90°: the fin goes to it at the execute, and to its opposite at each switch.",
+        example: "10.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].switch_deg",
+        families: VEHICLE,
+        unit: "deg",
+        required: Required::When("for a zigzag"),
+        description: "A zigzag's switch angle, below 90°: of the heading from the execute's, or of the pitch.",
+        example: "10.0",
         shown: Shown::Commented,
         ..Key::BLANK
     },
