@@ -841,3 +841,40 @@ fn bad_trials_are_refused_naming_the_key() {
         assert!(message.contains(key), "{key}: {message}");
     }
 }
+
+#[test]
+fn a_fin_s_rate_limit_is_an_event_of_the_run() {
+    // The rudder with a lag of 0.1 s and a rate limit of 5°/s: each step of its command starts
+    // at the limit and leaves it where (δ_c − δ)/τ falls to 5°/s, a kink in δ̇. Located as an
+    // event, RK4 keeps its order across it: the figures' change from h = 0.02 to 0.01 s is
+    // more than 8 times that from 0.01 to 0.005 s (a kink stepped across would leave a
+    // first-order error, a ratio near 2).
+    let text = scene_text().replace(
+        "[rudder]\nmax_deg = 15.0",
+        "[rudder]\nmax_deg = 15.0\nmax_rate_deg_s = 5.0\ntime_constant_s = 0.1",
+    );
+    let scene = parse(&text).unwrap();
+    let start = scene.start().unwrap();
+    let figures = |step: f64| {
+        let mut stepper = scene.stepper.clone();
+        stepper.step = Some(step);
+        let run = manoeuvre::run(
+            &scene.model,
+            &scene.fins,
+            &scene.manoeuvres[0],
+            start,
+            (&stepper, scene.every),
+            |_| true,
+        )
+        .unwrap();
+        StepFigures::of(&run)
+    };
+    let (coarse, middle, fine) = (figures(0.02), figures(0.01), figures(0.005));
+    let (d1, d2) = (
+        largest_difference(&coarse, &middle),
+        largest_difference(&middle, &fine),
+    );
+    println!("{d1:e} {d2:e} ratio {}", d1 / d2);
+    assert!(d1 / d2 > 8.0, "{d1:e} / {d2:e}");
+    assert!(d2 < 1e-6, "{d2:e}");
+}

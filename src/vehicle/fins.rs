@@ -5,8 +5,8 @@
 //! A fin's angle is a state of the model (its rate is the model's input). Without a lag a fin
 //! follows its command at once: the run sets its angle at each step of the command. A rate
 //! limit acts on the lag's rate, so it needs a lag; where the limit starts or stops acting δ̇
-//! has a kink, which a step across is only first-order accurate about (the ship locates it as
-//! an event; the vehicle does not yet).
+//! has a kink, which a step across would be only first-order accurate about, so the run
+//! locates it as an event ([`Steering::rate_margin`]), as the ship's does.
 
 use crate::models::Loads;
 pub use crate::ship::Rudder;
@@ -80,6 +80,18 @@ impl Steering<'_> {
             self.fins.rudder.saturate(self.commands[0]),
             self.fins.stern_planes.saturate(self.commands[1]),
         ]
+    }
+}
+
+impl Steering<'_> {
+    /// For fin `fin` (0 the rudder, 1 the stern planes) with a lag and a rate limit: the lag's
+    /// rate squared less the limit squared, whose sign changes where the limit starts or stops
+    /// acting (a kink in δ̇ the run locates as an event); `None` for a fin without both.
+    pub fn rate_margin(&self, fin: usize, state: &[f64; 15]) -> Option<f64> {
+        let gear = [self.fins.rudder, self.fins.stern_planes][fin];
+        let (lag, max) = (gear.time_constant?, gear.max_rate?);
+        let rate = (self.saturated()[fin] - state[13 + fin]) / lag;
+        Some(rate * rate - max * max)
     }
 }
 

@@ -179,15 +179,21 @@ pub fn run(
             add(&mut total, stats);
             let reached = reached.map_err(|error| run_error(error, stepper))?;
             (t, y) = (reached.t, reached.state);
-            let Some(watch) = fired else {
+            let Some(kink) = fired else {
+                // Stopped where the watched function is within rounding of zero, on the side
+                // it started (the step taken again to the located time lands a last bit
+                // apart): no event yet; the next stretch finds it if the sign changes.
+                if reached.stopped && t < b {
+                    continue;
+                }
                 break;
             };
             // An event: the trial takes it (a zig-zag reverses its fin), and a row shows the
-            // state after it.
-            if let Some(progress) = command.progress.as_mut() {
+            // state after it; at a rate limit's kink only the form of δ̇ changes.
+            if let (Kink::Trial(watch), Some(progress)) = (kink, command.progress.as_mut()) {
                 progress.fire(watch, t, &y.data.0[0]);
+                steering = command.at(fins, t, &mut y, false);
             }
-            steering = command.at(fins, t, &mut y, false);
             let after = Sample {
                 t,
                 state: y.data.0[0],
@@ -229,15 +235,26 @@ pub fn run(
     })
 }
 
-/// What one stretch gives back: where it ended, its cost, and the trial's watch that ended it.
+/// What one stretch gives back: where it ended, its cost, and the event that ended it.
 type Stretch = (
     Result<crate::integrate::Reached<f64, 15>, IntegrateError>,
     Stats,
-    Option<Watch>,
+    Option<Kink>,
 );
 
+/// What ends a stretch early: a trial's event, or a fin's rate limit starting or stopping to
+/// act (a kink in its rate, which a step across would be first-order accurate about).
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Kink {
+    /// The trial's watched function passed zero.
+    Trial(Watch),
+    /// Fin 0 (the rudder) or 1 (the stern planes) reached or left its rate limit.
+    RateLimit(usize),
+}
+
 /// One stretch from `(a, y_a)` to `b` under `steering`, ending early where one of the trial's
-/// watched functions first changes sign; the trial's course records every accepted step.
+/// watched functions or a fin's rate margin first changes sign; the trial's course records
+/// every accepted step.
 fn stretch(
     model: &VehicleModel,
     steering: Steering<'_>,
@@ -249,12 +266,21 @@ fn stretch(
 ) -> Stretch {
     let system = model.driven_by(steering);
     let progress = command.progress.take();
-    let watches = progress.as_ref().map_or_else(Vec::new, Progress::watches);
-    let g = |watch: Watch, y: &VehicleState| {
-        (progress.as_ref()).map_or(0.0, |p| p.g(watch, &y.data.0[0]))
+    let mut watches: Vec<Kink> = (progress.as_ref().map_or_else(Vec::new, Progress::watches))
+        .into_iter()
+        .map(Kink::Trial)
+        .collect();
+    watches.extend(
+        (0..2)
+            .filter(|&fin| steering.rate_margin(fin, &y_a.data.0[0]).is_some())
+            .map(Kink::RateLimit),
+    );
+    let g = |watch: Kink, y: &VehicleState| match watch {
+        Kink::Trial(watch) => (progress.as_ref()).map_or(0.0, |p| p.g(watch, &y.data.0[0])),
+        Kink::RateLimit(fin) => steering.rate_margin(fin, &y.data.0[0]).unwrap_or(0.0),
     };
     let start: Vec<f64> = watches.iter().map(|w| g(*w, &y_a)).collect();
-    let changed = |y: &VehicleState| -> Vec<Watch> {
+    let changed = |y: &VehicleState| -> Vec<Kink> {
         (watches.iter().zip(&start))
             .filter(|(w, g0)| **g0 != 0.0 && g(**w, y).signum() != g0.signum())
             .map(|(w, _)| *w)
@@ -283,7 +309,7 @@ fn stretch(
     // The watch that ended the stretch: of those whose sign has changed, the one nearest its
     // zero, where two changed at once.
     let fired = reached.as_ref().ok().filter(|r| r.stopped).and_then(|r| {
-        let nearness = |w: &Watch| g(*w, &r.state).abs();
+        let nearness = |w: &Kink| g(*w, &r.state).abs();
         (changed(&r.state).into_iter()).min_by(|a, b| nearness(a).total_cmp(&nearness(b)))
     });
     command.progress = progress.map(|mut p| {

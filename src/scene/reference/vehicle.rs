@@ -31,8 +31,8 @@ macro_rules! fin_keys {
                     $what,
                     "' rate limit; it acts on the lag's rate, so it needs ",
                     $table,
-                    ".time_constant_s. Where it starts or stops acting, the rate has a kink \
-                     the run does not locate yet (first-order accurate there)."
+                    ".time_constant_s. Where it starts or stops acting, the rate has a kink, \
+                     which the run locates as an event (so every method keeps its order)."
                 ),
                 example: "20.0",
                 shown: Shown::Commented,
