@@ -446,6 +446,31 @@ fn bad_tables_are_refused_naming_the_key() {
         ),
         (
             "kind = \"spiral\"",
+            "kind = \"spiral\"\nfrom_deg = 10.0\nto_deg = -10.0\nstep_deg = 5.0",
+            "manoeuvre[3].from_deg",
+        ),
+        (
+            "rudders_deg = [10.0, 5.0, 2.0, 1.0, 0.0, -1.0, -2.0, -5.0, -10.0]",
+            "from_deg = 10.0\nto_deg = -10.0",
+            "manoeuvre[3].step_deg",
+        ),
+        (
+            "rudders_deg = [10.0, 5.0, 2.0, 1.0, 0.0, -1.0, -2.0, -5.0, -10.0]",
+            "from_deg = 10.0\nto_deg = -10.0\nstep_deg = 3.0",
+            "manoeuvre[3].step_deg",
+        ),
+        (
+            "rudders_deg = [10.0, 5.0, 2.0, 1.0, 0.0, -1.0, -2.0, -5.0, -10.0]",
+            "from_deg = 10.0\nto_deg = 10.0\nstep_deg = 1.0",
+            "manoeuvre[3].step_deg",
+        ),
+        (
+            "kind = \"turning_circle\"",
+            "kind = \"turning_circle\"\nstep_deg = 1.0",
+            "manoeuvre[0].step_deg",
+        ),
+        (
+            "kind = \"spiral\"",
             "kind = \"spiral\"\nmax_hold_s = 10.0",
             "manoeuvre[3].max_hold_s",
         ),
@@ -496,6 +521,30 @@ fn bad_tables_are_refused_naming_the_key() {
 }
 
 /// In SI a table with the yaw inertia about midship and the same about G give one model.
+/// A direct spiral's first pass given as from_deg, to_deg every step_deg is the list of
+/// those angles, each the first plus a whole number of steps, the last exactly to_deg.
+#[test]
+fn a_spirals_angles_may_be_given_from_to_and_step() {
+    let text = std::fs::read_to_string("scenes/mariner.toml").unwrap();
+    let list = "rudders_deg = [10.0, 5.0, 2.0, 1.0, 0.0, -1.0, -2.0, -5.0, -10.0]";
+    assert!(text.contains(list));
+    let angles = |form: &str| {
+        let scene = ShipScene::parse(&text.replacen(list, form, 1), "range").unwrap();
+        let spiral = scene.manoeuvres.iter().find(|m| m.name == "spiral").unwrap();
+        match &spiral.kind {
+            ManoeuvreKind::Spiral(spiral) => spiral.rudders.clone(),
+            other => panic!("{other:?}"),
+        }
+    };
+    let ranged = angles("from_deg = 0.5\nto_deg = -0.5\nstep_deg = 0.1");
+    assert_eq!(ranged.len(), 11);
+    assert_eq!(ranged[0], 0.5_f64.to_radians());
+    assert_eq!(ranged[10], (-0.5_f64).to_radians());
+    assert_eq!(ranged[7], (0.5 - 7.0 * 0.1_f64).to_radians());
+    let listed = angles("rudders_deg = [10.0, 5.0, 0.0, -5.0, -10.0]");
+    assert_eq!(angles("from_deg = 10.0\nto_deg = -10.0\nstep_deg = 5.0"), listed);
+}
+
 #[test]
 fn yaw_inertia_about_g_or_midship_is_one_body() {
     let base = |inertia: &str| {

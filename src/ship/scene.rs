@@ -48,6 +48,9 @@
 //! [[manoeuvre]]
 //! kind = "spiral"              # Dieudonné's direct spiral; "reverse_spiral": Bech's
 //! rudders_deg = [10, 5, 0, -5, -10] # the first pass; the run comes back through them
+//! # from_deg = 10.0            # or the first pass as from_deg, to_deg every step_deg
+//! # to_deg = -10.0
+//! # step_deg = 5.0
 //! # yaw_rates_deg_s = [0.2, 0, -0.2] # reverse_spiral: the commanded yaw rates
 //! # settle_window_s = 100.0    # r settled: within settle_tolerance_deg_s over the window
 //! # settle_tolerance_deg_s = 0.001
@@ -212,6 +215,13 @@ pub struct ManoeuvreTable {
     pub side: Option<String>,
     /// A direct spiral's rudder angles, degrees, strictly monotonic.
     pub rudders_deg: Option<Vec<f64>>,
+    /// A direct spiral's first angle, degrees (with `to_deg` and `step_deg`, in place of
+    /// `rudders_deg`).
+    pub from_deg: Option<f64>,
+    /// A direct spiral's last angle of the first pass, degrees.
+    pub to_deg: Option<f64>,
+    /// A direct spiral's spacing of the angles from `from_deg` to `to_deg`, degrees.
+    pub step_deg: Option<f64>,
     /// A reverse spiral's commanded yaw rates, degrees per second.
     pub yaw_rates_deg_s: Option<Vec<f64>>,
     /// A spiral's settling window, s.
@@ -239,7 +249,7 @@ pub const SETTLE_RUDDER_DEG: f64 = 0.01;
 pub const CONTROLLER_TIME_S: f64 = 20.0;
 
 /// The keys of `[[manoeuvre]]` that only some kinds read, with whether the table gives each.
-fn kind_keys(table: &ManoeuvreTable) -> [(&'static str, bool); 14] {
+fn kind_keys(table: &ManoeuvreTable) -> [(&'static str, bool); 17] {
     [
         ("rudder_deg", table.rudder_deg.is_some()),
         ("heading_deg", table.heading_deg.is_some()),
@@ -248,6 +258,9 @@ fn kind_keys(table: &ManoeuvreTable) -> [(&'static str, bool); 14] {
         ("series_deg", table.series_deg.is_some()),
         ("side", table.side.is_some()),
         ("rudders_deg", table.rudders_deg.is_some()),
+        ("from_deg", table.from_deg.is_some()),
+        ("to_deg", table.to_deg.is_some()),
+        ("step_deg", table.step_deg.is_some()),
         ("yaw_rates_deg_s", table.yaw_rates_deg_s.is_some()),
         ("settle_window_s", table.settle_window_s.is_some()),
         (
@@ -269,7 +282,16 @@ fn keys_of(kind: &str) -> &'static [&'static str] {
         "zigzag" => &["rudder_deg", "heading_deg", "side", "duration_s"],
         "pull_out" => &["rudder_deg", "release_s", "duration_s"],
         "rudder_series" => &["times_s", "series_deg", "duration_s"],
-        "spiral" => &["rudders_deg", SETTLE[0], SETTLE[1], SETTLE[2], "duration_s"],
+        "spiral" => &[
+            "rudders_deg",
+            "from_deg",
+            "to_deg",
+            "step_deg",
+            SETTLE[0],
+            SETTLE[1],
+            SETTLE[2],
+            "duration_s",
+        ],
         "reverse_spiral" => &[
             "yaw_rates_deg_s",
             SETTLE[0],
@@ -663,6 +685,71 @@ impl Checker<'_> {
         })
     }
 
+    /// A direct spiral's first pass, degrees: `rudders_deg` as given, or the angles from
+    /// `from_deg` to `to_deg` every `step_deg` (exactly one of the two forms); `None` where
+    /// neither is given.
+    fn spiral_angles(
+        &self,
+        index: usize,
+        table: &ManoeuvreTable,
+    ) -> Result<Option<Vec<f64>>, SceneError> {
+        let key = |k: &str| format!("manoeuvre[{index}].{k}");
+        let range = [
+            ("from_deg", table.from_deg),
+            ("to_deg", table.to_deg),
+            ("step_deg", table.step_deg),
+        ];
+        let given: Vec<&str> = range.iter().filter(|(_, v)| v.is_some()).map(|(k, _)| *k).collect();
+        let both = "give the angles either as rudders_deg or as from_deg, to_deg and step_deg";
+        match (&table.rudders_deg, given.len()) {
+            (Some(_), 0) => return Ok(table.rudders_deg.clone()),
+            (Some(_), _) => {
+                return Err(self.invalid(&key(given[0]), format!("{both}, not both")));
+            }
+            (None, 0) => {
+                return Err(self.error(
+                    &key("rudders_deg"),
+                    Problem::Missing(format!(
+                        "{} (or {}, {} and {}): the spiral's setpoints",
+                        key("rudders_deg"),
+                        key("from_deg"),
+                        key("to_deg"),
+                        key("step_deg")
+                    )),
+                ));
+            }
+            (None, 3) => {}
+            (None, _) => {
+                let missing = range.iter().find(|(_, v)| v.is_none()).map_or("", |(k, _)| *k);
+                return Err(self.error(
+                    &key(missing),
+                    Problem::Missing(format!("{}: {both}", key(missing))),
+                ));
+            }
+        }
+        let from = self.finite(&key("from_deg"), table.from_deg.unwrap_or(f64::NAN))?;
+        let to = self.finite(&key("to_deg"), table.to_deg.unwrap_or(f64::NAN))?;
+        let step = self.positive(&key("step_deg"), table.step_deg.unwrap_or(f64::NAN))?;
+        let steps = (to - from).abs() / step;
+        let whole = steps.round();
+        if from == to || (steps - whole).abs() > 1e-9 * steps.max(1.0) || whole > 1000.0 {
+            return Err(self.invalid(
+                &key("step_deg"),
+                format!(
+                    "the angles from {from}° to {to}° must be a whole number of steps of \
+                     {step}° (at least one, at most 1000)"
+                ),
+            ));
+        }
+        let sign = (to - from).signum();
+        // Each angle from the first by a whole number of steps (no running sum), the last
+        // the given `to_deg` itself.
+        let count = whole as usize;
+        let mut angles: Vec<f64> = (0..count).map(|k| from + sign * k as f64 * step).collect();
+        angles.push(to);
+        Ok(Some(angles))
+    }
+
     /// A spiral's kind and the longest it may take (s), for the kinds `spiral` and
     /// `reverse_spiral`; `None` for the others.
     fn spiral(
@@ -673,11 +760,11 @@ impl Checker<'_> {
     ) -> Result<Option<(ManoeuvreKind, f64)>, SceneError> {
         let key = |k: &str| format!("manoeuvre[{index}].{k}");
         let (list_key, list) = match table.kind.as_str() {
-            "spiral" => ("rudders_deg", &table.rudders_deg),
-            "reverse_spiral" => ("yaw_rates_deg_s", &table.yaw_rates_deg_s),
+            "spiral" => ("rudders_deg", self.spiral_angles(index, table)?),
+            "reverse_spiral" => ("yaw_rates_deg_s", table.yaw_rates_deg_s.clone()),
             _ => return Ok(None),
         };
-        let list = list.as_ref().ok_or_else(|| {
+        let list = list.ok_or_else(|| {
             self.error(
                 &key(list_key),
                 Problem::Missing(format!("{}: the spiral's setpoints", key(list_key))),

@@ -412,11 +412,44 @@ pub(super) static KEYS: &[Key] = &[
         families: SHIP,
         kind: Kind::Numbers("the first pass's angles, strictly monotonic"),
         unit: "deg",
-        required: Required::When("for spiral"),
+        required: Required::When("for spiral, unless from_deg, to_deg and step_deg give them"),
         description: "The direct spiral's rudder angles, from one side through zero to the \
                       other; the run holds each until r settles, then comes back through \
                       them in reverse.",
         example: "[10.0, 5.0, 2.0, 1.0, 0.0, -1.0, -2.0, -5.0, -10.0]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].from_deg",
+        families: SHIP,
+        unit: "deg",
+        required: Required::When("for spiral, with to_deg and step_deg, instead of rudders_deg"),
+        description: "The direct spiral's first angle: the first pass runs from it to to_deg \
+                      every step_deg. Give either rudders_deg or these three, not both.",
+        example: "10.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].to_deg",
+        families: SHIP,
+        unit: "deg",
+        required: Required::When("with from_deg"),
+        description: "The direct spiral's last angle of the first pass; from_deg to to_deg \
+                      must be a whole number of steps.",
+        example: "-10.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].step_deg",
+        families: SHIP,
+        unit: "deg",
+        required: Required::When("with from_deg"),
+        description: "The spacing of the direct spiral's angles from from_deg to to_deg, \
+                      positive; each angle is from_deg plus a whole number of steps.",
+        example: "1.0",
         shown: Shown::Commented,
         ..Key::BLANK
     },
