@@ -35,7 +35,7 @@ fn independent_rhs(table: &ShipTable, y: [f64; 7], delta_rate: f64) -> ([f64; 7]
     ];
     let mut sizes = loads.map(f64::abs);
     for (term, coefficient) in &table.terms {
-        let [a, b, c, d] = term.powers.map(i32::from);
+        let [a, b, c, d, _] = term.powers.map(i32::from);
         let slot = Force::ALL.iter().position(|f| *f == term.force).unwrap();
         let moment = i32::from(term.force == Force::N);
         let value = match table.units {
@@ -294,7 +294,7 @@ fn port_and_starboard_turns_mirror_each_other() {
             .table
             .terms
             .keys()
-            .all(|t| t.powers[1..] != [0, 0, 0] || t.force == Force::X)
+            .all(|t| t.powers[1..] != [0, 0, 0, 0] || t.force == Force::X)
     );
     let model = ShipModel::new(&scene.table).unwrap();
     let turn = |rudder: f64| Manoeuvre {

@@ -97,11 +97,11 @@ fn derivatives(table: &ShipTable, terms: &BTreeMap<Term, f64>, force: Force) -> 
     let moment = i32::from(force == Force::N);
     let mut out = [0.0; 3];
     for (term, value) in terms.iter().filter(|(t, _)| t.force == force) {
-        let [a, b, c, d] = term.powers;
-        let slot = match (b, c, d) {
-            (1, 0, 0) => 0,
-            (0, 1, 0) => 1,
-            (0, 0, 1) => 2,
+        let [a, b, c, d, e] = term.powers;
+        let slot = match (b, c, d, e) {
+            (1, 0, 0, 0) => 0,
+            (0, 1, 0, 0) => 1,
+            (0, 0, 1, 0) => 2,
             _ => continue,
         };
         let u0 = table.design_speed;

@@ -62,6 +62,7 @@ impl ShipModel {
             units: table.units,
             yaw_inertia: table.body.yaw_inertia_about,
             terms: table.terms.keys().copied().collect(),
+            propulsion: false,
         };
         let system = ship("ship", &spec).map_err(|e| ShipError::Build(EmitError::Model(e)))?;
         let program = prove_with_jacobians(&system)?;

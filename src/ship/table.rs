@@ -100,7 +100,7 @@ pub fn parse_name(name: &str) -> Option<Coefficient> {
     if letters.is_empty() && !bias {
         return None;
     }
-    let mut powers = [0u8; 4];
+    let mut powers = [0u8; 5];
     for letter in letters.chars() {
         let index = VARIABLES.iter().position(|v| *v == letter)?;
         powers[index] = powers[index].checked_add(1)?;
@@ -191,7 +191,10 @@ impl ShipTable {
             Units::Prime => ("m′", "m′x_G′"),
             Units::Dimensional => ("M", "M x_G"),
         };
-        let t = |force, powers| Term { force, powers };
+        let t = |force, [a, b, c, d]: [u8; 4]| Term {
+            force,
+            powers: [a, b, c, d, 0],
+        };
         let rigid_r = match self.units {
             // −m′(1 + u′)r′: a part in r′ and a part in u′r′.
             Units::Prime => -m,
@@ -295,8 +298,11 @@ impl ShipTable {
 mod tests {
     use super::*;
 
-    fn term(force: Force, powers: [u8; 4]) -> Coefficient {
-        Coefficient::Term(Term { force, powers })
+    fn term(force: Force, [a, b, c, d]: [u8; 4]) -> Coefficient {
+        Coefficient::Term(Term {
+            force,
+            powers: [a, b, c, d, 0],
+        })
     }
 
     #[test]
