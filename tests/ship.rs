@@ -14,6 +14,7 @@ use eom::ship::{RigidBodyTerms, ShipModel, ShipScene, Side};
 use eom_codegen::model::ship::{Force, Units, YawInertia};
 use eom_test_support::random::Random;
 use nalgebra::{Matrix3, Vector3};
+use std::f64::consts::PI;
 
 fn scene(file: &str) -> ShipScene {
     ShipScene::load(std::path::Path::new(&format!("scenes/{file}"))).unwrap()
@@ -21,12 +22,27 @@ fn scene(file: &str) -> ShipScene {
 
 /// 4.46 with the table's forces, written directly in SI with nalgebra: the forces summed term
 /// by term, the rigid-body terms of 4.46 on the right, the mass matrix solved by LU. Also the
-/// natural size of each acceleration, Σⱼ |M⁻¹ᵢⱼ| Σ|terms of load j|, for the tolerance.
-fn independent_rhs(table: &ShipTable, y: [f64; 7], delta_rate: f64) -> ([f64; 7], [f64; 3]) {
+/// natural size of each acceleration, Σⱼ |M⁻¹ᵢⱼ| Σ|terms of load j|, for the tolerance. With a
+/// propulsion model, at the propeller rate `n`: Abkowitz's forms, the inflow written out again
+/// here (momentum theory's u_A, the area-weighted c).
+fn independent_rhs(
+    table: &ShipTable,
+    y: [f64; 7],
+    (delta_rate, n): (f64, f64),
+) -> ([f64; 7], [f64; 3]) {
     let [u, v, r, _, _, psi, delta] = y;
     let si = |n: i32| table.si_scale(n);
     let (mass, x_g) = (table.body.mass * si(3), table.body.x_g * si(1));
     let speed = u.hypot(v);
+    let propeller = table.propulsion.map(|p| {
+        let wake = (1.0 - p.wake_fraction) * u;
+        let ahead = n.max(0.0) * p.diameter;
+        let induced = -wake + (wake * wake + 8.0 / PI * p.thrust_coefficient * ahead * ahead).sqrt();
+        let share = PI * p.diameter * p.diameter / 4.0 / p.rudder_area;
+        let slip = wake + p.slipstream_factor * induced;
+        let inflow = (share * slip * slip + (1.0 - share) * wake * wake).sqrt();
+        (p, induced, inflow)
+    });
     // 4.46's rigid-body terms, on the right: M v r + M x_G r², −M u r, −M x_G u r.
     let mut loads = [
         mass * v * r + mass * x_g * r * r,
@@ -38,9 +54,25 @@ fn independent_rhs(table: &ShipTable, y: [f64; 7], delta_rate: f64) -> ([f64; 7]
         let [a, b, c, d, _] = term.powers.map(i32::from);
         let slot = Force::ALL.iter().position(|f| *f == term.force).unwrap();
         let moment = i32::from(term.force == Force::N);
-        let value = match table.units {
-            Units::Dimensional => coefficient * u.powi(a) * v.powi(b) * r.powi(c) * delta.powi(d),
-            Units::Prime => {
+        let [_, _, _, _, k] = term.powers.map(i32::from);
+        let value = match (table.units, propeller) {
+            (Units::Prime, Some((p, induced, inflow))) if a + b + c == 0 => {
+                let lateral = v + p.rudder_position * si(1) * r;
+                let angle = delta - lateral / inflow;
+                let on = si(2 + moment) * coefficient;
+                match (d, k) {
+                    (0, 0) => on * induced * induced / 4.0,
+                    (1, 0) => {
+                        let change = inflow - p.approach_inflow;
+                        on * (inflow * inflow * delta - change * lateral)
+                    }
+                    _ => on * inflow * inflow * angle.powi(k) * delta.powi(d),
+                }
+            }
+            (Units::Dimensional, _) => {
+                coefficient * u.powi(a) * v.powi(b) * r.powi(c) * delta.powi(d)
+            }
+            (Units::Prime, _) => {
                 let surge = (u - table.design_speed) / speed;
                 let scale = si(2 + moment) * speed * speed;
                 let (v, r) = (v / speed, r * si(1) / speed);
@@ -49,6 +81,20 @@ fn independent_rhs(table: &ShipTable, y: [f64; 7], delta_rate: f64) -> ([f64; 7]
         };
         loads[slot] += value;
         sizes[slot] += value.abs();
+    }
+    if let Some((p, _, _)) = propeller {
+        let l = table.length.unwrap();
+        let [t_uu, t_un, t_nn] = p.thrust;
+        let resistance = p.resistance * p.wetted_surface / (l * l);
+        for value in [
+            t_uu * u * u,
+            t_un * l * n * u,
+            t_nn * l * l * n * n.abs(),
+            -resistance * u * u,
+        ] {
+            loads[0] += si(2) * value;
+            sizes[0] += (si(2) * value).abs();
+        }
     }
     let m = table.mass_matrix();
     let matrix = Matrix3::from_fn(|i, j| m[i][j]);
@@ -90,8 +136,9 @@ fn the_proved_program_is_4_46_with_the_table_forces() {
                 draw(-0.7, 0.7),
             ];
             let rate = draw(-0.1, 0.1);
-            let program = model.rhs(&y, &[rate]);
-            let (direct, sizes) = independent_rhs(&scene.table, y, rate);
+            let n = draw(-1.2, 1.2) * model.approach_rate();
+            let program = model.rhs(&y, &[rate, n]);
+            let (direct, sizes) = independent_rhs(&scene.table, y, (rate, n));
             for i in 0..7 {
                 let size = if i < 3 {
                     sizes[i]
@@ -589,7 +636,7 @@ duration_s = 100.0
         ShipModel::new(&at_midship.table).unwrap(),
     );
     let y: [f64; 7] = [5.0, 0.3, 0.01, 0.0, 0.0, 0.2, 0.1];
-    let (ra, rb) = (a.rhs(&y, &[0.0]), b.rhs(&y, &[0.0]));
+    let (ra, rb) = (a.rhs(&y, &[0.0, 0.0]), b.rhs(&y, &[0.0, 0.0]));
     for i in 0..7 {
         assert!(
             (ra[i] - rb[i]).abs() <= 1e-12 * ra[i].abs().max(1e-6),
@@ -713,12 +760,12 @@ fn the_ship_model_keeps_the_model_contract() {
                 draw(-4.0, 4.0),
                 draw(-0.7, 0.7),
             ];
-            let rate = [draw(-0.1, 0.1)];
+            let rate = [draw(-0.1, 0.1), draw(-1.2, 1.2) * model.approach_rate()];
             let by_state = model.state_jacobian(&y, &rate);
             let by_input = model.input_jacobian(&y, &rate);
-            for column in 0..8 {
+            for column in 0..9 {
                 let seeded = |i: usize| {
-                    let value = Dual64::from(if i < 7 { y[i] } else { rate[0] });
+                    let value = Dual64::from(if i < 7 { y[i] } else { rate[i - 7] });
                     if i == column {
                         value.derivative()
                     } else {
@@ -726,12 +773,12 @@ fn the_ship_model_keeps_the_model_contract() {
                     }
                 };
                 let state: [Dual64; 7] = std::array::from_fn(seeded);
-                let rates = model.rhs(&state, &[seeded(7)]);
+                let rates = model.rhs(&state, &[seeded(7), seeded(8)]);
                 for row in 0..7 {
                     let ours = if column < 7 {
                         by_state[row][column]
                     } else {
-                        by_input[row][0]
+                        by_input[row][column - 7]
                     };
                     let size = (by_state[row].iter().chain(&by_input[row]))
                         .fold(0.0f64, |m, x| m.max(x.abs()));
@@ -741,9 +788,9 @@ fn the_ship_model_keeps_the_model_contract() {
                         rates[row].eps
                     );
                     let declared = if column < 7 {
-                        <ShipModel as Model<f64, 7, 1>>::STATE_JACOBIAN.contains(&(row, column))
+                        <ShipModel as Model<f64, 7, 2>>::STATE_JACOBIAN.contains(&(row, column))
                     } else {
-                        <ShipModel as Model<f64, 7, 1>>::INPUT_JACOBIAN.contains(&(row, 0))
+                        <ShipModel as Model<f64, 7, 2>>::INPUT_JACOBIAN.contains(&(row, column - 7))
                     };
                     assert!(
                         declared || ours == 0.0,
@@ -856,7 +903,7 @@ fn the_mariner_runs_each_turn_to_both_sides_and_is_judged_on_the_worse() {
         overshoot(1)
     );
     let trial = (zigzag, runs.iter().map(|(s, f)| (*s, f)).collect());
-    let judged = criteria(scene.length, scene.table.design_speed, &[trial]);
+    let judged = criteria(scene.length, scene.table.design_speed, &[trial], false);
     let first = judged
         .iter()
         .find(|c| c.name == "first_overshoot_10_10")
@@ -887,9 +934,10 @@ fn runs_kind(scene: &ShipScene, side: Side) -> ManoeuvreKind {
         .kind
 }
 
-/// The spiral tells the two ships apart: the Esso Osaka's passes disagree about δ = 0 (a
-/// loop), the Mariner's agree everywhere (none), and the reverse spiral finds the Esso Osaka's
-/// loop as wide as the direct one does, to the direct spiral's spacing of angles (0.5°).
+/// The spiral tells the two ships apart: the Esso Osaka's passes disagree about δ = −1° (a
+/// loop, moved off δ = 0 by its propeller's bias), the Mariner's agree everywhere (none), and
+/// the reverse spiral finds the Esso Osaka's loop as wide as the direct one does, to twice the
+/// direct spiral's spacing of angles about the loop (0.25°).
 #[test]
 fn the_spirals_find_the_esso_osakas_loop_and_none_on_the_mariner() {
     let spiral_of = |file: &str, name: &str| {
@@ -921,19 +969,23 @@ fn the_spirals_find_the_esso_osakas_loop_and_none_on_the_mariner() {
     let found = esso.spiral.as_ref().unwrap().find_loop().unwrap();
     let height = found.height.unwrap();
     assert!(found.width > 0.0 && height > 0.0, "{found:?}");
-    // At δ = 0 the passes turn the ship opposite ways, each as fast as the other (the table
-    // has no bias) to the settling tolerance.
-    let at_zero: Vec<f64> = (esso.spiral.as_ref().unwrap().points.iter())
-        .filter(|p| p.rudder == 0.0)
-        .map(|p| p.yaw_rate)
+    // The propeller's bias N′_0 turns the ship to port with the rudder amidships, so the loop
+    // (the angles where the passes turn the ship opposite ways) lies to starboard rudder, off
+    // δ = 0, where both passes turn the ship the same way.
+    let points = &esso.spiral.as_ref().unwrap().points;
+    let on = |branch: Branch, rudder: f64| {
+        (points.iter())
+            .find(|p| p.branch == branch && p.rudder == rudder)
+            .map(|p| p.yaw_rate)
+    };
+    let split: Vec<f64> = (points.iter())
+        .filter(|p| p.branch == Branch::First)
+        .filter(|p| on(Branch::Back, p.rudder).is_some_and(|back| back * p.yaw_rate < 0.0))
+        .map(|p| p.rudder)
         .collect();
-    assert_eq!(at_zero.len(), 2);
-    assert!(at_zero[0] * at_zero[1] < 0.0);
-    let tolerance = 0.0005f64.to_radians();
-    assert!(
-        (at_zero[0] + at_zero[1]).abs() < 2.0 * tolerance,
-        "{at_zero:?}"
-    );
+    assert!(!split.is_empty() && split.iter().all(|d| *d < 0.0), "{split:?}");
+    let (first, back) = (on(Branch::First, 0.0).unwrap(), on(Branch::Back, 0.0).unwrap());
+    assert!(first < 0.0 && back < 0.0, "{first} {back}");
     let reverse = spiral_of("esso_osaka.toml", "reverse_spiral");
     let reverse_loop = reverse.spiral.as_ref().unwrap().find_loop().unwrap();
     assert!(

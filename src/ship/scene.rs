@@ -24,6 +24,18 @@
 //! Yv = -0.0116
 //! # …
 //!
+//! [propulsion]                 # optional, prime tables: the propeller and the thrust law
+//! diameter = 9.1               # d, m
+//! rudder_area = 119.817        # A_R, m²
+//! wake_fraction = 0.2          # w
+//! thrust_coefficient = 0.59    # K_T of the induced velocity
+//! slipstream_factor = 0.95     # k
+//! rudder_position_prime = -0.5 # x_R/L
+//! thrust = [-0.962e-5, -0.446e-5, 0.0309e-5] # T′_uu, T′_un, T′_nn
+//! resistance = 0.00226         # C_R on the wetted surface
+//! wetted_surface = 26319.8     # S, m²
+//! max_rate_rps_s = 0.0167      # the engine's rate limit
+//!
 //! [rudder]                     # every key optional
 //! max_deg = 40.0               # δ_max
 //! max_rate_deg_s = 5.0         # δ̇_max (needs the lag)
@@ -44,6 +56,7 @@
 //! # times_s = [0, 10, 20]      # rudder_series: the command's times and angles
 //! # series_deg = [0, 10, -10]
 //! # side = "both"              # turning_circle, zigzag: both (default), port or starboard
+//! # astern_rps = -0.64         # crash_stop: the full-astern propeller rate
 //!
 //! [[manoeuvre]]
 //! kind = "spiral"              # Dieudonné's direct spiral; "reverse_spiral": Bech's
@@ -65,6 +78,7 @@
 use super::ShipError;
 use super::linear::LinearModel;
 use super::manoeuvre::{Manoeuvre, ManoeuvreKind};
+use super::propulsion::Propulsion;
 use super::rudder::{Rudder, Series};
 use super::side::Side;
 use super::spiral::{ReverseSpiral, Settle, Spiral};
@@ -92,6 +106,8 @@ pub struct ShipSceneFile {
     /// The steering gear.
     #[serde(default)]
     pub rudder: RudderTable,
+    /// The propeller, its thrust law and the rudder in its slipstream (prime tables).
+    pub propulsion: Option<PropulsionTable>,
     /// The step.
     pub integrator: IntegratorTable,
     /// The manoeuvres, each run from the same approach.
@@ -162,6 +178,33 @@ pub struct RudderTable {
     pub max_rate_deg_s: Option<f64>,
     /// The lag's time constant, s.
     pub time_constant_s: Option<f64>,
+}
+
+/// `[propulsion]`: the propeller, its thrust law, and the rudder in its slipstream
+/// ([`super::propulsion`]); every key required.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PropulsionTable {
+    /// d, m.
+    pub diameter: f64,
+    /// A_R, m².
+    pub rudder_area: f64,
+    /// w.
+    pub wake_fraction: f64,
+    /// K_T of the induced velocity.
+    pub thrust_coefficient: f64,
+    /// k.
+    pub slipstream_factor: f64,
+    /// x_R/L, the rudder ahead of midship (negative aft).
+    pub rudder_position_prime: f64,
+    /// [T′_uu, T′_un, T′_nn].
+    pub thrust: [f64; 3],
+    /// C_R on the wetted surface.
+    pub resistance: f64,
+    /// S, m².
+    pub wetted_surface: f64,
+    /// The engine's rate limit, rev/s².
+    pub max_rate_rps_s: f64,
 }
 
 /// `[integrator]`: the keys of every scene's but the end time (each manoeuvre gives its
@@ -235,6 +278,8 @@ pub struct ManoeuvreTable {
     /// The reverse spiral's settling tolerance on the mean rudder from window to window,
     /// degrees.
     pub settle_rudder_deg: Option<f64>,
+    /// A crash stop's full-astern propeller rate, rev/s (negative).
+    pub astern_rps: Option<f64>,
 }
 
 /// A spiral's settling window by default, s.
@@ -249,7 +294,7 @@ pub const SETTLE_RUDDER_DEG: f64 = 0.01;
 pub const CONTROLLER_TIME_S: f64 = 20.0;
 
 /// The keys of `[[manoeuvre]]` that only some kinds read, with whether the table gives each.
-fn kind_keys(table: &ManoeuvreTable) -> [(&'static str, bool); 17] {
+fn kind_keys(table: &ManoeuvreTable) -> [(&'static str, bool); 18] {
     [
         ("rudder_deg", table.rudder_deg.is_some()),
         ("heading_deg", table.heading_deg.is_some()),
@@ -270,6 +315,7 @@ fn kind_keys(table: &ManoeuvreTable) -> [(&'static str, bool); 17] {
         ("max_hold_s", table.max_hold_s.is_some()),
         ("controller_time_s", table.controller_time_s.is_some()),
         ("settle_rudder_deg", table.settle_rudder_deg.is_some()),
+        ("astern_rps", table.astern_rps.is_some()),
         ("duration_s", table.duration_s.is_some()),
     ]
 }
@@ -301,6 +347,7 @@ fn keys_of(kind: &str) -> &'static [&'static str] {
             "settle_rudder_deg",
             "duration_s",
         ],
+        "crash_stop" => &["astern_rps", "duration_s"],
         _ => &[],
     }
 }
@@ -452,12 +499,62 @@ impl Checker<'_> {
             design_speed,
             rigid_body_terms,
             coefficients: hydro.coefficients.clone(),
+            propulsion: file
+                .propulsion
+                .as_ref()
+                .map(|p| self.propulsion(p))
+                .transpose()?,
         };
         let table = ShipTable::new(&given).map_err(|e| match e {
             ShipError::Invalid { key, reason } => self.invalid(&key, reason),
             other => self.invalid("hydrodynamics", other.to_string()),
         })?;
         Ok((table, length))
+    }
+
+    /// `[propulsion]`, each number checked; the rate at the approach is solved by the table.
+    fn propulsion(&self, table: &PropulsionTable) -> Result<Propulsion, SceneError> {
+        let key = |k: &str| format!("propulsion.{k}");
+        let positive = |k: &str, v: f64| self.positive(&key(k), v);
+        let fraction = |k: &str, v: f64| {
+            let v = self.finite(&key(k), v)?;
+            if (0.0..1.0).contains(&v) {
+                Ok(v)
+            } else {
+                Err(self.invalid(&key(k), "a fraction in [0, 1)"))
+            }
+        };
+        for (i, value) in table.thrust.iter().enumerate() {
+            self.finite(&format!("propulsion.thrust[{i}]"), *value)?;
+        }
+        let diameter = positive("diameter", table.diameter)?;
+        let rudder_area = positive("rudder_area", table.rudder_area)?;
+        let disk = std::f64::consts::PI * diameter * diameter / 4.0;
+        if disk > rudder_area {
+            return Err(self.invalid(
+                &key("rudder_area"),
+                format!(
+                    "the rudder's area must hold the propeller's disk (π d²/4 = {disk} m²): c                      weighs the slipstream by the share of the rudder in it"
+                ),
+            ));
+        }
+        Ok(Propulsion {
+            diameter,
+            rudder_area,
+            wake_fraction: fraction("wake_fraction", table.wake_fraction)?,
+            thrust_coefficient: positive("thrust_coefficient", table.thrust_coefficient)?,
+            slipstream_factor: positive("slipstream_factor", table.slipstream_factor)?,
+            rudder_position: self.finite(
+                &key("rudder_position_prime"),
+                table.rudder_position_prime,
+            )?,
+            thrust: table.thrust,
+            resistance: positive("resistance", table.resistance)?,
+            wetted_surface: positive("wetted_surface", table.wetted_surface)?,
+            max_rate: positive("max_rate_rps_s", table.max_rate_rps_s)?,
+            approach_rate: f64::NAN,
+            approach_inflow: f64::NAN,
+        })
     }
 
     fn rudder(&self, rudder: &RudderTable) -> Result<Rudder, SceneError> {
@@ -542,13 +639,14 @@ impl Checker<'_> {
         &self,
         index: usize,
         table: &ManoeuvreTable,
-        linear: &LinearModel,
+        (linear, propulsion): (&LinearModel, Option<&Propulsion>),
     ) -> Result<Manoeuvre, SceneError> {
         let key = |k: &str| format!("manoeuvre[{index}].{k}");
         let required = |k: &str, v: Option<f64>| {
             v.ok_or_else(|| self.error(&key(k), Problem::Missing(key(k))))
         };
-        let kinds = "turning_circle, zigzag, pull_out, rudder_series, spiral or reverse_spiral";
+        let kinds = "turning_circle, zigzag, pull_out, rudder_series, spiral, reverse_spiral or \
+                     crash_stop";
         if keys_of(&table.kind).is_empty() {
             return Err(self.invalid(&key("kind"), format!("`{}`: expected {kinds}", table.kind)));
         }
@@ -644,6 +742,23 @@ impl Checker<'_> {
                     )
                 })?;
                 (ManoeuvreKind::Series(series), "rudder_series".to_owned())
+            }
+            "crash_stop" => {
+                if propulsion.is_none() {
+                    return Err(self.invalid(
+                        &key("kind"),
+                        "a crash stop needs a propulsion model to go astern: give [propulsion]",
+                    ));
+                }
+                let astern =
+                    self.finite(&key("astern_rps"), required("astern_rps", table.astern_rps)?)?;
+                if astern >= 0.0 {
+                    return Err(self.invalid(
+                        &key("astern_rps"),
+                        "full astern is a negative propeller rate",
+                    ));
+                }
+                (ManoeuvreKind::CrashStop { astern }, "crash_stop".to_owned())
             }
             kind => match spiral {
                 Some((kind, _)) => {
@@ -875,6 +990,7 @@ impl ShipScene {
         let (table, length) = check.table(file)?;
         let rudder = check.rudder(&file.rudder)?;
         let linear = LinearModel::closed_form(&table);
+        let table_propulsion = table.propulsion.as_ref();
         if file.manoeuvre.is_empty() {
             return Err(check.error(
                 "manoeuvre",
@@ -883,7 +999,7 @@ impl ShipScene {
         }
         let mut manoeuvres: Vec<Manoeuvre> = Vec::new();
         for (index, table) in file.manoeuvre.iter().enumerate() {
-            let manoeuvre = check.manoeuvre(index, table, &linear)?;
+            let manoeuvre = check.manoeuvre(index, table, (&linear, table_propulsion))?;
             if manoeuvres.iter().any(|m| m.name == manoeuvre.name) {
                 return Err(check.invalid(
                     &format!("manoeuvre[{index}].name"),
