@@ -1103,3 +1103,65 @@ fn a_ships_modes_are_nomotos_time_constants() {
         assert!(named.contains(&"sway and yaw"), "{file}: {named:?}");
     }
 }
+
+/// The Esso Osaka's crash stop on its table with the propeller's bias taken out: the table is
+/// then mirror-symmetric, so the ship stops on its approach's line (lateral deviation and track
+/// reach minus head reach below 1e-6 m). The stop is the event u = 0, located on the run's
+/// own solution: the last row is at |u| < 1e-9 m/s. The figures move by less than 0.1 m and
+/// 0.01 s when the step is halved, and the IMO criterion is judged on the track reach.
+#[test]
+fn a_crash_stop_ends_where_the_ship_stops_and_is_judged() {
+    let text = std::fs::read_to_string("scenes/esso_osaka.toml").unwrap();
+    let mut unbiased: String = text
+        .lines()
+        .take_while(|line| !line.starts_with("[[manoeuvre]]"))
+        .filter(|line| !["Y0", "N0"].iter().any(|bias| line.starts_with(bias)))
+        .collect::<Vec<_>>()
+        .join("\n");
+    unbiased.push_str(
+        "\n[[manoeuvre]]\nname = \"stop\"\nkind = \"crash_stop\"\nastern_rps = -0.644\n\
+         duration_s = 3000.0\n",
+    );
+    let scene = ShipScene::parse(&unbiased, "unbiased").unwrap();
+    let model = ShipModel::new(&scene.table).unwrap();
+    let manoeuvre = &scene.manoeuvres[0];
+    let (samples, figures) = run_to_end(&scene, &model, manoeuvre, &scene.stepper);
+    let last = samples.last().unwrap();
+    assert!(last.state[0].abs() < 1e-9, "u = {} at the stop", last.state[0]);
+    let get = |figures: &Figures, key: &str| figures.get(key).unwrap();
+    let (track, head) = (
+        get(&figures, "track_reach_m"),
+        get(&figures, "head_reach_m"),
+    );
+    assert!((track - head).abs() < 1e-6 && get(&figures, "lateral_deviation_m") < 1e-6);
+    let time = get(&figures, "time_to_stop_s");
+    assert!((last.t - time).abs() < 1e-9, "{} against {time}", last.t);
+    let refined = scene.stepper.refined();
+    let (_, finer) = run_to_end(&scene, &model, manoeuvre, &refined);
+    assert!((get(&finer, "track_reach_m") - track).abs() < 0.1);
+    assert!((get(&finer, "time_to_stop_s") - time).abs() < 0.01);
+    let trial = (manoeuvre, vec![(None, &figures)]);
+    let judged = criteria(scene.length, scene.table.design_speed, &[trial], true);
+    let stopping = judged.iter().find(|c| c.name == "track_reach").unwrap();
+    assert_eq!(stopping.value, Some(track));
+    assert_eq!(stopping.pass(), Some(track <= 15.0 * scene.length));
+    assert_eq!(stopping.not_judged_because, None);
+}
+
+/// The published table with the rudder amidships: the propeller's bias turns the tanker while
+/// it slows, and the table's X′_rr r′² (r′ = rL/U grows past 2 as U falls) keeps it turning
+/// ahead at full astern; the run says the ship had not stopped, and the criterion is not judged.
+#[test]
+fn the_published_esso_osaka_does_not_stop_and_says_so() {
+    let scene = scene("esso_osaka.toml");
+    let model = ShipModel::new(&scene.table).unwrap();
+    let manoeuvre = scene.manoeuvres.iter().find(|m| m.name == "crash_stop").unwrap();
+    let (samples, figures) = run_to_end(&scene, &model, manoeuvre, &scene.stepper);
+    assert_eq!(figures.get("track_reach_m"), None);
+    assert!(figures.notes.iter().any(|n| n.contains("had not stopped")), "{:?}", figures.notes);
+    assert!(samples.iter().all(|s| s.state[0] > 1.0), "u stays above 1 m/s");
+    let trial = (manoeuvre, vec![(None, &figures)]);
+    let judged = criteria(scene.length, scene.table.design_speed, &[trial], true);
+    let stopping = judged.iter().find(|c| c.name == "track_reach").unwrap();
+    assert_eq!((stopping.value, stopping.pass()), (None, None));
+}
