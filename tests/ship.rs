@@ -37,7 +37,8 @@ fn independent_rhs(
     let propeller = table.propulsion.map(|p| {
         let wake = (1.0 - p.wake_fraction) * u;
         let ahead = n.max(0.0) * p.diameter;
-        let induced = -wake + (wake * wake + 8.0 / PI * p.thrust_coefficient * ahead * ahead).sqrt();
+        let induced =
+            -wake + (wake * wake + 8.0 / PI * p.thrust_coefficient * ahead * ahead).sqrt();
         let share = PI * p.diameter * p.diameter / 4.0 / p.rudder_area;
         let slip = wake + p.slipstream_factor * induced;
         let inflow = (share * slip * slip + (1.0 - share) * wake * wake).sqrt();
@@ -577,7 +578,11 @@ fn a_spirals_angles_may_be_given_from_to_and_step() {
     assert!(text.contains(list));
     let angles = |form: &str| {
         let scene = ShipScene::parse(&text.replacen(list, form, 1), "range").unwrap();
-        let spiral = scene.manoeuvres.iter().find(|m| m.name == "spiral").unwrap();
+        let spiral = scene
+            .manoeuvres
+            .iter()
+            .find(|m| m.name == "spiral")
+            .unwrap();
         match &spiral.kind {
             ManoeuvreKind::Spiral(spiral) => spiral.rudders.clone(),
             other => panic!("{other:?}"),
@@ -589,7 +594,10 @@ fn a_spirals_angles_may_be_given_from_to_and_step() {
     assert_eq!(ranged[10], (-0.5_f64).to_radians());
     assert_eq!(ranged[7], (0.5 - 7.0 * 0.1_f64).to_radians());
     let listed = angles("rudders_deg = [10.0, 5.0, 0.0, -5.0, -10.0]");
-    assert_eq!(angles("from_deg = 10.0\nto_deg = -10.0\nstep_deg = 5.0"), listed);
+    assert_eq!(
+        angles("from_deg = 10.0\nto_deg = -10.0\nstep_deg = 5.0"),
+        listed
+    );
 }
 
 #[test]
@@ -983,8 +991,14 @@ fn the_spirals_find_the_esso_osakas_loop_and_none_on_the_mariner() {
         .filter(|p| on(Branch::Back, p.rudder).is_some_and(|back| back * p.yaw_rate < 0.0))
         .map(|p| p.rudder)
         .collect();
-    assert!(!split.is_empty() && split.iter().all(|d| *d < 0.0), "{split:?}");
-    let (first, back) = (on(Branch::First, 0.0).unwrap(), on(Branch::Back, 0.0).unwrap());
+    assert!(
+        !split.is_empty() && split.iter().all(|d| *d < 0.0),
+        "{split:?}"
+    );
+    let (first, back) = (
+        on(Branch::First, 0.0).unwrap(),
+        on(Branch::Back, 0.0).unwrap(),
+    );
     assert!(first < 0.0 && back < 0.0, "{first} {back}");
     let reverse = spiral_of("esso_osaka.toml", "reverse_spiral");
     let reverse_loop = reverse.spiral.as_ref().unwrap().find_loop().unwrap();
@@ -1127,7 +1141,11 @@ fn a_crash_stop_ends_where_the_ship_stops_and_is_judged() {
     let manoeuvre = &scene.manoeuvres[0];
     let (samples, figures) = run_to_end(&scene, &model, manoeuvre, &scene.stepper);
     let last = samples.last().unwrap();
-    assert!(last.state[0].abs() < 1e-9, "u = {} at the stop", last.state[0]);
+    assert!(
+        last.state[0].abs() < 1e-9,
+        "u = {} at the stop",
+        last.state[0]
+    );
     let get = |figures: &Figures, key: &str| figures.get(key).unwrap();
     let (track, head) = (
         get(&figures, "track_reach_m"),
@@ -1155,11 +1173,22 @@ fn a_crash_stop_ends_where_the_ship_stops_and_is_judged() {
 fn the_published_esso_osaka_does_not_stop_and_says_so() {
     let scene = scene("esso_osaka.toml");
     let model = ShipModel::new(&scene.table).unwrap();
-    let manoeuvre = scene.manoeuvres.iter().find(|m| m.name == "crash_stop").unwrap();
+    let manoeuvre = scene
+        .manoeuvres
+        .iter()
+        .find(|m| m.name == "crash_stop")
+        .unwrap();
     let (samples, figures) = run_to_end(&scene, &model, manoeuvre, &scene.stepper);
     assert_eq!(figures.get("track_reach_m"), None);
-    assert!(figures.notes.iter().any(|n| n.contains("had not stopped")), "{:?}", figures.notes);
-    assert!(samples.iter().all(|s| s.state[0] > 1.0), "u stays above 1 m/s");
+    assert!(
+        figures.notes.iter().any(|n| n.contains("had not stopped")),
+        "{:?}",
+        figures.notes
+    );
+    assert!(
+        samples.iter().all(|s| s.state[0] > 1.0),
+        "u stays above 1 m/s"
+    );
     let trial = (manoeuvre, vec![(None, &figures)]);
     let judged = criteria(scene.length, scene.table.design_speed, &[trial], true);
     let stopping = judged.iter().find(|c| c.name == "track_reach").unwrap();

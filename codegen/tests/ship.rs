@@ -233,12 +233,18 @@ fn a_term_in_the_effective_rudder_angle_needs_propulsion() {
         propulsion: false,
     };
     let error = ship("no_propeller", &spec).unwrap_err();
-    assert!(error.to_string().contains("needs a propulsion model"), "{error}");
+    assert!(
+        error.to_string().contains("needs a propulsion model"),
+        "{error}"
+    );
     let mixed = ShipSpec {
         terms: vec![term(Force::Y, [0, 1, 0, 1])],
         propulsion: true,
         ..spec
     };
     let error = ship("mixed", &mixed).unwrap_err();
-    assert!(error.to_string().contains("Y_vd mixes the rudder"), "{error}");
+    assert!(
+        error.to_string().contains("Y_vd mixes the rudder"),
+        "{error}"
+    );
 }

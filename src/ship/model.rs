@@ -38,7 +38,19 @@ pub const INPUTS: [&str; 2] = ["delta_rate", "n"];
 /// Where the program's variables sit in the slice `evaluate` gives it: the state, δ̇, U, then
 /// what propulsion reads.
 const VARIABLES: [&str; 13] = [
-    "u", "v", "r", "X", "Y", "psi", "delta", "delta_rate", "U", "n", "n_abs", "u_A", "c",
+    "u",
+    "v",
+    "r",
+    "X",
+    "Y",
+    "psi",
+    "delta",
+    "delta_rate",
+    "U",
+    "n",
+    "n_abs",
+    "u_A",
+    "c",
 ];
 
 /// Where the rates can depend on the state, for any table: u̇, v̇, ṙ on u, v, r and δ (the

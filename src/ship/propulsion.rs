@@ -109,10 +109,7 @@ impl Propulsion {
         let wake_speed = wake * u;
         let root = (wake_speed * wake_speed + q * ahead * ahead).simd_sqrt();
         let induced = root - wake_speed;
-        let induced_by = [
-            wake * wake_speed / root - wake,
-            q * ahead * dahead / root,
-        ];
+        let induced_by = [wake * wake_speed / root - wake, q * ahead * dahead / root];
         let slipstream = wake_speed + k * induced;
         let speed = (share * slipstream * slipstream
             + (value(1.0) - share) * wake_speed * wake_speed)
@@ -216,7 +213,10 @@ mod tests {
             ];
             for (exact, difference) in pairs {
                 let scale = exact.abs().max(1.0);
-                assert!((exact - difference).abs() < 1e-7 * scale, "{u} {n}: {exact} {difference}");
+                assert!(
+                    (exact - difference).abs() < 1e-7 * scale,
+                    "{u} {n}: {exact} {difference}"
+                );
             }
         }
     }
@@ -224,7 +224,7 @@ mod tests {
     /// Astern the rudder sees the wake alone: u_A = 0, c = (1 − w) u.
     #[test]
     fn astern_the_slipstream_leaves_the_rudder() {
-        let at = esso().inflow(3.0, -0.4);
+        let at = esso().inflow(3.0_f64, -0.4);
         assert_eq!(at.induced, 0.0);
         assert!((at.speed - 0.8 * 3.0).abs() < 1e-15);
     }

@@ -544,10 +544,8 @@ impl Checker<'_> {
             wake_fraction: fraction("wake_fraction", table.wake_fraction)?,
             thrust_coefficient: positive("thrust_coefficient", table.thrust_coefficient)?,
             slipstream_factor: positive("slipstream_factor", table.slipstream_factor)?,
-            rudder_position: self.finite(
-                &key("rudder_position_prime"),
-                table.rudder_position_prime,
-            )?,
+            rudder_position: self
+                .finite(&key("rudder_position_prime"), table.rudder_position_prime)?,
             thrust: table.thrust,
             resistance: positive("resistance", table.resistance)?,
             wetted_surface: positive("wetted_surface", table.wetted_surface)?,
@@ -750,8 +748,10 @@ impl Checker<'_> {
                         "a crash stop needs a propulsion model to go astern: give [propulsion]",
                     ));
                 }
-                let astern =
-                    self.finite(&key("astern_rps"), required("astern_rps", table.astern_rps)?)?;
+                let astern = self.finite(
+                    &key("astern_rps"),
+                    required("astern_rps", table.astern_rps)?,
+                )?;
                 if astern >= 0.0 {
                     return Err(self.invalid(
                         &key("astern_rps"),
@@ -814,7 +814,11 @@ impl Checker<'_> {
             ("to_deg", table.to_deg),
             ("step_deg", table.step_deg),
         ];
-        let given: Vec<&str> = range.iter().filter(|(_, v)| v.is_some()).map(|(k, _)| *k).collect();
+        let given: Vec<&str> = range
+            .iter()
+            .filter(|(_, v)| v.is_some())
+            .map(|(k, _)| *k)
+            .collect();
         let both = "give the angles either as rudders_deg or as from_deg, to_deg and step_deg";
         match (&table.rudders_deg, given.len()) {
             (Some(_), 0) => return Ok(table.rudders_deg.clone()),
@@ -835,7 +839,10 @@ impl Checker<'_> {
             }
             (None, 3) => {}
             (None, _) => {
-                let missing = range.iter().find(|(_, v)| v.is_none()).map_or("", |(k, _)| *k);
+                let missing = range
+                    .iter()
+                    .find(|(_, v)| v.is_none())
+                    .map_or("", |(k, _)| *k);
                 return Err(self.error(
                     &key(missing),
                     Problem::Missing(format!("{}: {both}", key(missing))),

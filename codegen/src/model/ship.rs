@@ -390,8 +390,8 @@ impl ShipSpec {
             }
             let inflow = Expr::symbol("c");
             let angle = self.effective_rudder_angle()?;
-            let mut value = &(&scale * &inflow.pow(2)?)
-                * &(&angle.pow(k)? * &Expr::symbol("delta").pow(d)?);
+            let mut value =
+                &(&scale * &inflow.pow(2)?) * &(&angle.pow(k)? * &Expr::symbol("delta").pow(d)?);
             if k == 0 && d == 1 {
                 // The rudder's share of Y_v and Y_r changes with c from c₀, where they were
                 // identified: −Y_d (c − c₀)(v + x_R r).
