@@ -1194,3 +1194,53 @@ fn the_published_esso_osaka_does_not_stop_and_says_so() {
     let stopping = judged.iter().find(|c| c.name == "track_reach").unwrap();
     assert_eq!((stopping.value, stopping.pass()), (None, None));
 }
+
+/// A propulsion model's keys and a crash stop's are checked, each error naming its key.
+#[test]
+fn bad_propulsion_and_crash_stops_are_refused_naming_the_key() {
+    let esso = std::fs::read_to_string("scenes/esso_osaka.toml").unwrap();
+    let cases = [
+        ("wetted_surface = 26319.8", "", "propulsion.wetted_surface"),
+        (
+            "wake_fraction = 0.2",
+            "wake_fraction = 1.2",
+            "propulsion.wake_fraction",
+        ),
+        (
+            "rudder_area = 119.817",
+            "rudder_area = 10.0",
+            "propulsion.rudder_area",
+        ),
+        (
+            "astern_rps = -0.644",
+            "astern_rps = 0.3",
+            "manoeuvre[4].astern_rps",
+        ),
+        ("astern_rps = -0.644", "", "manoeuvre[4].astern_rps"),
+        (
+            "Xee = -0.00224",
+            "Xvee = -0.00224",
+            "hydrodynamics.coefficients.Xvee",
+        ),
+        (
+            "thrust = [-0.962e-5, -0.446e-5, 0.0309e-5]",
+            "thrust = [0.0, 0.0, -1.0]",
+            "propulsion.thrust",
+        ),
+    ];
+    for (from, to, key) in cases {
+        assert!(esso.contains(from), "{from}");
+        let error = ShipScene::parse(&esso.replacen(from, to, 1), "bad").unwrap_err();
+        assert_eq!(error.key, key, "{to}: {error}");
+    }
+    // Without [propulsion]: no crash stop, no term in e.
+    let mariner = std::fs::read_to_string("scenes/mariner.toml").unwrap();
+    let stop = format!(
+        "{mariner}\n[[manoeuvre]]\nkind = \"crash_stop\"\nastern_rps = -1.0\nduration_s = 10.0\n"
+    );
+    let error = ShipScene::parse(&stop, "no propeller").unwrap_err();
+    assert!(error.key.ends_with("].kind"), "{error}");
+    let in_e = mariner.replacen("Xvv = -0.00899", "Xvv = -0.00899\nYeee = -0.001", 1);
+    let error = ShipScene::parse(&in_e, "no propeller").unwrap_err();
+    assert_eq!(error.key, "hydrodynamics.coefficients.Yeee", "{error}");
+}

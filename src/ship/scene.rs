@@ -181,30 +181,31 @@ pub struct RudderTable {
 }
 
 /// `[propulsion]`: the propeller, its thrust law, and the rudder in its slipstream
-/// ([`super::propulsion`]); every key required.
-#[derive(Debug, Clone, Deserialize)]
+/// ([`super::propulsion`]); every key required where the table is given (the checker names the
+/// one missing).
+#[derive(Debug, Clone, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct PropulsionTable {
     /// d, m.
-    pub diameter: f64,
+    pub diameter: Option<f64>,
     /// A_R, m².
-    pub rudder_area: f64,
+    pub rudder_area: Option<f64>,
     /// w.
-    pub wake_fraction: f64,
+    pub wake_fraction: Option<f64>,
     /// K_T of the induced velocity.
-    pub thrust_coefficient: f64,
+    pub thrust_coefficient: Option<f64>,
     /// k.
-    pub slipstream_factor: f64,
+    pub slipstream_factor: Option<f64>,
     /// x_R/L, the rudder ahead of midship (negative aft).
-    pub rudder_position_prime: f64,
+    pub rudder_position_prime: Option<f64>,
     /// [T′_uu, T′_un, T′_nn].
-    pub thrust: [f64; 3],
+    pub thrust: Option<[f64; 3]>,
     /// C_R on the wetted surface.
-    pub resistance: f64,
+    pub resistance: Option<f64>,
     /// S, m².
-    pub wetted_surface: f64,
+    pub wetted_surface: Option<f64>,
     /// The engine's rate limit, rev/s².
-    pub max_rate_rps_s: f64,
+    pub max_rate_rps_s: Option<f64>,
 }
 
 /// `[integrator]`: the keys of every scene's but the end time (each manoeuvre gives its
@@ -515,16 +516,22 @@ impl Checker<'_> {
     /// `[propulsion]`, each number checked; the rate at the approach is solved by the table.
     fn propulsion(&self, table: &PropulsionTable) -> Result<Propulsion, SceneError> {
         let key = |k: &str| format!("propulsion.{k}");
-        let positive = |k: &str, v: f64| self.positive(&key(k), v);
-        let fraction = |k: &str, v: f64| {
-            let v = self.finite(&key(k), v)?;
+        let given = |k: &str, v: Option<f64>| {
+            v.ok_or_else(|| self.error(&key(k), Problem::Missing(key(k))))
+        };
+        let positive = |k: &str, v: Option<f64>| self.positive(&key(k), given(k, v)?);
+        let fraction = |k: &str, v: Option<f64>| {
+            let v = self.finite(&key(k), given(k, v)?)?;
             if (0.0..1.0).contains(&v) {
                 Ok(v)
             } else {
                 Err(self.invalid(&key(k), "a fraction in [0, 1)"))
             }
         };
-        for (i, value) in table.thrust.iter().enumerate() {
+        let thrust = table
+            .thrust
+            .ok_or_else(|| self.error(&key("thrust"), Problem::Missing(key("thrust"))))?;
+        for (i, value) in thrust.iter().enumerate() {
             self.finite(&format!("propulsion.thrust[{i}]"), *value)?;
         }
         let diameter = positive("diameter", table.diameter)?;
@@ -534,19 +541,20 @@ impl Checker<'_> {
             return Err(self.invalid(
                 &key("rudder_area"),
                 format!(
-                    "the rudder's area must hold the propeller's disk (π d²/4 = {disk} m²): c                      weighs the slipstream by the share of the rudder in it"
+                    "the rudder's area must hold the propeller's disk (π d²/4 = {disk} m²): c \
+                     weighs the slipstream by the share of the rudder in it"
                 ),
             ));
         }
+        let position = given("rudder_position_prime", table.rudder_position_prime)?;
         Ok(Propulsion {
             diameter,
             rudder_area,
             wake_fraction: fraction("wake_fraction", table.wake_fraction)?,
             thrust_coefficient: positive("thrust_coefficient", table.thrust_coefficient)?,
             slipstream_factor: positive("slipstream_factor", table.slipstream_factor)?,
-            rudder_position: self
-                .finite(&key("rudder_position_prime"), table.rudder_position_prime)?,
-            thrust: table.thrust,
+            rudder_position: self.finite(&key("rudder_position_prime"), position)?,
+            thrust,
             resistance: positive("resistance", table.resistance)?,
             wetted_surface: positive("wetted_surface", table.wetted_surface)?,
             max_rate: positive("max_rate_rps_s", table.max_rate_rps_s)?,
