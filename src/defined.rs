@@ -25,7 +25,8 @@ pub(crate) mod engine {
     pub use eom_codegen::emit::program::{Function, Node, Program};
     pub use eom_codegen::emit::{EmitError, Operations, prove_with_jacobians};
     pub use eom_codegen::model::ship::{
-        ADDED_MASS, Force, PRIME_SCALES, ShipSpec, Term, Units, VARIABLES, YawInertia, ship,
+        ADDED_MASS, Force, PRIME_SCALES, PROPULSION, ShipSpec, Term, Units, VARIABLES, YawInertia,
+        ship,
     };
     pub use eom_codegen::model::vehicle::{
         AddedMassCoriolis, Convention, FoldedComparison, InertiaAbout, NameError, Propeller,

@@ -6,8 +6,11 @@ use eom_codegen::emit::{prove, system_source};
 use eom_codegen::model::ship::{Force, ShipSpec, Term, Units, YawInertia, ship};
 use eom_codegen::symbolic::{Expr, parse};
 
-fn term(force: Force, powers: [u8; 4]) -> Term {
-    Term { force, powers }
+fn term(force: Force, [a, b, c, d]: [u8; 4]) -> Term {
+    Term {
+        force,
+        powers: [a, b, c, d, 0],
+    }
 }
 
 /// The Mariner's terms (Chislett & Strøm-Tejsen), each load's polynomial as published.
@@ -69,6 +72,7 @@ fn residuals_are_the_mass_matrix_form_with_the_polynomial() {
             term(Force::Y, [0, 0, 0, 1]),
             term(Force::N, [0, 2, 1, 0]),
         ],
+        propulsion: false,
     };
     let book = [
         "(M - X_udot)*u_dot - M*v*r - M*x_G*r.powi(2) - X_uu*u.powi(2)",
@@ -89,6 +93,7 @@ fn inertia_about_midship_enters_the_mass_matrix_as_given() {
         units: Units::Dimensional,
         yaw_inertia: YawInertia::AboutMidship,
         terms: vec![],
+        propulsion: false,
     };
     let yaw = &spec.residuals().unwrap()[2];
     let book = parse("(M*x_G - N_vdot)*v_dot + (Izz_midship - N_rdot)*r_dot + M*x_G*u*r").unwrap();
@@ -103,6 +108,7 @@ fn prime_terms_scale_by_the_instantaneous_speed() {
         units: Units::Prime,
         yaw_inertia: YawInertia::AboutMidship,
         terms: vec![term(Force::Y, [0, 2, 1, 0]), term(Force::N, [1, 0, 0, 1])],
+        propulsion: false,
     };
     let y = spec.force(Force::Y).unwrap();
     let expected = parse("rho/2.0*L.powi(3)*Y_vvr*v.powi(2)*r/U").unwrap();
@@ -120,6 +126,7 @@ fn the_mariner_builds_proves_and_emits_only_its_terms_and_the_model_contract() {
                 units,
                 yaw_inertia,
                 terms: mariner_terms(),
+                propulsion: false,
             };
             let system = ship("mariner", &spec).unwrap();
             prove(&system).unwrap();
@@ -148,6 +155,7 @@ fn a_term_listed_twice_is_refused() {
         units: Units::Dimensional,
         yaw_inertia: YawInertia::AboutG,
         terms: vec![term(Force::Y, [0, 1, 0, 0]), term(Force::Y, [0, 1, 0, 0])],
+        propulsion: false,
     };
     let error = ship("twice", &spec).unwrap_err();
     assert!(error.to_string().contains("Y_v is listed twice"), "{error}");
@@ -159,6 +167,7 @@ fn the_rudder_angle_moves_at_its_input() {
         units: Units::Dimensional,
         yaw_inertia: YawInertia::AboutG,
         terms: vec![],
+        propulsion: false,
     };
     let system = ship("bare", &spec).unwrap();
     assert_eq!(system.state[6], "delta");
@@ -174,6 +183,7 @@ fn single_operation_mutants_of_the_mariner_s_jacobians_fail_their_check() {
         units: Units::Prime,
         yaw_inertia: YawInertia::AboutMidship,
         terms: mariner_terms(),
+        propulsion: false,
     };
     let system = ship("mariner", &spec).unwrap();
     let caught = mutants::jacobian_mutants(&system, 1);
@@ -182,4 +192,81 @@ fn single_operation_mutants_of_the_mariner_s_jacobians_fail_their_check() {
         caught.tried, caught.tried, caught.entries, caught.operations[0], caught.operations[1]
     );
     assert!(caught.tried > 100, "only {}", caught.tried);
+}
+
+fn rudder_term(force: Force, e: u8) -> Term {
+    Term {
+        force,
+        powers: [0, 0, 0, 0, e],
+    }
+}
+
+/// Abkowitz's forms, written by hand: the rudder on its inflow speed c with e = δ − (v +
+/// x_R r)/c, the change of the rudder's share of Y_v and Y_r with c from c₀, the propeller's
+/// bias on (u_A/2)², and the thrust law less the resistance in X.
+#[test]
+fn propulsion_puts_the_rudder_on_its_inflow_and_the_thrust_law_in_surge() {
+    let spec = ShipSpec {
+        units: Units::Prime,
+        yaw_inertia: YawInertia::AboutMidship,
+        terms: vec![
+            rudder_term(Force::X, 2),
+            term(Force::Y, [0, 0, 0, 1]),
+            rudder_term(Force::Y, 3),
+            term(Force::N, [0, 0, 0, 0]),
+        ],
+        propulsion: true,
+    };
+    let e = "(delta - (v + L*x_R*r)/c)";
+    let x = spec.force(Force::X).unwrap();
+    let expected = parse(&format!(
+        "rho/2.0*L.powi(2)*(X_ee*c.powi(2)*{e}.powi(2) + (T_uu - R_uu)*u.powi(2) \
+         + T_un*L*n*u + T_nn*L.powi(2)*n*n_abs)"
+    ))
+    .unwrap();
+    assert!((&x - &expected).is_zero(), "X: {}", &x - &expected);
+    let y = spec.force(Force::Y).unwrap();
+    let expected = parse(&format!(
+        "rho/2.0*L.powi(2)*(Y_d*(c.powi(2)*delta - (c - c0)*(v + L*x_R*r)) \
+         + Y_eee*c.powi(2)*{e}.powi(3))"
+    ))
+    .unwrap();
+    assert!((&y - &expected).is_zero(), "Y: {}", &y - &expected);
+    let n = spec.force(Force::N).unwrap();
+    let expected = parse("rho/2.0*L.powi(3)*N_0*(u_A/2.0).powi(2)").unwrap();
+    assert!((&n - &expected).is_zero(), "N: {}", &n - &expected);
+    let system = ship("abkowitz", &spec).unwrap();
+    assert_eq!(
+        system.inputs,
+        ["delta_rate", "U", "n", "n_abs", "u_A", "c"],
+        "the computed inputs beside U"
+    );
+    prove(&system).unwrap();
+    let source = system_source(&system).unwrap();
+    assert!(source.contains("pub y_eee: f64") && source.contains("pub t_nn: f64"));
+}
+
+#[test]
+fn a_term_in_the_effective_rudder_angle_needs_propulsion() {
+    let spec = ShipSpec {
+        units: Units::Prime,
+        yaw_inertia: YawInertia::AboutG,
+        terms: vec![rudder_term(Force::Y, 3)],
+        propulsion: false,
+    };
+    let error = ship("no_propeller", &spec).unwrap_err();
+    assert!(
+        error.to_string().contains("needs a propulsion model"),
+        "{error}"
+    );
+    let mixed = ShipSpec {
+        terms: vec![term(Force::Y, [0, 1, 0, 1])],
+        propulsion: true,
+        ..spec
+    };
+    let error = ship("mixed", &mixed).unwrap_err();
+    assert!(
+        error.to_string().contains("Y_vd mixes the rudder"),
+        "{error}"
+    );
 }

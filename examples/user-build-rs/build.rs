@@ -9,7 +9,10 @@ use std::path::PathBuf;
 
 /// The ship's table: the terms, and only those, that the generated code computes.
 fn ship_spec() -> ShipSpec {
-    let term = |force, powers| Term { force, powers };
+    let term = |force, [a, b, c, d]: [u8; 4]| Term {
+        force,
+        powers: [a, b, c, d, 0],
+    };
     ShipSpec {
         units: Units::Dimensional,
         yaw_inertia: YawInertia::AboutG,
@@ -25,6 +28,7 @@ fn ship_spec() -> ShipSpec {
             term(Force::N, [0, 2, 1, 0]),
             term(Force::N, [0, 0, 0, 1]),
         ],
+        propulsion: false,
     }
 }
 

@@ -9,7 +9,7 @@
 //! | first overshoot, 10°/10° | 10°/10° zig-zag | 10° if L/V < 10 s; 20° if L/V ≥ 30 s; (5 + ½ L/V)° between |
 //! | second overshoot, 10°/10° | 10°/10° zig-zag | 25° if L/V < 10 s; 40° if L/V ≥ 30 s; (17.5 + 0.75 L/V)° between |
 //! | first overshoot, 20°/20° | 20°/20° zig-zag | ≤ 25° |
-//! | track reach | full astern stop from the test speed | ≤ 15 L (not judged: no scene has a propulsion model yet) |
+//! | track reach | crash stop: full astern from the test speed | ≤ 15 L |
 //!
 //! V is the test speed, the scene's design speed U₀. A manoeuvre run to both sides (the
 //! default for a turning circle and a zig-zag: the resolution asks for the turning circle "to
@@ -18,7 +18,8 @@
 //! without its figure and no failing one leaves the criterion not judged. A criterion whose manoeuvre the scene
 //! does not run is left out, not passed; one whose manoeuvre ran but whose figure it did not
 //! give (the ship went astern before its heading passed 90°, say: see the manoeuvre's notes)
-//! is listed as not judged, with no verdict.
+//! is listed as not judged, with no verdict. The track reach is listed as not judged, with why,
+//! where the scene has no propulsion model to go astern with, or runs no crash stop.
 
 use super::manoeuvre::{Figures, Manoeuvre, ManoeuvreKind};
 use super::side::Side;
@@ -106,8 +107,9 @@ fn judged_value(values: &[(Option<Side>, Option<f64>)], limit: f64) -> (Option<f
     }
 }
 
-/// The criteria the runs allow judging, for a ship of length `length` (m) at `speed` (m/s).
-pub fn criteria(length: f64, speed: f64, runs: &[Trial]) -> Vec<Criterion> {
+/// The criteria the runs allow judging, for a ship of length `length` (m) at `speed` (m/s),
+/// with a propulsion model or without (`propulsion`).
+pub fn criteria(length: f64, speed: f64, runs: &[Trial], propulsion: bool) -> Vec<Criterion> {
     let l_over_v = length / speed;
     let mut judged = Vec::new();
     let mut judge = |name, run: &Trial, key: &str, limit: f64, unit| {
@@ -185,22 +187,35 @@ pub fn criteria(length: f64, speed: f64, runs: &[Trial]) -> Vec<Criterion> {
     }
     // The stopping ability: the track reach of a full astern stop from the test speed. A ship
     // table without a propulsion model cannot go astern, so the criterion is listed as not
-    // judged rather than left out.
-    judged.push(Criterion {
-        name: "track_reach",
-        manoeuvre: "crash_stop".to_owned(),
-        value: None,
-        limit: 15.0 * length,
-        unit: "m",
-        sides: Vec::new(),
-        side: None,
-        not_judged_because: Some(NO_PROPULSION),
-    });
+    // judged rather than left out; so is it for a scene that runs no crash stop.
+    let crash_stop = runs
+        .iter()
+        .find(|run| matches!(run.0.kind, ManoeuvreKind::CrashStop { .. }));
+    match crash_stop {
+        Some(run) if propulsion => judge("track_reach", run, "track_reach_m", 15.0 * length, "m"),
+        _ => judged.push(Criterion {
+            name: "track_reach",
+            manoeuvre: "crash_stop".to_owned(),
+            value: None,
+            limit: 15.0 * length,
+            unit: "m",
+            sides: Vec::new(),
+            side: None,
+            not_judged_because: Some(if propulsion {
+                NO_CRASH_STOP
+            } else {
+                NO_PROPULSION
+            }),
+        }),
+    }
     judged
 }
 
-/// Why the stopping criterion is not judged.
+/// Why the stopping criterion is not judged, without a propulsion model.
 pub const NO_PROPULSION: &str = "the scene gives no propulsion model, so no crash stop can be run";
+
+/// Why the stopping criterion is not judged, with one.
+pub const NO_CRASH_STOP: &str = "the scene runs no crash_stop manoeuvre";
 
 #[cfg(test)]
 mod tests {

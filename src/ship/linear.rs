@@ -97,11 +97,20 @@ fn derivatives(table: &ShipTable, terms: &BTreeMap<Term, f64>, force: Force) -> 
     let moment = i32::from(force == Force::N);
     let mut out = [0.0; 3];
     for (term, value) in terms.iter().filter(|(t, _)| t.force == force) {
-        let [a, b, c, d] = term.powers;
-        let slot = match (b, c, d) {
-            (1, 0, 0) => 0,
-            (0, 1, 0) => 1,
-            (0, 0, 1) => 2,
+        let [a, b, c, d, e] = term.powers;
+        if let (Some(p), [0, 0, 0, 0, 1]) = (&table.propulsion, term.powers) {
+            // ½ρL²c² Y′_e e with e = δ − (v + x_R r)/c, about c = c₀: (c₀², −c₀, −c₀ x_R).
+            let (inflow, scale) = (p.approach_inflow, table.si_scale(2 + moment));
+            let position = p.rudder_position * table.si_scale(1);
+            out[0] -= value * scale * inflow;
+            out[1] -= value * scale * inflow * position;
+            out[2] += value * scale * inflow * inflow;
+            continue;
+        }
+        let slot = match (b, c, d, e) {
+            (1, 0, 0, 0) => 0,
+            (0, 1, 0, 0) => 1,
+            (0, 0, 1, 0) => 2,
             _ => continue,
         };
         let u0 = table.design_speed;
@@ -110,6 +119,12 @@ fn derivatives(table: &ShipTable, terms: &BTreeMap<Term, f64>, force: Force) -> 
                 Units::Dimensional => u0.powi(i32::from(a)),
                 // u′ = 0 on the design speed; the term is ½ρL^(2+c)U^(2−b−c) v^b r^c δ^d.
                 Units::Prime if a > 0 => 0.0,
+                // With propulsion the rudder is on its inflow speed, c₀ at the approach, where
+                // the change of its share of Y_v and Y_r with c vanishes.
+                Units::Prime if d > 0 && table.propulsion.is_some() => {
+                    let inflow = table.propulsion.map_or(f64::NAN, |p| p.approach_inflow);
+                    table.si_scale(2 + moment) * inflow * inflow
+                }
                 Units::Prime => {
                     let c = i32::from(c);
                     table.si_scale(2 + c + moment) * u0.powi(2 - i32::from(b) - c)
@@ -219,7 +234,7 @@ impl LinearModel {
 pub fn linearise(model: &ShipModel, speed: f64) -> ([[f64; 2]; 2], [f64; 2]) {
     let mut state = [0.0; 7];
     state[0] = speed;
-    let jacobian = model.state_jacobian(&state, &[0.0]);
+    let jacobian = model.state_jacobian(&state, &[0.0, model.approach_rate()]);
     let row = |i: usize| [jacobian[i][1], jacobian[i][2]];
     ([row(1), row(2)], [jacobian[1][6], jacobian[2][6]])
 }
@@ -243,7 +258,7 @@ impl ShipPlant<'_> {
 
 impl LinearPlant for ShipPlant<'_> {
     fn name(&self) -> &'static str {
-        <ShipModel as Model<f64, 7, 1>>::NAME
+        <ShipModel as Model<f64, 7, 2>>::NAME
     }
 
     /// The ship's modes are named as a planar body's at midship (surge; sway and yaw).
@@ -269,8 +284,9 @@ impl LinearPlant for ShipPlant<'_> {
 
     fn evaluate(&self, state: &[f64], extra: &[f64]) -> Result<Evaluation, LinearError> {
         let full = Self::full(state, extra[0]);
-        let rates = self.model.rhs(&full, &[0.0]);
-        let jacobian = self.model.state_jacobian(&full, &[0.0]);
+        let input = [0.0, self.model.approach_rate()];
+        let rates = self.model.rhs(&full, &input);
+        let jacobian = self.model.state_jacobian(&full, &input);
         let a = DMatrix::from_fn(6, 6, |i, j| jacobian[i][j]);
         let b = DMatrix::from_fn(6, 1, |i, _| jacobian[i][6]);
         let rates = rates[..6].to_vec();
@@ -281,7 +297,7 @@ impl LinearPlant for ShipPlant<'_> {
     }
 
     fn pattern(&self) -> Vec<(usize, usize)> {
-        let pattern = <ShipModel as Model<f64, 7, 1>>::STATE_JACOBIAN;
+        let pattern = <ShipModel as Model<f64, 7, 2>>::STATE_JACOBIAN;
         (pattern.iter().copied())
             .filter(|&(i, j)| i < 6 && j < 6)
             .collect()

@@ -15,10 +15,17 @@
 //!
 //! The trajectory's rows are at t = k·every, as every scene's are, at each event, and at each
 //! instant the schedule changes the command.
+//!
+//! A ship with a propulsion model turns its propeller at the approach's rate n₀ through every
+//! manoeuvre but the crash stop, whose engine command goes from n₀ to full astern at the
+//! engine's rate limit from the execute ([`RateCommand`]: the instants where n passes zero and
+//! reaches full astern are the schedule's), the rudder amidships, until the event where the
+//! ship stops (u = 0).
 
 use super::ShipError;
 use super::course::Course;
 use super::model::ShipModel;
+use super::propulsion::RateCommand;
 use super::rudder::{Rudder, Series};
 use super::side::Side;
 use super::spiral::{Progress, ReverseSpiral, Spiral, SpiralCurve};
@@ -60,6 +67,14 @@ pub enum ManoeuvreKind {
     Spiral(Spiral),
     /// Bech's reverse spiral: each yaw rate held by a controller on the rudder.
     ReverseSpiral(ReverseSpiral),
+    /// The crash stop: from the approach at n₀, the propeller commanded to `astern` (rev/s,
+    /// negative) at the execute, reached at the engine's rate limit, the rudder amidships;
+    /// the run ends where the ship stops (u = 0): track reach, head reach, lateral deviation
+    /// and the time to stop.
+    CrashStop {
+        /// The full-astern rate, rev/s.
+        astern: f64,
+    },
 }
 
 impl ManoeuvreKind {
@@ -185,12 +200,14 @@ impl Figures {
     }
 }
 
-/// The steering gear under a command, as the ship model's loads: the rudder's rate δ̇ at a
-/// time and state.
+/// The steering gear under a command and the engine under its own, as the ship model's
+/// loads: the rudder's rate δ̇ and the propeller rate n at a time and state.
 #[derive(Debug, Clone, Copy)]
 pub struct Steering<'a> {
     rudder: &'a Rudder,
     command: Command<'a>,
+    /// The propeller-rate command; `None` for a ship without a propulsion model.
+    engine: Option<RateCommand>,
 }
 
 /// The rudder command over one stretch.
@@ -241,19 +258,21 @@ impl Steering<'_> {
     }
 }
 
-impl Loads<f64, 7, 1> for Steering<'_> {
+impl Loads<f64, 7, 2> for Steering<'_> {
     /// δ̇: the lag's rate toward the saturated command, or a series' slope for a rudder
-    /// without a lag (which follows its command).
-    fn at(&self, t: f64, state: &[f64; 7]) -> [f64; 1] {
+    /// without a lag (which follows its command); n: the engine's command at `t` (zero,
+    /// and read by no term, for a ship without a propulsion model).
+    fn at(&self, t: f64, state: &[f64; 7]) -> [f64; 2] {
         let (command, slope) = self.command(t, state[2]);
-        [self.rudder.rate(command, state[6]).unwrap_or(slope)]
+        let rate = self.engine.map_or(0.0, |engine| engine.rate(t));
+        [self.rudder.rate(command, state[6]).unwrap_or(slope), rate]
     }
 }
 
 /// The ship under its steering, with the distance run by midship as an eighth state
 /// (ṡ = U = √(u² + v²)), integrated with the rest for the zig-zag's initial turning distance.
 struct Tracked<'a> {
-    driven: Driven<'a, ShipModel, Steering<'a>, 1>,
+    driven: Driven<'a, ShipModel, Steering<'a>, 2>,
 }
 
 impl OdeSystem<f64, 8> for Tracked<'_> {
@@ -287,6 +306,8 @@ enum Watch {
     /// step across it is only first-order accurate in where the kink falls, so every run ends
     /// a stretch on it, whatever its method.
     RateLimit,
+    /// The ship stops: g = u.
+    Stopped,
 }
 
 impl Watch {
@@ -296,6 +317,7 @@ impl Watch {
             Watch::HeadingChange(angle) => change * change - angle * angle,
             Watch::HeadingOnSide(side) => side * change - heading_a,
             Watch::YawRateZero => y[2],
+            Watch::Stopped => y[0],
             Watch::RateLimit => unreachable!("the steering's watch is evaluated by Steering"),
         }
     }
@@ -341,9 +363,23 @@ pub fn run(
     for (i, value) in start.iter().enumerate() {
         y[i] = *value;
     }
+    let engine = model.propulsion().map(|propulsion| {
+        let from = propulsion.approach_rate;
+        let target = match manoeuvre.kind {
+            ManoeuvreKind::CrashStop { astern } => astern,
+            _ => from,
+        };
+        RateCommand {
+            from,
+            target,
+            execute: manoeuvre.execute,
+            max_rate: propulsion.max_rate,
+        }
+    });
     let mut driver = Driver {
         model,
         rudder,
+        engine,
         manoeuvre,
         command: 0.0,
         watches: Vec::new(),
@@ -388,7 +424,7 @@ pub fn run(
             return Err(ShipError::Stopped { time: t });
         }
         driver.record(t, &y);
-        if driver.spiral_done() {
+        if driver.spiral_done() || driver.stopped() {
             break;
         }
     }
@@ -435,6 +471,8 @@ struct Stretch {
 struct Driver<'a> {
     model: &'a ShipModel,
     rudder: &'a Rudder,
+    /// The propeller-rate command, for a ship with a propulsion model.
+    engine: Option<RateCommand>,
     manoeuvre: &'a Manoeuvre,
     /// The held command (rad), before saturation.
     command: f64,
@@ -463,6 +501,7 @@ impl<'a> Driver<'a> {
         let steering = Steering {
             rudder: self.rudder,
             command,
+            engine: self.engine,
         };
         Tracked {
             driven: self.model.driven_by(steering),
@@ -556,6 +595,9 @@ impl<'a> Driver<'a> {
         match &self.manoeuvre.kind {
             ManoeuvreKind::PullOut { release, .. } => times.push(*release),
             ManoeuvreKind::Series(series) => times.extend_from_slice(series.breakpoints()),
+            ManoeuvreKind::CrashStop { .. } => {
+                times.extend(self.engine.iter().flat_map(RateCommand::breakpoints));
+            }
             _ => {}
         }
         times.retain(|&t| t <= self.manoeuvre.duration);
@@ -625,6 +667,11 @@ impl<'a> Driver<'a> {
         }
     }
 
+    /// Whether the ship has stopped in a crash stop (the event that ends it).
+    fn stopped(&self) -> bool {
+        self.event(Watch::Stopped).is_some()
+    }
+
     /// Whether a spiral has measured every setpoint.
     fn spiral_done(&self) -> bool {
         self.spiral.as_ref().is_some_and(|p| p.setpoint().is_none())
@@ -680,6 +727,10 @@ impl<'a> Driver<'a> {
             ManoeuvreKind::ReverseSpiral(ref reverse) => {
                 self.start_spiral(y, Progress::reverse(reverse));
             }
+            ManoeuvreKind::CrashStop { .. } => {
+                self.set_command(0.0, y);
+                self.watches = vec![Watch::Stopped];
+            }
         }
     }
 
@@ -702,7 +753,7 @@ impl<'a> Driver<'a> {
                     };
                     self.watches = vec![Watch::HeadingOnSide(next_side), Watch::YawRateZero];
                 }
-                Watch::YawRateZero | Watch::RateLimit => {}
+                Watch::YawRateZero | Watch::RateLimit | Watch::Stopped => {}
             }
         }
     }
@@ -729,9 +780,52 @@ impl<'a> Driver<'a> {
                 let points = self.spiral.as_ref().map(|p| p.points.clone());
                 super::spiral::figures(points.unwrap_or_default(), settle, self.spiral_done())
             }
+            // Read where the ship stops, which is what the course's conditions rule out
+            // elsewhere.
+            ManoeuvreKind::CrashStop { .. } => return self.crash_stop_figures(&execute),
         };
         figures.notes.extend(course.notes());
         figures
+    }
+
+    /// The crash stop's figures at the instant the ship stops (u = 0), from the execute:
+    /// the track reach (the distance midship ran), the head reach and the lateral deviation
+    /// (midship's displacement along and across the approach's heading), the time to stop.
+    fn crash_stop_figures(&self, execute: &DriveState) -> Figures {
+        let stop = self.event(Watch::Stopped);
+        let (s, c) = execute[5].sin_cos();
+        let offset = |y: &DriveState| {
+            let (dx, dy) = (y[3] - execute[3], y[4] - execute[4]);
+            (dx * c + dy * s, -dx * s + dy * c)
+        };
+        let mut notes = Vec::new();
+        let mut marks = vec![("execute".to_owned(), [execute[3], execute[4]])];
+        match stop {
+            Some((_, y)) => {
+                let (head, lateral) = offset(&y);
+                let label = format!("stopped: head reach {head:.1} m, lateral {lateral:.1} m");
+                marks.push((label, [y[3], y[4]]));
+            }
+            None => notes.push(format!(
+                "the ship had not stopped by the end of the run (t = {} s): lengthen duration_s",
+                self.manoeuvre.duration
+            )),
+        }
+        Figures {
+            values: vec![
+                ("track_reach_m", stop.map(|(_, y)| y[7] - execute[7])),
+                ("head_reach_m", stop.map(|(_, y)| offset(&y).0)),
+                ("lateral_deviation_m", stop.map(|(_, y)| offset(&y).1.abs())),
+                (
+                    "time_to_stop_s",
+                    stop.map(|(t, _)| t - self.manoeuvre.execute),
+                ),
+            ],
+            side: None,
+            notes,
+            marks,
+            spiral: None,
+        }
     }
 
     fn event(&self, wanted: Watch) -> Option<(f64, DriveState)> {

@@ -10,6 +10,7 @@
 //! | the table as written: names, units, the rigid-body convention, folded tables converted | [`table`] |
 //! | 4.46 with exactly the table's terms, derived, solved and proved by `eom-codegen`, evaluated | [`model`] |
 //! | the rudder: saturation, first-order lag, rate limit; its commands | [`rudder`] |
+//! | the propeller: the thrust law, the rudder's inflow speed, the engine's rate command | [`propulsion`] |
 //! | the manoeuvres as schedules and events over the one driver (any method), their figures | [`manoeuvre`] |
 //! | the two sides of a turn or zig-zag, and which is the worse | [`side`] |
 //! | the spiral tests (direct and reverse), the r–δ curve and its loop | [`spiral`] |
@@ -33,6 +34,7 @@ pub mod imo;
 pub mod linear;
 pub mod manoeuvre;
 pub mod model;
+pub mod propulsion;
 pub mod rudder;
 pub mod scene;
 pub mod side;
@@ -49,6 +51,7 @@ pub use crate::defined::engine::{Force, Term, Units, YawInertia};
 pub use linear::{LinearModel, Nomoto};
 pub use manoeuvre::{Manoeuvre, ManoeuvreKind, ManoeuvreRun};
 pub use model::ShipModel;
+pub use propulsion::Propulsion;
 pub use rudder::{Rudder, Series};
 pub use scene::ShipScene;
 pub use side::Side;

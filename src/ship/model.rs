@@ -8,12 +8,18 @@
 //!
 //! In the prime system the forces scale with the speed U = √(u² + v²), which the program takes
 //! as an input beside δ̇: this model computes U from the state, and its ∂f/∂x adds the chain
-//! rule through U (∂f/∂U · u/U and · v/U) to the program's ∂f/∂u and ∂f/∂v.
+//! rule through U (∂f/∂U · u/U and · v/U) to the program's ∂f/∂u and ∂f/∂v. A ship with a
+//! propulsion model has the propeller rate n as its second input, and the program reads beside
+//! U what this model computes from u and n ([`super::propulsion`]): |n|, the induced velocity
+//! u_A and the rudder's inflow speed c; the Jacobians add the chain rule through them, into
+//! ∂f/∂u and ∂f/∂n. A ship without one reads n nowhere.
 
 use super::ShipError;
+use super::propulsion::Propulsion;
 use super::table::ShipTable;
 use crate::defined::engine::{
-    ADDED_MASS, EmitError, Operations, PRIME_SCALES, ShipSpec, Units, prove_with_jacobians, ship,
+    ADDED_MASS, EmitError, Operations, PRIME_SCALES, PROPULSION, ShipSpec, Units,
+    prove_with_jacobians, ship,
 };
 use crate::defined::{Functions, Interpreter, Plan, coefficient_values};
 use crate::models::Model;
@@ -24,9 +30,28 @@ use std::collections::BTreeMap;
 /// axes), ψ (rad), δ (rad, the rudder angle).
 pub const STATE: [&str; 7] = ["u", "v", "r", "X", "Y", "psi", "delta"];
 
-/// The input: the rudder's rate δ̇ (rad/s), which the steering gear sets
-/// ([`super::rudder`]).
-pub const INPUTS: [&str; 1] = ["delta_rate"];
+/// The inputs: the rudder's rate δ̇ (rad/s), which the steering gear sets
+/// ([`super::rudder`]), and the propeller rate n (rev/s), which the engine's command sets
+/// ([`super::propulsion`]; read only by a ship with a propulsion model).
+pub const INPUTS: [&str; 2] = ["delta_rate", "n"];
+
+/// Where the program's variables sit in the slice `evaluate` gives it: the state, δ̇, U, then
+/// what propulsion reads.
+const VARIABLES: [&str; 13] = [
+    "u",
+    "v",
+    "r",
+    "X",
+    "Y",
+    "psi",
+    "delta",
+    "delta_rate",
+    "U",
+    "n",
+    "n_abs",
+    "u_A",
+    "c",
+];
 
 /// Where the rates can depend on the state, for any table: u̇, v̇, ṙ on u, v, r and δ (the
 /// terms in U of a prime table are in u and v); Ẋ, Ẏ on u, v, ψ (4.44); ψ̇ on r; δ̇ on none.
@@ -41,18 +66,36 @@ const STATE_JACOBIAN: [(usize, usize); 19] = [
     (5, 2),
 ];
 
-/// δ̇ is the rudder's rate itself.
-const INPUT_JACOBIAN: [(usize, usize); 1] = [(6, 0)];
+/// δ̇ is the rudder's rate itself; u̇, v̇, ṙ depend on n through the thrust law and c.
+const INPUT_JACOBIAN: [(usize, usize); 4] = [(0, 1), (1, 1), (2, 1), (6, 0)];
 
 /// A ship's proved program, ready to evaluate.
 #[derive(Debug, Clone)]
 pub struct ShipModel {
     program: Interpreter,
     functions: Functions,
-    /// The column of U among the program's inputs (prime tables), after δ̇'s.
-    speed_input: Option<usize>,
+    /// What each of the program's inputs is, by its column.
+    inputs: Vec<ProgramInput>,
+    propulsion: Option<Propulsion>,
     operations: Operations,
     terms: usize,
+}
+
+/// One input of the proved program, and how the model's Jacobians take it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum ProgramInput {
+    /// δ̇, the model's first input.
+    RudderRate,
+    /// U = √(u² + v²).
+    Speed,
+    /// n, the model's second input.
+    Rate,
+    /// |n|.
+    RateMagnitude,
+    /// u_A(u, n).
+    Induced,
+    /// c(u, n).
+    Inflow,
 }
 
 impl ShipModel {
@@ -62,71 +105,120 @@ impl ShipModel {
             units: table.units,
             yaw_inertia: table.body.yaw_inertia_about,
             terms: table.terms.keys().copied().collect(),
+            propulsion: table.propulsion.is_some(),
         };
         let system = ship("ship", &spec).map_err(|e| ShipError::Build(EmitError::Model(e)))?;
         let program = prove_with_jacobians(&system)?;
         let values = parameter_values(&spec, table);
         let coefficients = coefficient_values(&system, &program, &values);
-        // The variables in `evaluate`'s order: the state, δ̇, U.
-        let position = |name: &str| match name {
-            "delta_rate" => Some(7),
-            "U" => Some(8),
-            _ => STATE.iter().position(|s| *s == name),
-        };
+        let position = |name: &str| VARIABLES.iter().position(|s| *s == name);
         let interpreter = Interpreter::new(&program, &coefficients, position).map_err(|name| {
             ShipError::invalid("hydrodynamics", format!("the program reads `{name}`"))
         })?;
         let functions = Functions::of(&program)
             .map_err(|what| ShipError::invalid("hydrodynamics", format!("no {what}")))?;
+        let inputs = system
+            .inputs
+            .iter()
+            .map(|name| match *name {
+                "delta_rate" => Ok(ProgramInput::RudderRate),
+                "U" => Ok(ProgramInput::Speed),
+                "n" => Ok(ProgramInput::Rate),
+                "n_abs" => Ok(ProgramInput::RateMagnitude),
+                "u_A" => Ok(ProgramInput::Induced),
+                "c" => Ok(ProgramInput::Inflow),
+                other => Err(ShipError::invalid(
+                    "hydrodynamics",
+                    format!("the program has an input `{other}` no ship computes"),
+                )),
+            })
+            .collect::<Result<_, _>>()?;
         Ok(ShipModel {
             functions,
-            speed_input: system.inputs.iter().position(|i| *i == "U"),
+            inputs,
+            propulsion: table.propulsion,
             operations: program.operations(&program.rhs),
             terms: spec.terms.len(),
             program: interpreter,
         })
     }
 
-    /// The outputs of `plan` at `state` with the rudder moving at `delta_rate`.
+    /// The outputs of `plan` at `state` under `input` (δ̇, n).
     fn evaluate<'a, T: SimdRealField + Copy>(
         &self,
         plan: &'a Plan,
         state: &[T; 7],
-        delta_rate: T,
+        input: &[T; 2],
     ) -> impl Iterator<Item = T> + use<'a, T> {
         let speed = (state[0] * state[0] + state[1] * state[1]).simd_sqrt();
-        let mut variables = [T::zero(); 9];
+        let mut variables = [T::zero(); 13];
         variables[..7].copy_from_slice(state);
-        variables[7] = delta_rate;
+        variables[7] = input[0];
         variables[8] = speed;
+        if let Some(propulsion) = &self.propulsion {
+            let inflow = propulsion.inflow(state[0], input[1]);
+            variables[9] = input[1];
+            variables[10] = input[1].simd_abs();
+            variables[11] = inflow.induced;
+            variables[12] = inflow.speed;
+        }
         self.program.evaluate(plan, &variables)
     }
 
-    /// ∂f/∂x and ∂f/∂δ̇ of the model, dense: the proved Jacobian programs scattered by their
-    /// patterns, and in the prime system the chain rule through U added.
+    /// ∂f/∂x and ∂f/∂(δ̇, n) of the model, dense: the proved Jacobian programs scattered by
+    /// their patterns, with the chain rule through what the model computes (U, |n|, u_A, c).
     fn jacobians<T: SimdRealField + Copy>(
         &self,
         state: &[T; 7],
-        delta_rate: T,
-    ) -> ([[T; 7]; 7], [[T; 1]; 7]) {
+        input: &[T; 2],
+    ) -> ([[T; 7]; 7], [[T; 2]; 7]) {
         let mut by_state = [[T::zero(); 7]; 7];
-        let entries = self.evaluate(&self.functions.state_jacobian, state, delta_rate);
+        let entries = self.evaluate(&self.functions.state_jacobian, state, input);
         for (&(row, column), value) in self.functions.state_pattern.iter().zip(entries) {
             by_state[row][column] = value;
         }
-        let mut by_input = [[T::zero(); 1]; 7];
+        let mut by_input = [[T::zero(); 2]; 7];
         let speed = (state[0] * state[0] + state[1] * state[1]).simd_sqrt();
-        let entries = self.evaluate(&self.functions.input_jacobian, state, delta_rate);
+        let inflow = self.propulsion.map(|p| p.inflow(state[0], input[1]));
+        let entries = self.evaluate(&self.functions.input_jacobian, state, input);
         for (&(row, column), value) in self.functions.input_pattern.iter().zip(entries) {
-            if Some(column) == self.speed_input {
-                // ∂U/∂u = u/U, ∂U/∂v = v/U.
-                by_state[row][0] += value * (state[0] / speed);
-                by_state[row][1] += value * (state[1] / speed);
-            } else {
-                by_input[row][column] = value;
+            // (∂/∂u, ∂/∂n) of the input, where it is one the model computes.
+            let through = |by: [T; 2], by_state: &mut [[T; 7]; 7], by_input: &mut [[T; 2]; 7]| {
+                by_state[row][0] += value * by[0];
+                by_input[row][1] += value * by[1];
+            };
+            match (self.inputs[column], inflow) {
+                (ProgramInput::RudderRate, _) => by_input[row][0] = value,
+                (ProgramInput::Speed, _) => {
+                    // ∂U/∂u = u/U, ∂U/∂v = v/U.
+                    by_state[row][0] += value * (state[0] / speed);
+                    by_state[row][1] += value * (state[1] / speed);
+                }
+                (ProgramInput::Rate, _) => by_input[row][1] += value,
+                (ProgramInput::RateMagnitude, _) => {
+                    by_input[row][1] += value * input[1].simd_signum();
+                }
+                (ProgramInput::Induced, Some(inflow)) => {
+                    through(inflow.induced_by, &mut by_state, &mut by_input);
+                }
+                (ProgramInput::Inflow, Some(inflow)) => {
+                    through(inflow.speed_by, &mut by_state, &mut by_input);
+                }
+                (ProgramInput::Induced | ProgramInput::Inflow, None) => {}
             }
         }
         (by_state, by_input)
+    }
+
+    /// The propulsion model, for a ship that has one.
+    pub fn propulsion(&self) -> Option<&Propulsion> {
+        self.propulsion.as_ref()
+    }
+
+    /// The propeller rate at the approach, n₀ (rev/s): the model's second input on the
+    /// straight course at U₀; zero for a ship without a propulsion model.
+    pub fn approach_rate(&self) -> f64 {
+        self.propulsion.map_or(0.0, |p| p.approach_rate)
     }
 
     /// What one call costs, as the emitter counts it.
@@ -160,24 +252,40 @@ fn parameter_values(spec: &ShipSpec, table: &ShipTable) -> BTreeMap<String, f64>
             values.insert(symbol.to_owned(), value);
         }
     }
+    if let Some(p) = &table.propulsion {
+        let length = table.length.unwrap_or(f64::NAN);
+        let [t_uu, t_un, t_nn] = p.thrust;
+        let given = [
+            p.rudder_position,
+            p.approach_inflow,
+            t_uu,
+            t_un,
+            t_nn,
+            p.resistance_prime(length),
+        ];
+        for (symbol, value) in PROPULSION.into_iter().zip(given) {
+            values.insert(symbol.to_owned(), value);
+        }
+    }
     for (term, value) in &table.terms {
         values.insert(term.symbol(), *value);
     }
     values
 }
 
-/// The ship as a model like the catalog's: its state and input, the proved program as `rhs`,
+/// The ship as a model like the catalog's: its state and inputs, the proved program as `rhs`,
 /// its proved Jacobians, and the rigid body's kinetic energy.
-impl<T: SimdRealField + Copy> Model<T, 7, 1> for ShipModel {
+impl<T: SimdRealField + Copy> Model<T, 7, 2> for ShipModel {
     const NAME: &'static str = "ship";
     const STATE: [&'static str; 7] = STATE;
-    const INPUTS: [&'static str; 1] = INPUTS;
+    const INPUTS: [&'static str; 2] = INPUTS;
     const STATE_JACOBIAN: &'static [(usize, usize)] = &STATE_JACOBIAN;
     const INPUT_JACOBIAN: &'static [(usize, usize)] = &INPUT_JACOBIAN;
 
-    /// The rates of the state with the rudder moving at `input[0]`: the proved program.
-    fn rhs(&self, state: &[T; 7], input: &[T; 1]) -> [T; 7] {
-        let mut rates = self.evaluate(&self.functions.rhs, state, input[0]);
+    /// The rates of the state with the rudder moving at `input[0]` and the propeller turning
+    /// at `input[1]`: the proved program.
+    fn rhs(&self, state: &[T; 7], input: &[T; 2]) -> [T; 7] {
+        let mut rates = self.evaluate(&self.functions.rhs, state, input);
         std::array::from_fn(|_| rates.next().unwrap_or_else(T::zero))
     }
 
@@ -186,18 +294,18 @@ impl<T: SimdRealField + Copy> Model<T, 7, 1> for ShipModel {
     /// fluid's share (the added mass) is not in it.
     fn kinetic_energy(&self, state: &[T; 7]) -> T {
         (self
-            .evaluate(&self.functions.kinetic_energy, state, T::zero())
+            .evaluate(&self.functions.kinetic_energy, state, &[T::zero(); 2])
             .next())
         .unwrap_or_else(T::zero)
     }
 
-    /// ∂f/∂x: the proved Jacobian program (see the module docs for U).
-    fn state_jacobian(&self, state: &[T; 7], input: &[T; 1]) -> [[T; 7]; 7] {
-        self.jacobians(state, input[0]).0
+    /// ∂f/∂x: the proved Jacobian program (see the module docs for U, u_A and c).
+    fn state_jacobian(&self, state: &[T; 7], input: &[T; 2]) -> [[T; 7]; 7] {
+        self.jacobians(state, input).0
     }
 
-    /// ∂f/∂δ̇: the proved Jacobian program.
-    fn input_jacobian(&self, state: &[T; 7], input: &[T; 1]) -> [[T; 1]; 7] {
-        self.jacobians(state, input[0]).1
+    /// ∂f/∂(δ̇, n): the proved Jacobian program.
+    fn input_jacobian(&self, state: &[T; 7], input: &[T; 2]) -> [[T; 2]; 7] {
+        self.jacobians(state, input).1
     }
 }

@@ -24,6 +24,18 @@
 //! Yv = -0.0116
 //! # …
 //!
+//! [propulsion]                 # optional, prime tables: the propeller and the thrust law
+//! diameter = 9.1               # d, m
+//! rudder_area = 119.817        # A_R, m²
+//! wake_fraction = 0.2          # w
+//! thrust_coefficient = 0.59    # K_T of the induced velocity
+//! slipstream_factor = 0.95     # k
+//! rudder_position_prime = -0.5 # x_R/L
+//! thrust = [-0.962e-5, -0.446e-5, 0.0309e-5] # T′_uu, T′_un, T′_nn
+//! resistance = 0.00226         # C_R on the wetted surface
+//! wetted_surface = 26319.8     # S, m²
+//! max_rate_rps_s = 0.0167      # the engine's rate limit
+//!
 //! [rudder]                     # every key optional
 //! max_deg = 40.0               # δ_max
 //! max_rate_deg_s = 5.0         # δ̇_max (needs the lag)
@@ -44,10 +56,14 @@
 //! # times_s = [0, 10, 20]      # rudder_series: the command's times and angles
 //! # series_deg = [0, 10, -10]
 //! # side = "both"              # turning_circle, zigzag: both (default), port or starboard
+//! # astern_rps = -0.64         # crash_stop: the full-astern propeller rate
 //!
 //! [[manoeuvre]]
 //! kind = "spiral"              # Dieudonné's direct spiral; "reverse_spiral": Bech's
 //! rudders_deg = [10, 5, 0, -5, -10] # the first pass; the run comes back through them
+//! # from_deg = 10.0            # or the first pass as from_deg, to_deg every step_deg
+//! # to_deg = -10.0
+//! # step_deg = 5.0
 //! # yaw_rates_deg_s = [0.2, 0, -0.2] # reverse_spiral: the commanded yaw rates
 //! # settle_window_s = 100.0    # r settled: within settle_tolerance_deg_s over the window
 //! # settle_tolerance_deg_s = 0.001
@@ -62,6 +78,7 @@
 use super::ShipError;
 use super::linear::LinearModel;
 use super::manoeuvre::{Manoeuvre, ManoeuvreKind};
+use super::propulsion::Propulsion;
 use super::rudder::{Rudder, Series};
 use super::side::Side;
 use super::spiral::{ReverseSpiral, Settle, Spiral};
@@ -89,6 +106,8 @@ pub struct ShipSceneFile {
     /// The steering gear.
     #[serde(default)]
     pub rudder: RudderTable,
+    /// The propeller, its thrust law and the rudder in its slipstream (prime tables).
+    pub propulsion: Option<PropulsionTable>,
     /// The step.
     pub integrator: IntegratorTable,
     /// The manoeuvres, each run from the same approach.
@@ -163,6 +182,34 @@ pub struct RudderTable {
     pub time_constant_s: Option<f64>,
 }
 
+/// `[propulsion]`: the propeller, its thrust law, and the rudder in its slipstream
+/// ([`super::propulsion`]); every key required where the table is given (the checker names the
+/// one missing).
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PropulsionTable {
+    /// d, m.
+    pub diameter: Option<f64>,
+    /// A_R, m².
+    pub rudder_area: Option<f64>,
+    /// w.
+    pub wake_fraction: Option<f64>,
+    /// K_T of the induced velocity.
+    pub thrust_coefficient: Option<f64>,
+    /// k.
+    pub slipstream_factor: Option<f64>,
+    /// x_R/L, the rudder ahead of midship (negative aft).
+    pub rudder_position_prime: Option<f64>,
+    /// [T′_uu, T′_un, T′_nn].
+    pub thrust: Option<[f64; 3]>,
+    /// C_R on the wetted surface.
+    pub resistance: Option<f64>,
+    /// S, m².
+    pub wetted_surface: Option<f64>,
+    /// The engine's rate limit, rev/s².
+    pub max_rate_rps_s: Option<f64>,
+}
+
 /// `[integrator]`: the keys of every scene's but the end time (each manoeuvre gives its
 /// duration) and the stop condition (a manoeuvre's events end its stretches).
 #[derive(Debug, Clone, Deserialize)]
@@ -214,6 +261,13 @@ pub struct ManoeuvreTable {
     pub side: Option<String>,
     /// A direct spiral's rudder angles, degrees, strictly monotonic.
     pub rudders_deg: Option<Vec<f64>>,
+    /// A direct spiral's first angle, degrees (with `to_deg` and `step_deg`, in place of
+    /// `rudders_deg`).
+    pub from_deg: Option<f64>,
+    /// A direct spiral's last angle of the first pass, degrees.
+    pub to_deg: Option<f64>,
+    /// A direct spiral's spacing of the angles from `from_deg` to `to_deg`, degrees.
+    pub step_deg: Option<f64>,
     /// A reverse spiral's commanded yaw rates, degrees per second.
     pub yaw_rates_deg_s: Option<Vec<f64>>,
     /// A spiral's settling window, s.
@@ -227,6 +281,8 @@ pub struct ManoeuvreTable {
     /// The reverse spiral's settling tolerance on the mean rudder from window to window,
     /// degrees.
     pub settle_rudder_deg: Option<f64>,
+    /// A crash stop's full-astern propeller rate, rev/s (negative).
+    pub astern_rps: Option<f64>,
 }
 
 /// A spiral's settling window by default, s.
@@ -241,7 +297,7 @@ pub const SETTLE_RUDDER_DEG: f64 = 0.01;
 pub const CONTROLLER_TIME_S: f64 = 20.0;
 
 /// The keys of `[[manoeuvre]]` that only some kinds read, with whether the table gives each.
-fn kind_keys(table: &ManoeuvreTable) -> [(&'static str, bool); 14] {
+fn kind_keys(table: &ManoeuvreTable) -> [(&'static str, bool); 18] {
     [
         ("rudder_deg", table.rudder_deg.is_some()),
         ("heading_deg", table.heading_deg.is_some()),
@@ -250,6 +306,9 @@ fn kind_keys(table: &ManoeuvreTable) -> [(&'static str, bool); 14] {
         ("series_deg", table.series_deg.is_some()),
         ("side", table.side.is_some()),
         ("rudders_deg", table.rudders_deg.is_some()),
+        ("from_deg", table.from_deg.is_some()),
+        ("to_deg", table.to_deg.is_some()),
+        ("step_deg", table.step_deg.is_some()),
         ("yaw_rates_deg_s", table.yaw_rates_deg_s.is_some()),
         ("settle_window_s", table.settle_window_s.is_some()),
         (
@@ -259,6 +318,7 @@ fn kind_keys(table: &ManoeuvreTable) -> [(&'static str, bool); 14] {
         ("max_hold_s", table.max_hold_s.is_some()),
         ("controller_time_s", table.controller_time_s.is_some()),
         ("settle_rudder_deg", table.settle_rudder_deg.is_some()),
+        ("astern_rps", table.astern_rps.is_some()),
         ("duration_s", table.duration_s.is_some()),
     ]
 }
@@ -271,7 +331,16 @@ fn keys_of(kind: &str) -> &'static [&'static str] {
         "zigzag" => &["rudder_deg", "heading_deg", "side", "duration_s"],
         "pull_out" => &["rudder_deg", "release_s", "duration_s"],
         "rudder_series" => &["times_s", "series_deg", "duration_s"],
-        "spiral" => &["rudders_deg", SETTLE[0], SETTLE[1], SETTLE[2], "duration_s"],
+        "spiral" => &[
+            "rudders_deg",
+            "from_deg",
+            "to_deg",
+            "step_deg",
+            SETTLE[0],
+            SETTLE[1],
+            SETTLE[2],
+            "duration_s",
+        ],
         "reverse_spiral" => &[
             "yaw_rates_deg_s",
             SETTLE[0],
@@ -281,6 +350,7 @@ fn keys_of(kind: &str) -> &'static [&'static str] {
             "settle_rudder_deg",
             "duration_s",
         ],
+        "crash_stop" => &["astern_rps", "duration_s"],
         _ => &[],
     }
 }
@@ -434,12 +504,67 @@ impl Checker<'_> {
             design_speed,
             rigid_body_terms,
             coefficients: hydro.coefficients.clone(),
+            propulsion: file
+                .propulsion
+                .as_ref()
+                .map(|p| self.propulsion(p))
+                .transpose()?,
         };
         let table = ShipTable::new(&given).map_err(|e| match e {
             ShipError::Invalid { key, reason } => self.invalid(&key, reason),
             other => self.invalid("hydrodynamics", other.to_string()),
         })?;
         Ok((table, length))
+    }
+
+    /// `[propulsion]`, each number checked; the rate at the approach is solved by the table.
+    fn propulsion(&self, table: &PropulsionTable) -> Result<Propulsion, SceneError> {
+        let key = |k: &str| format!("propulsion.{k}");
+        let given = |k: &str, v: Option<f64>| {
+            v.ok_or_else(|| self.error(&key(k), Problem::Missing(key(k))))
+        };
+        let positive = |k: &str, v: Option<f64>| self.positive(&key(k), given(k, v)?);
+        let fraction = |k: &str, v: Option<f64>| {
+            let v = self.finite(&key(k), given(k, v)?)?;
+            if (0.0..1.0).contains(&v) {
+                Ok(v)
+            } else {
+                Err(self.invalid(&key(k), "a fraction in [0, 1)"))
+            }
+        };
+        let thrust = table
+            .thrust
+            .ok_or_else(|| self.error(&key("thrust"), Problem::Missing(key("thrust"))))?;
+        for (i, value) in thrust.iter().enumerate() {
+            self.finite(&format!("propulsion.thrust[{i}]"), *value)?;
+        }
+        let diameter = positive("diameter", table.diameter)?;
+        let rudder_area = positive("rudder_area", table.rudder_area)?;
+        let disk = std::f64::consts::PI * diameter * diameter / 4.0;
+        if disk > rudder_area {
+            return Err(self.invalid(
+                &key("rudder_area"),
+                format!(
+                    "the rudder's area must hold the propeller's disk (π d²/4 = {disk} m²): c \
+                     weighs the slipstream by the share of the rudder in it"
+                ),
+            ));
+        }
+        let position = given("rudder_position_prime", table.rudder_position_prime)?;
+        Ok(Propulsion {
+            diameter,
+            rudder_area,
+            wake_fraction: fraction("wake_fraction", table.wake_fraction)?,
+            thrust_coefficient: positive("thrust_coefficient", table.thrust_coefficient)?,
+            slipstream_factor: positive("slipstream_factor", table.slipstream_factor)?,
+            rudder_position: self.finite(&key("rudder_position_prime"), position)?,
+            thrust,
+            resistance: positive("resistance", table.resistance)?,
+            wetted_surface: positive("wetted_surface", table.wetted_surface)?,
+            max_rate: positive("max_rate_rps_s", table.max_rate_rps_s)?,
+            approach_rate: f64::NAN,
+            approach_inflow: f64::NAN,
+        })
     }
 
     fn rudder(&self, rudder: &RudderTable) -> Result<Rudder, SceneError> {
@@ -524,13 +649,14 @@ impl Checker<'_> {
         &self,
         index: usize,
         table: &ManoeuvreTable,
-        linear: &LinearModel,
+        (linear, propulsion): (&LinearModel, Option<&Propulsion>),
     ) -> Result<Manoeuvre, SceneError> {
         let key = |k: &str| format!("manoeuvre[{index}].{k}");
         let required = |k: &str, v: Option<f64>| {
             v.ok_or_else(|| self.error(&key(k), Problem::Missing(key(k))))
         };
-        let kinds = "turning_circle, zigzag, pull_out, rudder_series, spiral or reverse_spiral";
+        let kinds = "turning_circle, zigzag, pull_out, rudder_series, spiral, reverse_spiral or \
+                     crash_stop";
         if keys_of(&table.kind).is_empty() {
             return Err(self.invalid(&key("kind"), format!("`{}`: expected {kinds}", table.kind)));
         }
@@ -627,6 +753,25 @@ impl Checker<'_> {
                 })?;
                 (ManoeuvreKind::Series(series), "rudder_series".to_owned())
             }
+            "crash_stop" => {
+                if propulsion.is_none() {
+                    return Err(self.invalid(
+                        &key("kind"),
+                        "a crash stop needs a propulsion model to go astern: give [propulsion]",
+                    ));
+                }
+                let astern = self.finite(
+                    &key("astern_rps"),
+                    required("astern_rps", table.astern_rps)?,
+                )?;
+                if astern >= 0.0 {
+                    return Err(self.invalid(
+                        &key("astern_rps"),
+                        "full astern is a negative propeller rate",
+                    ));
+                }
+                (ManoeuvreKind::CrashStop { astern }, "crash_stop".to_owned())
+            }
             kind => match spiral {
                 Some((kind, _)) => {
                     let name = match kind {
@@ -667,6 +812,78 @@ impl Checker<'_> {
         })
     }
 
+    /// A direct spiral's first pass, degrees: `rudders_deg` as given, or the angles from
+    /// `from_deg` to `to_deg` every `step_deg` (exactly one of the two forms); `None` where
+    /// neither is given.
+    fn spiral_angles(
+        &self,
+        index: usize,
+        table: &ManoeuvreTable,
+    ) -> Result<Option<Vec<f64>>, SceneError> {
+        let key = |k: &str| format!("manoeuvre[{index}].{k}");
+        let range = [
+            ("from_deg", table.from_deg),
+            ("to_deg", table.to_deg),
+            ("step_deg", table.step_deg),
+        ];
+        let given: Vec<&str> = range
+            .iter()
+            .filter(|(_, v)| v.is_some())
+            .map(|(k, _)| *k)
+            .collect();
+        let both = "give the angles either as rudders_deg or as from_deg, to_deg and step_deg";
+        match (&table.rudders_deg, given.len()) {
+            (Some(_), 0) => return Ok(table.rudders_deg.clone()),
+            (Some(_), _) => {
+                return Err(self.invalid(&key(given[0]), format!("{both}, not both")));
+            }
+            (None, 0) => {
+                return Err(self.error(
+                    &key("rudders_deg"),
+                    Problem::Missing(format!(
+                        "{} (or {}, {} and {}): the spiral's setpoints",
+                        key("rudders_deg"),
+                        key("from_deg"),
+                        key("to_deg"),
+                        key("step_deg")
+                    )),
+                ));
+            }
+            (None, 3) => {}
+            (None, _) => {
+                let missing = range
+                    .iter()
+                    .find(|(_, v)| v.is_none())
+                    .map_or("", |(k, _)| *k);
+                return Err(self.error(
+                    &key(missing),
+                    Problem::Missing(format!("{}: {both}", key(missing))),
+                ));
+            }
+        }
+        let from = self.finite(&key("from_deg"), table.from_deg.unwrap_or(f64::NAN))?;
+        let to = self.finite(&key("to_deg"), table.to_deg.unwrap_or(f64::NAN))?;
+        let step = self.positive(&key("step_deg"), table.step_deg.unwrap_or(f64::NAN))?;
+        let steps = (to - from).abs() / step;
+        let whole = steps.round();
+        if from == to || (steps - whole).abs() > 1e-9 * steps.max(1.0) || whole > 1000.0 {
+            return Err(self.invalid(
+                &key("step_deg"),
+                format!(
+                    "the angles from {from}° to {to}° must be a whole number of steps of \
+                     {step}° (at least one, at most 1000)"
+                ),
+            ));
+        }
+        let sign = (to - from).signum();
+        // Each angle from the first by a whole number of steps (no running sum), the last
+        // the given `to_deg` itself.
+        let count = whole as usize;
+        let mut angles: Vec<f64> = (0..count).map(|k| from + sign * k as f64 * step).collect();
+        angles.push(to);
+        Ok(Some(angles))
+    }
+
     /// A spiral's kind and the longest it may take (s), for the kinds `spiral` and
     /// `reverse_spiral`; `None` for the others.
     fn spiral(
@@ -677,11 +894,11 @@ impl Checker<'_> {
     ) -> Result<Option<(ManoeuvreKind, f64)>, SceneError> {
         let key = |k: &str| format!("manoeuvre[{index}].{k}");
         let (list_key, list) = match table.kind.as_str() {
-            "spiral" => ("rudders_deg", &table.rudders_deg),
-            "reverse_spiral" => ("yaw_rates_deg_s", &table.yaw_rates_deg_s),
+            "spiral" => ("rudders_deg", self.spiral_angles(index, table)?),
+            "reverse_spiral" => ("yaw_rates_deg_s", table.yaw_rates_deg_s.clone()),
             _ => return Ok(None),
         };
-        let list = list.as_ref().ok_or_else(|| {
+        let list = list.ok_or_else(|| {
             self.error(
                 &key(list_key),
                 Problem::Missing(format!("{}: the spiral's setpoints", key(list_key))),
@@ -792,6 +1009,7 @@ impl ShipScene {
         let (table, length) = check.table(file)?;
         let rudder = check.rudder(&file.rudder)?;
         let linear = LinearModel::closed_form(&table);
+        let table_propulsion = table.propulsion.as_ref();
         if file.manoeuvre.is_empty() {
             return Err(check.error(
                 "manoeuvre",
@@ -800,7 +1018,7 @@ impl ShipScene {
         }
         let mut manoeuvres: Vec<Manoeuvre> = Vec::new();
         for (index, table) in file.manoeuvre.iter().enumerate() {
-            let manoeuvre = check.manoeuvre(index, table, &linear)?;
+            let manoeuvre = check.manoeuvre(index, table, (&linear, table_propulsion))?;
             if manoeuvres.iter().any(|m| m.name == manoeuvre.name) {
                 return Err(check.invalid(
                     &format!("manoeuvre[{index}].name"),

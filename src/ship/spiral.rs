@@ -145,8 +145,9 @@ impl SpiralCurve {
     /// lowest of them to halfway to the next above the highest (so its width is known to the
     /// spacing of the angles); its height is the difference of the passes' r at δ = 0, or at
     /// the angle of the loop nearest it. Reverse spiral: the curve δ(r) turns back between
-    /// its folds; the width is the δ between them, the height the r between the outer zero
-    /// crossings of δ(r).
+    /// its folds; the width is the δ between them, the height the r between the outer
+    /// crossings of δ(r) with the loop's middle angle, halfway between the folds (δ = 0 for a
+    /// ship without bias; a propeller's bias moves the loop off it).
     pub fn find_loop(&self) -> Option<Loop> {
         if self.points.iter().any(|p| p.branch == Branch::Reverse) {
             reverse_loop(&self.points)
@@ -208,10 +209,12 @@ fn reverse_loop(points: &[SpiralPoint]) -> Option<Loop> {
     }
     let low = folded.iter().copied().fold(f64::INFINITY, f64::min);
     let high = folded.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let middle = 0.5 * (low + high);
     let crossings: Vec<f64> = curve
         .windows(2)
-        .filter(|w| w[0].1 * w[1].1 < 0.0 || w[1].1 == 0.0)
-        .map(|w| w[0].0 - w[0].1 * (w[1].0 - w[0].0) / (w[1].1 - w[0].1))
+        .map(|w| (w[0].0, w[0].1 - middle, w[1].0, w[1].1 - middle))
+        .filter(|(_, d0, _, d1)| d0 * d1 < 0.0 || *d1 == 0.0)
+        .map(|(r0, d0, r1, d1)| r0 - d0 * (r1 - r0) / (d1 - d0))
         .collect();
     let height = (crossings.len() >= 3).then(|| crossings[crossings.len() - 1] - crossings[0]);
     Some(Loop {

@@ -59,6 +59,20 @@ pub struct ModelSummary {
     pub terms: usize,
     /// What one right-hand side costs.
     pub operations: Operations,
+    /// The propeller at the approach, for a ship with a propulsion model.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub propulsion: Option<PropulsionSummary>,
+}
+
+/// What the propulsion model gives at the approach, and the engine's limit.
+#[derive(Debug, Clone, Serialize)]
+pub struct PropulsionSummary {
+    /// n₀, rev/s: thrust and resistance balance at U₀.
+    pub approach_rate_rps: f64,
+    /// c₀, m/s: the rudder's inflow speed at U₀ and n₀.
+    pub approach_inflow_m_s: f64,
+    /// The engine's rate limit, rev/s².
+    pub max_rate_rps_s: f64,
 }
 
 /// The method and its settings.
@@ -276,6 +290,11 @@ pub enum KindSummary {
         /// g, degrees of rudder per degree per second of yaw rate.
         controller_gain_s: f64,
     },
+    /// A crash stop.
+    CrashStop {
+        /// The full-astern propeller rate commanded, rev/s.
+        astern_rps: f64,
+    },
 }
 
 /// One IMO criterion, judged or not.
@@ -329,6 +348,11 @@ impl ModelSummary {
             conversion: table.conversions.clone(),
             terms: model.terms(),
             operations,
+            propulsion: table.propulsion.map(|p| PropulsionSummary {
+                approach_rate_rps: p.approach_rate,
+                approach_inflow_m_s: p.approach_inflow,
+                max_rate_rps_s: p.max_rate,
+            }),
         }
     }
 }
@@ -416,6 +440,7 @@ impl KindSummary {
                 yaw_rates_deg_s: reverse.yaw_rates.iter().map(|r| r.to_degrees()).collect(),
                 controller_gain_s: reverse.gain,
             },
+            ManoeuvreKind::CrashStop { astern } => KindSummary::CrashStop { astern_rps: astern },
         }
     }
 }

@@ -2,7 +2,8 @@
 //! rigid-body convention, and the conversion of a folded table.
 //!
 //! Names are read the way published tables and public codes write them: the load, then one
-//! letter per power of u, v, r and δ (`d`), in any order (`Yvvr`, `Xrv`), a `0` for a bias
+//! letter per power of u, v, r, δ (`d`) and the effective rudder angle e of a ship with a
+//! propulsion model ([`super::propulsion`]), in any order (`Yvvr`, `Xrv`, `Yeee`), a `0` for a bias
 //! term (`Y0`, and `Y0u`, which is the same monomial as `Yu`), `dot` for the added mass
 //! (`Xudot`, `Yvdot`, `Yrdot`, `Nvdot`, `Nrdot`); an underscore after the load is allowed
 //! (`Y_vvr`). Every value is kept exactly as written.
@@ -17,6 +18,7 @@
 //! by m′r′(U − U₀)/U elsewhere: the run uses 4.46's exact M u r.
 
 use super::ShipError;
+use super::propulsion::Propulsion;
 use super::{ADDED_MASS, Force, Term, Units, VARIABLES, YawInertia};
 use crate::validate::Requirement;
 use std::collections::BTreeMap;
@@ -64,6 +66,9 @@ pub struct ShipTable {
     pub given_as: RigidBodyTerms,
     /// What the conversion of a folded table did, one line per coefficient changed.
     pub conversions: Vec<String>,
+    /// The propeller and the rudder in its slipstream, with the rate at the approach solved
+    /// ([`Propulsion::at_approach`]); `None` for a ship without a propulsion model.
+    pub propulsion: Option<Propulsion>,
 }
 
 /// A coefficient name, read.
@@ -100,12 +105,34 @@ pub fn parse_name(name: &str) -> Option<Coefficient> {
     if letters.is_empty() && !bias {
         return None;
     }
-    let mut powers = [0u8; 4];
+    let mut powers = [0u8; 5];
     for letter in letters.chars() {
         let index = VARIABLES.iter().position(|v| *v == letter)?;
         powers[index] = powers[index].checked_add(1)?;
     }
     Some(Coefficient::Term(Term { force, powers }))
+}
+
+/// Refuses a term that has no form in this table: a term in the effective rudder angle e
+/// needs a propulsion model (e is formed on the rudder's inflow speed c), and with one a term
+/// in δ or e has no power of u, v or r (the rudder's terms are on c, the hull's on U).
+fn check_form(term: &Term, name: &str, propulsion: bool) -> Result<(), ShipError> {
+    let [a, b, c, d, e] = term.powers;
+    if e > 0 && !propulsion {
+        return Err(ShipError::invalid(
+            key(name),
+            "a term in the effective rudder angle e needs a [propulsion] table (e is formed on \
+             the rudder's inflow speed c)",
+        ));
+    }
+    if propulsion && (d > 0 || e > 0) && a + b + c > 0 {
+        return Err(ShipError::invalid(
+            key(name),
+            "with a propulsion model the rudder's terms are on its inflow speed c: a term in δ \
+             or e cannot also be in u, v or r",
+        ));
+    }
+    Ok(())
 }
 
 /// The coefficients of a table as the scene gives them, before the convention is applied.
@@ -125,6 +152,8 @@ pub struct GivenTable {
     pub rigid_body_terms: RigidBodyTerms,
     /// Name → value, as written.
     pub coefficients: BTreeMap<String, f64>,
+    /// The propulsion model, as given (the rate at the approach not yet solved).
+    pub propulsion: Option<Propulsion>,
 }
 
 /// The path of a coefficient's key in a scene.
@@ -147,12 +176,14 @@ impl ShipTable {
                     return Err(ShipError::invalid(
                         key(name),
                         "not a coefficient name: X, Y or N, then the variables u, v, r, d \
-                         one letter per power (Yvvr), 0 for a bias term (Y0), or an added \
-                         mass Xudot, Yvdot, Yrdot, Nvdot, Nrdot",
+                         (and e, the effective rudder angle) one letter per power (Yvvr), 0 \
+                         for a bias term (Y0), or an added mass Xudot, Yvdot, Yrdot, Nvdot, \
+                         Nrdot",
                     ));
                 }
                 Some(Coefficient::AddedMass(i)) => added_mass[i] = value,
                 Some(Coefficient::Term(term)) => {
+                    check_form(&term, name, given.propulsion.is_some())?;
                     if let Some(other) = names.insert(term, name) {
                         return Err(ShipError::invalid(
                             key(name),
@@ -173,7 +204,20 @@ impl ShipTable {
             terms,
             given_as: given.rigid_body_terms,
             conversions: Vec::new(),
+            propulsion: None,
         };
+        if let Some(propulsion) = given.propulsion {
+            let length = match (given.units, given.length) {
+                (Units::Prime, Some(length)) => length,
+                _ => {
+                    return Err(ShipError::invalid(
+                        "propulsion",
+                        "a propulsion model is read in the prime system (units = \"prime\")",
+                    ));
+                }
+            };
+            table.propulsion = Some(propulsion.at_approach(given.design_speed, length)?);
+        }
         if given.rigid_body_terms == RigidBodyTerms::Folded {
             table.unfold();
         }
@@ -191,7 +235,10 @@ impl ShipTable {
             Units::Prime => ("m′", "m′x_G′"),
             Units::Dimensional => ("M", "M x_G"),
         };
-        let t = |force, powers| Term { force, powers };
+        let t = |force, [a, b, c, d]: [u8; 4]| Term {
+            force,
+            powers: [a, b, c, d, 0],
+        };
         let rigid_r = match self.units {
             // −m′(1 + u′)r′: a part in r′ and a part in u′r′.
             Units::Prime => -m,
@@ -295,8 +342,11 @@ impl ShipTable {
 mod tests {
     use super::*;
 
-    fn term(force: Force, powers: [u8; 4]) -> Coefficient {
-        Coefficient::Term(Term { force, powers })
+    fn term(force: Force, [a, b, c, d]: [u8; 4]) -> Coefficient {
+        Coefficient::Term(Term {
+            force,
+            powers: [a, b, c, d, 0],
+        })
     }
 
     #[test]

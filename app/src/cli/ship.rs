@@ -236,7 +236,8 @@ fn run_into(scene: &ShipScene, name: &str, out: &Path) -> Result<ShipRun> {
     let trials: Vec<Trial> = (scene.manoeuvres.iter().zip(&outcomes))
         .map(|(m, runs)| (m, runs.iter().map(|(s, o)| (*s, &o.figures)).collect()))
         .collect();
-    let judged = criteria(scene.length, scene.table.design_speed, &trials);
+    let propulsion = scene.table.propulsion.is_some();
+    let judged = criteria(scene.length, scene.table.design_speed, &trials, propulsion);
     let runs = (scene.manoeuvres.iter().zip(&outcomes))
         .filter(|(_, runs)| !runs.is_empty())
         .map(|(manoeuvre, runs)| {

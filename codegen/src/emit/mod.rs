@@ -179,9 +179,10 @@ pub fn prove_with_jacobians(system: &System) -> Result<Program, EmitError> {
 ///     units: Units::Dimensional,
 ///     yaw_inertia: YawInertia::AboutG,
 ///     terms: vec![
-///         Term { force: Force::Y, powers: [0, 1, 0, 0] },
-///         Term { force: Force::N, powers: [0, 0, 1, 0] },
+///         Term { force: Force::Y, powers: [0, 1, 0, 0, 0] },
+///         Term { force: Force::N, powers: [0, 0, 1, 0, 0] },
 ///     ],
+///     propulsion: false,
 /// };
 /// let source = eom_codegen::emit::system_source(&ship("two_term_ship", &spec).unwrap()).unwrap();
 /// assert!(source.contains("pub y_v: f64") && source.contains("pub n_r: f64"));

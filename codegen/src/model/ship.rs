@@ -25,6 +25,22 @@
 //!   (u − U₀)/U, with U = √(u² + v²) the instantaneous speed): a term contributes
 //!   `½ρL²U² · Y'_vvr (v/U)² (rL/U)`. The scaling is part of the derivation, so the proof
 //!   covers it; the one quantity that is not a polynomial, U, is an input the caller computes.
+//!
+//! **Propulsion** (a spec with [`ShipSpec::propulsion`], after Abkowitz's model of the Esso
+//! Osaka, Trans. SNAME 88, 1980): the propeller rate n is an input, and the caller computes
+//! beside U what is not a polynomial in it: |n|, the propeller's induced axial velocity u_A far
+//! behind the disk and the rudder's inflow speed c (both from u and n by momentum theory). Then
+//! - the thrust law and the resistance add to X: ½ρL²(T′_uu u² + T′_un L n u + T′_nn L² n|n|)
+//!   − ½ρL² R′_uu u² (in SI, T_uu u² + T_un n u + T_nn n|n| − R_uu u²);
+//! - the rudder works on c: the effective rudder angle is e = δ − (v + x_R r)/c, the flow's
+//!   angle at the rudder (x_R its position ahead of midship, negative aft) taken off δ; a term
+//!   in e (`X_ee`, `Y_eee`) contributes ½ρL²c² X′_ee e² (× L for a moment), and a term in δ
+//!   alone ½ρL²c² Y′_d δ, with the change of the rudder's share of the linear derivatives
+//!   with c, −½ρL²Y′_d (c − c₀)(v + x_R r), c₀ the inflow speed at the approach, where the
+//!   table's Y′_v and Y′_r were identified;
+//! - a bias term is the propeller's: ½ρL²(u_A/2)² Y′_0 (× L for a moment).
+//!
+//! e is formed here from δ, v, r and c, so the proof covers it too.
 
 use super::families::inverse_names;
 use super::solve::solve_linear;
@@ -61,21 +77,22 @@ impl Force {
     }
 }
 
-/// The variables of the force polynomial, in the order of their powers in [`Term::powers`].
-pub const VARIABLES: [char; 4] = ['u', 'v', 'r', 'd'];
+/// The variables of the force polynomial, in the order of their powers in [`Term::powers`]:
+/// u, v, r, δ, and the effective rudder angle e of a spec with propulsion (module docs).
+pub const VARIABLES: [char; 5] = ['u', 'v', 'r', 'd', 'e'];
 
-/// One term of the hydrodynamic polynomial: `coefficient · u^a v^b r^c δ^d`.
+/// One term of the hydrodynamic polynomial: `coefficient · u^a v^b r^c δ^d e^k`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub struct Term {
     /// The load it adds to.
     pub force: Force,
-    /// The powers of u, v, r and δ; all zero for a constant (bias) term.
-    pub powers: [u8; 4],
+    /// The powers of u, v, r, δ and e; all zero for a constant (bias) term.
+    pub powers: [u8; 5],
 }
 
 impl Term {
     /// The coefficient's symbol: the load then the variables, one letter per power, in the
-    /// order u, v, r, d (`Y_vvr`, `X_uu`, `N_d`), or `_0` for a constant (`Y_0`).
+    /// order u, v, r, d, e (`Y_vvr`, `X_uu`, `N_d`, `Y_eee`), or `_0` for a constant (`Y_0`).
     pub fn symbol(&self) -> String {
         let letters: String = VARIABLES
             .iter()
@@ -91,7 +108,7 @@ impl Term {
     }
 
     /// The monomial it multiplies, with the variables named as given: `v²r`, `1` for a bias.
-    pub fn monomial(&self, names: [&str; 4]) -> String {
+    pub fn monomial(&self, names: [&str; 5]) -> String {
         let superscript = |power: u8| match power {
             1 => String::new(),
             2 => "²".into(),
@@ -153,7 +170,20 @@ pub struct ShipSpec {
     pub yaw_inertia: YawInertia,
     /// The polynomial's terms, each once.
     pub terms: Vec<Term>,
+    /// Whether the ship has a propeller, with its thrust law, and a rudder on its inflow speed
+    /// c (module docs); a spec without one reads no n, c or u_A.
+    pub propulsion: bool,
 }
+
+/// The parameters of propulsion, by their symbols, after the body's, the added mass and the
+/// prime scales: the rudder's position x_R (over L in the prime system), the rudder's inflow
+/// speed c₀ at the approach, the thrust law's T_uu, T_un, T_nn and the resistance R_uu.
+pub const PROPULSION: [&str; 6] = ["x_R", "c0", "T_uu", "T_un", "T_nn", "R_uu"];
+
+/// The inputs of propulsion the caller computes, after δ̇ and U: the propeller rate n (rev/s),
+/// |n|, the induced axial velocity u_A far behind the disk and the rudder's inflow speed c
+/// (m/s).
+pub const PROPULSION_INPUTS: [&str; 4] = ["n", "n_abs", "u_A", "c"];
 
 /// The prime system's scales, by their symbols: ρ, L, and U₀ (the reference of the surge
 /// perturbation), parameters of a prime-system model after the body's and the added mass.
@@ -216,10 +246,38 @@ impl ShipSpec {
                 parameters.push(parameter(symbol, doc));
             }
         }
+        if self.propulsion {
+            let docs = [
+                unit(
+                    "x_R, the rudder's position ahead of midship, m",
+                    "x_R′ = x_R/L, the rudder's position ahead of midship",
+                ),
+                "c₀, the rudder's inflow speed at the approach, m/s",
+                unit(
+                    "thrust law: the coefficient of u²",
+                    "thrust law: T′_uu, the coefficient of u² over ½ρL²",
+                ),
+                unit(
+                    "thrust law: the coefficient of n u",
+                    "thrust law: T′_un, the coefficient of n u over ½ρL³",
+                ),
+                unit(
+                    "thrust law: the coefficient of n|n|",
+                    "thrust law: T′_nn, the coefficient of n|n| over ½ρL⁴",
+                ),
+                unit(
+                    "resistance: the coefficient of −u²",
+                    "resistance: R′_uu, the coefficient of −u² over ½ρL²",
+                ),
+            ];
+            for (symbol, doc) in PROPULSION.iter().zip(docs) {
+                parameters.push(parameter(symbol, doc));
+            }
+        }
         for term in &self.terms {
             let variables = match self.units {
-                Units::Dimensional => ["u", "v", "r", "δ"],
-                Units::Prime => ["u′", "v′", "r′", "δ"],
+                Units::Dimensional => ["u", "v", "r", "δ", "e"],
+                Units::Prime => ["u′", "v′", "r′", "δ", "e"],
             };
             parameters.push(Parameter {
                 symbol: Cow::Owned(term.symbol()),
@@ -234,12 +292,17 @@ impl ShipSpec {
         parameters
     }
 
-    /// The inputs: the rudder rate, and in the prime system the speed U.
+    /// The inputs: the rudder rate, in the prime system the speed U, and with propulsion
+    /// [`PROPULSION_INPUTS`].
     pub fn inputs(&self) -> Vec<&'static str> {
-        match self.units {
+        let mut inputs = match self.units {
             Units::Dimensional => vec!["delta_rate"],
             Units::Prime => vec!["delta_rate", "U"],
+        };
+        if self.propulsion {
+            inputs.extend(PROPULSION_INPUTS);
         }
+        inputs
     }
 
     /// The symbols of the body's three parameters, in this spec's units: the mass, the yaw
@@ -299,31 +362,89 @@ impl ShipSpec {
         Ok([("M", mass), ("Izz", izz), ("x_G", x_g)])
     }
 
-    /// One load of the polynomial, in SI, as an expression in the state, U and the
-    /// parameters.
+    /// One load of the polynomial, in SI, as an expression in the state, the inputs and the
+    /// parameters; with propulsion, the thrust law and the resistance in X.
     pub fn force(&self, force: Force) -> Result<Expr, SymbolicError> {
-        let moment_length = i32::from(force == Force::N);
         let mut sum = Expr::zero();
         for term in self.terms.iter().filter(|t| t.force == force) {
-            let [a, b, c, d] = term.powers.map(i32::from);
             let coefficient = Expr::symbol(&term.symbol());
-            let value = match self.units {
-                Units::Dimensional => {
-                    let [u, v, r, delta] = ["u", "v", "r", "delta"].map(Expr::symbol);
-                    &(&u.pow(a)? * &v.pow(b)?) * &(&r.pow(c)? * &delta.pow(d)?)
-                }
-                Units::Prime => {
-                    // ½ρL²U² · (Δu/U)^a (v/U)^b (rL/U)^c δ^d, times L for a moment.
-                    let surge = Expr::symbol("u") - Expr::symbol(DESIGN_SPEED);
-                    let speed = Expr::symbol("U").pow(2 - term.kinematic_degree())?;
-                    let variables = &(&surge.pow(a)? * &Expr::symbol("v").pow(b)?)
-                        * &(&Expr::symbol("r").pow(c)? * &Expr::symbol("delta").pow(d)?);
-                    &(&self.scale(2 + c + moment_length)? * &speed) * &variables
-                }
-            };
-            sum = &sum + &(&coefficient * &value);
+            sum = &sum + &(&coefficient * &self.monomial_value(term)?);
+        }
+        if self.propulsion && force == Force::X {
+            sum = &sum + &self.thrust()?;
         }
         Ok(sum)
+    }
+
+    /// What one term's coefficient multiplies, in SI (see the module docs).
+    fn monomial_value(&self, term: &Term) -> Result<Expr, SymbolicError> {
+        let moment_length = i32::from(term.force == Force::N);
+        let [a, b, c, d, k] = term.powers.map(i32::from);
+        if self.propulsion && a + b + c == 0 {
+            // On the rudder's inflow speed c (a term in e or in δ alone) or the propeller's
+            // induced velocity (a bias): ½ρL²c² e^k δ^d, ½ρL²(u_A/2)², × L for a moment.
+            let scale = self.scale(2 + moment_length)?;
+            if k == 0 && d == 0 {
+                let half = Expr::constant(Rational::new(1.into(), 2.into()));
+                return Ok(&scale * &(&half * &Expr::symbol("u_A")).pow(2)?);
+            }
+            let inflow = Expr::symbol("c");
+            let angle = self.effective_rudder_angle()?;
+            let mut value =
+                &(&scale * &inflow.pow(2)?) * &(&angle.pow(k)? * &Expr::symbol("delta").pow(d)?);
+            if k == 0 && d == 1 {
+                // The rudder's share of Y_v and Y_r changes with c from c₀, where they were
+                // identified: −Y_d (c − c₀)(v + x_R r).
+                let change = &inflow - &Expr::symbol("c0");
+                value = &value - &(&scale * &(&change * &self.rudder_lateral_velocity()?));
+            }
+            return Ok(value);
+        }
+        Ok(match self.units {
+            Units::Dimensional => {
+                let [u, v, r, delta] = ["u", "v", "r", "delta"].map(Expr::symbol);
+                &(&u.pow(a)? * &v.pow(b)?) * &(&r.pow(c)? * &delta.pow(d)?)
+            }
+            Units::Prime => {
+                // ½ρL²U² · (Δu/U)^a (v/U)^b (rL/U)^c δ^d, times L for a moment.
+                let surge = Expr::symbol("u") - Expr::symbol(DESIGN_SPEED);
+                let speed = Expr::symbol("U").pow(2 - term.kinematic_degree())?;
+                let variables = &(&surge.pow(a)? * &Expr::symbol("v").pow(b)?)
+                    * &(&Expr::symbol("r").pow(c)? * &Expr::symbol("delta").pow(d)?);
+                &(&self.scale(2 + c + moment_length)? * &speed) * &variables
+            }
+        })
+    }
+
+    /// v + x_R r: the lateral velocity of the water's flow at the rudder, relative to the hull.
+    fn rudder_lateral_velocity(&self) -> Result<Expr, SymbolicError> {
+        let position = &self.length()? * &Expr::symbol("x_R");
+        Ok(&Expr::symbol("v") + &(&position * &Expr::symbol("r")))
+    }
+
+    /// e = δ − (v + x_R r)/c: the rudder's angle to its inflow.
+    fn effective_rudder_angle(&self) -> Result<Expr, SymbolicError> {
+        let drift = &self.rudder_lateral_velocity()? * &Expr::symbol("c").pow(-1)?;
+        Ok(&Expr::symbol("delta") - &drift)
+    }
+
+    /// L in the prime system (what turns x_R′ and n L into SI), 1 in SI.
+    fn length(&self) -> Result<Expr, SymbolicError> {
+        Ok(match self.units {
+            Units::Dimensional => Expr::int(1),
+            Units::Prime => Expr::symbol(LENGTH),
+        })
+    }
+
+    /// The thrust law less the resistance: ½ρL²(T′_uu u² + T′_un L n u + T′_nn L² n|n|
+    /// − R′_uu u²), or its SI form.
+    fn thrust(&self) -> Result<Expr, SymbolicError> {
+        let [u, n, n_abs] = ["u", "n", "n_abs"].map(Expr::symbol);
+        let length = self.length()?;
+        let uu = &(&Expr::symbol("T_uu") - &Expr::symbol("R_uu")) * &u.pow(2)?;
+        let un = &(&Expr::symbol("T_un") * &length) * &(&n * &u);
+        let nn = &(&Expr::symbol("T_nn") * &length.pow(2)?) * &(&n * &n_abs);
+        Ok(&self.scale(2)? * &(&(&uu + &un) + &nn))
     }
 
     /// The added-mass loads, X_u̇ u̇, Y_v̇ v̇ + Y_ṙ ṙ and N_v̇ v̇ + N_ṙ ṙ, in SI.
@@ -353,6 +474,17 @@ impl ShipSpec {
             residuals.push(residual.subs_all(&loads)?.subs_all(&rigid)?);
         }
         Ok(residuals.try_into().expect("4.46 has three equations"))
+    }
+
+    /// Whether a term has a form here: a term in e needs propulsion, and with propulsion a
+    /// term in δ or e has no power of u, v or r (the rudder's terms are on c, the hull's on U).
+    pub fn reads(&self, term: &Term) -> bool {
+        let [a, b, c, d, k] = term.powers;
+        let rudder = d > 0 || k > 0;
+        if !self.propulsion {
+            return k == 0;
+        }
+        !rudder || a + b + c == 0
     }
 
     /// T = ½M(u² + (v + x_G r)²) + ½I_zz r²: the rigid body's kinetic energy (4.32), the
@@ -394,6 +526,20 @@ pub fn ship(name: &str, spec: &ShipSpec) -> Result<System, BuildError> {
             model: name.into(),
             what: format!("the term {twice} is listed twice"),
             residual: twice.symbol(),
+        });
+    }
+    if let Some(term) = spec.terms.iter().find(|t| !spec.reads(t)) {
+        return Err(BuildError::Verification {
+            model: name.into(),
+            what: format!(
+                "the term {term} {}",
+                if spec.propulsion {
+                    "mixes the rudder (on its inflow speed c) with u, v or r (on U)"
+                } else {
+                    "is in the effective rudder angle e, which needs a propulsion model"
+                }
+            ),
+            residual: term.symbol(),
         });
     }
     // The mass matrix is block diagonal: surge alone, then sway and yaw together.

@@ -53,6 +53,7 @@ fn table() -> ShipTable {
             .iter()
             .map(|(k, v)| ((*k).into(), *v))
             .collect(),
+        propulsion: None,
     };
     ShipTable::new(&given).expect("a valid table")
 }
@@ -93,14 +94,14 @@ fn main() {
     let evaluated = ShipModel::new(&table()).expect("the table builds");
     // The two agree before they are timed.
     let state = [6.0, 0.4, -0.02, 10.0, -5.0, 0.3, 0.1];
-    let (a, b) = (k.rhs(&state, &[0.01]), evaluated.rhs(&state, &[0.01]));
+    let (a, b) = (k.rhs(&state, &[0.01]), evaluated.rhs(&state, &[0.01, 0.0]));
     for (x, y) in a.iter().zip(&b) {
         assert!((x - y).abs() <= 1e-12 * x.abs().max(1e-9), "{x} vs {y}");
     }
     let (mut compiled, mut interpreted) = (vec![], vec![]);
     for _ in 0..7 {
         compiled.push(time(|y| k.rhs(y, &[0.01])));
-        interpreted.push(time(|y| evaluated.rhs(y, &[0.01])));
+        interpreted.push(time(|y| evaluated.rhs(y, &[0.01, 0.0])));
     }
     let (c, i) = (median(compiled), median(interpreted));
     let ns = |s: f64| s / CALLS as f64 * 1e9;
@@ -112,7 +113,7 @@ fn main() {
     );
     let driven = k.driven_by(Constant([0.0]));
     // The interpreted ship is a model too: the same driver, the same RK4.
-    let closure = evaluated.driven_by(Constant([0.0]));
+    let closure = evaluated.driven_by(Constant([0.0, 0.0]));
     let (mut compiled, mut interpreted) = (vec![], vec![]);
     for _ in 0..7 {
         compiled.push(time_rk4(&driven));

@@ -210,7 +210,9 @@ v, r and δ (`d`), in any order: `Yvvr` is the coefficient of v²r in Y, `Xrv` a
 term, `Nuud` multiplies u²δ in N. `0` marks a bias (`Y0`, `N0`; `Y0u` is the same term as \
 `Yu`), and an underscore may follow the load (`Y_vvr`). The added mass is `Xudot`, `Yvdot`, \
 `Yrdot`, `Nvdot`, `Nrdot`, on the left of 4.46. Only the terms listed are modelled: a table of \
-eight terms emits eight products.\n\
+eight terms emits eight products. With `[propulsion]`, `e` is a letter too, the effective rudder \
+angle (`Xee`, `Yeee`), the terms in δ or e alone are on the rudder's inflow speed c, and a bias \
+is the propeller's, on its induced velocity (docs/ships.md, The Esso Osaka as published).\n\
 - **Prime system or SI.** `units = \"prime\"` reads every number in the prime system (forces \
 over ½ρU²L², moments over ½ρU²L³, mass over ½ρL³, I_zz over ½ρL⁵, lengths over L, u and v \
 over U, r over U/L, the surge variable (u − U₀)/U) and needs `density`; the body's keys end \

@@ -220,6 +220,108 @@ pub(super) static KEYS: &[Key] = &[
         example: "1.0",
         ..Key::BLANK
     },
+    // [propulsion]
+    Key {
+        path: "propulsion.diameter",
+        families: SHIP,
+        unit: "m",
+        required: Required::When("with [propulsion]"),
+        description: "d, the propeller's diameter. [propulsion] is optional (prime tables only): with it the propeller rate is the model's second input, the thrust law and the resistance are in X, the rudder's terms are on its inflow speed c and the bias terms on the propeller's induced velocity (eom::ship::propulsion), and a crash_stop can be run.",
+        example: "9.1",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "propulsion.rudder_area",
+        families: SHIP,
+        unit: "m²",
+        required: Required::When("with [propulsion]"),
+        description: "A_R, the rudder's area; the share A_p/A_R of it (A_p = π d²/4) is in the slipstream.",
+        example: "119.817",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "propulsion.wake_fraction",
+        families: SHIP,
+        unit: "-",
+        required: Required::When("with [propulsion]"),
+        description: "w: the flow reaches the propeller at (1 − w) u.",
+        example: "0.2",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "propulsion.thrust_coefficient",
+        families: SHIP,
+        unit: "-",
+        required: Required::When("with [propulsion]"),
+        description: "K_T of momentum theory's induced velocity far behind the propeller, u_A = −(1 − w)u + √((1 − w)²u² + (8/π) K_T (n d)²), ahead (n > 0); none astern.",
+        example: "0.59",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "propulsion.slipstream_factor",
+        families: SHIP,
+        unit: "-",
+        required: Required::When("with [propulsion]"),
+        description: "k: the share of u_A that reaches the rudder, c² = (A_p/A_R)((1 − w)u + k u_A)² + (1 − A_p/A_R)((1 − w)u)².",
+        example: "0.95",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "propulsion.rudder_position_prime",
+        families: SHIP,
+        unit: "-",
+        required: Required::When("with [propulsion]"),
+        description: "x_R/L, the rudder's position ahead of midship (negative aft): the effective rudder angle is e = δ − (v + x_R r)/c.",
+        example: "-0.5",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "propulsion.thrust",
+        families: SHIP,
+        kind: Kind::Numbers("three numbers"),
+        unit: "-",
+        required: Required::When("with [propulsion]"),
+        description: "T′_uu, T′_un, T′_nn of the thrust law ½ρL²(T′_uu u² + T′_un L n u + T′_nn L² n|n|), n in rev/s; the rate at the approach, n₀, is the one at which it balances the resistance at U₀.",
+        example: "[-0.962e-5, -0.446e-5, 0.0309e-5]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "propulsion.resistance",
+        families: SHIP,
+        unit: "-",
+        required: Required::When("with [propulsion]"),
+        description: "C_R, the resistance ½ρ S C_R u² on the wetted surface S, against the thrust.",
+        example: "0.00226",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "propulsion.wetted_surface",
+        families: SHIP,
+        unit: "m²",
+        required: Required::When("with [propulsion]"),
+        description: "S, the wetted surface the resistance is on.",
+        example: "26319.8",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "propulsion.max_rate_rps_s",
+        families: SHIP,
+        unit: "rev/s²",
+        required: Required::When("with [propulsion]"),
+        description: "The engine's rate limit: a change of the propeller rate's command (a crash stop's) is reached at this rate.",
+        example: "0.0167",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
     // [integrator]
     Key {
         path: "integrator.method",
@@ -307,12 +409,15 @@ pub(super) static KEYS: &[Key] = &[
             "rudder_series",
             "spiral",
             "reverse_spiral",
+            "crash_stop",
         ])),
         required: Required::Yes,
         description: "Which manoeuvre. Each starts straight ahead at U₀, midship at the \
                       origin, heading north, rudder amidships. spiral: Dieudonné's direct \
                       spiral; reverse_spiral: Bech's reverse spiral (the steady yaw rate \
-                      against the rudder angle, and its loop; see eom::ship::spiral).",
+                      against the rudder angle, and its loop; see eom::ship::spiral); \
+                      crash_stop (with [propulsion]): full ahead to full astern, the rudder \
+                      amidships, until the ship stops (u = 0).",
         example: "\"turning_circle\"",
         ..Key::BLANK
     },
@@ -412,11 +517,54 @@ pub(super) static KEYS: &[Key] = &[
         families: SHIP,
         kind: Kind::Numbers("the first pass's angles, strictly monotonic"),
         unit: "deg",
-        required: Required::When("for spiral"),
+        required: Required::When("for spiral, unless from_deg, to_deg and step_deg give them"),
         description: "The direct spiral's rudder angles, from one side through zero to the \
                       other; the run holds each until r settles, then comes back through \
                       them in reverse.",
         example: "[10.0, 5.0, 2.0, 1.0, 0.0, -1.0, -2.0, -5.0, -10.0]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].from_deg",
+        families: SHIP,
+        unit: "deg",
+        required: Required::When("for spiral, with to_deg and step_deg, instead of rudders_deg"),
+        description: "The direct spiral's first angle: the first pass runs from it to to_deg \
+                      every step_deg. Give either rudders_deg or these three, not both.",
+        example: "10.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].to_deg",
+        families: SHIP,
+        unit: "deg",
+        required: Required::When("with from_deg"),
+        description: "The direct spiral's last angle of the first pass; from_deg to to_deg \
+                      must be a whole number of steps.",
+        example: "-10.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].step_deg",
+        families: SHIP,
+        unit: "deg",
+        required: Required::When("with from_deg"),
+        description: "The spacing of the direct spiral's angles from from_deg to to_deg, \
+                      positive; each angle is from_deg plus a whole number of steps.",
+        example: "1.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].astern_rps",
+        families: SHIP,
+        unit: "rev/s",
+        required: Required::When("for crash_stop"),
+        description: "crash_stop: the full-astern propeller rate commanded at the execute (negative), reached from the approach's n₀ at propulsion.max_rate_rps_s.",
+        example: "-0.64",
         shown: Shown::Commented,
         ..Key::BLANK
     },
