@@ -88,7 +88,7 @@ fn main() {
     let ship = eom::ship::ShipModel::new(&mariner.table).expect("the Mariner builds");
     let mut state = mariner.start();
     (state[1], state[2], state[6]) = (0.3, 0.004, 0.05);
-    scene_row("mariner", &ship, ship.operations(), (&state, &[0.0]));
+    scene_row("mariner", &ship, ship.operations(), (&state, &[0.0; 2]));
     let remus = std::fs::read_to_string("scenes/remus100.toml").expect("the scene");
     let remus = eom::vehicle::VehicleScene::parse(&remus, "remus100.toml").expect("REMUS builds");
     let mut state = remus.start().expect("REMUS cruises");
