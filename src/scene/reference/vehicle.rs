@@ -204,7 +204,7 @@ pub(super) static KEYS: &[Key] = &[
         path: "hydrodynamics.added_mass.*",
         families: VEHICLE,
         kind: Kind::Table("added-mass names and numbers"),
-        unit: "kg, kg m, kg m²",
+        unit: "kg, kg m, kg m² (or prime: hydrodynamics.units)",
         required: Required::Yes,
         description: "The acceleration derivatives: a load letter, a velocity, `dot` (Xudot, \
                       Yrdot, …); M_A = −(these), symmetric, each filling its partner; both \
@@ -218,7 +218,7 @@ pub(super) static KEYS: &[Key] = &[
         path: "hydrodynamics.coefficients.*",
         families: VEHICLE,
         kind: Kind::Table("coefficient names and numbers"),
-        unit: "SI",
+        unit: "SI (or prime: hydrodynamics.units)",
         required: Required::Yes,
         description: "The terms to model, and only those: a load letter (X, Y, Z, K, M, N) and \
                       the factors of its term, read under the convention: the velocities u, \
