@@ -29,8 +29,9 @@ pub(crate) mod engine {
         ship,
     };
     pub use eom_codegen::model::vehicle::{
-        AddedMassCoriolis, Convention, FoldedComparison, InertiaAbout, NameError, Propeller,
-        VehicleError, VehicleSpec, folded_comparison, format_folded, vehicle,
+        AddedMassCoriolis, Convention, FoldedComparison, InertiaAbout, NameError,
+        PRIME_SCALES as VEHICLE_PRIME_SCALES, Propeller, VehicleError, VehicleSpec,
+        folded_comparison, format_folded, vehicle,
     };
     pub use eom_codegen::model::{Kinematics, Symmetry, System};
     pub use eom_codegen::symbolic::Expr;

@@ -1529,8 +1529,11 @@ fn vehicle_scene_text(text: &str, run: bool, tally: &mut Tally) -> Result<(), Te
 
 #[test]
 fn mutated_vehicle_scenes_never_panic() {
-    let text = std::fs::read_to_string(root().join("scenes/remus100.toml")).unwrap();
-    let seeds = vec![toml_seed(text)];
+    // REMUS in SI, the NPS AUV II in the prime system.
+    let seeds: Vec<Seed> = ["remus100.toml", "nps_auv2.toml"]
+        .iter()
+        .map(|name| toml_seed(std::fs::read_to_string(root().join("scenes").join(name)).unwrap()))
+        .collect();
     let strategy = (mutation(), prop::bool::weighted(0.3));
     fuzz(
         "vehicle scenes",

@@ -447,9 +447,10 @@ fn an_added_mass_given_twice_must_be_symmetric() {
 fn what_is_not_supported_or_not_readable_is_refused() {
     let mut spec = remus_spec(Kinematics::Quaternion, AddedMassCoriolis::Folded);
     spec.units = Units::Prime;
+    spec.terms.push("Yuvr".into());
     assert!(matches!(
         vehicle("v", &spec),
-        Err(VehicleError::Unsupported(_))
+        Err(VehicleError::Prime { .. })
     ));
     let mut spec = remus_spec(Kinematics::Quaternion, AddedMassCoriolis::Folded);
     spec.controls.push("rudder".into());
@@ -668,4 +669,231 @@ fn single_operation_mutants_of_remus_s_jacobians_fail_their_check() {
         );
         assert!(caught.tried > 100, "only {}", caught.tried);
     }
+}
+
+// ---------------------------------------------------------------------------------------
+// The prime system: the NPS AUV II of Healey & Lienard (1993), as Fossen's MSS `npsauv.m`
+// scales it (U = u, ½ρL^(2 + a + m) u^(2 − j) per term).
+
+/// A table of `scenes/nps_auv2.toml`, `added_mass` or `coefficients`, read line by line
+/// (`Name = number`, comments after `#`), as the scene writes it.
+fn nps_table(table: &str) -> BTreeMap<String, f64> {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../scenes/nps_auv2.toml");
+    let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{path}: {e}"));
+    let header = format!("[hydrodynamics.{table}]");
+    let mut lines = text.lines().skip_while(|l| l.trim() != header).skip(1);
+    let mut values = BTreeMap::new();
+    for line in lines.by_ref() {
+        let line = line.split('#').next().unwrap().trim();
+        if line.starts_with('[') {
+            break;
+        }
+        if let Some((name, value)) = line.split_once('=') {
+            values.insert(name.trim().to_owned(), value.trim().parse::<f64>().unwrap());
+        }
+    }
+    assert!(!values.is_empty(), "no {header}");
+    values
+}
+
+fn nps_spec(kinematics: Kinematics) -> VehicleSpec {
+    VehicleSpec {
+        units: Units::Prime,
+        kinematics,
+        inertia: InertiaAbout::Gravity,
+        symmetry: Symmetry::Principal,
+        convention: Convention::Fossen,
+        controls: controls(),
+        added_mass: nps_table("added_mass").into_keys().collect(),
+        added_mass_coriolis: AddedMassCoriolis::Folded,
+        terms: nps_table("coefficients").into_keys().collect(),
+        propeller: Propeller::Constant,
+        hydrostatics: true,
+        applied_loads: false,
+    }
+}
+
+/// A spec of a few terms and entries only, in `units`.
+fn small_spec(units: Units, terms: &[&str], added_mass: &[&str]) -> VehicleSpec {
+    VehicleSpec {
+        units,
+        terms: terms.iter().map(|t| t.to_string()).collect(),
+        added_mass: added_mass.iter().map(|t| t.to_string()).collect(),
+        propeller: Propeller::None,
+        hydrostatics: false,
+        applied_loads: false,
+        ..nps_spec(Kinematics::Euler)
+    }
+}
+
+/// Each term's prime form against its SI form: in the prime system a term of j velocity
+/// factors, a of them angular, in a load (m = 1 for a moment) is the SI term with the
+/// coefficient ½ρL^(2 + a + m) u^(2 − j) times the prime one, as npsauv.m writes each
+/// (r2·Yv·u·v, r3·Kv·u·v, r4·Kp·u·p, r5·Kpq·p·q, r2·Ydr·u²·δ_r, r2·Xvv·v², r3·Xqds·u·q·δ_s).
+#[test]
+fn a_prime_term_is_its_si_term_scaled_by_half_rho_l_powers_and_the_surge_velocity() {
+    let cases = [
+        ("Yv", "Yuv", "rho/2.0*L.powi(2)"),
+        ("Kv", "Kuv", "rho/2.0*L.powi(3)"),
+        ("Kp", "Kup", "rho/2.0*L.powi(4)"),
+        ("Kpq", "Kpq", "rho/2.0*L.powi(5)"),
+        ("Ydr", "Yuudr", "rho/2.0*L.powi(2)"),
+        ("Xvv", "Xvv", "rho/2.0*L.powi(2)"),
+        ("Xqds", "Xuqds", "rho/2.0*L.powi(3)"),
+        ("Muq", "Muq", "rho/2.0*L.powi(4)"),
+        ("Xdsds", "Xuudsds", "rho/2.0*L.powi(2)"),
+    ];
+    for (prime, si, scale) in cases {
+        let primed = small_spec(Units::Prime, &[prime], &[]).loads().unwrap();
+        let dimensional = small_spec(Units::Dimensional, &[si], &[]).loads().unwrap();
+        let scaled = parse(&format!("{scale}*{prime}")).unwrap();
+        let load = prime[..1].chars().next().unwrap();
+        let index = "XYZKMN".find(load).unwrap();
+        let expected = dimensional[index].subs(si, &scaled).unwrap();
+        let difference = &primed[index] - &expected;
+        assert!(difference.is_zero(), "{prime}: {difference}");
+        assert!(!primed[index].is_zero());
+    }
+}
+
+/// The added mass in the prime system is ½ρL³·T⁻¹M′_AT⁻¹, T⁻¹ = diag(1, 1, 1, L, L, L), as
+/// npsauv.m scales it: X_u̇ by ½ρL³, Y_ṙ and N_v̇ by ½ρL⁴, K_ṗ and N_ṙ by ½ρL⁵.
+#[test]
+fn the_prime_added_mass_is_half_rho_l_cubed_t_inverse_m_a_t_inverse() {
+    let spec = small_spec(
+        Units::Prime,
+        &[],
+        &["Xudot", "Yvdot", "Yrdot", "Kpdot", "Mwdot", "Nrdot"],
+    );
+    let m_a = spec.added_mass_matrix().unwrap();
+    let cases = [
+        (0, 0, "-rho/2.0*L.powi(3)*Xudot"),
+        (1, 1, "-rho/2.0*L.powi(3)*Yvdot"),
+        (1, 5, "-rho/2.0*L.powi(4)*Yrdot"),
+        (5, 1, "-rho/2.0*L.powi(4)*Yrdot"),
+        (3, 3, "-rho/2.0*L.powi(5)*Kpdot"),
+        (4, 2, "-rho/2.0*L.powi(4)*Mwdot"),
+        (2, 4, "-rho/2.0*L.powi(4)*Mwdot"),
+        (5, 5, "-rho/2.0*L.powi(5)*Nrdot"),
+        (0, 1, "0"),
+    ];
+    for (i, j, book) in cases {
+        let difference = &m_a[i][j] - &parse(book).unwrap();
+        assert!(difference.is_zero(), "({i}, {j}): {difference}");
+    }
+    // The numbers: M − M_RB at L = 5.3, ρ = 1025 is npsauv.m's r3·Tinv·MA·Tinv.
+    let mut values: BTreeMap<String, f64> = [
+        ("M", 0.0),
+        ("Ixx_G", 0.0),
+        ("Iyy_G", 0.0),
+        ("Izz_G", 0.0),
+        ("x_G", 0.0),
+        ("y_G", 0.0),
+        ("z_G", 0.0),
+        ("rho", 1025.0),
+        ("L", 5.3),
+    ]
+    .iter()
+    .map(|(s, v)| (s.to_string(), *v))
+    .collect();
+    values.extend(nps_table("added_mass"));
+    let numbers = spec.mass_matrix_values(&values).unwrap();
+    let r4 = 0.5 * 1025.0 * 5.3_f64.powi(4);
+    // Rounding: the product is formed in another order than here.
+    assert!(
+        (numbers[1][5] / (-r4 * 1.2e-3) - 1.0).abs() < 1e-15,
+        "{}",
+        numbers[1][5]
+    );
+    assert_eq!(numbers[5][1], numbers[1][5]);
+}
+
+/// With U = u, `Yv` and `Yuv` are the same term; a term of three velocities would divide by
+/// u and is refused, naming it.
+#[test]
+fn the_prime_system_refuses_what_it_cannot_scale_naming_the_term() {
+    let spec = small_spec(Units::Prime, &["Yv", "Yuv"], &[]);
+    match vehicle("v", &spec) {
+        Err(error @ VehicleError::SameTerm(..)) => {
+            assert!(error.to_string().contains("`Yv` and `Yuv`"), "{error}");
+            assert!(error.to_string().contains("u·v once U = u"), "{error}");
+        }
+        other => panic!("{other:?}"),
+    }
+    // In SI the two are different terms (v and u·v).
+    assert!(
+        small_spec(Units::Dimensional, &["Yv", "Yuv"], &[])
+            .force_terms()
+            .is_ok()
+    );
+    for name in ["Yuvr", "Yv|v|r", "Xuuu"] {
+        let spec = small_spec(Units::Prime, &[name], &[]);
+        match vehicle("v", &spec) {
+            Err(error @ VehicleError::Prime { .. }) => {
+                assert!(error.to_string().contains(&format!("`{name}`")), "{error}");
+            }
+            other => panic!("{name}: {other:?}"),
+        }
+    }
+}
+
+#[test]
+fn the_nps_auv2_builds_and_proves_with_its_jacobians_in_the_prime_system() {
+    let start = std::time::Instant::now();
+    let spec = nps_spec(Kinematics::Quaternion);
+    let system = vehicle("nps_auv2", &spec).unwrap();
+    let program = eom_codegen::emit::prove_with_jacobians(&system).unwrap();
+    let source = system_source(&system).unwrap();
+    syn::parse_file(&source).unwrap();
+    for name in &spec.terms {
+        let field = format!("pub {}: f64", name.to_lowercase());
+        assert!(source.contains(&field), "{field}");
+    }
+    assert!(source.contains("pub rho: f64") && source.contains("pub l: f64"));
+    // No signed square in the table: the fins are the only inputs.
+    assert_eq!(system.inputs, ["dr", "ds"]);
+    assert_eq!(spec.terms.len(), 63);
+    println!(
+        "NPS AUV II (prime): {} stages, rhs {:?}, proved with its Jacobians in {:?}",
+        system.stages.len(),
+        program.operations(&program.rhs),
+        start.elapsed()
+    );
+}
+
+/// The folded table in prime units: Xwq = Z_ẇ for an added mass of these entries, and
+/// npsauv.m prints −0.2 against Z′_ẇ = −0.24.
+#[test]
+fn the_prime_folded_table_is_shown_against_its_added_mass_in_prime_units() {
+    let spec = nps_spec(Kinematics::Quaternion);
+    let mut values = nps_table("coefficients");
+    values.extend(nps_table("added_mass"));
+    let rows = folded_comparison(&spec, &values).unwrap();
+    println!("{}", format_folded(&rows));
+    let row = |name: &str| {
+        rows.iter()
+            .find(|r| r.name.as_deref() == Some(name))
+            .unwrap_or_else(|| panic!("{name}"))
+    };
+    assert_eq!(row("Xwq").implied, -0.24);
+    assert_eq!(row("Xwq").printed, Some(-0.2));
+    // A term matches by its product once U = u is written out: Yr is u·r.
+    assert_eq!(row("Yr").product, "u·r");
+    assert!(
+        (row("Yr").implied - (-7.6e-3)).abs() < 1e-15,
+        "{:?}",
+        row("Yr")
+    );
+}
+
+/// The Jacobians of the prime-system program cannot be fooled either.
+#[test]
+fn single_operation_mutants_of_the_nps_auv2_s_jacobians_fail_their_check() {
+    let system = vehicle("nps_auv2", &nps_spec(Kinematics::Euler)).unwrap();
+    let caught = mutants::jacobian_mutants(&system, 1);
+    println!(
+        "NPS AUV II (Euler): {} Jacobian mutants caught of {}, over {} proved entries",
+        caught.tried, caught.tried, caught.entries
+    );
+    assert!(caught.tried > 100, "only {}", caught.tried);
 }

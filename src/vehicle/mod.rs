@@ -36,7 +36,7 @@ pub use fins::{FinSteps, Fins};
 pub use manoeuvre::{VehicleManoeuvre, VehicleRun};
 pub use model::VehicleModel;
 pub use scene::VehicleScene;
-pub use table::{PropellerSetting, VehicleTable};
+pub use table::{PrimeScales, PropellerSetting, VehicleTable};
 
 /// Why a vehicle cannot be built or run.
 #[derive(Debug, thiserror::Error)]
@@ -102,7 +102,8 @@ impl VehicleError {
                     NameError::Ambiguous { name, .. } | NameError::Unknown { name, .. },
                 )
                 | Table::ListedTwice(name)
-                | Table::SameTerm(_, name, _) => entry(name),
+                | Table::SameTerm(_, name, _)
+                | Table::Prime { name, .. } => entry(name),
                 Table::AsymmetricAddedMass { name, .. } => entry(name),
                 Table::NotPositiveDefinite { .. } => "hydrodynamics.added_mass".into(),
                 _ => "hydrodynamics".into(),

@@ -14,7 +14,8 @@ use super::VehicleError;
 use super::table::{CONTROLS, VehicleTable};
 use crate::defined::engine::{
     FoldedComparison, InertiaAbout, Kinematics, Operations, Propeller, Symmetry, Units,
-    VehicleSpec, folded_comparison, prove_with_jacobians, vehicle,
+    VEHICLE_PRIME_SCALES as PRIME_SCALES, VehicleSpec, folded_comparison, prove_with_jacobians,
+    vehicle,
 };
 use crate::defined::{Functions, Interpreter, coefficient_values};
 use crate::models::Model;
@@ -106,10 +107,14 @@ enum Variable {
 }
 
 /// The spec of a table: `kinematics`, inertia about G in principal axes, the fins as
-/// controls, the propeller constant.
+/// controls, the propeller constant, the table's units.
 pub fn spec(table: &VehicleTable, kinematics: Kinematics) -> VehicleSpec {
     VehicleSpec {
-        units: Units::Dimensional,
+        units: if table.prime.is_some() {
+            Units::Prime
+        } else {
+            Units::Dimensional
+        },
         kinematics,
         inertia: InertiaAbout::Gravity,
         symmetry: Symmetry::Principal,
@@ -145,6 +150,11 @@ fn table_values(
     }
     values.insert("weight".to_owned(), table.weight);
     values.insert("buoyancy".to_owned(), table.buoyancy);
+    if let Some(prime) = table.prime {
+        let [density, length] = PRIME_SCALES;
+        values.insert(density.to_owned(), prime.density);
+        values.insert(length.to_owned(), prime.length);
+    }
     values.extend(table.added_mass.iter().map(|(k, v)| (k.clone(), *v)));
     if let Some(propeller) = table.propeller {
         values.insert("X_prop".to_owned(), propeller.thrust);

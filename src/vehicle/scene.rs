@@ -18,6 +18,9 @@
 //! [hydrodynamics]
 //! convention = "prestero"            # or "fossen": how the names are read
 //! added_mass_coriolis = "folded"     # or "derived": eom adds Kirchhoff's terms
+//! # units = "prime"                  # or "dimensional" (the default): the prime system, with
+//! # density = 1025.0                 #   ρ, kg/m³, and
+//! # length = 5.3                     #   L, m (prime only), U = u
 //!
 //! [hydrodynamics.added_mass]         # Xudot, Yvdot, Yrdot, …
 //! [hydrodynamics.coefficients]       # the terms to model, and only those; controls dr, ds
@@ -72,7 +75,7 @@ use super::autopilot::{Autopilots, DepthGains, HeadingGains, Setpoints};
 use super::fins::{FinSteps, Fins, Rudder};
 use super::manoeuvre::VehicleManoeuvre;
 use super::model::VehicleModel;
-use super::table::{PropellerSetting, VehicleTable};
+use super::table::{PrimeScales, PropellerSetting, VehicleTable};
 use super::trial::{Plane, Trial};
 use super::{AddedMassCoriolis, Convention, VehicleError};
 use crate::integrate::Stepper;
@@ -190,6 +193,12 @@ pub struct HydrodynamicsTable {
     pub convention: String,
     /// `folded` or `derived`.
     pub added_mass_coriolis: String,
+    /// `dimensional` (the default) or `prime`.
+    pub units: Option<String>,
+    /// ρ, kg/m³ (prime only).
+    pub density: Option<f64>,
+    /// L, m (prime only).
+    pub length: Option<f64>,
     /// The added-mass entries by name.
     pub added_mass: BTreeMap<String, f64>,
     /// The force terms by name.
@@ -319,7 +328,38 @@ impl Checker<'_> {
             added_mass: hydro.added_mass.clone(),
             coefficients: hydro.coefficients.clone(),
             propeller,
+            prime: self.prime_scales(hydro)?,
         })
+    }
+
+    /// The prime system's ρ and L where `hydrodynamics.units` is `prime` (each then
+    /// required), none in SI (where each is refused).
+    fn prime_scales(&self, hydro: &HydrodynamicsTable) -> Result<Option<PrimeScales>, SceneError> {
+        let prime = match &hydro.units {
+            Some(units) => self.word(
+                "hydrodynamics.units",
+                units,
+                [(true, "prime"), (false, "dimensional")],
+            )?,
+            None => false,
+        };
+        let scale = |key: &str, value: Option<f64>, what: &str| match (prime, value) {
+            (true, Some(x)) => self.positive(key, x).map(Some),
+            (true, None) => Err(self.error(
+                key,
+                Problem::Missing(format!("the prime system needs {what}")),
+            )),
+            (false, Some(_)) => Err(self.invalid(
+                key,
+                format!("only the prime system uses {what}: a dimensional table would ignore it"),
+            )),
+            (false, None) => Ok(None),
+        };
+        let density = scale("hydrodynamics.density", hydro.density, "ρ")?;
+        let length = scale("hydrodynamics.length", hydro.length, "L")?;
+        Ok(density
+            .zip(length)
+            .map(|(density, length)| PrimeScales { density, length }))
     }
 
     fn fin(&self, table: &str, fin: &RudderTable) -> Result<Rudder, SceneError> {

@@ -308,13 +308,20 @@ impl CruiseSummary {
     /// The trim `start` of `scene`'s model, against the closed forms.
     pub fn new(scene: &VehicleScene, start: &[f64; 15]) -> Self {
         let table = &scene.table;
-        // The name of X's u|u| under the table's convention.
-        let name = match table.convention {
-            super::Convention::Prestero => "Xuu",
-            super::Convention::Fossen => "Xu|u|",
+        // The names of X's u|u| under the table's convention (Fossen's u², the same ahead),
+        // and the prime system's ½ρL² of a force of two linear velocities.
+        let names: &[&str] = match table.convention {
+            super::Convention::Prestero => &["Xuu"],
+            super::Convention::Fossen => &["Xu|u|", "Xuu"],
         };
-        let closed_speed = match (table.propeller, table.coefficients.get(name)) {
-            (Some(p), Some(&x)) if x < 0.0 && p.thrust >= 0.0 => Some((p.thrust / -x).sqrt()),
+        let drag = names.iter().find_map(|n| table.coefficients.get(*n));
+        let scale = table
+            .prime
+            .map_or(1.0, |p| 0.5 * p.density * p.length.powi(2));
+        let closed_speed = match (table.propeller, drag) {
+            (Some(p), Some(&x)) if x < 0.0 && p.thrust >= 0.0 => {
+                Some((p.thrust / (-x * scale)).sqrt())
+            }
             _ => None,
         };
         let righting = table.centre_of_gravity[2] * table.weight

@@ -1,5 +1,6 @@
 //! A vehicle's table as the scene gives it: the body, the hydrostatics, the added mass, the
-//! named force terms under a declared convention, and the propeller at its setting.
+//! named force terms under a declared convention and in their units (SI or the prime system),
+//! and the propeller at its setting.
 
 use super::{AddedMassCoriolis, Convention};
 use std::collections::BTreeMap;
@@ -17,7 +18,19 @@ pub struct PropellerSetting {
     pub torque: f64,
 }
 
-/// The numbers of a vehicle, checked by the scene ([`super::scene`]) and in SI.
+/// The scales of a table in the prime system: ½ρL^(2 + a + m)·u^(2 − j) per term of j
+/// velocity factors, a of them angular, m = 1 for a moment; ½ρL^(3 + m + a) per added-mass
+/// entry (`eom_codegen::model::vehicle`, the module docs).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PrimeScales {
+    /// ρ, kg/m³.
+    pub density: f64,
+    /// L, m.
+    pub length: f64,
+}
+
+/// The numbers of a vehicle, checked by the scene ([`super::scene`]): the body in SI, the
+/// hydrodynamic table in SI or in the prime system.
 #[derive(Debug, Clone, PartialEq)]
 pub struct VehicleTable {
     /// M, kg.
@@ -42,6 +55,8 @@ pub struct VehicleTable {
     pub coefficients: BTreeMap<String, f64>,
     /// The propeller, if it acts.
     pub propeller: Option<PropellerSetting>,
+    /// The prime system's scales, if the added mass and the terms are given in it.
+    pub prime: Option<PrimeScales>,
 }
 
 impl VehicleTable {

@@ -163,10 +163,48 @@ pub(super) static KEYS: &[Key] = &[
         ..Key::BLANK
     },
     Key {
+        path: "hydrodynamics.units",
+        families: VEHICLE,
+        kind: Kind::Text(Choices::These(&["dimensional", "prime"])),
+        default: "\"dimensional\"",
+        description: "The units of the added mass and of the coefficients (the body is in SI \
+                      always). dimensional: SI. prime: the standard submarine equations' prime \
+                      system, as Healey & Lienard give the NPS AUV II and Fossen's npsauv.m \
+                      scales it, with U = u the surge velocity: a term of j velocity factors, a \
+                      of them angular, adds ½ρL^(2 + a + m)·u^(2 − j) times its coefficient and \
+                      its product (m = 1 for K, M, N), so Yv adds ½ρL²·Yv·u·v, Kp ½ρL⁴·Kp·u·p, \
+                      Ydr ½ρL²·Ydr·u²·dr; an added-mass entry is ½ρL^(3 + m + a) times its \
+                      value. A term of more than two velocity factors is refused, and two \
+                      names of one product once u is written out (Yv, Yuv) are one term.",
+        example: "\"prime\"",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "hydrodynamics.density",
+        families: VEHICLE,
+        unit: "kg/m³",
+        required: Required::When("in a prime table (a dimensional one refuses it)"),
+        description: "ρ, the water's density, of the prime system.",
+        example: "1025.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "hydrodynamics.length",
+        families: VEHICLE,
+        unit: "m",
+        required: Required::When("in a prime table (a dimensional one refuses it)"),
+        description: "L, the prime system's unit of length (the NPS AUV II: 5.3 m).",
+        example: "5.3",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
         path: "hydrodynamics.added_mass.*",
         families: VEHICLE,
         kind: Kind::Table("added-mass names and numbers"),
-        unit: "kg, kg m, kg m²",
+        unit: "kg, kg m, kg m² (or prime: hydrodynamics.units)",
         required: Required::Yes,
         description: "The acceleration derivatives: a load letter, a velocity, `dot` (Xudot, \
                       Yrdot, …); M_A = −(these), symmetric, each filling its partner; both \
@@ -180,7 +218,7 @@ pub(super) static KEYS: &[Key] = &[
         path: "hydrodynamics.coefficients.*",
         families: VEHICLE,
         kind: Kind::Table("coefficient names and numbers"),
-        unit: "SI",
+        unit: "SI (or prime: hydrodynamics.units)",
         required: Required::Yes,
         description: "The terms to model, and only those: a load letter (X, Y, Z, K, M, N) and \
                       the factors of its term, read under the convention: the velocities u, \

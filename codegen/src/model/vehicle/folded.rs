@@ -8,11 +8,15 @@
 //! The split is proved exact: the implied coefficients times their monomials give back the
 //! derived terms. With the table's numbers, each coefficient's printed value, implied value
 //! and difference are reported; a table that disagrees with its own added mass is shown.
+//! A table in the prime system is compared in its own units: the implied coefficient of a
+//! product of two velocities, a of them angular, in a load (m = 1 for a moment) is the SI one
+//! over ½ρL^(2 + a + m), and a term matches by its product once U = u is written out (`Yr` is
+//! u·r there).
 
-use super::{ForceTerm, Load, VehicleError, VehicleSpec, symbolic};
+use super::{DENSITY, ForceTerm, LENGTH, Load, Units, VehicleError, VehicleSpec, symbolic};
 use crate::derivation::vehicle::{VELOCITIES, added_mass_coriolis};
 use crate::model::BuildError;
-use crate::symbolic::{Atom, Expr, Monomial};
+use crate::symbolic::{Atom, Expr, Monomial, Rational};
 use std::collections::BTreeMap;
 use std::fmt::Write;
 
@@ -25,7 +29,8 @@ pub struct FoldedTerm {
     pub product: String,
     /// The table's term of that product in that load, if it has one.
     pub name: Option<String>,
-    /// The coefficient M_A implies for it, on the right side, in the added-mass entries.
+    /// The coefficient M_A implies for it, on the right side, in the added-mass entries and in
+    /// the table's units.
     pub implied: Expr,
 }
 
@@ -50,9 +55,9 @@ pub fn folded_terms(spec: &VehicleSpec) -> Result<Vec<FoldedTerm>, VehicleError>
                     ));
             folded.push(FoldedTerm {
                 load,
-                name: matching_term(&terms, load, &velocities).map(|t| t.name.clone()),
+                name: matching_term(spec, &terms, load, &velocities).map(|t| t.name.clone()),
                 product,
-                implied,
+                implied: in_table_units(spec, load, &velocities, &implied)?,
             });
         }
         let left = &rebuilt + row;
@@ -68,6 +73,41 @@ pub fn folded_terms(spec: &VehicleSpec) -> Result<Vec<FoldedTerm>, VehicleError>
         }
     }
     Ok(folded)
+}
+
+/// An implied coefficient in SI, in the table's units: over ½ρL^(2 + a + m) in the prime
+/// system (see the module docs), where the scales must cancel.
+fn in_table_units(
+    spec: &VehicleSpec,
+    load: Load,
+    velocities: &Monomial,
+    implied: &Expr,
+) -> Result<Expr, VehicleError> {
+    if spec.units == Units::Dimensional {
+        return Ok(implied.clone());
+    }
+    let err = symbolic("vehicle");
+    let angular = velocity_list(velocities)
+        .iter()
+        .filter(|v| ["p", "q", "r"].contains(&v.as_str()))
+        .count();
+    let power = 2 + i32::try_from(angular).unwrap_or(0) + i32::from(load.is_moment());
+    let over = &(&Expr::constant(Rational::from_integer(2.into()))
+        * &Expr::symbol(DENSITY).pow(-1).map_err(&err)?)
+        * &Expr::symbol(LENGTH).pow(-power).map_err(&err)?;
+    let prime = implied * &over;
+    if let Some(scale) = prime
+        .symbols()
+        .into_iter()
+        .find(|s| s == DENSITY || s == LENGTH)
+    {
+        return Err(VehicleError::Build(BuildError::Verification {
+            model: "vehicle".into(),
+            what: format!("the implied coefficient in {} keeps {scale}", load.letter()),
+            residual: prime.to_string(),
+        }));
+    }
+    Ok(prime)
 }
 
 /// The terms of `row` grouped by their monomial in the velocities.
@@ -102,15 +142,19 @@ fn product_text(monomial: &Monomial) -> String {
 }
 
 fn matching_term<'a>(
+    spec: &VehicleSpec,
     terms: &'a [ForceTerm],
     load: Load,
     monomial: &Monomial,
 ) -> Option<&'a ForceTerm> {
     let wanted = velocity_list(monomial);
     terms.iter().find(|t| {
-        let mut plain: Vec<String> = t.factors.iter().map(|f| f.variable.clone()).collect();
+        let Ok(key) = spec.dimensional_key(t) else {
+            return false;
+        };
+        let mut plain: Vec<String> = key.iter().map(|f| f.variable.clone()).collect();
         plain.sort_by_key(|v| VELOCITIES.iter().position(|x| x == v));
-        t.load == load && t.factors.iter().all(|f| !f.absolute) && plain == wanted
+        t.load == load && key.iter().all(|f| !f.absolute) && plain == wanted
     })
 }
 

@@ -26,6 +26,21 @@
 //!   with k_b = Rᵀ(0, 0, 1); for a quaternion R is its matrix, |q|² times a rotation, as for the
 //!   heavy top, so the potential below is exact along q̇ = ½ q ⊗ (0, ω).
 //!
+//! The table is in SI ([`Units::Dimensional`]) or in the prime system ([`Units::Prime`]) of
+//! the standard submarine equations, as Healey & Lienard (1993) give the NPS AUV II and
+//! Fossen's MSS `npsauv.m` scales it: with ρ and the length L (parameters `rho`, `L`) and the
+//! speed U = u, the surge velocity, a term of j velocity factors, a of them angular, adds
+//! ½ρL^(2 + a + m)·u^(2 − j) times its prime coefficient and its product in SI, m = 1 for a
+//! moment (K, M, N) and 0 for a force; that is ½ρL²U² times the coefficient and the product
+//! of v/U, w/U, pL/U, qL/U, rL/U (a force) or ½ρL³U² times it (a moment), so `Yv` adds
+//! ½ρL²·Y′_v·u·v, `Kp` ½ρL⁴·K′_p·u·p, `Ydr` ½ρL²·Y′_δr·u²·δ_r, `Xvv` ½ρL²·X′_vv·v². An
+//! added-mass entry of a load and a velocity is ½ρL^(3 + m + a) times its prime value, a = 1
+//! for an angular velocity (M_A = ½ρL³·T⁻¹M′_AT⁻¹, T⁻¹ = diag(1, 1, 1, L, L, L)). The controls
+//! are angles, without units. A term of more than two velocity factors would divide by u and
+//! is refused; two names that give the same product once u is written out (`Yv`, `Yuv`) are
+//! one term. The body (mass, inertia, r_G, weight, buoyancy, r_B) stays in SI. The scaling is
+//! part of the derived residuals, so the program's proof covers it.
+//!
 //! The mass matrix is constant but a general symmetric 6×6 of many parameters, whose symbolic
 //! inverse is too large to be worth emitting; it is inverted numerically once per parameter
 //! set, by Cholesky ([`VehicleSpec::inverse_mass_matrix`], which also refuses a matrix that is
@@ -90,7 +105,8 @@ pub enum Propeller {
 /// What a vehicle model is made of. The numbers are given later, as parameters.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct VehicleSpec {
-    /// The units: SI ([`Units::Dimensional`]) only, for now.
+    /// The units of the hydrodynamic table: SI, or the prime system (see the module docs;
+    /// the body stays in SI).
     pub units: Units,
     /// How the attitude is carried.
     pub kinematics: Kinematics,
@@ -174,10 +190,24 @@ pub enum VehicleError {
         /// The parameters of that row up to the diagonal, with their values.
         entries: String,
     },
+    /// A term that the prime system cannot scale.
+    #[error("`{name}` cannot be read in the prime system: {why}")]
+    Prime {
+        /// The term's name.
+        name: String,
+        /// Why.
+        why: String,
+    },
     /// The model could not be built or verified.
     #[error(transparent)]
     Build(#[from] BuildError),
 }
+
+/// The prime system's scales, by their symbols: the water's density ρ and the length L,
+/// parameters of a prime-system vehicle after the hydrostatics.
+pub const PRIME_SCALES: [&str; 2] = [DENSITY, LENGTH];
+const DENSITY: &str = "rho";
+const LENGTH: &str = "L";
 
 pub(super) fn symbolic(name: &str) -> impl Fn(SymbolicError) -> VehicleError + '_ {
     move |source| {
@@ -290,11 +320,6 @@ fn split(name: &str, residuals: &[Expr; 6]) -> Result<([[Expr; 6]; 6], [Expr; 6]
 /// assert!(source.contains("pub yv_abs_v: f64") && source.contains("pub minv_ur: f64"));
 /// ```
 pub fn vehicle(name: &str, spec: &VehicleSpec) -> Result<System, VehicleError> {
-    if spec.units != Units::Dimensional {
-        return Err(VehicleError::Unsupported(
-            "a vehicle's table in the prime system is not supported yet; give it in SI".into(),
-        ));
-    }
     let err = symbolic(name);
     let residuals = spec.residuals()?;
     let (_, rest) = split(name, &residuals)?;

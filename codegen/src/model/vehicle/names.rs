@@ -70,6 +70,11 @@ impl Load {
         self as usize
     }
 
+    /// Whether it is a moment (K, M, N), which the prime system scales by one more L.
+    pub fn is_moment(self) -> bool {
+        matches!(self, Load::K | Load::M | Load::N)
+    }
+
     fn of_letter(letter: char) -> Option<Load> {
         Load::ALL.into_iter().find(|l| l.letter() == letter)
     }
@@ -122,6 +127,20 @@ impl ForceTerm {
         }
         let factors: Vec<String> = self.factors.iter().map(Factor::to_string).collect();
         factors.join("·")
+    }
+
+    /// How many of its factors are linear velocities (u, v, w) and how many angular ones
+    /// (p, q, r), |x| counted as x: the powers the prime system scales by.
+    pub fn velocity_powers(&self) -> (i32, i32) {
+        let count = |letters: &[&str]| {
+            let n = self
+                .factors
+                .iter()
+                .filter(|f| letters.contains(&f.variable.as_str()))
+                .count();
+            i32::try_from(n).unwrap_or(i32::MAX)
+        };
+        (count(&["u", "v", "w"]), count(&["p", "q", "r"]))
     }
 
     /// The factors, sorted: two terms with the same product have the same key.

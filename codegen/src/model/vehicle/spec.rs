@@ -3,8 +3,9 @@
 
 use super::names::VELOCITY_LETTERS;
 use super::{
-    AddedMassCoriolis, AddedMassEntries, AddedMassEntry, ForceTerm, InertiaAbout, Load, Propeller,
-    VehicleError, VehicleSpec, inverse_entry, parse_added_mass, parse_term, symbolic,
+    AddedMassCoriolis, AddedMassEntries, AddedMassEntry, DENSITY, Factor, ForceTerm, InertiaAbout,
+    LENGTH, Load, Propeller, Units, VehicleError, VehicleSpec, inverse_entry, parse_added_mass,
+    parse_term, symbolic,
 };
 use crate::derivation::energy::rigid_body_kinetic_energy;
 use crate::derivation::kinematics::body_to_space;
@@ -16,7 +17,7 @@ use crate::derivation::vehicle::{
 };
 use crate::model::Kinematics;
 use crate::model::system::Parameter;
-use crate::symbolic::{Expr, Mat3, SymbolicError, Vec3};
+use crate::symbolic::{Expr, Mat3, Rational, SymbolicError, Vec3};
 use std::borrow::Cow;
 
 /// The position of O in space axes (Z down) and the attitude, after ν.
@@ -48,19 +49,87 @@ impl VehicleSpec {
                 return Err(VehicleError::ListedTwice(name.clone()));
             }
             let term = parse_term(name, self.convention, &self.controls)?;
+            let key = self.dimensional_key(&term)?;
             let same = terms
                 .iter()
-                .find(|t| t.load == term.load && t.product_key() == term.product_key());
+                .find(|t| t.load == term.load && self.dimensional_key(t).ok() == Some(key.clone()));
             if let Some(same) = same {
+                let product: Vec<String> = key.iter().map(Factor::to_string).collect();
+                let meaning = match self.units {
+                    Units::Dimensional => term.meaning(),
+                    Units::Prime => format!("{} once U = u is written out", product.join("·")),
+                };
                 return Err(VehicleError::SameTerm(
                     same.name.clone(),
                     term.name.clone(),
-                    term.meaning(),
+                    meaning,
                 ));
             }
             terms.push(term);
         }
         Ok(terms)
+    }
+
+    /// The factors of a term's product in SI, sorted: its own, and in the prime system the
+    /// u's of u^(2 − j) ([`Self::term_scale`]), so that `Yv` and `Yuv` have one key there.
+    pub fn dimensional_key(&self, term: &ForceTerm) -> Result<Vec<Factor>, VehicleError> {
+        let mut key = term.product_key();
+        if self.units == Units::Prime {
+            let (linear, angular) = term.velocity_powers();
+            let missing =
+                usize::try_from(2 - (linear + angular)).map_err(|_| VehicleError::Prime {
+                    name: term.name.clone(),
+                    why: format!(
+                        "{} velocity factors: with U = u a term has at most two, or it would \
+                         divide by u",
+                        linear + angular
+                    ),
+                })?;
+            key.extend(std::iter::repeat_n(
+                Factor {
+                    variable: "u".into(),
+                    absolute: false,
+                },
+                missing,
+            ));
+            key.sort();
+        }
+        Ok(key)
+    }
+
+    /// ½ρLⁿ in the prime system, 1 in SI.
+    fn prime_scale(&self, length_power: i32) -> Result<Expr, VehicleError> {
+        match self.units {
+            Units::Dimensional => Ok(Expr::int(1)),
+            Units::Prime => {
+                let half = Expr::constant(Rational::new(1.into(), 2.into()));
+                let length = Expr::symbol(LENGTH)
+                    .pow(length_power)
+                    .map_err(symbolic("vehicle"))?;
+                Ok(&(&half * &Expr::symbol(DENSITY)) * &length)
+            }
+        }
+    }
+
+    /// What turns a term's coefficient times its product into SI: 1 in SI; in the prime
+    /// system ½ρL^(2 + a + m)·u^(2 − j) for j velocity factors, a of them angular, m = 1 for
+    /// a moment (see the module docs). A term of more than two velocity factors is refused.
+    pub fn term_scale(&self, term: &ForceTerm) -> Result<Expr, VehicleError> {
+        if self.units == Units::Dimensional {
+            return Ok(Expr::int(1));
+        }
+        let missing = self.dimensional_key(term)?.len() - term.product_key().len();
+        let (_, angular) = term.velocity_powers();
+        let moment = i32::from(term.load.is_moment());
+        let surge = (0..missing).fold(Expr::int(1), |a, _| a * Expr::symbol("u"));
+        Ok(&self.prime_scale(2 + angular + moment)? * &surge)
+    }
+
+    /// What turns an added-mass entry into SI: 1, or ½ρL^(3 + m + a) in the prime system, m = 1
+    /// for a moment's row and a = 1 for an angular velocity's column.
+    fn added_mass_scale(&self, row: usize, column: usize) -> Result<Expr, VehicleError> {
+        let power = 3 + i32::from(row >= 3) + i32::from(column >= 3);
+        self.prime_scale(power)
     }
 
     fn check_controls(&self) -> Result<(), VehicleError> {
@@ -115,9 +184,14 @@ impl VehicleSpec {
                 .map(|e| e.name.clone())
                 .unwrap_or_default()
         });
-        Ok(std::array::from_fn(|i| {
-            std::array::from_fn(|j| -&table[i][j])
-        }))
+        let mut matrix: [[Expr; 6]; 6] =
+            std::array::from_fn(|_| std::array::from_fn(|_| Expr::zero()));
+        for (i, row) in matrix.iter_mut().enumerate() {
+            for (j, entry) in row.iter_mut().enumerate() {
+                *entry = -&(&self.added_mass_scale(i, j)? * &table[i][j]);
+            }
+        }
+        Ok(matrix)
     }
 
     /// The symbols of the given inertia tensor, row-major upper triangle order
@@ -241,7 +315,8 @@ impl VehicleSpec {
         let restoring = self.restoring();
         let mut loads: [Expr; 6] = std::array::from_fn(|i| restoring[i].clone());
         for term in &terms {
-            let value = Expr::symbol(&term.symbol()) * Self::product(term);
+            let value =
+                Expr::symbol(&term.symbol()) * Self::product(term) * self.term_scale(term)?;
             loads[term.load.index()] = &loads[term.load.index()] + &value;
         }
         if self.propeller != Propeller::None {
@@ -344,6 +419,20 @@ impl VehicleSpec {
                 ));
             }
         }
+        if self.units == Units::Prime {
+            parameters.push(parameter(
+                DENSITY,
+                "water density ρ, kg/m³, of the prime system",
+            ));
+            parameters.push(parameter(
+                LENGTH,
+                "length L, m, the prime system's unit of length",
+            ));
+        }
+        let prime = match self.units {
+            Units::Dimensional => "",
+            Units::Prime => " (prime)",
+        };
         let (entries, partners) = self.added_mass_entries()?;
         for entry in &entries {
             let partner = partners
@@ -354,7 +443,7 @@ impl VehicleSpec {
             parameters.push(parameter(
                 entry.name.clone(),
                 format!(
-                    "added mass {}{partner}: {} per {}-acceleration",
+                    "added mass {}{partner}{prime}: {} per {}-acceleration",
                     entry.name,
                     Load::ALL[entry.row].letter(),
                     VELOCITIES[entry.column]
@@ -372,7 +461,7 @@ impl VehicleSpec {
             parameters.push(parameter(
                 term.symbol(),
                 format!(
-                    "hydrodynamic coefficient {} of {} in {}",
+                    "hydrodynamic coefficient {}{prime} of {} in {}",
                     term.name,
                     term.meaning(),
                     term.load.letter()

@@ -1,0 +1,368 @@
+//! The NPS AUV II at run time (`scenes/nps_auv2.toml`): Healey & Lienard's (1993) table in the
+//! prime system as Fossen's MSS `npsauv.m` gives it, against a transcription of that file's
+//! numbers; the cruise against the propeller law's closed form; a small rudder step against
+//! the closed form of the linear sway–yaw equations; the large turn converged and mirrored;
+//! and a prime table without its scales refused by key.
+
+use eom::scene::AnyScene;
+use eom::vehicle::manoeuvre::{self, VehicleManoeuvre, VehicleRun};
+use eom::vehicle::summary::{CruiseSummary, StepFigures, largest_difference};
+use eom::vehicle::{VehicleModel, VehicleScene};
+use std::path::Path;
+
+const SCENE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/nps_auv2.toml");
+
+/// npsauv.m's hydrodynamic derivatives, prime, as that file writes them (its names).
+const SOURCE: [(&str, f64); 93] = [
+    ("Xpp", 7.0e-3),
+    ("Xqq", -1.5e-2),
+    ("Xrr", 4.0e-3),
+    ("Xpr", 7.5e-4),
+    ("Xudot", -7.6e-3),
+    ("Xwq", -2.0e-1),
+    ("Xvp", -3.0e-3),
+    ("Xvr", 2.0e-2),
+    ("Xqds", 2.5e-2),
+    ("Xqdb2", -1.3e-3),
+    ("Xrdr", -1.0e-3),
+    ("Xvv", 5.3e-2),
+    ("Xww", 1.7e-1),
+    ("Xvdr", 1.7e-3),
+    ("Xwds", 4.6e-2),
+    ("Xwdb2", 0.5e-2),
+    ("Xdsds", -1.0e-2),
+    ("Xdrdr", -1.0e-2),
+    ("Xqdsn", 2.0e-3),
+    ("Xwdsn", 3.5e-3),
+    ("Xdsdsn", -1.6e-3),
+    ("Ypdot", 1.2e-4),
+    ("Yrdot", 1.2e-3),
+    ("Ypq", 4.0e-3),
+    ("Yqr", -6.5e-3),
+    ("Yvdot", -5.5e-2),
+    ("Yp", 3.0e-3),
+    ("Yr", 3.0e-2),
+    ("Yvq", 2.4e-2),
+    ("Ywp", 2.3e-1),
+    ("Ywr", -1.9e-2),
+    ("Yv", -1.0e-1),
+    ("Yvw", 6.8e-2),
+    ("Ydr", 2.7e-2),
+    ("Zqdot", -6.8e-3),
+    ("Zpp", 1.3e-4),
+    ("Zpr", 6.7e-3),
+    ("Zrr", -7.4e-3),
+    ("Zwdot", -2.4e-1),
+    ("Zq", -1.4e-1),
+    ("Zvp", -4.8e-2),
+    ("Zvr", 4.5e-2),
+    ("Zw", -3.0e-1),
+    ("Zvv", -6.8e-2),
+    ("Zds", -7.3e-2),
+    ("Zdb2", -1.3e-2),
+    ("Zqn", -2.9e-3),
+    ("Zwn", -5.1e-3),
+    ("Zdsn", -1.0e-2),
+    ("Kpdot", -1.0e-3),
+    ("Krdot", -3.4e-5),
+    ("Kpq", -6.9e-5),
+    ("Kqr", 1.7e-2),
+    ("Kvdot", 1.2e-4),
+    ("Kp", -1.1e-2),
+    ("Kr", -8.4e-4),
+    ("Kvq", -5.1e-3),
+    ("Kwp", -1.3e-4),
+    ("Kwr", 1.4e-2),
+    ("Kv", 3.1e-3),
+    ("Kvw", -1.9e-1),
+    ("Kdb2", 0.0),
+    ("Kpn", -5.7e-4),
+    ("Kprop", 0.0),
+    ("Mqdot", -1.7e-2),
+    ("Mpp", 5.3e-5),
+    ("Mpr", 5.0e-3),
+    ("Mrr", 2.9e-3),
+    ("Mwdot", -6.8e-3),
+    ("Muq", -6.8e-2),
+    ("Mvp", 1.2e-3),
+    ("Mvr", 1.7e-2),
+    ("Muw", 1.0e-1),
+    ("Mvv", -2.6e-2),
+    ("Mds", -4.1e-2),
+    ("Mdb2", 3.5e-3),
+    ("Mqn", -1.6e-3),
+    ("Mwn", -2.9e-3),
+    ("Mdsn", -5.2e-3),
+    ("Npdot", -3.4e-5),
+    ("Nrdot", -3.4e-3),
+    ("Npq", -2.1e-2),
+    ("Nqr", 2.7e-3),
+    ("Nvdot", 1.2e-3),
+    ("Np", -8.4e-4),
+    ("Nr", -1.6e-2),
+    ("Nvq", -1.0e-2),
+    ("Nwp", -1.7e-2),
+    ("Nwr", 7.4e-3),
+    ("Nv", -7.4e-3),
+    ("Nvw", -2.7e-2),
+    ("Ndr", -1.3e-2),
+    ("Nprop", 0.0),
+];
+
+/// The source's terms the scene leaves out, each said in its header: the bow planes' (held
+/// at zero), the propeller's ε terms (ε = 0 at the cruise), its zero Kprop and Nprop.
+const LEFT_OUT: [&str; 17] = [
+    "Xqdb2", "Xwdb2", "Zdb2", "Kdb2", "Mdb2", "Xqdsn", "Xwdsn", "Xdsdsn", "Zqn", "Zwn", "Zdsn",
+    "Kpn", "Mqn", "Mwn", "Mdsn", "Kprop", "Nprop",
+];
+
+/// npsauv.m's scales, body and propeller law.
+const RHO: f64 = 1025.0;
+const LENGTH: f64 = 5.3;
+const WEIGHT: f64 = 53400.0;
+const G: f64 = 9.81;
+const CD0: f64 = 0.00385;
+/// The setting: SIMnpsauv.m's n_d, rpm.
+const RPM: f64 = 1300.0;
+
+fn scene_text() -> String {
+    std::fs::read_to_string(SCENE).unwrap()
+}
+
+fn parse(text: &str) -> Result<VehicleScene, String> {
+    match AnyScene::parse(text, "nps_auv2.toml", Path::new(".")) {
+        Ok(AnyScene::Vehicle(scene)) => Ok(*scene),
+        Ok(_) => Err("not read as a vehicle".into()),
+        Err(e) => Err(e.to_string()),
+    }
+}
+
+fn nps() -> VehicleScene {
+    parse(&scene_text()).unwrap()
+}
+
+fn run_with(
+    scene: &VehicleScene,
+    model: &VehicleModel,
+    m: &VehicleManoeuvre,
+    start: [f64; 15],
+) -> VehicleRun {
+    let stepping = (&scene.stepper, scene.every);
+    manoeuvre::run(model, &scene.fins, m, start, stepping, |_| true).unwrap()
+}
+
+/// The propeller's shaft speed at the setting, rad/s.
+fn shaft_speed() -> f64 {
+    RPM / 60.0 * 2.0 * std::f64::consts::PI
+}
+
+#[test]
+fn the_nps_scene_holds_npsauv_m_s_numbers_bit_for_bit() {
+    let scene = nps();
+    let table = &scene.table;
+    let text = scene_text();
+    let mut held = 0;
+    for (name, value) in SOURCE {
+        if LEFT_OUT.contains(&name) {
+            assert!(text.contains(name), "{name} left out but not said");
+            assert!(!table.coefficients.contains_key(name), "{name}");
+            continue;
+        }
+        let given = (table.added_mass.get(name))
+            .or_else(|| table.coefficients.get(name))
+            .unwrap_or_else(|| panic!("{name} missing"));
+        assert_eq!(given.to_bits(), value.to_bits(), "{name}");
+        held += 1;
+    }
+    // Every number of the table is the source's, but X_uu = −Cd0 of its propeller law.
+    assert_eq!(table.added_mass.len() + table.coefficients.len(), held + 1);
+    assert_eq!(table.coefficients["Xuu"].to_bits(), (-CD0).to_bits());
+    let prime = table.prime.unwrap();
+    assert_eq!((prime.density, prime.length), (RHO, LENGTH));
+    assert_eq!((table.weight, table.buoyancy), (WEIGHT, WEIGHT));
+    assert_eq!(table.mass.to_bits(), (WEIGHT / G).to_bits());
+    assert_eq!(table.centre_of_gravity, [0.0, 0.0, 0.061]);
+    assert_eq!(table.centre_of_buoyancy, [0.0; 3]);
+    assert_eq!(table.inertia, [2038.0, 13587.0, 13587.0]);
+    // The thrust of X = ½ρL²Cd0(prop|prop| − 1)u², prop = 0.012n/u, at the setting.
+    let propeller = table.propeller.unwrap();
+    let thrust = 0.5 * RHO * LENGTH.powi(2) * CD0 * (0.012 * shaft_speed()).powi(2);
+    assert_eq!(propeller.thrust.to_bits(), thrust.to_bits());
+    assert_eq!(propeller.torque, 0.0);
+}
+
+/// At prop = 0.012n/u = 1 the thrust meets the resistance: u = 0.012n.
+#[test]
+fn the_cruise_is_the_propeller_law_s_speed_and_holds() {
+    let scene = nps();
+    let start = scene.start().unwrap();
+    let cruise = CruiseSummary::new(&scene, &start);
+    println!("{cruise:#?}");
+    let law = 0.012 * shaft_speed();
+    let closed = cruise.speed_closed_form_m_s.unwrap();
+    // The closed form from the scene's rounded thrust: rounding only.
+    assert!((closed - law).abs() < 1e-14, "{closed} against {law}");
+    // Newton stops when u̇ < 1e-13 m/s²; ∂u̇/∂u = −2·½ρL²Cd0·u/(M − ½ρL³X′_u̇) ≈ −0.03 /s, so
+    // u is within 4e-12 m/s of the trim.
+    assert!((cruise.speed_m_s - law).abs() < 1e-11, "{cruise:?}");
+    // No propeller torque, no products of inertia: no roll trim.
+    assert_eq!(cruise.roll_deg, 0.0);
+    // Ten seconds of it (before the first step) leave it where it was.
+    let run = run_with(&scene, &scene.model, &scene.manoeuvres[0], start);
+    let before = run.ends[0];
+    assert_eq!(before.t, 10.0);
+    for (i, (a, b)) in before.state.iter().zip(&start).enumerate() {
+        let moved = if i == 6 { a - b - law * 10.0 } else { a - b };
+        assert!(moved.abs() < 1e-9, "state {i} moved by {moved:e}");
+    }
+}
+
+/// The steady turn of the linear sway and yaw equations in the prime system (U = u, x_G = 0):
+/// Y′_v v′ + (Y′_r − m′) r′ + Y′_δ δ = 0 and N′_v v′ + N′_r r′ + N′_δ δ = 0, so
+/// r′ = δ (Y′_v N′_δ − Y′_δ N′_v)/(N′_v(Y′_r − m′) − Y′_v N′_r), r = r′u/L.
+fn linear_yaw_rate(table: &eom::vehicle::VehicleTable, rudder: f64, u: f64) -> f64 {
+    let c = |name: &str| table.coefficients[name];
+    let m = table.mass / (0.5 * RHO * LENGTH.powi(3));
+    let (yv, yr, yd) = (c("Yv"), c("Yr"), c("Ydr"));
+    let (nv, nr, nd) = (c("Nv"), c("Nr"), c("Ndr"));
+    let r_prime = rudder * (yv * nd - yd * nv) / (nv * (yr - m) - yv * nr);
+    r_prime * u / LENGTH
+}
+
+#[test]
+fn a_small_rudder_step_turns_at_the_linear_sway_yaw_closed_form() {
+    let scene = nps();
+    let start = scene.start().unwrap();
+    let mut errors = Vec::new();
+    for degrees in [0.5, 1.0] {
+        let step = VehicleManoeuvre {
+            steps: eom::vehicle::FinSteps::new(vec![10.0], vec![[f64::to_radians(degrees), 0.0]])
+                .unwrap(),
+            ..scene.manoeuvres[0].clone()
+        };
+        let run = run_with(&scene, &scene.model, &step, start);
+        let end = run.ends.last().unwrap().state;
+        let closed = linear_yaw_rate(&scene.table, degrees.to_radians(), end[0]);
+        let error = end[5] / closed - 1.0;
+        println!(
+            "δ_r = {degrees}°: r = {:.6} °/s at {:.4} m/s, closed form {:.6} °/s, relative {error:e}",
+            end[5].to_degrees(),
+            end[0],
+            closed.to_degrees()
+        );
+        errors.push(error);
+    }
+    // The couplings the closed form leaves out (roll, heave and pitch, the speed's own change)
+    // are of second order in δ: the error is small and scales by about four from 0.5° to 1°.
+    assert!(errors[1].abs() < 1e-3, "{errors:?}");
+    let ratio = errors[1] / errors[0];
+    assert!((3.0..5.0).contains(&ratio), "{errors:?}");
+}
+
+#[test]
+fn the_ten_degree_turn_converges_and_port_and_starboard_mirror() {
+    let scene = nps();
+    let start = scene.start().unwrap();
+    let turn = &scene.manoeuvres[1];
+    let run = run_with(&scene, &scene.model, turn, start);
+    let figures = StepFigures::of(&run);
+    for f in &figures {
+        println!("{f:?}");
+    }
+    let steady = figures[1];
+    assert_eq!(
+        (steady.from_s, steady.to_s, steady.rudder_deg),
+        (10.0, 110.0, 10.0)
+    );
+    assert!(steady.yaw_rate_deg_s < -1.0, "{steady:?}");
+    // Converged: half the step moves no figure by more than 1e-6 (RK4 at 0.02 s).
+    let mut finer = scene.clone();
+    finer.stepper = scene.stepper.refined();
+    let refined = StepFigures::of(&run_with(&finer, &scene.model, turn, start));
+    let difference = largest_difference(&figures, &refined);
+    println!("half-step difference {difference:e}");
+    assert!(difference < 1e-6, "{difference:e}");
+    // The table has no propeller torque and no products of inertia: the port turn is the
+    // starboard one reflected in the x–z plane (v, p, r, y, q1, q3 and the fins change sign).
+    let port = VehicleManoeuvre {
+        steps: turn.steps.mirrored(),
+        ..turn.clone()
+    };
+    let mirrored = run_with(&scene, &scene.model, &port, start);
+    let sign = |i: usize| {
+        if [1, 3, 5, 7, 10, 12, 13, 14].contains(&i) {
+            -1.0
+        } else {
+            1.0
+        }
+    };
+    let mut worst: f64 = 0.0;
+    for (x, y) in run.ends.iter().zip(&mirrored.ends) {
+        for i in 0..15 {
+            worst = worst.max((x.state[i] - sign(i) * y.state[i]).abs());
+        }
+    }
+    println!("largest mirror difference {worst:e}");
+    assert!(worst < 1e-9, "{worst:e}");
+}
+
+#[test]
+fn the_folded_table_is_shown_in_prime_units() {
+    let scene = nps();
+    let xwq = (scene.model.folded().iter())
+        .find(|r| r.name.as_deref() == Some("Xwq"))
+        .unwrap();
+    // Xwq = Z′_ẇ: −0.24 implied against −0.2 printed.
+    assert_eq!((xwq.printed, xwq.implied), (Some(-0.2), -0.24));
+}
+
+/// The scene with `from` replaced by `to` (which must be there).
+fn edited(from: &str, to: &str) -> String {
+    let text = scene_text();
+    assert!(text.contains(from), "{from}");
+    text.replacen(from, to, 1)
+}
+
+#[test]
+fn a_bad_prime_table_is_refused_naming_the_key() {
+    let length = "length = 5.3                          # L, m\n";
+    let density = "density = 1025.0                      # rho, kg/m³\n";
+    let cases = [
+        (length, "", "hydrodynamics.length"),
+        (density, "", "hydrodynamics.density"),
+        ("length = 5.3", "length = -5.3", "hydrodynamics.length"),
+        (
+            "units = \"prime\"",
+            "units = \"metric\"",
+            "hydrodynamics.units",
+        ),
+        (
+            "units = \"prime\"",
+            "units = \"dimensional\"",
+            "hydrodynamics.density",
+        ),
+        (
+            "Yv = -1.0e-1",
+            "Yv = -1.0e-1\nYuvr = 1.0",
+            "hydrodynamics.coefficients.Yuvr",
+        ),
+        (
+            "Yv = -1.0e-1",
+            "Yv = -1.0e-1\nYuv = 1.0",
+            "hydrodynamics.coefficients.Yv",
+        ),
+    ];
+    for (from, to, key) in cases {
+        let error = parse(&edited(from, to))
+            .err()
+            .unwrap_or_else(|| panic!("{to} accepted"));
+        println!("{error}");
+        assert!(error.contains(&format!("`{key}`")), "{to}: {error}");
+    }
+    let missing = parse(&edited(length, "")).unwrap_err();
+    assert!(missing.contains("the prime system needs L"), "{missing}");
+    let three = parse(&edited("Yv = -1.0e-1", "Yv = -1.0e-1\nYuvr = 1.0")).unwrap_err();
+    assert!(three.contains("prime system"), "{three}");
+    let same = parse(&edited("Yv = -1.0e-1", "Yv = -1.0e-1\nYuv = 1.0")).unwrap_err();
+    assert!(same.contains("`Yuv` and `Yv`"), "{same}");
+}
