@@ -289,17 +289,11 @@ fn the_ten_degree_turn_converges_and_port_and_starboard_mirror() {
         ..turn.clone()
     };
     let mirrored = run_with(&scene, &scene.model, &port, start);
-    let sign = |i: usize| {
-        if [1, 3, 5, 7, 10, 12, 13, 14].contains(&i) {
-            -1.0
-        } else {
-            1.0
-        }
-    };
     let mut worst: f64 = 0.0;
     for (x, y) in run.ends.iter().zip(&mirrored.ends) {
-        for i in 0..15 {
-            worst = worst.max((x.state[i] - sign(i) * y.state[i]).abs());
+        let reflected = manoeuvre::mirrored(&y.state);
+        for (a, b) in x.state.iter().zip(reflected) {
+            worst = worst.max((a - b).abs());
         }
     }
     println!("largest mirror difference {worst:e}");

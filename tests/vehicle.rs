@@ -172,18 +172,12 @@ fn port_and_starboard_turns_mirror_each_other_without_propeller_torque() {
         run_with(&scene, &model, starboard, start),
         run_with(&scene, &model, &port, start),
     );
-    // Reflected in the x–z plane: v, p, r, y, q1, q3 and the fins change sign.
-    let sign = |i: usize| {
-        if [1, 3, 5, 7, 10, 12, 13, 14].contains(&i) {
-            -1.0
-        } else {
-            1.0
-        }
-    };
+    // Reflected in the x–z plane (manoeuvre::mirrored).
     let mut worst: f64 = 0.0;
     for (x, y) in a.ends.iter().zip(&b.ends) {
-        for i in 0..15 {
-            worst = worst.max((x.state[i] - sign(i) * y.state[i]).abs());
+        let reflected = manoeuvre::mirrored(&y.state);
+        for (a, b) in x.state.iter().zip(reflected) {
+            worst = worst.max((a - b).abs());
         }
     }
     println!("largest mirror difference {worst:e}");

@@ -5,7 +5,10 @@ use eom_cli::eval::evaluate;
 use eom::mass::{BodyFile, Mesh, MeshMass};
 use eom::models::{Family, Kinematics, Symmetry};
 use eom::run::{Row, Sink};
-use eom::scene::{Problem, Scene, SceneError, sweep};
+use eom::scene::{AnyScene, Problem, Scene, SceneError, sweep};
+use eom::ship::ShipScene;
+use eom::vehicle::VehicleScene;
+use eom::vehicle::manoeuvre::VehicleManoeuvre;
 use nalgebra::Vector3;
 use std::io::Cursor;
 use std::path::{Path, PathBuf};
@@ -76,14 +79,50 @@ fn accepted(scene: &Scene) {
     }
 }
 
-/// A scene's text: read, checked, its sweep's cases made, and what is accepted run briefly.
+/// A vehicle scene read: its model was built and proved; the cruise found and 0.05 s of its
+/// first manoeuvre run, at most 200 steps.
+fn vehicle_accepted(scene: &VehicleScene) {
+    let first = &scene.manoeuvres[0];
+    let short = VehicleManoeuvre {
+        duration: first.duration.min(0.05),
+        ..first.clone()
+    };
+    let mut stepper = scene.stepper.clone();
+    stepper.step = stepper.step.map(|step| step.max(short.duration / 200.0));
+    let every = scene.every.max(short.duration / 10.0);
+    let result = scene.start().and_then(|start| {
+        eom::vehicle::manoeuvre::run(
+            &scene.model,
+            &scene.fins,
+            &short,
+            start,
+            (&stepper, every),
+            |sample| sample.t.is_finite(),
+        )
+    });
+    if let Err(error) = result {
+        assert!(!error.to_string().trim().is_empty());
+    }
+}
+
+/// A ship scene read: its model was built and proved.
+fn ship_accepted(scene: &ShipScene) {
+    if let Err(error) = eom::ship::ShipModel::new(&scene.table) {
+        assert!(!error.to_string().trim().is_empty());
+    }
+}
+
+/// A scene's text through the one reader of every scene: read, checked, its sweep's cases
+/// made, and what is accepted run briefly.
 pub fn scene_text(text: &str) {
     if names_a_device(text) {
         return;
     }
     let base = scenes();
-    match Scene::parse(text, "fuzz.toml", &base) {
-        Ok(scene) => accepted(&scene),
+    match AnyScene::parse(text, "fuzz.toml", &base) {
+        Ok(AnyScene::Catalog(scene)) => accepted(&scene),
+        Ok(AnyScene::Ship(scene)) => ship_accepted(&scene),
+        Ok(AnyScene::Vehicle(scene)) => vehicle_accepted(&scene),
         Err(error) => scene_error(&error),
     }
     match sweep::cases(text, "fuzz.toml") {

@@ -94,6 +94,20 @@ impl Sample {
     }
 }
 
+/// The state reflected in the body's x–z plane: v, p, r, y, q1, q3 and the fins change sign.
+/// A vehicle symmetric about that plane, without a propeller torque, runs a manoeuvre's mirror
+/// ([`FinSteps::mirrored`]) through the mirrored states.
+pub fn mirrored(state: &[f64; 15]) -> [f64; 15] {
+    const ODD: [usize; 8] = [1, 3, 5, 7, 10, 12, 13, 14];
+    std::array::from_fn(|i| {
+        if ODD.contains(&i) {
+            -state[i]
+        } else {
+            state[i]
+        }
+    })
+}
+
 /// Roll, pitch and yaw (φ, θ, ψ, rad; Z·Y·X) of the state's quaternion, scaled to unit length.
 pub fn euler_angles(state: &[f64; 15]) -> [f64; 3] {
     let [q0, q1, q2, q3] = [state[9], state[10], state[11], state[12]];
