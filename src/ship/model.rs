@@ -78,6 +78,7 @@ impl ShipModel {
         })?;
         let functions = Functions::of(&program)
             .map_err(|what| ShipError::invalid("hydrodynamics", format!("no {what}")))?;
+        let functions = functions.compile(&interpreter);
         Ok(ShipModel {
             functions,
             speed_input: system.inputs.iter().position(|i| *i == "U"),
@@ -87,6 +88,17 @@ impl ShipModel {
         })
     }
 
+    /// The program's variables at `state` with the rudder moving at `delta_rate`: the state,
+    /// δ̇, U.
+    fn variables<T: SimdRealField + Copy>(state: &[T; 7], delta_rate: T) -> [T; 9] {
+        let speed = (state[0] * state[0] + state[1] * state[1]).simd_sqrt();
+        let mut variables = [T::zero(); 9];
+        variables[..7].copy_from_slice(state);
+        variables[7] = delta_rate;
+        variables[8] = speed;
+        variables
+    }
+
     /// The outputs of `plan` at `state` with the rudder moving at `delta_rate`.
     fn evaluate<'a, T: SimdRealField + Copy>(
         &self,
@@ -94,12 +106,7 @@ impl ShipModel {
         state: &[T; 7],
         delta_rate: T,
     ) -> impl Iterator<Item = T> + use<'a, T> {
-        let speed = (state[0] * state[0] + state[1] * state[1]).simd_sqrt();
-        let mut variables = [T::zero(); 9];
-        variables[..7].copy_from_slice(state);
-        variables[7] = delta_rate;
-        variables[8] = speed;
-        self.program.evaluate(plan, &variables)
+        (self.program).evaluate(plan, &Self::variables(state, delta_rate))
     }
 
     /// ∂f/∂x and ∂f/∂δ̇ of the model, dense: the proved Jacobian programs scattered by their
@@ -137,6 +144,30 @@ impl ShipModel {
     /// How many terms of the polynomial the model carries.
     pub fn terms(&self) -> usize {
         self.terms
+    }
+
+    /// Whether the proved program runs as machine code compiled when the model was built
+    /// (in f64, with the feature `jit`), rather than by the interpreter.
+    pub fn is_compiled(&self) -> bool {
+        self.functions.is_compiled()
+    }
+
+    /// The same model evaluated by the interpreter of its proved program: the reference the
+    /// compiled code is checked against, bit for bit.
+    pub fn interpreted(&self) -> ShipModel {
+        ShipModel {
+            functions: self.functions.interpreted(),
+            ..self.clone()
+        }
+    }
+
+    /// The same model with its proved program compiled to machine code (the interpreter's
+    /// when the program cannot be compiled): what [`ShipModel::new`] builds.
+    pub fn compiled(&self) -> ShipModel {
+        ShipModel {
+            functions: self.functions.clone().compile(&self.program),
+            ..self.clone()
+        }
     }
 }
 
@@ -177,8 +208,10 @@ impl<T: SimdRealField + Copy> Model<T, 7, 1> for ShipModel {
 
     /// The rates of the state with the rudder moving at `input[0]`: the proved program.
     fn rhs(&self, state: &[T; 7], input: &[T; 1]) -> [T; 7] {
-        let mut rates = self.evaluate(&self.functions.rhs, state, input[0]);
-        std::array::from_fn(|_| rates.next().unwrap_or_else(T::zero))
+        let variables = Self::variables(state, input[0]);
+        let mut rates = [T::zero(); 7];
+        (self.program).evaluate_into(&self.functions.rhs, &variables, &mut rates);
+        rates
     }
 
     /// The rigid body's kinetic energy ½M(u² + (v + x_G r)²) + ½I_z r² (4.32 about G, with

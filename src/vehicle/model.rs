@@ -177,7 +177,8 @@ impl VehicleModel {
             VehicleError::invalid("hydrodynamics", format!("the program reads `{name}`"))
         })?;
         let functions = Functions::of(&program)
-            .map_err(|what| VehicleError::invalid("hydrodynamics", format!("no {what}")))?;
+            .map_err(|what| VehicleError::invalid("hydrodynamics", format!("no {what}")))?
+            .compile(&interpreter);
         Ok(VehicleModel {
             functions,
             inputs,
@@ -191,10 +192,7 @@ impl VehicleModel {
     /// The program's variables at `state`: the generator's state, then its inputs.
     fn variables<T: SimdRealField + Copy>(&self, state: &[T; 15]) -> Vec<T> {
         let mut variables = state[..BODY].to_vec();
-        variables.extend(self.inputs.iter().map(|input| match *input {
-            Variable::Fin(i) => state[i],
-            Variable::Absolute(i) => state[i].simd_abs(),
-        }));
+        variables.extend(self.inputs.iter().map(|input| input.value(state)));
         variables
     }
 
@@ -238,6 +236,40 @@ impl VehicleModel {
     pub fn folded(&self) -> &[FoldedComparison] {
         &self.folded
     }
+
+    /// Whether the proved program runs as machine code compiled when the model was built
+    /// (in f64, with the feature `jit`), rather than by the interpreter.
+    pub fn is_compiled(&self) -> bool {
+        self.functions.is_compiled()
+    }
+
+    /// The same model evaluated by the interpreter of its proved program: the reference the
+    /// compiled code is checked against, bit for bit.
+    pub fn interpreted(&self) -> VehicleModel {
+        VehicleModel {
+            functions: self.functions.interpreted(),
+            ..self.clone()
+        }
+    }
+
+    /// The same model with its proved program compiled to machine code (the interpreter's
+    /// when the program cannot be compiled): what [`VehicleModel::new`] builds.
+    pub fn compiled(&self) -> VehicleModel {
+        VehicleModel {
+            functions: self.functions.clone().compile(&self.program),
+            ..self.clone()
+        }
+    }
+}
+
+impl Variable {
+    /// Its value at `state`.
+    fn value<T: SimdRealField + Copy>(self, state: &[T; 15]) -> T {
+        match self {
+            Variable::Fin(i) => state[i],
+            Variable::Absolute(i) => state[i].simd_abs(),
+        }
+    }
 }
 
 fn input_variable(name: &str) -> Result<Variable, VehicleError> {
@@ -266,13 +298,28 @@ impl<T: SimdRealField + Copy> Model<T, 15, 2> for VehicleModel {
     /// The rates of the state with the fins moving at `input`: the proved program, and the
     /// fins' rates.
     fn rhs(&self, state: &[T; 15], input: &[T; 2]) -> [T; 15] {
-        let variables = self.variables(state);
-        let mut rates = self.program.evaluate(&self.functions.rhs, &variables);
-        std::array::from_fn(|i| match i {
-            13 => input[0],
-            14 => input[1],
-            _ => rates.next().unwrap_or_else(T::zero),
-        })
+        // The variables on the stack when they fit (the generator's state and up to eight
+        // inputs), as the rates are: a call allocates nothing.
+        let mut variables = [T::zero(); BODY + 8];
+        let count = BODY + self.inputs.len();
+        let mut rates = [T::zero(); 15];
+        if count <= variables.len() {
+            variables[..BODY].copy_from_slice(&state[..BODY]);
+            for (variable, input) in variables[BODY..].iter_mut().zip(&self.inputs) {
+                *variable = input.value(state);
+            }
+            (self.program).evaluate_into(
+                &self.functions.rhs,
+                &variables[..count],
+                &mut rates[..BODY],
+            );
+        } else {
+            let variables = self.variables(state);
+            (self.program).evaluate_into(&self.functions.rhs, &variables, &mut rates[..BODY]);
+        }
+        rates[13] = input[0];
+        rates[14] = input[1];
+        rates
     }
 
     /// T = ½M|v + ω × r_G|² + ½ωᵀ I_G ω + ½νᵀM_Aν, the body's and the fluid's, in J: the
