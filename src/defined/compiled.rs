@@ -22,7 +22,7 @@
 
 use super::{Functions, Interpreter, Op, Plan};
 use cranelift_codegen::ir::{
-    AbiParam, InstBuilder, MemFlags, StackSlotData, StackSlotKind, Value, types,
+    AbiParam, InstBuilder, MemFlags, Signature, StackSlotData, StackSlotKind, Value, types,
 };
 use cranelift_codegen::isa::OwnedTargetIsa;
 use cranelift_codegen::settings::{self, Configurable};
@@ -247,8 +247,8 @@ impl Compiler {
         builder.switch_to_block(block);
         builder.seal_block(block);
         let params = builder.block_params(block).to_vec();
-        let mut body = Body::new(&mut builder, pointer, [params[0], params[1], params[2]]);
-        body.emit(ops, plan)?;
+        let arguments = [params[0], params[1], params[2]];
+        Body::new(&mut builder, pointer, arguments, ops).emit(plan)?;
         builder.ins().return_(&[]);
         builder.finalize();
         (self.module.define_function(id, &mut context)).map_err(generation)?;
@@ -277,63 +277,72 @@ impl Compiler {
 }
 
 /// The body of one function being written: the nodes' values so far.
-struct Body<'a, 'b> {
+struct Body<'a, 'b, 'o> {
     builder: &'a mut FunctionBuilder<'b>,
     pointer: types::Type,
     /// Variables, values, outputs.
     arguments: [Value; 3],
-    /// Each node's value, once emitted.
+    ops: &'o [Op],
+    /// Each `Value` node's position among the interpreter's values.
+    slots: Vec<usize>,
+    /// Each node's value, once emitted (not the loads: see [`Body::operand`]).
     nodes: Vec<Option<Value>>,
     /// Each angle's sine and cosine, once computed.
     trig: Vec<Option<(Value, Value)>>,
 }
 
-impl<'a, 'b> Body<'a, 'b> {
+impl<'a, 'b, 'o> Body<'a, 'b, 'o> {
     fn new(
         builder: &'a mut FunctionBuilder<'b>,
         pointer: types::Type,
         arguments: [Value; 3],
+        ops: &'o [Op],
     ) -> Self {
         Body {
             builder,
             pointer,
             arguments,
-            nodes: Vec::new(),
-            trig: Vec::new(),
+            ops,
+            slots: value_slots(ops),
+            nodes: vec![None; ops.len()],
+            trig: vec![None; ops.len()],
         }
     }
 
-    /// The plan's nodes in order, each one operation, then its outputs stored.
-    fn emit(&mut self, ops: &[Op], plan: &Plan) -> Result<(), CompileError> {
-        self.nodes = vec![None; ops.len()];
-        self.trig = vec![None; ops.len()];
-        let slots = value_slots(ops);
-        let flags = MemFlags::trusted();
-        for &index in &plan.needed {
-            let value = match ops[index] {
-                Op::Variable(i) => self.load(0, i)?,
-                Op::Value(_) => self.load(1, slots[index])?,
+    /// The plan's nodes, each one operation, then its outputs stored. The sines and cosines
+    /// and what their angles need come first: a call clobbers every vector register, so
+    /// nothing else should be live across it.
+    fn emit(&mut self, plan: &Plan) -> Result<(), CompileError> {
+        let early = trig_first(self.ops, plan);
+        let order = (plan.needed.iter()).filter(|&&i| early[i]);
+        let rest = (plan.needed.iter()).filter(|&&i| !early[i]);
+        for &index in order.chain(rest) {
+            let value = match self.ops[index] {
+                // Read where they are used, as a memory operand where one fits: read once
+                // into a register at the start, they would be held, or spilled and read
+                // back, across the whole function.
+                Op::Variable(_) | Op::Value(_) => continue,
                 Op::Sin(a) => self.sin_cos(a)?.0,
                 Op::Cos(a) => self.sin_cos(a)?.1,
                 Op::Recip(a) => {
                     let one = self.builder.ins().f64const(1.0);
-                    let x = self.node(a)?;
+                    let x = self.operand(a)?;
                     self.builder.ins().fdiv(one, x)
                 }
                 Op::Neg(a) => {
-                    let x = self.node(a)?;
+                    let x = self.operand(a)?;
                     self.builder.ins().fneg(x)
                 }
                 Op::Add(a, b) => {
-                    let (x, y) = (self.node(a)?, self.node(b)?);
+                    let (x, y) = (self.operand(a)?, self.operand(b)?);
                     self.builder.ins().fadd(x, y)
                 }
                 Op::Sub(a, b) => {
-                    let (x, y) = (self.node(a)?, self.node(b)?);
+                    let (x, y) = (self.operand(a)?, self.operand(b)?);
                     self.builder.ins().fsub(x, y)
                 }
                 Op::Mul(a, b) => {
-                    let (x, y) = (self.node(a)?, self.node(b)?);
+                    let (x, y) = (self.operand(a)?, self.operand(b)?);
                     self.builder.ins().fmul(x, y)
                 }
                 // An operation added to the interpreter after this compiler was written is
@@ -344,23 +353,31 @@ impl<'a, 'b> Body<'a, 'b> {
             self.nodes[index] = Some(value);
         }
         for (k, &output) in plan.outputs.iter().enumerate() {
-            let value = self.node(output)?;
+            let value = self.operand(output)?;
             let offset = offset(k)?;
-            (self.builder.ins()).store(flags, value, self.arguments[2], offset);
+            (self.builder.ins()).store(MemFlags::trusted(), value, self.arguments[2], offset);
         }
         Ok(())
     }
 
-    /// The value of node `index`, emitted before it (the arena's order).
-    fn node(&self, index: usize) -> Result<Value, CompileError> {
-        (self.nodes.get(index).copied().flatten()).ok_or(CompileError::Operation(index))
+    /// The value of node `index` for one use: a variable or a value read here, another node
+    /// as emitted before (the arena's order).
+    fn operand(&mut self, index: usize) -> Result<Value, CompileError> {
+        match self.ops.get(index) {
+            Some(&Op::Variable(i)) => self.load(0, i),
+            Some(Op::Value(_)) => self.load(1, self.slots[index]),
+            _ => (self.nodes.get(index).copied().flatten()).ok_or(CompileError::Operation(index)),
+        }
     }
 
     /// Entry `i` of the argument `which` (0: variables, 1: values).
     fn load(&mut self, which: usize, i: usize) -> Result<Value, CompileError> {
         let offset = offset(i)?;
         let base = self.arguments[which];
-        Ok((self.builder.ins()).load(types::F64, MemFlags::trusted(), base, offset))
+        // Nothing the function writes is read (the outputs are apart), so a read can move to
+        // where it is used, and two of the same place are one.
+        let flags = MemFlags::trusted().with_readonly().with_can_move();
+        Ok((self.builder.ins()).load(types::F64, flags, base, offset))
     }
 
     /// `(sin, cos)` of node `angle`, by one call of the kernel per angle.
@@ -368,12 +385,12 @@ impl<'a, 'b> Body<'a, 'b> {
         if let Some(pair) = self.trig[angle] {
             return Ok(pair);
         }
-        let x = self.node(angle)?;
+        let x = self.operand(angle)?;
         let b = &mut *self.builder;
-        let slot =
-            b.create_sized_stack_slot(StackSlotData::new(StackSlotKind::ExplicitSlot, 16, 3));
+        let slot = StackSlotData::new(StackSlotKind::ExplicitSlot, 16, 3);
+        let slot = b.create_sized_stack_slot(slot);
         let out = b.ins().stack_addr(self.pointer, slot, 0);
-        let mut signature = cranelift_codegen::ir::Signature::new(b.func.signature.call_conv);
+        let mut signature = Signature::new(b.func.signature.call_conv);
         signature.params = vec![AbiParam::new(types::F64), AbiParam::new(self.pointer)];
         let signature = b.import_signature(signature);
         let address = sin_cos as extern "C" fn(f64, *mut f64) as usize;
@@ -384,6 +401,26 @@ impl<'a, 'b> Body<'a, 'b> {
         self.trig[angle] = Some((sin, cos));
         Ok((sin, cos))
     }
+}
+
+/// Which of `plan`'s nodes are sines, cosines, or what their angles are computed from.
+fn trig_first(ops: &[Op], plan: &Plan) -> Vec<bool> {
+    let mut early = vec![false; ops.len()];
+    for &index in plan.needed.iter().rev() {
+        let trig = matches!(ops[index], Op::Sin(_) | Op::Cos(_));
+        if trig || early[index] {
+            early[index] = true;
+            let children = match ops[index] {
+                Op::Sin(a) | Op::Cos(a) | Op::Recip(a) | Op::Neg(a) => vec![a],
+                Op::Add(a, b) | Op::Sub(a, b) | Op::Mul(a, b) => vec![a, b],
+                _ => vec![],
+            };
+            for child in children {
+                early[child] = true;
+            }
+        }
+    }
+    early
 }
 
 /// The byte offset of f64 number `i`.

@@ -89,13 +89,14 @@ impl ShipModel {
     }
 
     /// The program's variables at `state` with the rudder moving at `delta_rate`: the state,
-    /// δ̇, U.
-    fn variables<T: SimdRealField + Copy>(state: &[T; 7], delta_rate: T) -> [T; 9] {
-        let speed = (state[0] * state[0] + state[1] * state[1]).simd_sqrt();
+    /// δ̇, U (zero where the program does not read it: a table in SI).
+    fn variables<T: SimdRealField + Copy>(&self, state: &[T; 7], delta_rate: T) -> [T; 9] {
         let mut variables = [T::zero(); 9];
         variables[..7].copy_from_slice(state);
         variables[7] = delta_rate;
-        variables[8] = speed;
+        if self.speed_input.is_some() {
+            variables[8] = (state[0] * state[0] + state[1] * state[1]).simd_sqrt();
+        }
         variables
     }
 
@@ -106,7 +107,7 @@ impl ShipModel {
         state: &[T; 7],
         delta_rate: T,
     ) -> impl Iterator<Item = T> + use<'a, T> {
-        (self.program).evaluate(plan, &Self::variables(state, delta_rate))
+        (self.program).evaluate(plan, &self.variables(state, delta_rate))
     }
 
     /// ∂f/∂x and ∂f/∂δ̇ of the model, dense: the proved Jacobian programs scattered by their
@@ -208,7 +209,7 @@ impl<T: SimdRealField + Copy> Model<T, 7, 1> for ShipModel {
 
     /// The rates of the state with the rudder moving at `input[0]`: the proved program.
     fn rhs(&self, state: &[T; 7], input: &[T; 1]) -> [T; 7] {
-        let variables = Self::variables(state, input[0]);
+        let variables = self.variables(state, input[0]);
         let mut rates = [T::zero(); 7];
         (self.program).evaluate_into(&self.functions.rhs, &variables, &mut rates);
         rates
