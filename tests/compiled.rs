@@ -1,6 +1,7 @@
 //! The scene-defined models compiled to machine code when the scene is read, against the
 //! interpreter of the same proved program: every output bit for bit on random states, for the
-//! Mariner's 39-term table and REMUS's six degrees of freedom.
+//! Mariner's 39-term table and REMUS's six degrees of freedom; and a ship re-parameterised
+//! without deriving, proving or compiling again, against the ship built from its values.
 
 use eom::Model;
 use eom::scene::AnyScene;
@@ -167,4 +168,43 @@ fn other_number_types_are_interpreted() {
     let (a, b) = (model.rhs(&state, &[0.01]), reference.rhs(&state, &[0.01]));
     assert_eq!(a.map(f32::to_bits), b.map(f32::to_bits));
     assert!(a.iter().all(|x| x.is_finite()));
+}
+
+/// The Mariner's table with every term and added mass scaled by its own factor.
+fn perturbed(table: &eom::ship::table::ShipTable, seed: u64) -> eom::ship::table::ShipTable {
+    let mut random = Random(seed);
+    let mut table = table.clone();
+    for value in table.terms.values_mut().chain(table.added_mass.iter_mut()) {
+        *value *= 1.0 + within(&mut random, 0.2);
+    }
+    table
+}
+
+/// A model re-parameterised with another table's values (the program proved and compiled
+/// once, its values read at each call) is the model built from that table, bit for bit.
+#[test]
+fn a_model_with_other_values_is_the_model_of_those_values() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/mariner.toml");
+    let table = ShipScene::load(Path::new(path)).unwrap().table;
+    let base = ShipModel::new(&table).unwrap();
+    let other = perturbed(&table, 0x5EED_0004);
+    let (reused, built) = (
+        base.with_table(&other).unwrap(),
+        ShipModel::new(&other).unwrap(),
+    );
+    assert!(reused.is_compiled());
+    let mut random = Random(0x5EED_0005);
+    let mut changed = 0;
+    for _ in 0..1000 {
+        let (state, input) = ship_state(&mut random);
+        let rates = reused.rhs(&state, &input);
+        assert_eq!(differing(rates, built.rhs(&state, &input)), 0);
+        changed += differing(rates, base.rhs(&state, &input));
+    }
+    assert!(changed > 1000, "the values changed the rates: {changed}");
+    // A table of other terms is another program.
+    let mut fewer = table.clone();
+    let first = *fewer.terms.keys().next().unwrap();
+    fewer.terms.remove(&first);
+    assert!(base.with_table(&fewer).is_err());
 }

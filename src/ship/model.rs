@@ -13,12 +13,14 @@
 use super::ShipError;
 use super::table::ShipTable;
 use crate::defined::engine::{
-    ADDED_MASS, EmitError, Operations, PRIME_SCALES, ShipSpec, Units, prove_with_jacobians, ship,
+    ADDED_MASS, EmitError, Operations, PRIME_SCALES, Program, ShipSpec, System, Units,
+    prove_with_jacobians, ship,
 };
 use crate::defined::{Functions, Interpreter, Plan, coefficient_values};
 use crate::models::Model;
 use simba::simd::SimdRealField;
 use std::collections::BTreeMap;
+use std::sync::Arc;
 
 /// The state: u, v, r (m/s, m/s, rad/s, body axes at midship), X, Y (m, midship in space
 /// axes), ψ (rad), δ (rad, the rudder angle).
@@ -49,45 +51,86 @@ const INPUT_JACOBIAN: [(usize, usize); 1] = [(6, 0)];
 pub struct ShipModel {
     program: Interpreter,
     functions: Functions,
+    /// What the table's values do not change, shared by the models of other values.
+    proved: Arc<Proved>,
     /// The column of U among the program's inputs (prime tables), after δ̇'s.
     speed_input: Option<usize>,
     operations: Operations,
     terms: usize,
 }
 
+/// The table's terms, 4.46 with them and its proved program: the same for every value of the
+/// coefficients.
+#[derive(Debug)]
+struct Proved {
+    spec: ShipSpec,
+    system: System,
+    program: Program,
+}
+
+/// The terms of `table`, its units and where its yaw inertia is taken.
+fn spec_of(table: &ShipTable) -> ShipSpec {
+    ShipSpec {
+        units: table.units,
+        yaw_inertia: table.body.yaw_inertia_about,
+        terms: table.terms.keys().copied().collect(),
+    }
+}
+
 impl ShipModel {
     /// Derives, solves and proves 4.46 with the table's terms, then resolves the program.
     pub fn new(table: &ShipTable) -> Result<Self, ShipError> {
-        let spec = ShipSpec {
-            units: table.units,
-            yaw_inertia: table.body.yaw_inertia_about,
-            terms: table.terms.keys().copied().collect(),
-        };
+        let spec = spec_of(table);
         let system = ship("ship", &spec).map_err(|e| ShipError::Build(EmitError::Model(e)))?;
         let program = prove_with_jacobians(&system)?;
-        let values = parameter_values(&spec, table);
-        let coefficients = coefficient_values(&system, &program, &values);
-        // The variables in `evaluate`'s order: the state, δ̇, U.
-        let position = |name: &str| match name {
-            "delta_rate" => Some(7),
-            "U" => Some(8),
-            _ => STATE.iter().position(|s| *s == name),
-        };
-        let interpreter = Interpreter::new(&program, &coefficients, position).map_err(|name| {
-            ShipError::invalid("hydrodynamics", format!("the program reads `{name}`"))
-        })?;
         let functions = Functions::of(&program)
             .map_err(|what| ShipError::invalid("hydrodynamics", format!("no {what}")))?;
-        let functions = functions.compile(&interpreter);
+        let proved = Proved {
+            spec,
+            system,
+            program,
+        };
+        let interpreter = interpreter(&proved, &coefficients(&proved, table))?;
         Ok(ShipModel {
-            functions,
-            speed_input: system.inputs.iter().position(|i| *i == "U"),
-            operations: program.operations(&program.rhs),
-            terms: spec.terms.len(),
+            functions: functions.compile(&interpreter),
+            speed_input: proved.system.inputs.iter().position(|i| *i == "U"),
+            operations: proved.program.operations(&proved.program.rhs),
+            terms: proved.spec.terms.len(),
             program: interpreter,
+            proved: Arc::new(proved),
         })
     }
 
+    /// The model of `table`, a table of the same terms, units and yaw-inertia convention as
+    /// this model's, with other values (a Monte Carlo case, a coefficient being fitted): the
+    /// program is the one derived, proved and compiled for this model, only its coefficients
+    /// are computed again, in microseconds where [`ShipModel::new`] takes tens of
+    /// milliseconds. A table of other terms is refused: derive and prove its own model.
+    pub fn with_table(&self, table: &ShipTable) -> Result<Self, ShipError> {
+        if spec_of(table) != self.proved.spec {
+            return Err(ShipError::invalid(
+                "hydrodynamics",
+                "the table's terms, units or yaw inertia are not the model's: build its own \
+                 model (ShipModel::new)",
+            ));
+        }
+        let coefficients = coefficients(&self.proved, table);
+        // A table that did not come through `ShipTable::new` may have a singular mass matrix.
+        let program = &self.proved.program;
+        if let Some((c, _)) = (program.coefficients.iter())
+            .zip(&coefficients)
+            .find(|(_, v)| !v.is_finite())
+        {
+            return Err(ShipError::invalid(
+                "hydrodynamics",
+                format!("the coefficient `{}` is not finite", c.value),
+            ));
+        }
+        Ok(ShipModel {
+            program: interpreter(&self.proved, &coefficients)?,
+            ..self.clone()
+        })
+    }
     /// The program's variables at `state` with the rudder moving at `delta_rate`: the state,
     /// δ̇, U (zero where the program does not read it: a table in SI).
     fn variables<T: SimdRealField + Copy>(&self, state: &[T; 7], delta_rate: T) -> [T; 9] {
@@ -170,6 +213,24 @@ impl ShipModel {
             ..self.clone()
         }
     }
+}
+
+/// The hoisted coefficients of the proved program with `table`'s values.
+fn coefficients(proved: &Proved, table: &ShipTable) -> Vec<f64> {
+    let values = parameter_values(&proved.spec, table);
+    coefficient_values(&proved.system, &proved.program, &values)
+}
+
+/// The proved program resolved with the `coefficients`' values.
+fn interpreter(proved: &Proved, coefficients: &[f64]) -> Result<Interpreter, ShipError> {
+    // The variables in `evaluate`'s order: the state, δ̇, U.
+    let position = |name: &str| match name {
+        "delta_rate" => Some(7),
+        "U" => Some(8),
+        _ => STATE.iter().position(|s| *s == name),
+    };
+    Interpreter::new(&proved.program, coefficients, position)
+        .map_err(|name| ShipError::invalid("hydrodynamics", format!("the program reads `{name}`")))
 }
 
 /// Every parameter's value by its symbol, as the table gives it; the symbols are the spec's.
