@@ -44,7 +44,7 @@ mod compiled {
 /// `vehicle::{Convention, …}`).
 pub(crate) mod engine {
     pub use eom_codegen::emit::program::{Function, Node, Program};
-    pub use eom_codegen::emit::{EmitError, Operations, prove_with_jacobians};
+    pub use eom_codegen::emit::{EmitError, Operations, f64_value, prove_with_jacobians};
     pub use eom_codegen::model::ship::{
         ADDED_MASS, Force, PRIME_SCALES, ShipSpec, Term, Units, VARIABLES, YawInertia, ship,
     };
@@ -248,7 +248,9 @@ impl Interpreter {
 }
 
 /// The hoisted coefficients, each computed once from the parameters (and the reciprocals of
-/// parameter polynomials, computed first); a parameter without a value makes NaN.
+/// parameter polynomials, computed first); a parameter without a value makes NaN. Each is
+/// computed as the emitted `Coefficients::new` computes it (`f64_value`), so the program has
+/// the bits of the same table compiled by rustc from a user's `build.rs`.
 pub(crate) fn coefficient_values(
     system: &System,
     program: &Program,
@@ -256,15 +258,15 @@ pub(crate) fn coefficient_values(
 ) -> Vec<f64> {
     let mut known = parameters.clone();
     for reciprocal in &system.reciprocals {
-        let of = reciprocal
-            .of
-            .eval(&|s| known.get(s).copied().unwrap_or(f64::NAN));
+        let of = engine::f64_value(&reciprocal.of, &|s| {
+            known.get(s).copied().unwrap_or(f64::NAN)
+        });
         known.insert(reciprocal.symbol.clone(), 1.0 / of);
     }
     let lookup = |s: &str| known.get(s).copied().unwrap_or(f64::NAN);
     program
         .coefficients
         .iter()
-        .map(|c| c.value.eval(&lookup))
+        .map(|c| engine::f64_value(&c.value, &lookup))
         .collect()
 }
