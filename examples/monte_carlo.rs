@@ -246,13 +246,20 @@ fn report(outcomes: &[Outcome], seconds: f64, manoeuvres: &[&Manoeuvre]) {
     );
     for (name, [pass, fail, unjudged]) in &counts {
         let judged = pass + fail;
-        let (lo, hi) = wilson(*pass, judged);
-        let rate = *pass as f64 / judged as f64;
         let note = if *unjudged > 0 {
             format!("  ({unjudged} not judged)")
         } else {
             String::new()
         };
+        if judged == 0 {
+            println!(
+                "  {name:<24} {judged:>8} {pass:>8} {:>10}   {:>16}{note}",
+                "—", "—"
+            );
+            continue;
+        }
+        let (lo, hi) = wilson(*pass, judged);
+        let rate = *pass as f64 / judged as f64;
         println!("  {name:<24} {judged:>8} {pass:>8} {rate:>10.4}   [{lo:.4}, {hi:.4}]{note}");
     }
     for (reason, count) in &failures {
