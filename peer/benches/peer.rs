@@ -1,7 +1,7 @@
 //! eom's generated models against SymPy's C, in one process: `cargo bench -p eom-peer`.
 //!
 //! For each of the six spatial variants (and SymPy's unit-quaternion form of the three
-//! quaternion ones), three contenders evaluate the right-hand side at the same 1024 drawn
+//! quaternion ones), four contenders evaluate the right-hand side at the same 1024 drawn
 //! states and inputs (`eom_peer::draw`, fixed seed) on the same body:
 //!
 //! - **eom**: `generated::<variant>::rhs`, wrapped in a function that is never inlined and
@@ -9,7 +9,10 @@
 //! - **SymPy-C op-by-op**: `sympy/c/<variant>.c` built `-O3 -march=native -ffp-contract=off`;
 //! - **SymPy-C FMA**: the same source built `-O3 -march=native -ffp-contract=fast`;
 //!
-//! both C builds called through an `extern "C" fn` pointer. Every entry of every output is
+//! both C builds called through an `extern "C" fn` pointer; and a fourth column, eom called the
+//! way a user's crate calls it (`fn call(k, s, u, out) { *out = rhs(k, s, u) }`, never inlined,
+//! a function of this bench's crate rather than of `eom-peer`, called directly), so that the
+//! two ways of calling eom are timed in the same rounds. Every entry of every output is
 //! read with its own volatile load and added into the checksum, so nothing is left for the
 //! optimiser to drop, and no entry is read by a load wider than the store that wrote it (such
 //! a load waits for the stores to reach the cache instead of taking their data directly; how
@@ -21,7 +24,7 @@
 //!
 //! Timing: one timing is enough passes over the states to last at least 10 ms; 11 rounds,
 //! each timing every contender of every variant once, the contenders' order turned each
-//! round, so that a change of load falls on all three alike. A contender's time is the
+//! round, so that a change of load falls on all four alike. A contender's time is the
 //! median of its 11; the ratio is SymPy-C's median over eom's (above 1: eom is faster), with
 //! the range of the 11 per-round ratios beside it.
 
@@ -166,7 +169,7 @@ const CONTENDERS: [&str; 4] = [
 /// A contender: runs the given number of passes, returns its checksum.
 type Passes = Box<dyn Fn(usize) -> f64>;
 
-/// One line of the table: a variant, its three contenders and their timings.
+/// One line of the table: a variant, its four contenders and their timings.
 struct Row {
     label: String,
     contenders: [Passes; 4],
