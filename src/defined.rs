@@ -215,7 +215,9 @@ impl Interpreter {
 
     /// The outputs of `plan` with the program's variables at `variables`, into `outputs` (as
     /// many as the plan has): by the plan's machine code in f64 when it is compiled, else by
-    /// the interpreter.
+    /// the interpreter. Inlined, so that a compiled call costs its caller a few comparisons
+    /// and the call, not the interpreter's frame.
+    #[inline]
     pub(crate) fn evaluate_into<T: SimdRealField + Copy>(
         &self,
         plan: &Plan,
@@ -227,6 +229,11 @@ impl Interpreter {
         {
             return;
         }
+        self.interpret(plan, variables, outputs);
+    }
+
+    /// The outputs of `plan` by the interpreter: each node it needs once, in order.
+    fn interpret<T: SimdRealField + Copy>(&self, plan: &Plan, variables: &[T], outputs: &mut [T]) {
         let mut values: Vec<T> = vec![T::zero(); self.ops.len()];
         for &index in &plan.needed {
             values[index] = match self.ops[index] {

@@ -10,7 +10,7 @@
 //! operation of the same operands in the same order (no fused multiply–add, no reassociation:
 //! Cranelift contracts nothing it is not asked to), 1/x is a division of one by x, and sine
 //! and cosine call the kernel function the interpreter calls (`eom_kernel::sin_cos`), once per
-//! angle for both. So its results are the interpreter's bit for bit, which the tests check on
+//! angle for both, the pair returned in two registers. So its results are the interpreter's bit for bit, which the tests check on
 //! random states.
 //!
 //! The values of the program's constants and hoisted coefficients are not in the code: the
@@ -21,10 +21,8 @@
 //! leaves the plans uncompiled, and the interpreter evaluates them.
 
 use super::{Functions, Interpreter, Op, Plan};
-use cranelift_codegen::ir::{
-    AbiParam, InstBuilder, MemFlags, Signature, StackSlotData, StackSlotKind, Value, types,
-};
-use cranelift_codegen::isa::OwnedTargetIsa;
+use cranelift_codegen::ir::{AbiParam, InstBuilder, MemFlags, Signature, Value, types};
+use cranelift_codegen::isa::{CallConv, OwnedTargetIsa};
 use cranelift_codegen::settings::{self, Configurable};
 use cranelift_frontend::{FunctionBuilder, FunctionBuilderContext};
 use cranelift_jit::{JITBuilder, JITModule};
@@ -158,6 +156,7 @@ fn variables_read(ops: &[Op], plan: &Plan) -> usize {
 
 /// Runs `machine` when `T` is f64 and the slices have the lengths it was compiled for;
 /// returns whether it ran (else the caller interprets).
+#[inline]
 pub(super) fn run<T: 'static>(
     machine: &Machine,
     values: &[f64],
@@ -184,15 +183,19 @@ pub(super) fn run<T: 'static>(
     true
 }
 
-/// `(sin x, cos x)` as the interpreter computes them, written to `out[0]`, `out[1]`: the one
-/// function the compiled code calls.
-extern "C" fn sin_cos(x: f64, out: *mut f64) {
+/// A sine and a cosine as the C convention returns a pair of doubles: in two registers on the
+/// platforms [`host`] compiles for, as Cranelift returns two f64 results.
+#[repr(C)]
+struct Pair {
+    sin: f64,
+    cos: f64,
+}
+
+/// `(sin x, cos x)` as the interpreter computes them: the one function the compiled code
+/// calls.
+extern "C" fn sin_cos_pair(x: f64) -> Pair {
     let [(sin, cos)] = eom_kernel::sin_cos([x]);
-    // SAFETY: the compiled code passes a stack slot of two f64s, aligned to 8 bytes.
-    unsafe {
-        out.write(sin);
-        out.add(1).write(cos);
-    }
+    Pair { sin, cos }
 }
 
 /// The target this machine is, set up once: Cranelift's settings for speed, the host's
@@ -209,7 +212,26 @@ fn host() -> Result<OwnedTargetIsa, CompileError> {
             (flags.set(name, value)).map_err(|e| CompileError::Host(e.to_string()))?;
         }
         let builder = cranelift_native::builder().map_err(|e| CompileError::Host(e.into()))?;
-        (builder.finish(settings::Flags::new(flags))).map_err(|e| CompileError::Host(e.to_string()))
+        let isa = (builder.finish(settings::Flags::new(flags)))
+            .map_err(|e| CompileError::Host(e.to_string()))?;
+        // The kernel's pair comes back in two registers only where the C convention returns
+        // a pair of doubles so (x86-64 System V, AArch64, RISC-V): elsewhere (Windows, s390x)
+        // it is returned through memory, and nothing is compiled.
+        let pair_in_registers = cfg!(any(
+            target_arch = "x86_64",
+            target_arch = "aarch64",
+            target_arch = "riscv64"
+        )) && matches!(
+            isa.default_call_conv(),
+            CallConv::SystemV | CallConv::AppleAarch64
+        );
+        if !pair_in_registers {
+            return Err(CompileError::Host(format!(
+                "the C convention {} returns a pair of doubles through memory",
+                isa.default_call_conv()
+            )));
+        }
+        Ok(isa)
     })
     .clone()
 }
@@ -380,24 +402,22 @@ impl<'a, 'b, 'o> Body<'a, 'b, 'o> {
         Ok((self.builder.ins()).load(types::F64, flags, base, offset))
     }
 
-    /// `(sin, cos)` of node `angle`, by one call of the kernel per angle.
+    /// `(sin, cos)` of node `angle`, by one call of the kernel per angle, returned in two
+    /// registers.
     fn sin_cos(&mut self, angle: usize) -> Result<(Value, Value), CompileError> {
         if let Some(pair) = self.trig[angle] {
             return Ok(pair);
         }
         let x = self.operand(angle)?;
         let b = &mut *self.builder;
-        let slot = StackSlotData::new(StackSlotKind::ExplicitSlot, 16, 3);
-        let slot = b.create_sized_stack_slot(slot);
-        let out = b.ins().stack_addr(self.pointer, slot, 0);
         let mut signature = Signature::new(b.func.signature.call_conv);
-        signature.params = vec![AbiParam::new(types::F64), AbiParam::new(self.pointer)];
+        signature.params = vec![AbiParam::new(types::F64)];
+        signature.returns = vec![AbiParam::new(types::F64), AbiParam::new(types::F64)];
         let signature = b.import_signature(signature);
-        let address = sin_cos as extern "C" fn(f64, *mut f64) as usize;
+        let address = sin_cos_pair as extern "C" fn(f64) -> Pair as usize;
         let callee = b.ins().iconst(self.pointer, address as i64);
-        b.ins().call_indirect(signature, callee, &[x, out]);
-        let sin = b.ins().stack_load(types::F64, slot, 0);
-        let cos = b.ins().stack_load(types::F64, slot, 8);
+        let call = b.ins().call_indirect(signature, callee, &[x]);
+        let (sin, cos) = (b.inst_results(call)[0], b.inst_results(call)[1]);
         self.trig[angle] = Some((sin, cos));
         Ok((sin, cos))
     }
