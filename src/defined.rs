@@ -18,12 +18,33 @@
 
 use engine::{Expr, Function, Node, Program, System};
 
+#[cfg(feature = "jit")]
+mod compiled;
+/// Without the feature `jit` no plan has machine code: the interpreter evaluates every one.
+#[cfg(not(feature = "jit"))]
+mod compiled {
+    /// No machine code: this type has no values.
+    #[derive(Debug, Clone, PartialEq)]
+    pub(crate) enum Machine {}
+
+    pub(super) fn compile(
+        _: &super::Functions,
+        _: &super::Interpreter,
+    ) -> Option<super::Functions> {
+        None
+    }
+
+    pub(super) fn run<T>(machine: &Machine, _: &[f64], _: &[T], _: &mut [T]) -> bool {
+        match *machine {}
+    }
+}
+
 /// What the builders of scene-defined models use of the symbolic engine, and the table
 /// vocabularies the library re-exports from it (`ship::{Force, Term, Units, YawInertia}`,
 /// `vehicle::{Convention, …}`).
 pub(crate) mod engine {
     pub use eom_codegen::emit::program::{Function, Node, Program};
-    pub use eom_codegen::emit::{EmitError, Operations, prove_with_jacobians};
+    pub use eom_codegen::emit::{EmitError, Operations, f64_value, prove_with_jacobians};
     pub use eom_codegen::model::ship::{
         ADDED_MASS, Force, PRIME_SCALES, PROPULSION, ShipSpec, Term, Units, VARIABLES, YawInertia,
         ship,
@@ -57,6 +78,8 @@ enum Op {
 #[derive(Debug, Clone)]
 pub(crate) struct Interpreter {
     ops: Vec<Op>,
+    /// The `Value`s of `ops` in order: what the compiled plans read.
+    values: Vec<f64>,
 }
 
 /// The functions of a proved program a scene-defined model evaluates, and where each
@@ -90,12 +113,43 @@ impl Functions {
     }
 }
 
+impl Functions {
+    /// These functions compiled to machine code for `interpreter`'s program where they can be
+    /// (feature `jit`), else as they are; either way they serve any interpreter of the same
+    /// program.
+    pub(crate) fn compile(self, interpreter: &Interpreter) -> Functions {
+        compiled::compile(&self, interpreter).unwrap_or(self)
+    }
+
+    /// These functions without machine code: the interpreter evaluates every one.
+    pub(crate) fn interpreted(&self) -> Functions {
+        let plain = |plan: &Plan| Plan {
+            machine: None,
+            ..plan.clone()
+        };
+        Functions {
+            rhs: plain(&self.rhs),
+            kinetic_energy: plain(&self.kinetic_energy),
+            state_jacobian: plain(&self.state_jacobian),
+            input_jacobian: plain(&self.input_jacobian),
+            ..self.clone()
+        }
+    }
+
+    /// Whether the right-hand side runs as machine code.
+    pub(crate) fn is_compiled(&self) -> bool {
+        self.rhs.machine.is_some()
+    }
+}
+
 /// What one function of the program evaluates: the nodes its outputs need, in the arena's
 /// order (every operand before its user), and its outputs.
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct Plan {
     needed: Vec<usize>,
     outputs: Vec<usize>,
+    /// The plan as machine code, when it is compiled (`Functions::compile`).
+    machine: Option<compiled::Machine>,
 }
 
 impl Plan {
@@ -111,6 +165,7 @@ impl Plan {
         Plan {
             needed: (0..needed.len()).filter(|&i| needed[i]).collect(),
             outputs: function.outputs.iter().map(|o| o.id.index()).collect(),
+            machine: None,
         }
     }
 }
@@ -138,7 +193,15 @@ impl Interpreter {
                 Node::Mul(a, b) => Op::Mul(a.index(), b.index()),
             });
         }
-        Ok(Interpreter { ops })
+        Ok(Interpreter {
+            values: (ops.iter())
+                .filter_map(|op| match op {
+                    Op::Value(x) => Some(*x),
+                    _ => None,
+                })
+                .collect(),
+            ops,
+        })
     }
 
     /// The outputs of `plan` with the program's variables at `variables`.
@@ -147,6 +210,32 @@ impl Interpreter {
         plan: &'a Plan,
         variables: &[T],
     ) -> impl Iterator<Item = T> + use<'a, T> {
+        let mut outputs = vec![T::zero(); plan.outputs.len()];
+        self.evaluate_into(plan, variables, &mut outputs);
+        outputs.into_iter()
+    }
+
+    /// The outputs of `plan` with the program's variables at `variables`, into `outputs` (as
+    /// many as the plan has): by the plan's machine code in f64 when it is compiled, else by
+    /// the interpreter. Inlined, so that a compiled call costs its caller a few comparisons
+    /// and the call, not the interpreter's frame.
+    #[inline]
+    pub(crate) fn evaluate_into<T: SimdRealField + Copy>(
+        &self,
+        plan: &Plan,
+        variables: &[T],
+        outputs: &mut [T],
+    ) {
+        if let Some(machine) = &plan.machine
+            && compiled::run(machine, &self.values, variables, outputs)
+        {
+            return;
+        }
+        self.interpret(plan, variables, outputs);
+    }
+
+    /// The outputs of `plan` by the interpreter: each node it needs once, in order.
+    fn interpret<T: SimdRealField + Copy>(&self, plan: &Plan, variables: &[T], outputs: &mut [T]) {
         let mut values: Vec<T> = vec![T::zero(); self.ops.len()];
         for &index in &plan.needed {
             values[index] = match self.ops[index] {
@@ -161,12 +250,16 @@ impl Interpreter {
                 Op::Mul(a, b) => values[a] * values[b],
             };
         }
-        plan.outputs.iter().map(move |&i| values[i])
+        for (output, &index) in outputs.iter_mut().zip(&plan.outputs) {
+            *output = values[index];
+        }
     }
 }
 
 /// The hoisted coefficients, each computed once from the parameters (and the reciprocals of
-/// parameter polynomials, computed first); a parameter without a value makes NaN.
+/// parameter polynomials, computed first); a parameter without a value makes NaN. Each is
+/// computed as the emitted `Coefficients::new` computes it (`f64_value`), so the program has
+/// the bits of the same table compiled by rustc from a user's `build.rs`.
 pub(crate) fn coefficient_values(
     system: &System,
     program: &Program,
@@ -174,15 +267,15 @@ pub(crate) fn coefficient_values(
 ) -> Vec<f64> {
     let mut known = parameters.clone();
     for reciprocal in &system.reciprocals {
-        let of = reciprocal
-            .of
-            .eval(&|s| known.get(s).copied().unwrap_or(f64::NAN));
+        let of = engine::f64_value(&reciprocal.of, &|s| {
+            known.get(s).copied().unwrap_or(f64::NAN)
+        });
         known.insert(reciprocal.symbol.clone(), 1.0 / of);
     }
     let lookup = |s: &str| known.get(s).copied().unwrap_or(f64::NAN);
     program
         .coefficients
         .iter()
-        .map(|c| c.value.eval(&lookup))
+        .map(|c| engine::f64_value(&c.value, &lookup))
         .collect()
 }

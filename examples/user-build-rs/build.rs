@@ -1,8 +1,11 @@
 //! Emits the two models this crate needs: an AUV, symmetric about its xz-plane, carried by a
-//! unit quaternion so it may pitch through ±90°; and a ship of this crate's own hydrodynamic
-//! table (4.46 with ten terms), proved before it is written.
+//! unit quaternion so it may pitch through ±90°; a ship of this crate's own hydrodynamic
+//! table (4.46 with ten terms); and the Mariner's 39-term table in the prime system (the terms
+//! `eom` reads from `scenes/mariner.toml`, its rigid-body terms taken out), each proved before
+//! it is written.
 
-use eom_codegen::emit::{emit_into, system_source, write_if_changed};
+use eom_codegen::emit::program::identifier;
+use eom_codegen::emit::{EmitError, emit_into, system_source, write_if_changed};
 use eom_codegen::model::ship::{Force, ShipSpec, Term, Units, YawInertia, ship};
 use eom_codegen::model::{Kinematics, Model, Symmetry};
 use std::path::PathBuf;
@@ -32,6 +35,54 @@ fn ship_spec() -> ShipSpec {
     }
 }
 
+/// The Mariner's terms as `eom` reads `scenes/mariner.toml` (`ShipTable::terms`): the bench
+/// checks this model against `eom`'s of the scene bit for bit, so a change of either shows.
+fn mariner_spec() -> ShipSpec {
+    let term = |force, [a, b, c, d]: [u8; 4]| Term {
+        force,
+        powers: [a, b, c, d, 0],
+    };
+    let (x, y, n) = (Force::X, Force::Y, Force::N);
+    #[rustfmt::skip]
+    let x_terms = [[0, 0, 0, 2], [0, 0, 2, 0], [0, 1, 0, 1], [0, 2, 0, 0], [1, 0, 0, 0],
+        [1, 0, 0, 2], [1, 1, 0, 1], [2, 0, 0, 0], [3, 0, 0, 0]];
+    #[rustfmt::skip]
+    let side_terms = [[0, 0, 0, 0], [0, 0, 0, 1], [0, 0, 0, 3], [0, 0, 1, 0], [0, 1, 0, 0],
+        [0, 1, 0, 2], [0, 2, 0, 1], [0, 2, 1, 0], [0, 3, 0, 0], [1, 0, 0, 0], [1, 0, 0, 1],
+        [1, 0, 1, 0], [1, 1, 0, 0], [2, 0, 0, 0], [2, 0, 0, 1]];
+    let terms = (x_terms.iter().map(|&p| term(x, p)))
+        .chain(side_terms.iter().map(|&p| term(y, p)))
+        .chain(side_terms.iter().map(|&p| term(n, p)))
+        .collect();
+    ShipSpec {
+        units: Units::Prime,
+        yaw_inertia: YawInertia::AboutMidship,
+        terms,
+        propulsion: false,
+    }
+}
+
+/// The source of a ship of `spec`, with `Parameters::from_symbols`: the parameters by the
+/// symbols of the system (`M`, `Y_vvr`, `rho`, …), as a table keyed by symbol gives them.
+fn ship_source(name: &str, spec: &ShipSpec) -> Result<String, EmitError> {
+    let system = ship(name, spec)?;
+    let fields: String = (system.parameters.iter())
+        .map(|p| {
+            format!(
+                "            {}: value({:?}),\n",
+                identifier(&p.symbol),
+                p.symbol
+            )
+        })
+        .collect();
+    Ok(format!(
+        "{}\nimpl Parameters {{\n    /// Every parameter from `value` of its symbol.\n    \
+         pub fn from_symbols(value: impl Fn(&str) -> f64) -> Self {{\n        Parameters {{\n\
+         {fields}        }}\n    }}\n}}\n",
+        system_source(&system)?
+    ))
+}
+
 fn main() {
     println!("cargo::rerun-if-changed=build.rs");
     let out_dir = PathBuf::from(std::env::var_os("OUT_DIR").expect("cargo sets OUT_DIR"));
@@ -43,12 +94,12 @@ fn main() {
         eprintln!("cannot emit the AUV model: {error}");
         std::process::exit(1);
     }
-    let source = ship("ship", &ship_spec())
-        .map_err(eom_codegen::emit::EmitError::from)
-        .and_then(|system| system_source(&system))
-        .and_then(|source| write_if_changed(&out_dir.join("ship.rs"), &source));
-    if let Err(error) = source {
-        eprintln!("cannot emit the ship model: {error}");
-        std::process::exit(1);
+    for (name, spec) in [("ship", ship_spec()), ("mariner", mariner_spec())] {
+        let source = ship_source(name, &spec)
+            .and_then(|source| write_if_changed(&out_dir.join(format!("{name}.rs")), &source));
+        if let Err(error) = source {
+            eprintln!("cannot emit the {name} model: {error}");
+            std::process::exit(1);
+        }
     }
 }

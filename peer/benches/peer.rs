@@ -1,7 +1,7 @@
 //! eom's generated models against SymPy's C, in one process: `cargo bench -p eom-peer`.
 //!
 //! For each of the six spatial variants (and SymPy's unit-quaternion form of the three
-//! quaternion ones), three contenders evaluate the right-hand side at the same 1024 drawn
+//! quaternion ones), four contenders evaluate the right-hand side at the same 1024 drawn
 //! states and inputs (`eom_peer::draw`, fixed seed) on the same body:
 //!
 //! - **eom**: `generated::<variant>::rhs`, wrapped in a function that is never inlined and
@@ -9,7 +9,10 @@
 //! - **SymPy-C op-by-op**: `sympy/c/<variant>.c` built `-O3 -march=native -ffp-contract=off`;
 //! - **SymPy-C FMA**: the same source built `-O3 -march=native -ffp-contract=fast`;
 //!
-//! both C builds called through an `extern "C" fn` pointer. Every entry of every output is
+//! both C builds called through an `extern "C" fn` pointer; and a fourth column, eom called the
+//! way a user's crate calls it (`fn call(k, s, u, out) { *out = rhs(k, s, u) }`, never inlined,
+//! a function of this bench's crate rather than of `eom-peer`, called directly), so that the
+//! two ways of calling eom are timed in the same rounds. Every entry of every output is
 //! read with its own volatile load and added into the checksum, so nothing is left for the
 //! optimiser to drop, and no entry is read by a load wider than the store that wrote it (such
 //! a load waits for the stores to reach the cache instead of taking their data directly; how
@@ -21,10 +24,11 @@
 //!
 //! Timing: one timing is enough passes over the states to last at least 10 ms; 11 rounds,
 //! each timing every contender of every variant once, the contenders' order turned each
-//! round, so that a change of load falls on all three alike. A contender's time is the
+//! round, so that a change of load falls on all four alike. A contender's time is the
 //! median of its 11; the ratio is SymPy-C's median over eom's (above 1: eom is faster), with
 //! the range of the 11 per-round ratios beside it.
 
+use eom::models::generated;
 use eom_peer::{CRhs, EomModel, MASS, SEED, body, draw, eom_model, fma, op_by_op};
 use std::hint::black_box;
 use std::rc::Rc;
@@ -100,6 +104,53 @@ fn total<const N: usize>(out: &[f64; N]) -> f64 {
     (partial[0] + partial[1]) + (partial[2] + partial[3])
 }
 
+/// eom's `rhs` as a user's crate calls it: its own never-inlined function of this crate (not
+/// of `eom-peer`), writing the rates through `out`, called directly in the loop.
+trait UserCall<const N: usize> {
+    fn call(&self, state: &[f64; N], input: &[f64; 6], out: &mut [f64; N]);
+}
+
+macro_rules! user_calls {
+    ($($variant:ident: $n:literal),* $(,)?) => {
+        $(
+            impl UserCall<$n> for generated::$variant::Coefficients<f64> {
+                #[inline(never)]
+                fn call(&self, state: &[f64; $n], input: &[f64; 6], out: &mut [f64; $n]) {
+                    *out = generated::$variant::rhs(self, state, input);
+                }
+            }
+        )*
+    };
+}
+
+user_calls! {
+    spatial_full_euler: 12,
+    spatial_full_quaternion: 13,
+    spatial_xz_euler: 12,
+    spatial_xz_quaternion: 13,
+    spatial_principal_euler: 12,
+    spatial_principal_quaternion: 13,
+}
+
+/// `passes` passes of `k.call` over the states, a user's loop; returns the sum of every output.
+#[inline(never)]
+fn user_passes<K: UserCall<N>, const N: usize>(
+    k: &K,
+    states: &[[f64; N]],
+    inputs: &[[f64; 6]],
+    passes: usize,
+) -> f64 {
+    let mut sum = 0.0;
+    let mut out = [0.0; N];
+    for _ in 0..passes {
+        for (x, u) in states.iter().zip(inputs) {
+            k.call(x, u, &mut out);
+            sum += total(&out);
+        }
+    }
+    sum
+}
+
 /// The harness alone: a never-inlined function that returns its state unchanged, called and
 /// consumed as eom's models are.
 #[inline(never)]
@@ -108,26 +159,31 @@ fn copy_state<const N: usize>(_: &(), state: &[f64; N], _: &[f64; 6]) -> [f64; N
 }
 
 /// The contenders, in the table's order.
-const CONTENDERS: [&str; 3] = ["eom", "SymPy-C op-by-op", "SymPy-C FMA"];
+const CONTENDERS: [&str; 4] = [
+    "eom",
+    "SymPy-C op-by-op",
+    "SymPy-C FMA",
+    "eom, a user's call",
+];
 
 /// A contender: runs the given number of passes, returns its checksum.
 type Passes = Box<dyn Fn(usize) -> f64>;
 
-/// One line of the table: a variant, its three contenders and their timings.
+/// One line of the table: a variant, its four contenders and their timings.
 struct Row {
     label: String,
-    contenders: [Passes; 3],
-    checksums: [f64; 3],
+    contenders: [Passes; 4],
+    checksums: [f64; 4],
     /// The sum of the absolute values of eom's outputs over one pass.
     magnitude: f64,
     passes: usize,
-    seconds: [Vec<f64>; 3],
+    seconds: [Vec<f64>; 4],
 }
 
 impl Row {
     /// eom's model against both C builds of the same variant (`unit`: SymPy's unit-quaternion
     /// form), after checking that all three compute the same outputs.
-    fn new<K: 'static, const N: usize>(
+    fn new<K: UserCall<N> + Clone + 'static, const N: usize>(
         eom: EomModel<K, N>,
         unit: bool,
         states: Rc<[[f64; N]]>,
@@ -162,6 +218,7 @@ impl Row {
             }
         }
 
+        let user_k = eom.k.clone();
         let eom_run: Passes = {
             let states = Rc::clone(&states);
             let inputs = Rc::clone(&inputs);
@@ -172,8 +229,12 @@ impl Row {
             let inputs = Rc::clone(&inputs);
             Box::new(move |passes| c_passes(f, &k, &states, &inputs, passes))
         };
-        let contenders = [eom_run, c_run(op), c_run(fma)];
-        let checksums = [0, 1, 2].map(|i| contenders[i](1));
+        let user_run: Passes = {
+            let (k, states, inputs) = (user_k, Rc::clone(&states), Rc::clone(&inputs));
+            Box::new(move |passes| user_passes(&k, &states, &inputs, passes))
+        };
+        let contenders = [eom_run, c_run(op), c_run(fma), user_run];
+        let checksums = [0, 1, 2, 3].map(|i| contenders[i](1));
         for (i, checksum) in checksums.iter().enumerate().skip(1) {
             assert!(
                 (checksum - checksums[0]).abs() <= TOLERANCE * magnitude,
@@ -206,8 +267,8 @@ impl Row {
 
     /// Times each contender once, starting with contender `first`.
     fn time(&mut self, first: usize) {
-        for j in 0..3 {
-            let c = (first + j) % 3;
+        for j in 0..4 {
+            let c = (first + j) % 4;
             let start = Instant::now();
             black_box(self.contenders[c](self.passes));
             self.seconds[c].push(start.elapsed().as_secs_f64());
@@ -299,7 +360,7 @@ fn main() {
     for round in 0..ROUNDS {
         floor_seconds.push(floor());
         for row in &mut rows {
-            row.time(round % 3);
+            row.time(round % 4);
         }
     }
     let load_after = proc_field("/proc/loadavg", "");
@@ -337,9 +398,10 @@ fn main() {
     );
     println!(
         "| variant | ns/call eom | ns/call SymPy-C op-by-op | ns/call SymPy-C FMA | ratio vs \
-         op-by-op | ratio vs FMA | checksums (eom; op-by-op, FMA rel. diff.) |"
+         op-by-op | ratio vs FMA | ns/call eom, a user's call | checksums (eom; op-by-op, FMA \
+         rel. diff.) |"
     );
-    println!("|---|---:|---:|---:|---:|---:|---|");
+    println!("|---|---:|---:|---:|---:|---:|---:|---|");
     for row in &rows {
         let ratio = |c| {
             let (r, low, high) = row.ratio(c);
@@ -347,13 +409,14 @@ fn main() {
         };
         let diff = |c: usize| (row.checksums[c] - row.checksums[0]) / row.magnitude;
         println!(
-            "| {} | {:.1} | {:.1} | {:.1} | {} | {} | {:.15e}; {:.0e}, {:.0e} |",
+            "| {} | {:.1} | {:.1} | {:.1} | {} | {} | {:.1} | {:.15e}; {:.0e}, {:.0e} |",
             row.label,
             row.ns_per_call(0),
             row.ns_per_call(1),
             row.ns_per_call(2),
             ratio(1),
             ratio(2),
+            row.ns_per_call(3),
             row.checksums[0],
             diff(1),
             diff(2),

@@ -99,17 +99,19 @@ impl AnyScene {
         Ok(AnyScene::Vehicle(Box::new(scene)))
     }
 
+    /// Without the feature `ship` the tables are not read (the reader's type is only named,
+    /// so that the callers' generic readers have one).
     #[cfg(not(feature = "ship"))]
-    fn vehicle<T>(
-        read: impl FnOnce() -> Result<T, SceneError>,
+    fn vehicle(
+        read: impl FnOnce() -> Result<Table, SceneError>,
         name: &str,
     ) -> Result<Self, SceneError> {
         Self::defined_by_table(read, name)
     }
 
     #[cfg(not(feature = "ship"))]
-    fn defined_by_table<T>(
-        _read: impl FnOnce() -> Result<T, SceneError>,
+    fn defined_by_table(
+        _read: impl FnOnce() -> Result<Table, SceneError>,
         name: &str,
     ) -> Result<Self, SceneError> {
         Err(SceneError::new(

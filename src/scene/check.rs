@@ -298,6 +298,7 @@ impl Checker<'_> {
 
     /// One of `choices` by the word a scene-defined table gives, or the error naming `key`
     /// that the tables' words have always given: "`x`: expected `a` or `b`".
+    #[cfg_attr(not(feature = "ship"), allow(dead_code))]
     pub(crate) fn word<V: Copy, const K: usize>(
         &self,
         key: &str,
@@ -359,6 +360,7 @@ impl Checker<'_> {
     }
 
     /// A finite value above zero, the error naming `key`.
+    #[cfg_attr(not(feature = "ship"), allow(dead_code))]
     pub(crate) fn positive(&self, key: &str, value: f64) -> Result<f64, SceneError> {
         self.checked(key, Requirement::Positive, value)
     }

@@ -18,13 +18,14 @@ use super::ShipError;
 use super::propulsion::Propulsion;
 use super::table::ShipTable;
 use crate::defined::engine::{
-    ADDED_MASS, EmitError, Operations, PRIME_SCALES, PROPULSION, ShipSpec, Units,
+    ADDED_MASS, EmitError, Operations, PRIME_SCALES, PROPULSION, Program, ShipSpec, System, Units,
     prove_with_jacobians, ship,
 };
 use crate::defined::{Functions, Interpreter, Plan, coefficient_values};
 use crate::models::Model;
 use simba::simd::SimdRealField;
 use std::collections::BTreeMap;
+use std::sync::Arc;
 
 /// The state: u, v, r (m/s, m/s, rad/s, body axes at midship), X, Y (m, midship in space
 /// axes), ψ (rad), δ (rad, the rudder angle).
@@ -77,6 +78,8 @@ pub struct ShipModel {
     /// What each of the program's inputs is, by its column.
     inputs: Vec<ProgramInput>,
     propulsion: Option<Propulsion>,
+    /// What the table's values do not change, shared by the models of other values.
+    proved: Arc<Proved>,
     operations: Operations,
     terms: usize,
 }
@@ -98,23 +101,32 @@ enum ProgramInput {
     Inflow,
 }
 
+/// The table's terms, 4.46 with them and its proved program: the same for every value of the
+/// coefficients.
+#[derive(Debug)]
+struct Proved {
+    spec: ShipSpec,
+    system: System,
+    program: Program,
+}
+
+/// The terms of `table`, its units, where its yaw inertia is taken and whether it has a
+/// propulsion model.
+fn spec_of(table: &ShipTable) -> ShipSpec {
+    ShipSpec {
+        units: table.units,
+        yaw_inertia: table.body.yaw_inertia_about,
+        terms: table.terms.keys().copied().collect(),
+        propulsion: table.propulsion.is_some(),
+    }
+}
+
 impl ShipModel {
     /// Derives, solves and proves 4.46 with the table's terms, then resolves the program.
     pub fn new(table: &ShipTable) -> Result<Self, ShipError> {
-        let spec = ShipSpec {
-            units: table.units,
-            yaw_inertia: table.body.yaw_inertia_about,
-            terms: table.terms.keys().copied().collect(),
-            propulsion: table.propulsion.is_some(),
-        };
+        let spec = spec_of(table);
         let system = ship("ship", &spec).map_err(|e| ShipError::Build(EmitError::Model(e)))?;
         let program = prove_with_jacobians(&system)?;
-        let values = parameter_values(&spec, table);
-        let coefficients = coefficient_values(&system, &program, &values);
-        let position = |name: &str| VARIABLES.iter().position(|s| *s == name);
-        let interpreter = Interpreter::new(&program, &coefficients, position).map_err(|name| {
-            ShipError::invalid("hydrodynamics", format!("the program reads `{name}`"))
-        })?;
         let functions = Functions::of(&program)
             .map_err(|what| ShipError::invalid("hydrodynamics", format!("no {what}")))?;
         let inputs = system
@@ -133,14 +145,73 @@ impl ShipModel {
                 )),
             })
             .collect::<Result<_, _>>()?;
+        let proved = Proved {
+            spec,
+            system,
+            program,
+        };
+        let interpreter = interpreter(&proved, &coefficients(&proved, table))?;
         Ok(ShipModel {
-            functions,
+            functions: functions.compile(&interpreter),
             inputs,
             propulsion: table.propulsion,
-            operations: program.operations(&program.rhs),
-            terms: spec.terms.len(),
+            operations: proved.program.operations(&proved.program.rhs),
+            terms: proved.spec.terms.len(),
             program: interpreter,
+            proved: Arc::new(proved),
         })
+    }
+
+    /// The model of `table`, a table of the same terms, units and yaw-inertia convention as
+    /// this model's, with other values (a Monte Carlo case, a coefficient being fitted): the
+    /// program is the one derived, proved and compiled for this model, only its coefficients
+    /// are computed again, in microseconds where [`ShipModel::new`] takes tens of
+    /// milliseconds. A table of other terms is refused: derive and prove its own model.
+    pub fn with_table(&self, table: &ShipTable) -> Result<Self, ShipError> {
+        if spec_of(table) != self.proved.spec {
+            return Err(ShipError::invalid(
+                "hydrodynamics",
+                "the table's terms, units or yaw inertia are not the model's: build its own \
+                 model (ShipModel::new)",
+            ));
+        }
+        let coefficients = coefficients(&self.proved, table);
+        // A table that did not come through `ShipTable::new` may have a singular mass matrix.
+        let program = &self.proved.program;
+        if let Some((c, _)) = (program.coefficients.iter())
+            .zip(&coefficients)
+            .find(|(_, v)| !v.is_finite())
+        {
+            return Err(ShipError::invalid(
+                "hydrodynamics",
+                format!("the coefficient `{}` is not finite", c.value),
+            ));
+        }
+        Ok(ShipModel {
+            program: interpreter(&self.proved, &coefficients)?,
+            propulsion: table.propulsion,
+            ..self.clone()
+        })
+    }
+
+    /// The program's variables at `state` under `input` (δ̇, n), in [`VARIABLES`]' order: the
+    /// state, δ̇, U (zero where the program does not read it: a table in SI), and what a
+    /// propulsion model computes (zero without one).
+    fn variables<T: SimdRealField + Copy>(&self, state: &[T; 7], input: &[T; 2]) -> [T; 13] {
+        let mut variables = [T::zero(); 13];
+        variables[..7].copy_from_slice(state);
+        variables[7] = input[0];
+        if self.inputs.contains(&ProgramInput::Speed) {
+            variables[8] = (state[0] * state[0] + state[1] * state[1]).simd_sqrt();
+        }
+        if let Some(propulsion) = &self.propulsion {
+            let inflow = propulsion.inflow(state[0], input[1]);
+            variables[9] = input[1];
+            variables[10] = input[1].simd_abs();
+            variables[11] = inflow.induced;
+            variables[12] = inflow.speed;
+        }
+        variables
     }
 
     /// The outputs of `plan` at `state` under `input` (δ̇, n).
@@ -150,19 +221,7 @@ impl ShipModel {
         state: &[T; 7],
         input: &[T; 2],
     ) -> impl Iterator<Item = T> + use<'a, T> {
-        let speed = (state[0] * state[0] + state[1] * state[1]).simd_sqrt();
-        let mut variables = [T::zero(); 13];
-        variables[..7].copy_from_slice(state);
-        variables[7] = input[0];
-        variables[8] = speed;
-        if let Some(propulsion) = &self.propulsion {
-            let inflow = propulsion.inflow(state[0], input[1]);
-            variables[9] = input[1];
-            variables[10] = input[1].simd_abs();
-            variables[11] = inflow.induced;
-            variables[12] = inflow.speed;
-        }
-        self.program.evaluate(plan, &variables)
+        (self.program).evaluate(plan, &self.variables(state, input))
     }
 
     /// ∂f/∂x and ∂f/∂(δ̇, n) of the model, dense: the proved Jacobian programs scattered by
@@ -230,6 +289,44 @@ impl ShipModel {
     pub fn terms(&self) -> usize {
         self.terms
     }
+
+    /// Whether the proved program runs as machine code compiled when the model was built
+    /// (in f64, with the feature `jit`), rather than by the interpreter.
+    pub fn is_compiled(&self) -> bool {
+        self.functions.is_compiled()
+    }
+
+    /// The same model evaluated by the interpreter of its proved program: the reference the
+    /// compiled code is checked against, bit for bit.
+    pub fn interpreted(&self) -> ShipModel {
+        ShipModel {
+            functions: self.functions.interpreted(),
+            ..self.clone()
+        }
+    }
+
+    /// The same model with its proved program compiled to machine code (the interpreter's
+    /// when the program cannot be compiled): what [`ShipModel::new`] builds.
+    pub fn compiled(&self) -> ShipModel {
+        ShipModel {
+            functions: self.functions.clone().compile(&self.program),
+            ..self.clone()
+        }
+    }
+}
+
+/// The hoisted coefficients of the proved program with `table`'s values.
+fn coefficients(proved: &Proved, table: &ShipTable) -> Vec<f64> {
+    let values = parameter_values(&proved.spec, table);
+    coefficient_values(&proved.system, &proved.program, &values)
+}
+
+/// The proved program resolved with the `coefficients`' values.
+fn interpreter(proved: &Proved, coefficients: &[f64]) -> Result<Interpreter, ShipError> {
+    // The variables in `evaluate`'s order (VARIABLES).
+    let position = |name: &str| VARIABLES.iter().position(|s| *s == name);
+    Interpreter::new(&proved.program, coefficients, position)
+        .map_err(|name| ShipError::invalid("hydrodynamics", format!("the program reads `{name}`")))
 }
 
 /// Every parameter's value by its symbol, as the table gives it; the symbols are the spec's.
@@ -285,8 +382,10 @@ impl<T: SimdRealField + Copy> Model<T, 7, 2> for ShipModel {
     /// The rates of the state with the rudder moving at `input[0]` and the propeller turning
     /// at `input[1]`: the proved program.
     fn rhs(&self, state: &[T; 7], input: &[T; 2]) -> [T; 7] {
-        let mut rates = self.evaluate(&self.functions.rhs, state, input);
-        std::array::from_fn(|_| rates.next().unwrap_or_else(T::zero))
+        let variables = self.variables(state, input);
+        let mut rates = [T::zero(); 7];
+        (self.program).evaluate_into(&self.functions.rhs, &variables, &mut rates);
+        rates
     }
 
     /// The rigid body's kinetic energy ½M(u² + (v + x_G r)²) + ½I_z r² (4.32 about G, with

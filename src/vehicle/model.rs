@@ -211,7 +211,8 @@ impl Proved {
             VehicleError::invalid("hydrodynamics", format!("the program reads `{name}`"))
         })?;
         let functions = Functions::of(&program)
-            .map_err(|what| VehicleError::invalid("hydrodynamics", format!("no {what}")))?;
+            .map_err(|what| VehicleError::invalid("hydrodynamics", format!("no {what}")))?
+            .compile(&interpreter);
         let proved = Proved {
             functions,
             inputs,
@@ -230,11 +231,25 @@ impl Proved {
     /// The program's variables at `state`: the generator's state, then its inputs.
     fn variables<T: SimdRealField + Copy>(&self, state: &[T]) -> Vec<T> {
         let mut variables = state[..self.body].to_vec();
-        variables.extend(self.inputs.iter().map(|input| match *input {
-            Variable::Fin(i) => state[i],
-            Variable::Absolute(i) => state[i].simd_abs(),
-        }));
+        variables.extend(self.inputs.iter().map(|input| input.value(state)));
         variables
+    }
+
+    /// The rates of the generator's state entries into `rates`, the variables on the stack
+    /// when they fit (the generator's state and up to eight inputs): a call allocates nothing.
+    fn rates_into<T: SimdRealField + Copy>(&self, state: &[T], rates: &mut [T]) {
+        let mut variables = [T::zero(); BODY + 8];
+        let count = self.body + self.inputs.len();
+        if count <= variables.len() {
+            variables[..self.body].copy_from_slice(&state[..self.body]);
+            for (variable, input) in variables[self.body..].iter_mut().zip(&self.inputs) {
+                *variable = input.value(state);
+            }
+            (self.program).evaluate_into(&self.functions.rhs, &variables[..count], rates);
+        } else {
+            let variables = self.variables(state);
+            (self.program).evaluate_into(&self.functions.rhs, &variables, rates);
+        }
     }
 
     /// The rates of the generator's state entries.
@@ -339,6 +354,38 @@ impl VehicleModel {
     pub fn folded(&self) -> &[FoldedComparison] {
         &self.folded
     }
+
+    /// Whether the proved program runs as machine code compiled when the model was built
+    /// (in f64, with the feature `jit`), rather than by the interpreter.
+    pub fn is_compiled(&self) -> bool {
+        self.proved.functions.is_compiled()
+    }
+
+    /// The same model evaluated by the interpreter of its proved program: the reference the
+    /// compiled code is checked against, bit for bit.
+    pub fn interpreted(&self) -> VehicleModel {
+        let mut model = self.clone();
+        model.proved.functions = self.proved.functions.interpreted();
+        model
+    }
+
+    /// The same model with its proved program compiled to machine code (the interpreter's
+    /// when the program cannot be compiled): what [`VehicleModel::new`] builds.
+    pub fn compiled(&self) -> VehicleModel {
+        let mut model = self.clone();
+        model.proved.functions = (self.proved.functions.clone()).compile(&self.proved.program);
+        model
+    }
+}
+
+impl Variable {
+    /// Its value at `state`.
+    fn value<T: SimdRealField + Copy>(self, state: &[T]) -> T {
+        match self {
+            Variable::Fin(i) => state[i],
+            Variable::Absolute(i) => state[i].simd_abs(),
+        }
+    }
 }
 
 /// What the program's input `name` is set from, in a state named `state` whose first `body`
@@ -369,12 +416,11 @@ impl<T: SimdRealField + Copy> Model<T, 15, 2> for VehicleModel {
     /// The rates of the state with the fins moving at `input`: the proved program, and the
     /// fins' rates.
     fn rhs(&self, state: &[T; 15], input: &[T; 2]) -> [T; 15] {
-        let mut rates = self.proved.rates(state);
-        std::array::from_fn(|i| match i {
-            13 => input[0],
-            14 => input[1],
-            _ => rates.next().unwrap_or_else(T::zero),
-        })
+        let mut rates = [T::zero(); 15];
+        self.proved.rates_into(state, &mut rates[..BODY]);
+        rates[13] = input[0];
+        rates[14] = input[1];
+        rates
     }
 
     /// T = ½M|v + ω × r_G|² + ½ωᵀ I_G ω + ½νᵀM_Aν, the body's and the fluid's, in J: the

@@ -635,6 +635,93 @@ fn f64_tokens(e: &Expr) -> TokenStream {
     }
 }
 
+/// The value of a parameter expression computed as the code [`f64_tokens`] writes for it
+/// computes it, operation for operation in the same order (the common factor taken out, the
+/// terms summed left to right, each product and quotient as written), so that a program run
+/// from these values (the interpreter of scene-defined models) has the emitted
+/// `Coefficients::new`'s bits, not only its value to rounding.
+pub fn f64_value(e: &Expr, value: &dyn Fn(&str) -> f64) -> f64 {
+    if e.is_zero() {
+        return 0.0;
+    }
+    let common = common_factor(e);
+    if common.is_one() || e.term_count() < 2 {
+        return f64_sum_value(e, value);
+    }
+    let Some(inverse) = common.reciprocal() else {
+        return f64::NAN;
+    };
+    let rest = e * &Expr::term(Rational::one(), inverse);
+    let sum = f64_sum_value(&rest, value);
+    let (numerator, denominator) = split_values(&common, value);
+    let top = numerator.into_iter().fold(sum, |acc, x| acc * x);
+    if denominator.is_empty() {
+        top
+    } else {
+        top / product_value(denominator)
+    }
+}
+
+/// [`f64_sum`]'s value.
+fn f64_sum_value(e: &Expr, value: &dyn Fn(&str) -> f64) -> f64 {
+    let mut sum = 0.0;
+    for (i, (monomial, c)) in e.terms().enumerate() {
+        let term = f64_term_value(monomial, &c.abs(), value);
+        sum = match (i, c.is_negative()) {
+            (0, false) => term,
+            (0, true) => -term,
+            (_, false) => sum + term,
+            (_, true) => sum - term,
+        };
+    }
+    sum
+}
+
+/// [`split_powers`]'s values.
+fn split_values(
+    m: &crate::symbolic::Monomial,
+    value: &dyn Fn(&str) -> f64,
+) -> (Vec<f64>, Vec<f64>) {
+    let (mut numerator, mut denominator) = (Vec::new(), Vec::new());
+    for (atom, power) in m.factors() {
+        let side = if power > 0 {
+            &mut numerator
+        } else {
+            &mut denominator
+        };
+        side.extend(std::iter::repeat_n(
+            value(atom.symbol()),
+            power.unsigned_abs() as usize,
+        ));
+    }
+    (numerator, denominator)
+}
+
+/// [`f64_term`]'s value.
+fn f64_term_value(
+    monomial: &crate::symbolic::Monomial,
+    magnitude: &Rational,
+    value: &dyn Fn(&str) -> f64,
+) -> f64 {
+    let (mut numerator, denominator) = split_values(monomial, value);
+    if !magnitude.is_one() || numerator.is_empty() {
+        numerator.insert(0, rational_f64(magnitude));
+    }
+    let top = product_value(numerator);
+    if denominator.is_empty() {
+        top
+    } else {
+        top / product_value(denominator)
+    }
+}
+
+/// [`product`]'s value.
+fn product_value(parts: Vec<f64>) -> f64 {
+    let mut iter = parts.into_iter();
+    let first = iter.next().unwrap_or(1.0);
+    iter.fold(first, |acc, p| acc * p)
+}
+
 /// Σ ± c · Π numerator / (Π denominator), term by term.
 fn f64_sum(e: &Expr) -> TokenStream {
     let mut tokens = TokenStream::new();
@@ -721,7 +808,15 @@ pub(super) fn rational_tokens(r: &Rational) -> TokenStream {
     if r.is_zero() {
         return quote! { 0.0 };
     }
-    let float = |v: &num_bigint::BigInt| v.to_string().parse::<f64>().unwrap_or(f64::NAN);
-    let value = Literal::f64_unsuffixed(float(r.numer()) / float(r.denom()));
+    let value = Literal::f64_unsuffixed(rational_f64(r));
     quote! { #value }
+}
+
+/// A rational as the f64 its literal is: numerator and denominator each rounded, divided.
+fn rational_f64(r: &Rational) -> f64 {
+    if r.is_zero() {
+        return 0.0;
+    }
+    let float = |v: &num_bigint::BigInt| v.to_string().parse::<f64>().unwrap_or(f64::NAN);
+    float(r.numer()) / float(r.denom())
 }

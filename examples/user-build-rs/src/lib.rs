@@ -33,6 +33,13 @@ pub mod ship {
     include!(concat!(env!("OUT_DIR"), "/ship.rs"));
 }
 
+/// The Mariner's table (`build.rs`): 4.46 at midship in the prime system with its 39 terms,
+/// the state and input of [`ship`]; its parameters by symbol (`Parameters::from_symbols`).
+#[allow(clippy::let_and_return, clippy::redundant_locals)]
+pub mod mariner {
+    include!(concat!(env!("OUT_DIR"), "/mariner.rs"));
+}
+
 /// A torpedo-shaped AUV: 50 kg, slender, with a small I_xz from an offset payload.
 pub fn example_parameters() -> auv::Parameters {
     auv::Parameters {

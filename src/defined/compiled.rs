@@ -1,0 +1,465 @@
+//! The proved program compiled to machine code when the scene is read (feature `jit`).
+//!
+//! The interpreter of [`super`] walks the program's nodes on every call: it is the reference,
+//! and it runs on any `SimdRealField` (SIMD lanes, dual numbers, f32). In f64 the same nodes
+//! are compiled here, with Cranelift, to one function per plan (the right-hand side, the
+//! kinetic energy, the two Jacobians), so a scene-defined model runs at the speed of the code
+//! rustc writes for a catalog model, with no toolchain on the user's machine.
+//!
+//! The compiled code is the interpreter's operations one for one: each node is one IEEE
+//! operation of the same operands in the same order (no fused multiply–add, no reassociation:
+//! Cranelift contracts nothing it is not asked to), 1/x is a division of one by x, and sine
+//! and cosine call the kernel function the interpreter calls (`eom_kernel::sin_cos`), once per
+//! angle for both, the pair returned in two registers. So its results are the interpreter's bit for bit, which the tests check on
+//! random states.
+//!
+//! The values of the program's constants and hoisted coefficients are not in the code: the
+//! compiled function reads them from the interpreter's table at each call, so one compiled
+//! program serves every interpreter of the same program (a table re-parameterised, as a Monte
+//! Carlo over the coefficients does, is not compiled again). A program with an operation this
+//! compiler does not know, a host Cranelift does not support, or a failure of code generation
+//! leaves the plans uncompiled, and the interpreter evaluates them.
+
+use super::{Functions, Interpreter, Op, Plan};
+use cranelift_codegen::ir::{AbiParam, InstBuilder, MemFlags, Signature, Value, types};
+use cranelift_codegen::isa::{CallConv, OwnedTargetIsa};
+use cranelift_codegen::settings::{self, Configurable};
+use cranelift_frontend::{FunctionBuilder, FunctionBuilderContext};
+use cranelift_jit::{JITBuilder, JITModule};
+use cranelift_module::{FuncId, Module, default_libcall_names};
+use std::any::TypeId;
+use std::sync::{Arc, OnceLock};
+
+/// Why a program was not compiled; the interpreter evaluates it then.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub(crate) enum CompileError {
+    /// Cranelift cannot generate code for this machine.
+    #[error("the compiler does not support this machine: {0}")]
+    Host(String),
+    /// The program has an operation this compiler does not know.
+    #[error("node {0} of the program is an operation the compiler does not know")]
+    Operation(usize),
+    /// Cranelift refused the function or could not place its code.
+    #[error("code generation failed: {0}")]
+    Generation(String),
+}
+
+/// A compiled function: variables, values, outputs, each a pointer to f64s.
+type Entry = unsafe extern "C" fn(*const f64, *const f64, *mut f64);
+
+/// One plan compiled: its entry point and what it reads and writes.
+#[derive(Clone)]
+pub(crate) struct Machine {
+    entry: Entry,
+    /// How many variables it reads (one past the largest position).
+    variables: usize,
+    /// How many of the interpreter's values it reads.
+    values: usize,
+    /// How many outputs it writes.
+    outputs: usize,
+    /// The code the entry point is in, freed when the last plan that calls it goes.
+    code: Arc<Code>,
+}
+
+impl std::fmt::Debug for Machine {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Machine")
+            .field("variables", &self.variables)
+            .field("values", &self.values)
+            .field("outputs", &self.outputs)
+            .finish_non_exhaustive()
+    }
+}
+
+/// Two plans compiled into the same code with the same shape are the same function.
+impl PartialEq for Machine {
+    fn eq(&self, other: &Self) -> bool {
+        Arc::ptr_eq(&self.code, &other.code)
+            && (self.variables, self.values, self.outputs)
+                == (other.variables, other.values, other.outputs)
+    }
+}
+
+/// The compiled functions' memory, owned by the Cranelift module that placed them.
+struct Code {
+    module: Option<JITModule>,
+}
+
+// SAFETY: after `finalize_definitions` the module is only touched by `drop`, which has the
+// only reference; the code it placed is read-only and executable, and calling it from any
+// thread only reads the arguments and the machine's stack.
+unsafe impl Send for Code {}
+// SAFETY: as for `Send`: no method of `Code` reads or writes the module through `&self`.
+unsafe impl Sync for Code {}
+
+impl Drop for Code {
+    fn drop(&mut self) {
+        if let Some(module) = self.module.take() {
+            // SAFETY: the last `Machine` holding this code is being dropped, so no entry point
+            // into it remains, and none is running (a call borrows its `Machine`).
+            unsafe { module.free_memory() };
+        }
+    }
+}
+
+impl Functions {
+    /// These functions compiled for `interpreter`'s program: each plan with its machine code,
+    /// which serves any interpreter of the same program (the values are read at each call).
+    pub(crate) fn compiled(&self, interpreter: &Interpreter) -> Result<Functions, CompileError> {
+        let mut compiler = Compiler::new()?;
+        let plans = [
+            &self.rhs,
+            &self.kinetic_energy,
+            &self.state_jacobian,
+            &self.input_jacobian,
+        ];
+        let ids = plans
+            .iter()
+            .map(|plan| compiler.define(&interpreter.ops, plan))
+            .collect::<Result<Vec<_>, _>>()?;
+        let (code, entries) = compiler.finish(&ids)?;
+        let machine = |plan: &Plan, entry: Entry| Plan {
+            machine: Some(Machine {
+                entry,
+                variables: variables_read(&interpreter.ops, plan),
+                values: interpreter.values.len(),
+                outputs: plan.outputs.len(),
+                code: code.clone(),
+            }),
+            ..plan.clone()
+        };
+        Ok(Functions {
+            rhs: machine(&self.rhs, entries[0]),
+            kinetic_energy: machine(&self.kinetic_energy, entries[1]),
+            state_jacobian: machine(&self.state_jacobian, entries[2]),
+            input_jacobian: machine(&self.input_jacobian, entries[3]),
+            ..self.clone()
+        })
+    }
+}
+
+/// `functions` compiled for `interpreter`'s program, or none if they cannot be.
+pub(super) fn compile(functions: &Functions, interpreter: &Interpreter) -> Option<Functions> {
+    functions.compiled(interpreter).ok()
+}
+
+/// One past the largest variable position `plan` reads.
+fn variables_read(ops: &[Op], plan: &Plan) -> usize {
+    (plan.needed.iter())
+        .filter_map(|&i| match ops[i] {
+            Op::Variable(position) => Some(position + 1),
+            _ => None,
+        })
+        .max()
+        .unwrap_or(0)
+}
+
+/// Runs `machine` when `T` is f64 and the slices have the lengths it was compiled for;
+/// returns whether it ran (else the caller interprets).
+#[inline]
+pub(super) fn run<T: 'static>(
+    machine: &Machine,
+    values: &[f64],
+    variables: &[T],
+    out: &mut [T],
+) -> bool {
+    let fits = variables.len() >= machine.variables
+        && values.len() >= machine.values
+        && out.len() == machine.outputs;
+    if TypeId::of::<T>() != TypeId::of::<f64>() || !fits {
+        return false;
+    }
+    // SAFETY: `T` is f64 (same type id), so the slices hold f64s; the compiled function reads
+    // `machine.variables` variables and `machine.values` values and writes `machine.outputs`
+    // outputs, each within the slice just checked; it was compiled with this signature in the
+    // platform's C calling convention, and its code lives as long as `machine.code`.
+    unsafe {
+        (machine.entry)(
+            variables.as_ptr().cast(),
+            values.as_ptr(),
+            out.as_mut_ptr().cast(),
+        );
+    }
+    true
+}
+
+/// A sine and a cosine as the C convention returns a pair of doubles: in two registers on the
+/// platforms [`host`] compiles for, as Cranelift returns two f64 results.
+#[repr(C)]
+struct Pair {
+    sin: f64,
+    cos: f64,
+}
+
+/// `(sin x, cos x)` as the interpreter computes them: the one function the compiled code
+/// calls.
+extern "C" fn sin_cos_pair(x: f64) -> Pair {
+    let [(sin, cos)] = eom_kernel::sin_cos([x]);
+    Pair { sin, cos }
+}
+
+/// The target this machine is, set up once: Cranelift's settings for speed, the host's
+/// features (SSE levels, AVX); fused multiply–add is never emitted unless asked for.
+fn host() -> Result<OwnedTargetIsa, CompileError> {
+    static HOST: OnceLock<Result<OwnedTargetIsa, CompileError>> = OnceLock::new();
+    HOST.get_or_init(|| {
+        let mut flags = settings::builder();
+        for (name, value) in [
+            ("opt_level", "speed"),
+            ("use_colocated_libcalls", "false"),
+            ("is_pic", "false"),
+        ] {
+            (flags.set(name, value)).map_err(|e| CompileError::Host(e.to_string()))?;
+        }
+        let builder = cranelift_native::builder().map_err(|e| CompileError::Host(e.into()))?;
+        let isa = (builder.finish(settings::Flags::new(flags)))
+            .map_err(|e| CompileError::Host(e.to_string()))?;
+        // The kernel's pair comes back in two registers only where the C convention returns
+        // a pair of doubles so (x86-64 System V, AArch64, RISC-V): elsewhere (Windows, s390x)
+        // it is returned through memory, and nothing is compiled.
+        let pair_in_registers = cfg!(any(
+            target_arch = "x86_64",
+            target_arch = "aarch64",
+            target_arch = "riscv64"
+        )) && matches!(
+            isa.default_call_conv(),
+            CallConv::SystemV | CallConv::AppleAarch64
+        );
+        if !pair_in_registers {
+            return Err(CompileError::Host(format!(
+                "the C convention {} returns a pair of doubles through memory",
+                isa.default_call_conv()
+            )));
+        }
+        Ok(isa)
+    })
+    .clone()
+}
+
+/// A Cranelift module being filled with the plans of one program.
+struct Compiler {
+    module: JITModule,
+    context: FunctionBuilderContext,
+}
+
+fn generation(error: impl std::fmt::Display) -> CompileError {
+    CompileError::Generation(error.to_string())
+}
+
+impl Compiler {
+    fn new() -> Result<Self, CompileError> {
+        let builder = JITBuilder::with_isa(host()?, default_libcall_names());
+        Ok(Compiler {
+            module: JITModule::new(builder),
+            context: FunctionBuilderContext::new(),
+        })
+    }
+
+    /// Declares and defines the function of `plan` over `ops`.
+    fn define(&mut self, ops: &[Op], plan: &Plan) -> Result<FuncId, CompileError> {
+        let pointer = self.module.target_config().pointer_type();
+        let mut signature = self.module.make_signature();
+        signature.params = vec![AbiParam::new(pointer); 3];
+        let id = (self.module.declare_anonymous_function(&signature)).map_err(generation)?;
+        let mut context = self.module.make_context();
+        context.func.signature = signature;
+        let mut builder = FunctionBuilder::new(&mut context.func, &mut self.context);
+        let block = builder.create_block();
+        builder.append_block_params_for_function_params(block);
+        builder.switch_to_block(block);
+        builder.seal_block(block);
+        let params = builder.block_params(block).to_vec();
+        let arguments = [params[0], params[1], params[2]];
+        Body::new(&mut builder, pointer, arguments, ops).emit(plan)?;
+        builder.ins().return_(&[]);
+        builder.finalize();
+        (self.module.define_function(id, &mut context)).map_err(generation)?;
+        Ok(id)
+    }
+
+    /// Places the code and returns it with the entry point of each of `ids`.
+    fn finish(mut self, ids: &[FuncId]) -> Result<(Arc<Code>, Vec<Entry>), CompileError> {
+        (self.module.finalize_definitions()).map_err(generation)?;
+        let entries = ids
+            .iter()
+            .map(|&id| {
+                let address = self.module.get_finalized_function(id);
+                // SAFETY: `id` was defined by `define` with three pointer parameters, no
+                // return, in the platform's default (C) calling convention: `Entry`.
+                unsafe { std::mem::transmute::<*const u8, Entry>(address) }
+            })
+            .collect();
+        Ok((
+            Arc::new(Code {
+                module: Some(self.module),
+            }),
+            entries,
+        ))
+    }
+}
+
+/// The body of one function being written: the nodes' values so far.
+struct Body<'a, 'b, 'o> {
+    builder: &'a mut FunctionBuilder<'b>,
+    pointer: types::Type,
+    /// Variables, values, outputs.
+    arguments: [Value; 3],
+    ops: &'o [Op],
+    /// Each `Value` node's position among the interpreter's values.
+    slots: Vec<usize>,
+    /// Each node's value, once emitted (not the loads: see [`Body::operand`]).
+    nodes: Vec<Option<Value>>,
+    /// Each angle's sine and cosine, once computed.
+    trig: Vec<Option<(Value, Value)>>,
+}
+
+impl<'a, 'b, 'o> Body<'a, 'b, 'o> {
+    fn new(
+        builder: &'a mut FunctionBuilder<'b>,
+        pointer: types::Type,
+        arguments: [Value; 3],
+        ops: &'o [Op],
+    ) -> Self {
+        Body {
+            builder,
+            pointer,
+            arguments,
+            ops,
+            slots: value_slots(ops),
+            nodes: vec![None; ops.len()],
+            trig: vec![None; ops.len()],
+        }
+    }
+
+    /// The plan's nodes, each one operation, then its outputs stored. The sines and cosines
+    /// and what their angles need come first: a call clobbers every vector register, so
+    /// nothing else should be live across it.
+    fn emit(&mut self, plan: &Plan) -> Result<(), CompileError> {
+        let early = trig_first(self.ops, plan);
+        let order = (plan.needed.iter()).filter(|&&i| early[i]);
+        let rest = (plan.needed.iter()).filter(|&&i| !early[i]);
+        for &index in order.chain(rest) {
+            let value = match self.ops[index] {
+                // Read where they are used, as a memory operand where one fits: read once
+                // into a register at the start, they would be held, or spilled and read
+                // back, across the whole function.
+                Op::Variable(_) | Op::Value(_) => continue,
+                Op::Sin(a) => self.sin_cos(a)?.0,
+                Op::Cos(a) => self.sin_cos(a)?.1,
+                Op::Recip(a) => {
+                    let one = self.builder.ins().f64const(1.0);
+                    let x = self.operand(a)?;
+                    self.builder.ins().fdiv(one, x)
+                }
+                Op::Neg(a) => {
+                    let x = self.operand(a)?;
+                    self.builder.ins().fneg(x)
+                }
+                Op::Add(a, b) => {
+                    let (x, y) = (self.operand(a)?, self.operand(b)?);
+                    self.builder.ins().fadd(x, y)
+                }
+                Op::Sub(a, b) => {
+                    let (x, y) = (self.operand(a)?, self.operand(b)?);
+                    self.builder.ins().fsub(x, y)
+                }
+                Op::Mul(a, b) => {
+                    let (x, y) = (self.operand(a)?, self.operand(b)?);
+                    self.builder.ins().fmul(x, y)
+                }
+                // An operation added to the interpreter after this compiler was written is
+                // not guessed at: the interpreter evaluates the program.
+                #[allow(unreachable_patterns)]
+                _ => return Err(CompileError::Operation(index)),
+            };
+            self.nodes[index] = Some(value);
+        }
+        for (k, &output) in plan.outputs.iter().enumerate() {
+            let value = self.operand(output)?;
+            let offset = offset(k)?;
+            (self.builder.ins()).store(MemFlags::trusted(), value, self.arguments[2], offset);
+        }
+        Ok(())
+    }
+
+    /// The value of node `index` for one use: a variable or a value read here, another node
+    /// as emitted before (the arena's order).
+    fn operand(&mut self, index: usize) -> Result<Value, CompileError> {
+        match self.ops.get(index) {
+            Some(&Op::Variable(i)) => self.load(0, i),
+            Some(Op::Value(_)) => self.load(1, self.slots[index]),
+            _ => (self.nodes.get(index).copied().flatten()).ok_or(CompileError::Operation(index)),
+        }
+    }
+
+    /// Entry `i` of the argument `which` (0: variables, 1: values).
+    fn load(&mut self, which: usize, i: usize) -> Result<Value, CompileError> {
+        let offset = offset(i)?;
+        let base = self.arguments[which];
+        // Nothing the function writes is read (the outputs are apart), so a read can move to
+        // where it is used, and two of the same place are one.
+        let flags = MemFlags::trusted().with_readonly().with_can_move();
+        Ok((self.builder.ins()).load(types::F64, flags, base, offset))
+    }
+
+    /// `(sin, cos)` of node `angle`, by one call of the kernel per angle, returned in two
+    /// registers.
+    fn sin_cos(&mut self, angle: usize) -> Result<(Value, Value), CompileError> {
+        if let Some(pair) = self.trig[angle] {
+            return Ok(pair);
+        }
+        let x = self.operand(angle)?;
+        let b = &mut *self.builder;
+        let mut signature = Signature::new(b.func.signature.call_conv);
+        signature.params = vec![AbiParam::new(types::F64)];
+        signature.returns = vec![AbiParam::new(types::F64), AbiParam::new(types::F64)];
+        let signature = b.import_signature(signature);
+        let address = sin_cos_pair as extern "C" fn(f64) -> Pair as usize;
+        let callee = b.ins().iconst(self.pointer, address as i64);
+        let call = b.ins().call_indirect(signature, callee, &[x]);
+        let (sin, cos) = (b.inst_results(call)[0], b.inst_results(call)[1]);
+        self.trig[angle] = Some((sin, cos));
+        Ok((sin, cos))
+    }
+}
+
+/// Which of `plan`'s nodes are sines, cosines, or what their angles are computed from.
+fn trig_first(ops: &[Op], plan: &Plan) -> Vec<bool> {
+    let mut early = vec![false; ops.len()];
+    for &index in plan.needed.iter().rev() {
+        let trig = matches!(ops[index], Op::Sin(_) | Op::Cos(_));
+        if trig || early[index] {
+            early[index] = true;
+            let children = match ops[index] {
+                Op::Sin(a) | Op::Cos(a) | Op::Recip(a) | Op::Neg(a) => vec![a],
+                Op::Add(a, b) | Op::Sub(a, b) | Op::Mul(a, b) => vec![a, b],
+                _ => vec![],
+            };
+            for child in children {
+                early[child] = true;
+            }
+        }
+    }
+    early
+}
+
+/// The byte offset of f64 number `i`.
+fn offset(i: usize) -> Result<i32, CompileError> {
+    (i.checked_mul(8).and_then(|o| i32::try_from(o).ok()))
+        .ok_or_else(|| CompileError::Generation(format!("offset of entry {i}")))
+}
+
+/// For each node, its position among the values (`Interpreter::values`, the `Value` nodes in
+/// order).
+fn value_slots(ops: &[Op]) -> Vec<usize> {
+    let mut next = 0;
+    ops.iter()
+        .map(|op| {
+            let slot = next;
+            if matches!(op, Op::Value(_)) {
+                next += 1;
+            }
+            slot
+        })
+        .collect()
+}

@@ -1,0 +1,231 @@
+//! The scene-defined models compiled to machine code when the scene is read, against the
+//! interpreter of the same proved program: every output bit for bit on random states, for the
+//! Mariner's 39-term table and REMUS's six degrees of freedom; and a ship re-parameterised
+//! without deriving, proving or compiling again, against the ship built from its values.
+
+use eom::Model;
+use eom::scene::AnyScene;
+use eom::ship::{ShipModel, ShipScene};
+use eom::vehicle::VehicleModel;
+use eom_test_support::random::Random;
+use std::path::Path;
+
+/// States drawn for each model's right-hand side.
+const STATES: usize = 100_000;
+/// States drawn for the Jacobians and the kinetic energy, which cost more to interpret.
+const JACOBIAN_STATES: usize = 10_000;
+
+fn mariner() -> ShipModel {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/mariner.toml");
+    ShipModel::new(&ShipScene::load(Path::new(path)).unwrap().table).unwrap()
+}
+
+fn remus() -> VehicleModel {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/remus100.toml");
+    let text = std::fs::read_to_string(path).unwrap();
+    match AnyScene::parse(&text, "remus100.toml", Path::new(".")) {
+        Ok(AnyScene::Vehicle(scene)) => scene.model,
+        _ => panic!("remus100.toml is read as a vehicle"),
+    }
+}
+
+/// Uniform in [−bound, bound).
+fn within(random: &mut Random, bound: f64) -> f64 {
+    bound * (2.0 * random.unit() - 1.0)
+}
+
+/// A Mariner state far around its manoeuvres: u of either sign (a ship going astern), every
+/// heading within ±20 rad (the kernel's reduction), the rudder beyond its stops; and δ̇.
+fn ship_state(random: &mut Random) -> ([f64; 7], [f64; 2]) {
+    let state = [
+        within(random, 12.0),
+        within(random, 4.0),
+        within(random, 0.1),
+        within(random, 5000.0),
+        within(random, 5000.0),
+        within(random, 20.0),
+        within(random, 0.8),
+    ];
+    // δ̇, and the propeller rate n of either sign (ahead and astern), rev/s.
+    (state, [within(random, 0.1), within(random, 2.0)])
+}
+
+/// A REMUS state: velocities and rates of either sign (the |x| inputs), any position, a
+/// quaternion not of unit length, the fins beyond their stops; and the fins' rates.
+fn vehicle_state(random: &mut Random) -> ([f64; 15], [f64; 2]) {
+    let mut state = [0.0; 15];
+    for (i, x) in state.iter_mut().enumerate() {
+        let bound = match i {
+            0 => 3.0,
+            1 | 2 => 1.0,
+            3..6 => 1.5,
+            6..9 => 100.0,
+            9..13 => 1.2,
+            _ => 0.6,
+        };
+        *x = within(random, bound);
+    }
+    (state, [within(random, 0.3), within(random, 0.3)])
+}
+
+/// How many of `a`'s and `b`'s entries differ in their bits.
+fn differing(a: impl IntoIterator<Item = f64>, b: impl IntoIterator<Item = f64>) -> usize {
+    a.into_iter()
+        .zip(b)
+        .filter(|(x, y)| x.to_bits() != y.to_bits())
+        .count()
+}
+
+/// `model` against `reference` on `STATES` draws of `draw`: rhs on every one, the Jacobians
+/// and the kinetic energy on the first `JACOBIAN_STATES`; the count of differing bits.
+fn compare<M, R, const N: usize, const I: usize>(
+    model: &M,
+    reference: &R,
+    mut draw: impl FnMut() -> ([f64; N], [f64; I]),
+) -> (usize, usize)
+where
+    M: Model<f64, N, I>,
+    R: Model<f64, N, I>,
+{
+    let (mut rates, mut rest) = (0, 0);
+    for k in 0..STATES {
+        let (state, input) = draw();
+        rates += differing(model.rhs(&state, &input), reference.rhs(&state, &input));
+        if k < JACOBIAN_STATES {
+            let by_state = |m: &dyn Fn() -> [[f64; N]; N]| m().into_iter().flatten();
+            rest += differing(
+                by_state(&|| model.state_jacobian(&state, &input)),
+                by_state(&|| reference.state_jacobian(&state, &input)),
+            );
+            rest += differing(
+                model.input_jacobian(&state, &input).into_iter().flatten(),
+                reference
+                    .input_jacobian(&state, &input)
+                    .into_iter()
+                    .flatten(),
+            );
+            rest += differing(
+                [model.kinetic_energy(&state)],
+                [reference.kinetic_energy(&state)],
+            );
+        }
+    }
+    (rates, rest)
+}
+
+#[test]
+fn the_compiled_mariner_is_the_interpreted_one_bit_for_bit() {
+    let model = mariner();
+    assert_eq!(model.terms(), 39);
+    assert!(model.is_compiled(), "the Mariner's program compiles");
+    let reference = model.interpreted();
+    assert!(!reference.is_compiled());
+    let mut random = Random(0x5EED_0001);
+    let (rates, rest) = compare(&model, &reference, || ship_state(&mut random));
+    assert_eq!(
+        (rates, rest),
+        (0, 0),
+        "differing outputs: rhs, Jacobians and energy"
+    );
+}
+
+#[test]
+fn the_compiled_remus_is_the_interpreted_one_bit_for_bit() {
+    let model = remus();
+    assert!(model.is_compiled(), "REMUS's program compiles");
+    let reference = model.interpreted();
+    let mut random = Random(0x5EED_0002);
+    let (rates, rest) = compare(&model, &reference, || vehicle_state(&mut random));
+    assert_eq!(
+        (rates, rest),
+        (0, 0),
+        "differing outputs: rhs, Jacobians and energy"
+    );
+}
+
+#[test]
+fn the_compiled_esso_osaka_is_the_interpreted_one_bit_for_bit() {
+    // The published table: the program reads the propeller's n, |n|, u_A and c beside U.
+    let scene = eom::ship::ShipScene::load(std::path::Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenes/esso_osaka.toml"
+    )))
+    .unwrap();
+    let model = ShipModel::new(&scene.table).unwrap();
+    assert!(model.is_compiled() && model.propulsion().is_some());
+    let reference = model.interpreted();
+    let mut random = Random(0x5EED_0004);
+    let (rates, rest) = compare(&model, &reference, || ship_state(&mut random));
+    assert_eq!(
+        (rates, rest),
+        (0, 0),
+        "differing outputs: rhs, Jacobians and energy"
+    );
+}
+
+/// The interpreted model compiled again gives the bits of the model as built.
+#[test]
+fn compiling_again_gives_the_same_bits() {
+    let model = mariner();
+    let again = model.interpreted().compiled();
+    assert!(again.is_compiled());
+    let mut random = Random(0x5EED_0003);
+    for _ in 0..1000 {
+        let (state, input) = ship_state(&mut random);
+        assert_eq!(
+            differing(model.rhs(&state, &input), again.rhs(&state, &input)),
+            0
+        );
+    }
+}
+
+/// Types other than f64 are the interpreter's: an f32 call through the compiled model gives
+/// the interpreted model's f32 bits.
+#[test]
+fn other_number_types_are_interpreted() {
+    let model = mariner();
+    let reference = model.interpreted();
+    let state = [7.5f32, 0.3, -0.01, 10.0, -4.0, 0.4, 0.2];
+    let (a, b) = (model.rhs(&state, &[0.01, 0.0]), reference.rhs(&state, &[0.01, 0.0]));
+    assert_eq!(a.map(f32::to_bits), b.map(f32::to_bits));
+    assert!(a.iter().all(|x| x.is_finite()));
+}
+
+/// The Mariner's table with every term and added mass scaled by its own factor.
+fn perturbed(table: &eom::ship::table::ShipTable, seed: u64) -> eom::ship::table::ShipTable {
+    let mut random = Random(seed);
+    let mut table = table.clone();
+    for value in table.terms.values_mut().chain(table.added_mass.iter_mut()) {
+        *value *= 1.0 + within(&mut random, 0.2);
+    }
+    table
+}
+
+/// A model re-parameterised with another table's values (the program proved and compiled
+/// once, its values read at each call) is the model built from that table, bit for bit.
+#[test]
+fn a_model_with_other_values_is_the_model_of_those_values() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/mariner.toml");
+    let table = ShipScene::load(Path::new(path)).unwrap().table;
+    let base = ShipModel::new(&table).unwrap();
+    let other = perturbed(&table, 0x5EED_0004);
+    let (reused, built) = (
+        base.with_table(&other).unwrap(),
+        ShipModel::new(&other).unwrap(),
+    );
+    assert!(reused.is_compiled());
+    let mut random = Random(0x5EED_0005);
+    let mut changed = 0;
+    for _ in 0..1000 {
+        let (state, input) = ship_state(&mut random);
+        let rates = reused.rhs(&state, &input);
+        assert_eq!(differing(rates, built.rhs(&state, &input)), 0);
+        changed += differing(rates, base.rhs(&state, &input));
+    }
+    assert!(changed > 1000, "the values changed the rates: {changed}");
+    // A table of other terms is another program.
+    let mut fewer = table.clone();
+    let first = *fewer.terms.keys().next().unwrap();
+    fewer.terms.remove(&first);
+    assert!(base.with_table(&fewer).is_err());
+}
