@@ -186,7 +186,10 @@ fn other_number_types_are_interpreted() {
     let model = mariner();
     let reference = model.interpreted();
     let state = [7.5f32, 0.3, -0.01, 10.0, -4.0, 0.4, 0.2];
-    let (a, b) = (model.rhs(&state, &[0.01, 0.0]), reference.rhs(&state, &[0.01, 0.0]));
+    let (a, b) = (
+        model.rhs(&state, &[0.01, 0.0]),
+        reference.rhs(&state, &[0.01, 0.0]),
+    );
     assert_eq!(a.map(f32::to_bits), b.map(f32::to_bits));
     assert!(a.iter().all(|x| x.is_finite()));
 }

@@ -782,7 +782,7 @@ impl<'a> Driver<'a> {
             }
             // Read where the ship stops, which is what the course's conditions rule out
             // elsewhere.
-            ManoeuvreKind::CrashStop { .. } => return self.crash_stop_figures(&execute),
+            ManoeuvreKind::CrashStop { .. } => return self.crash_stop_figures(&execute, end),
         };
         figures.notes.extend(course.notes());
         figures
@@ -791,7 +791,7 @@ impl<'a> Driver<'a> {
     /// The crash stop's figures at the instant the ship stops (u = 0), from the execute:
     /// the track reach (the distance midship ran), the head reach and the lateral deviation
     /// (midship's displacement along and across the approach's heading), the time to stop.
-    fn crash_stop_figures(&self, execute: &DriveState) -> Figures {
+    fn crash_stop_figures(&self, execute: &DriveState, end: &DriveState) -> Figures {
         let stop = self.event(Watch::Stopped);
         let (s, c) = execute[5].sin_cos();
         let offset = |y: &DriveState| {
@@ -806,9 +806,15 @@ impl<'a> Driver<'a> {
                 let label = format!("stopped: head reach {head:.1} m, lateral {lateral:.1} m");
                 marks.push((label, [y[3], y[4]]));
             }
+            // What it was doing then says whether a longer run would stop it: still slowing
+            // down, or settled into a turn ahead.
             None => notes.push(format!(
-                "the ship had not stopped by the end of the run (t = {} s): lengthen duration_s",
-                self.manoeuvre.duration
+                "the ship had not stopped by the end of the run (t = {} s): it still made u = \
+                 {:.3} m/s there, turning at r = {:.3}°/s; lengthen duration_s if u is still \
+                 falling",
+                self.manoeuvre.duration,
+                end[0],
+                end[2].to_degrees()
             )),
         }
         Figures {
