@@ -39,9 +39,10 @@ pub enum Command {
     New(new::Args),
     /// Run a scene file: integrate it and write trajectory.csv, summary.json and SVG plots.
     Run(run::Args),
-    /// Linearise a scene: a catalog scene about the point its [linear] table names (A, B,
-    /// the modes and a stability verdict, from the proved Jacobians); a ship scene about the
-    /// straight course (Nomoto's K, T₁, T₂, T₃, course stability, the pivot point).
+    /// Linearise a scene about the point its [linear] table names (A, B, the modes and a
+    /// stability verdict, from the proved Jacobians): a catalog scene, by default at its initial
+    /// state; a ship at its approach, with Nomoto's K, T₁, T₂, T₃, course stability and the
+    /// pivot point beside; a vehicle at its cruise, through its table's Euler-angle twin.
     Linear(linear::Args),
     /// Merge the tables of a sweep's shards (`eom run --shard K/N`), once all are done, into
     /// one sweep.csv sorted by case.
