@@ -15,7 +15,7 @@
 //!   other state depends on them; they are set aside and the rest, the reduced state, is
 //!   linearised, so that A is constant along the motion.
 //! - [`trim`]: Newton on the reduced state for the free variables a `[linear]` table names.
-//! - [`modes`]: eigenvalues and eigenvectors of A, each mode's period, damping, doubling or
+//! - [`modes`](mod@modes): eigenvalues and eigenvectors of A, each mode's period, damping, doubling or
 //!   halving time, dominant states and a name where the family knows one.
 
 pub mod modes;

@@ -58,7 +58,7 @@ const SCHEMA_LINE: usize = 320;
 
 impl SceneError {
     /// An error about `key` of `file`. What the TOML reader and serde echo from the file is
-    /// cut: each line of a syntax error to [`MESSAGE_LINE`] characters, of a schema error to
+    /// cut: each line of a syntax error to `MESSAGE_LINE` characters, of a schema error to
     /// 320; eom's own messages are kept whole.
     pub fn new(file: &str, key: &str, problem: Problem) -> Self {
         Self {

@@ -69,7 +69,7 @@ const fn pattern() -> [(usize, usize); 121] {
 /// δ̇_r and δ̇_s are the fins' rates themselves.
 const INPUT_JACOBIAN: [(usize, usize); 2] = [(13, 0), (14, 1)];
 
-/// The state of the Euler-angle twin ([`Proved::new`] with [`Kinematics::Euler`]): ν, the
+/// The state of the Euler-angle twin (the table derived with Euler-angle kinematics): ν, the
 /// position, the roll, pitch and heading angles of 4.57–4.60, then the fins' angles.
 pub const EULER_STATE: [&str; 14] = [
     "u", "v", "w", "p", "q", "r", "x", "y", "z", "phi", "theta", "psi", "dr", "ds",
