@@ -15,9 +15,14 @@ const STATES: usize = 100_000;
 /// States drawn for the Jacobians and the kinetic energy, which cost more to interpret.
 const JACOBIAN_STATES: usize = 10_000;
 
+/// The model of the ship scene `file` of `scenes/`.
+fn ship(file: &str) -> ShipModel {
+    let path = format!("{}/scenes/{file}", env!("CARGO_MANIFEST_DIR"));
+    ShipModel::new(&ShipScene::load(Path::new(&path)).unwrap().table).unwrap()
+}
+
 fn mariner() -> ShipModel {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/mariner.toml");
-    ShipModel::new(&ShipScene::load(Path::new(path)).unwrap().table).unwrap()
+    ship("mariner.toml")
 }
 
 fn remus() -> VehicleModel {
@@ -146,12 +151,7 @@ fn the_compiled_remus_is_the_interpreted_one_bit_for_bit() {
 #[test]
 fn the_compiled_esso_osaka_is_the_interpreted_one_bit_for_bit() {
     // The published table: the program reads the propeller's n, |n|, u_A and c beside U.
-    let scene = eom::ship::ShipScene::load(std::path::Path::new(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/scenes/esso_osaka.toml"
-    )))
-    .unwrap();
-    let model = ShipModel::new(&scene.table).unwrap();
+    let model = ship("esso_osaka.toml");
     assert!(model.is_compiled() && model.propulsion().is_some());
     let reference = model.interpreted();
     let mut random = Random(0x5EED_0004);

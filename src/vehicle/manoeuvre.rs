@@ -170,7 +170,7 @@ pub fn run(
 ) -> Result<VehicleRun, VehicleError> {
     let mut y = VehicleState::from(start);
     let schedule = schedule(manoeuvre);
-    let mut changes: Vec<f64> = instants(manoeuvre);
+    let mut changes: Vec<f64> = instants(manoeuvre, &schedule);
     changes.push(manoeuvre.duration);
     let mut t = 0.0;
     let mut command = Command::new(manoeuvre, &start);
@@ -348,15 +348,14 @@ fn schedule(manoeuvre: &VehicleManoeuvre) -> Vec<f64> {
     times
 }
 
-/// Where the run is cut: the schedule's instants, and the autopilots' samples k·T_s (one
-/// within a millionth of a period of a scheduled instant is that instant).
-fn instants(manoeuvre: &VehicleManoeuvre) -> Vec<f64> {
-    let mut times = schedule(manoeuvre);
+/// Where the run is cut: the `schedule`'s instants ([`schedule`]), and the autopilots'
+/// samples k·T_s (one within a millionth of a period of a scheduled instant is that instant).
+fn instants(manoeuvre: &VehicleManoeuvre, schedule: &[f64]) -> Vec<f64> {
+    let mut times = schedule.to_vec();
     if let Some((autopilots, _)) = &manoeuvre.autopilot {
         let period = autopilots.sample;
         let count = (manoeuvre.duration / period).ceil() as u64;
-        let scheduled = times.clone();
-        let near = |t: f64| scheduled.iter().any(|&s| (s - t).abs() <= 1e-6 * period);
+        let near = |t: f64| schedule.iter().any(|&s| (s - t).abs() <= 1e-6 * period);
         times.extend(
             (1..count)
                 .map(|k| k as f64 * period)

@@ -65,7 +65,11 @@ pub enum Watch {
 
 /// The Euler angles' rates (φ̇ left out): ψ̇ and θ̇ (4.60).
 pub fn heading_and_pitch_rates(state: &[f64; 15]) -> (f64, f64) {
-    let [phi, theta, _] = euler_angles(state);
+    rates_at(state, euler_angles(state))
+}
+
+/// [`heading_and_pitch_rates`] with the state's Euler angles already read.
+fn rates_at(state: &[f64; 15], [phi, theta, _]: [f64; 3]) -> (f64, f64) {
     let (q, r) = (state[4], state[5]);
     let (s, c) = phi.sin_cos();
     ((q * s + r * c) / theta.cos(), q * c - r * s)
@@ -93,7 +97,7 @@ pub struct Progress {
     started: bool,
     /// The events seen, in order.
     pub events: Vec<Event>,
-    /// The course after the execute (the turning circle's steady criterion).
+    /// The course after the execute, for a turning circle's steady criterion.
     pub course: Option<Course>,
     /// The state at the execute.
     at_execute: Option<[f64; 15]>,
@@ -129,7 +133,9 @@ impl Progress {
         self.heading0 = euler_angles(state)[2];
         self.last_heading = self.heading0;
         self.turned = 0.0;
-        self.course = Some(Course::new(horizontal_speed(state), true));
+        // Only the turning circle's steady figures read the course.
+        self.course = matches!(self.trial, Trial::TurningCircle { .. })
+            .then(|| Course::new(horizontal_speed(state), true));
     }
 
     /// Whether the execute has come.
@@ -149,12 +155,13 @@ impl Progress {
         if !self.started {
             return;
         }
-        let heading = euler_angles(state)[2];
-        self.turned += wrapped(heading - self.last_heading, TAU);
-        self.last_heading = heading;
+        // The quaternion read as angles once per step: the heading, and the course's rates.
+        let angles = euler_angles(state);
+        self.turned += wrapped(angles[2] - self.last_heading, TAU);
+        self.last_heading = angles[2];
         if let Some(course) = self.course.as_mut() {
-            let (psi_dot, _) = heading_and_pitch_rates(state);
-            let v = horizontal_speed(state);
+            let (psi_dot, _) = rates_at(state, angles);
+            let v = horizontal_speed_at(state, angles);
             course.record(t, v, 0.0, psi_dot, self.turned);
         }
     }
@@ -271,7 +278,11 @@ impl Progress {
 
 /// √(ẋ² + ẏ²) of O in space axes at `state` (4.57, by the quaternion's rotation).
 pub fn horizontal_speed(state: &[f64; 15]) -> f64 {
-    let [phi, theta, psi] = euler_angles(state);
+    horizontal_speed_at(state, euler_angles(state))
+}
+
+/// [`horizontal_speed`] with the state's Euler angles already read.
+fn horizontal_speed_at(state: &[f64; 15], [phi, theta, psi]: [f64; 3]) -> f64 {
     let (u, v, w) = (state[0], state[1], state[2]);
     let (sf, cf) = phi.sin_cos();
     let (st, ct) = theta.sin_cos();
