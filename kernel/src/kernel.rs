@@ -12,41 +12,41 @@ use crate::lanes::{Lane, SIGN_BIT, place, quadrant};
 use core::f64::consts::FRAC_PI_4;
 
 /// The first 33 bits of π/2: `k·PIO2_1` is exact for |k| ≤ 2¹⁹.
-const PIO2_1: f64 = f64::from_bits(0x3FF9_21FB_5440_0000);
+pub const PIO2_1: f64 = f64::from_bits(0x3FF9_21FB_5440_0000);
 /// The next 33 bits of π/2: `k·PIO2_2` is exact too.
-const PIO2_2: f64 = f64::from_bits(0x3DD0_B461_1A60_0000);
+pub const PIO2_2: f64 = f64::from_bits(0x3DD0_B461_1A60_0000);
 /// π/2 − PIO2_1 − PIO2_2.
-const PIO2_2T: f64 = f64::from_bits(0x3BA3_198A_2E03_7073);
+pub const PIO2_2T: f64 = f64::from_bits(0x3BA3_198A_2E03_7073);
 /// Below 2¹⁹·π/2, so that |k| ≤ 2¹⁹ and the products above stay exact.
-const LIMIT: f64 = f64::from_bits(0x4129_21FA_0000_0000);
+pub const LIMIT: f64 = f64::from_bits(0x4129_21FA_0000_0000);
 /// 2⁻²⁷: below it sin x rounds to x and cos x to 1.
-const TINY: f64 = f64::from_bits(0x3E40_0000_0000_0000);
+pub const TINY: f64 = f64::from_bits(0x3E40_0000_0000_0000);
 
 /// fdlibm `__kernel_sin`, r³.
-const S1: f64 = f64::from_bits(0xBFC5_5555_5555_5549);
+pub const S1: f64 = f64::from_bits(0xBFC5_5555_5555_5549);
 /// fdlibm `__kernel_sin`, r⁵.
-const S2: f64 = f64::from_bits(0x3F81_1111_1110_F8A6);
+pub const S2: f64 = f64::from_bits(0x3F81_1111_1110_F8A6);
 /// fdlibm `__kernel_sin`, r⁷.
-const S3: f64 = f64::from_bits(0xBF2A_01A0_19C1_61D5);
+pub const S3: f64 = f64::from_bits(0xBF2A_01A0_19C1_61D5);
 /// fdlibm `__kernel_sin`, r⁹.
-const S4: f64 = f64::from_bits(0x3EC7_1DE3_57B1_FE7D);
+pub const S4: f64 = f64::from_bits(0x3EC7_1DE3_57B1_FE7D);
 /// fdlibm `__kernel_sin`, r¹¹.
-const S5: f64 = f64::from_bits(0xBE5A_E5E6_8A2B_9CEB);
+pub const S5: f64 = f64::from_bits(0xBE5A_E5E6_8A2B_9CEB);
 /// fdlibm `__kernel_sin`, r¹³.
-const S6: f64 = f64::from_bits(0x3DE5_D93A_5ACF_D57C);
+pub const S6: f64 = f64::from_bits(0x3DE5_D93A_5ACF_D57C);
 
 /// fdlibm `__kernel_cos`, r⁴.
-const C1: f64 = f64::from_bits(0x3FA5_5555_5555_554C);
+pub const C1: f64 = f64::from_bits(0x3FA5_5555_5555_554C);
 /// fdlibm `__kernel_cos`, r⁶.
-const C2: f64 = f64::from_bits(0xBF56_C16C_16C1_5177);
+pub const C2: f64 = f64::from_bits(0xBF56_C16C_16C1_5177);
 /// fdlibm `__kernel_cos`, r⁸.
-const C3: f64 = f64::from_bits(0x3EFA_01A0_19CB_1590);
+pub const C3: f64 = f64::from_bits(0x3EFA_01A0_19CB_1590);
 /// fdlibm `__kernel_cos`, r¹⁰.
-const C4: f64 = f64::from_bits(0xBE92_7E4F_809C_52AD);
+pub const C4: f64 = f64::from_bits(0xBE92_7E4F_809C_52AD);
 /// fdlibm `__kernel_cos`, r¹².
-const C5: f64 = f64::from_bits(0x3E21_EE9E_BDB4_B1C4);
+pub const C5: f64 = f64::from_bits(0x3E21_EE9E_BDB4_B1C4);
 /// fdlibm `__kernel_cos`, r¹⁴.
-const C6: f64 = f64::from_bits(0xBDA8_FAE9_BE88_38D4);
+pub const C6: f64 = f64::from_bits(0xBDA8_FAE9_BE88_38D4);
 
 /// `(sin x, cos x)` of every `x`, from one argument reduction each: the kernel itself, which
 /// [`sin_cos`](crate::sin_cos) calls for `f64` and `f32` (and which the feature

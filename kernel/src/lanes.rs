@@ -112,9 +112,9 @@ impl Lane for f64x8 {
 }
 
 /// 1.5·2⁵²: adding and subtracting it rounds an f64 below 2⁵¹ to an integer.
-pub(crate) const ROUNDER: f64 = f64::from_bits(0x4338_0000_0000_0000);
+pub const ROUNDER: f64 = f64::from_bits(0x4338_0000_0000_0000);
 /// The sign bit of an f64.
-pub(crate) const SIGN_BIT: u64 = 1 << 63;
+pub const SIGN_BIT: u64 = 1 << 63;
 
 /// `(x·2/π + ROUNDER, k)`: the rounding sum, whose low bits are those of k (two's
 /// complement), and k = round(2x/π) itself.

@@ -65,6 +65,23 @@ pub use lanes::{sin_cos_f32x8, sin_cos_f64x4};
 pub use operations::Operations;
 pub use single::sin_cos as sin_cos_f32;
 
+/// The f64 kernel's constants, for a code generator that writes the kernel out where a model
+/// would call it (`eom`'s models compiled at run time). With these, and the operations of
+/// [`sin_cos_f64`] in their order (`k = round(2x/π)` by [`ROUNDER`](recipe::ROUNDER), the
+/// three-step reduction, the two Estrin polynomials, the quadrant's swap and signs), such code
+/// gives the kernel's bits; arguments outside `TINY ≤ |x| ≤ LIMIT` (and NaN) must go to
+/// [`sin_cos_f64`] itself.
+pub mod recipe {
+    pub use crate::kernel::{
+        C1, C2, C3, C4, C5, C6, LIMIT, PIO2_1, PIO2_2, PIO2_2T, S1, S2, S3, S4, S5, S6, TINY,
+    };
+    pub use crate::lanes::{ROUNDER, SIGN_BIT};
+
+    /// Whether [`sin_cos`](crate::sin_cos) of `f64` is this kernel: false with the feature
+    /// `platform-trig`, whose platform `sin` and `cos` no written-out kernel reproduces.
+    pub const IS_THE_KERNEL: bool = !cfg!(feature = "platform-trig");
+}
+
 use core::any::Any;
 use simba::simd::{SimdRealField, WideF32x8, WideF64x4};
 

@@ -8,10 +8,15 @@
 //!
 //! The compiled code is the interpreter's operations one for one: each node is one IEEE
 //! operation of the same operands in the same order (no fused multiply–add, no reassociation:
-//! Cranelift contracts nothing it is not asked to), 1/x is a division of one by x, and sine
-//! and cosine call the kernel function the interpreter calls (`eom_kernel::sin_cos`), once per
-//! angle for both, the pair returned in two registers. So its results are the interpreter's bit for bit, which the tests check on
-//! random states.
+//! Cranelift contracts nothing it is not asked to), and 1/x is a division of one by x. Sine and
+//! cosine are the kernel the interpreter calls (`eom_kernel::sin_cos`), once per angle for
+//! both, written out operation for operation from its constants (`eom_kernel::recipe`). An
+//! angle outside the kernel's range (tiny, beyond its reduction's limit, NaN, infinite) makes
+//! the compiled function return before it writes anything, and the interpreter evaluates that
+//! call: so the code calls nothing, and needs no frame of its own. So its results are the
+//! interpreter's bit for bit, which the tests check on random states and on the angles where
+//! the kernel changes path. With the feature `platform-trig` (the platform's sine and cosine,
+//! which no written-out kernel reproduces) a program with an angle is not compiled.
 //!
 //! The values of the program's constants and hoisted coefficients are not in the code: the
 //! compiled function reads them from the interpreter's table at each call, so one compiled
@@ -21,12 +26,14 @@
 //! leaves the plans uncompiled, and the interpreter evaluates them.
 
 use super::{Functions, Interpreter, Op, Plan};
-use cranelift_codegen::ir::{AbiParam, InstBuilder, MemFlags, Signature, Value, types};
-use cranelift_codegen::isa::{CallConv, OwnedTargetIsa};
+use cranelift_codegen::ir::condcodes::{FloatCC, IntCC};
+use cranelift_codegen::ir::{AbiParam, Block, BlockArg, InstBuilder, MemFlags, Value, types};
+use cranelift_codegen::isa::OwnedTargetIsa;
 use cranelift_codegen::settings::{self, Configurable};
 use cranelift_frontend::{FunctionBuilder, FunctionBuilderContext};
 use cranelift_jit::{JITBuilder, JITModule};
 use cranelift_module::{FuncId, Module, default_libcall_names};
+use eom_kernel::recipe;
 use std::any::TypeId;
 use std::sync::{Arc, OnceLock};
 
@@ -44,8 +51,9 @@ pub(crate) enum CompileError {
     Generation(String),
 }
 
-/// A compiled function: variables, values, outputs, each a pointer to f64s.
-type Entry = unsafe extern "C" fn(*const f64, *const f64, *mut f64);
+/// A compiled function: variables, values, outputs, each a pointer to f64s; returns 1 when it
+/// wrote the outputs, 0 when an angle was outside the kernel's range (nothing written).
+type Entry = unsafe extern "C" fn(*const f64, *const f64, *mut f64) -> u8;
 
 /// One plan compiled: its entry point and what it reads and writes.
 #[derive(Clone)]
@@ -155,7 +163,7 @@ fn variables_read(ops: &[Op], plan: &Plan) -> usize {
 }
 
 /// Runs `machine` when `T` is f64 and the slices have the lengths it was compiled for;
-/// returns whether it ran (else the caller interprets).
+/// returns whether it wrote the outputs (else the caller interprets).
 #[inline]
 pub(super) fn run<T: 'static>(
     machine: &Machine,
@@ -173,29 +181,14 @@ pub(super) fn run<T: 'static>(
     // `machine.variables` variables and `machine.values` values and writes `machine.outputs`
     // outputs, each within the slice just checked; it was compiled with this signature in the
     // platform's C calling convention, and its code lives as long as `machine.code`.
-    unsafe {
+    let wrote = unsafe {
         (machine.entry)(
             variables.as_ptr().cast(),
             values.as_ptr(),
             out.as_mut_ptr().cast(),
-        );
-    }
-    true
-}
-
-/// A sine and a cosine as the C convention returns a pair of doubles: in two registers on the
-/// platforms [`host`] compiles for, as Cranelift returns two f64 results.
-#[repr(C)]
-struct Pair {
-    sin: f64,
-    cos: f64,
-}
-
-/// `(sin x, cos x)` as the interpreter computes them: the one function the compiled code
-/// calls.
-extern "C" fn sin_cos_pair(x: f64) -> Pair {
-    let [(sin, cos)] = eom_kernel::sin_cos([x]);
-    Pair { sin, cos }
+        )
+    };
+    wrote != 0
 }
 
 /// The target this machine is, set up once: Cranelift's settings for speed, the host's
@@ -214,23 +207,6 @@ fn host() -> Result<OwnedTargetIsa, CompileError> {
         let builder = cranelift_native::builder().map_err(|e| CompileError::Host(e.into()))?;
         let isa = (builder.finish(settings::Flags::new(flags)))
             .map_err(|e| CompileError::Host(e.to_string()))?;
-        // The kernel's pair comes back in two registers only where the C convention returns
-        // a pair of doubles so (x86-64 System V, AArch64, RISC-V): elsewhere (Windows, s390x)
-        // it is returned through memory, and nothing is compiled.
-        let pair_in_registers = cfg!(any(
-            target_arch = "x86_64",
-            target_arch = "aarch64",
-            target_arch = "riscv64"
-        )) && matches!(
-            isa.default_call_conv(),
-            CallConv::SystemV | CallConv::AppleAarch64
-        );
-        if !pair_in_registers {
-            return Err(CompileError::Host(format!(
-                "the C convention {} returns a pair of doubles through memory",
-                isa.default_call_conv()
-            )));
-        }
         Ok(isa)
     })
     .clone()
@@ -260,6 +236,7 @@ impl Compiler {
         let pointer = self.module.target_config().pointer_type();
         let mut signature = self.module.make_signature();
         signature.params = vec![AbiParam::new(pointer); 3];
+        signature.returns = vec![AbiParam::new(types::I8)];
         let id = (self.module.declare_anonymous_function(&signature)).map_err(generation)?;
         let mut context = self.module.make_context();
         context.func.signature = signature;
@@ -270,8 +247,9 @@ impl Compiler {
         builder.seal_block(block);
         let params = builder.block_params(block).to_vec();
         let arguments = [params[0], params[1], params[2]];
-        Body::new(&mut builder, pointer, arguments, ops).emit(plan)?;
-        builder.ins().return_(&[]);
+        Body::new(&mut builder, arguments, ops).emit(plan)?;
+        let wrote = builder.ins().iconst(types::I8, 1);
+        builder.ins().return_(&[wrote]);
         builder.finalize();
         (self.module.define_function(id, &mut context)).map_err(generation)?;
         Ok(id)
@@ -284,8 +262,8 @@ impl Compiler {
             .iter()
             .map(|&id| {
                 let address = self.module.get_finalized_function(id);
-                // SAFETY: `id` was defined by `define` with three pointer parameters, no
-                // return, in the platform's default (C) calling convention: `Entry`.
+                // SAFETY: `id` was defined by `define` with three pointer parameters and a
+                // byte returned, in the platform's default (C) calling convention: `Entry`.
                 unsafe { std::mem::transmute::<*const u8, Entry>(address) }
             })
             .collect();
@@ -301,7 +279,6 @@ impl Compiler {
 /// The body of one function being written: the nodes' values so far.
 struct Body<'a, 'b, 'o> {
     builder: &'a mut FunctionBuilder<'b>,
-    pointer: types::Type,
     /// Variables, values, outputs.
     arguments: [Value; 3],
     ops: &'o [Op],
@@ -311,29 +288,26 @@ struct Body<'a, 'b, 'o> {
     nodes: Vec<Option<Value>>,
     /// Each angle's sine and cosine, once computed.
     trig: Vec<Option<(Value, Value)>>,
+    /// The block that returns 0 (an angle out of the kernel's range), once made.
+    outside: Option<Block>,
 }
 
 impl<'a, 'b, 'o> Body<'a, 'b, 'o> {
-    fn new(
-        builder: &'a mut FunctionBuilder<'b>,
-        pointer: types::Type,
-        arguments: [Value; 3],
-        ops: &'o [Op],
-    ) -> Self {
+    fn new(builder: &'a mut FunctionBuilder<'b>, arguments: [Value; 3], ops: &'o [Op]) -> Self {
         Body {
             builder,
-            pointer,
             arguments,
             ops,
             slots: value_slots(ops),
             nodes: vec![None; ops.len()],
             trig: vec![None; ops.len()],
+            outside: None,
         }
     }
 
     /// The plan's nodes, each one operation, then its outputs stored. The sines and cosines
-    /// and what their angles need come first: a call clobbers every vector register, so
-    /// nothing else should be live across it.
+    /// and what their angles need come first, so that an angle out of the kernel's range
+    /// returns before any other work.
     fn emit(&mut self, plan: &Plan) -> Result<(), CompileError> {
         let early = trig_first(self.ops, plan);
         let order = (plan.needed.iter()).filter(|&&i| early[i]);
@@ -374,9 +348,17 @@ impl<'a, 'b, 'o> Body<'a, 'b, 'o> {
             };
             self.nodes[index] = Some(value);
         }
-        for (k, &output) in plan.outputs.iter().enumerate() {
-            let value = self.operand(output)?;
-            let offset = offset(k)?;
+        // In pairs, one 16-byte store each: the caller reads its array of rates back in
+        // 16-byte moves, which a pair of 8-byte stores would make wait for both to retire.
+        for (pair, outputs) in plan.outputs.chunks(2).enumerate() {
+            let mut value = self.operand(outputs[0])?;
+            if let Some(&second) = outputs.get(1) {
+                let second = self.operand(second)?;
+                let b = self.builder.ins();
+                let lanes = b.scalar_to_vector(types::F64X2, value);
+                value = self.builder.ins().insertlane(lanes, second, 1);
+            }
+            let offset = offset(2 * pair)?;
             (self.builder.ins()).store(MemFlags::trusted(), value, self.arguments[2], offset);
         }
         Ok(())
@@ -402,25 +384,169 @@ impl<'a, 'b, 'o> Body<'a, 'b, 'o> {
         Ok((self.builder.ins()).load(types::F64, flags, base, offset))
     }
 
-    /// `(sin, cos)` of node `angle`, by one call of the kernel per angle, returned in two
-    /// registers.
+    /// `(sin, cos)` of node `angle`: the kernel written out, for each angle once.
     fn sin_cos(&mut self, angle: usize) -> Result<(Value, Value), CompileError> {
         if let Some(pair) = self.trig[angle] {
             return Ok(pair);
         }
+        if !recipe::IS_THE_KERNEL {
+            return Err(CompileError::Operation(angle));
+        }
         let x = self.operand(angle)?;
-        let b = &mut *self.builder;
-        let mut signature = Signature::new(b.func.signature.call_conv);
-        signature.params = vec![AbiParam::new(types::F64)];
-        signature.returns = vec![AbiParam::new(types::F64), AbiParam::new(types::F64)];
-        let signature = b.import_signature(signature);
-        let address = sin_cos_pair as extern "C" fn(f64) -> Pair as usize;
-        let callee = b.ins().iconst(self.pointer, address as i64);
-        let call = b.ins().call_indirect(signature, callee, &[x]);
-        let (sin, cos) = (b.inst_results(call)[0], b.inst_results(call)[1]);
-        self.trig[angle] = Some((sin, cos));
-        Ok((sin, cos))
+        let outside = self.outside_block();
+        let pair = kernel(self.builder, x, outside);
+        self.trig[angle] = Some(pair);
+        Ok(pair)
     }
+
+    /// The block an angle out of the kernel's range branches to: it returns 0, and the
+    /// interpreter evaluates the call.
+    fn outside_block(&mut self) -> Block {
+        if let Some(block) = self.outside {
+            return block;
+        }
+        let b = &mut *self.builder;
+        let (block, here) = (b.create_block(), b.current_block());
+        b.switch_to_block(block);
+        b.set_cold_block(block);
+        let none = b.ins().iconst(types::I8, 0);
+        b.ins().return_(&[none]);
+        if let Some(here) = here {
+            b.switch_to_block(here);
+        }
+        self.outside = Some(block);
+        block
+    }
+}
+
+/// The kernel of `eom_kernel::sin_cos_f64` for one angle, operation for operation as
+/// `kernel.rs` writes it (so its bits), to `outside` when the angle is out of its range
+/// (`all_in_range`); else an angle within ±π/4 as it is and any other reduced
+/// (`in_range`), both polynomials, the quadrant's swap and signs (`place`).
+fn kernel(b: &mut FunctionBuilder<'_>, x: Value, outside: Block) -> (Value, Value) {
+    let (warm, reduce, evaluate) = (b.create_block(), b.create_block(), b.create_block());
+    let bits = b.ins().bitcast(types::I64, MemFlags::new(), x);
+    let magnitude = b.ins().band_imm(bits, !recipe::SIGN_BIT as i64);
+    let above_tiny = b
+        .ins()
+        .iadd_imm(magnitude, -(recipe::TINY.to_bits() as i64));
+    let span = (recipe::LIMIT.to_bits() - recipe::TINY.to_bits()) as i64;
+    let out_of_range = b
+        .ins()
+        .icmp_imm(IntCC::UnsignedGreaterThan, above_tiny, span);
+    b.ins().brif(out_of_range, outside, &[], warm, &[]);
+
+    b.switch_to_block(warm);
+    b.seal_block(warm);
+    let absolute = b.ins().fabs(x);
+    let quarter = b.ins().f64const(std::f64::consts::FRAC_PI_4);
+    let small = b.ins().fcmp(FloatCC::LessThanOrEqual, absolute, quarter);
+    let zero = b.ins().iconst(types::I64, 0);
+    let as_it_is = [BlockArg::Value(x), BlockArg::Value(zero)];
+    b.ins().brif(small, evaluate, &as_it_is, reduce, &[]);
+
+    b.switch_to_block(reduce);
+    b.seal_block(reduce);
+    let (r, quadrant) = reduced(b, x);
+    b.ins()
+        .jump(evaluate, &[BlockArg::Value(r), BlockArg::Value(quadrant)]);
+
+    let r = b.append_block_param(evaluate, types::F64);
+    let quadrant = b.append_block_param(evaluate, types::I64);
+    b.switch_to_block(evaluate);
+    b.seal_block(evaluate);
+    let (sin, cos) = (sin_reduced(b, r), cos_reduced(b, r));
+    placed(b, quadrant, sin, cos)
+}
+
+/// `r = x − k·π/2` in three steps, `k = round(2x/π)`, and the bits of the rounding sum, whose
+/// low bits are k's (two's complement): `quadrant` and `reduce` of the kernel.
+fn reduced(b: &mut FunctionBuilder<'_>, x: Value) -> (Value, Value) {
+    let rounder = b.ins().f64const(recipe::ROUNDER);
+    let scaled = mul_by(b, x, std::f64::consts::FRAC_2_PI);
+    let shifted = b.ins().fadd(scaled, rounder);
+    let k = b.ins().fsub(shifted, rounder);
+    let mut r = x;
+    for part in [recipe::PIO2_1, recipe::PIO2_2, recipe::PIO2_2T] {
+        let product = mul_by(b, k, part);
+        r = b.ins().fsub(r, product);
+    }
+    (r, b.ins().bitcast(types::I64, MemFlags::new(), shifted))
+}
+
+/// The reduced pair put in quadrant `k mod 4`: swapped for odd k, the sine negated for
+/// k ≡ 2, 3 and the cosine for k ≡ 1, 2 (`place` of the kernel).
+fn placed(b: &mut FunctionBuilder<'_>, quadrant: Value, sin: Value, cos: Value) -> (Value, Value) {
+    let odd = b.ins().band_imm(quadrant, 1);
+    let swapped_sin = b.ins().select(odd, cos, sin);
+    let swapped_cos = b.ins().select(odd, sin, cos);
+    let next = b.ins().iadd_imm(quadrant, 1);
+    (
+        with_sign_of(b, swapped_sin, quadrant),
+        with_sign_of(b, swapped_cos, next),
+    )
+}
+
+/// `value` with its sign bit flipped where bit 1 of `quadrant` is set.
+fn with_sign_of(b: &mut FunctionBuilder<'_>, value: Value, quadrant: Value) -> Value {
+    let shifted = b.ins().ishl_imm(quadrant, 62);
+    let sign = b.ins().band_imm(shifted, recipe::SIGN_BIT as i64);
+    let bits = b.ins().bitcast(types::I64, MemFlags::new(), value);
+    let flipped = b.ins().bxor(bits, sign);
+    b.ins().bitcast(types::F64, MemFlags::new(), flipped)
+}
+
+/// `x·c`.
+fn mul_by(b: &mut FunctionBuilder<'_>, x: Value, c: f64) -> Value {
+    let c = b.ins().f64const(c);
+    b.ins().fmul(x, c)
+}
+
+/// `c0 + x·c1`.
+fn linear(b: &mut FunctionBuilder<'_>, c0: f64, x: Value, c1: f64) -> Value {
+    let product = mul_by(b, x, c1);
+    let c0 = b.ins().f64const(c0);
+    b.ins().fadd(c0, product)
+}
+
+/// The degree-5 polynomial in z = r² of the sine's and the cosine's kernels, in pairs
+/// (Estrin's scheme, as `kernel.rs` groups it): `(a + z b) + w ((c + z d) + w (e + z f))`.
+fn estrin(b: &mut FunctionBuilder<'_>, z: Value, w: Value, c: [f64; 6]) -> Value {
+    let low = linear(b, c[0], z, c[1]);
+    let middle = linear(b, c[2], z, c[3]);
+    let high = linear(b, c[4], z, c[5]);
+    let upper = b.ins().fmul(w, high);
+    let upper = b.ins().fadd(middle, upper);
+    let upper = b.ins().fmul(w, upper);
+    b.ins().fadd(low, upper)
+}
+
+/// sin r for |r| ≤ π/4: `r + r³ P(r²)`, as `sin_reduced` of `kernel.rs`.
+fn sin_reduced(b: &mut FunctionBuilder<'_>, r: Value) -> Value {
+    use recipe::{S1, S2, S3, S4, S5, S6};
+    let z = b.ins().fmul(r, r);
+    let w = b.ins().fmul(z, z);
+    let p = estrin(b, z, w, [S1, S2, S3, S4, S5, S6]);
+    let cube = b.ins().fmul(z, r);
+    let tail = b.ins().fmul(cube, p);
+    b.ins().fadd(r, tail)
+}
+
+/// cos r for |r| ≤ π/4: `1 − r²/2 + r⁴ Q(r²)` with the rounding error of `1 − r²/2` added
+/// back, as `cos_reduced` of `kernel.rs`.
+fn cos_reduced(b: &mut FunctionBuilder<'_>, r: Value) -> Value {
+    use recipe::{C1, C2, C3, C4, C5, C6};
+    let z = b.ins().fmul(r, r);
+    let w = b.ins().fmul(z, z);
+    let q = estrin(b, z, w, [C1, C2, C3, C4, C5, C6]);
+    let half_z = mul_by(b, z, 0.5);
+    let one = b.ins().f64const(1.0);
+    let head = b.ins().fsub(one, half_z);
+    let lost = b.ins().fsub(one, head);
+    let lost = b.ins().fsub(lost, half_z);
+    let w_q = b.ins().fmul(w, q);
+    let tail = b.ins().fadd(lost, w_q);
+    b.ins().fadd(head, tail)
 }
 
 /// Which of `plan`'s nodes are sines, cosines, or what their angles are computed from.

@@ -77,6 +77,8 @@ pub struct ShipModel {
     functions: Functions,
     /// What each of the program's inputs is, by its column.
     inputs: Vec<ProgramInput>,
+    /// Whether the program reads U (a prime table): asked at every call, so kept apart.
+    reads_speed: bool,
     propulsion: Option<Propulsion>,
     /// What the table's values do not change, shared by the models of other values.
     proved: Arc<Proved>,
@@ -129,7 +131,7 @@ impl ShipModel {
         let program = prove_with_jacobians(&system)?;
         let functions = Functions::of(&program)
             .map_err(|what| ShipError::invalid("hydrodynamics", format!("no {what}")))?;
-        let inputs = system
+        let inputs: Vec<ProgramInput> = system
             .inputs
             .iter()
             .map(|name| match *name {
@@ -153,6 +155,7 @@ impl ShipModel {
         let interpreter = interpreter(&proved, &coefficients(&proved, table))?;
         Ok(ShipModel {
             functions: functions.compile(&interpreter),
+            reads_speed: inputs.contains(&ProgramInput::Speed),
             inputs,
             propulsion: table.propulsion,
             operations: proved.program.operations(&proved.program.rhs),
@@ -201,7 +204,7 @@ impl ShipModel {
         let mut variables = [T::zero(); 13];
         variables[..7].copy_from_slice(state);
         variables[7] = input[0];
-        if self.inputs.contains(&ProgramInput::Speed) {
+        if self.reads_speed {
             variables[8] = (state[0] * state[0] + state[1] * state[1]).simd_sqrt();
         }
         if let Some(propulsion) = &self.propulsion {
