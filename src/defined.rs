@@ -44,7 +44,7 @@ mod compiled {
 /// `vehicle::{Convention, …}`).
 pub(crate) mod engine {
     pub use eom_codegen::emit::program::{Function, Node, Program};
-    pub use eom_codegen::emit::{EmitError, Operations, f64_value, prove_with_jacobians};
+    pub use eom_codegen::emit::{EmitError, F64Formula, Operations, prove_with_jacobians};
     pub use eom_codegen::model::ship::{
         ADDED_MASS, Force, PRIME_SCALES, PROPULSION, ShipSpec, Term, Units, VARIABLES, YawInertia,
         ship,
@@ -256,26 +256,67 @@ impl Interpreter {
     }
 }
 
-/// The hoisted coefficients, each computed once from the parameters (and the reciprocals of
-/// parameter polynomials, computed first); a parameter without a value makes NaN. Each is
-/// computed as the emitted `Coefficients::new` computes it (`f64_value`), so the program has
-/// the bits of the same table compiled by rustc from a user's `build.rs`.
+/// The hoisted coefficients of a proved program as formulas of its parameters, built once:
+/// the reciprocals of parameter polynomials first (each a parameter of the ones after it),
+/// then each coefficient. Each formula computes its value as the emitted `Coefficients::new`
+/// computes it ([`engine::F64Formula`]), so the program has the bits of the same table
+/// compiled by rustc from a user's `build.rs`; the symbolic work is not repeated for each set
+/// of values (a Monte Carlo case).
+#[derive(Debug, Clone)]
+pub(crate) struct CoefficientFormulas {
+    /// The parameters by index, the reciprocals' symbols after the given ones.
+    symbols: Vec<String>,
+    /// Each reciprocal: the index it fills, and the formula it is the reciprocal of.
+    reciprocals: Vec<(usize, engine::F64Formula)>,
+    coefficients: Vec<engine::F64Formula>,
+}
+
+impl CoefficientFormulas {
+    pub(crate) fn new(system: &System, program: &Program) -> Self {
+        let mut symbols: Vec<String> = Vec::new();
+        let mut index = |symbol: &str| {
+            (symbols.iter().position(|s| s == symbol)).unwrap_or_else(|| {
+                symbols.push(symbol.to_owned());
+                symbols.len() - 1
+            })
+        };
+        let reciprocals = (system.reciprocals.iter())
+            .map(|r| {
+                let of = engine::F64Formula::new(&r.of, &mut index);
+                (index(&r.symbol), of)
+            })
+            .collect();
+        let coefficients = (program.coefficients.iter())
+            .map(|c| engine::F64Formula::new(&c.value, &mut index))
+            .collect();
+        CoefficientFormulas {
+            symbols,
+            reciprocals,
+            coefficients,
+        }
+    }
+
+    /// The coefficients' values with the `parameters`' values; a parameter without a value
+    /// makes NaN.
+    pub(crate) fn values(&self, parameters: &BTreeMap<String, f64>) -> Vec<f64> {
+        let mut known: Vec<f64> = (self.symbols.iter())
+            .map(|s| parameters.get(s).copied().unwrap_or(f64::NAN))
+            .collect();
+        for (symbol, of) in &self.reciprocals {
+            known[*symbol] = 1.0 / of.value(&known);
+        }
+        (self.coefficients.iter())
+            .map(|c| c.value(&known))
+            .collect()
+    }
+}
+
+/// The hoisted coefficients' values, each computed once from the parameters: the formulas
+/// of [`CoefficientFormulas`] built and used once.
 pub(crate) fn coefficient_values(
     system: &System,
     program: &Program,
     parameters: &BTreeMap<String, f64>,
 ) -> Vec<f64> {
-    let mut known = parameters.clone();
-    for reciprocal in &system.reciprocals {
-        let of = engine::f64_value(&reciprocal.of, &|s| {
-            known.get(s).copied().unwrap_or(f64::NAN)
-        });
-        known.insert(reciprocal.symbol.clone(), 1.0 / of);
-    }
-    let lookup = |s: &str| known.get(s).copied().unwrap_or(f64::NAN);
-    program
-        .coefficients
-        .iter()
-        .map(|c| engine::f64_value(&c.value, &lookup))
-        .collect()
+    CoefficientFormulas::new(system, program).values(parameters)
 }

@@ -283,7 +283,7 @@ impl OdeSystem<f64, 8> for Tracked<'_> {
         for i in 0..7 {
             dy[i] = rates[i];
         }
-        dy[7] = y[0].hypot(y[1]);
+        dy[7] = (y[0] * y[0] + y[1] * y[1]).sqrt();
     }
 
     fn explain_non_finite(&self, t: f64, y: &DriveState) -> Option<IntegrateError> {

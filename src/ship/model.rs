@@ -18,10 +18,10 @@ use super::ShipError;
 use super::propulsion::Propulsion;
 use super::table::ShipTable;
 use crate::defined::engine::{
-    ADDED_MASS, EmitError, Operations, PRIME_SCALES, PROPULSION, Program, ShipSpec, System, Units,
+    ADDED_MASS, EmitError, Operations, PRIME_SCALES, PROPULSION, Program, ShipSpec, Units,
     prove_with_jacobians, ship,
 };
-use crate::defined::{Functions, Interpreter, Plan, coefficient_values};
+use crate::defined::{CoefficientFormulas, Functions, Interpreter, Plan};
 use crate::models::Model;
 use simba::simd::SimdRealField;
 use std::collections::BTreeMap;
@@ -108,8 +108,9 @@ enum ProgramInput {
 #[derive(Debug)]
 struct Proved {
     spec: ShipSpec,
-    system: System,
     program: Program,
+    /// The program's coefficients as formulas of the table's values.
+    formulas: CoefficientFormulas,
 }
 
 /// The terms of `table`, its units, where its yaw inertia is taken and whether it has a
@@ -148,8 +149,8 @@ impl ShipModel {
             })
             .collect::<Result<_, _>>()?;
         let proved = Proved {
+            formulas: CoefficientFormulas::new(&system, &program),
             spec,
-            system,
             program,
         };
         let interpreter = interpreter(&proved, &coefficients(&proved, table))?;
@@ -320,8 +321,9 @@ impl ShipModel {
 
 /// The hoisted coefficients of the proved program with `table`'s values.
 fn coefficients(proved: &Proved, table: &ShipTable) -> Vec<f64> {
-    let values = parameter_values(&proved.spec, table);
-    coefficient_values(&proved.system, &proved.program, &values)
+    proved
+        .formulas
+        .values(&parameter_values(&proved.spec, table))
 }
 
 /// The proved program resolved with the `coefficients`' values.

@@ -15,7 +15,7 @@ mod rust;
 mod writer;
 
 pub use program::{Operations, Program, identifier};
-pub use rust::f64_value;
+pub use rust::{F64Formula, f64_value};
 
 use crate::model::{BuildError, Jacobian, Model, Strategy, System};
 use std::path::{Path, PathBuf};

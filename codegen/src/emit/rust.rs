@@ -639,49 +639,153 @@ fn f64_tokens(e: &Expr) -> TokenStream {
 /// computes it, operation for operation in the same order (the common factor taken out, the
 /// terms summed left to right, each product and quotient as written), so that a program run
 /// from these values (the interpreter of scene-defined models) has the emitted
-/// `Coefficients::new`'s bits, not only its value to rounding.
+/// `Coefficients::new`'s bits, not only its value to rounding. For one expression at many
+/// parameter sets, build its [`F64Formula`] once.
 pub fn f64_value(e: &Expr, value: &dyn Fn(&str) -> f64) -> f64 {
-    if e.is_zero() {
-        return 0.0;
-    }
-    let common = common_factor(e);
-    if common.is_one() || e.term_count() < 2 {
-        return f64_sum_value(e, value);
-    }
-    let Some(inverse) = common.reciprocal() else {
-        return f64::NAN;
-    };
-    let rest = e * &Expr::term(Rational::one(), inverse);
-    let sum = f64_sum_value(&rest, value);
-    let (numerator, denominator) = split_values(&common, value);
-    let top = numerator.into_iter().fold(sum, |acc, x| acc * x);
-    if denominator.is_empty() {
-        top
-    } else {
-        top / product_value(denominator)
-    }
+    let mut symbols: Vec<String> = Vec::new();
+    let formula = F64Formula::new(e, &mut |symbol| {
+        (symbols.iter().position(|s| s == symbol)).unwrap_or_else(|| {
+            symbols.push(symbol.to_owned());
+            symbols.len() - 1
+        })
+    });
+    let values: Vec<f64> = symbols.iter().map(|s| value(s)).collect();
+    formula.value(&values)
 }
 
-/// [`f64_sum`]'s value.
-fn f64_sum_value(e: &Expr, value: &dyn Fn(&str) -> f64) -> f64 {
-    let mut sum = 0.0;
-    for (i, (monomial, c)) in e.terms().enumerate() {
-        let term = f64_term_value(monomial, &c.abs(), value);
-        sum = match (i, c.is_negative()) {
-            (0, false) => term,
-            (0, true) => -term,
-            (_, false) => sum + term,
-            (_, true) => sum - term,
+/// A parameter expression as the f64 operations [`f64_tokens`] writes for it, the symbolic
+/// work (the common factor, the rationals' values) done once: a Monte Carlo over a table's
+/// values evaluates each coefficient's formula per case, with the bits of the emitted
+/// `Coefficients::new`.
+#[derive(Debug, Clone, PartialEq)]
+pub enum F64Formula {
+    /// Zero, or NaN (a common factor with no reciprocal).
+    Constant(f64),
+    /// `(Σ ± terms) · Π numerator / (Π denominator)`: the common factor taken out, or none.
+    Factored {
+        /// The terms, summed left to right.
+        sum: Vec<SignedTerm>,
+        /// The common factor's symbols with positive powers, each repeated by its power.
+        numerator: Vec<usize>,
+        /// Those with negative powers.
+        denominator: Vec<usize>,
+    },
+}
+
+/// One term of a sum: `± Π numerator / (Π denominator)`, the numerator's factors symbols or
+/// the term's rational coefficient (first, where it is written).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SignedTerm {
+    negative: bool,
+    numerator: Vec<Factor>,
+    denominator: Vec<usize>,
+}
+
+/// A factor of a term's numerator.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Factor {
+    /// The term's coefficient, as the f64 its literal is.
+    Number(f64),
+    /// The symbol at this index of the caller's table.
+    Symbol(usize),
+}
+
+impl F64Formula {
+    /// The formula of `e`, its symbols numbered by `index` (which the values passed to
+    /// [`F64Formula::value`] follow).
+    pub fn new(e: &Expr, index: &mut dyn FnMut(&str) -> usize) -> Self {
+        if e.is_zero() {
+            return F64Formula::Constant(0.0);
+        }
+        let common = common_factor(e);
+        if common.is_one() || e.term_count() < 2 {
+            return F64Formula::Factored {
+                sum: signed_terms(e, index),
+                numerator: Vec::new(),
+                denominator: Vec::new(),
+            };
+        }
+        let Some(inverse) = common.reciprocal() else {
+            return F64Formula::Constant(f64::NAN);
         };
+        let rest = e * &Expr::term(Rational::one(), inverse);
+        let (numerator, denominator) = split_symbols(&common, index);
+        F64Formula::Factored {
+            sum: signed_terms(&rest, index),
+            numerator,
+            denominator,
+        }
     }
-    sum
+
+    /// The value with the symbols at `values` (by the indices given to [`F64Formula::new`]).
+    pub fn value(&self, values: &[f64]) -> f64 {
+        let (sum, numerator, denominator) = match self {
+            F64Formula::Constant(c) => return *c,
+            F64Formula::Factored {
+                sum,
+                numerator,
+                denominator,
+            } => (sum, numerator, denominator),
+        };
+        let mut total = 0.0;
+        for (i, term) in sum.iter().enumerate() {
+            let value = term.value(values);
+            total = match (i, term.negative) {
+                (0, false) => value,
+                (0, true) => -value,
+                (_, false) => total + value,
+                (_, true) => total - value,
+            };
+        }
+        let top = numerator.iter().fold(total, |acc, &s| acc * values[s]);
+        if denominator.is_empty() {
+            top
+        } else {
+            top / product_of(denominator.iter().map(|&s| values[s]))
+        }
+    }
 }
 
-/// [`split_powers`]'s values.
-fn split_values(
+impl SignedTerm {
+    /// [`f64_term`]'s value.
+    fn value(&self, values: &[f64]) -> f64 {
+        let top = product_of(self.numerator.iter().map(|f| match *f {
+            Factor::Number(x) => x,
+            Factor::Symbol(s) => values[s],
+        }));
+        if self.denominator.is_empty() {
+            top
+        } else {
+            top / product_of(self.denominator.iter().map(|&s| values[s]))
+        }
+    }
+}
+
+/// The terms of `e` as [`f64_sum`] writes them.
+fn signed_terms(e: &Expr, index: &mut dyn FnMut(&str) -> usize) -> Vec<SignedTerm> {
+    (e.terms())
+        .map(|(monomial, c)| {
+            let magnitude = c.abs();
+            let (symbols, denominator) = split_symbols(monomial, index);
+            let mut numerator: Vec<Factor> = symbols.into_iter().map(Factor::Symbol).collect();
+            if !magnitude.is_one() || numerator.is_empty() {
+                numerator.insert(0, Factor::Number(rational_f64(&magnitude)));
+            }
+            SignedTerm {
+                negative: c.is_negative(),
+                numerator,
+                denominator,
+            }
+        })
+        .collect()
+}
+
+/// [`split_powers`]'s symbols: each factor repeated by its power, in the numerator or the
+/// denominator.
+fn split_symbols(
     m: &crate::symbolic::Monomial,
-    value: &dyn Fn(&str) -> f64,
-) -> (Vec<f64>, Vec<f64>) {
+    index: &mut dyn FnMut(&str) -> usize,
+) -> (Vec<usize>, Vec<usize>) {
     let (mut numerator, mut denominator) = (Vec::new(), Vec::new());
     for (atom, power) in m.factors() {
         let side = if power > 0 {
@@ -689,37 +793,16 @@ fn split_values(
         } else {
             &mut denominator
         };
-        side.extend(std::iter::repeat_n(
-            value(atom.symbol()),
-            power.unsigned_abs() as usize,
-        ));
+        let symbol = index(atom.symbol());
+        side.extend(std::iter::repeat_n(symbol, power.unsigned_abs() as usize));
     }
     (numerator, denominator)
 }
 
-/// [`f64_term`]'s value.
-fn f64_term_value(
-    monomial: &crate::symbolic::Monomial,
-    magnitude: &Rational,
-    value: &dyn Fn(&str) -> f64,
-) -> f64 {
-    let (mut numerator, denominator) = split_values(monomial, value);
-    if !magnitude.is_one() || numerator.is_empty() {
-        numerator.insert(0, rational_f64(magnitude));
-    }
-    let top = product_value(numerator);
-    if denominator.is_empty() {
-        top
-    } else {
-        top / product_value(denominator)
-    }
-}
-
-/// [`product`]'s value.
-fn product_value(parts: Vec<f64>) -> f64 {
-    let mut iter = parts.into_iter();
-    let first = iter.next().unwrap_or(1.0);
-    iter.fold(first, |acc, p| acc * p)
+/// [`product`]'s value: the first factor times each next, left to right; 1 for none.
+fn product_of(mut parts: impl Iterator<Item = f64>) -> f64 {
+    let first = parts.next().unwrap_or(1.0);
+    parts.fold(first, |acc, p| acc * p)
 }
 
 /// Σ ± c · Π numerator / (Π denominator), term by term.
