@@ -1,6 +1,6 @@
 //! `eom run` on a vehicle scene, end to end through the binary: REMUS's Chapter 8 turn into
-//! its folder (trajectory.csv, the plots, summary.json with the folded table and the
-//! figures), and `eom linear` on it: A, B and the modes at the cruise.
+//! its folder (trajectory.csv, the plots, the 3-D view, summary.json with the folded table and
+//! the figures), and `eom linear` on it: A, B and the modes at the cruise.
 
 use eom_test_support::cli::{eom, folder, scene_arg, succeeded};
 
@@ -63,6 +63,26 @@ fn remus_runs_its_rudder_steps_into_a_folder() {
     assert_eq!(lines.count(), 801);
     for plot in ["track.svg", "profile.svg", "attitude.svg", "fins.svg"] {
         assert!(out.join("rudder_4").join(plot).is_file(), "{plot}");
+    }
+    // The run in 3-D: the solid cylinder of REMUS's mass and moments about G (I_xx = M R²/2,
+    // I_yy = M(3R² + L²)/12), every row of the trajectory, in every manoeuvre's folder.
+    let view = std::fs::read_to_string(out.join("rudder_4/view.html")).unwrap();
+    let (mass, axial, transverse) = (30.48_f64, 0.177, 3.45);
+    let r2 = 2.0 * axial / mass;
+    let length = (12.0 * transverse / mass - 3.0 * r2).sqrt();
+    assert!(
+        view.contains(&format!(
+            "\"shape\":{{\"kind\":\"cylinder\",\"length\":{length:?},\"diameter\":{:?}",
+            2.0 * r2.sqrt()
+        )),
+        "the view draws REMUS's cylinder"
+    );
+    assert!(view.contains("\"rows\":801"));
+    for manoeuvre in summary["manoeuvre"].as_object().unwrap().keys() {
+        assert!(
+            out.join(manoeuvre).join("view.html").is_file(),
+            "{manoeuvre}"
+        );
     }
 }
 

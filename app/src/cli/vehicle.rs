@@ -2,7 +2,8 @@
 //! `[hydrodynamics]`.
 //!
 //! Each `[[manoeuvre]]` runs from the cruise into its own folder (`trajectory.csv`; as SVG the
-//! track in plan, the profile, the attitude and the fins with their commands), and
+//! track in plan, the profile, the attitude and the fins with their commands; `view.html`, the
+//! run in 3-D), and
 //! `summary.json` beside them holds the model that ran, the method, the folded table against
 //! its added mass per coefficient, the cruise against its closed forms, and each manoeuvre's
 //! figures with how far they move when the run is refined (the types of
@@ -159,7 +160,7 @@ fn run_manoeuvre(
     Ok(Outcome { steps, summary })
 }
 
-/// The track in plan, the profile, the attitude and the fins.
+/// The track in plan, the profile, the attitude and the fins, and the run in 3-D.
 fn write_plots(
     folder: &Path,
     scene: &VehicleScene,
@@ -180,6 +181,7 @@ fn write_plots(
         fins: ["dr", "ds", "dr_command", "ds_command"].map(column),
     };
     write_vehicle_plots(folder, &plot)?;
+    super::view::write_vehicle(folder, &title, &scene.table, columns)?;
     Ok(())
 }
 

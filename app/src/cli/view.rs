@@ -447,6 +447,63 @@ pub fn write_ship(out: &Path, ship: ShipColumns) -> Result<PathBuf> {
     write_view(out, &input).with_context(|| format!("writing the view into {}", out.display()))
 }
 
+/// Writes a vehicle manoeuvre's `view.html` into its folder: the solid cylinder of the
+/// vehicle's mass and moments about G, its origin O moving through the water in north, east,
+/// down, turned by the run's quaternion. `columns` are [`eom::vehicle::manoeuvre::ROW`]'s.
+pub fn write_vehicle(
+    out: &Path,
+    title: &str,
+    table: &eom::vehicle::table::VehicleTable,
+    columns: &Columns,
+) -> Result<PathBuf> {
+    use eom::vehicle::manoeuvre::ROW;
+    let column = |name: &str| -> &[f64] {
+        let index = ROW.iter().position(|r| *r == name).unwrap_or(0);
+        &columns.state[index]
+    };
+    let (shape, note) = match vehicle(table.mass, table.inertia, Matrix3::identity()) {
+        Some((shape, _, note)) => (shape, note),
+        None => anyhow::bail!(
+            "no solid cylinder has the vehicle's mass {} kg and moments {:?} kg m²",
+            Short(table.mass),
+            table.inertia
+        ),
+    };
+    let readout = (ROW.iter().zip(&columns.state))
+        .map(|(name, values)| (labelled(name), values.as_slice()))
+        .collect();
+    let input = ViewInput {
+        title,
+        shape,
+        axes: SpaceAxes::ZDown,
+        time: &columns.time,
+        position: ["x", "y", "z"].map(|name| column(name).to_vec()),
+        attitude: unit(["q0", "q1", "q2", "q3"].map(column)),
+        readout,
+        vectors: None,
+        trail: ([0.0; 3], "the table's origin O".into()),
+        camera: CameraTarget::Follow,
+        floor: 0.0,
+        water: true,
+        notes: vec![note],
+    };
+    write_view(out, &input).with_context(|| format!("writing the view into {}", out.display()))
+}
+
+/// Quaternion columns divided by their length, row by row (a run's quaternion drifts from
+/// unit length by its integrator's error).
+fn unit(columns: [&[f64]; 4]) -> [Vec<f64>; 4] {
+    let mut q: [Vec<f64>; 4] = Default::default();
+    for row in 0..columns[0].len() {
+        let value = columns.map(|c| c[row]);
+        let norm = value.iter().map(|x| x * x).sum::<f64>().sqrt();
+        for (column, v) in q.iter_mut().zip(value) {
+            column.push(v / norm);
+        }
+    }
+    q
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
