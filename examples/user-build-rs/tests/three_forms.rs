@@ -1,0 +1,50 @@
+//! The three forms of a scene-defined ship against each other, as the bench times them: the
+//! table compiled by rustc from this crate's `build.rs`, the same table as `eom` runs a
+//! scene's (compiled to machine code when it is read), and `eom`'s interpreter of the proved
+//! program. Every output of 10⁵ random states, bit for bit: the interpreter computes each
+//! coefficient and each operation as the emitted code writes it, and the compiled code is the
+//! interpreter's operations one for one. In a build with FMA (`-C target-feature=+fma`) rustc
+//! fuses the emitted `mul_add`s and the machine code does not, so there the rustc form is
+//! left out and the other two still agree bit for bit.
+
+mod common;
+
+use common::{differing_bits, mariner_table, symbols, table};
+use eom::Model;
+use eom::ship::ShipModel;
+use eom_example_user_build_rs::{example_ship, mariner, ship};
+
+/// Whether rustc's `mul_add` is one fused operation in this build.
+const FUSED: bool = cfg!(target_feature = "fma");
+
+#[test]
+fn the_ten_term_ship_is_the_same_in_all_three_forms() {
+    let k = ship::Coefficients::<f64>::new(&example_ship());
+    let compiled = ShipModel::new(&table()).expect("the table builds");
+    let interpreted = compiled.interpreted();
+    let jit = |s: &[f64; 7], d: f64| compiled.rhs(s, &[d, 0.0]);
+    assert_eq!(differing_bits(jit, |s, d| interpreted.rhs(s, &[d, 0.0])), 0);
+    if !FUSED {
+        assert_eq!(differing_bits(|s, d| k.rhs(s, &[d]), jit), 0);
+    }
+}
+
+#[test]
+fn the_mariner_is_the_same_in_all_three_forms() {
+    let table = mariner_table();
+    let values = symbols(&table);
+    let m = mariner::Coefficients::<f64>::new(&mariner::Parameters::from_symbols(|s| {
+        values.get(s).copied().unwrap_or(f64::NAN)
+    }));
+    // The prime system's forces scale with U, an input of the generated program that eom's
+    // model computes from the state.
+    let rustc = |s: &[f64; 7], d: f64| m.rhs(s, &[d, (s[0] * s[0] + s[1] * s[1]).sqrt()]);
+    let compiled = ShipModel::new(&table).expect("the Mariner builds");
+    assert_eq!(compiled.terms(), 39);
+    let interpreted = compiled.interpreted();
+    let jit = |s: &[f64; 7], d: f64| compiled.rhs(s, &[d, 0.0]);
+    assert_eq!(differing_bits(jit, |s, d| interpreted.rhs(s, &[d, 0.0])), 0);
+    if !FUSED {
+        assert_eq!(differing_bits(rustc, jit), 0);
+    }
+}
