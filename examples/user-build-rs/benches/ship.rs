@@ -16,14 +16,16 @@
 #[path = "../tests/common/mod.rs"]
 mod common;
 
-use common::{differing_bits, mariner_table, scene_path, symbols, table};
+use common::{
+    differing_bits, mariner_coefficients, mariner_rates, mariner_table, scene_path, table,
+};
 use eom::integrate::{Integrator, Rk4, Statistics};
 use eom::nalgebra::SVector;
 use eom::scene::AnyScene;
 use eom::ship::ShipModel;
 use eom::vehicle::VehicleModel;
 use eom::{Constant, Model, OdeSystem};
-use eom_example_user_build_rs::{example_ship, mariner, ship};
+use eom_example_user_build_rs::{example_ship, ship};
 use std::hint::black_box;
 use std::path::Path;
 use std::time::Instant;
@@ -146,13 +148,8 @@ fn main() {
     );
 
     let table = mariner_table();
-    let values = symbols(&table);
-    let m = mariner::Coefficients::<f64>::new(&mariner::Parameters::from_symbols(|s| {
-        values.get(s).copied().unwrap_or(f64::NAN)
-    }));
-    // The prime system's forces scale with U, an input of the generated program that
-    // `eom`'s model computes from the state: so here.
-    let m_rhs = |s: &[f64; 7], d: f64| m.rhs(s, &[d, (s[0] * s[0] + s[1] * s[1]).sqrt()]);
+    let m = mariner_coefficients(&table);
+    let m_rhs = |s: &[f64; 7], d: f64| mariner_rates(&m, s, d);
     let jit = ShipModel::new(&table).expect("the Mariner builds");
     assert!(jit.is_compiled() && jit.terms() == 39);
     let interpreted = jit.interpreted();

@@ -9,10 +9,10 @@
 
 mod common;
 
-use common::{differing_bits, mariner_table, symbols, table};
+use common::{differing_bits, mariner_coefficients, mariner_rates, mariner_table, table};
 use eom::Model;
 use eom::ship::ShipModel;
-use eom_example_user_build_rs::{example_ship, mariner, ship};
+use eom_example_user_build_rs::{example_ship, ship};
 
 /// Whether rustc's `mul_add` is one fused operation in this build.
 const FUSED: bool = cfg!(target_feature = "fma");
@@ -32,13 +32,8 @@ fn the_ten_term_ship_is_the_same_in_all_three_forms() {
 #[test]
 fn the_mariner_is_the_same_in_all_three_forms() {
     let table = mariner_table();
-    let values = symbols(&table);
-    let m = mariner::Coefficients::<f64>::new(&mariner::Parameters::from_symbols(|s| {
-        values.get(s).copied().unwrap_or(f64::NAN)
-    }));
-    // The prime system's forces scale with U, an input of the generated program that eom's
-    // model computes from the state.
-    let rustc = |s: &[f64; 7], d: f64| m.rhs(s, &[d, (s[0] * s[0] + s[1] * s[1]).sqrt()]);
+    let m = mariner_coefficients(&table);
+    let rustc = |s: &[f64; 7], d: f64| mariner_rates(&m, s, d);
     let compiled = ShipModel::new(&table).expect("the Mariner builds");
     assert_eq!(compiled.terms(), 39);
     let interpreted = compiled.interpreted();

@@ -2,10 +2,11 @@
 //! crate compiles with rustc (the ten-term ship of `build.rs`, the Mariner of
 //! `scenes/mariner.toml`), each parameter by its generated symbol, and random ship states.
 
+use eom::Model;
 use eom::ship::table::{GivenTable, ShipBody, ShipTable};
 use eom::ship::{RigidBodyTerms, ShipScene, Units, YawInertia};
 use eom_codegen::model::ship::{ADDED_MASS, PRIME_SCALES, ShipSpec};
-use eom_example_user_build_rs::example_ship;
+use eom_example_user_build_rs::{example_ship, mariner};
 use std::collections::BTreeMap;
 use std::path::Path;
 
@@ -112,4 +113,20 @@ pub fn differing_bits(
                 .count()
         })
         .sum()
+}
+
+/// The Mariner's coefficients as this crate's rustc-compiled `mariner` module computes them
+/// from `table`'s values.
+pub fn mariner_coefficients(table: &ShipTable) -> mariner::Coefficients<f64> {
+    let values = symbols(table);
+    mariner::Coefficients::new(&mariner::Parameters::from_symbols(|s| {
+        values.get(s).copied().unwrap_or(f64::NAN)
+    }))
+}
+
+/// The rustc-compiled Mariner's rates with the rudder moving at `rate`: the prime system's
+/// forces scale with U, an input of the generated program that `eom`'s model computes from
+/// the state, so here.
+pub fn mariner_rates(m: &mariner::Coefficients<f64>, s: &[f64; 7], rate: f64) -> [f64; 7] {
+    m.rhs(s, &[rate, (s[0] * s[0] + s[1] * s[1]).sqrt()])
 }
