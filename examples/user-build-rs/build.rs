@@ -1,14 +1,19 @@
 //! Emits the two models this crate needs: an AUV, symmetric about its xz-plane, carried by a
 //! unit quaternion so it may pitch through ±90°; a ship of this crate's own hydrodynamic
 //! table (4.46 with ten terms); and the Mariner's 39-term table in the prime system (the terms
-//! `eom` reads from `scenes/mariner.toml`, its rigid-body terms taken out), each proved before
-//! it is written.
+//! `eom` reads from `scenes/mariner.toml`, its rigid-body terms taken out); and REMUS 100 in six
+//! degrees of freedom on the table `scenes/remus100.toml` names, each proved before it is
+//! written.
 
 use eom_codegen::emit::program::identifier;
 use eom_codegen::emit::{EmitError, emit_into, system_source, write_if_changed};
+use eom_codegen::model::System;
 use eom_codegen::model::ship::{Force, ShipSpec, Term, Units, YawInertia, ship};
+use eom_codegen::model::vehicle::{
+    AddedMassCoriolis, Convention, InertiaAbout, Propeller, VehicleSpec, vehicle,
+};
 use eom_codegen::model::{Kinematics, Model, Symmetry};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// The ship's table: the terms, and only those, that the generated code computes.
 fn ship_spec() -> ShipSpec {
@@ -62,10 +67,42 @@ fn mariner_spec() -> ShipSpec {
     }
 }
 
-/// The source of a ship of `spec`, with `Parameters::from_symbols`: the parameters by the
-/// symbols of the system (`M`, `Y_vvr`, `rho`, …), as a table keyed by symbol gives them.
-fn ship_source(name: &str, spec: &ShipSpec) -> Result<String, EmitError> {
-    let system = ship(name, spec)?;
+/// REMUS 100 as `eom` builds a vehicle scene's model (`eom::vehicle::model::spec`): the
+/// added-mass entries and the terms `scenes/remus100.toml` names, read as Prestero writes
+/// them, in SI; quaternions; the inertia about G along the body axes; the fins `dr` and `ds`;
+/// the table's cross terms holding Kirchhoff's terms; the propeller's thrust and torque
+/// constant. The test `three_forms` holds this model to `eom`'s of the scene, bit for bit.
+fn remus_spec(scene: &Path) -> Result<VehicleSpec, String> {
+    let text = std::fs::read_to_string(scene).map_err(|e| format!("{}: {e}", scene.display()))?;
+    let scene: toml::Table = text
+        .parse()
+        .map_err(|e| format!("{}: {e}", scene.display()))?;
+    let names = |table: &str| -> Result<Vec<String>, String> {
+        let table = (scene.get("hydrodynamics").and_then(|h| h.get(table)))
+            .and_then(toml::Value::as_table)
+            .ok_or(format!("no [hydrodynamics.{table}]"))?;
+        // Sorted, as eom's table keeps them.
+        Ok(table.keys().cloned().collect())
+    };
+    Ok(VehicleSpec {
+        units: Units::Dimensional,
+        kinematics: Kinematics::Quaternion,
+        inertia: InertiaAbout::Gravity,
+        symmetry: Symmetry::Principal,
+        convention: Convention::Prestero,
+        controls: vec!["dr".into(), "ds".into()],
+        added_mass: names("added_mass")?,
+        added_mass_coriolis: AddedMassCoriolis::Folded,
+        terms: names("coefficients")?,
+        propeller: Propeller::Constant,
+        hydrostatics: true,
+        applied_loads: false,
+    })
+}
+
+/// The source of `system`, with `Parameters::from_symbols`: the parameters by the symbols of
+/// the system (`M`, `Y_vvr`, `rho`, …), as a table keyed by symbol gives them.
+fn source_with_symbols(system: &System) -> Result<String, EmitError> {
     let fields: String = (system.parameters.iter())
         .map(|p| {
             format!(
@@ -79,7 +116,7 @@ fn ship_source(name: &str, spec: &ShipSpec) -> Result<String, EmitError> {
         "{}\nimpl Parameters {{\n    /// Every parameter from `value` of its symbol.\n    \
          pub fn from_symbols(value: impl Fn(&str) -> f64) -> Self {{\n        Parameters {{\n\
          {fields}        }}\n    }}\n}}\n",
-        system_source(&system)?
+        system_source(system)?
     ))
 }
 
@@ -94,8 +131,19 @@ fn main() {
         eprintln!("cannot emit the AUV model: {error}");
         std::process::exit(1);
     }
-    for (name, spec) in [("ship", ship_spec()), ("mariner", mariner_spec())] {
-        let source = ship_source(name, &spec)
+    let scene = Path::new("../../scenes/remus100.toml");
+    println!("cargo::rerun-if-changed={}", scene.display());
+    let remus = remus_spec(scene)
+        .and_then(|spec| vehicle("remus", &spec).map_err(|e| e.to_string()))
+        .unwrap_or_else(|error| {
+            eprintln!("cannot read REMUS's table: {error}");
+            std::process::exit(1);
+        });
+    let ships = [("ship", ship_spec()), ("mariner", mariner_spec())]
+        .map(|(name, spec)| (name, ship(name, &spec).map_err(EmitError::from)));
+    for (name, system) in ships.into_iter().chain([("remus", Ok(remus))]) {
+        let source = system
+            .and_then(|system| source_with_symbols(&system))
             .and_then(|source| write_if_changed(&out_dir.join(format!("{name}.rs")), &source));
         if let Err(error) = source {
             eprintln!("cannot emit the {name} model: {error}");

@@ -133,6 +133,19 @@ pub fn spec(table: &VehicleTable, kinematics: Kinematics) -> VehicleSpec {
     }
 }
 
+/// Every parameter of `spec`'s proved program by its symbol, as the model fills them from
+/// `table`: the body, the added mass, the propeller, the table's terms, and the inverse of the
+/// total mass matrix (`minv_*`). What a program emitted from the same spec for a user's
+/// `build.rs` needs (its `Parameters::from_symbols`) to compute what the model computes.
+pub fn parameter_values(
+    spec: &VehicleSpec,
+    table: &VehicleTable,
+) -> Result<BTreeMap<String, f64>, VehicleError> {
+    let mut values = table_values(spec, table)?;
+    values.extend(spec.inverse_mass_matrix(&values)?);
+    Ok(values)
+}
+
 /// Every parameter's value by its symbol, as the spec names them, without the inverse mass
 /// matrix.
 fn table_values(

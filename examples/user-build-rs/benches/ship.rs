@@ -1,10 +1,9 @@
 //! Three ways to run a scene-defined table, timed against each other: this crate's ships
 //! compiled by rustc from `build.rs`; the same tables as `eom` runs a scene's, compiled to
 //! machine code when the scene is read (Cranelift, feature `jit`); and interpreted (`eom`'s
-//! reference evaluator of the proved program). For the ten-term ship of `build.rs` and the
-//! Mariner (39 terms, `scenes/mariner.toml`) all three, for REMUS (six degrees of freedom,
-//! `scenes/remus100.toml`, no rustc form here) the last two: ns per right-hand-side call,
-//! seven interleaved rounds of 10⁶ calls each (10⁵ for the interpreter), medians, each call on
+//! reference evaluator of the proved program). For the ten-term ship of `build.rs`, the Mariner
+//! (39 terms, `scenes/mariner.toml`) and REMUS (six degrees of freedom,
+//! `scenes/remus100.toml`): ns per right-hand-side call, seven interleaved rounds of 10⁶ calls each (10⁵ for the interpreter), medians, each call on
 //! the state the last left; the same inside `eom`'s RK4 for the ten-term ship; what compiling
 //! each model costs; and how many outputs of the rustc and Cranelift forms differ in their
 //! bits over 10⁵ random states (none in the default build, where both are op by op, and the
@@ -17,29 +16,19 @@
 mod common;
 
 use common::{
-    differing_bits, mariner_coefficients, mariner_rates, mariner_table, scene_path, table,
+    differing_bits, differing_vehicle_bits, mariner_coefficients, mariner_rates, mariner_table,
+    remus_coefficients, remus_rates, remus_scene, table,
 };
 use eom::integrate::{Integrator, Rk4, Statistics};
 use eom::nalgebra::SVector;
-use eom::scene::AnyScene;
 use eom::ship::ShipModel;
-use eom::vehicle::VehicleModel;
 use eom::{Constant, Model, OdeSystem};
 use eom_example_user_build_rs::{example_ship, ship};
 use std::hint::black_box;
-use std::path::Path;
 use std::time::Instant;
 
 const CALLS: usize = 1_000_000;
 const ROUNDS: usize = 7;
-
-fn remus() -> VehicleModel {
-    let text = std::fs::read_to_string(scene_path("remus100.toml")).expect("REMUS's scene");
-    match AnyScene::parse(&text, "remus100.toml", Path::new(".")) {
-        Ok(AnyScene::Vehicle(scene)) => scene.model,
-        _ => panic!("remus100.toml is read as a vehicle"),
-    }
-}
 
 /// Seconds per call over `calls` calls, each on a state nudged by the last rates.
 fn time<const N: usize>(start: [f64; N], calls: usize, rhs: impl Fn(&[f64; N]) -> [f64; N]) -> f64 {
@@ -174,14 +163,36 @@ fn main() {
     let compile = compile_ms(|| interpreted.compiled());
     println!("Mariner: built and proved in {build:.1} ms, of which compiled in {compile:.2} ms");
 
-    let vehicle = remus();
+    let scene = remus_scene();
+    let r = remus_coefficients(&scene);
+    let vehicle = &scene.model;
     assert!(vehicle.is_compiled(), "REMUS compiles");
+    let body = |rates: [f64; 15]| -> [f64; 13] { std::array::from_fn(|i| rates[i]) };
+    let differing = differing_vehicle_bits(
+        |s| remus_rates(&r, s),
+        |s| body(vehicle.rhs(s, &[0.0, 0.0])),
+    );
+    println!("REMUS: rustc and jit outputs differing in their bits: {differing} of 1300000");
+    assert!(cfg!(target_feature = "fma") || differing == 0);
+    // The fins' rates are the inputs: the rustc form's state leaves the fins out, so each of
+    // its calls moves them as eom's model does.
+    let rustc = |y: &[f64; 15]| {
+        let rates = remus_rates(&r, y);
+        std::array::from_fn(|i| {
+            if i < 13 {
+                rates[i]
+            } else {
+                [0.01, -0.01][i - 13]
+            }
+        })
+    };
     let vehicle_interpreted = vehicle.interpreted();
     let mut vehicle_start = [0.0; 15];
     vehicle_start[..6].copy_from_slice(&[1.5, 0.05, -0.03, 0.01, 0.02, -0.03]);
     vehicle_start[9] = 1.0;
     vehicle_start[13] = 0.05;
     let times = rounds(&[
+        &|| time(vehicle_start, CALLS, rustc),
         &|| time(vehicle_start, CALLS, |y| vehicle.rhs(y, &[0.01, -0.01])),
         &|| {
             time(vehicle_start, CALLS / 10, |y| {
@@ -191,7 +202,7 @@ fn main() {
     ]);
     print(
         "REMUS, six degrees of freedom",
-        [None, Some(times[0]), Some(times[1])],
+        [Some(times[0]), Some(times[1]), Some(times[2])],
     );
     let compile = compile_ms(|| vehicle_interpreted.compiled());
     println!("REMUS: compiled in {compile:.2} ms");

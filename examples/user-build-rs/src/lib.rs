@@ -40,6 +40,15 @@ pub mod mariner {
     include!(concat!(env!("OUT_DIR"), "/mariner.rs"));
 }
 
+/// REMUS 100 in six degrees of freedom (`build.rs`): the vehicle's equations about its
+/// table's origin with the terms `scenes/remus100.toml` names, state `[u, v, w, p, q, r, x,
+/// y, z, q0, q1, q2, q3]`, inputs the fins and |u| … of the drag terms; its parameters by
+/// symbol (`Parameters::from_symbols`).
+#[allow(clippy::let_and_return, clippy::redundant_locals)]
+pub mod remus {
+    include!(concat!(env!("OUT_DIR"), "/remus.rs"));
+}
+
 /// A torpedo-shaped AUV: 50 kg, slender, with a small I_xz from an offset payload.
 pub fn example_parameters() -> auv::Parameters {
     auv::Parameters {

@@ -3,10 +3,14 @@
 //! `scenes/mariner.toml`), each parameter by its generated symbol, and random ship states.
 
 use eom::Model;
+use eom::scene::AnyScene;
 use eom::ship::table::{GivenTable, ShipBody, ShipTable};
 use eom::ship::{RigidBodyTerms, ShipScene, Units, YawInertia};
+use eom::vehicle::VehicleScene;
+use eom::vehicle::model::{parameter_values, spec};
+use eom_codegen::model::Kinematics;
 use eom_codegen::model::ship::{ADDED_MASS, PRIME_SCALES, ShipSpec};
-use eom_example_user_build_rs::{example_ship, mariner};
+use eom_example_user_build_rs::{example_ship, mariner, remus};
 use std::collections::BTreeMap;
 use std::path::Path;
 
@@ -129,4 +133,61 @@ pub fn mariner_coefficients(table: &ShipTable) -> mariner::Coefficients<f64> {
 /// the state, so here.
 pub fn mariner_rates(m: &mariner::Coefficients<f64>, s: &[f64; 7], rate: f64) -> [f64; 7] {
     m.rhs(s, &[rate, (s[0] * s[0] + s[1] * s[1]).sqrt()])
+}
+
+/// REMUS 100's scene as `eom` reads it.
+pub fn remus_scene() -> VehicleScene {
+    let text = std::fs::read_to_string(scene_path("remus100.toml")).expect("REMUS's scene");
+    match AnyScene::parse(&text, "remus100.toml", Path::new(".")) {
+        Ok(AnyScene::Vehicle(scene)) => *scene,
+        _ => panic!("remus100.toml is read as a vehicle"),
+    }
+}
+
+/// REMUS's coefficients as this crate's rustc-compiled `remus` module computes them from the
+/// scene's table, its parameters filled as `eom`'s model fills them.
+pub fn remus_coefficients(scene: &VehicleScene) -> remus::Coefficients<f64> {
+    let spec = spec(&scene.table, Kinematics::Quaternion);
+    let values = parameter_values(&spec, &scene.table).expect("REMUS's parameters");
+    remus::Coefficients::new(&remus::Parameters::from_symbols(|s| {
+        values.get(s).copied().unwrap_or(f64::NAN)
+    }))
+}
+
+/// The rustc-compiled REMUS's rates of its thirteen states at `eom`'s fifteen-entry state (the
+/// fins' angles last), each input set as `eom`'s model sets it: a fin's angle, or |x|.
+pub fn remus_rates(k: &remus::Coefficients<f64>, state: &[f64; 15]) -> [f64; 13] {
+    let inputs = remus::INPUTS.map(|name| match name {
+        "dr" => state[13],
+        "ds" => state[14],
+        _ => {
+            let of = name.strip_prefix("abs_").expect("an input |x|");
+            let index = (remus::STATE.iter().position(|s| *s == of)).expect("a state");
+            state[index].abs()
+        }
+    });
+    let body: [f64; 13] = std::array::from_fn(|i| state[i]);
+    k.rhs(&body, &inputs)
+}
+
+/// Outputs of `a` and `b` whose bits differ, over 10⁵ random REMUS states (velocities and
+/// rates of either sign, a quaternion not of unit length, the fins beyond their stops).
+pub fn differing_vehicle_bits(
+    a: impl Fn(&[f64; 15]) -> [f64; 13],
+    b: impl Fn(&[f64; 15]) -> [f64; 13],
+) -> usize {
+    let mut seed = 2;
+    let bounds = [
+        3.0, 1.0, 1.0, 1.5, 1.5, 1.5, 100.0, 100.0, 100.0, 1.2, 1.2, 1.2, 1.2, 0.6, 0.6,
+    ];
+    (0..100_000)
+        .map(|_| {
+            let state = bounds.map(|b| draw(&mut seed, b));
+            let (x, y) = (a(&state), b(&state));
+            x.iter()
+                .zip(&y)
+                .filter(|(x, y)| x.to_bits() != y.to_bits())
+                .count()
+        })
+        .sum()
 }
