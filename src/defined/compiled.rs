@@ -248,8 +248,6 @@ impl Compiler {
         let params = builder.block_params(block).to_vec();
         let arguments = [params[0], params[1], params[2]];
         Body::new(&mut builder, arguments, ops).emit(plan)?;
-        let wrote = builder.ins().iconst(types::I8, 1);
-        builder.ins().return_(&[wrote]);
         builder.finalize();
         (self.module.define_function(id, &mut context)).map_err(generation)?;
         Ok(id)
@@ -305,9 +303,10 @@ impl<'a, 'b, 'o> Body<'a, 'b, 'o> {
         }
     }
 
-    /// The plan's nodes, each one operation, then its outputs stored. The sines and cosines
-    /// and what their angles need come first, so that an angle out of the kernel's range
-    /// returns before any other work.
+    /// The plan's nodes, each one operation, then its outputs stored and 1 returned; then the
+    /// block that returns 0, if an angle branches there. The sines and cosines and what their
+    /// angles need come first, so that an angle out of the kernel's range returns before any
+    /// other work.
     fn emit(&mut self, plan: &Plan) -> Result<(), CompileError> {
         let early = trig_first(self.ops, plan);
         let order = (plan.needed.iter()).filter(|&&i| early[i]);
@@ -361,6 +360,16 @@ impl<'a, 'b, 'o> Body<'a, 'b, 'o> {
             let offset = offset(2 * pair)?;
             (self.builder.ins()).store(MemFlags::trusted(), value, self.arguments[2], offset);
         }
+        let wrote = self.builder.ins().iconst(types::I8, 1);
+        self.builder.ins().return_(&[wrote]);
+        if let Some(outside) = self.outside {
+            let b = &mut *self.builder;
+            b.switch_to_block(outside);
+            b.set_cold_block(outside);
+            b.seal_block(outside);
+            let none = b.ins().iconst(types::I8, 0);
+            b.ins().return_(&[none]);
+        }
         Ok(())
     }
 
@@ -399,23 +408,12 @@ impl<'a, 'b, 'o> Body<'a, 'b, 'o> {
         Ok(pair)
     }
 
-    /// The block an angle out of the kernel's range branches to: it returns 0, and the
-    /// interpreter evaluates the call.
+    /// The block an angle out of the kernel's range branches to, filled when the function
+    /// ends: it returns 0, and the interpreter evaluates the call.
     fn outside_block(&mut self) -> Block {
-        if let Some(block) = self.outside {
-            return block;
-        }
-        let b = &mut *self.builder;
-        let (block, here) = (b.create_block(), b.current_block());
-        b.switch_to_block(block);
-        b.set_cold_block(block);
-        let none = b.ins().iconst(types::I8, 0);
-        b.ins().return_(&[none]);
-        if let Some(here) = here {
-            b.switch_to_block(here);
-        }
-        self.outside = Some(block);
-        block
+        *self
+            .outside
+            .get_or_insert_with(|| self.builder.create_block())
     }
 }
 
