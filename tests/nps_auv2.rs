@@ -6,8 +6,9 @@
 
 use eom::scene::AnyScene;
 use eom::vehicle::manoeuvre::{self, VehicleManoeuvre, VehicleRun};
+use eom::vehicle::scene::cruise;
 use eom::vehicle::summary::{CruiseSummary, StepFigures, largest_difference};
-use eom::vehicle::{VehicleModel, VehicleScene};
+use eom::vehicle::{InertiaAbout, VehicleModel, VehicleScene};
 use std::path::Path;
 
 const SCENE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/nps_auv2.toml");
@@ -122,6 +123,9 @@ const LENGTH: f64 = 5.3;
 const WEIGHT: f64 = 53400.0;
 const G: f64 = 9.81;
 const CD0: f64 = 0.00385;
+/// npsauv.m's moments and products of inertia (Fossen's sign: Ixy = ∫xy dm), kg m².
+const MOMENTS: [f64; 3] = [2038.0, 13587.0, 13587.0];
+const PRODUCTS: [f64; 3] = [-13.58, -13.58, -13.58];
 /// The setting: SIMnpsauv.m's n_d, rpm.
 const RPM: f64 = 1300.0;
 
@@ -183,7 +187,19 @@ fn the_nps_scene_holds_npsauv_m_s_numbers_bit_for_bit() {
     assert_eq!(table.mass.to_bits(), (WEIGHT / G).to_bits());
     assert_eq!(table.centre_of_gravity, [0.0, 0.0, 0.061]);
     assert_eq!(table.centre_of_buoyancy, [0.0; 3]);
-    assert_eq!(table.inertia, [2038.0, 13587.0, 13587.0]);
+    // npsauv.m's I_g = [Ix −Ixy −Ixz; −Ixy Iy −Iyz; −Ixz −Iyz Iz], in M_RB where the tensor
+    // about O goes: eom's tensor about O, whose off-diagonal entries are the chapter's
+    // products (−∫xy dm), so −(Fossen's Ixy) exactly.
+    assert_eq!(table.inertia_about, InertiaAbout::Origin);
+    let [ixy, iyz, ixz] = PRODUCTS.map(|p| -p);
+    let tensor = [
+        [MOMENTS[0], ixy, ixz],
+        [ixy, MOMENTS[1], iyz],
+        [ixz, iyz, MOMENTS[2]],
+    ];
+    for (given, source) in table.inertia.iter().flatten().zip(tensor.iter().flatten()) {
+        assert_eq!(given.to_bits(), source.to_bits());
+    }
     // The thrust of X = ½ρL²Cd0(prop|prop| − 1)u², prop = 0.012n/u, at the setting.
     let propeller = table.propeller.unwrap();
     let thrust = 0.5 * RHO * LENGTH.powi(2) * CD0 * (0.012 * shaft_speed()).powi(2);
@@ -205,8 +221,12 @@ fn the_cruise_is_the_propeller_law_s_speed_and_holds() {
     // Newton stops when u̇ < 1e-13 m/s²; ∂u̇/∂u = −2·½ρL²Cd0·u/(M − ½ρL³X′_u̇) ≈ −0.03 /s, so
     // u is within 4e-12 m/s of the trim.
     assert!((cruise.speed_m_s - law).abs() < 1e-11, "{cruise:?}");
-    // No propeller torque, no products of inertia: no roll trim.
-    assert_eq!(cruise.roll_deg, 0.0);
+    // No propeller torque: no roll trim. On the straight course ω = 0, so the products of
+    // inertia add no moment at the trim; but they couple ṗ to u̇ through the inverse mass
+    // matrix, so Newton's steps in u (u̇ ≠ 0 until it has converged) move φ by rounding:
+    // 1.7e-30° here, where the principal tensor left it at exactly zero.
+    assert_eq!(cruise.roll_closed_form_deg, Some(0.0));
+    assert!(cruise.roll_deg.abs() < 1e-20, "{cruise:?}");
     // Ten seconds of it (before the first step) leave it where it was.
     let run = run_with(&scene, &scene.model, &scene.manoeuvres[0], start);
     let before = run.ends[0];
@@ -282,22 +302,43 @@ fn the_ten_degree_turn_converges_and_port_and_starboard_mirror() {
     let difference = largest_difference(&figures, &refined);
     println!("half-step difference {difference:e}");
     assert!(difference < 1e-6, "{difference:e}");
-    // The table has no propeller torque and no products of inertia: the port turn is the
-    // starboard one reflected in the x–z plane (v, p, r, y, q1, q3 and the fins change sign).
+    // Without the products Ixy and Iyz (Ixz kept) the x–z plane is a plane of symmetry of the
+    // body, and the table has no propeller torque: the port turn is the starboard one
+    // reflected in the x–z plane (v, p, r, y, q1, q3 and the fins change sign).
+    let symmetric = VehicleModel::new(&scene.table.without_lateral_products()).unwrap();
+    let symmetric_start = cruise(&symmetric).unwrap();
+    let worst = mirror_difference(&scene, &symmetric, turn, symmetric_start);
+    println!("largest mirror difference, Ixy = Iyz = 0: {worst:e}");
+    assert!(worst < 1e-9, "{worst:e}");
+    // The source's products are not symmetric so: its port turn differs, a little.
+    let asymmetric = mirror_difference(&scene, &scene.model, turn, start);
+    println!("largest mirror difference with npsauv.m's products: {asymmetric:e}");
+    assert!(asymmetric > 1e3 * worst, "{asymmetric:e}");
+}
+
+/// The largest difference between the turn `turn` and its mirror image to port, reflected.
+fn mirror_difference(
+    scene: &VehicleScene,
+    model: &VehicleModel,
+    turn: &VehicleManoeuvre,
+    start: [f64; 15],
+) -> f64 {
     let port = VehicleManoeuvre {
         steps: turn.steps.mirrored(),
         ..turn.clone()
     };
-    let mirrored = run_with(&scene, &scene.model, &port, start);
+    let (starboard, mirrored) = (
+        run_with(scene, model, turn, start),
+        run_with(scene, model, &port, start),
+    );
     let mut worst: f64 = 0.0;
-    for (x, y) in run.ends.iter().zip(&mirrored.ends) {
+    for (x, y) in starboard.ends.iter().zip(&mirrored.ends) {
         let reflected = manoeuvre::mirrored(&y.state);
         for (a, b) in x.state.iter().zip(reflected) {
             worst = worst.max((a - b).abs());
         }
     }
-    println!("largest mirror difference {worst:e}");
-    assert!(worst < 1e-9, "{worst:e}");
+    worst
 }
 
 #[test]

@@ -30,8 +30,11 @@ pub mod table;
 pub mod trial;
 
 /// The table's vocabulary, from the generator that builds the model: how names are read,
-/// whether Kirchhoff's terms are folded, a folded coefficient against its added mass.
-pub use crate::defined::engine::{AddedMassCoriolis, Convention, FoldedComparison, format_folded};
+/// whether Kirchhoff's terms are folded, a folded coefficient against its added mass, the
+/// point the inertia tensor is about.
+pub use crate::defined::engine::{
+    AddedMassCoriolis, Convention, FoldedComparison, InertiaAbout, format_folded,
+};
 pub use fins::{FinSteps, Fins};
 pub use manoeuvre::{VehicleManoeuvre, VehicleRun};
 pub use model::VehicleModel;

@@ -13,7 +13,7 @@
 use super::VehicleError;
 use super::table::{CONTROLS, VehicleTable};
 use crate::defined::engine::{
-    FoldedComparison, InertiaAbout, Kinematics, Operations, Propeller, Symmetry, Units,
+    FoldedComparison, InertiaAbout, Kinematics, Operations, Propeller, Units,
     VEHICLE_PRIME_SCALES as PRIME_SCALES, VehicleSpec, folded_comparison, prove_with_jacobians,
     vehicle,
 };
@@ -106,8 +106,9 @@ enum Variable {
     Absolute(usize),
 }
 
-/// The spec of a table: `kinematics`, inertia about G in principal axes, the fins as
-/// controls, the propeller constant, the table's units.
+/// The spec of a table: `kinematics`, the inertia about the table's point with the products
+/// it gives (the zero ones pruned), the fins as controls, the propeller constant, the table's
+/// units.
 pub fn spec(table: &VehicleTable, kinematics: Kinematics) -> VehicleSpec {
     VehicleSpec {
         units: if table.prime.is_some() {
@@ -116,8 +117,8 @@ pub fn spec(table: &VehicleTable, kinematics: Kinematics) -> VehicleSpec {
             Units::Dimensional
         },
         kinematics,
-        inertia: InertiaAbout::Gravity,
-        symmetry: Symmetry::Principal,
+        inertia: table.inertia_about,
+        symmetry: table.symmetry(),
         convention: table.convention,
         controls: CONTROLS.map(String::from).to_vec(),
         added_mass: table.added_mass.keys().cloned().collect(),
@@ -141,9 +142,7 @@ fn table_values(
 ) -> Result<BTreeMap<String, f64>, VehicleError> {
     let mut values = BTreeMap::new();
     values.insert("M".to_owned(), table.mass);
-    for (axis, value) in ["Ixx_G", "Iyy_G", "Izz_G"].into_iter().zip(table.inertia) {
-        values.insert(axis.to_owned(), value);
-    }
+    values.extend(inertia_values(spec, table));
     for (i, axis) in ["x", "y", "z"].into_iter().enumerate() {
         values.insert(format!("{axis}_G"), table.centre_of_gravity[i]);
         values.insert(format!("{axis}_B"), table.centre_of_buoyancy[i]);
@@ -169,6 +168,27 @@ fn table_values(
         values.insert(term.symbol(), value);
     }
     Ok(values)
+}
+
+/// The tensor's entries by the spec's symbols (`Ixx_G` … about G, `Ixx` … about O), the
+/// products its symmetry prunes left out.
+fn inertia_values(spec: &VehicleSpec, table: &VehicleTable) -> Vec<(String, f64)> {
+    let suffix = match spec.inertia {
+        InertiaAbout::Gravity => "_G",
+        InertiaAbout::Origin => "",
+    };
+    let entries = [
+        ("Ixx", 0, 0),
+        ("Iyy", 1, 1),
+        ("Izz", 2, 2),
+        ("Ixy", 0, 1),
+        ("Iyz", 1, 2),
+        ("Ixz", 0, 2),
+    ];
+    (entries.into_iter())
+        .filter(|(entry, _, _)| !spec.symmetry.pruned().contains(entry))
+        .map(|(entry, r, c)| (format!("{entry}{suffix}"), table.inertia[r][c]))
+        .collect()
 }
 
 impl Proved {

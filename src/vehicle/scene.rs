@@ -13,7 +13,9 @@
 //! buoyancy = 299.0                   # B, N
 //! centre_of_gravity = [0, 0, 0.0196] # r_G from O, m
 //! centre_of_buoyancy = [0, 0, 0]     # r_B from O, m
-//! inertia = [0.177, 3.45, 3.45]      # I_xx, I_yy, I_zz about G, principal, kg m²
+//! inertia = [0.177, 3.45, 3.45]      # I_xx, I_yy, I_zz, kg m²
+//! # products_of_inertia = [0, 0, 0]  # I_xy, I_yz, I_xz (4.14: −∫xy dm); zero by default
+//! # inertia_about = "origin"         # "G" (the default) or the table's origin O
 //!
 //! [hydrodynamics]
 //! convention = "prestero"            # or "fossen": how the names are read
@@ -77,12 +79,14 @@ use super::manoeuvre::VehicleManoeuvre;
 use super::model::VehicleModel;
 use super::table::{PrimeScales, PropellerSetting, VehicleTable};
 use super::trial::{Plane, Trial};
-use super::{AddedMassCoriolis, Convention, VehicleError};
+use super::{AddedMassCoriolis, Convention, InertiaAbout, VehicleError};
+use crate::InertiaTensor;
 use crate::integrate::Stepper;
 use crate::models::Model;
 use crate::scene::check::Checker;
 use crate::scene::{Problem, SceneError};
 use crate::ship::scene::{IntegratorTable, OutputTable, RudderTable};
+use nalgebra::Matrix3;
 use serde::Deserialize;
 use std::collections::BTreeMap;
 
@@ -181,8 +185,12 @@ pub struct BodyTable {
     pub centre_of_gravity: [f64; 3],
     /// r_B from O, m.
     pub centre_of_buoyancy: [f64; 3],
-    /// I_xx, I_yy, I_zz about G, kg m².
+    /// I_xx, I_yy, I_zz, kg m².
     pub inertia: [f64; 3],
+    /// I_xy, I_yz, I_xz, kg m², the chapter's sign (−∫xy dm); zero when not given.
+    pub products_of_inertia: Option<Vec<f64>>,
+    /// `G` (the default) or `origin`: the point the tensor is about.
+    pub inertia_about: Option<String>,
 }
 
 /// `[hydrodynamics]`.
@@ -274,10 +282,9 @@ impl Checker<'_> {
             }
             Ok(v)
         };
-        let mut inertia = [0.0; 3];
-        for (i, x) in body.inertia.iter().enumerate() {
-            inertia[i] = self.positive(&format!("body.inertia[{i}]"), *x)?;
-        }
+        let mass = self.positive("body.mass", body.mass)?;
+        let centre_of_gravity = vector("centre_of_gravity", body.centre_of_gravity)?;
+        let (inertia, inertia_about) = self.vehicle_inertia(body, mass, centre_of_gravity)?;
         let hydro = &file.hydrodynamics;
         let convention = self.word(
             "hydrodynamics.convention",
@@ -317,12 +324,13 @@ impl Checker<'_> {
             None => None,
         };
         Ok(VehicleTable {
-            mass: self.positive("body.mass", body.mass)?,
+            mass,
             weight: self.positive("body.weight", body.weight)?,
             buoyancy: self.positive("body.buoyancy", body.buoyancy)?,
-            centre_of_gravity: vector("centre_of_gravity", body.centre_of_gravity)?,
+            centre_of_gravity,
             centre_of_buoyancy: vector("centre_of_buoyancy", body.centre_of_buoyancy)?,
             inertia,
+            inertia_about,
             convention,
             added_mass_coriolis,
             added_mass: hydro.added_mass.clone(),
@@ -330,6 +338,71 @@ impl Checker<'_> {
             propeller,
             prime: self.prime_scales(hydro)?,
         })
+    }
+
+    /// `body.inertia` and `body.products_of_inertia` as a tensor and the point it is about
+    /// (`body.inertia_about`): a physical
+    /// tensor (symmetric, positive definite, each moment at most the sum of the other two),
+    /// and about O one whose tensor about G, less M(|r_G|²1 − r_G r_Gᵀ) by 4.23, is physical
+    /// too.
+    fn vehicle_inertia(
+        &self,
+        body: &BodyTable,
+        mass: f64,
+        r_g: [f64; 3],
+    ) -> Result<([[f64; 3]; 3], InertiaAbout), SceneError> {
+        let mut tensor = [[0.0; 3]; 3];
+        for (i, x) in body.inertia.iter().enumerate() {
+            tensor[i][i] = self.positive(&format!("body.inertia[{i}]"), *x)?;
+        }
+        let key = "body.products_of_inertia";
+        if let Some(products) = &body.products_of_inertia {
+            if products.len() != 3 {
+                return Err(self.invalid(
+                    key,
+                    format!(
+                        "give three products [Ixy, Iyz, Ixz], not {}",
+                        products.len()
+                    ),
+                ));
+            }
+            for ((i, x), (r, c)) in products.iter().enumerate().zip([(0, 1), (1, 2), (0, 2)]) {
+                tensor[r][c] = self.finite(&format!("{key}[{i}]"), *x)?;
+                tensor[c][r] = tensor[r][c];
+            }
+        }
+        let about = match &body.inertia_about {
+            Some(word) => self.word(
+                "body.inertia_about",
+                word,
+                [
+                    (InertiaAbout::Gravity, "G"),
+                    (InertiaAbout::Origin, "origin"),
+                ],
+            )?,
+            None => InertiaAbout::Gravity,
+        };
+        let physical = |m: [[f64; 3]; 3], what: &str| {
+            InertiaTensor::from_matrix(Matrix3::from_fn(|r, c| m[r][c]))
+                .map(|_| ())
+                .map_err(|e| self.invalid("body.inertia", format!("{what}{e}")))
+        };
+        physical(tensor, "")?;
+        if about == InertiaAbout::Origin {
+            let squared: f64 = r_g.iter().map(|x| x * x).sum();
+            let mut about_g = tensor;
+            for (r, row) in about_g.iter_mut().enumerate() {
+                for (c, entry) in row.iter_mut().enumerate() {
+                    let identity = if r == c { squared } else { 0.0 };
+                    *entry -= mass * (identity - r_g[r] * r_g[c]);
+                }
+            }
+            physical(
+                about_g,
+                "about G (4.23, the tensor about O less M(|r_G|²1 − r_G r_Gᵀ)): ",
+            )?;
+        }
+        Ok((tensor, about))
     }
 
     /// The prime system's ρ and L where `hydrodynamics.units` is `prime` (each then

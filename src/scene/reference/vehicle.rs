@@ -132,9 +132,39 @@ pub(super) static KEYS: &[Key] = &[
         unit: "kg m²",
         frame: super::Frame::Body,
         required: Required::Yes,
-        description: "The principal moments of inertia about G, the principal axes along the \
-                      body axes; eom carries them to O by Steiner (4.23).",
+        description: "The moments of inertia about the point body.inertia_about names; with \
+                      body.products_of_inertia, the tensor [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], \
+                      [Ixz, Iyz, Izz]], which must be physical: positive definite, each moment \
+                      at most the sum of the other two (and about O, its tensor about G too).",
         example: "[0.177, 3.45, 3.45]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.products_of_inertia",
+        families: VEHICLE,
+        kind: Kind::Numbers("3: I_xy, I_yz, I_xz"),
+        unit: "kg m²",
+        frame: super::Frame::Body,
+        default: "[0, 0, 0]: principal axes along the body axes",
+        description: "The products of inertia, the tensor's off-diagonal entries with the \
+                      chapter's sign, Ixy = −∫xy dm (4.12–4.14), as a catalog scene writes them \
+                      in body.inertia, so H = [I]ω. Fossen's tables (MSS) write Ixy = ∫xy dm and \
+                      −Ixy in the tensor: enter those with their sign changed. Products that \
+                      are zero are pruned from the model (Ixy = Iyz = 0: the x–z plane of \
+                      symmetry; all zero: principal axes).",
+        example: "[0.0, 0.0, 0.0]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.inertia_about",
+        families: VEHICLE,
+        kind: Kind::Text(Choices::These(&["G", "origin"])),
+        default: "G",
+        description: "The point body.inertia is about: G, carried to O by Steiner (4.23), or \
+                      the table's origin O, used as given.",
+        example: "\"G\"",
+        shown: Shown::Commented,
         ..Key::BLANK
     },
     Key {
