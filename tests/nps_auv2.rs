@@ -4,11 +4,13 @@
 //! the closed form of the linear sway–yaw equations; the large turn converged and mirrored;
 //! and a prime table without its scales refused by key.
 
+use eom::Model;
 use eom::scene::AnyScene;
 use eom::vehicle::manoeuvre::{self, VehicleManoeuvre, VehicleRun};
 use eom::vehicle::scene::cruise;
 use eom::vehicle::summary::{CruiseSummary, StepFigures, largest_difference};
 use eom::vehicle::{InertiaAbout, VehicleModel, VehicleScene};
+use num_dual::Dual64;
 use std::path::Path;
 
 const SCENE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/nps_auv2.toml");
@@ -111,10 +113,12 @@ const SOURCE: [(&str, f64); 93] = [
 ];
 
 /// The source's terms the scene leaves out, each said in its header: the bow planes' (held
-/// at zero), the propeller's ε terms (ε = 0 at the cruise), its zero Kprop and Nprop.
-const LEFT_OUT: [&str; 17] = [
-    "Xqdb2", "Xwdb2", "Zdb2", "Kdb2", "Mdb2", "Xqdsn", "Xwdsn", "Xdsdsn", "Zqn", "Zwn", "Zdsn",
-    "Kpn", "Mqn", "Mwn", "Mdsn", "Kprop", "Nprop",
+/// at zero), its zero Kprop and Nprop.
+const LEFT_OUT: [&str; 7] = ["Xqdb2", "Xwdb2", "Zdb2", "Kdb2", "Mdb2", "Kprop", "Nprop"];
+
+/// The source's terms in ε, whose factor `n` the scene reads as the propeller law's ε.
+const IN_EPSILON: [&str; 10] = [
+    "Xqdsn", "Xwdsn", "Xdsdsn", "Zqn", "Zwn", "Zdsn", "Kpn", "Mqn", "Mwn", "Mdsn",
 ];
 
 /// npsauv.m's scales, body and propeller law.
@@ -128,6 +132,9 @@ const MOMENTS: [f64; 3] = [2038.0, 13587.0, 13587.0];
 const PRODUCTS: [f64; 3] = [-13.58, -13.58, -13.58];
 /// The setting: SIMnpsauv.m's n_d, rpm.
 const RPM: f64 = 1300.0;
+/// The law's prop = 0.012 n/u and C_t = 0.008 L² prop|prop|/2.
+const ADVANCE: f64 = 0.012;
+const CT: f64 = 0.008;
 
 fn scene_text() -> String {
     std::fs::read_to_string(SCENE).unwrap()
@@ -200,11 +207,26 @@ fn the_nps_scene_holds_npsauv_m_s_numbers_bit_for_bit() {
     for (given, source) in table.inertia.iter().flatten().zip(tensor.iter().flatten()) {
         assert_eq!(given.to_bits(), source.to_bits());
     }
-    // The thrust of X = ½ρL²Cd0(prop|prop| − 1)u², prop = 0.012n/u, at the setting.
+    // The law as the scene writes it, and the thrust of X = ½ρL²Cd0(prop|prop| − 1)u²,
+    // prop = 0.012n/u, at the setting.
     let propeller = table.propeller.unwrap();
-    let thrust = 0.5 * RHO * LENGTH.powi(2) * CD0 * (0.012 * shaft_speed()).powi(2);
+    let law = propeller.law.unwrap();
+    assert_eq!(
+        (
+            law.rpm,
+            law.advance,
+            law.drag_coefficient,
+            law.thrust_coefficient
+        ),
+        (RPM, ADVANCE, CD0, CT)
+    );
+    assert_eq!((law.density, law.length), (RHO, LENGTH));
+    let thrust = 0.5 * RHO * LENGTH.powi(2) * CD0 * (ADVANCE * shaft_speed()).powi(2);
     assert_eq!(propeller.thrust.to_bits(), thrust.to_bits());
     assert_eq!(propeller.torque, 0.0);
+    for name in IN_EPSILON {
+        assert!(table.coefficients.contains_key(name), "{name}");
+    }
 }
 
 /// At prop = 0.012n/u = 1 the thrust meets the resistance: u = 0.012n.
@@ -227,6 +249,14 @@ fn the_cruise_is_the_propeller_law_s_speed_and_holds() {
     // 1.7e-30° here, where the principal tensor left it at exactly zero.
     assert_eq!(cruise.roll_closed_form_deg, Some(0.0));
     assert!(cruise.roll_deg.abs() < 1e-20, "{cruise:?}");
+    // The law's cruise: prop = 1, where ε is zero exactly, and at the trim to rounding.
+    let propeller = scene.table.propeller_law().unwrap();
+    assert_eq!(propeller.cruise_speed(), law);
+    assert_eq!(propeller.epsilon(law).value, 0.0);
+    let epsilon = propeller.epsilon(cruise.speed_m_s).value;
+    println!("ε at the trim: {epsilon:e}");
+    // |∂ε/∂u| ≈ 1.3 s/m here, and u is within 1e-11 m/s of the law's.
+    assert!(epsilon.abs() < 2e-11, "{epsilon:e}");
     // Ten seconds of it (before the first step) leave it where it was.
     let run = run_with(&scene, &scene.model, &scene.manoeuvres[0], start);
     let before = run.ends[0];
@@ -400,4 +430,128 @@ fn a_bad_prime_table_is_refused_naming_the_key() {
     assert!(three.contains("prime system"), "{three}");
     let same = parse(&edited("Yv = -1.0e-1", "Yv = -1.0e-1\nYuv = 1.0")).unwrap_err();
     assert!(same.contains("`Yuv` and `Yv`"), "{same}");
+}
+
+/// The model's ∂f/∂x, whose column of u holds the chain rule through ε, against the dual
+/// number's derivative of its rates (which carries ε's own through the law), at a state away
+/// from the cruise (ε = 0.21) with every velocity and both fins moving.
+#[test]
+fn the_jacobian_holds_the_chain_rule_through_epsilon() {
+    let scene = nps();
+    let model = &scene.model;
+    let mut x = [
+        1.45, 0.12, -0.08, 0.03, -0.02, 0.05, 1.0, 2.0, 3.0, 0.9, 0.1, -0.2, 0.3, 0.1, -0.15,
+    ];
+    let norm = (9..13).map(|i| x[i] * x[i]).sum::<f64>().sqrt();
+    for q in &mut x[9..13] {
+        *q /= norm;
+    }
+    let epsilon = scene.table.propeller_law().unwrap().epsilon(x[0]).value;
+    assert!(epsilon > 0.2, "{epsilon}");
+    let input = [0.0, 0.0];
+    let exact = Model::<f64, 15, 2>::state_jacobian(model, &x, &input);
+    let mut worst: f64 = 0.0;
+    for column in 0..15 {
+        let mut seeded = x.map(Dual64::from);
+        seeded[column].eps = 1.0;
+        let rates = Model::<Dual64, 15, 2>::rhs(model, &seeded, &input.map(Dual64::from));
+        for row in 0..15 {
+            let scale = 1.0 + exact[row][column].abs();
+            worst = worst.max((rates[row].eps - exact[row][column]).abs() / scale);
+        }
+    }
+    println!("largest difference from the dual numbers' {worst:e}");
+    // The same derivatives by two routes: rounding of entries of order one.
+    assert!(worst < 1e-12, "{worst:e}");
+    // The column of u is not the program's alone: the terms in ε add to it.
+    let mut without = scene.table.clone();
+    for name in IN_EPSILON {
+        without.coefficients.remove(name);
+    }
+    let bare = VehicleModel::new(&without).unwrap();
+    let bare_jacobian = Model::<f64, 15, 2>::state_jacobian(&bare, &x, &input);
+    assert!((0..6).any(|row| (exact[row][0] - bare_jacobian[row][0]).abs() > 1e-6));
+}
+
+/// What the terms in ε change in the ten-degree turn: the same run without them.
+#[test]
+fn the_terms_in_epsilon_change_the_ten_degree_turn_a_little() {
+    let scene = nps();
+    let start = scene.start().unwrap();
+    let turn = &scene.manoeuvres[1];
+    let with = StepFigures::of(&run_with(&scene, &scene.model, turn, start))[1];
+    let mut without = scene.table.clone();
+    for name in IN_EPSILON {
+        without.coefficients.remove(name);
+    }
+    let bare = VehicleModel::new(&without).unwrap();
+    let start_bare = cruise(&bare).unwrap();
+    assert_eq!(start_bare, start, "ε = 0 at the cruise: the same trim");
+    let before = StepFigures::of(&run_with(&scene, &bare, turn, start))[1];
+    println!("with the terms in ε:    {with:?}");
+    println!("without the terms in ε: {before:?}");
+    let law = scene.table.propeller_law().unwrap();
+    println!(
+        "ε at the turn's speed {}: {}",
+        with.speed_m_s,
+        law.epsilon(with.speed_m_s).value
+    );
+    let change = with.yaw_rate_deg_s / before.yaw_rate_deg_s - 1.0;
+    println!("yaw rate changed by {change:e}");
+    // With the stern planes at zero the terms multiply only the small w, p, q: under 1 %.
+    assert!(change.abs() < 1e-2 && with.yaw_rate_deg_s != before.yaw_rate_deg_s);
+}
+
+#[test]
+fn a_bad_propeller_law_is_refused_naming_the_key() {
+    let cases = [
+        ("rpm = 1300.0", "rpm = -1300.0", "propeller.rpm"),
+        ("rpm = 1300.0", "rpm = nan", "propeller.rpm"),
+        ("rpm = 1300.0", "", "propeller.rpm"),
+        ("advance = 0.012", "advance = 0.0", "propeller.advance"),
+        (
+            "drag_coefficient = 0.00385",
+            "drag_coefficient = -0.00385",
+            "propeller.drag_coefficient",
+        ),
+        (
+            "thrust_coefficient = 0.008",
+            "thrust_coefficient = nan",
+            "propeller.thrust_coefficient",
+        ),
+        (
+            "law = \"healey_lienard\"",
+            "law = \"wageningen\"",
+            "propeller.law",
+        ),
+        (
+            "law = \"healey_lienard\"",
+            "law = \"healey_lienard\"\nthrust = 147.9",
+            "propeller.thrust",
+        ),
+        (
+            "law = \"healey_lienard\"",
+            "law = \"constant\"",
+            "propeller.rpm",
+        ),
+        ("torque = 0.0 ", "torque = nan ", "propeller.torque"),
+    ];
+    for (from, to, key) in cases {
+        let error = parse(&edited(from, to))
+            .err()
+            .unwrap_or_else(|| panic!("{to} accepted"));
+        println!("{error}");
+        assert!(error.contains(&format!("`{key}`")), "{to}: {error}");
+    }
+    // Without the law, `n` is no factor of the table: the terms in ε are refused by name.
+    let constant = edited(
+        "law = \"healey_lienard\"\nrpm = 1300.0",
+        "law = \"constant\"\nthrust = 147.9",
+    );
+    let constant = constant
+        .replace("advance = 0.012", "")
+        .replace("drag_coefficient = 0.00385", "")
+        .replace("thrust_coefficient = 0.008", "");
+    let error = parse(&constant).unwrap_err();
+    assert!(error.contains("hydrodynamics.coefficients."), "{error}");
 }

@@ -335,6 +335,18 @@ fn bad_tables_are_refused_naming_the_key() {
             "kind = \"crash_back\"",
             "manoeuvre[0].kind",
         ),
+        (
+            "thrust = 3.86                         # X_prop, N\n",
+            "law = \"healey_lienard\"\nrpm = 1500.0\nadvance = 0.001\ndrag_coefficient = 0.1\n\
+             thrust_coefficient = 0.01\n",
+            "propeller.law",
+        ),
+        (
+            "thrust = 3.86",
+            "thrust = 3.86\nrpm = 1500.0",
+            "propeller.rpm",
+        ),
+        ("torque = -0.543", "", "propeller.torque"),
     ];
     for (from, to, key) in cases {
         let error = parse(&edited(from, to))
@@ -356,6 +368,13 @@ fn bad_tables_are_refused_naming_the_key() {
     assert!(indefinite.contains("not positive definite"), "{indefinite}");
     let about_g = inertia("inertia = [0.005, 3.45, 3.45]\ninertia_about = \"origin\"");
     assert!(about_g.contains("about G"), "{about_g}");
+    let dimensional = parse(&edited(
+        "thrust = 3.86                         # X_prop, N\n",
+        "law = \"healey_lienard\"\nrpm = 1500.0\nadvance = 0.001\ndrag_coefficient = 0.1\n\
+         thrust_coefficient = 0.01\n",
+    ))
+    .unwrap_err();
+    assert!(dimensional.contains("prime system"), "{dimensional}");
     let shape = inertia("inertia = [0.177, 3.45, 3.45]\nproducts_of_inertia = [0.0, 0.0]");
     assert!(shape.contains("three products"), "{shape}");
 }

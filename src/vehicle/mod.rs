@@ -5,6 +5,7 @@
 //! |---|---|
 //! | the table as the scene gives it: body, hydrostatics, added mass, named terms, propeller | [`table`] |
 //! | the six equations about O with exactly the table's terms, derived and proved by `eom-codegen`, evaluated | [`model`] |
+//! | the propeller's law in its rate, and its ε computed beside the proved program | [`propeller`] |
 //! | the fins (rudder, stern planes): saturation, lag, rate limit; their step commands | [`fins`] |
 //! | the autopilots: heading (PID on ψ), depth (depth to pitch to the planes), sampled | [`autopilot`] |
 //! | linearised about a cruise: A, B, the modes (the Euler-angle twin of the table) | [`linear`] |
@@ -24,6 +25,7 @@ pub mod fins;
 pub mod linear;
 pub mod manoeuvre;
 pub mod model;
+pub mod propeller;
 pub mod scene;
 pub mod summary;
 pub mod table;
@@ -38,6 +40,7 @@ pub use crate::defined::engine::{
 pub use fins::{FinSteps, Fins};
 pub use manoeuvre::{VehicleManoeuvre, VehicleRun};
 pub use model::VehicleModel;
+pub use propeller::PropellerLaw;
 pub use scene::VehicleScene;
 pub use table::{PrimeScales, PropellerSetting, VehicleTable};
 

@@ -9,9 +9,13 @@
 //! |x| of each velocity whose signed square x|x| the table holds as an input `abs_x`: this
 //! model computes those from the state, and its ∂f/∂x adds the chain rule
 //! ∂f/∂abs_x · sign(x) to the column of x (and the program's ∂f/∂δ to the fins' columns).
+//! Where the scene names the propeller's law, the program reads its ε as a control `n`
+//! too, computed from u beside it ([`super::propeller`]), and ∂f/∂x adds ∂f/∂ε · ∂ε/∂u to
+//! the column of u.
 
 use super::VehicleError;
-use super::table::{CONTROLS, VehicleTable};
+use super::propeller::PropellerLaw;
+use super::table::{CONTROLS, EPSILON, VehicleTable};
 use crate::defined::engine::{
     FoldedComparison, InertiaAbout, Kinematics, Operations, Propeller, Units,
     VEHICLE_PRIME_SCALES as PRIME_SCALES, VehicleSpec, folded_comparison, prove_with_jacobians,
@@ -104,6 +108,8 @@ enum Variable {
     Fin(usize),
     /// |x| of the state entry.
     Absolute(usize),
+    /// The propeller law's ε at the surge speed u (the state's first entry).
+    Epsilon(PropellerLaw),
 }
 
 /// The spec of a table: `kinematics`, the inertia about the table's point with the products
@@ -120,7 +126,7 @@ pub fn spec(table: &VehicleTable, kinematics: Kinematics) -> VehicleSpec {
         inertia: table.inertia_about,
         symmetry: table.symmetry(),
         convention: table.convention,
-        controls: CONTROLS.map(String::from).to_vec(),
+        controls: controls(table),
         added_mass: table.added_mass.keys().cloned().collect(),
         added_mass_coriolis: table.added_mass_coriolis,
         terms: table.coefficients.keys().cloned().collect(),
@@ -132,6 +138,16 @@ pub fn spec(table: &VehicleTable, kinematics: Kinematics) -> VehicleSpec {
         hydrostatics: true,
         applied_loads: false,
     }
+}
+
+/// The controls the table's terms may hold: the fins, and ε where the scene names the
+/// propeller's law.
+fn controls(table: &VehicleTable) -> Vec<String> {
+    let mut controls = CONTROLS.map(String::from).to_vec();
+    if table.propeller_law().is_some() {
+        controls.push(EPSILON.to_owned());
+    }
+    controls
 }
 
 /// Every parameter's value by its symbol, as the spec names them, without the inverse mass
@@ -221,8 +237,9 @@ impl Proved {
         let state: Vec<&str> = (system.state.iter().map(|s| s.as_ref()))
             .chain(["dr", "ds"])
             .collect();
+        let law = table.propeller_law();
         let inputs = (system.inputs.iter())
-            .map(|name| input_variable(name, &state, body))
+            .map(|name| input_variable(name, &state, body, law))
             .collect::<Result<Vec<_>, _>>()?;
         // The variables in `variables`'s order: the generator's state, then its inputs.
         let position =
@@ -314,6 +331,7 @@ impl Proved {
             match self.inputs[column] {
                 Variable::Fin(i) => set(row, i, value),
                 Variable::Absolute(i) => set(row, i, value * state[i].simd_signum()),
+                Variable::Epsilon(law) => set(row, 0, value * law.epsilon(state[0]).by_u),
             }
         }
     }
@@ -326,6 +344,7 @@ impl Proved {
                 .iter()
                 .map(|&(row, column)| match self.inputs[column] {
                     Variable::Fin(i) | Variable::Absolute(i) => (row, i),
+                    Variable::Epsilon(_) => (row, 0),
                 });
         let mut pattern: Vec<(usize, usize)> = (self.functions.state_pattern.iter().copied())
             .chain(through_inputs)
@@ -404,16 +423,23 @@ impl Variable {
         match self {
             Variable::Fin(i) => state[i],
             Variable::Absolute(i) => state[i].simd_abs(),
+            Variable::Epsilon(law) => law.epsilon(state[0]).value,
         }
     }
 }
 
 /// What the program's input `name` is set from, in a state named `state` whose first `body`
-/// entries are the generator's.
-fn input_variable(name: &str, state: &[&str], body: usize) -> Result<Variable, VehicleError> {
+/// entries are the generator's (u first), with the propeller's `law` if the scene names one.
+fn input_variable(
+    name: &str,
+    state: &[&str],
+    body: usize,
+    law: Option<PropellerLaw>,
+) -> Result<Variable, VehicleError> {
     let index = |x: &str| state.iter().position(|s| *s == x);
     let found = match name.strip_prefix("abs_") {
         Some(x) => index(x).filter(|&i| i < 6).map(Variable::Absolute),
+        None if name == EPSILON => law.filter(|_| state[0] == "u").map(Variable::Epsilon),
         None => index(name).filter(|&i| i >= body).map(Variable::Fin),
     };
     found.ok_or_else(|| {

@@ -30,6 +30,11 @@
 //! [propeller]                        # constant thrust and torque at the setting
 //! thrust = 3.86                      # X_prop, N
 //! torque = -0.543                    # K_prop, N m
+//! # law = "healey_lienard"           # or the NPS AUV II's law in its rate (prime tables):
+//! # rpm = 1300.0                     #   n, and prop = advance n/u, thrust ½ρL²C_d0(a n)²,
+//! # advance = 0.012                  #   ε of C_t = c L² prop|prop|/2 for the terms in `n`
+//! # drag_coefficient = 0.00385       #   C_d0
+//! # thrust_coefficient = 0.008       #   c
 //!
 //! [rudder]                           # and [stern_planes]: every key optional
 //! max_deg = 13.6
@@ -77,6 +82,7 @@ use super::autopilot::{Autopilots, DepthGains, HeadingGains, Setpoints};
 use super::fins::{FinSteps, Fins, Rudder};
 use super::manoeuvre::VehicleManoeuvre;
 use super::model::VehicleModel;
+use super::propeller::PropellerLaw;
 use super::table::{PrimeScales, PropellerSetting, VehicleTable};
 use super::trial::{Plane, Trial};
 use super::{AddedMassCoriolis, Convention, InertiaAbout, VehicleError};
@@ -217,10 +223,20 @@ pub struct HydrodynamicsTable {
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct PropellerTable {
-    /// X_prop, N.
-    pub thrust: f64,
-    /// K_prop, N m.
-    pub torque: f64,
+    /// `constant` (the default: `thrust` and `torque`) or `healey_lienard` (a law in `rpm`).
+    pub law: Option<String>,
+    /// X_prop, N (constant).
+    pub thrust: Option<f64>,
+    /// K_prop, N m (constant).
+    pub torque: Option<f64>,
+    /// n, rpm (the law).
+    pub rpm: Option<f64>,
+    /// a in prop = a n/u, m/rad (the law).
+    pub advance: Option<f64>,
+    /// C_d0 (the law).
+    pub drag_coefficient: Option<f64>,
+    /// c in C_t = c L² prop|prop|/2 (the law).
+    pub thrust_coefficient: Option<f64>,
 }
 
 /// `[[manoeuvre]]`.
@@ -316,13 +332,10 @@ impl Checker<'_> {
                 }
             }
         }
-        let propeller = match &file.propeller {
-            Some(p) => Some(PropellerSetting {
-                thrust: self.finite("propeller.thrust", p.thrust)?,
-                torque: self.finite("propeller.torque", p.torque)?,
-            }),
-            None => None,
-        };
+        let prime = self.prime_scales(hydro)?;
+        let propeller = (file.propeller.as_ref())
+            .map(|p| self.vehicle_propeller(p, prime))
+            .transpose()?;
         Ok(VehicleTable {
             mass,
             weight: self.positive("body.weight", body.weight)?,
@@ -336,7 +349,7 @@ impl Checker<'_> {
             added_mass: hydro.added_mass.clone(),
             coefficients: hydro.coefficients.clone(),
             propeller,
-            prime: self.prime_scales(hydro)?,
+            prime,
         })
     }
 
@@ -403,6 +416,83 @@ impl Checker<'_> {
             )?;
         }
         Ok((tensor, about))
+    }
+
+    /// `[propeller]`: constant thrust and torque, or the law in the propeller's rate (in the
+    /// prime system, whose ρ and L it reads), each refusing the other's keys.
+    fn vehicle_propeller(
+        &self,
+        p: &PropellerTable,
+        prime: Option<PrimeScales>,
+    ) -> Result<PropellerSetting, SceneError> {
+        let law = match &p.law {
+            Some(word) => self.word(
+                "propeller.law",
+                word,
+                [(false, "constant"), (true, "healey_lienard")],
+            )?,
+            None => false,
+        };
+        let given = |key: &str, value: Option<f64>| match value {
+            Some(x) => Ok(x),
+            None => Err(self.error(
+                &format!("propeller.{key}"),
+                Problem::Missing(format!(
+                    "the law `{}` needs it",
+                    if law { "healey_lienard" } else { "constant" }
+                )),
+            )),
+        };
+        let refused = |key: &str, value: Option<f64>, why: &str| match value {
+            Some(_) => Err(self.invalid(&format!("propeller.{key}"), why)),
+            None => Ok(()),
+        };
+        if !law {
+            for (key, value) in [
+                ("rpm", p.rpm),
+                ("advance", p.advance),
+                ("drag_coefficient", p.drag_coefficient),
+                ("thrust_coefficient", p.thrust_coefficient),
+            ] {
+                refused(
+                    key,
+                    value,
+                    "only a law reads it: give propeller.law = \"healey_lienard\"",
+                )?;
+            }
+            return Ok(PropellerSetting {
+                thrust: self.finite("propeller.thrust", given("thrust", p.thrust)?)?,
+                torque: self.finite("propeller.torque", given("torque", p.torque)?)?,
+                law: None,
+            });
+        }
+        refused(
+            "thrust",
+            p.thrust,
+            "the law gives the thrust: ½ρL²C_d0(a n)²",
+        )?;
+        let Some(scales) = prime else {
+            return Err(self.invalid(
+                "propeller.law",
+                "the law is in the prime system: give hydrodynamics.units = \"prime\"",
+            ));
+        };
+        let positive = |key: &str, value: Option<f64>| {
+            self.positive(&format!("propeller.{key}"), given(key, value)?)
+        };
+        let law = PropellerLaw {
+            rpm: positive("rpm", p.rpm)?,
+            advance: positive("advance", p.advance)?,
+            drag_coefficient: positive("drag_coefficient", p.drag_coefficient)?,
+            thrust_coefficient: positive("thrust_coefficient", p.thrust_coefficient)?,
+            density: scales.density,
+            length: scales.length,
+        };
+        Ok(PropellerSetting {
+            thrust: law.thrust(),
+            torque: self.finite("propeller.torque", p.torque.unwrap_or(0.0))?,
+            law: Some(law),
+        })
     }
 
     /// The prime system's ρ and L where `hydrodynamics.units` is `prime` (each then

@@ -2,6 +2,7 @@
 //! named force terms under a declared convention and in their units (SI or the prime system),
 //! and the propeller at its setting.
 
+use super::propeller::PropellerLaw;
 use super::{AddedMassCoriolis, Convention, InertiaAbout};
 use crate::defined::engine::Symmetry;
 use std::collections::BTreeMap;
@@ -10,13 +11,20 @@ use std::collections::BTreeMap;
 /// each a fin the scene's steering gear moves ([`super::fins`]).
 pub const CONTROLS: [&str; 2] = ["dr", "ds"];
 
-/// The propeller at its setting: constant thrust and torque on the body.
+/// The factor of a term in the propeller law's ε ([`super::propeller`]), a control of the
+/// table when the scene names the law: `n`, as the source's names write it (`Zqn`).
+pub const EPSILON: &str = "n";
+
+/// The propeller at its setting: constant thrust and torque on the body, and the law they
+/// come from, if the scene names one.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PropellerSetting {
     /// X_prop, N, along body x.
     pub thrust: f64,
     /// K_prop, N m, about body x (the propeller's reaction on the hull).
     pub torque: f64,
+    /// The law in the propeller's rate, whose ε the table's terms in `n` multiply.
+    pub law: Option<PropellerLaw>,
 }
 
 /// The scales of a table in the prime system: ½ρL^(2 + a + m)·u^(2 − j) per term of j
@@ -65,6 +73,11 @@ pub struct VehicleTable {
 }
 
 impl VehicleTable {
+    /// The propeller's law, if the scene names one.
+    pub fn propeller_law(&self) -> Option<PropellerLaw> {
+        self.propeller.and_then(|p| p.law)
+    }
+
     /// The products of inertia the tensor sets to zero, as the smallest symmetry class that
     /// holds them: every product zero is principal axes, Ixy = Iyz = 0 the x–z plane of
     /// symmetry; the model is built with the class's products pruned.

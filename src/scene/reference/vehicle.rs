@@ -265,11 +265,31 @@ pub(super) static KEYS: &[Key] = &[
         ..Key::BLANK
     },
     Key {
+        path: "propeller.law",
+        families: VEHICLE,
+        kind: Kind::Text(Choices::These(&["constant", "healey_lienard"])),
+        default: "constant",
+        description: "What gives the propeller's loads. constant: propeller.thrust and \
+                      propeller.torque as given. healey_lienard: the NPS AUV II's law in the \
+                      propeller's rate as Healey & Lienard (1993) and Fossen's npsauv.m give \
+                      it, in the prime system (hydrodynamics.units = \"prime\"): prop = \
+                      advance·n/u (n in rad/s), the thrust ½ρL²·drag_coefficient·(advance·n)² \
+                      for u > 0 (the law's resistance, ½ρL²C_d0u², is the table's Xuu), and \
+                      ε = −1 + (√(C_t + 1) − 1)/(√(C_t1 + 1) − 1), C_t = \
+                      thrust_coefficient·L²·prop|prop|/2, C_t1 at prop = 1: the factor `n` of \
+                      the table's terms (Zqn is u·q·ε), computed beside the proved program; ε = \
+                      0 at the cruise u = advance·n. The law holds for u > 0: at u ≤ 0 the run \
+                      stops on its guard against values that are not finite.",
+        example: "\"constant\"",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
         path: "propeller.thrust",
         families: VEHICLE,
         unit: "N",
         frame: super::Frame::Body,
-        required: Required::When("with [propeller]"),
+        required: Required::When("with the constant law (a law refuses it: it gives the thrust)"),
         description: "X_prop, constant at the setting, along body x. Every run starts from the \
                       cruise it makes: u and the roll angle trimmed so that u̇ = ṗ = 0.",
         example: "3.86",
@@ -280,9 +300,50 @@ pub(super) static KEYS: &[Key] = &[
         families: VEHICLE,
         unit: "N m",
         frame: super::Frame::Body,
-        required: Required::When("with [propeller]"),
+        required: Required::When("with the constant law (0 by default with healey_lienard)"),
         description: "K_prop, the propeller's torque on the hull about body x, constant.",
         example: "-0.543",
+        ..Key::BLANK
+    },
+    Key {
+        path: "propeller.rpm",
+        families: VEHICLE,
+        unit: "rpm",
+        required: Required::When("with healey_lienard (the constant law refuses it)"),
+        description: "n, the propeller's rate, positive (ahead).",
+        example: "1300.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "propeller.advance",
+        families: VEHICLE,
+        unit: "m/rad",
+        required: Required::When("with healey_lienard"),
+        description: "a in prop = a·n/u (n in rad/s): the cruise speed per shaft speed, where \
+                      thrust meets the resistance (npsauv.m: 0.012).",
+        example: "0.012",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "propeller.drag_coefficient",
+        families: VEHICLE,
+        required: Required::When("with healey_lienard"),
+        description: "C_d0: the thrust ½ρL²C_d0(a·n)² (npsauv.m: 0.00385; its resistance \
+                      −C_d0 is the table's Xuu).",
+        example: "0.00385",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "propeller.thrust_coefficient",
+        families: VEHICLE,
+        required: Required::When("with healey_lienard"),
+        description: "c in C_t = c·L²·prop|prop|/2, the thrust coefficient ε is made of \
+                      (npsauv.m: 0.008).",
+        example: "0.008",
+        shown: Shown::Commented,
         ..Key::BLANK
     },
     RUDDER[0],
