@@ -1,8 +1,10 @@
 //! The NPS AUV II at run time (`scenes/nps_auv2.toml`): Healey & Lienard's (1993) table in the
 //! prime system as Fossen's MSS `npsauv.m` gives it, against a transcription of that file's
-//! numbers; the cruise against the propeller law's closed form; a small rudder step against
-//! the closed form of the linear sway–yaw equations; the large turn converged and mirrored;
-//! and a prime table without its scales refused by key.
+//! numbers (its tensor of inertia about O, its propeller law and terms in ε, its cross-flow
+//! strips); the cruise against the propeller law's closed form, ε = 0 there; the Jacobian's
+//! chain rule through ε against dual numbers; a small rudder step against the closed form of
+//! the linear sway–yaw equations; the large turn converged and mirrored, and what the terms in
+//! ε and the cross-flow drag change in it; and bad tables, laws and strips refused by key.
 
 use eom::Model;
 use eom::scene::AnyScene;
@@ -227,6 +229,22 @@ fn the_nps_scene_holds_npsauv_m_s_numbers_bit_for_bit() {
     for name in IN_EPSILON {
         assert!(table.coefficients.contains_key(name), "{name}");
     }
+    // The cross-flow drag's strips as the scene writes them, the source's −L/2:L/10:L/2 to
+    // rounding of the decimals, its 0.53 m, Cdy = 0.5, Cdz = 0.6, ρ the prime system's.
+    let hull = table.cross_flow.as_ref().unwrap();
+    let written = [
+        -2.65, -2.12, -1.59, -1.06, -0.53, 0.0, 0.53, 1.06, 1.59, 2.12, 2.65,
+    ];
+    assert_eq!(hull.stations, written);
+    for (k, x) in hull.stations.iter().enumerate() {
+        let source = -LENGTH / 2.0 + k as f64 * LENGTH / 10.0;
+        assert!((x - source).abs() <= 4.5e-16, "{x} against {source}");
+    }
+    assert_eq!(hull.lengths, [0.53; 11]);
+    assert_eq!(hull.heights, [0.53; 11]);
+    assert_eq!(hull.breadths, [0.53; 11]);
+    assert_eq!((hull.sway_coefficient, hull.heave_coefficient), (0.5, 0.6));
+    assert_eq!(hull.density, RHO);
 }
 
 /// At prop = 0.012n/u = 1 the thrust meets the resistance: u = 0.012n.
@@ -279,18 +297,17 @@ fn linear_yaw_rate(table: &eom::vehicle::VehicleTable, rudder: f64, u: f64) -> f
     r_prime * u / LENGTH
 }
 
-#[test]
-fn a_small_rudder_step_turns_at_the_linear_sway_yaw_closed_form() {
-    let scene = nps();
-    let start = scene.start().unwrap();
-    let mut errors = Vec::new();
-    for degrees in [0.5, 1.0] {
+/// The relative difference of the steady yaw rate after a rudder step of each of `degrees`
+/// from the linear closed form, on `model`.
+fn closed_form_errors(scene: &VehicleScene, model: &VehicleModel, degrees: [f64; 2]) -> [f64; 2] {
+    let start = cruise(model).unwrap();
+    degrees.map(|degrees| {
         let step = VehicleManoeuvre {
             steps: eom::vehicle::FinSteps::new(vec![10.0], vec![[f64::to_radians(degrees), 0.0]])
                 .unwrap(),
             ..scene.manoeuvres[0].clone()
         };
-        let run = run_with(&scene, &scene.model, &step, start);
+        let run = run_with(scene, model, &step, start);
         let end = run.ends.last().unwrap().state;
         let closed = linear_yaw_rate(&scene.table, degrees.to_radians(), end[0]);
         let error = end[5] / closed - 1.0;
@@ -300,13 +317,29 @@ fn a_small_rudder_step_turns_at_the_linear_sway_yaw_closed_form() {
             end[0],
             closed.to_degrees()
         );
-        errors.push(error);
-    }
+        error
+    })
+}
+
+#[test]
+fn a_small_rudder_step_turns_at_the_linear_sway_yaw_closed_form() {
+    let scene = nps();
+    // The table's own terms: the cross-flow drag is not in the linear equations.
+    let mut table = scene.table.clone();
+    table.cross_flow = None;
+    let errors = closed_form_errors(&scene, &VehicleModel::new(&table).unwrap(), [0.5, 1.0]);
     // The couplings the closed form leaves out (roll, heave and pitch, the speed's own change)
     // are of second order in δ: the error is small and scales by about four from 0.5° to 1°.
     assert!(errors[1].abs() < 1e-3, "{errors:?}");
     let ratio = errors[1] / errors[0];
     assert!((3.0..5.0).contains(&ratio), "{errors:?}");
+    // The cross-flow drag is a signed square of the cross flow, so its share of the sway and
+    // yaw damping grows as δ itself: on the scene's model the turn is slower than the closed
+    // form by a share that doubles from 0.5° to 1°.
+    let errors = closed_form_errors(&scene, &scene.model, [0.5, 1.0]);
+    assert!(errors[0] < 0.0 && errors[1] < 0.0, "{errors:?}");
+    let ratio = errors[1] / errors[0];
+    assert!((1.8..2.2).contains(&ratio), "{errors:?}");
 }
 
 #[test]
@@ -554,4 +587,104 @@ fn a_bad_propeller_law_is_refused_naming_the_key() {
         .replace("thrust_coefficient = 0.008", "");
     let error = parse(&constant).unwrap_err();
     assert!(error.contains("hydrodynamics.coefficients."), "{error}");
+}
+
+/// The steady turn's figures of the 10° rudder (its second stretch) and its steady diameter
+/// 2U/r, m.
+fn steady_turn(scene: &VehicleScene, model: &VehicleModel) -> (StepFigures, f64) {
+    let start = cruise(model).unwrap();
+    let figures = StepFigures::of(&run_with(scene, model, &scene.manoeuvres[1], start))[1];
+    let diameter = 2.0 * figures.speed_m_s / figures.yaw_rate_deg_s.to_radians().abs();
+    (figures, diameter)
+}
+
+/// What the cross-flow drag changes in the ten-degree turn: the same run without it. It
+/// damps sway and yaw, so the turn is slower and wider; at the cruise there is no cross flow,
+/// so the trim is the same.
+#[test]
+fn the_cross_flow_drag_slows_and_widens_the_ten_degree_turn() {
+    let scene = nps();
+    let (with, diameter) = steady_turn(&scene, &scene.model);
+    let mut without = scene.table.clone();
+    without.cross_flow = None;
+    let bare = VehicleModel::new(&without).unwrap();
+    assert_eq!(cruise(&bare).unwrap(), scene.start().unwrap());
+    let (before, diameter_before) = steady_turn(&scene, &bare);
+    println!(
+        "with the cross-flow drag:    r = {:.6} °/s, U = {:.6} m/s, diameter {diameter:.3} m, {with:?}",
+        with.yaw_rate_deg_s, with.speed_m_s
+    );
+    println!(
+        "without the cross-flow drag: r = {:.6} °/s, U = {:.6} m/s, diameter {diameter_before:.3} m, {before:?}",
+        before.yaw_rate_deg_s, before.speed_m_s
+    );
+    let slower = with.yaw_rate_deg_s / before.yaw_rate_deg_s - 1.0;
+    println!(
+        "yaw rate changed by {slower:e}, diameter by {:e}",
+        diameter / diameter_before - 1.0
+    );
+    assert!(with.yaw_rate_deg_s.abs() < before.yaw_rate_deg_s.abs());
+    assert!(diameter > diameter_before);
+}
+
+#[test]
+fn a_bad_cross_flow_is_refused_naming_the_key() {
+    let eleven = "[0.53, 0.53, 0.53, 0.53, 0.53, 0.53, 0.53, 0.53, 0.53, 0.53, 0.53]";
+    let ten = "[0.53, 0.53, 0.53, 0.53, 0.53, 0.53, 0.53, 0.53, 0.53, 0.53]";
+    let cases = [
+        (
+            format!("heights = {eleven}"),
+            format!("heights = {ten}"),
+            "hydrodynamics.cross_flow.heights",
+        ),
+        (
+            format!("breadths = {eleven}"),
+            format!("breadths = {}", eleven.replacen("0.53", "-0.53", 1)),
+            "hydrodynamics.cross_flow.breadths[0]",
+        ),
+        (
+            format!("lengths = {eleven}"),
+            format!("lengths = {}", eleven.replacen("0.53", "nan", 1)),
+            "hydrodynamics.cross_flow.lengths[0]",
+        ),
+        (
+            "stations = [-2.65,".to_owned(),
+            "stations = [nan,".to_owned(),
+            "hydrodynamics.cross_flow.stations[0]",
+        ),
+        (
+            "sway_coefficient = 0.5".to_owned(),
+            "sway_coefficient = -0.5".to_owned(),
+            "hydrodynamics.cross_flow.sway_coefficient",
+        ),
+        (
+            "heave_coefficient = 0.6".to_owned(),
+            "heave_coefficient = nan".to_owned(),
+            "hydrodynamics.cross_flow.heave_coefficient",
+        ),
+        (
+            "heave_coefficient = 0.6".to_owned(),
+            "heave_coefficient = 0.6\ndensity = 0.0".to_owned(),
+            "hydrodynamics.cross_flow.density",
+        ),
+        (
+            "heave_coefficient = 0.6".to_owned(),
+            "heave_coefficient = 0.6\nwidth = 0.53".to_owned(),
+            "width",
+        ),
+    ];
+    for (from, to, key) in cases {
+        let error = parse(&edited(&from, &to))
+            .err()
+            .unwrap_or_else(|| panic!("{to} accepted"));
+        println!("{error}");
+        assert!(error.contains(key), "{to}: {error}");
+    }
+    let text = scene_text();
+    let stations = text.lines().find(|l| l.starts_with("stations")).unwrap();
+    let none = parse(&edited(stations, "stations = []")).unwrap_err();
+    assert!(
+        none.contains("`hydrodynamics.cross_flow.stations`"),
+        "{none}"
+    );
 }

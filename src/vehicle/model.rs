@@ -11,15 +11,18 @@
 //! ∂f/∂abs_x · sign(x) to the column of x (and the program's ∂f/∂δ to the fins' columns).
 //! Where the scene names the propeller's law, the program reads its ε as a control `n`
 //! too, computed from u beside it ([`super::propeller`]), and ∂f/∂x adds ∂f/∂ε · ∂ε/∂u to
-//! the column of u.
+//! the column of u. Where the scene gives a cross-flow drag, the program reads its loads as
+//! the generator's applied loads `F_x` … `M_z`, computed beside it ([`super::cross_flow`]),
+//! and ∂f/∂x adds ∂f/∂F · ∂F/∂ν to the velocities' columns.
 
 use super::VehicleError;
+use super::cross_flow::{CrossFlow, CrossFlowLoads};
 use super::propeller::PropellerLaw;
 use super::table::{CONTROLS, EPSILON, VehicleTable};
 use crate::defined::engine::{
     FoldedComparison, InertiaAbout, Kinematics, Operations, Propeller, Units,
-    VEHICLE_PRIME_SCALES as PRIME_SCALES, VehicleSpec, folded_comparison, prove_with_jacobians,
-    vehicle,
+    VEHICLE_LOADS as LOADS, VEHICLE_PRIME_SCALES as PRIME_SCALES, VehicleSpec, folded_comparison,
+    prove_with_jacobians, vehicle,
 };
 use crate::defined::{Functions, Interpreter, coefficient_values};
 use crate::models::Model;
@@ -96,6 +99,8 @@ pub(crate) struct Proved {
     functions: Functions,
     /// For each program input, what it is.
     inputs: Vec<Variable>,
+    /// The cross-flow drag, whose loads the program reads as its applied loads.
+    cross_flow: Option<CrossFlow>,
     /// The number of the generator's state entries (before the fins').
     body: usize,
     operations: Operations,
@@ -110,6 +115,8 @@ enum Variable {
     Absolute(usize),
     /// The propeller law's ε at the surge speed u (the state's first entry).
     Epsilon(PropellerLaw),
+    /// An applied load about O (`F_x` … `M_z`, by its index): the cross-flow drag's.
+    Load(usize),
 }
 
 /// The spec of a table: `kinematics`, the inertia about the table's point with the products
@@ -136,7 +143,7 @@ pub fn spec(table: &VehicleTable, kinematics: Kinematics) -> VehicleSpec {
             Propeller::None
         },
         hydrostatics: true,
-        applied_loads: false,
+        applied_loads: table.cross_flow.is_some(),
     }
 }
 
@@ -253,6 +260,7 @@ impl Proved {
         let proved = Proved {
             functions,
             inputs,
+            cross_flow: table.cross_flow.clone(),
             body,
             operations: program.operations(&program.rhs),
             program: interpreter,
@@ -265,22 +273,36 @@ impl Proved {
         self.body
     }
 
+    /// The cross-flow drag's loads at `state` (zero without it), with their derivatives.
+    fn applied<T: SimdRealField + Copy>(&self, state: &[T]) -> CrossFlowLoads<T> {
+        match &self.cross_flow {
+            Some(hull) => hull.loads(&state[..6]),
+            None => CrossFlowLoads {
+                loads: [T::zero(); 6],
+                by: [[T::zero(); 6]; 6],
+            },
+        }
+    }
+
     /// The program's variables at `state`: the generator's state, then its inputs.
     fn variables<T: SimdRealField + Copy>(&self, state: &[T]) -> Vec<T> {
+        let loads = self.applied(state).loads;
         let mut variables = state[..self.body].to_vec();
-        variables.extend(self.inputs.iter().map(|input| input.value(state)));
+        variables.extend(self.inputs.iter().map(|input| input.value(state, &loads)));
         variables
     }
 
     /// The rates of the generator's state entries into `rates`, the variables on the stack
-    /// when they fit (the generator's state and up to eight inputs): a call allocates nothing.
+    /// when they fit (the generator's state and up to sixteen inputs): a call allocates
+    /// nothing.
     fn rates_into<T: SimdRealField + Copy>(&self, state: &[T], rates: &mut [T]) {
-        let mut variables = [T::zero(); BODY + 8];
+        let mut variables = [T::zero(); BODY + 16];
         let count = self.body + self.inputs.len();
         if count <= variables.len() {
+            let loads = self.applied(state).loads;
             variables[..self.body].copy_from_slice(&state[..self.body]);
             for (variable, input) in variables[self.body..].iter_mut().zip(&self.inputs) {
-                *variable = input.value(state);
+                *variable = input.value(state, &loads);
             }
             (self.program).evaluate_into(&self.functions.rhs, &variables[..count], rates);
         } else {
@@ -317,6 +339,7 @@ impl Proved {
         state: &[T],
         mut set: impl FnMut(usize, usize, T),
     ) {
+        let applied = self.applied(state);
         let variables = self.variables(state);
         let entries = self
             .program
@@ -332,20 +355,25 @@ impl Proved {
                 Variable::Fin(i) => set(row, i, value),
                 Variable::Absolute(i) => set(row, i, value * state[i].simd_signum()),
                 Variable::Epsilon(law) => set(row, 0, value * law.epsilon(state[0]).by_u),
+                Variable::Load(load) => {
+                    for (velocity, by) in applied.by[load].iter().enumerate() {
+                        set(row, velocity, value * *by);
+                    }
+                }
             }
         }
     }
 
     /// Where [`Self::state_jacobian`] can be non-zero, as (row, column).
     pub(crate) fn state_pattern(&self) -> Vec<(usize, usize)> {
-        let through_inputs =
-            self.functions
-                .input_pattern
-                .iter()
-                .map(|&(row, column)| match self.inputs[column] {
-                    Variable::Fin(i) | Variable::Absolute(i) => (row, i),
-                    Variable::Epsilon(_) => (row, 0),
-                });
+        let through_inputs = (self.functions.input_pattern.iter()).flat_map(|&(row, column)| {
+            let columns = match self.inputs[column] {
+                Variable::Fin(i) | Variable::Absolute(i) => i..i + 1,
+                Variable::Epsilon(_) => 0..1,
+                Variable::Load(_) => 0..6,
+            };
+            columns.map(move |i| (row, i))
+        });
         let mut pattern: Vec<(usize, usize)> = (self.functions.state_pattern.iter().copied())
             .chain(through_inputs)
             .collect();
@@ -418,12 +446,13 @@ impl VehicleModel {
 }
 
 impl Variable {
-    /// Its value at `state`.
-    fn value<T: SimdRealField + Copy>(self, state: &[T]) -> T {
+    /// Its value at `state`, where the applied loads are `loads`.
+    fn value<T: SimdRealField + Copy>(self, state: &[T], loads: &[T; 6]) -> T {
         match self {
             Variable::Fin(i) => state[i],
             Variable::Absolute(i) => state[i].simd_abs(),
             Variable::Epsilon(law) => law.epsilon(state[0]).value,
+            Variable::Load(load) => loads[load],
         }
     }
 }
@@ -440,6 +469,7 @@ fn input_variable(
     let found = match name.strip_prefix("abs_") {
         Some(x) => index(x).filter(|&i| i < 6).map(Variable::Absolute),
         None if name == EPSILON => law.filter(|_| state[0] == "u").map(Variable::Epsilon),
+        None if LOADS.contains(&name) => LOADS.iter().position(|l| *l == name).map(Variable::Load),
         None => index(name).filter(|&i| i >= body).map(Variable::Fin),
     };
     found.ok_or_else(|| {

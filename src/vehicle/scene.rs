@@ -26,6 +26,14 @@
 //!
 //! [hydrodynamics.added_mass]         # Xudot, Yvdot, Yrdot, …
 //! [hydrodynamics.coefficients]       # the terms to model, and only those; controls dr, ds
+//! # [hydrodynamics.cross_flow]       # optional: the cross-flow drag of the hull in strips
+//! # stations = [-0.6, 0.0, 0.6]      # x_i from O, m
+//! # lengths = [0.6, 0.6, 0.6]        # Δx_i, m
+//! # heights = [0.19, 0.19, 0.19]     # H_i, m (the sway flow's)
+//! # breadths = [0.19, 0.19, 0.19]    # B_i, m (the heave flow's)
+//! # sway_coefficient = 0.5           # C_dy
+//! # heave_coefficient = 0.6          # C_dz
+//! # density = 1025.0                 # ρ, kg/m³ (the prime system's by default)
 //!
 //! [propeller]                        # constant thrust and torque at the setting
 //! thrust = 3.86                      # X_prop, N
@@ -79,6 +87,7 @@
 //! model and its proved Jacobian). Every key is checked and an error names it by its path.
 
 use super::autopilot::{Autopilots, DepthGains, HeadingGains, Setpoints};
+use super::cross_flow::CrossFlow;
 use super::fins::{FinSteps, Fins, Rudder};
 use super::manoeuvre::VehicleManoeuvre;
 use super::model::VehicleModel;
@@ -217,6 +226,28 @@ pub struct HydrodynamicsTable {
     pub added_mass: BTreeMap<String, f64>,
     /// The force terms by name.
     pub coefficients: BTreeMap<String, f64>,
+    /// The cross-flow drag in strips.
+    pub cross_flow: Option<CrossFlowTable>,
+}
+
+/// `[hydrodynamics.cross_flow]`: the hull in strips ([`super::cross_flow`]).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CrossFlowTable {
+    /// x_i, m.
+    pub stations: Vec<f64>,
+    /// Δx_i, m.
+    pub lengths: Vec<f64>,
+    /// H_i, m.
+    pub heights: Vec<f64>,
+    /// B_i, m.
+    pub breadths: Vec<f64>,
+    /// C_dy.
+    pub sway_coefficient: f64,
+    /// C_dz.
+    pub heave_coefficient: f64,
+    /// ρ, kg/m³: the prime system's by default.
+    pub density: Option<f64>,
 }
 
 /// `[propeller]`.
@@ -350,6 +381,9 @@ impl Checker<'_> {
             coefficients: hydro.coefficients.clone(),
             propeller,
             prime,
+            cross_flow: (hydro.cross_flow.as_ref())
+                .map(|c| self.cross_flow(c, prime))
+                .transpose()?,
         })
     }
 
@@ -492,6 +526,57 @@ impl Checker<'_> {
             thrust: law.thrust(),
             torque: self.finite("propeller.torque", p.torque.unwrap_or(0.0))?,
             law: Some(law),
+        })
+    }
+
+    /// `[hydrodynamics.cross_flow]`: strips of one length each (the stations' count), finite
+    /// stations, positive lengths, heights, breadths, coefficients and ρ (the prime system's
+    /// unless given).
+    fn cross_flow(
+        &self,
+        table: &CrossFlowTable,
+        prime: Option<PrimeScales>,
+    ) -> Result<CrossFlow, SceneError> {
+        let key = |k: &str| format!("hydrodynamics.cross_flow.{k}");
+        let count = table.stations.len();
+        if count == 0 {
+            return Err(self.invalid(&key("stations"), "give at least one strip"));
+        }
+        let strips = |k: &str, values: &[f64], positive: bool| -> Result<Vec<f64>, SceneError> {
+            if values.len() != count {
+                return Err(self.invalid(
+                    &key(k),
+                    format!(
+                        "{} entries, one per strip: stations has {count}",
+                        values.len()
+                    ),
+                ));
+            }
+            (values.iter().enumerate())
+                .map(|(i, x)| match positive {
+                    true => self.positive(&format!("{}[{i}]", key(k)), *x),
+                    false => self.finite(&format!("{}[{i}]", key(k)), *x),
+                })
+                .collect()
+        };
+        let density = match (table.density, prime) {
+            (Some(rho), _) => self.positive(&key("density"), rho)?,
+            (None, Some(scales)) => scales.density,
+            (None, None) => {
+                return Err(self.error(
+                    &key("density"),
+                    Problem::Missing("a dimensional table has no ρ of its own".into()),
+                ));
+            }
+        };
+        Ok(CrossFlow {
+            stations: strips("stations", &table.stations, false)?,
+            lengths: strips("lengths", &table.lengths, true)?,
+            heights: strips("heights", &table.heights, true)?,
+            breadths: strips("breadths", &table.breadths, true)?,
+            sway_coefficient: self.positive(&key("sway_coefficient"), table.sway_coefficient)?,
+            heave_coefficient: self.positive(&key("heave_coefficient"), table.heave_coefficient)?,
+            density,
         })
     }
 

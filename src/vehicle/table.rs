@@ -2,6 +2,7 @@
 //! named force terms under a declared convention and in their units (SI or the prime system),
 //! and the propeller at its setting.
 
+use super::cross_flow::CrossFlow;
 use super::propeller::PropellerLaw;
 use super::{AddedMassCoriolis, Convention, InertiaAbout};
 use crate::defined::engine::Symmetry;
@@ -70,6 +71,8 @@ pub struct VehicleTable {
     pub propeller: Option<PropellerSetting>,
     /// The prime system's scales, if the added mass and the terms are given in it.
     pub prime: Option<PrimeScales>,
+    /// The cross-flow drag in strips, if the scene gives it.
+    pub cross_flow: Option<CrossFlow>,
 }
 
 impl VehicleTable {

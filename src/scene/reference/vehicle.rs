@@ -265,6 +265,79 @@ pub(super) static KEYS: &[Key] = &[
         ..Key::BLANK
     },
     Key {
+        path: "hydrodynamics.cross_flow.stations",
+        families: VEHICLE,
+        kind: Kind::Numbers("one per strip"),
+        unit: "m",
+        required: Required::When("with [hydrodynamics.cross_flow]"),
+        description: "x_i, each strip's station along body x from O. The cross-flow drag (eom::vehicle::cross_flow, after npsauv.m's strips): at each strip the local cross flow a = v + x r, b = w − x q gives the force −½ρΔx(C_dy H a² + C_dz B b²)(a, b)/√(a² + b²) in y and z, and the loads about O are these forces and their moments (the pitch moment −Σ x F_z: npsauv.m's reads w + x q there, and the scene follows the moment of its own forces). Not a polynomial: computed beside the proved program, which reads its loads as its applied loads, with its derivatives in the Jacobian.",
+        example: "[-0.6, 0.0, 0.6]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "hydrodynamics.cross_flow.lengths",
+        families: VEHICLE,
+        kind: Kind::Numbers("one per strip"),
+        unit: "m",
+        required: Required::When("with [hydrodynamics.cross_flow]"),
+        description: "Δx_i, each strip's length, positive.",
+        example: "[0.6, 0.6, 0.6]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "hydrodynamics.cross_flow.heights",
+        families: VEHICLE,
+        kind: Kind::Numbers("one per strip"),
+        unit: "m",
+        required: Required::When("with [hydrodynamics.cross_flow]"),
+        description: "H_i, each strip's height, the area the sway flow meets per length, positive.",
+        example: "[0.19, 0.19, 0.19]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "hydrodynamics.cross_flow.breadths",
+        families: VEHICLE,
+        kind: Kind::Numbers("one per strip"),
+        unit: "m",
+        required: Required::When("with [hydrodynamics.cross_flow]"),
+        description: "B_i, each strip's breadth, the area the heave flow meets per length, positive.",
+        example: "[0.19, 0.19, 0.19]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "hydrodynamics.cross_flow.sway_coefficient",
+        families: VEHICLE,
+        required: Required::When("with [hydrodynamics.cross_flow]"),
+        description: "C_dy, the drag coefficient of the sway flow, positive.",
+        example: "0.5",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "hydrodynamics.cross_flow.heave_coefficient",
+        families: VEHICLE,
+        required: Required::When("with [hydrodynamics.cross_flow]"),
+        description: "C_dz, the drag coefficient of the heave flow, positive.",
+        example: "0.6",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "hydrodynamics.cross_flow.density",
+        families: VEHICLE,
+        unit: "kg/m³",
+        default: "hydrodynamics.density",
+        required: Required::When("in a dimensional table"),
+        description: "ρ of the drag: the prime system's unless given.",
+        example: "1025.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
         path: "propeller.law",
         families: VEHICLE,
         kind: Kind::Text(Choices::These(&["constant", "healey_lienard"])),
