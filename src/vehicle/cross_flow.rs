@@ -61,6 +61,26 @@ pub struct CrossFlowLoads<T> {
 }
 
 impl CrossFlow {
+    /// The loads at the body velocities `nu` = (u, v, w, p, q, r), without their derivatives:
+    /// what the rates read, the same numbers as [`Self::loads`]'s.
+    pub fn forces<T: SimdRealField + Copy>(&self, nu: &[T]) -> [T; 6] {
+        let value = |x: f64| T::from_subset(&x);
+        let (v, w, q, r) = (nu[1], nu[2], nu[4], nu[5]);
+        let mut loads = [T::zero(); 6];
+        for i in 0..self.stations.len() {
+            let x = value(self.stations[i]);
+            let half_rho_dx = value(0.5 * self.density * self.lengths[i]);
+            let cy = value(self.sway_coefficient * self.heights[i]);
+            let cz = value(self.heave_coefficient * self.breadths[i]);
+            let [fa, fb] = Strip::force(v + x * r, w - x * q, cy, cz);
+            loads[1] -= half_rho_dx * fa;
+            loads[2] -= half_rho_dx * fb;
+            loads[4] += half_rho_dx * x * fb;
+            loads[5] -= half_rho_dx * x * fa;
+        }
+        loads
+    }
+
     /// The loads at the body velocities `nu` = (u, v, w, p, q, r), with their derivatives.
     pub fn loads<T: SimdRealField + Copy>(&self, nu: &[T]) -> CrossFlowLoads<T> {
         let value = |x: f64| T::from_subset(&x);
@@ -104,6 +124,16 @@ struct Strip<T> {
 }
 
 impl<T: SimdRealField + Copy> Strip<T> {
+    /// f alone, as [`Self::at`] computes it.
+    fn force(a: T, b: T, cy: T, cz: T) -> [T; 2] {
+        let squared = a * a + b * b;
+        let flowing = squared.simd_gt(T::zero());
+        let speed = squared.simd_sqrt().select(flowing, T::one());
+        let drag = cy * a * a + cz * b * b;
+        let zeroed = |x: T| x.select(flowing, T::zero());
+        [zeroed(drag * a / speed), zeroed(drag * b / speed)]
+    }
+
     fn at(a: T, b: T, cy: T, cz: T) -> Self {
         let two = T::from_subset(&2.0);
         let squared = a * a + b * b;
@@ -210,6 +240,10 @@ mod tests {
                 "{nu:?}: M = {:.6} N m, the source's arm {:.6} N m",
                 ours[4], own[4]
             );
+        }
+        // What the rates read is the same numbers.
+        for nu in STATES {
+            assert_eq!(hull.forces(&nu), hull.loads(&nu).loads);
         }
         // Pure sway: Y and N only; pure heave on a symmetric hull: Z only.
         let sway = hull.loads(&[1.0, 0.2, 0.0, 0.0, 0.0, 0.0]).loads;

@@ -284,9 +284,17 @@ impl Proved {
         }
     }
 
+    /// The cross-flow drag's loads at `state` (zero without it).
+    fn applied_loads<T: SimdRealField + Copy>(&self, state: &[T]) -> [T; 6] {
+        match &self.cross_flow {
+            Some(hull) => hull.forces(&state[..6]),
+            None => [T::zero(); 6],
+        }
+    }
+
     /// The program's variables at `state`: the generator's state, then its inputs.
     fn variables<T: SimdRealField + Copy>(&self, state: &[T]) -> Vec<T> {
-        let loads = self.applied(state).loads;
+        let loads = self.applied_loads(state);
         let mut variables = state[..self.body].to_vec();
         variables.extend(self.inputs.iter().map(|input| input.value(state, &loads)));
         variables
@@ -299,7 +307,7 @@ impl Proved {
         let mut variables = [T::zero(); BODY + 16];
         let count = self.body + self.inputs.len();
         if count <= variables.len() {
-            let loads = self.applied(state).loads;
+            let loads = self.applied_loads(state);
             variables[..self.body].copy_from_slice(&state[..self.body]);
             for (variable, input) in variables[self.body..].iter_mut().zip(&self.inputs) {
                 *variable = input.value(state, &loads);
