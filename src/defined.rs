@@ -43,6 +43,7 @@ mod compiled {
 /// vocabularies the library re-exports from it (`ship::{Force, Term, Units, YawInertia}`,
 /// `vehicle::{Convention, …}`).
 pub(crate) mod engine {
+    pub use eom_codegen::derivation::vehicle::LOADS as VEHICLE_LOADS;
     pub use eom_codegen::emit::program::{Function, Node, Program};
     pub use eom_codegen::emit::{EmitError, F64Formula, Operations, prove_with_jacobians};
     pub use eom_codegen::model::ship::{

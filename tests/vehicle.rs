@@ -80,8 +80,9 @@ fn the_remus_scene_holds_the_shared_data_bit_for_bit() {
     );
     for (i, axis) in ["Ixx", "Iyy", "Izz"].iter().enumerate() {
         let value = number(&body["inertia_about_G_kg_m2"][axis]);
-        assert_eq!(table.inertia[i].to_bits(), value.to_bits(), "{axis}");
+        assert_eq!(table.inertia[i][i].to_bits(), value.to_bits(), "{axis}");
     }
+    assert_eq!(table.inertia_about, eom::vehicle::InertiaAbout::Gravity);
     for i in 0..3 {
         let g = number(&body["centre_of_gravity_m"][i]);
         let b = number(&body["centre_of_buoyancy_m"][i]);
@@ -298,11 +299,54 @@ fn bad_tables_are_refused_naming_the_key() {
             "hydrodynamics.convention",
         ),
         ("inertia = [0.177", "inertia = [-0.177", "body.inertia[0]"),
+        ("inertia = [0.177", "inertia = [nan", "body.inertia[0]"),
+        (
+            "inertia = [0.177, 3.45, 3.45]",
+            "inertia = [0.177, 3.45, 3.7]",
+            "body.inertia",
+        ),
+        (
+            "inertia = [0.177, 3.45, 3.45]",
+            "inertia = [0.177, 3.45, 3.45]\nproducts_of_inertia = [0.0, 0.0]",
+            "body.products_of_inertia",
+        ),
+        (
+            "inertia = [0.177, 3.45, 3.45]",
+            "inertia = [0.177, 3.45, 3.45]\nproducts_of_inertia = [0.0, nan, 0.0]",
+            "body.products_of_inertia[1]",
+        ),
+        (
+            "inertia = [0.177, 3.45, 3.45]",
+            "inertia = [0.177, 3.45, 3.45]\nproducts_of_inertia = [0.8, 0.0, 0.0]",
+            "body.inertia",
+        ),
+        (
+            "inertia = [0.177, 3.45, 3.45]",
+            "inertia = [0.177, 3.45, 3.45]\ninertia_about = \"B\"",
+            "body.inertia_about",
+        ),
+        (
+            "inertia = [0.177, 3.45, 3.45]",
+            "inertia = [0.005, 3.45, 3.45]\ninertia_about = \"origin\"",
+            "body.inertia",
+        ),
         (
             "kind = \"fin_steps\"",
             "kind = \"crash_back\"",
             "manoeuvre[0].kind",
         ),
+        (
+            "thrust = 3.86                         # X_prop, N\n",
+            "law = \"healey_lienard\"\nrpm = 1500.0\nadvance = 0.001\ndrag_coefficient = 0.1\n\
+             thrust_coefficient = 0.01\n",
+            "propeller.law",
+        ),
+        (
+            "thrust = 3.86",
+            "thrust = 3.86\nrpm = 1500.0",
+            "propeller.rpm",
+        ),
+        ("torque = -0.543", "", "propeller.torque"),
     ];
     for (from, to, key) in cases {
         let error = parse(&edited(from, to))
@@ -316,6 +360,58 @@ fn bad_tables_are_refused_naming_the_key() {
     assert!(not_definite.contains("not positive definite") && not_definite.contains("Xudot"));
     let ambiguous = parse(&edited("Yvv = -1310.0", "Yvvr = -1310.0")).unwrap_err();
     assert!(ambiguous.contains("ambiguous"), "{ambiguous}");
+    let inertia = |to: &str| parse(&edited("inertia = [0.177, 3.45, 3.45]", to)).unwrap_err();
+    let triangle = inertia("inertia = [0.177, 3.45, 3.7]");
+    assert!(triangle.contains("triangle inequality"), "{triangle}");
+    let indefinite =
+        inertia("inertia = [0.177, 3.45, 3.45]\nproducts_of_inertia = [0.8, 0.0, 0.0]");
+    assert!(indefinite.contains("not positive definite"), "{indefinite}");
+    let about_g = inertia("inertia = [0.005, 3.45, 3.45]\ninertia_about = \"origin\"");
+    assert!(about_g.contains("about G"), "{about_g}");
+    let dimensional = parse(&edited(
+        "thrust = 3.86                         # X_prop, N\n",
+        "law = \"healey_lienard\"\nrpm = 1500.0\nadvance = 0.001\ndrag_coefficient = 0.1\n\
+         thrust_coefficient = 0.01\n",
+    ))
+    .unwrap_err();
+    assert!(dimensional.contains("prime system"), "{dimensional}");
+    let shape = inertia("inertia = [0.177, 3.45, 3.45]\nproducts_of_inertia = [0.0, 0.0]");
+    assert!(shape.contains("three products"), "{shape}");
+}
+
+/// REMUS with its products of inertia written, zero, and the point named (G): the products
+/// are pruned, so the model is the same program, operation for operation and bit for bit.
+#[test]
+fn a_tensor_with_zero_products_builds_the_principal_model() {
+    let scene = remus();
+    let tensor = parse(&edited(
+        "inertia = [0.177, 3.45, 3.45]",
+        "inertia = [0.177, 3.45, 3.45]\nproducts_of_inertia = [0.0, 0.0, 0.0]\ninertia_about = \"G\"",
+    ))
+    .unwrap();
+    assert_eq!(
+        tensor.table.inertia,
+        [[0.177, 0.0, 0.0], [0.0, 3.45, 0.0], [0.0, 0.0, 3.45]]
+    );
+    assert_eq!(tensor.model.operations(), scene.model.operations());
+    let start = scene.start().unwrap();
+    assert_eq!(tensor.start().unwrap(), start);
+    let mut state = start;
+    state[1..6].copy_from_slice(&[0.1, -0.05, 0.2, -0.3, 0.4]);
+    state[13] = 0.1;
+    let input = [0.01, -0.02];
+    let a = Model::<f64, 15, 2>::rhs(&scene.model, &state, &input);
+    let b = Model::<f64, 15, 2>::rhs(&tensor.model, &state, &input);
+    assert_eq!(a, b);
+    // REMUS's manoeuvres run the same.
+    let m = &scene.manoeuvres[0];
+    let (x, y) = (
+        run_with(&scene, &scene.model, m, start),
+        run_with(&tensor, &tensor.model, m, start),
+    );
+    for (x, y) in x.ends.iter().zip(&y.ends) {
+        assert_eq!(x.state, y.state);
+    }
 }
 
 /// The quaternion of roll φ, pitch θ, heading ψ (4.57's rotation Rz(ψ)Ry(θ)Rx(φ)).

@@ -696,20 +696,24 @@ fn nps_table(table: &str) -> BTreeMap<String, f64> {
     values
 }
 
+/// The NPS AUV II as its scene makes it: its tensor about O with all three products, the
+/// propeller law's ε as a control `n` beside the fins, the cross-flow drag as applied loads.
 fn nps_spec(kinematics: Kinematics) -> VehicleSpec {
+    let mut controls = controls();
+    controls.push("n".to_owned());
     VehicleSpec {
         units: Units::Prime,
         kinematics,
-        inertia: InertiaAbout::Gravity,
-        symmetry: Symmetry::Principal,
+        inertia: InertiaAbout::Origin,
+        symmetry: Symmetry::Full,
         convention: Convention::Fossen,
-        controls: controls(),
+        controls,
         added_mass: nps_table("added_mass").into_keys().collect(),
         added_mass_coriolis: AddedMassCoriolis::Folded,
         terms: nps_table("coefficients").into_keys().collect(),
         propeller: Propeller::Constant,
         hydrostatics: true,
-        applied_loads: false,
+        applied_loads: true,
     }
 }
 
@@ -719,6 +723,9 @@ fn small_spec(units: Units, terms: &[&str], added_mass: &[&str]) -> VehicleSpec 
         units,
         terms: terms.iter().map(|t| t.to_string()).collect(),
         added_mass: added_mass.iter().map(|t| t.to_string()).collect(),
+        inertia: InertiaAbout::Gravity,
+        symmetry: Symmetry::Principal,
+        controls: controls(),
         propeller: Propeller::None,
         hydrostatics: false,
         applied_loads: false,
@@ -850,9 +857,13 @@ fn the_nps_auv2_builds_and_proves_with_its_jacobians_in_the_prime_system() {
         assert!(source.contains(&field), "{field}");
     }
     assert!(source.contains("pub rho: f64") && source.contains("pub l: f64"));
-    // No signed square in the table: the fins are the only inputs.
-    assert_eq!(system.inputs, ["dr", "ds"]);
-    assert_eq!(spec.terms.len(), 63);
+    // No signed square in the table: the fins, ε and the cross-flow drag's loads are the
+    // inputs.
+    assert_eq!(
+        system.inputs,
+        ["dr", "ds", "n", "F_x", "F_y", "F_z", "M_x", "M_y", "M_z"]
+    );
+    assert_eq!(spec.terms.len(), 73);
     println!(
         "NPS AUV II (prime): {} stages, rhs {:?}, proved with its Jacobians in {:?}",
         system.stages.len(),

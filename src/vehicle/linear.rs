@@ -13,8 +13,9 @@
 //! The fins' angles δ_r, δ_s are the plant's inputs, held where they are put, as Nomoto's
 //! models hold a ship's rudder (the steering gear's lag and limits left out); a `[linear]`
 //! table may call them `rudder` and `stern_planes`. The propeller is the table's constant
-//! thrust and torque. At a cruise the position x, y, z and the heading ψ are set aside (the
-//! loads read none of them), and A is on (u, v, w, p, q, r, φ, θ).
+//! thrust and torque (a law's ε and a cross-flow drag are computed beside the twin as beside
+//! the model, their derivatives in its Jacobian). At a cruise the position x, y, z and the
+//! heading ψ are set aside (the loads read none of them), and A is on (u, v, w, p, q, r, φ, θ).
 
 use super::model::{EULER_STATE, Proved};
 use super::{VehicleError, VehicleScene, VehicleTable};

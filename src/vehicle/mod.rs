@@ -5,6 +5,8 @@
 //! |---|---|
 //! | the table as the scene gives it: body, hydrostatics, added mass, named terms, propeller | [`table`] |
 //! | the six equations about O with exactly the table's terms, derived and proved by `eom-codegen`, evaluated | [`model`] |
+//! | the propeller's law in its rate, and its ε computed beside the proved program | [`propeller`] |
+//! | the cross-flow drag in strips, a force beside the proved program, read as its applied loads | [`cross_flow`] |
 //! | the fins (rudder, stern planes): saturation, lag, rate limit; their step commands | [`fins`] |
 //! | the autopilots: heading (PID on ψ), depth (depth to pitch to the planes), sampled | [`autopilot`] |
 //! | linearised about a cruise: A, B, the modes (the Euler-angle twin of the table) | [`linear`] |
@@ -20,21 +22,28 @@
 //! that proved program as a [`Model`](crate::Model), so it runs on every integrator.
 
 pub mod autopilot;
+pub mod cross_flow;
 pub mod fins;
 pub mod linear;
 pub mod manoeuvre;
 pub mod model;
+pub mod propeller;
 pub mod scene;
 pub mod summary;
 pub mod table;
 pub mod trial;
 
 /// The table's vocabulary, from the generator that builds the model: how names are read,
-/// whether Kirchhoff's terms are folded, a folded coefficient against its added mass.
-pub use crate::defined::engine::{AddedMassCoriolis, Convention, FoldedComparison, format_folded};
+/// whether Kirchhoff's terms are folded, a folded coefficient against its added mass, the
+/// point the inertia tensor is about.
+pub use crate::defined::engine::{
+    AddedMassCoriolis, Convention, FoldedComparison, InertiaAbout, format_folded,
+};
+pub use cross_flow::CrossFlow;
 pub use fins::{FinSteps, Fins};
 pub use manoeuvre::{VehicleManoeuvre, VehicleRun};
 pub use model::VehicleModel;
+pub use propeller::PropellerLaw;
 pub use scene::VehicleScene;
 pub use table::{PrimeScales, PropellerSetting, VehicleTable};
 

@@ -9,13 +9,20 @@
 //! |x| of each velocity whose signed square x|x| the table holds as an input `abs_x`: this
 //! model computes those from the state, and its ∂f/∂x adds the chain rule
 //! ∂f/∂abs_x · sign(x) to the column of x (and the program's ∂f/∂δ to the fins' columns).
+//! Where the scene names the propeller's law, the program reads its ε as a control `n`
+//! too, computed from u beside it ([`super::propeller`]), and ∂f/∂x adds ∂f/∂ε · ∂ε/∂u to
+//! the column of u. Where the scene gives a cross-flow drag, the program reads its loads as
+//! the generator's applied loads `F_x` … `M_z`, computed beside it ([`super::cross_flow`]),
+//! and ∂f/∂x adds ∂f/∂F · ∂F/∂ν to the velocities' columns.
 
 use super::VehicleError;
-use super::table::{CONTROLS, VehicleTable};
+use super::cross_flow::{CrossFlow, CrossFlowLoads};
+use super::propeller::PropellerLaw;
+use super::table::{CONTROLS, EPSILON, VehicleTable};
 use crate::defined::engine::{
-    FoldedComparison, InertiaAbout, Kinematics, Operations, Propeller, Symmetry, Units,
-    VEHICLE_PRIME_SCALES as PRIME_SCALES, VehicleSpec, folded_comparison, prove_with_jacobians,
-    vehicle,
+    FoldedComparison, InertiaAbout, Kinematics, Operations, Propeller, Units,
+    VEHICLE_LOADS as LOADS, VEHICLE_PRIME_SCALES as PRIME_SCALES, VehicleSpec, folded_comparison,
+    prove_with_jacobians, vehicle,
 };
 use crate::defined::{Functions, Interpreter, coefficient_values};
 use crate::models::Model;
@@ -92,6 +99,8 @@ pub(crate) struct Proved {
     functions: Functions,
     /// For each program input, what it is.
     inputs: Vec<Variable>,
+    /// The cross-flow drag, whose loads the program reads as its applied loads.
+    cross_flow: Option<CrossFlow>,
     /// The number of the generator's state entries (before the fins').
     body: usize,
     operations: Operations,
@@ -104,10 +113,15 @@ enum Variable {
     Fin(usize),
     /// |x| of the state entry.
     Absolute(usize),
+    /// The propeller law's ε at the surge speed u (the state's first entry).
+    Epsilon(PropellerLaw),
+    /// An applied load about O (`F_x` … `M_z`, by its index): the cross-flow drag's.
+    Load(usize),
 }
 
-/// The spec of a table: `kinematics`, inertia about G in principal axes, the fins as
-/// controls, the propeller constant, the table's units.
+/// The spec of a table: `kinematics`, the inertia about the table's point with the products
+/// it gives (the zero ones pruned), the fins as controls, the propeller constant, the table's
+/// units.
 pub fn spec(table: &VehicleTable, kinematics: Kinematics) -> VehicleSpec {
     VehicleSpec {
         units: if table.prime.is_some() {
@@ -116,10 +130,10 @@ pub fn spec(table: &VehicleTable, kinematics: Kinematics) -> VehicleSpec {
             Units::Dimensional
         },
         kinematics,
-        inertia: InertiaAbout::Gravity,
-        symmetry: Symmetry::Principal,
+        inertia: table.inertia_about,
+        symmetry: table.symmetry(),
         convention: table.convention,
-        controls: CONTROLS.map(String::from).to_vec(),
+        controls: controls(table),
         added_mass: table.added_mass.keys().cloned().collect(),
         added_mass_coriolis: table.added_mass_coriolis,
         terms: table.coefficients.keys().cloned().collect(),
@@ -129,8 +143,18 @@ pub fn spec(table: &VehicleTable, kinematics: Kinematics) -> VehicleSpec {
             Propeller::None
         },
         hydrostatics: true,
-        applied_loads: false,
+        applied_loads: table.cross_flow.is_some(),
     }
+}
+
+/// The controls the table's terms may hold: the fins, and ε where the scene names the
+/// propeller's law.
+fn controls(table: &VehicleTable) -> Vec<String> {
+    let mut controls = CONTROLS.map(String::from).to_vec();
+    if table.propeller_law().is_some() {
+        controls.push(EPSILON.to_owned());
+    }
+    controls
 }
 
 /// Every parameter of `spec`'s proved program by its symbol, as the model fills them from
@@ -154,9 +178,7 @@ fn table_values(
 ) -> Result<BTreeMap<String, f64>, VehicleError> {
     let mut values = BTreeMap::new();
     values.insert("M".to_owned(), table.mass);
-    for (axis, value) in ["Ixx_G", "Iyy_G", "Izz_G"].into_iter().zip(table.inertia) {
-        values.insert(axis.to_owned(), value);
-    }
+    values.extend(inertia_values(spec, table));
     for (i, axis) in ["x", "y", "z"].into_iter().enumerate() {
         values.insert(format!("{axis}_G"), table.centre_of_gravity[i]);
         values.insert(format!("{axis}_B"), table.centre_of_buoyancy[i]);
@@ -182,6 +204,27 @@ fn table_values(
         values.insert(term.symbol(), value);
     }
     Ok(values)
+}
+
+/// The tensor's entries by the spec's symbols (`Ixx_G` … about G, `Ixx` … about O), the
+/// products its symmetry prunes left out.
+fn inertia_values(spec: &VehicleSpec, table: &VehicleTable) -> Vec<(String, f64)> {
+    let suffix = match spec.inertia {
+        InertiaAbout::Gravity => "_G",
+        InertiaAbout::Origin => "",
+    };
+    let entries = [
+        ("Ixx", 0, 0),
+        ("Iyy", 1, 1),
+        ("Izz", 2, 2),
+        ("Ixy", 0, 1),
+        ("Iyz", 1, 2),
+        ("Ixz", 0, 2),
+    ];
+    (entries.into_iter())
+        .filter(|(entry, _, _)| !spec.symmetry.pruned().contains(entry))
+        .map(|(entry, r, c)| (format!("{entry}{suffix}"), table.inertia[r][c]))
+        .collect()
 }
 
 impl Proved {
@@ -214,8 +257,9 @@ impl Proved {
         let state: Vec<&str> = (system.state.iter().map(|s| s.as_ref()))
             .chain(["dr", "ds"])
             .collect();
+        let law = table.propeller_law();
         let inputs = (system.inputs.iter())
-            .map(|name| input_variable(name, &state, body))
+            .map(|name| input_variable(name, &state, body, law))
             .collect::<Result<Vec<_>, _>>()?;
         // The variables in `variables`'s order: the generator's state, then its inputs.
         let position =
@@ -229,6 +273,7 @@ impl Proved {
         let proved = Proved {
             functions,
             inputs,
+            cross_flow: table.cross_flow.clone(),
             body,
             operations: program.operations(&program.rhs),
             program: interpreter,
@@ -241,22 +286,44 @@ impl Proved {
         self.body
     }
 
+    /// The cross-flow drag's loads at `state` (zero without it), with their derivatives.
+    fn applied<T: SimdRealField + Copy>(&self, state: &[T]) -> CrossFlowLoads<T> {
+        match &self.cross_flow {
+            Some(hull) => hull.loads(&state[..6]),
+            None => CrossFlowLoads {
+                loads: [T::zero(); 6],
+                by: [[T::zero(); 6]; 6],
+            },
+        }
+    }
+
+    /// The cross-flow drag's loads at `state` (zero without it).
+    fn applied_loads<T: SimdRealField + Copy>(&self, state: &[T]) -> [T; 6] {
+        match &self.cross_flow {
+            Some(hull) => hull.forces(&state[..6]),
+            None => [T::zero(); 6],
+        }
+    }
+
     /// The program's variables at `state`: the generator's state, then its inputs.
     fn variables<T: SimdRealField + Copy>(&self, state: &[T]) -> Vec<T> {
+        let loads = self.applied_loads(state);
         let mut variables = state[..self.body].to_vec();
-        variables.extend(self.inputs.iter().map(|input| input.value(state)));
+        variables.extend(self.inputs.iter().map(|input| input.value(state, &loads)));
         variables
     }
 
     /// The rates of the generator's state entries into `rates`, the variables on the stack
-    /// when they fit (the generator's state and up to eight inputs): a call allocates nothing.
+    /// when they fit (the generator's state and up to sixteen inputs): a call allocates
+    /// nothing.
     fn rates_into<T: SimdRealField + Copy>(&self, state: &[T], rates: &mut [T]) {
-        let mut variables = [T::zero(); BODY + 8];
+        let mut variables = [T::zero(); BODY + 16];
         let count = self.body + self.inputs.len();
         if count <= variables.len() {
+            let loads = self.applied_loads(state);
             variables[..self.body].copy_from_slice(&state[..self.body]);
             for (variable, input) in variables[self.body..].iter_mut().zip(&self.inputs) {
-                *variable = input.value(state);
+                *variable = input.value(state, &loads);
             }
             (self.program).evaluate_into(&self.functions.rhs, &variables[..count], rates);
         } else {
@@ -293,6 +360,7 @@ impl Proved {
         state: &[T],
         mut set: impl FnMut(usize, usize, T),
     ) {
+        let applied = self.applied(state);
         let variables = self.variables(state);
         let entries = self
             .program
@@ -307,19 +375,26 @@ impl Proved {
             match self.inputs[column] {
                 Variable::Fin(i) => set(row, i, value),
                 Variable::Absolute(i) => set(row, i, value * state[i].simd_signum()),
+                Variable::Epsilon(law) => set(row, 0, value * law.epsilon(state[0]).by_u),
+                Variable::Load(load) => {
+                    for (velocity, by) in applied.by[load].iter().enumerate() {
+                        set(row, velocity, value * *by);
+                    }
+                }
             }
         }
     }
 
     /// Where [`Self::state_jacobian`] can be non-zero, as (row, column).
     pub(crate) fn state_pattern(&self) -> Vec<(usize, usize)> {
-        let through_inputs =
-            self.functions
-                .input_pattern
-                .iter()
-                .map(|&(row, column)| match self.inputs[column] {
-                    Variable::Fin(i) | Variable::Absolute(i) => (row, i),
-                });
+        let through_inputs = (self.functions.input_pattern.iter()).flat_map(|&(row, column)| {
+            let columns = match self.inputs[column] {
+                Variable::Fin(i) | Variable::Absolute(i) => i..i + 1,
+                Variable::Epsilon(_) => 0..1,
+                Variable::Load(_) => 0..6,
+            };
+            columns.map(move |i| (row, i))
+        });
         let mut pattern: Vec<(usize, usize)> = (self.functions.state_pattern.iter().copied())
             .chain(through_inputs)
             .collect();
@@ -392,21 +467,30 @@ impl VehicleModel {
 }
 
 impl Variable {
-    /// Its value at `state`.
-    fn value<T: SimdRealField + Copy>(self, state: &[T]) -> T {
+    /// Its value at `state`, where the applied loads are `loads`.
+    fn value<T: SimdRealField + Copy>(self, state: &[T], loads: &[T; 6]) -> T {
         match self {
             Variable::Fin(i) => state[i],
             Variable::Absolute(i) => state[i].simd_abs(),
+            Variable::Epsilon(law) => law.epsilon(state[0]).value,
+            Variable::Load(load) => loads[load],
         }
     }
 }
 
 /// What the program's input `name` is set from, in a state named `state` whose first `body`
-/// entries are the generator's.
-fn input_variable(name: &str, state: &[&str], body: usize) -> Result<Variable, VehicleError> {
+/// entries are the generator's (u first), with the propeller's `law` if the scene names one.
+fn input_variable(
+    name: &str,
+    state: &[&str],
+    body: usize,
+    law: Option<PropellerLaw>,
+) -> Result<Variable, VehicleError> {
     let index = |x: &str| state.iter().position(|s| *s == x);
     let found = match name.strip_prefix("abs_") {
         Some(x) => index(x).filter(|&i| i < 6).map(Variable::Absolute),
+        None if name == EPSILON => law.filter(|_| state[0] == "u").map(Variable::Epsilon),
+        None if LOADS.contains(&name) => LOADS.iter().position(|l| *l == name).map(Variable::Load),
         None => index(name).filter(|&i| i >= body).map(Variable::Fin),
     };
     found.ok_or_else(|| {

@@ -13,7 +13,9 @@
 //! buoyancy = 299.0                   # B, N
 //! centre_of_gravity = [0, 0, 0.0196] # r_G from O, m
 //! centre_of_buoyancy = [0, 0, 0]     # r_B from O, m
-//! inertia = [0.177, 3.45, 3.45]      # I_xx, I_yy, I_zz about G, principal, kg m²
+//! inertia = [0.177, 3.45, 3.45]      # I_xx, I_yy, I_zz, kg m²
+//! # products_of_inertia = [0, 0, 0]  # I_xy, I_yz, I_xz (4.14: −∫xy dm); zero by default
+//! # inertia_about = "origin"         # "G" (the default) or the table's origin O
 //!
 //! [hydrodynamics]
 //! convention = "prestero"            # or "fossen": how the names are read
@@ -24,10 +26,23 @@
 //!
 //! [hydrodynamics.added_mass]         # Xudot, Yvdot, Yrdot, …
 //! [hydrodynamics.coefficients]       # the terms to model, and only those; controls dr, ds
+//! # [hydrodynamics.cross_flow]       # optional: the cross-flow drag of the hull in strips
+//! # stations = [-0.6, 0.0, 0.6]      # x_i from O, m
+//! # lengths = [0.6, 0.6, 0.6]        # Δx_i, m
+//! # heights = [0.19, 0.19, 0.19]     # H_i, m (the sway flow's)
+//! # breadths = [0.19, 0.19, 0.19]    # B_i, m (the heave flow's)
+//! # sway_coefficient = 0.5           # C_dy
+//! # heave_coefficient = 0.6          # C_dz
+//! # density = 1025.0                 # ρ, kg/m³ (the prime system's by default)
 //!
 //! [propeller]                        # constant thrust and torque at the setting
 //! thrust = 3.86                      # X_prop, N
 //! torque = -0.543                    # K_prop, N m
+//! # law = "healey_lienard"           # or the NPS AUV II's law in its rate (prime tables):
+//! # rpm = 1300.0                     #   n, and prop = advance n/u, thrust ½ρL²C_d0(a n)²,
+//! # advance = 0.012                  #   ε of C_t = c L² prop|prop|/2 for the terms in `n`
+//! # drag_coefficient = 0.00385       #   C_d0
+//! # thrust_coefficient = 0.008       #   c
 //!
 //! [rudder]                           # and [stern_planes]: every key optional
 //! max_deg = 13.6
@@ -72,17 +87,21 @@
 //! model and its proved Jacobian). Every key is checked and an error names it by its path.
 
 use super::autopilot::{Autopilots, DepthGains, HeadingGains, Setpoints};
+use super::cross_flow::CrossFlow;
 use super::fins::{FinSteps, Fins, Rudder};
 use super::manoeuvre::VehicleManoeuvre;
 use super::model::VehicleModel;
+use super::propeller::PropellerLaw;
 use super::table::{PrimeScales, PropellerSetting, VehicleTable};
 use super::trial::{Plane, Trial};
-use super::{AddedMassCoriolis, Convention, VehicleError};
+use super::{AddedMassCoriolis, Convention, InertiaAbout, VehicleError};
+use crate::InertiaTensor;
 use crate::integrate::Stepper;
 use crate::models::Model;
 use crate::scene::check::Checker;
 use crate::scene::{Problem, SceneError};
 use crate::ship::scene::{IntegratorTable, OutputTable, RudderTable};
+use nalgebra::Matrix3;
 use serde::Deserialize;
 use std::collections::BTreeMap;
 
@@ -181,8 +200,12 @@ pub struct BodyTable {
     pub centre_of_gravity: [f64; 3],
     /// r_B from O, m.
     pub centre_of_buoyancy: [f64; 3],
-    /// I_xx, I_yy, I_zz about G, kg m².
+    /// I_xx, I_yy, I_zz, kg m².
     pub inertia: [f64; 3],
+    /// I_xy, I_yz, I_xz, kg m², the chapter's sign (−∫xy dm); zero when not given.
+    pub products_of_inertia: Option<Vec<f64>>,
+    /// `G` (the default) or `origin`: the point the tensor is about.
+    pub inertia_about: Option<String>,
 }
 
 /// `[hydrodynamics]`.
@@ -203,16 +226,48 @@ pub struct HydrodynamicsTable {
     pub added_mass: BTreeMap<String, f64>,
     /// The force terms by name.
     pub coefficients: BTreeMap<String, f64>,
+    /// The cross-flow drag in strips.
+    pub cross_flow: Option<CrossFlowTable>,
+}
+
+/// `[hydrodynamics.cross_flow]`: the hull in strips ([`super::cross_flow`]).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CrossFlowTable {
+    /// x_i, m.
+    pub stations: Vec<f64>,
+    /// Δx_i, m.
+    pub lengths: Vec<f64>,
+    /// H_i, m.
+    pub heights: Vec<f64>,
+    /// B_i, m.
+    pub breadths: Vec<f64>,
+    /// C_dy.
+    pub sway_coefficient: f64,
+    /// C_dz.
+    pub heave_coefficient: f64,
+    /// ρ, kg/m³: the prime system's by default.
+    pub density: Option<f64>,
 }
 
 /// `[propeller]`.
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct PropellerTable {
-    /// X_prop, N.
-    pub thrust: f64,
-    /// K_prop, N m.
-    pub torque: f64,
+    /// `constant` (the default: `thrust` and `torque`) or `healey_lienard` (a law in `rpm`).
+    pub law: Option<String>,
+    /// X_prop, N (constant).
+    pub thrust: Option<f64>,
+    /// K_prop, N m (constant).
+    pub torque: Option<f64>,
+    /// n, rpm (the law).
+    pub rpm: Option<f64>,
+    /// a in prop = a n/u, m/rad (the law).
+    pub advance: Option<f64>,
+    /// C_d0 (the law).
+    pub drag_coefficient: Option<f64>,
+    /// c in C_t = c L² prop|prop|/2 (the law).
+    pub thrust_coefficient: Option<f64>,
 }
 
 /// `[[manoeuvre]]`.
@@ -274,10 +329,9 @@ impl Checker<'_> {
             }
             Ok(v)
         };
-        let mut inertia = [0.0; 3];
-        for (i, x) in body.inertia.iter().enumerate() {
-            inertia[i] = self.positive(&format!("body.inertia[{i}]"), *x)?;
-        }
+        let mass = self.positive("body.mass", body.mass)?;
+        let centre_of_gravity = vector("centre_of_gravity", body.centre_of_gravity)?;
+        let (inertia, inertia_about) = self.vehicle_inertia(body, mass, centre_of_gravity)?;
         let hydro = &file.hydrodynamics;
         let convention = self.word(
             "hydrodynamics.convention",
@@ -309,26 +363,220 @@ impl Checker<'_> {
                 }
             }
         }
-        let propeller = match &file.propeller {
-            Some(p) => Some(PropellerSetting {
-                thrust: self.finite("propeller.thrust", p.thrust)?,
-                torque: self.finite("propeller.torque", p.torque)?,
-            }),
-            None => None,
-        };
+        let prime = self.prime_scales(hydro)?;
+        let propeller = (file.propeller.as_ref())
+            .map(|p| self.vehicle_propeller(p, prime))
+            .transpose()?;
         Ok(VehicleTable {
-            mass: self.positive("body.mass", body.mass)?,
+            mass,
             weight: self.positive("body.weight", body.weight)?,
             buoyancy: self.positive("body.buoyancy", body.buoyancy)?,
-            centre_of_gravity: vector("centre_of_gravity", body.centre_of_gravity)?,
+            centre_of_gravity,
             centre_of_buoyancy: vector("centre_of_buoyancy", body.centre_of_buoyancy)?,
             inertia,
+            inertia_about,
             convention,
             added_mass_coriolis,
             added_mass: hydro.added_mass.clone(),
             coefficients: hydro.coefficients.clone(),
             propeller,
-            prime: self.prime_scales(hydro)?,
+            prime,
+            cross_flow: (hydro.cross_flow.as_ref())
+                .map(|c| self.cross_flow(c, prime))
+                .transpose()?,
+        })
+    }
+
+    /// `body.inertia` and `body.products_of_inertia` as a tensor and the point it is about
+    /// (`body.inertia_about`): a physical
+    /// tensor (symmetric, positive definite, each moment at most the sum of the other two),
+    /// and about O one whose tensor about G, less M(|r_G|²1 − r_G r_Gᵀ) by 4.23, is physical
+    /// too.
+    fn vehicle_inertia(
+        &self,
+        body: &BodyTable,
+        mass: f64,
+        r_g: [f64; 3],
+    ) -> Result<([[f64; 3]; 3], InertiaAbout), SceneError> {
+        let mut tensor = [[0.0; 3]; 3];
+        for (i, x) in body.inertia.iter().enumerate() {
+            tensor[i][i] = self.positive(&format!("body.inertia[{i}]"), *x)?;
+        }
+        let key = "body.products_of_inertia";
+        if let Some(products) = &body.products_of_inertia {
+            if products.len() != 3 {
+                return Err(self.invalid(
+                    key,
+                    format!(
+                        "give three products [Ixy, Iyz, Ixz], not {}",
+                        products.len()
+                    ),
+                ));
+            }
+            for ((i, x), (r, c)) in products.iter().enumerate().zip([(0, 1), (1, 2), (0, 2)]) {
+                tensor[r][c] = self.finite(&format!("{key}[{i}]"), *x)?;
+                tensor[c][r] = tensor[r][c];
+            }
+        }
+        let about = match &body.inertia_about {
+            Some(word) => self.word(
+                "body.inertia_about",
+                word,
+                [
+                    (InertiaAbout::Gravity, "G"),
+                    (InertiaAbout::Origin, "origin"),
+                ],
+            )?,
+            None => InertiaAbout::Gravity,
+        };
+        let physical = |m: [[f64; 3]; 3], what: &str| {
+            InertiaTensor::from_matrix(Matrix3::from_fn(|r, c| m[r][c]))
+                .map(|_| ())
+                .map_err(|e| self.invalid("body.inertia", format!("{what}{e}")))
+        };
+        physical(tensor, "")?;
+        if about == InertiaAbout::Origin {
+            let squared: f64 = r_g.iter().map(|x| x * x).sum();
+            let mut about_g = tensor;
+            for (r, row) in about_g.iter_mut().enumerate() {
+                for (c, entry) in row.iter_mut().enumerate() {
+                    let identity = if r == c { squared } else { 0.0 };
+                    *entry -= mass * (identity - r_g[r] * r_g[c]);
+                }
+            }
+            physical(
+                about_g,
+                "about G (4.23, the tensor about O less M(|r_G|²1 − r_G r_Gᵀ)): ",
+            )?;
+        }
+        Ok((tensor, about))
+    }
+
+    /// `[propeller]`: constant thrust and torque, or the law in the propeller's rate (in the
+    /// prime system, whose ρ and L it reads), each refusing the other's keys.
+    fn vehicle_propeller(
+        &self,
+        p: &PropellerTable,
+        prime: Option<PrimeScales>,
+    ) -> Result<PropellerSetting, SceneError> {
+        let law = match &p.law {
+            Some(word) => self.word(
+                "propeller.law",
+                word,
+                [(false, "constant"), (true, "healey_lienard")],
+            )?,
+            None => false,
+        };
+        let given = |key: &str, value: Option<f64>| match value {
+            Some(x) => Ok(x),
+            None => Err(self.error(
+                &format!("propeller.{key}"),
+                Problem::Missing(format!(
+                    "the law `{}` needs it",
+                    if law { "healey_lienard" } else { "constant" }
+                )),
+            )),
+        };
+        let refused = |key: &str, value: Option<f64>, why: &str| match value {
+            Some(_) => Err(self.invalid(&format!("propeller.{key}"), why)),
+            None => Ok(()),
+        };
+        if !law {
+            for (key, value) in [
+                ("rpm", p.rpm),
+                ("advance", p.advance),
+                ("drag_coefficient", p.drag_coefficient),
+                ("thrust_coefficient", p.thrust_coefficient),
+            ] {
+                refused(
+                    key,
+                    value,
+                    "only a law reads it: give propeller.law = \"healey_lienard\"",
+                )?;
+            }
+            return Ok(PropellerSetting {
+                thrust: self.finite("propeller.thrust", given("thrust", p.thrust)?)?,
+                torque: self.finite("propeller.torque", given("torque", p.torque)?)?,
+                law: None,
+            });
+        }
+        refused(
+            "thrust",
+            p.thrust,
+            "the law gives the thrust: ½ρL²C_d0(a n)²",
+        )?;
+        let Some(scales) = prime else {
+            return Err(self.invalid(
+                "propeller.law",
+                "the law is in the prime system: give hydrodynamics.units = \"prime\"",
+            ));
+        };
+        let positive = |key: &str, value: Option<f64>| {
+            self.positive(&format!("propeller.{key}"), given(key, value)?)
+        };
+        let law = PropellerLaw {
+            rpm: positive("rpm", p.rpm)?,
+            advance: positive("advance", p.advance)?,
+            drag_coefficient: positive("drag_coefficient", p.drag_coefficient)?,
+            thrust_coefficient: positive("thrust_coefficient", p.thrust_coefficient)?,
+            density: scales.density,
+            length: scales.length,
+        };
+        Ok(PropellerSetting {
+            thrust: law.thrust(),
+            torque: self.finite("propeller.torque", p.torque.unwrap_or(0.0))?,
+            law: Some(law),
+        })
+    }
+
+    /// `[hydrodynamics.cross_flow]`: strips of one length each (the stations' count), finite
+    /// stations, positive lengths, heights, breadths, coefficients and ρ (the prime system's
+    /// unless given).
+    fn cross_flow(
+        &self,
+        table: &CrossFlowTable,
+        prime: Option<PrimeScales>,
+    ) -> Result<CrossFlow, SceneError> {
+        let key = |k: &str| format!("hydrodynamics.cross_flow.{k}");
+        let count = table.stations.len();
+        if count == 0 {
+            return Err(self.invalid(&key("stations"), "give at least one strip"));
+        }
+        let strips = |k: &str, values: &[f64], positive: bool| -> Result<Vec<f64>, SceneError> {
+            if values.len() != count {
+                return Err(self.invalid(
+                    &key(k),
+                    format!(
+                        "{} entries, one per strip: stations has {count}",
+                        values.len()
+                    ),
+                ));
+            }
+            (values.iter().enumerate())
+                .map(|(i, x)| match positive {
+                    true => self.positive(&format!("{}[{i}]", key(k)), *x),
+                    false => self.finite(&format!("{}[{i}]", key(k)), *x),
+                })
+                .collect()
+        };
+        let density = match (table.density, prime) {
+            (Some(rho), _) => self.positive(&key("density"), rho)?,
+            (None, Some(scales)) => scales.density,
+            (None, None) => {
+                return Err(self.error(
+                    &key("density"),
+                    Problem::Missing("a dimensional table has no ρ of its own".into()),
+                ));
+            }
+        };
+        Ok(CrossFlow {
+            stations: strips("stations", &table.stations, false)?,
+            lengths: strips("lengths", &table.lengths, true)?,
+            heights: strips("heights", &table.heights, true)?,
+            breadths: strips("breadths", &table.breadths, true)?,
+            sway_coefficient: self.positive(&key("sway_coefficient"), table.sway_coefficient)?,
+            heave_coefficient: self.positive(&key("heave_coefficient"), table.heave_coefficient)?,
+            density,
         })
     }
 

@@ -145,6 +145,22 @@ fn extent(columns: &[&[f64]]) -> f64 {
         .fold(0.0, f64::max)
 }
 
+/// The principal moments of the tensor `inertia` and its principal axes as columns,
+/// right-handed, so that a body drawn in them is not a mirror image (ones and body axes for a
+/// tensor that is not physical).
+fn principal(inertia: Matrix3<f64>) -> ([f64; 3], Matrix3<f64>) {
+    let tensor = eom::InertiaTensor::from_matrix(inertia).ok();
+    let (moments, axes) = tensor.map_or((Vector3::new(1.0, 1.0, 1.0), Matrix3::identity()), |t| {
+        t.principal()
+    });
+    let mut axes = axes;
+    if axes.determinant() < 0.0 {
+        let third = -axes.column(2);
+        axes.set_column(2, &third);
+    }
+    ([moments[0], moments[1], moments[2]], axes)
+}
+
 /// A spatial body: a box (or in water a cylinder) in its principal axes.
 fn spatial<'a>(
     scene: &'a Scene,
@@ -154,19 +170,7 @@ fn spatial<'a>(
     kinematics: Option<Kinematics>,
     water: bool,
 ) -> ViewInput<'a> {
-    let tensor = eom::InertiaTensor::from_matrix(inertia).ok();
-    let (moments, axes) = tensor.map_or((Vector3::new(1.0, 1.0, 1.0), Matrix3::identity()), |t| {
-        t.principal()
-    });
-    // Right-handed principal axes, so the drawn box is not a mirror image.
-    let axes = if axes.determinant() < 0.0 {
-        let mut a = axes;
-        a.set_column(2, &(-axes.column(2)));
-        a
-    } else {
-        axes
-    };
-    let moments = [moments[0], moments[1], moments[2]];
+    let (moments, axes) = principal(inertia);
     let mut notes = Vec::new();
     let cylinder = water.then(|| vehicle(mass, moments, axes)).flatten();
     let (shape, size) = match cylinder {
@@ -448,8 +452,8 @@ pub fn write_ship(out: &Path, ship: ShipColumns) -> Result<PathBuf> {
 }
 
 /// Writes a vehicle manoeuvre's `view.html` into its folder: the solid cylinder of the
-/// vehicle's mass and moments about G, its origin O moving through the water in north, east,
-/// down, turned by the run's quaternion. `columns` are [`eom::vehicle::manoeuvre::ROW`]'s.
+/// vehicle's mass and principal moments about G (along the principal axis nearest body x),
+/// its origin O moving through the water in north, east, down, turned by the run's quaternion. `columns` are [`eom::vehicle::manoeuvre::ROW`]'s.
 pub fn write_vehicle(
     out: &Path,
     title: &str,
@@ -461,12 +465,13 @@ pub fn write_vehicle(
         let index = ROW.iter().position(|r| *r == name).unwrap_or(0);
         &columns.state[index]
     };
-    let (shape, note) = match vehicle(table.mass, table.inertia, Matrix3::identity()) {
+    let (moments, axes) = principal(inertia_about_g(table));
+    let (shape, note) = match vehicle(table.mass, moments, axes) {
         Some((shape, _, note)) => (shape, note),
         None => anyhow::bail!(
-            "no solid cylinder has the vehicle's mass {} kg and moments {:?} kg m²",
+            "no solid cylinder has the vehicle's mass {} kg and principal moments {:?} kg m²",
             Short(table.mass),
-            table.inertia
+            moments
         ),
     };
     let readout = (ROW.iter().zip(&columns.state))
@@ -488,6 +493,19 @@ pub fn write_vehicle(
         notes: vec![note],
     };
     write_view(out, &input).with_context(|| format!("writing the view into {}", out.display()))
+}
+
+/// The vehicle's inertia tensor about G: as the scene gives it, or from the one about O by
+/// 4.23 turned round, I_G = I_O − M(|r_G|² E − r_G r_Gᵀ).
+fn inertia_about_g(table: &eom::vehicle::table::VehicleTable) -> Matrix3<f64> {
+    let given = Matrix3::from_fn(|r, c| table.inertia[r][c]);
+    match table.inertia_about {
+        eom::vehicle::InertiaAbout::Gravity => given,
+        eom::vehicle::InertiaAbout::Origin => {
+            let r = Vector3::from(table.centre_of_gravity);
+            given - (Matrix3::identity() * r.norm_squared() - r * r.transpose()) * table.mass
+        }
+    }
 }
 
 /// Quaternion columns divided by their length, row by row (a run's quaternion drifts from

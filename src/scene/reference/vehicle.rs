@@ -132,9 +132,39 @@ pub(super) static KEYS: &[Key] = &[
         unit: "kg m²",
         frame: super::Frame::Body,
         required: Required::Yes,
-        description: "The principal moments of inertia about G, the principal axes along the \
-                      body axes; eom carries them to O by Steiner (4.23).",
+        description: "The moments of inertia about the point body.inertia_about names; with \
+                      body.products_of_inertia, the tensor [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], \
+                      [Ixz, Iyz, Izz]], which must be physical: positive definite, each moment \
+                      at most the sum of the other two (and about O, its tensor about G too).",
         example: "[0.177, 3.45, 3.45]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.products_of_inertia",
+        families: VEHICLE,
+        kind: Kind::Numbers("3: I_xy, I_yz, I_xz"),
+        unit: "kg m²",
+        frame: super::Frame::Body,
+        default: "[0, 0, 0]: principal axes along the body axes",
+        description: "The products of inertia, the tensor's off-diagonal entries with the \
+                      chapter's sign, Ixy = −∫xy dm (4.12–4.14), as a catalog scene writes them \
+                      in body.inertia, so H = [I]ω. Fossen's tables (MSS) write Ixy = ∫xy dm and \
+                      −Ixy in the tensor: enter those with their sign changed. Products that \
+                      are zero are pruned from the model (Ixy = Iyz = 0: the x–z plane of \
+                      symmetry; all zero: principal axes).",
+        example: "[0.0, 0.0, 0.0]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.inertia_about",
+        families: VEHICLE,
+        kind: Kind::Text(Choices::These(&["G", "origin"])),
+        default: "G",
+        description: "The point body.inertia is about: G, carried to O by Steiner (4.23), or \
+                      the table's origin O, used as given.",
+        example: "\"G\"",
+        shown: Shown::Commented,
         ..Key::BLANK
     },
     Key {
@@ -235,11 +265,104 @@ pub(super) static KEYS: &[Key] = &[
         ..Key::BLANK
     },
     Key {
+        path: "hydrodynamics.cross_flow.stations",
+        families: VEHICLE,
+        kind: Kind::Numbers("one per strip"),
+        unit: "m",
+        required: Required::When("with [hydrodynamics.cross_flow]"),
+        description: "x_i, each strip's station along body x from O. The cross-flow drag (eom::vehicle::cross_flow, after npsauv.m's strips): at each strip the local cross flow a = v + x r, b = w − x q gives the force −½ρΔx(C_dy H a² + C_dz B b²)(a, b)/√(a² + b²) in y and z, and the loads about O are these forces and their moments (the pitch moment −Σ x F_z: npsauv.m's reads w + x q there, and the scene follows the moment of its own forces). Not a polynomial: computed beside the proved program, which reads its loads as its applied loads, with its derivatives in the Jacobian.",
+        example: "[-0.6, 0.0, 0.6]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "hydrodynamics.cross_flow.lengths",
+        families: VEHICLE,
+        kind: Kind::Numbers("one per strip"),
+        unit: "m",
+        required: Required::When("with [hydrodynamics.cross_flow]"),
+        description: "Δx_i, each strip's length, positive.",
+        example: "[0.6, 0.6, 0.6]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "hydrodynamics.cross_flow.heights",
+        families: VEHICLE,
+        kind: Kind::Numbers("one per strip"),
+        unit: "m",
+        required: Required::When("with [hydrodynamics.cross_flow]"),
+        description: "H_i, each strip's height, the area the sway flow meets per length, positive.",
+        example: "[0.19, 0.19, 0.19]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "hydrodynamics.cross_flow.breadths",
+        families: VEHICLE,
+        kind: Kind::Numbers("one per strip"),
+        unit: "m",
+        required: Required::When("with [hydrodynamics.cross_flow]"),
+        description: "B_i, each strip's breadth, the area the heave flow meets per length, positive.",
+        example: "[0.19, 0.19, 0.19]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "hydrodynamics.cross_flow.sway_coefficient",
+        families: VEHICLE,
+        required: Required::When("with [hydrodynamics.cross_flow]"),
+        description: "C_dy, the drag coefficient of the sway flow, positive.",
+        example: "0.5",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "hydrodynamics.cross_flow.heave_coefficient",
+        families: VEHICLE,
+        required: Required::When("with [hydrodynamics.cross_flow]"),
+        description: "C_dz, the drag coefficient of the heave flow, positive.",
+        example: "0.6",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "hydrodynamics.cross_flow.density",
+        families: VEHICLE,
+        unit: "kg/m³",
+        default: "hydrodynamics.density",
+        required: Required::When("in a dimensional table"),
+        description: "ρ of the drag: the prime system's unless given.",
+        example: "1025.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "propeller.law",
+        families: VEHICLE,
+        kind: Kind::Text(Choices::These(&["constant", "healey_lienard"])),
+        default: "constant",
+        description: "What gives the propeller's loads. constant: propeller.thrust and \
+                      propeller.torque as given. healey_lienard: the NPS AUV II's law in the \
+                      propeller's rate as Healey & Lienard (1993) and Fossen's npsauv.m give \
+                      it, in the prime system (hydrodynamics.units = \"prime\"): prop = \
+                      advance·n/u (n in rad/s), the thrust ½ρL²·drag_coefficient·(advance·n)² \
+                      for u > 0 (the law's resistance, ½ρL²C_d0u², is the table's Xuu), and \
+                      ε = −1 + (√(C_t + 1) − 1)/(√(C_t1 + 1) − 1), C_t = \
+                      thrust_coefficient·L²·prop|prop|/2, C_t1 at prop = 1: the factor `n` of \
+                      the table's terms (Zqn is u·q·ε), computed beside the proved program; ε = \
+                      0 at the cruise u = advance·n. The law holds for u > 0: at u ≤ 0 the run \
+                      stops on its guard against values that are not finite.",
+        example: "\"constant\"",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
         path: "propeller.thrust",
         families: VEHICLE,
         unit: "N",
         frame: super::Frame::Body,
-        required: Required::When("with [propeller]"),
+        required: Required::When("with the constant law (a law refuses it: it gives the thrust)"),
         description: "X_prop, constant at the setting, along body x. Every run starts from the \
                       cruise it makes: u and the roll angle trimmed so that u̇ = ṗ = 0.",
         example: "3.86",
@@ -250,9 +373,50 @@ pub(super) static KEYS: &[Key] = &[
         families: VEHICLE,
         unit: "N m",
         frame: super::Frame::Body,
-        required: Required::When("with [propeller]"),
+        required: Required::When("with the constant law (0 by default with healey_lienard)"),
         description: "K_prop, the propeller's torque on the hull about body x, constant.",
         example: "-0.543",
+        ..Key::BLANK
+    },
+    Key {
+        path: "propeller.rpm",
+        families: VEHICLE,
+        unit: "rpm",
+        required: Required::When("with healey_lienard (the constant law refuses it)"),
+        description: "n, the propeller's rate, positive (ahead).",
+        example: "1300.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "propeller.advance",
+        families: VEHICLE,
+        unit: "m/rad",
+        required: Required::When("with healey_lienard"),
+        description: "a in prop = a·n/u (n in rad/s): the cruise speed per shaft speed, where \
+                      thrust meets the resistance (npsauv.m: 0.012).",
+        example: "0.012",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "propeller.drag_coefficient",
+        families: VEHICLE,
+        required: Required::When("with healey_lienard"),
+        description: "C_d0: the thrust ½ρL²C_d0(a·n)² (npsauv.m: 0.00385; its resistance \
+                      −C_d0 is the table's Xuu).",
+        example: "0.00385",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "propeller.thrust_coefficient",
+        families: VEHICLE,
+        required: Required::When("with healey_lienard"),
+        description: "c in C_t = c·L²·prop|prop|/2, the thrust coefficient ε is made of \
+                      (npsauv.m: 0.008).",
+        example: "0.008",
+        shown: Shown::Commented,
         ..Key::BLANK
     },
     RUDDER[0],
