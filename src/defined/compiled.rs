@@ -11,9 +11,10 @@
 //! Cranelift contracts nothing it is not asked to), and 1/x is a division of one by x. Sine and
 //! cosine are the kernel the interpreter calls (`eom_kernel::sin_cos`), once per angle for
 //! both, written out operation for operation from its constants (`eom_kernel::recipe`). An
-//! angle outside the kernel's range (tiny, beyond its reduction's limit, NaN, infinite) makes
-//! the compiled function return before it writes anything, and the interpreter evaluates that
-//! call: so the code calls nothing, and needs no frame of its own. So its results are the
+//! angle beyond the kernel's reduction (|x| > 2¹⁹·π/2, NaN, infinite), where the kernel calls
+//! the platform's sine and cosine, makes the compiled function return before it writes
+//! anything, and the interpreter evaluates that call: so the code calls nothing, and needs no
+//! frame of its own. So its results are the
 //! interpreter's bit for bit, which the tests check on random states and on the angles where
 //! the kernel changes path. With the feature `platform-trig` (the platform's sine and cosine,
 //! which no written-out kernel reproduces) a program with an angle is not compiled.
@@ -52,7 +53,7 @@ pub(crate) enum CompileError {
 }
 
 /// A compiled function: variables, values, outputs, each a pointer to f64s; returns 1 when it
-/// wrote the outputs, 0 when an angle was outside the kernel's range (nothing written).
+/// wrote the outputs, 0 when an angle was beyond the kernel's reduction (nothing written).
 type Entry = unsafe extern "C" fn(*const f64, *const f64, *mut f64) -> u8;
 
 /// One plan compiled: its entry point and what it reads and writes.
@@ -286,7 +287,7 @@ struct Body<'a, 'b, 'o> {
     nodes: Vec<Option<Value>>,
     /// Each angle's sine and cosine, once computed.
     trig: Vec<Option<(Value, Value)>>,
-    /// The block that returns 0 (an angle out of the kernel's range), once made.
+    /// The block that returns 0 (an angle beyond the kernel's reduction), once made.
     outside: Option<Block>,
 }
 
@@ -305,7 +306,7 @@ impl<'a, 'b, 'o> Body<'a, 'b, 'o> {
 
     /// The plan's nodes, each one operation, then its outputs stored and 1 returned; then the
     /// block that returns 0, if an angle branches there. The sines and cosines and what their
-    /// angles need come first, so that an angle out of the kernel's range returns before any
+    /// angles need come first, so that an angle beyond the kernel's reduction returns before any
     /// other work.
     fn emit(&mut self, plan: &Plan) -> Result<(), CompileError> {
         let early = trig_first(self.ops, plan);
@@ -408,7 +409,7 @@ impl<'a, 'b, 'o> Body<'a, 'b, 'o> {
         Ok(pair)
     }
 
-    /// The block an angle out of the kernel's range branches to, filled when the function
+    /// The block an angle beyond the kernel's reduction branches to, filled when the function
     /// ends: it returns 0, and the interpreter evaluates the call.
     fn outside_block(&mut self) -> Block {
         *self
@@ -418,21 +419,19 @@ impl<'a, 'b, 'o> Body<'a, 'b, 'o> {
 }
 
 /// The kernel of `eom_kernel::sin_cos_f64` for one angle, operation for operation as
-/// `kernel.rs` writes it (so its bits), to `outside` when the angle is out of its range
-/// (`all_in_range`); else an angle within ±π/4 as it is and any other reduced
-/// (`in_range`), both polynomials, the quadrant's swap and signs (`place`).
+/// `kernel.rs` writes it (so its bits): to `outside` beyond the reduction's limit (and for NaN
+/// and the infinities, whose bits order above it), where the kernel calls the platform; else
+/// an angle within ±π/4 as it is and any other reduced (`in_range`), both polynomials, the
+/// quadrant's swap and signs (`place`); and a tiny angle's pair `(x, 1)`, as the kernel's
+/// cold path gives it (`one_at_a_time`), so that a heading held at exactly zero stays in the
+/// compiled code.
 fn kernel(b: &mut FunctionBuilder<'_>, x: Value, outside: Block) -> (Value, Value) {
     let (warm, reduce, evaluate) = (b.create_block(), b.create_block(), b.create_block());
     let bits = b.ins().bitcast(types::I64, MemFlags::new(), x);
     let magnitude = b.ins().band_imm(bits, !recipe::SIGN_BIT as i64);
-    let above_tiny = b
-        .ins()
-        .iadd_imm(magnitude, -(recipe::TINY.to_bits() as i64));
-    let span = (recipe::LIMIT.to_bits() - recipe::TINY.to_bits()) as i64;
-    let out_of_range = b
-        .ins()
-        .icmp_imm(IntCC::UnsignedGreaterThan, above_tiny, span);
-    b.ins().brif(out_of_range, outside, &[], warm, &[]);
+    let limit = recipe::LIMIT.to_bits() as i64;
+    let beyond = (b.ins()).icmp_imm(IntCC::UnsignedGreaterThan, magnitude, limit);
+    b.ins().brif(beyond, outside, &[], warm, &[]);
 
     b.switch_to_block(warm);
     b.seal_block(warm);
@@ -454,7 +453,14 @@ fn kernel(b: &mut FunctionBuilder<'_>, x: Value, outside: Block) -> (Value, Valu
     b.switch_to_block(evaluate);
     b.seal_block(evaluate);
     let (sin, cos) = (sin_reduced(b, r), cos_reduced(b, r));
-    placed(b, quadrant, sin, cos)
+    let (sin, cos) = placed(b, quadrant, sin, cos);
+    let tiny = recipe::TINY.to_bits() as i64;
+    let below = b.ins().icmp_imm(IntCC::UnsignedLessThan, magnitude, tiny);
+    let one = b.ins().f64const(1.0);
+    (
+        b.ins().select(below, x, sin),
+        b.ins().select(below, one, cos),
+    )
 }
 
 /// `r = x − k·π/2` in three steps, `k = round(2x/π)`, and the bits of the rounding sum, whose
