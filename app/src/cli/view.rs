@@ -453,7 +453,9 @@ pub fn write_ship(out: &Path, ship: ShipColumns) -> Result<PathBuf> {
 
 /// Writes a vehicle manoeuvre's `view.html` into its folder: the solid cylinder of the
 /// vehicle's mass and principal moments about G (along the principal axis nearest body x),
-/// its origin O moving through the water in north, east, down, turned by the run's quaternion. `columns` are [`eom::vehicle::manoeuvre::ROW`]'s.
+/// drawn about the table's origin O (G's offset from O, 2 cm for REMUS, is not drawn), moving
+/// through the water in north, east, down and turned by the run's quaternion. `columns` are
+/// [`eom::vehicle::manoeuvre::ROW`]'s.
 pub fn write_vehicle(
     out: &Path,
     title: &str,
