@@ -529,16 +529,19 @@ impl<'a> Driver<'a> {
             other => self.g(other, y),
         };
         let start: Vec<f64> = watches.iter().map(|w| g(*w, a, &y_a)).collect();
+        // Whether `watch`, at g0 when the stretch began, has changed its sign at (t, y).
+        let moved = |watch: Watch, g0: f64, t: f64, y: &DriveState| {
+            g0 != 0.0 && g(watch, t, y).signum() != g0.signum()
+        };
         let changed = |t: f64, y: &DriveState| -> Vec<Watch> {
             (watches.iter().zip(&start))
-                .filter(|(w, g0)| **g0 != 0.0 && g(**w, t, y).signum() != g0.signum())
+                .filter(|(w, g0)| moved(**w, **g0, t, y))
                 .map(|(w, _)| *w)
                 .collect()
         };
         // Asked after every step: no list made.
         let stop = |t: f64, y: &DriveState| {
-            (watches.iter().zip(&start))
-                .any(|(w, g0)| *g0 != 0.0 && g(*w, t, y).signum() != g0.signum())
+            (watches.iter().zip(&start)).any(|(w, g0)| moved(*w, *g0, t, y))
         };
         let mut steps = Vec::new();
         let hooks = Hooks {
