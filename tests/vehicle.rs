@@ -527,7 +527,7 @@ fn remus_at_cruise_is_unstable_open_loop_in_yaw_and_in_pitch() {
         ["u", "v", "w", "p", "q", "r", "phi", "theta"]
     );
     assert_eq!(linear.input_names, ["dr", "ds"]);
-    assert_eq!(linear.stability, Stability::Unstable);
+    assert_eq!(linear.stability, Some(Stability::Unstable));
     let growing: Vec<Option<&str>> = (linear.modes.iter())
         .filter(|m| m.time_to_double_s.is_some())
         .map(|m| m.name)

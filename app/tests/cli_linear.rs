@@ -55,7 +55,10 @@ fn the_json_report_has_every_key_and_the_pendulum_swings_at_its_closed_form() {
     ] {
         assert!(mode.get(key).is_some(), "{key} missing: {mode}");
     }
-    assert_eq!(report["stable"], true);
+    // Undamped, the swing neither grows nor decays: marginal, which the linear model cannot
+    // call stable or unstable.
+    assert_eq!(report["verdict"], "marginal");
+    assert_eq!(report["stable"], serde_json::Value::Null);
 }
 
 #[test]
@@ -69,8 +72,14 @@ fn out_writes_the_matrices_and_the_pole_plot_and_keeps_the_folder_rules() {
     ])))
     .unwrap();
     let a = std::fs::read_to_string(out.join("A.csv")).unwrap();
+    assert_eq!(
+        a.lines().next(),
+        Some("theta,theta_dot"),
+        "a header of state names"
+    );
     let read: Vec<Vec<f64>> = a
         .lines()
+        .skip(1)
         .map(|line| line.split(',').map(|v| v.parse().unwrap()).collect())
         .collect();
     let json: Vec<Vec<f64>> = serde_json::from_value(report["A"].clone()).unwrap();
@@ -79,9 +88,14 @@ fn out_writes_the_matrices_and_the_pole_plot_and_keeps_the_folder_rules() {
         std::fs::read_to_string(out.join("B.csv"))
             .unwrap()
             .lines()
-            .count(),
-        2
+            .collect::<Vec<_>>(),
+        ["M_O", "0e0", "5e-1"],
+        "B.csv: a header of input names, then ∂θ̇/∂M_O = 0 and ∂θ̈/∂M_O = 1/I₀"
     );
+    // The text report is kept beside the matrices, as the command prints it.
+    let printed = succeeded(&eom(&["linear", &scene]));
+    let kept = std::fs::read_to_string(out.join("report.txt")).unwrap();
+    assert_eq!(kept, printed);
     assert!(
         std::fs::read_to_string(out.join("poles.svg"))
             .unwrap()
@@ -144,4 +158,66 @@ fn a_point_that_is_not_an_equilibrium_is_said_with_by_how_much() {
         text.contains("NOT an equilibrium") && text.contains("-3.678750e0"),
         "{text}"
     );
+    // No verdict rests on it, and no mode is named as if it were a motion about the point.
+    assert!(
+        text.contains("verdict: none: the point is not an equilibrium"),
+        "{text}"
+    );
+    assert!(
+        !text.contains("UNSTABLE") && !text.contains("swing"),
+        "{text}"
+    );
+    let report: serde_json::Value =
+        serde_json::from_str(&succeeded(&eom(&["linear", &pendulum(&dir, ""), "--json"]))).unwrap();
+    assert_eq!(report["equilibrium"], false);
+    assert_eq!(report["stable"], serde_json::Value::Null);
+    assert_eq!(report["verdict"], serde_json::Value::Null);
+    let why = report["stability"].as_str().unwrap();
+    assert!(
+        why.contains("not an equilibrium") && why.contains("linear.trim"),
+        "{why}"
+    );
+}
+
+/// Every example scene: a verdict only at an equilibrium, and none that rests on round-off
+/// (a free body at rest is marginal; no mode's doubling time is beyond 10⁹ s).
+#[test]
+fn every_example_scene_gets_a_verdict_that_holds() {
+    let scenes = root().join("scenes");
+    for entry in std::fs::read_dir(&scenes).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_none_or(|e| e != "toml") {
+            continue;
+        }
+        let output = eom(&["linear", path.to_str().unwrap(), "--json"]);
+        let stdout = String::from_utf8_lossy(&output.stdout);
+        let Ok(report) = serde_json::from_str::<serde_json::Value>(&stdout) else {
+            panic!(
+                "{}: {}",
+                path.display(),
+                String::from_utf8_lossy(&output.stderr)
+            );
+        };
+        let name = path.file_name().unwrap().to_string_lossy();
+        let equilibrium = report["equilibrium"].as_bool().unwrap();
+        assert_eq!(report["verdict"].is_null(), !equilibrium, "{name}");
+        if !equilibrium {
+            assert!(report["stable"].is_null(), "{name}");
+        }
+        for mode in report["modes"].as_array().unwrap() {
+            let double = mode["time_to_double_s"].as_f64().unwrap_or(0.0);
+            assert!(
+                double < 1e9,
+                "{name}: a doubling time of {double} s is round-off"
+            );
+        }
+        if name == "thruster_burn.toml" {
+            assert_eq!(report["verdict"], "marginal", "a free body at rest");
+            let reduced = report["reduced_state"].as_array().unwrap();
+            assert!(
+                !reduced.iter().any(|n| n == "q0"),
+                "no quaternion: {reduced:?}"
+            );
+        }
+    }
 }

@@ -316,9 +316,13 @@ fn eom_linear_says_the_esso_osaka_is_course_unstable() {
     ]));
     let a = std::fs::read_to_string(out.join("A.csv")).unwrap();
     let b = std::fs::read_to_string(out.join("B.csv")).unwrap();
-    assert_eq!(a.lines().count(), 3, "{a}");
+    assert_eq!(a.lines().next(), Some("u,v,r"), "{a}");
+    assert_eq!(a.lines().count(), 1 + 3, "{a}");
     assert!(a.lines().all(|l| l.split(',').count() == 3), "{a}");
-    assert_eq!(b.lines().count(), 3, "{b}");
+    assert_eq!(b.lines().next(), Some("delta"), "{b}");
+    assert_eq!(b.lines().count(), 1 + 3, "{b}");
+    let report = std::fs::read_to_string(out.join("report.txt")).unwrap();
+    assert!(report.contains("Nomoto, closed form"), "{report}");
     assert!(out.join("poles.svg").exists());
     let text = succeeded(&eom(&["linear", &scene_arg("mariner.toml")]));
     assert!(text.contains(": stable"), "{text}");

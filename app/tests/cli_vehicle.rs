@@ -116,7 +116,8 @@ fn eom_linear_linearises_a_vehicle_at_its_cruise_and_writes_its_matrices() {
         assert!(names.contains(&plane), "{names:?}");
     }
     let csv = std::fs::read_to_string(out.join("A.csv")).unwrap();
-    assert_eq!(csv.lines().count(), 8);
+    assert_eq!(csv.lines().next(), Some("u,v,w,p,q,r,phi,theta"));
+    assert_eq!(csv.lines().count(), 1 + 8);
     assert!(
         csv.lines().all(|line| line.split(',').count() == 8),
         "{csv}"

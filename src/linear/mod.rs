@@ -67,6 +67,10 @@ pub enum LinearError {
 /// size, far below any motion a scene means.
 pub const EQUILIBRIUM_TOLERANCE: f64 = 1e-9;
 
+/// The pitch beyond which Euler angles are not read, rad: 1° from ±90°, where ψ and φ lose
+/// their meaning and tan θ in the kinematics grows past 57.
+pub const EULER_PITCH_LIMIT: f64 = std::f64::consts::FRAC_PI_2 - std::f64::consts::PI / 180.0;
+
 /// The scale a rate is compared with: one plus the largest state entry.
 pub(crate) fn rate_scale(state: &[f64]) -> f64 {
     1.0 + state.iter().fold(0.0f64, |m, v| m.max(v.abs()))

@@ -5,20 +5,27 @@
 //! on A − λI in complex arithmetic, with λ moved off the eigenvalue by 10⁻¹⁰ of the spectral
 //! radius so that the solve is defined (three iterations take the error in the vector to the
 //! square of that ratio and below). A mode is one real eigenvalue or one pair of conjugate
-//! ones, listed once, with its period 2π/|Im λ|, damping ratio −Re λ/|λ|, time to double
+//! ones, listed once, with its period 2π/|Im λ| (as seen in space, where the state measures
+//! roll and pitch in axes that turn with the heading), damping ratio −Re λ/|λ|, time to double
 //! ln 2/Re λ or to half ln 2/(−Re λ), the states whose share of the eigenvector is at least
 //! half the largest, and a name where the family knows one.
 
 use crate::models::Family;
 use nalgebra::{Complex, DMatrix, DVector};
+use std::f64::consts::TAU;
 
 /// One mode of ẋ = A x.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Mode {
     /// The eigenvalue (of the pair, the one with Im λ > 0).
     pub eigenvalue: Complex<f64>,
-    /// 2π/|Im λ|, s, for an oscillation.
+    /// The period of an oscillation, s, as a person watching the body sees it: 2π/|Im λ|, or
+    /// for an oscillation measured in turning axes (see
+    /// [`frequency_in_space`](Self::frequency_in_space)) 2π over the frequency in space.
     pub period_s: Option<f64>,
+    /// 2π/|Im λ|, s, where that differs from [`period_s`](Self::period_s): the period in
+    /// the turning axes the state's roll and pitch are measured in.
+    pub period_in_turning_axes_s: Option<f64>,
     /// −Re λ/|λ|, for λ ≠ 0.
     pub damping_ratio: Option<f64>,
     /// ln 2/Re λ, s, for a mode that grows.
@@ -36,13 +43,16 @@ pub struct Mode {
     pub frequency_in_space: Option<f64>,
 }
 
-/// The verdict on the linear model.
+/// The verdict on the linear model at an equilibrium, each real part judged against
+/// [`growth_tolerance`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Stability {
     /// Every mode decays.
     Asymptotic,
-    /// No mode grows, some neither grow nor decay (an undamped oscillation, a neutral state).
-    Neutral,
+    /// No mode grows, some neither grow nor decay to the tolerance (an undamped oscillation,
+    /// a free body's drift at rest): the linear model cannot tell whether the motion is
+    /// stable, which the terms it leaves out decide.
+    Marginal,
     /// Some mode grows.
     Unstable,
 }
@@ -52,17 +62,60 @@ impl Stability {
     pub fn describe(self) -> &'static str {
         match self {
             Stability::Asymptotic => "stable: every mode decays",
-            Stability::Neutral => "stable: no mode grows (some neither grow nor decay)",
+            Stability::Marginal => {
+                "marginal: no mode grows, some neither grow nor decay (the linear model cannot \
+                 tell whether the motion is stable)"
+            }
             Stability::Unstable => "UNSTABLE: a mode grows",
+        }
+    }
+
+    /// The verdict in one word, as `summary.json`-style outputs give it.
+    pub fn word(self) -> &'static str {
+        match self {
+            Stability::Asymptotic => "stable",
+            Stability::Marginal => "marginal",
+            Stability::Unstable => "unstable",
+        }
+    }
+
+    /// Whether the motion is stable, where the linear model decides it: `Some(true)` when
+    /// every mode decays, `Some(false)` when one grows, `None` when it is marginal.
+    pub fn is_stable(self) -> Option<bool> {
+        match self {
+            Stability::Asymptotic => Some(true),
+            Stability::Marginal => None,
+            Stability::Unstable => Some(false),
         }
     }
 }
 
-/// A real part counts as zero below `GROWTH_TOLERANCE` times the spectral radius: the Schur
-/// form's backward error is ~ε‖A‖, and a double eigenvalue moves by its square root (~10⁻⁸),
-/// so 10⁻⁷ calls neither round-off growth nor an undamped mode unstable, while the weakest
-/// instability a scene means (10⁻³ of its fastest mode and more) is seen.
+/// A real part counts as zero below `GROWTH_TOLERANCE` times ‖A‖₂ ([`growth_tolerance`]).
+///
+/// Why ‖A‖ and not the eigenvalues' size: the Schur form is backward stable, its eigenvalues
+/// exact for some A + E with ‖E‖ ~ ε‖A‖, and a defective eigenvalue (a Jordan block of size
+/// k, as a free body at rest has wherever an angle reads a rate) moves by (ε‖A‖)^(1/k)
+/// ‖A‖^(1 − 1/k): about 1.5·10⁻⁸ ‖A‖ for k = 2. A nilpotent A (every eigenvalue zero,
+/// computed as ±10⁻¹⁶) has a spectral radius of round-off, so a tolerance scaled to it calls
+/// round-off growth; scaled to ‖A‖ it does not. 10⁻⁷ leaves a factor of seven above the
+/// double eigenvalue's movement, while the weakest instability a scene means (10⁻³ of its
+/// fastest mode and more) is seen.
 pub const GROWTH_TOLERANCE: f64 = 1e-7;
+
+/// The size below which a real part counts as zero: [`GROWTH_TOLERANCE`] times the largest
+/// singular value of `a` (1/s). Zero for a zero matrix, whose eigenvalues are exactly zero.
+pub fn growth_tolerance(a: &DMatrix<f64>) -> f64 {
+    if a.is_empty() || a.iter().all(|v| *v == 0.0) {
+        return 0.0;
+    }
+    let norm = a
+        .clone()
+        .try_svd(false, false, f64::EPSILON, 10_000)
+        .map(|svd| svd.singular_values.max())
+        // Should the SVD not converge, the Frobenius norm bounds the 2-norm from above.
+        .unwrap_or_else(|| a.norm());
+    GROWTH_TOLERANCE * norm
+}
 
 /// Whose names a mode is given: a catalog family's, or a vehicle's (surge, sway and yaw,
 /// heave and pitch, roll: the planes of motion a vehicle's designer reads).
@@ -87,10 +140,11 @@ pub fn modes(
     let mut eigenvalues = eigenvalues(a);
     eigenvalues.sort_by(|x, y| y.re.total_cmp(&x.re).then(y.im.total_cmp(&x.im)));
     let radius = eigenvalues.iter().fold(0.0f64, |m, l| m.max(l.norm()));
+    let tolerance = growth_tolerance(a);
     let mut modes: Vec<Mode> = eigenvalues
         .iter()
         .filter(|l| l.im >= 0.0)
-        .map(|&l| mode(a, l, GROWTH_TOLERANCE * radius, names, heading_rate))
+        .map(|&l| mode(a, l, (tolerance, radius), names, heading_rate))
         .collect();
     match naming {
         Naming::Family(family) => name_modes(&mut modes, family),
@@ -100,13 +154,12 @@ pub fn modes(
             }
         }
     }
-    let tolerance = GROWTH_TOLERANCE * radius;
     let stability = if eigenvalues.iter().any(|l| l.re > tolerance) {
         Stability::Unstable
     } else if eigenvalues.iter().all(|l| l.re < -tolerance) {
         Stability::Asymptotic
     } else {
-        Stability::Neutral
+        Stability::Marginal
     };
     (eigenvalues, modes, stability)
 }
@@ -136,16 +189,20 @@ pub fn eigenvalues(a: &DMatrix<f64>) -> Vec<Complex<f64>> {
 }
 
 /// One mode; a real part within `tolerance` of zero counts as zero (no doubling or halving
-/// time, no damping), as the verdict counts it.
+/// time, no damping), as the verdict counts it; `radius` is A's spectral radius, which sets
+/// the shift of the inverse iteration.
 fn mode(
     a: &DMatrix<f64>,
     eigenvalue: Complex<f64>,
-    tolerance: f64,
+    (tolerance, radius): (f64, f64),
     names: &[String],
     heading_rate: f64,
 ) -> Mode {
-    let radius = tolerance / GROWTH_TOLERANCE;
-    let im = eigenvalue.im;
+    let im = if eigenvalue.im.abs() <= tolerance {
+        0.0
+    } else {
+        eigenvalue.im
+    };
     let re = if eigenvalue.re.abs() <= tolerance {
         0.0
     } else {
@@ -161,13 +218,20 @@ fn mode(
         .filter(|(v, _)| largest > 0.0 && v.norm() >= 0.5 * largest)
         .map(|(_, name)| name.clone())
         .collect();
+    let in_space = frequency_in_space(&vector, names, im, heading_rate);
+    let period = |frequency: f64| (frequency.abs() > tolerance).then(|| TAU / frequency.abs());
     Mode {
         eigenvalue,
-        period_s: (im > 0.0).then(|| 2.0 * std::f64::consts::PI / im),
-        damping_ratio: (size > 0.0).then(|| -re / size),
+        period_s: match in_space {
+            Some(frequency) => period(frequency),
+            None => period(im),
+        },
+        period_in_turning_axes_s: in_space.and_then(|_| period(im)),
+        // + 0.0: an undamped mode's ratio is 0, not −0.
+        damping_ratio: (size > 0.0).then(|| -re / size + 0.0),
         time_to_double_s: (re > 0.0).then(|| ln2 / re),
         time_to_half_s: (re < 0.0).then(|| ln2 / -re),
-        frequency_in_space: frequency_in_space(&vector, names, im, heading_rate),
+        frequency_in_space: in_space,
         dominant,
         name: None,
     }

@@ -1,13 +1,13 @@
 //! A scene, linearised: the operating point its `[linear]` table names (by default
 //! its initial state), the states set aside, the trim, A, B and the modes.
 
-use super::modes::{Mode, Stability, modes};
+use super::modes::{Mode, Stability, growth_tolerance, modes};
 use super::plant::{LinearPlant, Plant};
 use super::reduce::set_aside;
 use super::trim::{Free, trim};
-use super::{EQUILIBRIUM_TOLERANCE, LinearError, rate_scale};
+use super::{EQUILIBRIUM_TOLERANCE, EULER_PITCH_LIMIT, LinearError, rate_scale};
 use crate::models::{AnyModel, Family, Kinematics};
-use crate::scene::{Body, Scene, euler_angles};
+use crate::scene::{Body, Scene, SceneLoads, euler_angles};
 use nalgebra::{Complex, DMatrix};
 
 /// What a `[linear]` table says, its names checked against the model's layout.
@@ -85,8 +85,12 @@ pub struct Linearisation {
     pub eigenvalues: Vec<Complex<f64>>,
     /// The modes.
     pub modes: Vec<Mode>,
-    /// The verdict.
-    pub stability: Stability,
+    /// The verdict, where one holds: `None` at a point that is not an equilibrium of the
+    /// reduced state, whose A describes no motion that stays near it.
+    pub stability: Option<Stability>,
+    /// The size below which a real part counted as zero, 1/s
+    /// ([`growth_tolerance`](super::modes::growth_tolerance)).
+    pub growth_tolerance: f64,
     /// What was done that the scene did not say (a quaternion top linearised in Euler angles).
     pub note: Option<String>,
 }
@@ -106,33 +110,75 @@ impl Linearisation {
     }
 }
 
-/// The model to linearise and its state: a quaternion top becomes the Euler-angle top of the
-/// same body, because a top spinning about its axis turns its quaternion steadily in every
-/// component and the gravity moment reads them all, so no part of the quaternion can be set
-/// aside; in Euler angles the spin is the heading ψ alone.
-fn model_and_state(scene: &Scene, state: Vec<f64>) -> (AnyModel, Vec<f64>, Option<String>) {
+/// The model to linearise, its state and the loads on it: a quaternion model becomes the
+/// Euler-angle model of the same body. A quaternion's four components hold three angles, so
+/// its norm would be a mode that means nothing (a zero eigenvalue that makes every verdict
+/// marginal), and a top spinning about its axis turns every component steadily while the
+/// gravity moment reads them all, so no part of the quaternion could be set aside; in Euler
+/// angles the spin is the heading ψ alone. A point within 1° of θ = ±90°, where Euler angles
+/// do not hold, is refused.
+fn model_and_state(scene: &Scene, state: Vec<f64>) -> Result<Linearised, LinearError> {
     let info = scene.selection.info;
-    match (&scene.body, info.kinematics) {
-        (
-            Body::Top {
-                mass,
-                inertia,
-                h,
-                g,
-            },
-            Some(Kinematics::Quaternion),
-        ) => {
-            let angles = euler_angles(Kinematics::Quaternion, &state[3..]);
-            let model = AnyModel::top(Kinematics::Euler, *mass, inertia, *h, *g)
-                .expect("checked when the scene was read");
-            let mut euler = state[..3].to_vec();
-            euler.extend(angles);
-            let note = "a quaternion top is linearised as the Euler-angle top of the same body \
-                        (its spin turns every component of the quaternion)";
-            (model, euler, Some(note.into()))
-        }
-        _ => (scene.model(), state, None),
+    let as_it_is = |state| Linearised {
+        model: scene.model(),
+        state,
+        loads: None,
+        note: None,
+    };
+    if info.kinematics != Some(Kinematics::Quaternion) {
+        return Ok(as_it_is(state));
     }
+    let (model, velocities) = match &scene.body {
+        Body::Top {
+            mass,
+            inertia,
+            h,
+            g,
+        } => (AnyModel::top(Kinematics::Euler, *mass, inertia, *h, *g), 3),
+        Body::Spatial { mass, inertia } => (
+            AnyModel::spatial(
+                info.symmetry.expect("a spatial model has a symmetry class"),
+                Kinematics::Euler,
+                *mass,
+                inertia,
+            ),
+            9,
+        ),
+        _ => return Ok(as_it_is(state)),
+    };
+    let model = model.expect("checked when the scene was read");
+    let angles = euler_angles(Kinematics::Quaternion, &state[velocities..]);
+    if angles[1].abs() > EULER_PITCH_LIMIT {
+        return Err(LinearError::NotFinite(format!(
+            "the pitch θ = {}° is within 1° of ±90°, where the Euler angles a quaternion scene \
+             is linearised in do not hold; linearise at another attitude (linear.at)",
+            angles[1].to_degrees()
+        )));
+    }
+    let mut euler = state[..velocities].to_vec();
+    euler.extend(angles);
+    let mut loads = scene.loads.clone();
+    if let SceneLoads::Spatial(spatial) = &mut loads {
+        spatial.kinematics = Kinematics::Euler;
+    }
+    let note = "a quaternion scene is linearised in the Euler angles of the same body (a \
+                quaternion's four components hold three angles: its norm would be a mode of \
+                no meaning)";
+    Ok(Linearised {
+        model,
+        state: euler,
+        loads: Some(loads),
+        note: Some(note.into()),
+    })
+}
+
+/// What a scene is linearised as: its model or the Euler-angle twin of a quaternion model.
+struct Linearised {
+    model: AnyModel,
+    state: Vec<f64>,
+    /// The loads read in the twin's layout, where they differ from the scene's.
+    loads: Option<SceneLoads>,
+    note: Option<String>,
 }
 
 /// Linearises a catalog scene about the point its `[linear]` table names: the initial state
@@ -146,13 +192,13 @@ pub fn linearise_scene(scene: &Scene) -> Result<Linearisation, LinearError> {
         (info.state, info.inputs, &[]),
         (&mut state, &mut extra),
     )?;
-    let (model, state, note) = model_and_state(scene, state);
+    let twin = model_and_state(scene, state)?;
     let plant = Plant {
-        model,
-        loads: &scene.loads,
+        model: twin.model,
+        loads: twin.loads.as_ref().unwrap_or(&scene.loads),
     };
-    let mut linearisation = linearise(&plant, (state, extra), &scene.linear.trim)?;
-    linearisation.note = note;
+    let mut linearisation = linearise(&plant, (twin.state, extra), &scene.linear.trim)?;
+    linearisation.note = twin.note;
     Ok(linearisation)
 }
 
@@ -228,14 +274,22 @@ pub fn linearise(
         Some(i) if family == Family::Top && set_aside.contains(&i) => at.rates[i],
         _ => 0.0,
     };
-    let (eigenvalues, modes, stability) = modes(&a, &names, plant.naming(), heading_rate);
+    let (eigenvalues, mut modes, stability) = modes(&a, &names, plant.naming(), heading_rate);
+    let equilibrium = residual.iter().all(|r| r.abs() <= tolerance);
+    if !equilibrium {
+        // Away from an equilibrium the eigenvalues of A describe no motion that stays near
+        // the point: no mode is named as if it were one.
+        modes.iter_mut().for_each(|mode| mode.name = None);
+    }
     Ok(Linearisation {
         model: plant.name(),
         family,
         state_names,
         input_names,
         inputs: plant.inputs(&state, &extra),
-        equilibrium: residual.iter().all(|r| r.abs() <= tolerance),
+        equilibrium,
+        stability: equilibrium.then_some(stability),
+        growth_tolerance: growth_tolerance(&a),
         state,
         reduced,
         set_aside,
@@ -245,7 +299,6 @@ pub fn linearise(
         b,
         eigenvalues,
         modes,
-        stability,
         note: None,
     })
 }

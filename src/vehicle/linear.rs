@@ -29,9 +29,6 @@ use nalgebra::DMatrix;
 /// The number of the twin's body states (ν, the position, φ, θ, ψ).
 pub(crate) const BODY: usize = 12;
 
-/// The pitch beyond which Euler angles are not read, rad: 1° from ±90°.
-const PITCH_LIMIT: f64 = std::f64::consts::FRAC_PI_2 - std::f64::consts::PI / 180.0;
-
 /// The fins, by their scene names as well as their state names.
 pub(crate) const ALIASES: [(&str, &str); 2] = [("rudder", "dr"), ("stern_planes", "ds")];
 
@@ -81,7 +78,7 @@ impl LinearPlant for VehiclePlant {
     }
 
     fn evaluate(&self, state: &[f64], extra: &[f64]) -> Result<Evaluation, LinearError> {
-        if state[10].abs() > PITCH_LIMIT {
+        if state[10].abs() > crate::linear::EULER_PITCH_LIMIT {
             return Err(LinearError::NotFinite(format!(
                 "the pitch θ = {}° is within 1° of ±90°, where Euler angles do not hold",
                 state[10].to_degrees()

@@ -9,7 +9,7 @@
 //! toolbox reads them) and `poles.svg`, into a folder taken as `eom run` takes one.
 
 use anyhow::Result;
-use eom::linear::{Linearisation, Mode, linearise_scene};
+use eom::linear::{Linearisation, Mode, Stability, linearise_scene};
 use eom::output::folder::{Claim, Writer};
 use eom::output::summary::write_atomically;
 use eom::scene::AnyScene;
@@ -35,7 +35,10 @@ pub struct Args {
 }
 
 /// The files `--out` writes.
-const FILES: [&str; 3] = ["A.csv", "B.csv", POLES];
+const FILES: [&str; 4] = ["A.csv", "B.csv", POLES, REPORT];
+
+/// The text report, as `eom linear` prints it.
+const REPORT: &str = "report.txt";
 
 /// Runs `eom linear`.
 pub fn run(args: Args) -> Result<()> {
@@ -44,12 +47,13 @@ pub fn run(args: Args) -> Result<()> {
         AnyScene::Vehicle(scene) => (scene.title.clone(), linearise_vehicle(&scene)?),
         AnyScene::Catalog(scene) => (scene.title.clone(), linearise_scene(&scene)?),
     };
-    write_out(&args, &title, &linear)?;
+    let text = text_report(&title, &linear);
+    write_out(&args, &title, &linear, &text)?;
     if args.json {
         let report = report(&title, &linear);
         println!("{}", serde_json::to_string_pretty(&report)?);
     } else {
-        print_text(&title, &linear);
+        print!("{text}");
         if let Some(out) = &args.out {
             println!("  written to {}/: {}", out.display(), FILES.join(", "));
         }
@@ -57,27 +61,35 @@ pub fn run(args: Args) -> Result<()> {
     Ok(())
 }
 
-/// With `--out`, A.csv, B.csv and poles.svg into a folder taken as `eom run` takes one.
-pub fn write_out(args: &Args, title: &str, linear: &Linearisation) -> Result<()> {
+/// With `--out`, A.csv, B.csv, poles.svg and the text report into a folder taken as `eom run`
+/// takes one.
+pub fn write_out(args: &Args, title: &str, linear: &Linearisation, text: &str) -> Result<()> {
     if let Some(out) = &args.out {
         let planned: Vec<String> = FILES.map(String::from).to_vec();
         let _claim = Claim::take(out, args.force, &Writer::Whole, &planned)?;
-        write_files(out, title, linear)?;
+        write_files(out, title, linear, text)?;
     }
     Ok(())
 }
 
-fn write_files(out: &Path, title: &str, linear: &Linearisation) -> Result<()> {
-    write_atomically(&out.join("A.csv"), csv(&linear.a).as_bytes())?;
-    write_atomically(&out.join("B.csv"), csv(&linear.b).as_bytes())?;
+fn write_files(out: &Path, title: &str, linear: &Linearisation, text: &str) -> Result<()> {
+    let reduced = linear.reduced_names();
+    write_atomically(&out.join("A.csv"), csv(&reduced, &linear.a).as_bytes())?;
+    write_atomically(
+        &out.join("B.csv"),
+        csv(&linear.input_names, &linear.b).as_bytes(),
+    )?;
     let poles: Vec<(f64, f64)> = linear.eigenvalues.iter().map(|l| (l.re, l.im)).collect();
-    write_pole_plot(out, title, &poles)?;
+    write_pole_plot(out, title, &poles, linear.growth_tolerance)?;
+    write_atomically(&out.join(REPORT), text.as_bytes())?;
     Ok(())
 }
 
-/// A matrix as CSV: one line per row, numbers in Rust's shortest round-trip form.
-fn csv(matrix: &eom::nalgebra::DMatrix<f64>) -> String {
-    let mut text = String::new();
+/// A matrix as CSV: a header row naming its columns, then one line per row, numbers in Rust's
+/// shortest round-trip form (the rows are the rates of the reduced state, in its order).
+fn csv(columns: &[&str], matrix: &eom::nalgebra::DMatrix<f64>) -> String {
+    let mut text = columns.join(",");
+    text.push('\n');
     for row in matrix.row_iter() {
         let cells: Vec<String> = row.iter().map(|v| format!("{v:e}")).collect();
         text.push_str(&cells.join(","));
@@ -125,8 +137,10 @@ pub fn report(title: &str, linear: &Linearisation) -> Value {
         "B": rows(&linear.b),
         "eigenvalues": linear.eigenvalues.iter().map(|l| json!({"re": l.re, "im": l.im})).collect::<Vec<_>>(),
         "modes": linear.modes.iter().map(mode_json).collect::<Vec<_>>(),
-        "stable": linear.stability != eom::linear::Stability::Unstable,
-        "stability": linear.stability.describe(),
+        "stable": linear.stability.and_then(Stability::is_stable),
+        "verdict": linear.stability.map(Stability::word),
+        "stability": verdict(linear),
+        "growth_tolerance_per_s": linear.growth_tolerance,
         "note": linear.note,
     })
 }
@@ -136,6 +150,7 @@ fn mode_json(mode: &Mode) -> Value {
         "re": mode.eigenvalue.re,
         "im": mode.eigenvalue.im,
         "period_s": mode.period_s,
+        "period_in_turning_axes_s": mode.period_in_turning_axes_s,
         "damping_ratio": mode.damping_ratio,
         "time_to_double_s": mode.time_to_double_s,
         "time_to_half_s": mode.time_to_half_s,
@@ -150,9 +165,11 @@ fn number(value: Option<f64>) -> String {
     value.map_or_else(|| "-".into(), |v| format!("{v:.6}"))
 }
 
-/// The report as text.
-pub fn print_text(title: &str, linear: &Linearisation) {
-    println!("{title}: linearised ({})", linear.model);
+/// The report as text, as `eom linear` prints it and `--out` keeps it.
+pub fn text_report(title: &str, linear: &Linearisation) -> String {
+    let mut out = String::new();
+    let text = &mut out;
+    line(text, format!("{title}: linearised ({})", linear.model));
     let point: Vec<String> = linear
         .state_names
         .iter()
@@ -160,88 +177,172 @@ pub fn print_text(title: &str, linear: &Linearisation) {
         .chain(linear.input_names.iter().zip(&linear.inputs))
         .map(|(n, v)| format!("{n} = {v:.6}"))
         .collect();
-    println!("  operating point: {}", point.join(", "));
+    line(text, format!("  operating point: {}", point.join(", ")));
     let set_aside = linear.set_aside_names();
     let aside = if set_aside.is_empty() {
         "nothing".to_owned()
     } else {
         set_aside.join(", ")
     };
-    println!(
-        "  reduced state: {}; set aside (they grow, or only integrate the rest): {aside}",
-        linear.reduced_names().join(", ")
+    line(
+        text,
+        format!(
+            "  reduced state: {}; set aside (they grow, or only integrate the rest): {aside}",
+            linear.reduced_names().join(", ")
+        ),
     );
     if let Some((values, steps)) = &linear.trimmed {
         let values: Vec<String> = values
             .iter()
             .map(|(n, v)| format!("{n} = {v:.9}"))
             .collect();
-        println!("  trimmed in {steps} Newton steps: {}", values.join(", "));
+        line(
+            text,
+            format!(
+                "  trimmed in {}: {}",
+                newton_steps(*steps),
+                values.join(", ")
+            ),
+        );
     }
-    print_equilibrium(linear);
+    print_equilibrium(text, linear);
     print_matrix(
+        text,
         "A",
         &linear.a,
         &linear.reduced_names(),
         &linear.reduced_names(),
     );
-    print_matrix("B", &linear.b, &linear.reduced_names(), &linear.input_names);
-    print_modes(linear);
-    println!("  verdict: {}", linear.stability.describe());
+    print_matrix(
+        text,
+        "B",
+        &linear.b,
+        &linear.reduced_names(),
+        &linear.input_names,
+    );
+    print_modes(text, linear);
+    line(text, format!("  verdict: {}", verdict(linear)));
     if let Some(note) = &linear.note {
-        println!("  note: {note}");
+        line(text, format!("  note: {note}"));
+    }
+    out
+}
+
+/// Appends `content` and a newline to `text`.
+pub fn line(text: &mut String, content: String) {
+    text.push_str(&content);
+    text.push('\n');
+}
+
+/// "1 Newton step", "2 Newton steps".
+fn newton_steps(steps: usize) -> String {
+    match steps {
+        1 => "1 Newton step".to_owned(),
+        n => format!("{n} Newton steps"),
     }
 }
 
-fn print_equilibrium(linear: &Linearisation) {
-    if linear.equilibrium {
-        println!("  the point is an equilibrium of the reduced state");
-        return;
+/// The verdict in words, or why there is none: at a point that is not an equilibrium, A
+/// describes no motion that stays near it.
+fn verdict(linear: &Linearisation) -> String {
+    match linear.stability {
+        Some(stability) => format!(
+            "{} (real parts within {:.1e} 1/s of zero count as zero)",
+            stability.describe(),
+            linear.growth_tolerance
+        ),
+        None => format!(
+            "none: the point is not an equilibrium ({}), so its modes say nothing of stability; \
+             name free variables in linear.trim to solve for one",
+            largest_residual(linear)
+        ),
     }
+}
+
+/// The reduced state's largest rate at the point, as `dx/dt = value`.
+fn largest_residual(linear: &Linearisation) -> String {
     let (index, rate) = linear
         .residual
         .iter()
         .enumerate()
         .max_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))
         .expect("the reduced state is not empty");
-    println!(
-        "  the point is NOT an equilibrium of the reduced state: d{}/dt = {rate:.6e} there \
-         (name free variables in linear.trim to solve for one)",
-        linear.reduced_names()[index]
-    );
+    format!("d{}/dt = {rate:.6e}", linear.reduced_names()[index])
 }
 
-fn print_matrix(name: &str, matrix: &eom::nalgebra::DMatrix<f64>, rows: &[&str], columns: &[&str]) {
-    println!(
-        "  {name} (rows: the rates of the reduced state; columns: {}):",
-        columns.join(", ")
+fn print_equilibrium(text: &mut String, linear: &Linearisation) {
+    let said = if linear.equilibrium {
+        "  the point is an equilibrium of the reduced state".to_owned()
+    } else {
+        format!(
+            "  the point is NOT an equilibrium of the reduced state: {} there",
+            largest_residual(linear)
+        )
+    };
+    line(text, said);
+}
+
+fn print_matrix(
+    text: &mut String,
+    name: &str,
+    matrix: &eom::nalgebra::DMatrix<f64>,
+    rows: &[&str],
+    columns: &[&str],
+) {
+    line(
+        text,
+        format!(
+            "  {name} (rows: the rates of the reduced state; columns: {}):",
+            columns.join(", ")
+        ),
     );
     for (row, label) in matrix.row_iter().zip(rows) {
         let cells: Vec<String> = row.iter().map(|v| format!("{v:>13.6e}")).collect();
-        println!("    {label:>10} {}", cells.join(" "));
+        line(text, format!("    {label:>10} {}", cells.join(" ")));
     }
 }
 
-fn print_modes(linear: &Linearisation) {
-    println!(
-        "  modes:\n    {:>28} {:>12} {:>10} {:>14} {:>12}  {:<18} name",
-        "eigenvalue [1/s]", "period [s]", "damping", "to double [s]", "to half [s]", "dominant"
+fn print_modes(text: &mut String, linear: &Linearisation) {
+    line(
+        text,
+        format!(
+            "  modes:\n    {:>28} {:>12} {:>10} {:>14} {:>12}  {:<18} name",
+            "eigenvalue [1/s]", "period [s]", "damping", "to double [s]", "to half [s]", "dominant"
+        ),
     );
     for mode in &linear.modes {
-        let l = mode.eigenvalue;
+        // + 0.0: a real part of −0 is printed as 0.
+        let l = mode.eigenvalue + eom::nalgebra::Complex::new(0.0, 0.0);
         let eigenvalue = if l.im > 0.0 {
             format!("{:.6e} ± {:.6e}i", l.re, l.im)
         } else {
             format!("{:.6e}", l.re)
         };
-        println!(
-            "    {eigenvalue:>28} {:>12} {:>10} {:>14} {:>12}  {:<18} {}",
-            number(mode.period_s),
-            number(mode.damping_ratio),
-            number(mode.time_to_double_s),
-            number(mode.time_to_half_s),
-            mode.dominant.join(", "),
-            mode.name.unwrap_or("")
+        line(
+            text,
+            format!(
+                "    {eigenvalue:>28} {:>12} {:>10} {:>14} {:>12}  {:<18} {}",
+                number(mode.period_s),
+                number(mode.damping_ratio),
+                number(mode.time_to_double_s),
+                number(mode.time_to_half_s),
+                mode.dominant.join(", "),
+                mode.name.unwrap_or("")
+            ),
+        );
+    }
+    let turning: Vec<String> = (linear.modes.iter())
+        .filter_map(|mode| Some((mode.name?, mode.period_in_turning_axes_s?)))
+        .map(|(name, period)| format!("{name} {period:.6} s"))
+        .collect();
+    if !turning.is_empty() {
+        line(
+            text,
+            format!(
+                "    periods as seen in space; in the axes of roll and pitch, which turn with \
+                 the heading: {}",
+                turning.join(", ")
+            ),
         );
     }
 }

@@ -730,7 +730,9 @@ pub fn linear(args: &super::linear::Args, scene: &ShipScene) -> Result<()> {
     let model = ShipModel::new(&scene.table)?;
     let linear = LinearModel::closed_form(&scene.table);
     let linearised = linearise_ship(scene, &model)?;
-    super::linear::write_out(args, &scene.title, &linearised)?;
+    let mut text = super::linear::text_report(&scene.title, &linearised);
+    text.push_str(&nomoto_report(scene, &model, &linear));
+    super::linear::write_out(args, &scene.title, &linearised, &text)?;
     if args.json {
         // Every scene's report, with the ship's Nomoto block beside it.
         let mut report = super::linear::report(&scene.title, &linearised);
@@ -742,43 +744,67 @@ pub fn linear(args: &super::linear::Args, scene: &ShipScene) -> Result<()> {
         println!("{}", serde_json::to_string_pretty(&report)?);
         return Ok(());
     }
-    super::linear::print_text(&scene.title, &linearised);
+    print!("{text}");
+    Ok(())
+}
+
+/// Nomoto's models, the course stability and the pivot point, as text.
+fn nomoto_report(scene: &ShipScene, model: &ShipModel, linear: &LinearModel) -> String {
+    use super::linear::line;
+    let mut text = String::new();
     let speed = scene.table.design_speed;
-    println!(
-        "{}: the linear model about the straight course at U₀ = {speed} m/s",
-        printable(&scene.title)
-    );
-    let show = |what: &str, nomoto: Option<Nomoto>| match nomoto {
-        Some(n) => println!(
-            "  {what:<34} K = {:.6e} 1/s, T₁ = {:.6} s, T₂ = {:.6} s, T₃ = {:.6} s, T = {:.6} s",
-            n.k, n.t1, n.t2, n.t3, n.t
+    line(
+        &mut text,
+        format!(
+            "{}: the linear model about the straight course at U₀ = {speed} m/s",
+            printable(&scene.title)
         ),
-        None => println!("  {what:<34} T₁ and T₂ are not real: no Nomoto form"),
+    );
+    let show = |text: &mut String, what: &str, nomoto: Option<Nomoto>| {
+        let said = match nomoto {
+            Some(n) => format!(
+                "  {what:<34} K = {:.6e} 1/s, T₁ = {:.6} s, T₂ = {:.6} s, T₃ = {:.6} s, T = {:.6} s",
+                n.k, n.t1, n.t2, n.t3, n.t
+            ),
+            None => format!("  {what:<34} T₁ and T₂ are not real: no Nomoto form"),
+        };
+        line(text, said);
     };
-    show("Nomoto, closed form:", linear.nomoto());
-    let (a, b) = linearise(&model, speed);
-    show("Nomoto, linearised model:", Nomoto::from_state_space(a, b));
+    show(&mut text, "Nomoto, closed form:", linear.nomoto());
+    let (a, b) = linearise(model, speed);
+    show(
+        &mut text,
+        "Nomoto, linearised model:",
+        Nomoto::from_state_space(a, b),
+    );
     if let Some(d) = nomoto_difference(linear.nomoto(), Nomoto::from_state_space(a, b)) {
-        println!("  {:<34} {d:.1e}", "largest relative difference:");
+        line(
+            &mut text,
+            format!("  {:<34} {d:.1e}", "largest relative difference:"),
+        );
     }
     let verdict = if linear.course_stable() {
         "stable"
     } else {
         "UNSTABLE"
     };
-    match linear.stability_index() {
-        Some(c) => println!(
+    let stability = match linear.stability_index() {
+        Some(c) => format!(
             "  course stability: C′ = Y′v(N′r − m′x′G) − (Y′r − m′)N′v = {c:.6e}: {verdict}"
         ),
-        None => println!(
+        None => format!(
             "  course stability: det N = {:.6e} (SI): {verdict}",
             linear.det_damping()
         ),
-    }
+    };
+    line(&mut text, stability);
     let pivot = linear.pivot_point();
-    println!(
-        "  pivot point: x_p = {pivot:.2} m ahead of midship ({:.3} L)",
-        pivot / scene.length
+    line(
+        &mut text,
+        format!(
+            "  pivot point: x_p = {pivot:.2} m ahead of midship ({:.3} L)",
+            pivot / scene.length
+        ),
     );
-    Ok(())
+    text
 }
