@@ -2,7 +2,7 @@
 //! sweep can, and a folder eom did not write (a user's, or `/` through a link) is left as it
 //! was.
 
-use eom_test_support::cli::{eom_command, folder, scene};
+use eom_test_support::cli::{eom, eom_command, folder, scene, succeeded};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 
@@ -256,4 +256,42 @@ fn force_replaces_an_earlier_run_whole() {
         std::fs::read_to_string(out.join("my-notes.txt")).unwrap(),
         "kept"
     );
+}
+
+/// Bare `eom` takes its folder as `eom run` takes one: it replaces an earlier default run, and
+/// refuses (exit 4, nothing touched) a folder of the user's own files or another scene's run,
+/// for it has no `--force` to be given.
+#[test]
+fn the_default_run_replaces_only_an_earlier_default_run() {
+    let dir = folder("default_run");
+    let out = dir.join("tennis_racket");
+    let bare = || eom_command().current_dir(&dir).output().unwrap();
+    // A user's own folder of that name.
+    std::fs::create_dir_all(&out).unwrap();
+    std::fs::write(out.join("notes.txt"), "mine").unwrap();
+    let refused = bare();
+    let stderr = String::from_utf8_lossy(&refused.stderr);
+    assert_eq!(refused.status.code(), Some(4), "{stderr}");
+    assert!(stderr.contains("files eom did not write"), "{stderr}");
+    let entries: Vec<_> = std::fs::read_dir(&out).unwrap().collect();
+    assert_eq!(entries.len(), 1, "only the user's file");
+    // Another scene's run there.
+    std::fs::remove_dir_all(&out).unwrap();
+    let pendulum = scene("pendulum.toml");
+    let pendulum = pendulum.to_str().unwrap();
+    succeeded(&eom(&["run", pendulum, "--out", out.to_str().unwrap()]));
+    let summary = std::fs::read_to_string(out.join("summary.json")).unwrap();
+    let refused = bare();
+    let stderr = String::from_utf8_lossy(&refused.stderr);
+    assert_eq!(refused.status.code(), Some(4), "{stderr}");
+    assert!(stderr.contains("another scene's run"), "{stderr}");
+    assert_eq!(
+        std::fs::read_to_string(out.join("summary.json")).unwrap(),
+        summary
+    );
+    // Its own earlier run it replaces, and says so.
+    std::fs::remove_dir_all(&out).unwrap();
+    succeeded(&bare());
+    let again = succeeded(&bare());
+    assert!(again.contains("replacing the default run"), "{again}");
 }

@@ -92,6 +92,7 @@ pub fn exit_code(error: &anyhow::Error) -> u8 {
         if cause
             .downcast_ref::<eom::output::folder::FolderError>()
             .is_some()
+            || cause.downcast_ref::<run::DefaultFolderTaken>().is_some()
         {
             return 4;
         }

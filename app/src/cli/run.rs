@@ -158,16 +158,18 @@ pub fn run_default() -> Result<()> {
     println!(
         "eom: no subcommand given, so running the default scene ({DEFAULT_NAME}); `eom --help` lists the others."
     );
-    // The default run writes over its own folder, so that the first command can be run again;
-    // it says so when there is a run to replace.
-    if out.join("summary.json").exists() {
+    // The default run writes over its own earlier run, so that the first command can be run
+    // again, and says so; any other folder is taken as `eom run` takes one (a user's files,
+    // another scene's run: refused, for there is no --force to give).
+    let replacing = holds_the_default_run(&out);
+    if replacing {
         println!(
             "eom: replacing the default run in {}/ (eom run SCENE keeps a run unless --force)",
             out.display()
         );
     }
     let options = Options {
-        force: true,
+        force: replacing,
         ..Options::default()
     };
     execute(
@@ -177,6 +179,50 @@ pub fn run_default() -> Result<()> {
         &out,
         options,
     )
+    .map_err(|error| match error.downcast_ref::<FolderError>() {
+        Some(FolderError::NotEoms(_)) => taken(&out, "files eom did not write"),
+        Some(FolderError::HoldsARun(_)) => taken(&out, "another scene's run"),
+        _ => error,
+    })
+}
+
+fn taken(folder: &Path, holds: &'static str) -> anyhow::Error {
+    DefaultFolderTaken {
+        folder: folder.to_owned(),
+        holds,
+    }
+    .into()
+}
+
+/// The default run's folder holds what the default run does not replace: it has no `--force`
+/// to give, so it is refused as `eom run` would refuse it without one (exit 4).
+#[derive(Debug, thiserror::Error)]
+#[error(
+    "the default run writes into {}/, which holds {holds}; it replaces only an earlier default \
+     run there, so run eom in another folder (or move that one)",
+    folder.display()
+)]
+pub struct DefaultFolderTaken {
+    /// The default run's folder.
+    folder: PathBuf,
+    /// What it holds.
+    holds: &'static str,
+}
+
+/// Whether `out` holds a run of the default scene: its summary names the default scene's file
+/// and title.
+fn holds_the_default_run(out: &Path) -> bool {
+    let read = |text: &str| serde_json::from_str::<serde_json::Value>(text).ok();
+    let Some(summary) = std::fs::read_to_string(out.join("summary.json"))
+        .ok()
+        .and_then(|text| read(&text))
+    else {
+        return false;
+    };
+    let title = toml::from_str::<toml::Table>(DEFAULT_SCENE)
+        .ok()
+        .and_then(|scene| scene.get("title")?.as_str().map(str::to_owned));
+    summary["scene"] == DEFAULT_NAME && summary["title"].as_str() == title.as_deref()
 }
 
 /// The folder named after the scene file, in the current directory.
