@@ -219,3 +219,66 @@ fn a_sweep_says_each_cases_values_and_its_shards_merge_into_the_whole_table() {
     );
     assert_eq!(table_lines(&sharded.join("sweep.csv")), lines);
 }
+
+/// A bad flag value exits 2 and names the flag as the user typed it (`--pivot-to-cg`, not the
+/// field `pivot_to_cg`); so does a pair of values that cannot go together.
+#[test]
+fn a_bad_flag_value_exits_2_naming_the_flag() {
+    let swing = |extra: &[&str]| {
+        let mut args = vec!["swing", "--period", "1.2", "--mass", "2.0"];
+        args.extend_from_slice(extra);
+        failing(&args)
+    };
+    for (flag, value) in [
+        ("--pivot-to-cg", "-1"),
+        ("--pivot-to-cg", "nan"),
+        ("--gravity", "0"),
+        ("--amplitude-deg", "190"),
+    ] {
+        let mut extra = vec![flag, value];
+        if flag != "--pivot-to-cg" {
+            extra.extend(["--pivot-to-cg", "0.2"]);
+        }
+        let (code, stderr) = swing(&extra);
+        assert_eq!(code, 2, "{flag} {value}: {stderr}");
+        assert!(stderr.contains(flag), "{flag} {value}: {stderr}");
+    }
+    let (code, stderr) = swing(&["--pivot-to-cg", "5.0"]);
+    assert_eq!(code, 2, "{stderr}");
+    assert!(
+        stderr.contains("--period") && stderr.contains("--pivot-to-cg"),
+        "{stderr}"
+    );
+}
+
+/// A full disk is a failure to write (exit 4), for a catalog scene, a ship and a vehicle alike:
+/// the write error reaches the exit code as the I/O error it is. The disk is a 64 KiB tmpfs,
+/// which needs the right to mount one (CI runs as root); without it the test says so and
+/// checks nothing.
+#[test]
+fn a_full_disk_exits_4() {
+    let dir = folder("full_disk");
+    let disk = dir.join("disk");
+    std::fs::create_dir_all(&disk).unwrap();
+    let mounted = std::process::Command::new("mount")
+        .args(["-t", "tmpfs", "-o", "size=64k", "tmpfs"])
+        .arg(&disk)
+        .output()
+        .is_ok_and(|o| o.status.success());
+    if !mounted {
+        eprintln!("a_full_disk_exits_4: cannot mount a tmpfs here; nothing checked");
+        return;
+    }
+    let mut codes = Vec::new();
+    for scene in ["tennis_racket.toml", "mariner.toml", "remus100.toml"] {
+        let out = disk.join(scene);
+        let (code, stderr) = failing(&["run", &scene_arg(scene), "--out", out.to_str().unwrap()]);
+        codes.push((scene, code, stderr));
+        let _ = std::fs::remove_dir_all(&out);
+    }
+    let _ = std::process::Command::new("umount").arg(&disk).output();
+    for (scene, code, stderr) in codes {
+        assert_eq!(code, 4, "{scene}: {stderr}");
+        assert!(stderr.contains("No space left"), "{scene}: {stderr}");
+    }
+}

@@ -125,6 +125,11 @@ impl TrajectoryWriter {
         self.error.as_ref()
     }
 
+    /// The first write error, taken whole (its kind kept: a full disk stays `StorageFull`).
+    pub fn take_error(&mut self) -> Option<std::io::Error> {
+        self.error.take()
+    }
+
     /// The rows gathered, handed to the file in one write.
     fn flush(&mut self) -> std::io::Result<()> {
         self.last_flush = Instant::now();

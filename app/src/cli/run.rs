@@ -470,12 +470,10 @@ fn run_case(
         writer.on_row(progress_bar(scene.integrator.end_time));
     }
     let ran = run_reporting(scene, &mut Interruptible(&mut writer));
-    let write_error = writer.error().map(|e| e.to_string());
-    let columns = writer.finish();
-    if let Some(error) = write_error {
-        bail!("writing {}: {error}", csv_path.display());
-    }
-    let columns = columns.with_context(|| format!("writing {}", csv_path.display()))?;
+    // The first write error, as an I/O error (exit 4), before anything the run says.
+    let columns = writer
+        .finish()
+        .with_context(|| format!("writing {}", csv_path.display()))?;
     let report = ran.report;
     if progress {
         for warning in &report.warnings {

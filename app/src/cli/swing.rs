@@ -9,19 +9,32 @@ use serde::Serialize;
 #[derive(clap::Args)]
 pub struct Args {
     /// The measured period T of the swing, in seconds.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_negative_numbers = true, value_parser = super::values::positive)]
     period: f64,
     /// The distance h from the pivot to the centre of gravity G, in metres.
-    #[arg(long = "pivot-to-cg", allow_negative_numbers = true)]
+    #[arg(
+        long = "pivot-to-cg",
+        allow_negative_numbers = true,
+        value_parser = super::values::positive
+    )]
     pivot_to_cg: f64,
     /// The mass M, in kilograms.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_negative_numbers = true, value_parser = super::values::positive)]
     mass: f64,
     /// The amplitude θ₀ of the swing, in degrees; without it, the small-swing formula (4.28).
-    #[arg(long = "amplitude-deg", allow_negative_numbers = true)]
+    #[arg(
+        long = "amplitude-deg",
+        allow_negative_numbers = true,
+        value_parser = super::values::amplitude_deg
+    )]
     amplitude_deg: Option<f64>,
     /// Gravity g, in m/s².
-    #[arg(long, default_value_t = STANDARD_GRAVITY, allow_negative_numbers = true)]
+    #[arg(
+        long,
+        default_value_t = STANDARD_GRAVITY,
+        allow_negative_numbers = true,
+        value_parser = super::values::positive
+    )]
     gravity: f64,
     /// Print JSON instead of text.
     #[arg(long)]
@@ -56,7 +69,11 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         gravity: args.gravity,
         amplitude: amplitude_deg.to_radians(),
     };
-    let result = test.solve()?;
+    // The flags are each checked when read; what is left is a period too short for the
+    // distance given, a usage error that names both flags.
+    let result = test
+        .solve()
+        .map_err(|error| super::run::Usage(format!("--period with --pivot-to-cg: {error}")))?;
     // What the small-swing formula alone would say, to show the size of the correction; it can
     // fail (κ ≤ h) where the corrected one does not, and then there is nothing to compare.
     let uncorrected = match args.amplitude_deg {

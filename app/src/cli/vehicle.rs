@@ -120,8 +120,8 @@ fn run_manoeuvre(
             writer.row(&row) && signal_received().is_none()
         },
     );
-    if let Some(error) = writer.error() {
-        return Err(anyhow::anyhow!("writing {}: {error}", path.display()));
+    if let Some(error) = writer.take_error() {
+        return Err(anyhow::Error::new(error).context(format!("writing {}", path.display())));
     }
     let done = done?;
     let columns = writer
