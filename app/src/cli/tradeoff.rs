@@ -2,7 +2,7 @@
 //! that meets a target error (see [`eom::run::tradeoff`]).
 
 use anyhow::{Context, Result, bail};
-use eom::run::tradeoff::{REPEATS, Tradeoff, TradeoffRow, tradeoff};
+use eom::run::tradeoff::{REPEATS, Recommendation, Tradeoff, TradeoffRow, tradeoff};
 use eom::scene::Scene;
 use serde_json::json;
 use std::path::PathBuf;
@@ -13,7 +13,7 @@ pub struct Args {
     /// The scene file (TOML).
     scene: PathBuf,
     /// The largest acceptable end-state error (relative; see the table's note).
-    #[arg(long, default_value_t = 1e-6)]
+    #[arg(long, default_value_t = 1e-6, value_parser = super::values::positive)]
     target: f64,
     /// Print JSON: {"target", "reference", "rows": [...], "recommended": {...}}.
     #[arg(long)]
@@ -22,28 +22,37 @@ pub struct Args {
 
 /// Runs `eom tradeoff`.
 pub fn run(args: Args) -> Result<()> {
-    if !(args.target.is_finite() && args.target > 0.0) {
-        bail!("--target must be positive and finite, got {}", args.target);
-    }
     super::serves::require_single_catalog(&args.scene)?;
     let scene = Scene::load(&args.scene)?;
     let result = tradeoff(&scene).context("running the reference")?;
-    let recommended = result.recommend(args.target);
+    let recommendation = result.recommend(args.target);
     if args.json {
         let value = json!({
             "target": args.target,
             "reference": result.reference,
+            "reference_spread": result.reference_spread(),
             "rows": result.rows.iter().map(row_json).collect::<Vec<_>>(),
-            "recommended": recommended.map(row_json),
+            "recommended": recommendation.setting().map(row_json),
+            "converged": !matches!(recommendation, Recommendation::NotConverged(_)),
+            "why_not": why_not(&recommendation, args.target),
         });
         println!("{}", serde_json::to_string_pretty(&value)?);
     } else {
-        print_table(&scene, &result, args.target, recommended);
+        print_table(&scene, &result, args.target, &recommendation);
     }
-    if recommended.is_none() {
-        bail!("no setting met the target error {:e}", args.target);
+    match why_not(&recommendation, args.target) {
+        Some(why) => bail!("{why}"),
+        None => Ok(()),
     }
-    Ok(())
+}
+
+/// Why no setting is recommended, if none is.
+fn why_not(recommendation: &Recommendation, target: f64) -> Option<String> {
+    match recommendation {
+        Recommendation::Setting(_) => None,
+        Recommendation::NotConverged(why) => Some(format!("no setting is recommended: {why}")),
+        Recommendation::NoneMeets => Some(format!("no setting met the target error {target:e}")),
+    }
 }
 
 fn row_json(row: &TradeoffRow) -> serde_json::Value {
@@ -57,13 +66,13 @@ fn row_json(row: &TradeoffRow) -> serde_json::Value {
     })
 }
 
-fn print_table(scene: &Scene, result: &Tradeoff, target: f64, recommended: Option<&TradeoffRow>) {
+fn print_table(scene: &Scene, result: &Tradeoff, target: f64, recommendation: &Recommendation) {
     println!(
         "{}: {} to t = {} s",
         scene.title, scene.selection.info.name, scene.integrator.end_time
     );
     println!(
-        "error: the largest end-state difference from {}, over max(1, the largest reference entry); time: best of {REPEATS}",
+        "the error is the largest end-state difference from {}, over max(1, the largest reference entry); the time is the best of {REPEATS}",
         result.reference
     );
     println!();
@@ -84,8 +93,8 @@ fn print_table(scene: &Scene, result: &Tradeoff, target: f64, recommended: Optio
         }
     }
     println!();
-    match recommended {
-        Some(row) => println!(
+    match recommendation {
+        Recommendation::Setting(row) => println!(
             "recommended for an error of at most {target:e}: {} with {} (error {:.2e}, {:.2e} s, {} rhs evals)",
             row.method,
             row.setting,
@@ -93,6 +102,9 @@ fn print_table(scene: &Scene, result: &Tradeoff, target: f64, recommended: Optio
             row.seconds,
             row.rhs_evals
         ),
-        None => println!("no setting meets an error of {target:e}"),
+        Recommendation::NotConverged(why) => {
+            println!("no setting is recommended for an error of {target:e}: {why}")
+        }
+        Recommendation::NoneMeets => println!("no setting meets an error of {target:e}"),
     }
 }
