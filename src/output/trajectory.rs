@@ -228,6 +228,14 @@ pub fn push_number(line: &mut Vec<u8>, number: &mut ryu::Buffer, x: f64) {
     }
 }
 
+/// `x` as every trajectory file writes a number ([`push_number`]): for the tables beside them
+/// (`sweep.csv`), so that one number reads the same in each.
+pub fn number_text(x: f64) -> String {
+    let mut line = Vec::new();
+    push_number(&mut line, &mut ryu::Buffer::new(), x);
+    String::from_utf8(line).expect("ryu writes ASCII")
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -21,7 +21,7 @@ use eom::Short;
 use eom::output::folder::{Claim, FolderError, Writer, sweep_identity};
 use eom::output::summary::{Extra, Summary, write_atomically};
 use eom::output::text::printable;
-use eom::output::trajectory::{Columns, TrajectoryWriter};
+use eom::output::trajectory::{Columns, TrajectoryWriter, number_text};
 use eom::run::{Report, Row, RunError, Sink, run_reporting};
 use eom::scene::sweep::{TableCase, is_swept, parse_shard, shard_tables};
 use eom::scene::{AnyScene, Body, Problem, Scene, SceneError};
@@ -444,8 +444,8 @@ fn writable_folder(out: &Path) -> Result<(), FolderError> {
 struct Outcome {
     report: Report,
     files: Vec<PathBuf>,
-    /// The family's own figures ([`family_measures`]).
-    measures: Vec<(&'static str, Option<f64>)>,
+    /// The family's own figures ([`family_measures`]), or why each is not given.
+    measures: Vec<(&'static str, Result<f64, String>)>,
 }
 
 /// Runs one scene into `out`, a folder already known to be writable: trajectory, summary,
@@ -499,8 +499,11 @@ fn run_case(
     }
     let measures = family_measures(scene, &columns);
     for (key, value) in &measures {
-        if let Some(value) = value {
-            summary.extra.insert((*key).into(), Extra::Number(*value));
+        match value {
+            Ok(value) => {
+                summary.extra.insert((*key).into(), Extra::Number(*value));
+            }
+            Err(why) => summary.warnings.push(format!("{key} is not given: {why}")),
         }
     }
     if let Some(case) = case {
@@ -580,15 +583,16 @@ fn family_measure_keys(scene: &Scene) -> &'static [&'static str] {
 }
 
 /// The family's figures: the pendulum's period, measured from the trajectory by the swing
-/// test's own measurement ([`eom::swing::measure_period`]); `None` where the run gives none
-/// (fewer than two swings).
-fn family_measures(scene: &Scene, columns: &Columns) -> Vec<(&'static str, Option<f64>)> {
+/// test's own measurement ([`eom::swing::measure_period`]); where the run gives none (fewer
+/// than two swings), why.
+fn family_measures(scene: &Scene, columns: &Columns) -> Vec<(&'static str, Result<f64, String>)> {
     family_measure_keys(scene)
         .iter()
         .map(|&key| {
             let value = match key {
-                "period_s" => eom::swing::measure_period(&columns.time, &columns.state[0]).ok(),
-                _ => None,
+                "period_s" => eom::swing::measure_period(&columns.time, &columns.state[0])
+                    .map_err(|e| e.to_string()),
+                _ => Err(format!("{key} is not a figure of this family")),
             };
             (key, value)
         })
@@ -810,15 +814,14 @@ fn sweep_table(scenes: &[(TableCase, Scene)], outcomes: &[Result<Outcome>]) -> S
                 row.extend([
                     r.steps.to_string(),
                     r.rhs_evals.to_string(),
-                    r.wall_seconds.to_string(),
+                    number_text(r.wall_seconds),
                 ]);
-                row.push(r.energy_drift.map_or_else(String::new, |d| d.to_string()));
-                row.extend(
-                    measures
-                        .iter()
-                        .map(|(_, v)| v.map_or_else(String::new, |v| v.to_string())),
-                );
-                row.extend(r.final_state.iter().map(f64::to_string));
+                row.push(r.energy_drift.map_or_else(String::new, number_text));
+                row.extend((measures.iter()).map(|(_, v)| {
+                    v.as_ref()
+                        .map_or_else(|_| String::new(), |v| number_text(*v))
+                }));
+                row.extend(r.final_state.iter().map(|x| number_text(*x)));
                 row.push(String::new());
             }
             Err(error) => {
