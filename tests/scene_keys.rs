@@ -582,3 +582,29 @@ fn a_bad_time_table_is_refused_naming_its_entry() {
         assert!(message.contains(expected), "{table}: {message}");
     }
 }
+
+/// An unknown key is told with the keys the scene's own family takes in that table, not every
+/// family's (serde's list is the table's whole union: a planar body was offered `i0`).
+#[test]
+fn an_unknown_key_lists_only_its_familys_keys() {
+    let text = "title = \"x\"\n[body]\nmass = 1.0\nizz = 2.0\nfoo = 1\n[model]\nfamily = \
+                \"planar-g\"\n[integrator]\nmethod = \"rk4\"\nstep = 0.1\nend_time = 1.0\n";
+    let error = eom::scene::Scene::parse(text, "x.toml", std::path::Path::new("."))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        error.contains("`body.foo`") && error.contains("planar-g scene's [body] takes mass, izz"),
+        "{error}"
+    );
+    assert!(!error.contains("i0"), "{error}");
+    // Through the reader of any kind (a sweep's case) the same.
+    let table: toml::Table = text.parse().unwrap();
+    let error = eom::scene::AnyScene::from_table(table, "x.toml", std::path::Path::new("."))
+        .err()
+        .unwrap()
+        .to_string();
+    assert!(
+        error.contains("takes mass, izz") && !error.contains("i0"),
+        "{error}"
+    );
+}

@@ -282,3 +282,13 @@ fn a_full_disk_exits_4() {
         assert!(stderr.contains("No space left"), "{scene}: {stderr}");
     }
 }
+
+/// `eom new` without a family is a usage error that lists the families it takes.
+#[test]
+fn eom_new_without_a_family_lists_the_families() {
+    let (code, stderr) = failing(&["new"]);
+    assert_eq!(code, 2, "{stderr}");
+    for family in ["pendulum", "spatial", "top", "ship", "vehicle"] {
+        assert!(stderr.contains(family), "{family}: {stderr}");
+    }
+}

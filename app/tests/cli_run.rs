@@ -451,10 +451,8 @@ fn a_sweep_runs_every_case_and_shards_split_them() {
     for (k, line) in table.lines().skip(1).enumerate() {
         // Numbers as trajectory.csv writes them: a small one in e-notation, not 0.0000…
         assert!(!line.contains("0.0000"), "{line}");
-        let summary = std::fs::read_to_string(
-            all.join(format!("case-{k:04}")).join("summary.json"),
-        )
-        .unwrap();
+        let summary =
+            std::fs::read_to_string(all.join(format!("case-{k:04}")).join("summary.json")).unwrap();
         let summary: serde_json::Value = serde_json::from_str(&summary).unwrap();
         // A period the run does not give (the 170° swing is slower than 2 s) says why.
         if line.split(',').nth(period) == Some("") {
@@ -1263,4 +1261,27 @@ fn the_thruster_burn_yaws_the_satellite_by_the_moment_of_its_offset() {
     // At rest until the burn starts at 1 s (row 100), pushed from then on.
     assert!(u[..=100].iter().all(|u| *u == 0.0) && u[101] > 0.0);
     check_svgs(&out, &["state.svg", "attitude.svg", "track.svg"]);
+}
+
+/// A path the run prints for the user to paste is quoted where a shell would split it.
+#[test]
+fn printed_paths_paste_into_a_shell() {
+    let dir = folder("pasteable");
+    let out = dir.join("my runs");
+    let output = eom_command()
+        .args(["run", scene("pendulum.toml").to_str().unwrap(), "--out"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    assert!(output.status.success(), "{stdout}");
+    let quoted = format!("'{}/view.html'", out.display());
+    assert!(
+        stdout.contains(&format!("open {quoted} in a browser")),
+        "{stdout}"
+    );
+    assert!(
+        stdout.contains(&format!("wrote into '{}':", out.display())),
+        "{stdout}"
+    );
 }

@@ -73,7 +73,9 @@ impl AnyScene {
         if table.contains_key(MODEL_TABLE) {
             return Self::defined_by_table(|| super::sweep::read_table(table, name), name);
         }
-        let file = super::sweep::read_table(table, name)?;
+        let family = super::family_named(&table);
+        let file = super::sweep::read_table(table, name)
+            .map_err(|error| super::keys_of_the_family(error, family))?;
         Ok(AnyScene::Catalog(Box::new(Scene::from_file(
             &file, name, base,
         )?)))

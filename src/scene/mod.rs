@@ -252,7 +252,41 @@ impl Scene {
 /// Reads scene text into its tables: a syntax error, an unknown key or a wrong type names the
 /// key's path.
 pub fn read(text: &str, name: &str) -> Result<SceneFile, SceneError> {
-    read_as(text, name)
+    read_as(text, name).map_err(|error| {
+        let family = toml::from_str::<toml::Table>(text)
+            .ok()
+            .and_then(|t| family_named(&t));
+        keys_of_the_family(error, family)
+    })
+}
+
+/// The catalog family a scene's table names in `model.family`, if it names one.
+pub(crate) fn family_named(table: &toml::Table) -> Option<Family> {
+    let name = table.get("model")?.get("family")?.as_str()?;
+    Family::ALL.into_iter().find(|f| f.name() == name)
+}
+
+/// An unknown key in a catalog scene's `[body]`, `[initial]`, `[loads]` or `[model]`, told
+/// with the keys the scene's own family takes there rather than every family's (serde lists
+/// the union of the table's fields).
+pub(crate) fn keys_of_the_family(mut error: SceneError, family: Option<Family>) -> SceneError {
+    let Problem::Schema(message) = &error.problem else {
+        return error;
+    };
+    let Some((table, key)) = error.key.split_once('.') else {
+        return error;
+    };
+    if let (Some(family), true) = (family, message.starts_with("unknown field")) {
+        let allowed = reference::table_keys(family, table);
+        if !allowed.is_empty() {
+            error.problem = Problem::Schema(format!(
+                "unknown field `{key}`; a {} scene's [{table}] takes {}",
+                family.name(),
+                allowed.join(", ")
+            ));
+        }
+    }
+    error
 }
 
 /// Reads TOML text into any table type, each error named by its key path: the one reader of

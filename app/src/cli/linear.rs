@@ -55,7 +55,8 @@ pub fn run(args: Args) -> Result<()> {
     } else {
         print!("{text}");
         if let Some(out) = &args.out {
-            println!("  written to {}/: {}", out.display(), FILES.join(", "));
+            let out = eom_cli::shell_path(out);
+            println!("  written to {out}: {}", FILES.join(", "));
         }
     }
     Ok(())

@@ -69,7 +69,7 @@ pub fn run(args: Args) -> Result<()> {
     println!(
         "merged {count} shards, {} cases, into {}",
         rows.len(),
-        path.display()
+        eom_cli::shell_path(&path)
     );
     Ok(())
 }

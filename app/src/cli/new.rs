@@ -13,7 +13,7 @@ use eom::scene::reference::{SceneFamily, markdown, template};
 #[derive(clap::Args)]
 pub struct Args {
     /// The family to write a template of.
-    #[arg(value_parser = family(), required_unless_present = "reference")]
+    #[arg(value_parser = family())]
     family: Option<SceneFamily>,
     /// Print the reference of every key of every family (Markdown; docs/scenes.md) instead.
     #[arg(long, conflicts_with = "family")]
@@ -27,11 +27,23 @@ fn family() -> impl TypedValueParser<Value = SceneFamily> {
         .map(|name| SceneFamily::from_name(&name).expect("clap accepts only the families' names"))
 }
 
-/// Runs `eom new`: the template or the page, to standard output.
+/// Runs `eom new`: the template or the page, to standard output; without either, a usage
+/// error that lists the families (clap's own "required argument" names none of them).
 pub fn run(args: Args) -> Result<()> {
-    let text = match args.family {
-        Some(family) => template(family),
-        None => markdown(),
+    let text = match (args.family, args.reference) {
+        (Some(family), _) => template(family),
+        (None, true) => markdown(),
+        (None, false) => {
+            let families: Vec<String> = (SceneFamily::ALL.iter())
+                .map(|f| format!("  {:<16} {}", f.name(), f.doc()))
+                .collect();
+            let message = format!(
+                "eom new takes the family to write a template of (or --reference):\n{}\n\
+                 for example: eom new spatial > my_body.toml",
+                families.join("\n")
+            );
+            return Err(super::run::Usage(message).into());
+        }
     };
     print!("{text}");
     Ok(())

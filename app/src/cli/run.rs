@@ -28,6 +28,7 @@ use eom::scene::{AnyScene, Body, Problem, Scene, SceneError};
 use eom::ship::ShipScene;
 use eom::vehicle::VehicleScene;
 use eom_cli::plots::PLOT_FILES;
+use eom_cli::shell_path;
 use eom_cli::view::VIEW_FILE;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
@@ -694,7 +695,7 @@ fn print_outcome(scene: &Scene, outcome: &Outcome, out: &Path) {
         );
     }
 
-    println!("  wrote into {}:", out.display());
+    println!("  wrote into {}:", shell_path(out));
     for file in &outcome.files {
         println!(
             "    {}",
@@ -707,7 +708,7 @@ fn print_outcome(scene: &Scene, outcome: &Outcome, out: &Path) {
         .iter()
         .find(|f| f.extension().is_some_and(|e| e == "html"))
     {
-        println!("  open {} in a browser to see the run", view.display());
+        println!("  open {} in a browser to see the run", shell_path(view));
     }
 }
 
@@ -754,8 +755,8 @@ fn finish_sweep(
     let cases = failures.len();
     println!(
         "{name}: {cases} cases in {}, {failed} failed; one line per case in {}",
-        out.display(),
-        file.display()
+        shell_path(out),
+        shell_path(&file)
     );
     for (index, error) in failures {
         if let Some(error) = error {

@@ -722,7 +722,7 @@ fn print_report(scene: &ShipScene, outcomes: &[Runs], judged: &[Criterion], out:
             }
         }
     }
-    println!("  written to {}/", out.display());
+    println!("  written to {}", eom_cli::shell_path(out));
 }
 
 /// Runs `eom linear` on a ship scene: Nomoto's models about the straight course.

@@ -232,7 +232,7 @@ fn print_report(scene: &VehicleScene, summary: &VehicleSummary, outcomes: &[Outc
             println!("    {line}");
         }
     }
-    println!("  written to {}/", out.display());
+    println!("  written to {}", eom_cli::shell_path(out));
 }
 
 /// How the autopilots answered each change of what they hold.
