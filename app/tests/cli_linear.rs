@@ -147,6 +147,10 @@ fn a_trim_that_does_not_converge_says_so_and_exits_5() {
     let stderr = String::from_utf8_lossy(&output.stderr);
     assert_eq!(output.status.code(), Some(5), "{stderr}");
     assert!(stderr.contains("the trim did not converge"), "{stderr}");
+    // It names the state whose rate is left, says it once, and counts its steps in English.
+    assert!(stderr.contains("dtheta/dt is still"), "{stderr}");
+    assert_eq!(stderr.matches("did not converge").count(), 1, "{stderr}");
+    assert!(!stderr.contains("1 Newton steps"), "{stderr}");
 }
 
 #[test]

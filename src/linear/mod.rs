@@ -38,17 +38,20 @@ use thiserror::Error;
 pub enum LinearError {
     /// Newton on the reduced state did not bring its rates to zero.
     #[error(
-        "the trim did not converge: after {iterations} Newton steps on {variables} the \
-         reduced state's rates are still {residual:.6e} (largest; tolerance {tolerance:.1e}). \
+        "the trim did not converge: after {} on {variables}, d{state}/dt is still \
+         {residual:.6e} (the largest of the reduced state's rates; tolerance {tolerance:.1e}). \
          The free variables may not be able to hold this point in equilibrium; name others \
-         in linear.trim or start closer in linear.at"
+         in linear.trim or start closer in linear.at",
+        newton_steps(*iterations)
     )]
     NoConvergence {
         /// The steps taken.
         iterations: usize,
         /// The free variables, as the table names them.
         variables: String,
-        /// The largest rate left.
+        /// The state entry whose rate is the largest left.
+        state: String,
+        /// Its rate.
         residual: f64,
         /// The tolerance it had to meet.
         tolerance: f64,
@@ -60,6 +63,14 @@ pub enum LinearError {
     /// A name in `[linear]` that is neither a state entry nor an input of the model.
     #[error("`{0}` is neither a state entry nor an input of the model linearised")]
     Unknown(String),
+}
+
+/// "1 Newton step", "2 Newton steps".
+pub fn newton_steps(steps: usize) -> String {
+    match steps {
+        1 => "1 Newton step".to_owned(),
+        n => format!("{n} Newton steps"),
+    }
 }
 
 /// The tolerance of an equilibrium: a rate below `EQUILIBRIUM_TOLERANCE · (1 + max|x|)`

@@ -60,11 +60,15 @@ pub fn trim(
                 iterations: iteration,
             });
         }
-        let fail = || LinearError::NoConvergence {
-            iterations: iteration,
-            variables: names.to_owned(),
-            residual: size,
-            tolerance,
+        let fail = || {
+            let largest = residual.iamax();
+            LinearError::NoConvergence {
+                iterations: iteration,
+                variables: names.to_owned(),
+                state: plant.state_names()[reduced[largest]].to_owned(),
+                residual: residual[largest],
+                tolerance,
+            }
         };
         if iteration == MAX_ITERATIONS {
             return Err(fail());

@@ -9,7 +9,7 @@
 //! toolbox reads them) and `poles.svg`, into a folder taken as `eom run` takes one.
 
 use anyhow::Result;
-use eom::linear::{Linearisation, Mode, Stability, linearise_scene};
+use eom::linear::{Linearisation, Mode, Stability, linearise_scene, newton_steps};
 use eom::output::folder::{Claim, Writer};
 use eom::output::summary::write_atomically;
 use eom::scene::AnyScene;
@@ -233,14 +233,6 @@ pub fn text_report(title: &str, linear: &Linearisation) -> String {
 pub fn line(text: &mut String, content: String) {
     text.push_str(&content);
     text.push('\n');
-}
-
-/// "1 Newton step", "2 Newton steps".
-fn newton_steps(steps: usize) -> String {
-    match steps {
-        1 => "1 Newton step".to_owned(),
-        n => format!("{n} Newton steps"),
-    }
 }
 
 /// The verdict in words, or why there is none: at a point that is not an equilibrium, A
