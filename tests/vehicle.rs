@@ -1,5 +1,5 @@
 //! The vehicle at run time: REMUS on Prestero's table (`scenes/remus100.toml`) against the
-//! shared data, its cruise against the closed forms, the turn of the thesis's Chapter 8 test,
+//! published data (`data/remus100_prestero.json`), its cruise against the closed forms, the turn of the thesis's Chapter 8 test,
 //! the mirror of port and starboard turns, the proved Jacobian with the chain rule through
 //! |x|, the folded table against its added mass, and bad tables each refused by key.
 
@@ -30,10 +30,7 @@ fn remus() -> VehicleScene {
 }
 
 fn data() -> serde_json::Value {
-    let path = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../shared/data/remus100_prestero.json"
-    );
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/data/remus100_prestero.json");
     serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
 }
 
@@ -48,7 +45,7 @@ fn run_with(
 }
 
 #[test]
-fn the_remus_scene_holds_the_shared_data_bit_for_bit() {
+fn the_remus_scene_holds_the_published_data_bit_for_bit() {
     let scene = remus();
     let data = data();
     let number = |v: &serde_json::Value| v.as_f64().unwrap();

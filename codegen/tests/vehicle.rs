@@ -3,7 +3,7 @@
 //! table, the REMUS model proved and emitted, the folded table against its added mass, and the
 //! mass matrix's numeric checks.
 //!
-//! The REMUS numbers (`../shared/data/remus100_prestero.json`, beside the repository) are
+//! The REMUS numbers (`data/remus100_prestero.json`, its sources in `data/README.md`) are
 //! Prestero's (2001, Appendix B) as his public transcriptions give them; the thesis itself was
 //! not read.
 
@@ -148,11 +148,8 @@ fn every_single_term_mutant_of_the_vehicle_proofs_is_caught() {
 // The names of a table.
 
 fn remus() -> serde_json::Value {
-    // The crate's tests run in codegen/; the shared data sit beside the repository.
-    let path = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../../shared/data/remus100_prestero.json"
-    );
+    // The crate's tests run in codegen/; the published data are in the repository's data/.
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../data/remus100_prestero.json");
     let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{path}: {e}"));
     serde_json::from_str(&text).unwrap()
 }
