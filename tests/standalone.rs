@@ -54,7 +54,12 @@ fn no_tracked_file_names_a_folder_beside_the_repository() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let files = tracked_files(root);
     // The listing is this repository's: its own sources, docs and published tables are in it.
-    for own in ["src/lib.rs", "tests/standalone.rs", "data/README.md", "docs/equations.md"] {
+    for own in [
+        "src/lib.rs",
+        "tests/standalone.rs",
+        "data/README.md",
+        "docs/equations.md",
+    ] {
         assert!(files.iter().any(|f| f == own), "{own} is not tracked");
     }
     let found = lines_holding(root, &files, BESIDE);
