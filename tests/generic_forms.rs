@@ -1,4 +1,4 @@
-//! The generic forms checked against each other and against physics (DESIGN.md, lines of
+//! The generic forms checked against each other and against physics (ARCHITECTURE.md, lines of
 //! evidence 3 and 4): space-fixed vs body-fixed planar, origin at G vs at midship, Euler
 //! angles vs quaternions, spatial confined to the plane vs planar, conservation of energy and
 //! angular momentum, the work–energy theorem, and refusal of bad parameters.

@@ -388,9 +388,8 @@ fn port_and_starboard_turns_mirror_each_other() {
 /// The Mariner scene's numbers are the published ones, bit for bit.
 #[test]
 fn the_mariner_scene_holds_the_published_table() {
-    let path = "../shared/data/mariner.json";
-    let text = std::fs::read_to_string(path)
-        .unwrap_or_else(|e| panic!("{path}: {e} (the published data sit beside the repository)"));
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/data/mariner.json");
+    let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{path}: {e}"));
     let data: serde_json::Value = serde_json::from_str(&text).unwrap();
     let scene_text = std::fs::read_to_string("scenes/mariner.toml").unwrap();
     let file: toml::Table = toml::from_str(&scene_text).unwrap();

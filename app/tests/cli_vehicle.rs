@@ -65,18 +65,32 @@ fn remus_runs_its_rudder_steps_into_a_folder() {
         assert!(out.join("rudder_4").join(plot).is_file(), "{plot}");
     }
     // The run in 3-D: the solid cylinder of REMUS's mass and moments about G (I_xx = M R²/2,
-    // I_yy = M(3R² + L²)/12), every row of the trajectory, in every manoeuvre's folder.
+    // I_yy = M(3R² + L²)/12, the mean of the two transverse moments), every row of the
+    // trajectory, in every manoeuvre's folder.
     let view = std::fs::read_to_string(out.join("rudder_4/view.html")).unwrap();
-    let (mass, axial, transverse) = (30.48_f64, 0.177, 3.45);
+    let (mass, axial, transverse) = remus_moments_about_g();
     let r2 = 2.0 * axial / mass;
-    let length = (12.0 * transverse / mass - 3.0 * r2).sqrt();
-    assert!(
-        view.contains(&format!(
-            "\"shape\":{{\"kind\":\"cylinder\",\"length\":{length:?},\"diameter\":{:?}",
-            2.0 * r2.sqrt()
-        )),
-        "the view draws REMUS's cylinder"
+    let (length, diameter) = (
+        (12.0 * transverse / mass - 3.0 * r2).sqrt(),
+        2.0 * r2.sqrt(),
     );
+    let drawn = |key: &str| -> f64 {
+        let at = view
+            .find("\"shape\":{\"kind\":\"cylinder\"")
+            .expect("a cylinder");
+        let from = at + view[at..].find(&format!("\"{key}\":")).unwrap() + key.len() + 3;
+        let to = from + view[from..].find([',', '}']).unwrap();
+        view[from..to].parse().unwrap()
+    };
+    // The view turns the tensor about O into the one about G and into principal axes: a few
+    // roundings of numbers of order 1.
+    for (key, expected) in [("length", length), ("diameter", diameter)] {
+        let value = drawn(key);
+        assert!(
+            (value - expected).abs() < 1e-12 * expected,
+            "the view draws REMUS's cylinder {key} {value} against {expected}"
+        );
+    }
     assert!(view.contains("\"rows\":801"));
     for manoeuvre in summary["manoeuvre"].as_object().unwrap().keys() {
         assert!(
@@ -123,4 +137,20 @@ fn eom_linear_linearises_a_vehicle_at_its_cruise_and_writes_its_matrices() {
         "{csv}"
     );
     assert!(out.join("B.csv").is_file() && out.join("poles.svg").is_file());
+}
+
+/// REMUS's mass and its moments about G, along its axis and across it (the mean of the two),
+/// from the tensor about O its scene gives, by Steiner (4.23): I_G = I_O − M(|r_G|² 𝟙 − r_G r_Gᵀ).
+fn remus_moments_about_g() -> (f64, f64, f64) {
+    let path = std::path::PathBuf::from(scene_arg("remus100.toml"));
+    let text = std::fs::read_to_string(&path).unwrap();
+    let table = match eom::scene::AnyScene::parse(&text, "remus100.toml", path.parent().unwrap()) {
+        Ok(eom::scene::AnyScene::Vehicle(scene)) => scene.table,
+        _ => panic!("remus100.toml is read as a vehicle"),
+    };
+    assert_eq!(table.inertia_about, eom::vehicle::InertiaAbout::Origin);
+    let (m, r, i) = (table.mass, table.centre_of_gravity, table.inertia);
+    let squared: f64 = r.iter().map(|x| x * x).sum();
+    let about_g = |k: usize| i[k][k] - m * (squared - r[k] * r[k]);
+    (m, about_g(0), (about_g(1) + about_g(2)) / 2.0)
 }

@@ -3,7 +3,7 @@
 //! table, the REMUS model proved and emitted, the folded table against its added mass, and the
 //! mass matrix's numeric checks.
 //!
-//! The REMUS numbers (`../shared/data/remus100_prestero.json`, beside the repository) are
+//! The REMUS numbers (`data/remus100_prestero.json`, its sources in `data/README.md`) are
 //! Prestero's (2001, Appendix B) as his public transcriptions give them; the thesis itself was
 //! not read.
 
@@ -148,10 +148,10 @@ fn every_single_term_mutant_of_the_vehicle_proofs_is_caught() {
 // The names of a table.
 
 fn remus() -> serde_json::Value {
-    // The crate's tests run in codegen/; the shared data sit beside the repository.
+    // The crate's tests run in codegen/; the published data are in the repository's data/.
     let path = concat!(
         env!("CARGO_MANIFEST_DIR"),
-        "/../../shared/data/remus100_prestero.json"
+        "/../data/remus100_prestero.json"
     );
     let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{path}: {e}"));
     serde_json::from_str(&text).unwrap()
@@ -253,7 +253,8 @@ fn remus_spec(kinematics: Kinematics, coriolis: AddedMassCoriolis) -> VehicleSpe
     VehicleSpec {
         units: Units::Dimensional,
         kinematics,
-        inertia: InertiaAbout::Gravity,
+        // Prestero's moments are about O, the centre of buoyancy (data/README.md).
+        inertia: InertiaAbout::Origin,
         symmetry: Symmetry::Principal,
         convention: Convention::Prestero,
         controls: controls(),
@@ -281,10 +282,7 @@ fn remus_values() -> BTreeMap<String, f64> {
     let number = |v: &serde_json::Value| v.as_f64().unwrap();
     values.insert("M".into(), number(&body["mass_kg"]));
     for axis in ["Ixx", "Iyy", "Izz"] {
-        values.insert(
-            format!("{axis}_G"),
-            number(&body["inertia_about_G_kg_m2"][axis]),
-        );
+        values.insert(axis.into(), number(&body["inertia_about_O_kg_m2"][axis]));
     }
     for (i, axis) in ["x", "y", "z"].iter().enumerate() {
         values.insert(format!("{axis}_G"), number(&body["centre_of_gravity_m"][i]));
@@ -429,7 +427,7 @@ fn a_mass_matrix_that_is_not_positive_definite_is_refused_naming_its_entries() {
         "{text}"
     );
     assert!(
-        text.contains("Kpdot = 1") && text.contains("Ixx_G = 0.177"),
+        text.contains("Kpdot = 1") && text.contains("Ixx = 0.177"),
         "{text}"
     );
 }

@@ -69,7 +69,8 @@ fn mariner_spec() -> ShipSpec {
 
 /// REMUS 100 as `eom` builds a vehicle scene's model (`eom::vehicle::model::spec`): the
 /// added-mass entries and the terms `scenes/remus100.toml` names, read as Prestero writes
-/// them, in SI; quaternions; the inertia about G along the body axes; the fins `dr` and `ds`;
+/// them, in SI; quaternions; the principal moments of inertia about the point the scene's
+/// `body.inertia_about` names (G by default; Prestero's are about O); the fins `dr` and `ds`;
 /// the table's cross terms holding Kirchhoff's terms; the propeller's thrust and torque
 /// constant. The test `three_forms` holds this model to `eom`'s of the scene, bit for bit.
 fn remus_spec(scene: &Path) -> Result<VehicleSpec, String> {
@@ -84,10 +85,16 @@ fn remus_spec(scene: &Path) -> Result<VehicleSpec, String> {
         // Sorted, as eom's table keeps them.
         Ok(table.keys().cloned().collect())
     };
+    let about = scene.get("body").and_then(|body| body.get("inertia_about"));
+    let inertia = match about.map(|a| a.as_str()) {
+        None | Some(Some("G")) => InertiaAbout::Gravity,
+        Some(Some("origin")) => InertiaAbout::Origin,
+        Some(other) => return Err(format!("body.inertia_about: {other:?} is not G or origin")),
+    };
     Ok(VehicleSpec {
         units: Units::Dimensional,
         kinematics: Kinematics::Quaternion,
-        inertia: InertiaAbout::Gravity,
+        inertia,
         symmetry: Symmetry::Principal,
         convention: Convention::Prestero,
         controls: vec!["dr".into(), "ds".into()],

@@ -7,11 +7,11 @@ so the sway equation carries -m'(1 + u')r' where 4.46 has -M u r, i.e. u/U taken
 prints the 35 degree turning circle's advance, transfer and tactical diameter (RK4, 0.05 s,
 crossings by linear interpolation) beside which `eom run scenes/mariner.toml` gives the same
 figures for the converted table; the difference is that approximation, as the ship slows in
-the turn. Reads ../shared/data/mariner.json beside the repository.
+the turn. Reads the published table, data/mariner.json.
 """
 import json, math, os
 here = os.path.dirname(os.path.abspath(__file__))
-d = json.load(open(os.path.join(here, '..', '..', '..', 'shared', 'data', 'mariner.json')))
+d = json.load(open(os.path.join(here, '..', '..', 'data', 'mariner.json')))
 c=d['coefficients_prime']; L=d['length_m']; U0=d['design_speed_m_s']
 m=d['mass_prime']['m']; Iz=d['mass_prime']['Iz']; xG=d['mass_prime']['xG']
 g=lambda k: c[k]

@@ -163,8 +163,8 @@ pub(super) static KEYS: &[Key] = &[
         default: "G",
         description: "The point body.inertia is about: G, carried to O by Steiner (4.23), or \
                       the table's origin O, used as given.",
-        example: "\"G\"",
-        shown: Shown::Commented,
+        // Prestero's REMUS moments are about O (data/README.md).
+        example: "\"origin\"",
         ..Key::BLANK
     },
     Key {
