@@ -968,3 +968,13 @@ fn a_fin_s_rate_limit_is_an_event_of_the_run() {
     assert!(d1 / d2 > 8.0, "{d1:e} / {d2:e}");
     assert!(d2 < 1e-6, "{d2:e}");
 }
+
+#[test]
+fn a_count_in_a_message_takes_its_noun_s_number() {
+    let one = parse(&edited(
+        "rudder_deg = [4.0, -4.0, 0.0]",
+        "rudder_deg = [4.0]",
+    ))
+    .unwrap_err();
+    assert!(one.contains("1 value for 3 times"), "{one}");
+}

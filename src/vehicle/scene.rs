@@ -95,12 +95,12 @@ use super::propeller::PropellerLaw;
 use super::table::{PrimeScales, PropellerSetting, VehicleTable};
 use super::trial::{Plane, Trial};
 use super::{AddedMassCoriolis, Convention, InertiaAbout, VehicleError};
-use crate::InertiaTensor;
 use crate::integrate::Stepper;
 use crate::models::Model;
 use crate::scene::check::Checker;
 use crate::scene::{Problem, SceneError};
 use crate::ship::scene::{IntegratorTable, OutputTable, RudderTable};
+use crate::{InertiaTensor, counted};
 use nalgebra::Matrix3;
 use serde::Deserialize;
 use std::collections::BTreeMap;
@@ -547,8 +547,8 @@ impl Checker<'_> {
                 return Err(self.invalid(
                     &key(k),
                     format!(
-                        "{} entries, one per strip: stations has {count}",
-                        values.len()
+                        "{}, one per strip: stations has {count}",
+                        counted(values.len(), "entry", "entries")
                     ),
                 ));
             }
@@ -819,7 +819,9 @@ impl Checker<'_> {
             return Ok(None);
         };
         if values.len() != n {
-            return Err(self.invalid(key, format!("{} values for {n} times", values.len())));
+            let given = counted(values.len(), "value", "values");
+            let times = counted(n, "time", "times");
+            return Err(self.invalid(key, format!("{given} for {times}")));
         }
         for (i, v) in values.iter().enumerate() {
             self.finite(&format!("{key}[{i}]"), *v)?;

@@ -12,7 +12,6 @@
 
 use super::run::{Interrupted, signal_received};
 use anyhow::{Context, Result};
-use eom::Model;
 use eom::output::summary::write_atomically;
 use eom::output::text::printable;
 use eom::output::trajectory::{Columns, TrajectoryWriter};
@@ -25,6 +24,7 @@ use eom::vehicle::summary::{
 };
 use eom::vehicle::trial::{TrialFigures, largest_trial_difference};
 use eom::vehicle::{VehicleError, VehicleScene, format_folded};
+use eom::{Model, counted};
 use eom_cli::plots::vehicle::{VehiclePlot, write_vehicle_plots};
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -73,8 +73,8 @@ pub fn execute(scene: &VehicleScene, out: &Path) -> Result<()> {
         Some(signal) => Err(Interrupted {
             signal,
             kept: format!(
-                "the {} manoeuvres finished before it, and summary.json, in {}",
-                outcomes.len(),
+                "the {} finished before it, and summary.json, in {}",
+                counted(outcomes.len(), "manoeuvre", "manoeuvres"),
                 out.display()
             ),
         }
