@@ -978,3 +978,94 @@ fn a_count_in_a_message_takes_its_noun_s_number() {
     .unwrap_err();
     assert!(one.contains("1 value for 3 times"), "{one}");
 }
+
+/// REMUS with `payload` kg more mass and weight (W = M · 9.81 N, to 0.1 N), G at `x_g` m.
+fn with_payload(payload: f64, x_g: f64) -> String {
+    let mass = 30.48 + payload;
+    let weight = (mass * 9.81 * 10.0).round() / 10.0;
+    edited("mass = 30.48 ", &format!("mass = {mass} "))
+        .replacen("weight = 299.0 ", &format!("weight = {weight} "), 1)
+        .replacen(
+            "centre_of_gravity = [0.0, 0.0, 0.0196]",
+            &format!("centre_of_gravity = [{x_g}, 0.0, 0.0196]"),
+            1,
+        )
+}
+
+#[test]
+fn a_fin_command_beyond_its_stop_is_refused_naming_both_keys() {
+    // REMUS's fins stop at 15°: a command beyond would run at 15° under a 30° label.
+    let cases = [
+        (
+            "rudder_deg = [4.0, -4.0, 0.0]",
+            "rudder_deg = [4.0, -30.0, 0.0]",
+            "manoeuvre[0].rudder_deg[1]",
+            "rudder.max_deg",
+        ),
+        (
+            "stern_planes_deg = [4.0, -4.0, 0.0]",
+            "stern_planes_deg = [16.0, -4.0, 0.0]",
+            "manoeuvre[1].stern_planes_deg[0]",
+            "stern_planes.max_deg",
+        ),
+        (
+            "rudder_deg = [10.0]",
+            "rudder_deg = [30.0]",
+            "manoeuvre[3].rudder_deg[0]",
+            "rudder.max_deg",
+        ),
+        (
+            "plane = \"vertical\"\nfin_deg = 10.0",
+            "plane = \"vertical\"\nfin_deg = 30.0",
+            "manoeuvre[5].fin_deg",
+            "stern_planes.max_deg",
+        ),
+    ];
+    for (from, to, command, stop) in cases {
+        let error = parse(&edited(from, to)).unwrap_err();
+        println!("{error}");
+        assert!(error.contains(&format!("`{command}`")), "{to}: {error}");
+        assert!(error.contains(&format!("`{stop}` = 15°")), "{to}: {error}");
+    }
+    // At the stop itself, the command runs as labelled.
+    assert!(parse(&edited("rudder_deg = [10.0]", "rudder_deg = [15.0]")).is_ok());
+}
+
+#[test]
+fn a_thrust_not_ahead_and_a_mass_against_its_weight_are_refused_by_key() {
+    let astern = parse(&edited("thrust = 3.86", "thrust = -3.86")).unwrap_err();
+    assert!(
+        astern.contains("`propeller.thrust`") && astern.contains("astern"),
+        "{astern}"
+    );
+    let none = parse(&edited("thrust = 3.86", "thrust = 0.0")).unwrap_err();
+    assert!(
+        none.contains("`propeller.thrust`") && none.contains("zero thrust"),
+        "{none}"
+    );
+    let start = scene_text().find("[propeller]").unwrap();
+    let end = scene_text().find("# The fins' stops").unwrap();
+    let mut without = scene_text();
+    without.replace_range(start..end, "");
+    let missing = parse(&without).unwrap_err();
+    assert!(missing.contains("`propeller`"), "{missing}");
+    // 6.5 kg of payload in the weight and not in the mass: W/M = 11.9 m/s².
+    let heavier = parse(&edited("weight = 299.0 ", "weight = 362.8 ")).unwrap_err();
+    println!("{heavier}");
+    assert!(
+        heavier.contains("`body.mass`") && heavier.contains("`body.weight` = 362.8 N"),
+        "{heavier}"
+    );
+    // Both in: W/M = 9.81 m/s² (REMUS's own 299 N and 30.48 kg give 9.8097, to the rounding
+    // of the numbers as written; so do the standard 9.80665 and a mass of three digits).
+    let both = parse(&with_payload(6.5, 0.0)).err();
+    assert!(both.is_none_or(|e| !e.contains("body.mass")));
+    for (mass, weight) in [("30.49", "299.0"), ("30.5", "299.0"), ("31", "299.0")] {
+        let text = edited("mass = 30.48 ", &format!("mass = {mass} ")).replacen(
+            "weight = 299.0 ",
+            &format!("weight = {weight} "),
+            1,
+        );
+        assert!(parse(&text).is_ok(), "{mass} kg, {weight} N");
+    }
+}

@@ -1,8 +1,10 @@
 //! `eom run` on a vehicle scene, end to end through the binary: REMUS's Chapter 8 turn into
 //! its folder (trajectory.csv, the plots, the 3-D view, summary.json with the folded table and
-//! the figures), and `eom linear` on it: A, B and the modes at the cruise.
+//! the figures), and `eom linear` on it: A, B and the modes at the cruise. Commands, thrusts
+//! and bodies a run could not hold as labelled are refused by key.
 
-use eom_test_support::cli::{eom, folder, scene_arg, succeeded};
+use eom_test_support::cli::{eom, folder, scene, scene_arg, succeeded};
+use std::path::{Path, PathBuf};
 
 #[test]
 fn remus_runs_its_rudder_steps_into_a_folder() {
@@ -122,4 +124,77 @@ fn eom_linear_linearises_a_vehicle_at_its_cruise_and_writes_its_matrices() {
         "{csv}"
     );
     assert!(out.join("B.csv").is_file() && out.join("poles.svg").is_file());
+}
+
+/// REMUS's scene with `edits` (from, to) made, written into `dir`.
+fn remus_edited(dir: &Path, edits: &[(&str, &str)]) -> PathBuf {
+    let mut text = std::fs::read_to_string(scene("remus100.toml")).unwrap();
+    for (from, to) in edits {
+        assert!(text.contains(from), "{from}");
+        text = text.replacen(from, to, 1);
+    }
+    let path = dir.join("remus_edited.toml");
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+/// Edits of a scene's text: (from, to).
+type Edits<'a> = Vec<(&'a str, &'a str)>;
+
+/// `eom run` of a scene that must be refused: its exit code, and its message.
+fn refused(scene: &Path, out: &Path) -> (Option<i32>, String) {
+    let output = eom(&[
+        "run",
+        scene.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let stderr = String::from_utf8_lossy(&output.stderr).into_owned();
+    (output.status.code(), stderr)
+}
+
+#[test]
+fn commands_thrusts_and_bodies_a_run_could_not_hold_are_refused_naming_their_keys() {
+    let dir = folder("remus_refused");
+    let cases: Vec<(Edits, Vec<&str>)> = vec![
+        // A 30° command on a 15° fin would run at 15° under a 30° label.
+        (
+            vec![("rudder_deg = [10.0]", "rudder_deg = [30.0]")],
+            vec!["manoeuvre[3].rudder_deg[0]", "rudder.max_deg"],
+        ),
+        (
+            vec![(
+                "plane = \"vertical\"\nfin_deg = 10.0",
+                "plane = \"vertical\"\nfin_deg = 30.0",
+            )],
+            vec!["manoeuvre[5].fin_deg", "stern_planes.max_deg"],
+        ),
+        // Astern on a table identified ahead, and at rest.
+        (
+            vec![("thrust = 3.86", "thrust = -3.86")],
+            vec!["propeller.thrust", "astern"],
+        ),
+        (
+            vec![("thrust = 3.86", "thrust = 0.0")],
+            vec!["propeller.thrust", "zero thrust"],
+        ),
+        // 6.5 kg of payload in the weight only.
+        (
+            vec![("weight = 299.0 ", "weight = 362.8 ")],
+            vec!["body.mass", "body.weight"],
+        ),
+    ];
+    // Every case is tried, and those not refused as they should be are listed together.
+    let mut wrong = Vec::new();
+    for (edits, keys) in cases {
+        let scene = remus_edited(&dir, &edits);
+        let out = dir.join("out");
+        let (code, message) = refused(&scene, &out);
+        let named = keys.iter().all(|key| message.contains(key));
+        if code != Some(3) || !named || out.join("summary.json").exists() {
+            wrong.push(format!("{edits:?}: exit {code:?}, {message}"));
+        }
+        let _ = std::fs::remove_dir_all(&out);
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
 }

@@ -100,10 +100,24 @@ use crate::models::Model;
 use crate::scene::check::Checker;
 use crate::scene::{Problem, SceneError};
 use crate::ship::scene::{IntegratorTable, OutputTable, RudderTable};
-use crate::{InertiaTensor, counted};
+use crate::{InertiaTensor, Short, counted};
 use nalgebra::Matrix3;
 use serde::Deserialize;
 use std::collections::BTreeMap;
+
+/// Gravity at the Earth's surface, m/s²: at the equator and at the poles (the normal gravity
+/// of the WGS 84 ellipsoid), the range `body.weight / body.mass` may take.
+const GRAVITY: (f64, f64) = (9.780, 9.832);
+
+/// Half a unit in the last significant digit of `x` as written: its shortest form that reads
+/// back to the same number (30.48 → 0.005, 299 → 0.5).
+fn written_rounding(x: f64) -> f64 {
+    let text = format!("{x:e}");
+    let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
+    let digits = mantissa.chars().filter(char::is_ascii_digit).count() as i32;
+    let exponent: i32 = exponent.parse().unwrap_or(0);
+    0.5 * 10f64.powi(exponent - (digits - 1))
+}
 
 /// The file as written.
 #[derive(Debug, Clone, Deserialize)]
@@ -364,12 +378,21 @@ impl Checker<'_> {
             }
         }
         let prime = self.prime_scales(hydro)?;
-        let propeller = (file.propeller.as_ref())
-            .map(|p| self.vehicle_propeller(p, prime))
-            .transpose()?;
+        let Some(propeller) = file.propeller.as_ref() else {
+            return Err(self.error(
+                "propeller",
+                Problem::Missing(
+                    "[propeller]: every manoeuvre starts from the cruise its thrust makes".into(),
+                ),
+            ));
+        };
+        let propeller = self.vehicle_propeller(propeller, prime)?;
+        let weight = self.positive("body.weight", body.weight)?;
+        self.mass_against_weight(mass, weight)?;
         Ok(VehicleTable {
             mass,
-            weight: self.positive("body.weight", body.weight)?,
+            weight,
+
             buoyancy: self.positive("body.buoyancy", body.buoyancy)?,
             centre_of_gravity,
             centre_of_buoyancy: vector("centre_of_buoyancy", body.centre_of_buoyancy)?,
@@ -379,12 +402,40 @@ impl Checker<'_> {
             added_mass_coriolis,
             added_mass: hydro.added_mass.clone(),
             coefficients: hydro.coefficients.clone(),
-            propeller,
+            propeller: Some(propeller),
             prime,
             cross_flow: (hydro.cross_flow.as_ref())
                 .map(|c| self.cross_flow(c, prime))
                 .transpose()?,
         })
+    }
+
+    /// `body.mass` against `body.weight`: W/M is gravity at the Earth's surface, 9.780 m/s² at
+    /// the equator to 9.832 at the poles, to the rounding of the two numbers as written (half
+    /// a unit in the last significant digit of each). A mass that contradicts its weight (a
+    /// payload added to one and not the other) would make every motion wrong by their ratio.
+    fn mass_against_weight(&self, mass: f64, weight: f64) -> Result<(), SceneError> {
+        let (m, w) = (written_rounding(mass), written_rounding(weight));
+        let (lowest, highest) = (
+            (weight - w) / (mass + m),
+            (weight + w) / (mass - m).max(0.0),
+        );
+        if highest >= GRAVITY.0 && lowest <= GRAVITY.1 {
+            return Ok(());
+        }
+        Err(self.invalid(
+            "body.mass",
+            format!(
+                "{} kg contradicts `body.weight` = {} N: W/M = {} m/s², where gravity at the \
+                 Earth's surface is {} to {} m/s² (M = W/g is {} kg at g = 9.81 m/s²)",
+                Short(mass),
+                Short(weight),
+                Short(weight / mass),
+                GRAVITY.0,
+                GRAVITY.1,
+                Short(weight / 9.81)
+            ),
+        ))
     }
 
     /// `body.inertia` and `body.products_of_inertia` as a tensor and the point it is about
@@ -495,7 +546,7 @@ impl Checker<'_> {
                 )?;
             }
             return Ok(PropellerSetting {
-                thrust: self.finite("propeller.thrust", given("thrust", p.thrust)?)?,
+                thrust: self.thrust(given("thrust", p.thrust)?)?,
                 torque: self.finite("propeller.torque", given("torque", p.torque)?)?,
                 law: None,
             });
@@ -527,6 +578,27 @@ impl Checker<'_> {
             torque: self.finite("propeller.torque", p.torque.unwrap_or(0.0))?,
             law: Some(law),
         })
+    }
+
+    /// `propeller.thrust`, positive: every manoeuvre starts from the cruise it makes ahead. At
+    /// zero the vehicle lies at rest, where its fins act on nothing; a negative thrust drives
+    /// it astern, outside a table identified going ahead.
+    fn thrust(&self, thrust: f64) -> Result<f64, SceneError> {
+        let key = "propeller.thrust";
+        let thrust = self.finite(key, thrust)?;
+        if thrust > 0.0 {
+            return Ok(thrust);
+        }
+        Err(self.invalid(
+            key,
+            if thrust == 0.0 {
+                "zero thrust: every manoeuvre starts from the cruise the thrust makes, and \
+                 without one the vehicle lies at rest, where its fins turn it not at all"
+            } else {
+                "a negative thrust drives the vehicle astern, outside a table identified going \
+                 ahead: give the thrust ahead, positive"
+            },
+        ))
     }
 
     /// `[hydrodynamics.cross_flow]`: strips of one length each (the stations' count), finite
@@ -756,6 +828,53 @@ impl Checker<'_> {
         })
     }
 
+    /// The fins' commands of manoeuvre `index` within their stops (`rudder.max_deg`,
+    /// `stern_planes.max_deg`): a fin commanded beyond its stop would run at the stop while the
+    /// manoeuvre is labelled and judged at the angle asked for. A zig-zag's `fin_deg` is its
+    /// plane's fin's command.
+    fn within_stops(
+        &self,
+        index: usize,
+        table: &ManoeuvreTable,
+        rudder: &RudderTable,
+        stern_planes: &RudderTable,
+    ) -> Result<(), SceneError> {
+        let key = |k: &str| format!("manoeuvre[{index}].{k}");
+        let vertical = table.plane.as_deref() == Some("vertical");
+        let zigzag_fin = if vertical { "stern_planes" } else { "rudder" };
+        let fins = [("rudder", rudder), ("stern_planes", stern_planes)];
+        for (fin, gear) in fins {
+            let Some(stop) = gear.max_deg else { continue };
+            let mut commands: Vec<(String, f64)> = Vec::new();
+            let steps = if fin == "rudder" {
+                &table.rudder_deg
+            } else {
+                &table.stern_planes_deg
+            };
+            for (i, angle) in steps.iter().flatten().enumerate() {
+                commands.push((key(&format!("{fin}_deg[{i}]")), *angle));
+            }
+            if let Some(angle) = table.fin_deg.filter(|_| fin == zigzag_fin) {
+                commands.push((key("fin_deg"), angle));
+            }
+            if let Some((command, angle)) = commands.iter().find(|(_, a)| a.abs() > stop) {
+                return Err(self.invalid(
+                    command,
+                    format!(
+                        "{}° is beyond the {}'s stop `{fin}.max_deg` = {}°: the fin would run \
+                         at {}° while the manoeuvre is labelled and judged at {}°",
+                        Short(*angle),
+                        fin.replace('_', " "),
+                        Short(stop),
+                        Short(stop.copysign(*angle)),
+                        Short(*angle)
+                    ),
+                ));
+            }
+        }
+        Ok(())
+    }
+
     /// A zig-zag: its plane, fin and switch angles, its execute at times_s[0]; the fin it
     /// switches is not also an autopilot's.
     fn zigzag(&self, index: usize, table: &ManoeuvreTable) -> Result<Trial, SceneError> {
@@ -977,6 +1096,7 @@ impl VehicleScene {
         let mut manoeuvres: Vec<VehicleManoeuvre> = Vec::new();
         for (index, table) in file.manoeuvre.iter().enumerate() {
             let manoeuvre = check.vehicle_manoeuvre(index, table, autopilots.as_ref())?;
+            check.within_stops(index, table, &file.rudder, &file.stern_planes)?;
             if manoeuvres.iter().any(|m| m.name == manoeuvre.name) {
                 return Err(check.invalid(
                     &format!("manoeuvre[{index}].name"),

@@ -16,7 +16,14 @@ macro_rules! fin_keys {
                 families: VEHICLE,
                 unit: "deg",
                 default: "no limit",
-                description: concat!("Where the ", $what, " saturate(s)."),
+                description: concat!(
+                    "Where the ",
+                    $what,
+                    " saturate(s). A manoeuvre's command beyond it (rudder_deg, \
+                     stern_planes_deg, a zigzag's fin_deg) is refused: it would run at the \
+                     stop while labelled and judged as asked; the autopilots' commands stop \
+                     there."
+                ),
                 example: "13.6",
                 shown: Shown::Commented,
                 ..Key::BLANK
@@ -81,7 +88,9 @@ pub(super) static KEYS: &[Key] = &[
         families: VEHICLE,
         unit: "kg",
         required: Required::Yes,
-        description: "M, the vehicle's mass.",
+        description: "M, the vehicle's mass. body.weight / body.mass must be gravity at the \
+                      Earth's surface (9.780 to 9.832 m/s²) to the rounding of the two numbers \
+                      as written: a payload in one and not the other is refused.",
         example: "30.48",
         ..Key::BLANK
     },
@@ -363,8 +372,10 @@ pub(super) static KEYS: &[Key] = &[
         unit: "N",
         frame: super::Frame::Body,
         required: Required::When("with the constant law (a law refuses it: it gives the thrust)"),
-        description: "X_prop, constant at the setting, along body x. Every run starts from the \
-                      cruise it makes: u and the roll angle trimmed so that u̇ = ṗ = 0.",
+        description: "X_prop, constant at the setting, along body x, positive (ahead: a table \
+                      is identified going ahead, and at zero the vehicle lies at rest). Every \
+                      run starts from the cruise it makes: u and the roll angle trimmed so that \
+                      u̇ = ṗ = 0.",
         example: "3.86",
         ..Key::BLANK
     },
@@ -634,7 +645,7 @@ pub(super) static KEYS: &[Key] = &[
         unit: "deg",
         required: Required::When("fin_steps: unless stern_planes_deg is given"),
         default: "zero",
-        description: "The rudder's command from each time on.",
+        description: "The rudder's command from each time on, within rudder.max_deg.",
         example: "[4.0, -4.0]",
         ..Key::BLANK
     },
@@ -645,7 +656,8 @@ pub(super) static KEYS: &[Key] = &[
         unit: "deg",
         required: Required::When("fin_steps: unless rudder_deg is given"),
         default: "zero",
-        description: "The stern planes' command from each time on.",
+        description: "The stern planes' command from each time on, within \
+                      stern_planes.max_deg.",
         example: "[0.0, 0.0]",
         shown: Shown::Commented,
         ..Key::BLANK
@@ -687,7 +699,7 @@ pub(super) static KEYS: &[Key] = &[
         families: VEHICLE,
         unit: "deg",
         required: Required::When("for a zigzag"),
-        description: "A zigzag's fin angle, below 90°: the fin goes to it at the execute, and to its opposite at each switch.",
+        description: "A zigzag's fin angle, below 90° and within its fin's max_deg: the fin goes to it at the execute, and to its opposite at each switch.",
         example: "10.0",
         shown: Shown::Commented,
         ..Key::BLANK
