@@ -80,6 +80,15 @@ fn remus_runs_its_rudder_steps_into_a_folder() {
         "the view draws REMUS's cylinder"
     );
     assert!(view.contains("\"rows\":801"));
+    // The turning circle's track marks its 90° and 180° points as a ship's does.
+    let track = std::fs::read_to_string(out.join("turning_circle/track.svg")).unwrap();
+    for mark in [
+        "execute",
+        "90°: advance 7.8 m, transfer 6.3 m",
+        "180°: tactical diameter 13.3 m",
+    ] {
+        assert!(track.contains(mark), "{mark}");
+    }
     for manoeuvre in summary["manoeuvre"].as_object().unwrap().keys() {
         assert!(
             out.join(manoeuvre).join("view.html").is_file(),

@@ -318,6 +318,10 @@ pub struct TurningCircleFigures {
     /// Why the steady figures are not given, where they are not.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub not_steady_because: Option<String>,
+    /// The points to mark on the track, (what, [x, y] in m): the execute, and the 90° and
+    /// 180° points with their figures, as a ship's turning circle marks them.
+    #[serde(skip)]
+    pub marks: Vec<(String, [f64; 2])>,
 }
 
 /// A zig-zag's figures.
@@ -445,6 +449,18 @@ fn turning_circle(progress: &Progress, rudder: f64, end: &[f64; 15]) -> TurningC
     };
     let ninety = at(PI / 2.0).map(|s| along_across(&s));
     let one_eighty = at(PI).map(|s| along_across(&s));
+    let mut marks = vec![("execute".to_owned(), origin)];
+    if let (Some((advance, transfer)), Some(state)) = (ninety, at(PI / 2.0)) {
+        let label = format!(
+            "90°: advance {advance:.1} m, transfer {:.1} m",
+            transfer.abs()
+        );
+        marks.push((label, [state[6], state[7]]));
+    }
+    if let (Some((_, across)), Some(state)) = (one_eighty, at(PI)) {
+        let label = format!("180°: tactical diameter {:.1} m", across.abs());
+        marks.push((label, [state[6], state[7]]));
+    }
     let steady = progress
         .course
         .as_ref()
@@ -466,6 +482,7 @@ fn turning_circle(progress: &Progress, rudder: f64, end: &[f64; 15]) -> TurningC
         pitch_deg: theta.to_degrees(),
         depth_change_m: end[8] - progress.execute_depth(),
         not_steady_because: steady.err(),
+        marks,
     }
 }
 

@@ -25,6 +25,7 @@ use eom::vehicle::summary::{
 use eom::vehicle::trial::{TrialFigures, largest_trial_difference};
 use eom::vehicle::{VehicleError, VehicleScene, format_folded};
 use eom::{Model, counted};
+use eom_cli::plots::Mark;
 use eom_cli::plots::vehicle::{VehiclePlot, write_vehicle_plots};
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -156,16 +157,21 @@ fn run_manoeuvre(
         refinement: scene.stepper.refinement(),
         steps_taken: done.steps,
     };
-    write_plots(folder, scene, manoeuvre, &columns)?;
+    let marks = match &summary.trial {
+        Some(TrialFigures::TurningCircle(figures)) => figures.marks.as_slice(),
+        _ => &[],
+    };
+    write_plots(folder, (scene, manoeuvre), &columns, marks)?;
     Ok(Outcome { steps, summary })
 }
 
-/// The track in plan, the profile, the attitude and the fins, and the run in 3-D.
+/// The track in plan with `marks` (what, [x, y]), the profile, the attitude and the fins, and
+/// the run in 3-D.
 fn write_plots(
     folder: &Path,
-    scene: &VehicleScene,
-    manoeuvre: &VehicleManoeuvre,
+    (scene, manoeuvre): (&VehicleScene, &VehicleManoeuvre),
     columns: &Columns,
+    marks: &[(String, [f64; 2])],
 ) -> Result<()> {
     // The columns in ROW's order.
     let column = |name: &str| -> &[f64] {
@@ -179,6 +185,12 @@ fn write_plots(
         position: ["x", "y", "z"].map(column),
         attitude: ["phi", "theta", "psi"].map(column),
         fins: ["dr", "ds", "dr_command", "ds_command"].map(column),
+        marks: &(marks.iter())
+            .map(|(label, [x, y])| Mark {
+                label: label.clone(),
+                point: (*y, *x),
+            })
+            .collect::<Vec<_>>(),
     };
     write_vehicle_plots(folder, &plot)?;
     super::view::write_vehicle(folder, &title, &scene.table, columns)?;
