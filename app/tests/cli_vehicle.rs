@@ -89,6 +89,27 @@ fn remus_runs_its_rudder_steps_into_a_folder() {
     ] {
         assert!(track.contains(mark), "{mark}");
     }
+    // No figure is printed or written as a negative zero (the cruise's pitch of −2.5e-14°
+    // after 10 s, an autopilot's rudder of −0).
+    let negative_zero = |text: &str| {
+        text.split(|c: char| c.is_whitespace() || c == ',')
+            .any(|word| {
+                word.starts_with("-0") && word.trim_start_matches(['-', '0', '.']).is_empty()
+            })
+    };
+    assert!(!negative_zero(&stdout), "{stdout}");
+    let json = std::fs::read_to_string(out.join("summary.json")).unwrap();
+    assert!(!negative_zero(&json), "summary.json");
+    // Nor with the rounding of its making: the settling times read at the autopilot's samples
+    // (k · 0.1 s less 5 s), the folded table's differences (5.22 − (−0.93)).
+    let autopilot = &summary["manoeuvre"]["turn_and_dive"]["autopilot"];
+    assert_eq!(autopilot[0]["settling_time_s"], 16.2, "{autopilot}");
+    assert_eq!(autopilot[1]["settling_time_s"], 18.7, "{autopilot}");
+    let yur = kirchhoff
+        .iter()
+        .find(|row| row["coefficient"] == "Yur")
+        .unwrap();
+    assert_eq!(yur["difference"], 6.15, "{yur}");
     for manoeuvre in summary["manoeuvre"].as_object().unwrap().keys() {
         assert!(
             out.join(manoeuvre).join("view.html").is_file(),
@@ -206,4 +227,32 @@ fn commands_thrusts_and_bodies_a_run_could_not_hold_are_refused_naming_their_key
         let _ = std::fs::remove_dir_all(&out);
     }
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}
+
+#[test]
+fn a_command_of_7_5_degrees_is_reported_as_7_5() {
+    let dir = folder("remus_7_5");
+    let text = std::fs::read_to_string(scene("remus100.toml")).unwrap();
+    let own = text.find("[[manoeuvre]]").unwrap();
+    let trials = "[[manoeuvre]]\nkind = \"turning_circle\"\ntimes_s = [1.0]\nrudder_deg = [7.5]\n\
+        duration_s = 20.0\n\n[[manoeuvre]]\nkind = \"zigzag\"\nfin_deg = 7.5\nswitch_deg = 7.5\n\
+        times_s = [1.0]\nduration_s = 20.0\n";
+    let path = dir.join("seven_and_a_half.toml");
+    std::fs::write(&path, format!("{}{trials}", &text[..own])).unwrap();
+    let out = dir.join("out");
+    let stdout = succeeded(&eom(&[
+        "run",
+        path.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]));
+    assert!(stdout.contains("turning circle at 7.5°"), "{stdout}");
+    assert!(stdout.contains("zig-zag 7.5°/7.5°"), "{stdout}");
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let manoeuvres = &summary["manoeuvre"];
+    assert_eq!(manoeuvres["turning_circle"]["trial"]["rudder_deg"], 7.5);
+    assert_eq!(manoeuvres["turning_circle"]["steps"][1]["rudder_deg"], 7.5);
+    assert_eq!(manoeuvres["zigzag"]["trial"]["fin_deg"], 7.5);
+    assert_eq!(manoeuvres["zigzag"]["trial"]["switch_deg"], 7.5);
 }

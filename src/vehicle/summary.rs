@@ -65,17 +65,25 @@ pub struct KirchhoffRow {
 }
 
 impl KirchhoffRow {
-    /// A row of the generator's comparison.
+    /// A row of the generator's comparison, the implied value and the difference to twelve
+    /// significant digits ([`twelve_digits`]).
     pub fn new(row: &FoldedComparison) -> Self {
         KirchhoffRow {
             load: row.load.letter().to_string(),
             product: row.product.clone(),
             coefficient: row.name.clone(),
             printed: row.printed,
-            implied: row.implied,
-            difference: row.difference,
+            implied: twelve_digits(row.implied),
+            difference: row.difference.map(twelve_digits),
         }
     }
+}
+
+/// `x` to twelve significant digits: a sum of a table's entries, each given to a few digits,
+/// whose digits beyond are the rounding of the sum (4.86 − 4.8096 is 0.050400000000000666 in
+/// binary, 0.0504 in the table's digits).
+fn twelve_digits(x: f64) -> f64 {
+    format!("{x:.11e}").parse::<f64>().unwrap_or(x) + 0.0
 }
 
 /// The cruise: surge and roll trimmed on the model, against their closed forms.
@@ -143,6 +151,13 @@ pub struct SetpointFigures {
 /// The settling band, as a fraction of the change: 2 %, the control engineer's settling time.
 pub const SETTLING_BAND: f64 = 0.02;
 
+/// A time read at the autopilots' samples, to the nanosecond: an instant k·T_s carries the
+/// rounding of the product (212 × 0.1 is 21.200000000000003), which a figure read there,
+/// known to a sampling period, does not.
+fn sampled(t: f64) -> f64 {
+    (t * 1e9).round() / 1e9
+}
+
 impl SetpointFigures {
     /// The answer to every change of a setpoint in a run under the autopilots.
     pub fn of(run: &VehicleRun) -> Vec<Self> {
@@ -186,16 +201,17 @@ impl SetpointFigures {
                     let end = i.min(tracked.len() - 1);
                     figures.push(SetpointFigures {
                         what,
-                        at_s: tracked[start].t,
+                        at_s: sampled(tracked[start].t),
                         from,
                         to,
                         overshoot: errors
                             .iter()
                             .map(|(_, e)| -e * change.signum())
                             .fold(0.0, f64::max),
-                        settling_time_s: settled_from.map(|k| errors[k].0 - tracked[start].t),
+                        settling_time_s: settled_from
+                            .map(|k| sampled(errors[k].0 - tracked[start].t)),
                         steady_error: errors.last().map_or(0.0, |(_, e)| *e),
-                        until_s: tracked[end].t,
+                        until_s: sampled(tracked[end].t),
                     });
                 }
                 start = i;
@@ -211,6 +227,32 @@ impl SetpointFigures {
             self.steady_error,
         ]
     }
+}
+
+/// `radians` in degrees as a scene writes them: where a double within two units in the last
+/// place of `radians.to_degrees()` converts back to `radians` exactly and has at most 15
+/// significant digits (so that, written so, it reads back as itself), the one of the fewest;
+/// else `radians.to_degrees()`. A negative zero is zero. A 7.5° command, converted to radians
+/// to run, is reported as 7.5 and not as 7.499999999999999, the rounding of the two
+/// conversions; a value computed in radians keeps every digit of its conversion.
+pub fn degrees(radians: f64) -> f64 {
+    let direct = radians.to_degrees();
+    let digits = |x: f64| {
+        let text = format!("{x:e}");
+        let mantissa = text.split('e').next().unwrap_or("");
+        mantissa.chars().filter(char::is_ascii_digit).count()
+    };
+    let (mut below, mut above) = (direct, direct);
+    let mut best = (direct, digits(direct).min(16));
+    for _ in 0..2 {
+        (below, above) = (below.next_down(), above.next_up());
+        for x in [below, above] {
+            if x.to_radians() == radians && digits(x) < best.1 {
+                best = (x, digits(x));
+            }
+        }
+    }
+    best.0 + 0.0
 }
 
 /// A trial's figures from its run, if the manoeuvre is a trial.
@@ -265,8 +307,8 @@ impl StepFigures {
                 let figures = StepFigures {
                     from_s: from,
                     to_s: end.t,
-                    rudder_deg: end.commands[0].to_degrees(),
-                    stern_planes_deg: end.commands[1].to_degrees(),
+                    rudder_deg: degrees(end.commands[0]),
+                    stern_planes_deg: degrees(end.commands[1]),
                     yaw_rate_deg_s: s[5].to_degrees(),
                     speed_m_s: (s[0] * s[0] + s[1] * s[1] + s[2] * s[2]).sqrt(),
                     roll_deg: phi.to_degrees(),

@@ -16,6 +16,7 @@
 
 use super::autopilot::wrapped;
 use super::manoeuvre::euler_angles;
+use super::summary::degrees;
 use crate::ship::course::Course;
 use serde::Serialize;
 use std::f64::consts::{PI, TAU};
@@ -385,8 +386,8 @@ impl TrialFigures {
                 }
                 TrialFigures::ZigZag(ZigZagFigures {
                     plane,
-                    fin_deg: fin.to_degrees(),
-                    switch_deg: switch.to_degrees(),
+                    fin_deg: degrees(fin),
+                    switch_deg: degrees(switch),
                     switches_s: switches.iter().map(|e| e.t).collect(),
                     overshoots_deg: overshoots,
                     overshoots_at_s: at,
@@ -468,7 +469,7 @@ fn turning_circle(progress: &Progress, rudder: f64, end: &[f64; 15]) -> TurningC
     let [phi, theta, _] = euler_angles(end);
     let (psi_dot, _) = heading_and_pitch_rates(end);
     TurningCircleFigures {
-        rudder_deg: rudder.to_degrees(),
+        rudder_deg: degrees(rudder),
         advance_m: ninety.map(|(along, _)| along),
         transfer_m: ninety.map(|(_, across)| across.abs()),
         tactical_diameter_m: one_eighty.map(|(_, across)| across.abs()),

@@ -22,9 +22,9 @@ use eom::vehicle::summary::{
     CruiseSummary, KirchhoffRow, ManoeuvreSummary, ModelSummary, SetpointFigures, StepFigures,
     VehicleSummary, largest_difference, largest_setpoint_difference, trial_figures,
 };
-use eom::vehicle::trial::{TrialFigures, largest_trial_difference};
+use eom::vehicle::trial::{Plane, TrialFigures, largest_trial_difference};
 use eom::vehicle::{VehicleError, VehicleScene, format_folded};
-use eom::{Model, counted};
+use eom::{Model, Short, counted};
 use eom_cli::plots::Mark;
 use eom_cli::plots::vehicle::{VehiclePlot, write_vehicle_plots};
 use std::collections::BTreeMap;
@@ -201,13 +201,15 @@ fn print_report(scene: &VehicleScene, summary: &VehicleSummary, outcomes: &[Outc
     println!("{}", printable(&scene.title));
     let cruise = &summary.cruise;
     let closed = |x: Option<f64>, unit: &str| {
-        x.map_or_else(String::new, |x| format!(" (closed form {x:.4} {unit})"))
+        x.map_or_else(String::new, |x| {
+            format!(" (closed form {}{unit})", fixed(x, 4))
+        })
     };
     println!(
-        "  cruise: u = {:.4} m/s{}, roll trim φ = {:.4}°{}",
-        cruise.speed_m_s,
-        closed(cruise.speed_closed_form_m_s, "m/s"),
-        cruise.roll_deg,
+        "  cruise: u = {} m/s{}, roll trim φ = {}°{}",
+        fixed(cruise.speed_m_s, 4),
+        closed(cruise.speed_closed_form_m_s, " m/s"),
+        fixed(cruise.roll_deg, 4),
         closed(cruise.roll_closed_form_deg, "°")
     );
     for (manoeuvre, outcome) in scene.manoeuvres.iter().zip(outcomes) {
@@ -221,16 +223,16 @@ fn print_report(scene: &VehicleScene, summary: &VehicleSummary, outcomes: &[Outc
         );
         for s in &outcome.steps {
             println!(
-                "    {:>6.1} {:>6.1} {:>7.2} {:>7.2} {:>10.4} {:>8.4} {:>8.3} {:>8.3} {:>8.3}",
-                s.from_s,
-                s.to_s,
-                s.rudder_deg,
-                s.stern_planes_deg,
-                s.yaw_rate_deg_s,
-                s.speed_m_s,
-                s.roll_deg,
-                s.pitch_deg,
-                s.depth_m
+                "    {:>6} {:>6} {:>7} {:>7} {:>10} {:>8} {:>8} {:>8} {:>8}",
+                fixed(s.from_s, 1),
+                fixed(s.to_s, 1),
+                fixed(s.rudder_deg, 2),
+                fixed(s.stern_planes_deg, 2),
+                fixed(s.yaw_rate_deg_s, 4),
+                fixed(s.speed_m_s, 4),
+                fixed(s.roll_deg, 3),
+                fixed(s.pitch_deg, 3),
+                fixed(s.depth_m, 3)
             );
         }
         print_autopilot(&outcome.summary.autopilot);
@@ -260,32 +262,41 @@ fn print_autopilot(figures: &[SetpointFigures]) {
         let unit = if f.what == "heading" { "°" } else { " m" };
         let settles = f
             .settling_time_s
-            .map_or_else(|| "not settled".to_owned(), |t| format!("{t:.1}"));
+            .map_or_else(|| "not settled".to_owned(), |t| fixed(t, 1));
         println!(
-            "    {:<8} {:>6.1} {:>8.2}{unit} {:>8.2}{unit} {:>9.3}{unit} {settles:>12} {:>11.4}{unit}",
-            f.what, f.at_s, f.from, f.to, f.overshoot, f.steady_error
+            "    {:<8} {:>6} {:>8}{unit} {:>8}{unit} {:>9}{unit} {settles:>12} {:>11}{unit}",
+            f.what,
+            fixed(f.at_s, 1),
+            fixed(f.from, 2),
+            fixed(f.to, 2),
+            fixed(f.overshoot, 3),
+            fixed(f.steady_error, 4)
         );
     }
 }
 
 /// A trial's figures.
 fn print_trial(trial: &TrialFigures) {
-    let metres = |x: Option<f64>| x.map_or_else(|| "—".to_owned(), |x| format!("{x:.2} m"));
+    let metres =
+        |x: Option<f64>| x.map_or_else(|| "—".to_owned(), |x| format!("{} m", fixed(x, 2)));
     match trial {
         TrialFigures::TurningCircle(f) => {
             println!(
-                "    turning circle at {:.1}°: advance {}, transfer {}, tactical diameter {}, \
+                "    turning circle at {}°: advance {}, transfer {}, tactical diameter {}, \
                  steady diameter {}",
-                f.rudder_deg,
+                Short(f.rudder_deg),
                 metres(f.advance_m),
                 metres(f.transfer_m),
                 metres(f.tactical_diameter_m),
                 metres(f.steady_diameter_m)
             );
             println!(
-                "      at the end: U = {:.4} m/s, ψ̇ = {:.4} °/s, φ = {:.3}°, θ = {:.3}°, depth \
-                 change {:.3} m",
-                f.speed_m_s, f.heading_rate_deg_s, f.roll_deg, f.pitch_deg, f.depth_change_m
+                "      at the end: U = {} m/s, ψ̇ = {} °/s, φ = {}°, θ = {}°, depth change {} m",
+                fixed(f.speed_m_s, 4),
+                fixed(f.heading_rate_deg_s, 4),
+                fixed(f.roll_deg, 3),
+                fixed(f.pitch_deg, 3),
+                fixed(f.depth_change_m, 3)
             );
             if let Some(why) = &f.not_steady_because {
                 println!("      no steady figures: {why}");
@@ -294,18 +305,47 @@ fn print_trial(trial: &TrialFigures) {
         TrialFigures::ZigZag(f) => {
             let list = |v: &[f64]| {
                 v.iter()
-                    .map(|x| format!("{x:.3}"))
+                    .map(|x| fixed(*x, 3))
                     .collect::<Vec<_>>()
                     .join(", ")
             };
+            let plane = match f.plane {
+                Plane::Horizontal => "Horizontal",
+                Plane::Vertical => "Vertical",
+            };
+            let label = format!(
+                "    {plane} zig-zag {}°/{}°:",
+                Short(f.fin_deg),
+                Short(f.switch_deg)
+            );
             println!(
-                "    {:?} zig-zag {:.0}°/{:.0}°: overshoots {} °, switches at {} s",
-                f.plane,
-                f.fin_deg,
-                f.switch_deg,
+                "{label} overshoots {} °, switches at {} s",
                 list(&f.overshoots_deg),
                 list(&f.switches_s)
             );
         }
+    }
+}
+
+/// `x` with `decimals` decimals, without the sign of a value that rounds to zero (`-0.000` is
+/// `0.000`).
+fn fixed(x: f64, decimals: usize) -> String {
+    let text = format!("{x:.decimals$}");
+    match text.strip_prefix('-') {
+        Some(unsigned) if unsigned.chars().all(|c| c == '0' || c == '.') => unsigned.to_owned(),
+        _ => text,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::fixed;
+
+    #[test]
+    fn a_value_that_rounds_to_zero_is_printed_without_its_sign() {
+        assert_eq!(fixed(-2.5e-14, 3), "0.000");
+        assert_eq!(fixed(-0.0, 2), "0.00");
+        assert_eq!(fixed(-0.0006, 3), "-0.001");
+        assert_eq!(fixed(-5.3164, 4), "-5.3164");
     }
 }
