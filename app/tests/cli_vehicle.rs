@@ -1,7 +1,8 @@
 //! `eom run` on a vehicle scene, end to end through the binary: REMUS's Chapter 8 turn into
 //! its folder (trajectory.csv, the plots, the 3-D view, summary.json with the folded table and
-//! the figures), and `eom linear` on it: A, B and the modes at the cruise. Commands, thrusts
-//! and bodies a run could not hold as labelled are refused by key.
+//! the figures), and `eom linear` on it: A, B and the modes at the cruise. A REMUS out of trim
+//! runs its trials from its trim, one without a trim ahead runs nothing, and commands and
+//! bodies it could not run as labelled are refused by key.
 
 use eom_test_support::cli::{eom, folder, scene, scene_arg, succeeded};
 use std::path::{Path, PathBuf};
@@ -168,6 +169,26 @@ fn remus_edited(dir: &Path, edits: &[(&str, &str)]) -> PathBuf {
     path
 }
 
+/// The edits that give REMUS the body `mass` (kg), `weight` (N), G at `x_g` m from O.
+fn payload(mass: &str, weight: &str, x_g: &str) -> [(String, String); 3] {
+    [
+        ("mass = 30.48 ".into(), format!("mass = {mass} ")),
+        ("weight = 299.0 ".into(), format!("weight = {weight} ")),
+        (
+            "centre_of_gravity = [0.0, 0.0, 0.0196]".into(),
+            format!("centre_of_gravity = [{x_g}, 0.0, 0.0196]"),
+        ),
+    ]
+}
+
+/// The edits as the borrowed pairs `remus_edited` takes.
+fn pairs(edits: &[(String, String)]) -> Edits<'_> {
+    edits
+        .iter()
+        .map(|(a, b)| (a.as_str(), b.as_str()))
+        .collect()
+}
+
 /// Edits of a scene's text: (from, to).
 type Edits<'a> = Vec<(&'a str, &'a str)>;
 
@@ -186,6 +207,7 @@ fn refused(scene: &Path, out: &Path) -> (Option<i32>, String) {
 #[test]
 fn commands_thrusts_and_bodies_a_run_could_not_hold_are_refused_naming_their_keys() {
     let dir = folder("remus_refused");
+    let heavy = payload("36.98", "362.8", "-0.01");
     let cases: Vec<(Edits, Vec<&str>)> = vec![
         // A 30° command on a 15° fin would run at 15° under a 30° label.
         (
@@ -213,6 +235,8 @@ fn commands_thrusts_and_bodies_a_run_could_not_hold_are_refused_naming_their_key
             vec![("weight = 299.0 ", "weight = 362.8 ")],
             vec!["body.mass", "body.weight"],
         ),
+        // And in both, aft: no steady motion ahead, so no manoeuvre runs.
+        (pairs(&heavy), vec!["`body`", "no trim ahead", "63.8 N"]),
     ];
     // Every case is tried, and those not refused as they should be are listed together.
     let mut wrong = Vec::new();
@@ -227,6 +251,68 @@ fn commands_thrusts_and_bodies_a_run_could_not_hold_are_refused_naming_their_key
         let _ = std::fs::remove_dir_all(&out);
     }
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}
+
+/// A column of `trajectory.csv` by its header's name, with the times.
+fn column(csv: &str, name: &str) -> Vec<(f64, f64)> {
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let index = header
+        .iter()
+        .position(|h| h.starts_with(&format!("{name}[")))
+        .unwrap();
+    lines
+        .map(|line| {
+            let values: Vec<f64> = line.split(',').map(|v| v.parse().unwrap()).collect();
+            (values[0], values[index])
+        })
+        .collect()
+}
+
+#[test]
+fn a_remus_out_of_trim_runs_each_trial_from_its_trim() {
+    // 0.5 kg of payload 1 cm aft of the centre of buoyancy: started level, REMUS pitches up
+    // by tens of degrees before its first command.
+    let dir = folder("remus_out_of_trim");
+    let scene = remus_edited(&dir, &pairs(&payload("30.98", "303.9", "-0.01")));
+    let out = dir.join("out");
+    let stdout = succeeded(&eom(&[
+        "run",
+        scene.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]));
+    // Before each trial's execute (5 s) its pitch and speed stay those it starts with: a
+    // trim, to the rounding of 500 RK4 steps (1e-9°, 1e-9 m/s; measured 1e-12).
+    for trial in ["turning_circle", "zigzag_10_10", "vertical_zigzag_10_10"] {
+        let csv = std::fs::read_to_string(out.join(trial).join("trajectory.csv")).unwrap();
+        for name in ["theta", "u", "w"] {
+            let values = column(&csv, name);
+            let start = values[0].1;
+            for (t, value) in values.iter().filter(|(t, _)| *t <= 5.0) {
+                assert!(
+                    (value - start).abs() < 1e-9,
+                    "{trial}: {name} at {t} s: {value} from {start}"
+                );
+            }
+        }
+    }
+    assert!(stdout.contains("trimmed in every state but the position and the heading"));
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let cruise = &summary["cruise"];
+    assert_eq!(cruise["trimmed"].as_array().unwrap().len(), 8, "{cruise}");
+    // The closed forms are those of the straight level course, which this is not.
+    assert!(cruise["speed_closed_form_m_s"].is_null(), "{cruise}");
+    // Where the trial's pitch never reaches its switch, no figures, and why.
+    let vertical = &summary["manoeuvre"]["vertical_zigzag_10_10"]["trial"];
+    assert_eq!(vertical["switches_s"], serde_json::json!([]));
+    let why = vertical["no_figures_because"].as_str().unwrap();
+    assert!(why.contains("from the trim's"), "{why}");
+    assert!(
+        stdout.contains("Vertical zig-zag 10°/10°: no figures"),
+        "{stdout}"
+    );
 }
 
 #[test]

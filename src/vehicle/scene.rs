@@ -82,9 +82,12 @@
 //! duration_s = 80
 //! ```
 //!
-//! Every run starts from the cruise at the propeller's setting: at the origin, heading north,
-//! fins at zero, with u and the roll angle φ trimmed so that u̇ = ṗ = 0 (Newton on the proved
-//! model and its proved Jacobian). Every key is checked and an error names it by its path.
+//! Every run starts from the trim at the propeller's setting ([`super::trim`]): at the origin,
+//! heading north, fins at zero, u and the roll angle φ trimmed so that u̇ = ṗ = 0 (Newton on
+//! the proved model and its proved Jacobian), and where that is not a steady motion (W ≠ B, G
+//! and the centre of buoyancy not on one vertical) the whole state but the position and the
+//! heading; a scene without a trim ahead is refused. Every key is checked and an error names
+//! it by its path.
 
 use super::autopilot::{Autopilots, DepthGains, HeadingGains, Setpoints};
 use super::cross_flow::CrossFlow;
@@ -94,9 +97,9 @@ use super::model::VehicleModel;
 use super::propeller::PropellerLaw;
 use super::table::{PrimeScales, PropellerSetting, VehicleTable};
 use super::trial::{Plane, Trial};
+use super::trim::{Held, Trim, TrimError, Trimmer};
 use super::{AddedMassCoriolis, Convention, InertiaAbout, VehicleError};
 use crate::integrate::Stepper;
-use crate::models::Model;
 use crate::scene::check::Checker;
 use crate::scene::{Problem, SceneError};
 use crate::ship::scene::{IntegratorTable, OutputTable, RudderTable};
@@ -330,8 +333,10 @@ pub struct VehicleScene {
     pub every: f64,
     /// The manoeuvres.
     pub manoeuvres: Vec<VehicleManoeuvre>,
-    /// The operating point of `eom linear` (`[linear]`), by default the cruise.
+    /// The operating point of `eom linear` (`[linear]`), by default the trim.
     pub linear: crate::linear::LinearSpec,
+    /// The steady motion every manoeuvre starts from.
+    pub trim: Trim,
 }
 
 impl Checker<'_> {
@@ -392,7 +397,6 @@ impl Checker<'_> {
         Ok(VehicleTable {
             mass,
             weight,
-
             buoyancy: self.positive("body.buoyancy", body.buoyancy)?,
             centre_of_gravity,
             centre_of_buoyancy: vector("centre_of_buoyancy", body.centre_of_buoyancy)?,
@@ -707,11 +711,14 @@ impl Checker<'_> {
         })
     }
 
+    /// Manoeuvre `index`, from `trim` (the scene's; one held by its autopilots is set by
+    /// [`Checker::held_trim`]).
     fn vehicle_manoeuvre(
         &self,
         index: usize,
         table: &ManoeuvreTable,
         autopilots: Option<&Autopilots>,
+        trim: Trim,
     ) -> Result<VehicleManoeuvre, SceneError> {
         let key = |k: &str| format!("manoeuvre[{index}].{k}");
         let duration = self.positive(&key("duration_s"), table.duration_s)?;
@@ -825,7 +832,71 @@ impl Checker<'_> {
             autopilot,
             trial,
             duration,
+            trim,
         })
+    }
+
+    /// The trim of manoeuvre `index`, whose autopilots hold `held` from its start: the fins
+    /// they work at their trim within their stops, and the pitch within the depth
+    /// autopilot's `max_pitch_deg`, since the autopilots could not hold it beyond.
+    fn held_trim(
+        &self,
+        index: usize,
+        trimmer: &mut Trimmer<'_>,
+        held: Held,
+        fins: &Fins,
+        file: &VehicleSceneFile,
+    ) -> Result<Trim, SceneError> {
+        let asking = if held.depth { "depth_m" } else { "heading_deg" };
+        let key = format!("manoeuvre[{index}].{asking}");
+        let trim = trimmer
+            .trim(held)
+            .map_err(|e| self.invalid(&key, e.to_string()))?;
+        let beyond = |angle: f64, limit: Option<f64>| limit.is_some_and(|max| angle.abs() > max);
+        let gears = [
+            (
+                held.heading,
+                "rudder",
+                fins.rudder.max_angle,
+                trim.state[13],
+            ),
+            (
+                held.depth,
+                "stern_planes",
+                fins.stern_planes.max_angle,
+                trim.state[14],
+            ),
+        ];
+        for (holds, fin, stop, angle) in gears {
+            if holds && beyond(angle, stop) {
+                return Err(self.invalid(
+                    &key,
+                    format!(
+                        "the steady motion its autopilots hold from the start needs the {} at \
+                         {}°, beyond `{fin}.max_deg` = {}°",
+                        fin.replace('_', " "),
+                        Short(angle.to_degrees()),
+                        Short(stop.unwrap_or(0.0).to_degrees())
+                    ),
+                ));
+            }
+        }
+        let pitch = crate::vehicle::manoeuvre::euler_angles(&trim.state)[1];
+        let max_pitch = (file.autopilot.as_ref())
+            .and_then(|a| a.depth.as_ref())
+            .map(|d| d.max_pitch_deg);
+        if let Some(max) = max_pitch.filter(|max| held.depth && pitch.to_degrees().abs() > *max) {
+            return Err(self.invalid(
+                &key,
+                format!(
+                    "the steady motion with the depth held pitches {}°, beyond \
+                     `autopilot.depth.max_pitch_deg` = {}°, which the autopilot cannot command",
+                    Short(pitch.to_degrees()),
+                    Short(max)
+                ),
+            ));
+        }
+        Ok(trim)
     }
 
     /// The fins' commands of manoeuvre `index` within their stops (`rudder.max_deg`,
@@ -1008,11 +1079,12 @@ impl Checker<'_> {
         }
     }
 
-    /// `[autopilot]`: the gains, positive, and each fin's sense on `model` at its cruise.
+    /// `[autopilot]`: the gains, positive, and each fin's sense on `model` at its trim `start`.
     fn autopilots(
         &self,
         table: &AutopilotTable,
         model: &VehicleModel,
+        start: &[f64; 15],
     ) -> Result<Autopilots, SceneError> {
         let sample = self.positive("autopilot.sample_s", table.sample_s)?;
         let gain = |key: &str, value: f64| -> Result<f64, SceneError> {
@@ -1055,8 +1127,7 @@ impl Checker<'_> {
                 })
             })
             .transpose()?;
-        let start = cruise(model).map_err(|e| self.invalid(&e.key(), e.to_string()))?;
-        Autopilots::new(model, &start, sample, (heading, depth))
+        Autopilots::new(model, start, sample, (heading, depth))
             .map_err(|e| self.invalid(&e.key(), e.to_string()))
     }
 }
@@ -1090,13 +1161,20 @@ impl VehicleScene {
                 Problem::Missing("at least one [[manoeuvre]]".into()),
             ));
         }
+        let refused = |e: TrimError| check.invalid(e.key(), e.to_string());
+        let mut trimmer = Trimmer::new(&table, &model).map_err(refused)?;
+        let trim = trimmer.trim(Held::default()).map_err(refused)?;
         let autopilots = (file.autopilot.as_ref())
-            .map(|table| check.autopilots(table, &model))
+            .map(|table| check.autopilots(table, &model, &trim.state))
             .transpose()?;
         let mut manoeuvres: Vec<VehicleManoeuvre> = Vec::new();
         for (index, table) in file.manoeuvre.iter().enumerate() {
-            let manoeuvre = check.vehicle_manoeuvre(index, table, autopilots.as_ref())?;
+            let mut manoeuvre = check.vehicle_manoeuvre(index, table, autopilots.as_ref(), trim)?;
             check.within_stops(index, table, &file.rudder, &file.stern_planes)?;
+            let held = manoeuvre.held();
+            if held != Held::default() {
+                manoeuvre.trim = check.held_trim(index, &mut trimmer, held, &fins, file)?;
+            }
             if manoeuvres.iter().any(|m| m.name == manoeuvre.name) {
                 return Err(check.invalid(
                     &format!("manoeuvre[{index}].name"),
@@ -1127,48 +1205,13 @@ impl VehicleScene {
             every,
             manoeuvres,
             linear,
+            trim,
         })
     }
 
-    /// The cruise every run starts from (see the module docs).
+    /// The trim every run starts from (see the module docs): found when the scene was read,
+    /// which refuses a scene without one.
     pub fn start(&self) -> Result<[f64; 15], VehicleError> {
-        cruise(&self.model)
+        Ok(self.trim.state)
     }
-}
-
-/// The cruise: at the origin, heading north, fins at zero, u and φ found by Newton so that
-/// u̇ = ṗ = 0 on the model (its proved Jacobian, the chain rule through |u| added), from
-/// u = 1 m/s, φ = 0; converged when both rates are below 1e-13 (in m/s² and rad/s²: rounding
-/// of rates of order one).
-pub fn cruise(model: &VehicleModel) -> Result<[f64; 15], VehicleError> {
-    let state = |u: f64, phi: f64| {
-        let mut x = [0.0; 15];
-        x[0] = u;
-        x[9] = (phi / 2.0).cos();
-        x[10] = (phi / 2.0).sin();
-        x
-    };
-    let (mut u, mut phi) = (1.0, 0.0);
-    for _ in 0..50 {
-        let x = state(u, phi);
-        let f = Model::<f64, 15, 2>::rhs(model, &x, &[0.0; 2]);
-        let (r_u, r_p) = (f[0], f[3]);
-        if r_u.abs() < 1e-13 && r_p.abs() < 1e-13 {
-            return Ok(x);
-        }
-        let j = Model::<f64, 15, 2>::state_jacobian(model, &x, &[0.0; 2]);
-        let dq = [-(phi / 2.0).sin() / 2.0, (phi / 2.0).cos() / 2.0];
-        let d_phi = |row: usize| j[row][9] * dq[0] + j[row][10] * dq[1];
-        let (a, b, c, d) = (j[0][0], d_phi(0), j[3][0], d_phi(3));
-        let det = a * d - b * c;
-        if det == 0.0 || !det.is_finite() {
-            break;
-        }
-        u -= (d * r_u - b * r_p) / det;
-        phi -= (a * r_p - c * r_u) / det;
-    }
-    Err(VehicleError::invalid(
-        "propeller",
-        "no cruise: Newton on u̇ = ṗ = 0 (surge and roll) did not converge from u = 1 m/s",
-    ))
 }

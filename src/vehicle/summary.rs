@@ -86,18 +86,37 @@ fn twelve_digits(x: f64) -> f64 {
     format!("{x:.11e}").parse::<f64>().unwrap_or(x) + 0.0
 }
 
-/// The cruise: surge and roll trimmed on the model, against their closed forms.
-#[derive(Debug, Clone, Copy, Serialize)]
+/// The trim every manoeuvre starts from ([`super::trim`]): surge and roll trimmed on the
+/// model, against their closed forms, or the whole state but the position and the heading.
+#[derive(Debug, Clone, Serialize)]
 pub struct CruiseSummary {
     /// u of the trim, m/s.
     pub speed_m_s: f64,
-    /// √(X_prop / −X_u|u|) where the table has a u|u| term and a propeller, m/s.
+    /// √(X_prop / −X_u|u|) where the table has a u|u| term and a propeller, on the straight
+    /// level course (not given for a trim of the whole state, where it does not hold), m/s.
     pub speed_closed_form_m_s: Option<f64>,
     /// φ of the trim, degrees.
     pub roll_deg: f64,
     /// asin(K_prop / (z_G W − z_B B)), degrees: the propeller's torque against the righting
-    /// moment, where the table has no other roll term at the cruise.
+    /// moment, where the table has no other roll term on the straight level course (not given
+    /// for a trim of the whole state).
     pub roll_closed_form_deg: Option<f64>,
+    /// The states solved for: `["u", "phi"]` on the straight level course, else the whole
+    /// state but the position and the heading.
+    pub trimmed: Vec<&'static str>,
+    /// Newton's steps on the whole state, where it was trimmed.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub newton_steps: Option<usize>,
+    /// θ of the trim, degrees.
+    pub pitch_deg: f64,
+    /// v of the trim, m/s.
+    pub sway_m_s: f64,
+    /// w of the trim, m/s.
+    pub heave_m_s: f64,
+    /// ψ̇ of the trim (a steady helix where it is not zero), degrees per second.
+    pub heading_rate_deg_s: f64,
+    /// ż of the trim (down positive), m/s.
+    pub depth_rate_m_s: f64,
 }
 
 /// The figures of one step of the commands, read where it ends.
@@ -347,38 +366,56 @@ pub fn largest_difference(a: &[StepFigures], b: &[StepFigures]) -> f64 {
 }
 
 impl CruiseSummary {
-    /// The trim `start` of `scene`'s model, against the closed forms.
-    pub fn new(scene: &VehicleScene, start: &[f64; 15]) -> Self {
-        let table = &scene.table;
-        // The names of X's u|u| under the table's convention (Fossen's u², the same ahead),
-        // and the prime system's ½ρL² of a force of two linear velocities.
-        let names: &[&str] = match table.convention {
-            super::Convention::Prestero => &["Xuu"],
-            super::Convention::Fossen => &["Xu|u|", "Xuu"],
+    /// The trim of `scene`'s model, against the closed forms where they hold.
+    pub fn new(scene: &VehicleScene) -> Self {
+        let trim = &scene.trim;
+        let start = &trim.state;
+        let level = trim.whole_state_steps.is_none();
+        let (closed_speed, closed_roll) = match level {
+            true => closed_forms(&scene.table),
+            false => (None, None),
         };
-        let drag = names.iter().find_map(|n| table.coefficients.get(*n));
-        let scale = table
-            .prime
-            .map_or(1.0, |p| 0.5 * p.density * p.length.powi(2));
-        let closed_speed = match (table.propeller, drag) {
-            (Some(p), Some(&x)) if x < 0.0 && p.thrust >= 0.0 => {
-                Some((p.thrust / (-x * scale)).sqrt())
-            }
-            _ => None,
-        };
-        let righting = table.centre_of_gravity[2] * table.weight
-            - table.centre_of_buoyancy[2] * table.buoyancy;
-        let closed_roll = table
-            .propeller
-            .filter(|p| righting > 0.0 && (p.torque / righting).abs() <= 1.0)
-            .map(|p| (p.torque / righting).asin().to_degrees());
+        let [phi, theta, _] = euler_angles(start);
+        let (heading_rate, _) = super::trial::heading_and_pitch_rates(start);
         CruiseSummary {
             speed_m_s: start[0],
             speed_closed_form_m_s: closed_speed,
-            roll_deg: euler_angles(start)[0].to_degrees(),
+            roll_deg: phi.to_degrees(),
             roll_closed_form_deg: closed_roll,
+            trimmed: trim.trimmed(),
+            newton_steps: trim.whole_state_steps,
+            pitch_deg: theta.to_degrees(),
+            sway_m_s: start[1],
+            heave_m_s: start[2],
+            heading_rate_deg_s: heading_rate.to_degrees(),
+            depth_rate_m_s: trim.depth_rate(),
         }
     }
+}
+
+/// The straight level cruise's speed and roll in closed form (see [`CruiseSummary`]).
+fn closed_forms(table: &super::VehicleTable) -> (Option<f64>, Option<f64>) {
+    // The names of X's u|u| under the table's convention (Fossen's u², the same ahead),
+    // and the prime system's ½ρL² of a force of two linear velocities.
+    let names: &[&str] = match table.convention {
+        super::Convention::Prestero => &["Xuu"],
+        super::Convention::Fossen => &["Xu|u|", "Xuu"],
+    };
+    let drag = names.iter().find_map(|n| table.coefficients.get(*n));
+    let scale = table
+        .prime
+        .map_or(1.0, |p| 0.5 * p.density * p.length.powi(2));
+    let closed_speed = match (table.propeller, drag) {
+        (Some(p), Some(&x)) if x < 0.0 && p.thrust >= 0.0 => Some((p.thrust / (-x * scale)).sqrt()),
+        _ => None,
+    };
+    let righting =
+        table.centre_of_gravity[2] * table.weight - table.centre_of_buoyancy[2] * table.buoyancy;
+    let closed_roll = table
+        .propeller
+        .filter(|p| righting > 0.0 && (p.torque / righting).abs() <= 1.0)
+        .map(|p| (p.torque / righting).asin().to_degrees());
+    (closed_speed, closed_roll)
 }
 
 impl ModelSummary {

@@ -1,7 +1,7 @@
 //! Vehicle scenes: `eom run SCENE` for a scene with `[model] family = "vehicle"` and
 //! `[hydrodynamics]`.
 //!
-//! Each `[[manoeuvre]]` runs from the cruise into its own folder (`trajectory.csv`; as SVG the
+//! Each `[[manoeuvre]]` runs from its trim ([`eom::vehicle::trim`]) into its own folder (`trajectory.csv`; as SVG the
 //! track in plan, the profile, the attitude and the fins with their commands; `view.html`, the
 //! run in 3-D), and
 //! `summary.json` beside them holds the model that ran, the method, the folded table against
@@ -12,6 +12,7 @@
 
 use super::run::{Interrupted, signal_received};
 use anyhow::{Context, Result};
+use eom::Model;
 use eom::output::summary::write_atomically;
 use eom::output::text::printable;
 use eom::output::trajectory::{Columns, TrajectoryWriter};
@@ -24,7 +25,7 @@ use eom::vehicle::summary::{
 };
 use eom::vehicle::trial::{Plane, TrialFigures, largest_trial_difference};
 use eom::vehicle::{VehicleError, VehicleScene, format_folded};
-use eom::{Model, Short, counted};
+use eom::{Short, counted};
 use eom_cli::plots::Mark;
 use eom_cli::plots::vehicle::{VehiclePlot, write_vehicle_plots};
 use std::collections::BTreeMap;
@@ -39,7 +40,6 @@ struct Outcome {
 /// Runs a vehicle scene, read and checked, into `out`, a folder already known to be writable,
 /// and prints its figures.
 pub fn execute(scene: &VehicleScene, out: &Path) -> Result<()> {
-    let start = scene.start()?;
     let mut manoeuvres = BTreeMap::new();
     let mut outcomes = Vec::new();
     let mut interrupted = None;
@@ -47,7 +47,7 @@ pub fn execute(scene: &VehicleScene, out: &Path) -> Result<()> {
         let folder = out.join(&manoeuvre.name);
         std::fs::create_dir_all(&folder)
             .with_context(|| format!("creating {}", folder.display()))?;
-        let outcome = match run_manoeuvre(scene, manoeuvre, start, &folder) {
+        let outcome = match run_manoeuvre(scene, manoeuvre, &folder) {
             Err(error) if is_stopped(&error) => {
                 interrupted = signal_received();
                 break;
@@ -62,7 +62,7 @@ pub fn execute(scene: &VehicleScene, out: &Path) -> Result<()> {
         model: ModelSummary::new(scene),
         integrator: IntegratorSummary::new(&scene.stepper),
         kirchhoff: scene.model.folded().iter().map(KirchhoffRow::new).collect(),
-        cruise: CruiseSummary::new(scene, &start),
+        cruise: CruiseSummary::new(scene),
         manoeuvre: manoeuvres,
         interrupted: interrupted.is_some(),
     };
@@ -91,12 +91,11 @@ fn is_stopped(error: &anyhow::Error) -> bool {
         .is_some_and(|e| matches!(e, VehicleError::Stopped { .. }))
 }
 
-/// Runs `manoeuvre` with the scene's method, its rows streamed to `folder/trajectory.csv`
+/// Runs `manoeuvre` from its trim with the scene's method, its rows streamed to `folder/trajectory.csv`
 /// (t, [`ROW`], the kinetic energy of the body and the fluid), then refined, and draws it.
 fn run_manoeuvre(
     scene: &VehicleScene,
     manoeuvre: &VehicleManoeuvre,
-    start: [f64; 15],
     folder: &Path,
 ) -> Result<Outcome> {
     let path = folder.join("trajectory.csv");
@@ -109,7 +108,7 @@ fn run_manoeuvre(
         model,
         &scene.fins,
         manoeuvre,
-        start,
+        manoeuvre.trim.state,
         (&scene.stepper, scene.every),
         |sample| {
             let row = Row {
@@ -132,7 +131,7 @@ fn run_manoeuvre(
         model,
         &scene.fins,
         manoeuvre,
-        start,
+        manoeuvre.trim.state,
         (&scene.stepper.refined(), scene.every),
         |_| signal_received().is_none(),
     )?;
@@ -212,6 +211,18 @@ fn print_report(scene: &VehicleScene, summary: &VehicleSummary, outcomes: &[Outc
         fixed(cruise.roll_deg, 4),
         closed(cruise.roll_closed_form_deg, "°")
     );
+    if let Some(steps) = cruise.newton_steps {
+        println!(
+            "    trimmed in every state but the position and the heading ({}): θ = {}°, v = \
+             {} m/s, w = {} m/s, ψ̇ = {} °/s, ż = {} m/s",
+            counted(steps, "Newton step", "Newton steps"),
+            fixed(cruise.pitch_deg, 3),
+            fixed(cruise.sway_m_s, 4),
+            fixed(cruise.heave_m_s, 4),
+            fixed(cruise.heading_rate_deg_s, 4),
+            fixed(cruise.depth_rate_m_s, 4)
+        );
+    }
     for (manoeuvre, outcome) in scene.manoeuvres.iter().zip(outcomes) {
         println!(
             "  {}: (refined: {:.1e})",
@@ -318,11 +329,14 @@ fn print_trial(trial: &TrialFigures) {
                 Short(f.fin_deg),
                 Short(f.switch_deg)
             );
-            println!(
-                "{label} overshoots {} °, switches at {} s",
-                list(&f.overshoots_deg),
-                list(&f.switches_s)
-            );
+            match &f.no_figures_because {
+                Some(why) => println!("{label} no figures: {why}"),
+                None => println!(
+                    "{label} overshoots {} °, switches at {} s",
+                    list(&f.overshoots_deg),
+                    list(&f.switches_s)
+                ),
+            }
         }
     }
 }
