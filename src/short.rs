@@ -1,4 +1,4 @@
-//! Numbers in messages, to six significant digits.
+//! Numbers in messages, to six significant digits, and counts with their nouns.
 //!
 //! A message names the value it objects to or the time a run stopped at; printed with Rust's
 //! shortest round-trip form, `every = 1e-300` came back as a 300-digit decimal and a stop time
@@ -38,6 +38,16 @@ impl fmt::Display for Short {
         let (mantissa, power) = text.split_once('e').unwrap_or((&text, "0"));
         write!(f, "{}e{power}", trim_zeros(mantissa))
     }
+}
+
+/// A count and its noun in the number the count takes: `1 value`, `2 values`, `0 values`.
+///
+/// ```
+/// assert_eq!(eom::counted(1, "value", "values"), "1 value");
+/// assert_eq!(eom::counted(3, "Newton step", "Newton steps"), "3 Newton steps");
+/// ```
+pub fn counted(n: usize, one: &str, many: &str) -> String {
+    format!("{n} {}", if n == 1 { one } else { many })
 }
 
 /// `1.500` → `1.5`, `20.000` → `20`; a number without a decimal point as it is.

@@ -9,8 +9,8 @@
 use eom::Model;
 use eom::scene::AnyScene;
 use eom::vehicle::manoeuvre::{self, VehicleManoeuvre, VehicleRun};
-use eom::vehicle::scene::cruise;
 use eom::vehicle::summary::{CruiseSummary, StepFigures, largest_difference};
+use eom::vehicle::trim::cruise;
 use eom::vehicle::{InertiaAbout, VehicleModel, VehicleScene};
 use num_dual::Dual64;
 use std::path::Path;
@@ -252,7 +252,7 @@ fn the_nps_scene_holds_npsauv_m_s_numbers_bit_for_bit() {
 fn the_cruise_is_the_propeller_law_s_speed_and_holds() {
     let scene = nps();
     let start = scene.start().unwrap();
-    let cruise = CruiseSummary::new(&scene, &start);
+    let cruise = CruiseSummary::new(&scene);
     println!("{cruise:#?}");
     let law = 0.012 * shaft_speed();
     let closed = cruise.speed_closed_form_m_s.unwrap();

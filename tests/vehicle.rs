@@ -6,8 +6,8 @@
 use eom::Model;
 use eom::scene::AnyScene;
 use eom::vehicle::manoeuvre::{self, VehicleManoeuvre, VehicleRun};
-use eom::vehicle::scene::cruise;
 use eom::vehicle::summary::{CruiseSummary, StepFigures, largest_difference};
+use eom::vehicle::trim::cruise;
 use eom::vehicle::{VehicleModel, VehicleScene, format_folded};
 use std::path::Path;
 
@@ -110,7 +110,7 @@ fn the_remus_scene_holds_the_published_data_bit_for_bit() {
 fn the_cruise_is_the_closed_form_speed_and_roll_trim_and_holds() {
     let scene = remus();
     let start = scene.start().unwrap();
-    let cruise = CruiseSummary::new(&scene, &start);
+    let cruise = CruiseSummary::new(&scene);
     println!("{cruise:#?}");
     // Newton stops when u̇ and ṗ are below 1e-13 (m/s², rad/s²); ∂u̇/∂u ≈ 0.16 /s and
     // ∂ṗ/∂φ ≈ 24 /s², so u and φ are within 1e-12 of the trim.
@@ -1043,4 +1043,211 @@ fn a_fin_s_rate_limit_is_an_event_of_the_run() {
     println!("{d1:e} {d2:e} ratio {}", d1 / d2);
     assert!(d1 / d2 > 8.0, "{d1:e} / {d2:e}");
     assert!(d2 < 1e-6, "{d2:e}");
+}
+
+#[test]
+fn a_count_in_a_message_takes_its_noun_s_number() {
+    let one = parse(&edited(
+        "rudder_deg = [4.0, -4.0, 0.0]",
+        "rudder_deg = [4.0]",
+    ))
+    .unwrap_err();
+    assert!(one.contains("1 value for 3 times"), "{one}");
+}
+
+/// REMUS with `payload` kg more mass and weight (W = M · 9.81 N, to 0.1 N), G at `x_g` m.
+fn with_payload(payload: f64, x_g: f64) -> String {
+    let mass = 30.48 + payload;
+    let weight = (mass * 9.81 * 10.0).round() / 10.0;
+    edited("mass = 30.48 ", &format!("mass = {mass} "))
+        .replacen("weight = 299.0 ", &format!("weight = {weight} "), 1)
+        .replacen(
+            "centre_of_gravity = [0.0, 0.0, 0.0196]",
+            &format!("centre_of_gravity = [{x_g}, 0.0, 0.0196]"),
+            1,
+        )
+}
+
+#[test]
+fn a_fin_command_beyond_its_stop_is_refused_naming_both_keys() {
+    // REMUS's fins stop at 15°: a command beyond would run at 15° under a 30° label.
+    let cases = [
+        (
+            "rudder_deg = [4.0, -4.0, 0.0]",
+            "rudder_deg = [4.0, -30.0, 0.0]",
+            "manoeuvre[0].rudder_deg[1]",
+            "rudder.max_deg",
+        ),
+        (
+            "stern_planes_deg = [4.0, -4.0, 0.0]",
+            "stern_planes_deg = [16.0, -4.0, 0.0]",
+            "manoeuvre[1].stern_planes_deg[0]",
+            "stern_planes.max_deg",
+        ),
+        (
+            "rudder_deg = [10.0]",
+            "rudder_deg = [30.0]",
+            "manoeuvre[3].rudder_deg[0]",
+            "rudder.max_deg",
+        ),
+        (
+            "plane = \"vertical\"\nfin_deg = 10.0",
+            "plane = \"vertical\"\nfin_deg = 30.0",
+            "manoeuvre[5].fin_deg",
+            "stern_planes.max_deg",
+        ),
+    ];
+    for (from, to, command, stop) in cases {
+        let error = parse(&edited(from, to)).unwrap_err();
+        println!("{error}");
+        assert!(error.contains(&format!("`{command}`")), "{to}: {error}");
+        assert!(error.contains(&format!("`{stop}` = 15°")), "{to}: {error}");
+    }
+    // At the stop itself, the command runs as labelled.
+    assert!(parse(&edited("rudder_deg = [10.0]", "rudder_deg = [15.0]")).is_ok());
+}
+
+#[test]
+fn a_thrust_not_ahead_and_a_mass_against_its_weight_are_refused_by_key() {
+    let astern = parse(&edited("thrust = 3.86", "thrust = -3.86")).unwrap_err();
+    assert!(
+        astern.contains("`propeller.thrust`") && astern.contains("astern"),
+        "{astern}"
+    );
+    let none = parse(&edited("thrust = 3.86", "thrust = 0.0")).unwrap_err();
+    assert!(
+        none.contains("`propeller.thrust`") && none.contains("zero thrust"),
+        "{none}"
+    );
+    let start = scene_text().find("[propeller]").unwrap();
+    let end = scene_text().find("# The fins' stops").unwrap();
+    let mut without = scene_text();
+    without.replace_range(start..end, "");
+    let missing = parse(&without).unwrap_err();
+    assert!(missing.contains("`propeller`"), "{missing}");
+    // 6.5 kg of payload in the weight and not in the mass: W/M = 11.9 m/s².
+    let heavier = parse(&edited("weight = 299.0 ", "weight = 362.8 ")).unwrap_err();
+    println!("{heavier}");
+    assert!(
+        heavier.contains("`body.mass`") && heavier.contains("`body.weight` = 362.8 N"),
+        "{heavier}"
+    );
+    // Both in: W/M = 9.81 m/s² (REMUS's own 299 N and 30.48 kg give 9.8097, to the rounding
+    // of the numbers as written; so do the standard 9.80665 and a mass of three digits).
+    let both = parse(&with_payload(6.5, 0.0)).err();
+    assert!(both.is_none_or(|e| !e.contains("body.mass")));
+    for (mass, weight) in [("30.49", "299.0"), ("30.5", "299.0"), ("31", "299.0")] {
+        let text = edited("mass = 30.48 ", &format!("mass = {mass} ")).replacen(
+            "weight = 299.0 ",
+            &format!("weight = {weight} "),
+            1,
+        );
+        assert!(parse(&text).is_ok(), "{mass} kg, {weight} N");
+    }
+}
+
+#[test]
+fn a_heavy_remus_has_no_trim_ahead_and_is_refused_by_its_body() {
+    // 6.5 kg of payload aft: the only steady motion Newton finds from the cruise backs down
+    // as it sinks (u = −0.28 m/s), outside a table identified ahead.
+    let error = parse(&with_payload(6.5, -0.01)).unwrap_err();
+    println!("{error}");
+    assert!(
+        error.contains("`body`") && error.contains("no trim ahead"),
+        "{error}"
+    );
+    assert!(
+        error.contains("body.weight − body.buoyancy = 63.8 N"),
+        "{error}"
+    );
+}
+
+#[test]
+fn a_vehicle_out_of_trim_starts_each_manoeuvre_steady_from_its_trim() {
+    use eom::linear::{EQUILIBRIUM_TOLERANCE, LinearPlant};
+    use eom::vehicle::linear::VehiclePlant;
+    // 0.5 kg of payload 1 cm aft of the centre of buoyancy: level, REMUS would pitch up by
+    // tens of degrees before its first command.
+    let scene = parse(&with_payload(0.5, -0.01)).unwrap();
+    let trim = scene.trim;
+    println!("{trim:?}");
+    assert!(trim.whole_state_steps.is_some());
+    let [_, pitch, _] = manoeuvre::euler_angles(&trim.state);
+    assert!(pitch.to_degrees() > 30.0, "{}°", pitch.to_degrees());
+    let plant = VehiclePlant::new(&scene.table).unwrap();
+    let twin = |state: &[f64; 15]| {
+        let mut x = state[..9].to_vec();
+        x.extend(manoeuvre::euler_angles(state));
+        x
+    };
+    for m in &scene.manoeuvres {
+        let held = m.held();
+        // The rates the trim holds at zero: ν̇, φ̇, θ̇ (the helix's ψ̇ and ż are steady), and
+        // ψ̇ or ż where an autopilot holds the heading or the depth; each to the trim's
+        // tolerance, 1e-9 (1 + max |x|).
+        let rates = plant
+            .evaluate(&twin(&m.trim.state), &m.trim.state[13..])
+            .unwrap()
+            .rates;
+        let mut held_rates = vec![0, 1, 2, 3, 4, 5, 9, 10];
+        held_rates.extend(held.heading.then_some(11));
+        held_rates.extend(held.depth.then_some(8));
+        let scale = 1.0 + m.trim.state.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+        for i in held_rates {
+            assert!(
+                rates[i].abs() <= EQUILIBRIUM_TOLERANCE * scale,
+                "{}: rate {i} = {:e}",
+                m.name,
+                rates[i]
+            );
+        }
+        // Until its first command, the run stays in the trim: velocities, rates, roll and
+        // pitch within 1e-9 of it, and the depth on the trim's ż, however far it sinks or
+        // turns meanwhile (Newton's last step leaves rates far below its 1e-9 tolerance:
+        // measured, 2e-12 moved in 10 s, and 1e-12 m).
+        let run = run_with(&scene, &scene.model, m, m.trim.state);
+        let before = run.ends[0];
+        let angles = |s: &[f64; 15]| manoeuvre::euler_angles(s);
+        let velocities = (0..6).map(|i| before.state[i] - m.trim.state[i]);
+        let tilt = (0..2).map(|i| angles(&before.state)[i] - angles(&m.trim.state)[i]);
+        let moved = velocities.chain(tilt).fold(0.0f64, |a, x| a.max(x.abs()));
+        let sunk = before.state[8] - m.trim.depth_rate() * before.t;
+        println!(
+            "{}: in {} s, ν, φ, θ moved by {moved:e}, z by {sunk:e} m from the trim's",
+            m.name, before.t
+        );
+        assert!(moved < 1e-9, "{}: {moved:e}", m.name);
+        assert!(sunk.abs() < 1e-9, "{}: {sunk:e} m off the trim's ż", m.name);
+    }
+    // The autopilots hold the heading (and the depth) of the manoeuvre that asks them to
+    // from the start, the fin each works trimmed: no turn, and no depth change.
+    let turn_and_dive = &scene.manoeuvres[2];
+    assert!(turn_and_dive.held().heading && turn_and_dive.held().depth);
+    let trim = &turn_and_dive.trim;
+    assert!(trim.state[13] != 0.0 && trim.state[14] != 0.0, "{trim:?}");
+    assert_eq!(
+        trim.trimmed(),
+        ["u", "v", "w", "p", "q", "r", "phi", "theta", "dr", "ds"]
+    );
+}
+
+#[test]
+fn a_vertical_zigzag_switches_about_the_trim_s_pitch() {
+    use eom::vehicle::trial::Watch;
+    // G 1 cm aft: REMUS trims 26.9° nose up with its heading held, and zig-zags about that.
+    let scene = parse(&with_payload(0.0, -0.01)).unwrap();
+    let m = &scene.manoeuvres[5];
+    let trim_pitch = manoeuvre::euler_angles(&m.trim.state)[1];
+    assert!(trim_pitch.to_degrees() > 20.0);
+    let run = run_with(&scene, &scene.model, m, m.trim.state);
+    let progress = run.trial.as_ref().unwrap();
+    let mut switches = 0;
+    for event in &progress.events {
+        if let Watch::Switch(at) = event.watch {
+            switches += 1;
+            let pitch = manoeuvre::euler_angles(&event.state)[1];
+            assert!((pitch - trim_pitch - at).abs() < 1e-12, "{event:?}");
+        }
+    }
+    assert!(switches >= 4, "{switches}");
 }

@@ -1,8 +1,11 @@
 //! `eom run` on a vehicle scene, end to end through the binary: REMUS's Chapter 8 turn into
 //! its folder (trajectory.csv, the plots, the 3-D view, summary.json with the folded table and
-//! the figures), and `eom linear` on it: A, B and the modes at the cruise.
+//! the figures), and `eom linear` on it: A, B and the modes at the cruise. A REMUS out of trim
+//! runs its trials from its trim, one without a trim ahead runs nothing, and commands and
+//! bodies it could not run as labelled are refused by key.
 
-use eom_test_support::cli::{eom, folder, scene_arg, succeeded};
+use eom_test_support::cli::{eom, folder, scene, scene_arg, succeeded};
+use std::path::{Path, PathBuf};
 
 #[test]
 fn remus_runs_its_rudder_steps_into_a_folder() {
@@ -92,6 +95,36 @@ fn remus_runs_its_rudder_steps_into_a_folder() {
         );
     }
     assert!(view.contains("\"rows\":801"));
+    // The turning circle's track marks its 90° and 180° points as a ship's does.
+    let track = std::fs::read_to_string(out.join("turning_circle/track.svg")).unwrap();
+    for mark in [
+        "execute",
+        "90°: advance 7.8 m, transfer 6.3 m",
+        "180°: tactical diameter 13.3 m",
+    ] {
+        assert!(track.contains(mark), "{mark}");
+    }
+    // No figure is printed or written as a negative zero (the cruise's pitch of −2.5e-14°
+    // after 10 s, an autopilot's rudder of −0).
+    let negative_zero = |text: &str| {
+        text.split(|c: char| c.is_whitespace() || c == ',')
+            .any(|word| {
+                word.starts_with("-0") && word.trim_start_matches(['-', '0', '.']).is_empty()
+            })
+    };
+    assert!(!negative_zero(&stdout), "{stdout}");
+    let json = std::fs::read_to_string(out.join("summary.json")).unwrap();
+    assert!(!negative_zero(&json), "summary.json");
+    // Nor with the rounding of its making: the settling times read at the autopilot's samples
+    // (k · 0.1 s less 5 s), the folded table's differences (5.22 − (−0.93)).
+    let autopilot = &summary["manoeuvre"]["turn_and_dive"]["autopilot"];
+    assert_eq!(autopilot[0]["settling_time_s"], 16.2, "{autopilot}");
+    assert_eq!(autopilot[1]["settling_time_s"], 18.7, "{autopilot}");
+    let yur = kirchhoff
+        .iter()
+        .find(|row| row["coefficient"] == "Yur")
+        .unwrap();
+    assert_eq!(yur["difference"], 6.15, "{yur}");
     for manoeuvre in summary["manoeuvre"].as_object().unwrap().keys() {
         assert!(
             out.join(manoeuvre).join("view.html").is_file(),
@@ -153,4 +186,190 @@ fn remus_moments_about_g() -> (f64, f64, f64) {
     let squared: f64 = r.iter().map(|x| x * x).sum();
     let about_g = |k: usize| i[k][k] - m * (squared - r[k] * r[k]);
     (m, about_g(0), (about_g(1) + about_g(2)) / 2.0)
+}
+
+/// REMUS's scene with `edits` (from, to) made, written into `dir`.
+fn remus_edited(dir: &Path, edits: &[(&str, &str)]) -> PathBuf {
+    let mut text = std::fs::read_to_string(scene("remus100.toml")).unwrap();
+    for (from, to) in edits {
+        assert!(text.contains(from), "{from}");
+        text = text.replacen(from, to, 1);
+    }
+    let path = dir.join("remus_edited.toml");
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+/// The edits that give REMUS the body `mass` (kg), `weight` (N), G at `x_g` m from O.
+fn payload(mass: &str, weight: &str, x_g: &str) -> [(String, String); 3] {
+    [
+        ("mass = 30.48 ".into(), format!("mass = {mass} ")),
+        ("weight = 299.0 ".into(), format!("weight = {weight} ")),
+        (
+            "centre_of_gravity = [0.0, 0.0, 0.0196]".into(),
+            format!("centre_of_gravity = [{x_g}, 0.0, 0.0196]"),
+        ),
+    ]
+}
+
+/// The edits as the borrowed pairs `remus_edited` takes.
+fn pairs(edits: &[(String, String)]) -> Edits<'_> {
+    edits
+        .iter()
+        .map(|(a, b)| (a.as_str(), b.as_str()))
+        .collect()
+}
+
+/// Edits of a scene's text: (from, to).
+type Edits<'a> = Vec<(&'a str, &'a str)>;
+
+/// `eom run` of a scene that must be refused: its exit code, and its message.
+fn refused(scene: &Path, out: &Path) -> (Option<i32>, String) {
+    let output = eom(&[
+        "run",
+        scene.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let stderr = String::from_utf8_lossy(&output.stderr).into_owned();
+    (output.status.code(), stderr)
+}
+
+#[test]
+fn commands_thrusts_and_bodies_a_run_could_not_hold_are_refused_naming_their_keys() {
+    let dir = folder("remus_refused");
+    let heavy = payload("36.98", "362.8", "-0.01");
+    let cases: Vec<(Edits, Vec<&str>)> = vec![
+        // A 30° command on a 15° fin would run at 15° under a 30° label.
+        (
+            vec![("rudder_deg = [10.0]", "rudder_deg = [30.0]")],
+            vec!["manoeuvre[3].rudder_deg[0]", "rudder.max_deg"],
+        ),
+        (
+            vec![(
+                "plane = \"vertical\"\nfin_deg = 10.0",
+                "plane = \"vertical\"\nfin_deg = 30.0",
+            )],
+            vec!["manoeuvre[5].fin_deg", "stern_planes.max_deg"],
+        ),
+        // Astern on a table identified ahead, and at rest.
+        (
+            vec![("thrust = 3.86", "thrust = -3.86")],
+            vec!["propeller.thrust", "astern"],
+        ),
+        (
+            vec![("thrust = 3.86", "thrust = 0.0")],
+            vec!["propeller.thrust", "zero thrust"],
+        ),
+        // 6.5 kg of payload in the weight only.
+        (
+            vec![("weight = 299.0 ", "weight = 362.8 ")],
+            vec!["body.mass", "body.weight"],
+        ),
+        // And in both, aft: no steady motion ahead, so no manoeuvre runs.
+        (pairs(&heavy), vec!["`body`", "no trim ahead", "63.8 N"]),
+    ];
+    // Every case is tried, and those not refused as they should be are listed together.
+    let mut wrong = Vec::new();
+    for (edits, keys) in cases {
+        let scene = remus_edited(&dir, &edits);
+        let out = dir.join("out");
+        let (code, message) = refused(&scene, &out);
+        let named = keys.iter().all(|key| message.contains(key));
+        if code != Some(3) || !named || out.join("summary.json").exists() {
+            wrong.push(format!("{edits:?}: exit {code:?}, {message}"));
+        }
+        let _ = std::fs::remove_dir_all(&out);
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}
+
+/// A column of `trajectory.csv` by its header's name, with the times.
+fn column(csv: &str, name: &str) -> Vec<(f64, f64)> {
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let index = header
+        .iter()
+        .position(|h| h.starts_with(&format!("{name}[")))
+        .unwrap();
+    lines
+        .map(|line| {
+            let values: Vec<f64> = line.split(',').map(|v| v.parse().unwrap()).collect();
+            (values[0], values[index])
+        })
+        .collect()
+}
+
+#[test]
+fn a_remus_out_of_trim_runs_each_trial_from_its_trim() {
+    // 0.5 kg of payload 1 cm aft of the centre of buoyancy: started level, REMUS pitches up
+    // by tens of degrees before its first command.
+    let dir = folder("remus_out_of_trim");
+    let scene = remus_edited(&dir, &pairs(&payload("30.98", "303.9", "-0.01")));
+    let out = dir.join("out");
+    let stdout = succeeded(&eom(&[
+        "run",
+        scene.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]));
+    // Before each trial's execute (5 s) its pitch and speed stay those it starts with: a
+    // trim, to the rounding of 500 RK4 steps (1e-9°, 1e-9 m/s; measured 1e-12).
+    for trial in ["turning_circle", "zigzag_10_10", "vertical_zigzag_10_10"] {
+        let csv = std::fs::read_to_string(out.join(trial).join("trajectory.csv")).unwrap();
+        for name in ["theta", "u", "w"] {
+            let values = column(&csv, name);
+            let start = values[0].1;
+            for (t, value) in values.iter().filter(|(t, _)| *t <= 5.0) {
+                assert!(
+                    (value - start).abs() < 1e-9,
+                    "{trial}: {name} at {t} s: {value} from {start}"
+                );
+            }
+        }
+    }
+    assert!(stdout.contains("trimmed in every state but the position and the heading"));
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let cruise = &summary["cruise"];
+    assert_eq!(cruise["trimmed"].as_array().unwrap().len(), 8, "{cruise}");
+    // The closed forms are those of the straight level course, which this is not.
+    assert!(cruise["speed_closed_form_m_s"].is_null(), "{cruise}");
+    // Where the trial's pitch never reaches its switch, no figures, and why.
+    let vertical = &summary["manoeuvre"]["vertical_zigzag_10_10"]["trial"];
+    assert_eq!(vertical["switches_s"], serde_json::json!([]));
+    let why = vertical["no_figures_because"].as_str().unwrap();
+    assert!(why.contains("from the trim's"), "{why}");
+    assert!(
+        stdout.contains("Vertical zig-zag 10°/10°: no figures"),
+        "{stdout}"
+    );
+}
+
+#[test]
+fn a_command_of_7_5_degrees_is_reported_as_7_5() {
+    let dir = folder("remus_7_5");
+    let text = std::fs::read_to_string(scene("remus100.toml")).unwrap();
+    let own = text.find("[[manoeuvre]]").unwrap();
+    let trials = "[[manoeuvre]]\nkind = \"turning_circle\"\ntimes_s = [1.0]\nrudder_deg = [7.5]\n\
+        duration_s = 20.0\n\n[[manoeuvre]]\nkind = \"zigzag\"\nfin_deg = 7.5\nswitch_deg = 7.5\n\
+        times_s = [1.0]\nduration_s = 20.0\n";
+    let path = dir.join("seven_and_a_half.toml");
+    std::fs::write(&path, format!("{}{trials}", &text[..own])).unwrap();
+    let out = dir.join("out");
+    let stdout = succeeded(&eom(&[
+        "run",
+        path.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]));
+    assert!(stdout.contains("turning circle at 7.5°"), "{stdout}");
+    assert!(stdout.contains("zig-zag 7.5°/7.5°"), "{stdout}");
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let manoeuvres = &summary["manoeuvre"];
+    assert_eq!(manoeuvres["turning_circle"]["trial"]["rudder_deg"], 7.5);
+    assert_eq!(manoeuvres["turning_circle"]["steps"][1]["rudder_deg"], 7.5);
+    assert_eq!(manoeuvres["zigzag"]["trial"]["fin_deg"], 7.5);
+    assert_eq!(manoeuvres["zigzag"]["trial"]["switch_deg"], 7.5);
 }

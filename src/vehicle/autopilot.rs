@@ -18,6 +18,12 @@
 //!           δ_s,c = s_s m_θ
 //! ```
 //!
+//! Each acts about the trim its manoeuvre starts from ([`Feedforward`]): the trim's rudder,
+//! stern planes and pitch are added to δ_r,c, δ_s,c and θ_c, and the rates r and q are
+//! measured from the trim's (a steady helix turns and pitches at a steady rate), so that at
+//! zero error the autopilots hold the steady motion the run starts in (all are zero on the
+//! straight level cruise of a neutral vehicle).
+//!
 //! m is the turn the autopilot asks for (positive: towards positive r, or q), and s the sense
 //! in which the fin gives it: the sign of ∂ṙ/∂δ_r (or ∂q̇/∂δ_s) of the vehicle's own proved
 //! Jacobian at its cruise. So the gains mean the same on every table, whichever way its fins
@@ -134,12 +140,29 @@ impl Setpoints {
     }
 }
 
-/// The autopilots at work: their integrals and the commands they hold.
+/// What the autopilots command at zero error: the trim's fins and pitch, rad
+/// ([`super::trim`]).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Feedforward {
+    /// δ_r of the trim.
+    pub rudder: f64,
+    /// δ_s of the trim.
+    pub stern_planes: f64,
+    /// θ of the trim.
+    pub pitch: f64,
+    /// q of the trim, rad/s.
+    pub pitch_rate: f64,
+    /// r of the trim, rad/s.
+    pub yaw_rate: f64,
+}
+
+/// The autopilots at work: their integrals and the commands they hold, about a trim.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Controller {
     heading_integral: f64,
     depth_integral: f64,
     pitch_integral: f64,
+    trim: Feedforward,
 }
 
 /// `angle` wrapped to (−half, half] of a turn of `full` (2π, or 360 for degrees).
@@ -168,7 +191,25 @@ fn pid(
     demand
 }
 
+/// A fin's command for an autopilot's demand: its trim plus the demand in the fin's sense.
+fn about(trim: f64, sense: f64) -> impl Fn(f64) -> f64 + Copy {
+    move |demand| trim + sense * demand
+}
+
+/// Whether `command` of a demand is at the fin's stop `limit` (never, without one).
+fn at_stop(limit: Option<f64>, command: impl Fn(f64) -> f64) -> impl Fn(f64) -> bool {
+    move |demand| limit.is_some_and(|max| command(demand).abs() >= max)
+}
+
 impl Controller {
+    /// The autopilots about the trim `trim`, their integrals zero.
+    pub fn about(trim: Feedforward) -> Self {
+        Controller {
+            trim,
+            ..Controller::default()
+        }
+    }
+
     /// The fins' commands at a sample instant, rad (`None` for a fin whose autopilot is off),
     /// from the state ([`super::model::STATE`]) and its Euler angles, the commanded heading
     /// (degrees) and depth, the fins' saturation angles and the time since the last sample.
@@ -180,40 +221,45 @@ impl Controller {
         limits: [Option<f64>; 2],
         dt: f64,
     ) -> [Option<f64>; 2] {
-        let saturated =
-            |limit: Option<f64>| move |demand: f64| limit.is_some_and(|max| demand.abs() >= max);
+        let trim = self.trim;
         let rudder = match (autopilots.heading, heading) {
             (Some((g, sense)), Some(psi_c)) => {
-                let error = (wrapped(psi_c.to_radians() - psi, TAU), state[5]);
+                let error = (
+                    wrapped(psi_c.to_radians() - psi, TAU),
+                    state[5] - trim.yaw_rate,
+                );
+                let rudder = about(trim.rudder, sense);
                 let demand = pid(
                     (g.kp, g.ki, g.kd),
                     error,
                     &mut self.heading_integral,
                     dt,
-                    saturated(limits[0]),
+                    at_stop(limits[0], rudder),
                 );
-                Some(sense * demand)
+                Some(rudder(demand))
             }
             _ => None,
         };
         let planes = match (autopilots.depth, depth) {
             (Some((g, sense)), Some(z_c)) => {
+                let pitch = |demand: f64| trim.pitch - demand;
                 let outer = pid(
                     (g.kp, g.ki, 0.0),
                     (z_c - state[8], 0.0),
                     &mut self.depth_integral,
                     dt,
-                    |demand| demand.abs() >= g.max_pitch,
+                    |demand| pitch(demand).abs() >= g.max_pitch,
                 );
-                let theta_c = (-outer).clamp(-g.max_pitch, g.max_pitch);
+                let theta_c = pitch(outer).clamp(-g.max_pitch, g.max_pitch);
+                let planes = about(trim.stern_planes, sense);
                 let demand = pid(
                     (g.kp_pitch, g.ki_pitch, g.kd_pitch),
-                    (theta_c - theta, state[4]),
+                    (theta_c - theta, state[4] - trim.pitch_rate),
                     &mut self.pitch_integral,
                     dt,
-                    saturated(limits[1]),
+                    at_stop(limits[1], planes),
                 );
-                Some(sense * demand)
+                Some(planes(demand))
             }
             _ => None,
         };

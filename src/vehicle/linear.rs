@@ -109,7 +109,7 @@ impl LinearPlant for VehiclePlant {
 }
 
 /// The vehicle of `scene` linearised about the point its `[linear]` table names, by default
-/// the cruise every run starts from: the states set aside, A and B on the rest, the modes
+/// the trim every run starts from: the states set aside, A and B on the rest, the modes
 /// (surge, sway and yaw, heave and pitch, roll) and the verdict.
 pub fn linearise_vehicle(scene: &VehicleScene) -> Result<Linearisation, VehicleError> {
     let plant = VehiclePlant::new(&scene.table)?;

@@ -10,16 +10,17 @@
 //! t = k·every, as every scene's are, and at each change of the commands.
 
 use super::VehicleError;
-use super::autopilot::{Autopilots, Controller, Setpoints};
+use super::autopilot::{Autopilots, Controller, Feedforward, Setpoints};
 use super::fins::{FinSteps, Fins, Steering};
 use super::model::VehicleModel;
 use super::trial::{Progress, Trial, Watch};
+use super::trim::{Held, Trim};
 use crate::integrate::segment::{self, Hooks, add};
 use crate::integrate::{IntegrateError, RowClock, Stats, Stepper};
 use crate::models::Model;
 use nalgebra::SVector;
 
-/// One manoeuvre of a scene: the fins' steps, from the cruise, and the autopilots with what
+/// One manoeuvre of a scene: the fins' steps, from its trim, and the autopilots with what
 /// they are commanded to hold.
 #[derive(Debug, Clone, PartialEq)]
 pub struct VehicleManoeuvre {
@@ -33,6 +34,22 @@ pub struct VehicleManoeuvre {
     pub trial: Option<Trial>,
     /// The end of the run, s.
     pub duration: f64,
+    /// The steady motion it starts from ([`super::trim`]), its autopilots holding what they
+    /// hold from the start.
+    pub trim: Trim,
+}
+
+impl VehicleManoeuvre {
+    /// What its autopilots hold from its start: each one given a setpoint holds, before the
+    /// first, the start's heading or depth.
+    pub fn held(&self) -> Held {
+        self.autopilot
+            .as_ref()
+            .map_or_else(Held::default, |(_, setpoints)| Held {
+                heading: setpoints.heading_deg.is_some(),
+                depth: setpoints.depth.is_some(),
+            })
+    }
 }
 
 /// The state a run integrates.
@@ -369,7 +386,7 @@ fn instants(manoeuvre: &VehicleManoeuvre, schedule: &[f64]) -> Vec<f64> {
 /// What commands the fins through a run: the steps, and the autopilots where they are on.
 struct Command<'a> {
     manoeuvre: &'a VehicleManoeuvre,
-    /// The heading (degrees) and depth of the cruise, held before the first setpoint.
+    /// The heading (degrees) and depth of the start, held before the first setpoint.
     cruise: (f64, f64),
     controller: Controller,
     last: f64,
@@ -381,11 +398,21 @@ struct Command<'a> {
 }
 
 impl<'a> Command<'a> {
+    /// The commands of `manoeuvre` from `start`, its trim: the autopilots act about the trim's
+    /// fins and pitch.
     fn new(manoeuvre: &'a VehicleManoeuvre, start: &[f64; 15]) -> Self {
+        let [_, pitch, heading] = euler_angles(start);
+        let trim = Feedforward {
+            rudder: start[13],
+            stern_planes: start[14],
+            pitch,
+            pitch_rate: start[4],
+            yaw_rate: start[5],
+        };
         Command {
             manoeuvre,
-            cruise: (euler_angles(start)[2].to_degrees(), start[8]),
-            controller: Controller::default(),
+            cruise: (heading.to_degrees(), start[8]),
+            controller: Controller::about(trim),
             last: 0.0,
             tracked: Vec::new(),
             progress: manoeuvre.trial.map(|trial| Progress::new(trial, start)),

@@ -9,6 +9,7 @@
 //! | the cross-flow drag in strips, a force beside the proved program, read as its applied loads | [`cross_flow`] |
 //! | the fins (rudder, stern planes): saturation, lag, rate limit; their step commands | [`fins`] |
 //! | the autopilots: heading (PID on ψ), depth (depth to pitch to the planes), sampled | [`autopilot`] |
+//! | the steady motion every manoeuvre starts from: the cruise, or the trim of the whole state | [`trim`] |
 //! | linearised about a cruise: A, B, the modes (the Euler-angle twin of the table) | [`linear`] |
 //! | a manoeuvre over the one driver (any method), its figures | [`manoeuvre`] |
 //! | what a run reports, as data (`summary.json`'s types) | [`summary`] |
@@ -32,6 +33,7 @@ pub mod scene;
 pub mod summary;
 pub mod table;
 pub mod trial;
+pub mod trim;
 
 /// The table's vocabulary, from the generator that builds the model: how names are read,
 /// whether Kirchhoff's terms are folded, a folded coefficient against its added mass, the
@@ -46,6 +48,7 @@ pub use model::VehicleModel;
 pub use propeller::PropellerLaw;
 pub use scene::VehicleScene;
 pub use table::{PrimeScales, PropellerSetting, VehicleTable};
+pub use trim::{Trim, TrimError};
 
 /// Why a vehicle cannot be built or run.
 #[derive(Debug, thiserror::Error)]

@@ -82,9 +82,12 @@
 //! duration_s = 80
 //! ```
 //!
-//! Every run starts from the cruise at the propeller's setting: at the origin, heading north,
-//! fins at zero, with u and the roll angle φ trimmed so that u̇ = ṗ = 0 (Newton on the proved
-//! model and its proved Jacobian). Every key is checked and an error names it by its path.
+//! Every run starts from the trim at the propeller's setting ([`super::trim`]): at the origin,
+//! heading north, fins at zero, u and the roll angle φ trimmed so that u̇ = ṗ = 0 (Newton on
+//! the proved model and its proved Jacobian), and where that is not a steady motion (W ≠ B, G
+//! and the centre of buoyancy not on one vertical) the whole state but the position and the
+//! heading; a scene without a trim ahead is refused. Every key is checked and an error names
+//! it by its path.
 
 use super::autopilot::{Autopilots, DepthGains, HeadingGains, Setpoints};
 use super::cross_flow::CrossFlow;
@@ -94,16 +97,30 @@ use super::model::VehicleModel;
 use super::propeller::PropellerLaw;
 use super::table::{PrimeScales, PropellerSetting, VehicleTable};
 use super::trial::{Plane, Trial};
+use super::trim::{Held, Trim, TrimError, Trimmer};
 use super::{AddedMassCoriolis, Convention, InertiaAbout, VehicleError};
-use crate::InertiaTensor;
 use crate::integrate::Stepper;
-use crate::models::Model;
 use crate::scene::check::Checker;
 use crate::scene::{Problem, SceneError};
 use crate::ship::scene::{IntegratorTable, OutputTable, RudderTable};
+use crate::{InertiaTensor, Short, counted};
 use nalgebra::Matrix3;
 use serde::Deserialize;
 use std::collections::BTreeMap;
+
+/// Gravity at the Earth's surface, m/s²: at the equator and at the poles (the normal gravity
+/// of the WGS 84 ellipsoid), the range `body.weight / body.mass` may take.
+const GRAVITY: (f64, f64) = (9.780, 9.832);
+
+/// Half a unit in the last significant digit of `x` as written: its shortest form that reads
+/// back to the same number (30.48 → 0.005, 299 → 0.5).
+fn written_rounding(x: f64) -> f64 {
+    let text = format!("{x:e}");
+    let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
+    let digits = mantissa.chars().filter(char::is_ascii_digit).count() as i32;
+    let exponent: i32 = exponent.parse().unwrap_or(0);
+    0.5 * 10f64.powi(exponent - (digits - 1))
+}
 
 /// The file as written.
 #[derive(Debug, Clone, Deserialize)]
@@ -316,8 +333,10 @@ pub struct VehicleScene {
     pub every: f64,
     /// The manoeuvres.
     pub manoeuvres: Vec<VehicleManoeuvre>,
-    /// The operating point of `eom linear` (`[linear]`), by default the cruise.
+    /// The operating point of `eom linear` (`[linear]`), by default the trim.
     pub linear: crate::linear::LinearSpec,
+    /// The steady motion every manoeuvre starts from.
+    pub trim: Trim,
 }
 
 impl Checker<'_> {
@@ -364,12 +383,20 @@ impl Checker<'_> {
             }
         }
         let prime = self.prime_scales(hydro)?;
-        let propeller = (file.propeller.as_ref())
-            .map(|p| self.vehicle_propeller(p, prime))
-            .transpose()?;
+        let Some(propeller) = file.propeller.as_ref() else {
+            return Err(self.error(
+                "propeller",
+                Problem::Missing(
+                    "[propeller]: every manoeuvre starts from the cruise its thrust makes".into(),
+                ),
+            ));
+        };
+        let propeller = self.vehicle_propeller(propeller, prime)?;
+        let weight = self.positive("body.weight", body.weight)?;
+        self.mass_against_weight(mass, weight)?;
         Ok(VehicleTable {
             mass,
-            weight: self.positive("body.weight", body.weight)?,
+            weight,
             buoyancy: self.positive("body.buoyancy", body.buoyancy)?,
             centre_of_gravity,
             centre_of_buoyancy: vector("centre_of_buoyancy", body.centre_of_buoyancy)?,
@@ -379,12 +406,40 @@ impl Checker<'_> {
             added_mass_coriolis,
             added_mass: hydro.added_mass.clone(),
             coefficients: hydro.coefficients.clone(),
-            propeller,
+            propeller: Some(propeller),
             prime,
             cross_flow: (hydro.cross_flow.as_ref())
                 .map(|c| self.cross_flow(c, prime))
                 .transpose()?,
         })
+    }
+
+    /// `body.mass` against `body.weight`: W/M is gravity at the Earth's surface, 9.780 m/s² at
+    /// the equator to 9.832 at the poles, to the rounding of the two numbers as written (half
+    /// a unit in the last significant digit of each). A mass that contradicts its weight (a
+    /// payload added to one and not the other) would make every motion wrong by their ratio.
+    fn mass_against_weight(&self, mass: f64, weight: f64) -> Result<(), SceneError> {
+        let (m, w) = (written_rounding(mass), written_rounding(weight));
+        let (lowest, highest) = (
+            (weight - w) / (mass + m),
+            (weight + w) / (mass - m).max(0.0),
+        );
+        if highest >= GRAVITY.0 && lowest <= GRAVITY.1 {
+            return Ok(());
+        }
+        Err(self.invalid(
+            "body.mass",
+            format!(
+                "{} kg contradicts `body.weight` = {} N: W/M = {} m/s², where gravity at the \
+                 Earth's surface is {} to {} m/s² (M = W/g is {} kg at g = 9.81 m/s²)",
+                Short(mass),
+                Short(weight),
+                Short(weight / mass),
+                GRAVITY.0,
+                GRAVITY.1,
+                Short(weight / 9.81)
+            ),
+        ))
     }
 
     /// `body.inertia` and `body.products_of_inertia` as a tensor and the point it is about
@@ -495,7 +550,7 @@ impl Checker<'_> {
                 )?;
             }
             return Ok(PropellerSetting {
-                thrust: self.finite("propeller.thrust", given("thrust", p.thrust)?)?,
+                thrust: self.thrust(given("thrust", p.thrust)?)?,
                 torque: self.finite("propeller.torque", given("torque", p.torque)?)?,
                 law: None,
             });
@@ -529,6 +584,27 @@ impl Checker<'_> {
         })
     }
 
+    /// `propeller.thrust`, positive: every manoeuvre starts from the cruise it makes ahead. At
+    /// zero the vehicle lies at rest, where its fins act on nothing; a negative thrust drives
+    /// it astern, outside a table identified going ahead.
+    fn thrust(&self, thrust: f64) -> Result<f64, SceneError> {
+        let key = "propeller.thrust";
+        let thrust = self.finite(key, thrust)?;
+        if thrust > 0.0 {
+            return Ok(thrust);
+        }
+        Err(self.invalid(
+            key,
+            if thrust == 0.0 {
+                "zero thrust: every manoeuvre starts from the cruise the thrust makes, and \
+                 without one the vehicle lies at rest, where its fins turn it not at all"
+            } else {
+                "a negative thrust drives the vehicle astern, outside a table identified going \
+                 ahead: give the thrust ahead, positive"
+            },
+        ))
+    }
+
     /// `[hydrodynamics.cross_flow]`: strips of one length each (the stations' count), finite
     /// stations, positive lengths, heights, breadths, coefficients and ρ (the prime system's
     /// unless given).
@@ -547,8 +623,8 @@ impl Checker<'_> {
                 return Err(self.invalid(
                     &key(k),
                     format!(
-                        "{} entries, one per strip: stations has {count}",
-                        values.len()
+                        "{}, one per strip: stations has {count}",
+                        counted(values.len(), "entry", "entries")
                     ),
                 ));
             }
@@ -635,11 +711,14 @@ impl Checker<'_> {
         })
     }
 
+    /// Manoeuvre `index`, from `trim` (the scene's; one held by its autopilots is set by
+    /// [`Checker::held_trim`]).
     fn vehicle_manoeuvre(
         &self,
         index: usize,
         table: &ManoeuvreTable,
         autopilots: Option<&Autopilots>,
+        trim: Trim,
     ) -> Result<VehicleManoeuvre, SceneError> {
         let key = |k: &str| format!("manoeuvre[{index}].{k}");
         let duration = self.positive(&key("duration_s"), table.duration_s)?;
@@ -753,7 +832,118 @@ impl Checker<'_> {
             autopilot,
             trial,
             duration,
+            trim,
         })
+    }
+
+    /// The trim of manoeuvre `index`, whose autopilots hold `held` from its start: the fins
+    /// they work at their trim within their stops, and the pitch within the depth
+    /// autopilot's `max_pitch_deg`, since the autopilots could not hold it beyond.
+    fn held_trim(
+        &self,
+        index: usize,
+        trimmer: &mut Trimmer<'_>,
+        held: Held,
+        fins: &Fins,
+        file: &VehicleSceneFile,
+    ) -> Result<Trim, SceneError> {
+        let asking = if held.depth { "depth_m" } else { "heading_deg" };
+        let key = format!("manoeuvre[{index}].{asking}");
+        let trim = trimmer
+            .trim(held)
+            .map_err(|e| self.invalid(&key, e.to_string()))?;
+        let beyond = |angle: f64, limit: Option<f64>| limit.is_some_and(|max| angle.abs() > max);
+        let gears = [
+            (
+                held.heading,
+                "rudder",
+                fins.rudder.max_angle,
+                trim.state[13],
+            ),
+            (
+                held.depth,
+                "stern_planes",
+                fins.stern_planes.max_angle,
+                trim.state[14],
+            ),
+        ];
+        for (holds, fin, stop, angle) in gears {
+            if holds && beyond(angle, stop) {
+                return Err(self.invalid(
+                    &key,
+                    format!(
+                        "the steady motion its autopilots hold from the start needs the {} at \
+                         {}°, beyond `{fin}.max_deg` = {}°",
+                        fin.replace('_', " "),
+                        Short(angle.to_degrees()),
+                        Short(stop.unwrap_or(0.0).to_degrees())
+                    ),
+                ));
+            }
+        }
+        let pitch = crate::vehicle::manoeuvre::euler_angles(&trim.state)[1];
+        let max_pitch = (file.autopilot.as_ref())
+            .and_then(|a| a.depth.as_ref())
+            .map(|d| d.max_pitch_deg);
+        if let Some(max) = max_pitch.filter(|max| held.depth && pitch.to_degrees().abs() > *max) {
+            return Err(self.invalid(
+                &key,
+                format!(
+                    "the steady motion with the depth held pitches {}°, beyond \
+                     `autopilot.depth.max_pitch_deg` = {}°, which the autopilot cannot command",
+                    Short(pitch.to_degrees()),
+                    Short(max)
+                ),
+            ));
+        }
+        Ok(trim)
+    }
+
+    /// The fins' commands of manoeuvre `index` within their stops (`rudder.max_deg`,
+    /// `stern_planes.max_deg`): a fin commanded beyond its stop would run at the stop while the
+    /// manoeuvre is labelled and judged at the angle asked for. A zig-zag's `fin_deg` is its
+    /// plane's fin's command.
+    fn within_stops(
+        &self,
+        index: usize,
+        table: &ManoeuvreTable,
+        rudder: &RudderTable,
+        stern_planes: &RudderTable,
+    ) -> Result<(), SceneError> {
+        let key = |k: &str| format!("manoeuvre[{index}].{k}");
+        let vertical = table.plane.as_deref() == Some("vertical");
+        let zigzag_fin = if vertical { "stern_planes" } else { "rudder" };
+        let fins = [("rudder", rudder), ("stern_planes", stern_planes)];
+        for (fin, gear) in fins {
+            let Some(stop) = gear.max_deg else { continue };
+            let mut commands: Vec<(String, f64)> = Vec::new();
+            let steps = if fin == "rudder" {
+                &table.rudder_deg
+            } else {
+                &table.stern_planes_deg
+            };
+            for (i, angle) in steps.iter().flatten().enumerate() {
+                commands.push((key(&format!("{fin}_deg[{i}]")), *angle));
+            }
+            if let Some(angle) = table.fin_deg.filter(|_| fin == zigzag_fin) {
+                commands.push((key("fin_deg"), angle));
+            }
+            if let Some((command, angle)) = commands.iter().find(|(_, a)| a.abs() > stop) {
+                return Err(self.invalid(
+                    command,
+                    format!(
+                        "{}° is beyond the {}'s stop `{fin}.max_deg` = {}°: the fin would run \
+                         at {}° while the manoeuvre is labelled and judged at {}°",
+                        Short(*angle),
+                        fin.replace('_', " "),
+                        Short(stop),
+                        Short(stop.copysign(*angle)),
+                        Short(*angle)
+                    ),
+                ));
+            }
+        }
+        Ok(())
     }
 
     /// A zig-zag: its plane, fin and switch angles, its execute at times_s[0]; the fin it
@@ -819,7 +1009,9 @@ impl Checker<'_> {
             return Ok(None);
         };
         if values.len() != n {
-            return Err(self.invalid(key, format!("{} values for {n} times", values.len())));
+            let given = counted(values.len(), "value", "values");
+            let times = counted(n, "time", "times");
+            return Err(self.invalid(key, format!("{given} for {times}")));
         }
         for (i, v) in values.iter().enumerate() {
             self.finite(&format!("{key}[{i}]"), *v)?;
@@ -887,11 +1079,12 @@ impl Checker<'_> {
         }
     }
 
-    /// `[autopilot]`: the gains, positive, and each fin's sense on `model` at its cruise.
+    /// `[autopilot]`: the gains, positive, and each fin's sense on `model` at its trim `start`.
     fn autopilots(
         &self,
         table: &AutopilotTable,
         model: &VehicleModel,
+        start: &[f64; 15],
     ) -> Result<Autopilots, SceneError> {
         let sample = self.positive("autopilot.sample_s", table.sample_s)?;
         let gain = |key: &str, value: f64| -> Result<f64, SceneError> {
@@ -934,8 +1127,7 @@ impl Checker<'_> {
                 })
             })
             .transpose()?;
-        let start = cruise(model).map_err(|e| self.invalid(&e.key(), e.to_string()))?;
-        Autopilots::new(model, &start, sample, (heading, depth))
+        Autopilots::new(model, start, sample, (heading, depth))
             .map_err(|e| self.invalid(&e.key(), e.to_string()))
     }
 }
@@ -969,12 +1161,20 @@ impl VehicleScene {
                 Problem::Missing("at least one [[manoeuvre]]".into()),
             ));
         }
+        let refused = |e: TrimError| check.invalid(e.key(), e.to_string());
+        let mut trimmer = Trimmer::new(&table, &model).map_err(refused)?;
+        let trim = trimmer.trim(Held::default()).map_err(refused)?;
         let autopilots = (file.autopilot.as_ref())
-            .map(|table| check.autopilots(table, &model))
+            .map(|table| check.autopilots(table, &model, &trim.state))
             .transpose()?;
         let mut manoeuvres: Vec<VehicleManoeuvre> = Vec::new();
         for (index, table) in file.manoeuvre.iter().enumerate() {
-            let manoeuvre = check.vehicle_manoeuvre(index, table, autopilots.as_ref())?;
+            let mut manoeuvre = check.vehicle_manoeuvre(index, table, autopilots.as_ref(), trim)?;
+            check.within_stops(index, table, &file.rudder, &file.stern_planes)?;
+            let held = manoeuvre.held();
+            if held != Held::default() {
+                manoeuvre.trim = check.held_trim(index, &mut trimmer, held, &fins, file)?;
+            }
             if manoeuvres.iter().any(|m| m.name == manoeuvre.name) {
                 return Err(check.invalid(
                     &format!("manoeuvre[{index}].name"),
@@ -1005,48 +1205,13 @@ impl VehicleScene {
             every,
             manoeuvres,
             linear,
+            trim,
         })
     }
 
-    /// The cruise every run starts from (see the module docs).
+    /// The trim every run starts from (see the module docs): found when the scene was read,
+    /// which refuses a scene without one.
     pub fn start(&self) -> Result<[f64; 15], VehicleError> {
-        cruise(&self.model)
+        Ok(self.trim.state)
     }
-}
-
-/// The cruise: at the origin, heading north, fins at zero, u and φ found by Newton so that
-/// u̇ = ṗ = 0 on the model (its proved Jacobian, the chain rule through |u| added), from
-/// u = 1 m/s, φ = 0; converged when both rates are below 1e-13 (in m/s² and rad/s²: rounding
-/// of rates of order one).
-pub fn cruise(model: &VehicleModel) -> Result<[f64; 15], VehicleError> {
-    let state = |u: f64, phi: f64| {
-        let mut x = [0.0; 15];
-        x[0] = u;
-        x[9] = (phi / 2.0).cos();
-        x[10] = (phi / 2.0).sin();
-        x
-    };
-    let (mut u, mut phi) = (1.0, 0.0);
-    for _ in 0..50 {
-        let x = state(u, phi);
-        let f = Model::<f64, 15, 2>::rhs(model, &x, &[0.0; 2]);
-        let (r_u, r_p) = (f[0], f[3]);
-        if r_u.abs() < 1e-13 && r_p.abs() < 1e-13 {
-            return Ok(x);
-        }
-        let j = Model::<f64, 15, 2>::state_jacobian(model, &x, &[0.0; 2]);
-        let dq = [-(phi / 2.0).sin() / 2.0, (phi / 2.0).cos() / 2.0];
-        let d_phi = |row: usize| j[row][9] * dq[0] + j[row][10] * dq[1];
-        let (a, b, c, d) = (j[0][0], d_phi(0), j[3][0], d_phi(3));
-        let det = a * d - b * c;
-        if det == 0.0 || !det.is_finite() {
-            break;
-        }
-        u -= (d * r_u - b * r_p) / det;
-        phi -= (a * r_p - c * r_u) / det;
-    }
-    Err(VehicleError::invalid(
-        "propeller",
-        "no cruise: Newton on u̇ = ṗ = 0 (surge and roll) did not converge from u = 1 m/s",
-    ))
 }

@@ -65,31 +65,58 @@ pub struct KirchhoffRow {
 }
 
 impl KirchhoffRow {
-    /// A row of the generator's comparison.
+    /// A row of the generator's comparison, the implied value and the difference to twelve
+    /// significant digits ([`twelve_digits`]).
     pub fn new(row: &FoldedComparison) -> Self {
         KirchhoffRow {
             load: row.load.letter().to_string(),
             product: row.product.clone(),
             coefficient: row.name.clone(),
             printed: row.printed,
-            implied: row.implied,
-            difference: row.difference,
+            implied: twelve_digits(row.implied),
+            difference: row.difference.map(twelve_digits),
         }
     }
 }
 
-/// The cruise: surge and roll trimmed on the model, against their closed forms.
-#[derive(Debug, Clone, Copy, Serialize)]
+/// `x` to twelve significant digits: a sum of a table's entries, each given to a few digits,
+/// whose digits beyond are the rounding of the sum (4.86 − 4.8096 is 0.050400000000000666 in
+/// binary, 0.0504 in the table's digits).
+fn twelve_digits(x: f64) -> f64 {
+    format!("{x:.11e}").parse::<f64>().unwrap_or(x) + 0.0
+}
+
+/// The trim every manoeuvre starts from ([`super::trim`]): surge and roll trimmed on the
+/// model, against their closed forms, or the whole state but the position and the heading.
+#[derive(Debug, Clone, Serialize)]
 pub struct CruiseSummary {
     /// u of the trim, m/s.
     pub speed_m_s: f64,
-    /// √(X_prop / −X_u|u|) where the table has a u|u| term and a propeller, m/s.
+    /// √(X_prop / −X_u|u|) where the table has a u|u| term and a propeller, on the straight
+    /// level course (not given for a trim of the whole state, where it does not hold), m/s.
     pub speed_closed_form_m_s: Option<f64>,
     /// φ of the trim, degrees.
     pub roll_deg: f64,
     /// asin(K_prop / (z_G W − z_B B)), degrees: the propeller's torque against the righting
-    /// moment, where the table has no other roll term at the cruise.
+    /// moment, where the table has no other roll term on the straight level course (not given
+    /// for a trim of the whole state).
     pub roll_closed_form_deg: Option<f64>,
+    /// The states solved for: `["u", "phi"]` on the straight level course, else the whole
+    /// state but the position and the heading.
+    pub trimmed: Vec<&'static str>,
+    /// Newton's steps on the whole state, where it was trimmed.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub newton_steps: Option<usize>,
+    /// θ of the trim, degrees.
+    pub pitch_deg: f64,
+    /// v of the trim, m/s.
+    pub sway_m_s: f64,
+    /// w of the trim, m/s.
+    pub heave_m_s: f64,
+    /// ψ̇ of the trim (a steady helix where it is not zero), degrees per second.
+    pub heading_rate_deg_s: f64,
+    /// ż of the trim (down positive), m/s.
+    pub depth_rate_m_s: f64,
 }
 
 /// The figures of one step of the commands, read where it ends.
@@ -143,6 +170,13 @@ pub struct SetpointFigures {
 /// The settling band, as a fraction of the change: 2 %, the control engineer's settling time.
 pub const SETTLING_BAND: f64 = 0.02;
 
+/// A time read at the autopilots' samples, to the nanosecond: an instant k·T_s carries the
+/// rounding of the product (212 × 0.1 is 21.200000000000003), which a figure read there,
+/// known to a sampling period, does not.
+fn sampled(t: f64) -> f64 {
+    (t * 1e9).round() / 1e9
+}
+
 impl SetpointFigures {
     /// The answer to every change of a setpoint in a run under the autopilots.
     pub fn of(run: &VehicleRun) -> Vec<Self> {
@@ -186,16 +220,17 @@ impl SetpointFigures {
                     let end = i.min(tracked.len() - 1);
                     figures.push(SetpointFigures {
                         what,
-                        at_s: tracked[start].t,
+                        at_s: sampled(tracked[start].t),
                         from,
                         to,
                         overshoot: errors
                             .iter()
                             .map(|(_, e)| -e * change.signum())
                             .fold(0.0, f64::max),
-                        settling_time_s: settled_from.map(|k| errors[k].0 - tracked[start].t),
+                        settling_time_s: settled_from
+                            .map(|k| sampled(errors[k].0 - tracked[start].t)),
                         steady_error: errors.last().map_or(0.0, |(_, e)| *e),
-                        until_s: tracked[end].t,
+                        until_s: sampled(tracked[end].t),
                     });
                 }
                 start = i;
@@ -211,6 +246,32 @@ impl SetpointFigures {
             self.steady_error,
         ]
     }
+}
+
+/// `radians` in degrees as a scene writes them: where a double within two units in the last
+/// place of `radians.to_degrees()` converts back to `radians` exactly and has at most 15
+/// significant digits (so that, written so, it reads back as itself), the one of the fewest;
+/// else `radians.to_degrees()`. A negative zero is zero. A 7.5° command, converted to radians
+/// to run, is reported as 7.5 and not as 7.499999999999999, the rounding of the two
+/// conversions; a value computed in radians keeps every digit of its conversion.
+pub fn degrees(radians: f64) -> f64 {
+    let direct = radians.to_degrees();
+    let digits = |x: f64| {
+        let text = format!("{x:e}");
+        let mantissa = text.split('e').next().unwrap_or("");
+        mantissa.chars().filter(char::is_ascii_digit).count()
+    };
+    let (mut below, mut above) = (direct, direct);
+    let mut best = (direct, digits(direct).min(16));
+    for _ in 0..2 {
+        (below, above) = (below.next_down(), above.next_up());
+        for x in [below, above] {
+            if x.to_radians() == radians && digits(x) < best.1 {
+                best = (x, digits(x));
+            }
+        }
+    }
+    best.0 + 0.0
 }
 
 /// A trial's figures from its run, if the manoeuvre is a trial.
@@ -265,8 +326,8 @@ impl StepFigures {
                 let figures = StepFigures {
                     from_s: from,
                     to_s: end.t,
-                    rudder_deg: end.commands[0].to_degrees(),
-                    stern_planes_deg: end.commands[1].to_degrees(),
+                    rudder_deg: degrees(end.commands[0]),
+                    stern_planes_deg: degrees(end.commands[1]),
                     yaw_rate_deg_s: s[5].to_degrees(),
                     speed_m_s: (s[0] * s[0] + s[1] * s[1] + s[2] * s[2]).sqrt(),
                     roll_deg: phi.to_degrees(),
@@ -305,38 +366,56 @@ pub fn largest_difference(a: &[StepFigures], b: &[StepFigures]) -> f64 {
 }
 
 impl CruiseSummary {
-    /// The trim `start` of `scene`'s model, against the closed forms.
-    pub fn new(scene: &VehicleScene, start: &[f64; 15]) -> Self {
-        let table = &scene.table;
-        // The names of X's u|u| under the table's convention (Fossen's u², the same ahead),
-        // and the prime system's ½ρL² of a force of two linear velocities.
-        let names: &[&str] = match table.convention {
-            super::Convention::Prestero => &["Xuu"],
-            super::Convention::Fossen => &["Xu|u|", "Xuu"],
+    /// The trim of `scene`'s model, against the closed forms where they hold.
+    pub fn new(scene: &VehicleScene) -> Self {
+        let trim = &scene.trim;
+        let start = &trim.state;
+        let level = trim.whole_state_steps.is_none();
+        let (closed_speed, closed_roll) = match level {
+            true => closed_forms(&scene.table),
+            false => (None, None),
         };
-        let drag = names.iter().find_map(|n| table.coefficients.get(*n));
-        let scale = table
-            .prime
-            .map_or(1.0, |p| 0.5 * p.density * p.length.powi(2));
-        let closed_speed = match (table.propeller, drag) {
-            (Some(p), Some(&x)) if x < 0.0 && p.thrust >= 0.0 => {
-                Some((p.thrust / (-x * scale)).sqrt())
-            }
-            _ => None,
-        };
-        let righting = table.centre_of_gravity[2] * table.weight
-            - table.centre_of_buoyancy[2] * table.buoyancy;
-        let closed_roll = table
-            .propeller
-            .filter(|p| righting > 0.0 && (p.torque / righting).abs() <= 1.0)
-            .map(|p| (p.torque / righting).asin().to_degrees());
+        let [phi, theta, _] = euler_angles(start);
+        let (heading_rate, _) = super::trial::heading_and_pitch_rates(start);
         CruiseSummary {
             speed_m_s: start[0],
             speed_closed_form_m_s: closed_speed,
-            roll_deg: euler_angles(start)[0].to_degrees(),
+            roll_deg: phi.to_degrees(),
             roll_closed_form_deg: closed_roll,
+            trimmed: trim.trimmed(),
+            newton_steps: trim.whole_state_steps,
+            pitch_deg: theta.to_degrees(),
+            sway_m_s: start[1],
+            heave_m_s: start[2],
+            heading_rate_deg_s: heading_rate.to_degrees(),
+            depth_rate_m_s: trim.depth_rate(),
         }
     }
+}
+
+/// The straight level cruise's speed and roll in closed form (see [`CruiseSummary`]).
+fn closed_forms(table: &super::VehicleTable) -> (Option<f64>, Option<f64>) {
+    // The names of X's u|u| under the table's convention (Fossen's u², the same ahead),
+    // and the prime system's ½ρL² of a force of two linear velocities.
+    let names: &[&str] = match table.convention {
+        super::Convention::Prestero => &["Xuu"],
+        super::Convention::Fossen => &["Xu|u|", "Xuu"],
+    };
+    let drag = names.iter().find_map(|n| table.coefficients.get(*n));
+    let scale = table
+        .prime
+        .map_or(1.0, |p| 0.5 * p.density * p.length.powi(2));
+    let closed_speed = match (table.propeller, drag) {
+        (Some(p), Some(&x)) if x < 0.0 && p.thrust >= 0.0 => Some((p.thrust / (-x * scale)).sqrt()),
+        _ => None,
+    };
+    let righting =
+        table.centre_of_gravity[2] * table.weight - table.centre_of_buoyancy[2] * table.buoyancy;
+    let closed_roll = table
+        .propeller
+        .filter(|p| righting > 0.0 && (p.torque / righting).abs() <= 1.0)
+        .map(|p| (p.torque / righting).asin().to_degrees());
+    (closed_speed, closed_roll)
 }
 
 impl ModelSummary {

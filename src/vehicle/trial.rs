@@ -5,7 +5,9 @@
 //! The events are located where they happen, by the driver's stop condition (bisection to
 //! adjacent floating-point times on the integrator's own solution): the heading passing 90° and
 //! 180° from the execute, a zig-zag's heading (pitch) passing ±the switch angle, where the fin
-//! is reversed, and the heading (pitch) rate passing zero, where the overshoot is read. The
+//! is reversed, and the heading (pitch) rate passing zero, where the overshoot is read. A
+//! vertical zig-zag's pitch is measured from the trim's, as a horizontal one's heading is from
+//! the execute's: a vehicle that trims nose up zig-zags about its trim, not about level. The
 //! rates are the Euler angles' (4.60): ψ̇ = (q sin φ + r cos φ)/cos θ, θ̇ = q cos φ − r sin φ.
 //!
 //! The turning circle's steady figures are given only once the turn has settled, by the
@@ -16,6 +18,8 @@
 
 use super::autopilot::wrapped;
 use super::manoeuvre::euler_angles;
+use super::summary::degrees;
+use crate::Short;
 use crate::ship::course::Course;
 use serde::Serialize;
 use std::f64::consts::{PI, TAU};
@@ -45,7 +49,7 @@ pub enum Trial {
         plane: Plane,
         /// The fin's angle, rad (its sign: the first side).
         fin: f64,
-        /// The switch angle, rad: from the execute's heading, or from level pitch.
+        /// The switch angle, rad: from the execute's heading, or from the trim's pitch.
         switch: f64,
         /// The execute, s.
         execute: f64,
@@ -92,6 +96,8 @@ pub struct Progress {
     trial: Trial,
     /// The heading at the execute, rad.
     heading0: f64,
+    /// The pitch at the start (the trim's), rad.
+    pitch0: f64,
     /// The fin's sign now (a zig-zag's side), and whether the execute has come.
     sign: f64,
     started: bool,
@@ -111,10 +117,11 @@ pub struct Progress {
 impl Progress {
     /// A trial from the state `start`.
     pub fn new(trial: Trial, start: &[f64; 15]) -> Self {
-        let heading = euler_angles(start)[2];
+        let [_, pitch, heading] = euler_angles(start);
         Progress {
             trial,
             heading0: heading,
+            pitch0: pitch,
             sign: 1.0,
             started: false,
             events: Vec::new(),
@@ -227,13 +234,14 @@ impl Progress {
             .unwrap_or(1.0)
     }
 
-    /// The zig-zag's angle: the heading change since the execute, or the pitch.
+    /// The zig-zag's angle: the heading change since the execute, or the pitch from the
+    /// trim's.
     fn angle(&self, state: &[f64; 15]) -> f64 {
         match self.trial {
             Trial::ZigZag {
                 plane: Plane::Vertical,
                 ..
-            } => euler_angles(state)[1],
+            } => euler_angles(state)[1] - self.pitch0,
             _ => wrapped(euler_angles(state)[2] - self.heading0, TAU),
         }
     }
@@ -318,6 +326,10 @@ pub struct TurningCircleFigures {
     /// Why the steady figures are not given, where they are not.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub not_steady_because: Option<String>,
+    /// The points to mark on the track, (what, [x, y] in m): the execute, and the 90° and
+    /// 180° points with their figures, as a ship's turning circle marks them.
+    #[serde(skip)]
+    pub marks: Vec<(String, [f64; 2])>,
 }
 
 /// A zig-zag's figures.
@@ -335,6 +347,9 @@ pub struct ZigZagFigures {
     pub overshoots_deg: Vec<f64>,
     /// When each overshoot was reached, s.
     pub overshoots_at_s: Vec<f64>,
+    /// Why there are no figures, where the angle never reached a switch.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub no_figures_because: Option<String>,
 }
 
 /// A trial's figures.
@@ -356,38 +371,7 @@ impl TrialFigures {
             }
             Trial::ZigZag {
                 plane, fin, switch, ..
-            } => {
-                let switches: Vec<&Event> = (progress.events.iter())
-                    .filter(|e| matches!(e.watch, Watch::Switch(_)))
-                    .collect();
-                let mut overshoots = Vec::new();
-                let mut at = Vec::new();
-                for (i, event) in progress.events.iter().enumerate() {
-                    if event.watch != Watch::RateZero {
-                        continue;
-                    }
-                    let passed = progress.events[..i]
-                        .iter()
-                        .rev()
-                        .find_map(|e| match e.watch {
-                            Watch::Switch(x) => Some(x),
-                            _ => None,
-                        });
-                    if let Some(x) = passed {
-                        let beyond = (progress.angle(&event.state) - x) * x.signum();
-                        overshoots.push(beyond.to_degrees());
-                        at.push(event.t);
-                    }
-                }
-                TrialFigures::ZigZag(ZigZagFigures {
-                    plane,
-                    fin_deg: fin.to_degrees(),
-                    switch_deg: switch.to_degrees(),
-                    switches_s: switches.iter().map(|e| e.t).collect(),
-                    overshoots_deg: overshoots,
-                    overshoots_at_s: at,
-                })
-            }
+            } => TrialFigures::ZigZag(zig_zag(progress, (plane, fin, switch), end)),
         }
     }
 
@@ -429,6 +413,57 @@ pub fn largest_trial_difference(a: &TrialFigures, b: &TrialFigures) -> f64 {
         .fold(0.0, f64::max)
 }
 
+/// A zig-zag's figures: its switches, and after each the overshoot where the angle's rate is
+/// zero; without a switch, why there are none.
+fn zig_zag(
+    progress: &Progress,
+    (plane, fin, switch): (Plane, f64, f64),
+    end: &[f64; 15],
+) -> ZigZagFigures {
+    let switches: Vec<f64> = (progress.events.iter())
+        .filter(|e| matches!(e.watch, Watch::Switch(_)))
+        .map(|e| e.t)
+        .collect();
+    let mut overshoots = Vec::new();
+    let mut at = Vec::new();
+    for (i, event) in progress.events.iter().enumerate() {
+        if event.watch != Watch::RateZero {
+            continue;
+        }
+        let passed = (progress.events[..i].iter().rev()).find_map(|e| match e.watch {
+            Watch::Switch(x) => Some(x),
+            _ => None,
+        });
+        if let Some(x) = passed {
+            let beyond = (progress.angle(&event.state) - x) * x.signum();
+            overshoots.push(beyond.to_degrees());
+            at.push(event.t);
+        }
+    }
+    let no_figures_because = switches.is_empty().then(|| {
+        let angle = match plane {
+            Plane::Horizontal => "the heading change",
+            Plane::Vertical => "the pitch from the trim's",
+        };
+        format!(
+            "{angle} did not reach ±{}° between the execute at {} s and the end of the run: it \
+             was {}° at the end, so the fin was never reversed",
+            Short(degrees(switch)),
+            Short(progress.execute_time()),
+            Short(progress.angle(end).to_degrees())
+        )
+    });
+    ZigZagFigures {
+        plane,
+        fin_deg: degrees(fin),
+        switch_deg: degrees(switch),
+        switches_s: switches,
+        overshoots_deg: overshoots,
+        overshoots_at_s: at,
+        no_figures_because,
+    }
+}
+
 fn turning_circle(progress: &Progress, rudder: f64, end: &[f64; 15]) -> TurningCircleFigures {
     let at = |target: f64| {
         (progress.events.iter()).find_map(|e| match e.watch {
@@ -445,6 +480,18 @@ fn turning_circle(progress: &Progress, rudder: f64, end: &[f64; 15]) -> TurningC
     };
     let ninety = at(PI / 2.0).map(|s| along_across(&s));
     let one_eighty = at(PI).map(|s| along_across(&s));
+    let mut marks = vec![("execute".to_owned(), origin)];
+    if let (Some((advance, transfer)), Some(state)) = (ninety, at(PI / 2.0)) {
+        let label = format!(
+            "90°: advance {advance:.1} m, transfer {:.1} m",
+            transfer.abs()
+        );
+        marks.push((label, [state[6], state[7]]));
+    }
+    if let (Some((_, across)), Some(state)) = (one_eighty, at(PI)) {
+        let label = format!("180°: tactical diameter {:.1} m", across.abs());
+        marks.push((label, [state[6], state[7]]));
+    }
     let steady = progress
         .course
         .as_ref()
@@ -452,7 +499,7 @@ fn turning_circle(progress: &Progress, rudder: f64, end: &[f64; 15]) -> TurningC
     let [phi, theta, _] = euler_angles(end);
     let (psi_dot, _) = heading_and_pitch_rates(end);
     TurningCircleFigures {
-        rudder_deg: rudder.to_degrees(),
+        rudder_deg: degrees(rudder),
         advance_m: ninety.map(|(along, _)| along),
         transfer_m: ninety.map(|(_, across)| across.abs()),
         tactical_diameter_m: one_eighty.map(|(_, across)| across.abs()),
@@ -466,6 +513,7 @@ fn turning_circle(progress: &Progress, rudder: f64, end: &[f64; 15]) -> TurningC
         pitch_deg: theta.to_degrees(),
         depth_change_m: end[8] - progress.execute_depth(),
         not_steady_because: steady.err(),
+        marks,
     }
 }
 

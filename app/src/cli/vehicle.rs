@@ -1,7 +1,7 @@
 //! Vehicle scenes: `eom run SCENE` for a scene with `[model] family = "vehicle"` and
 //! `[hydrodynamics]`.
 //!
-//! Each `[[manoeuvre]]` runs from the cruise into its own folder (`trajectory.csv`; as SVG the
+//! Each `[[manoeuvre]]` runs from its trim ([`eom::vehicle::trim`]) into its own folder (`trajectory.csv`; as SVG the
 //! track in plan, the profile, the attitude and the fins with their commands; `view.html`, the
 //! run in 3-D), and
 //! `summary.json` beside them holds the model that ran, the method, the folded table against
@@ -23,8 +23,10 @@ use eom::vehicle::summary::{
     CruiseSummary, KirchhoffRow, ManoeuvreSummary, ModelSummary, SetpointFigures, StepFigures,
     VehicleSummary, largest_difference, largest_setpoint_difference, trial_figures,
 };
-use eom::vehicle::trial::{TrialFigures, largest_trial_difference};
+use eom::vehicle::trial::{Plane, TrialFigures, largest_trial_difference};
 use eom::vehicle::{VehicleError, VehicleScene, format_folded};
+use eom::{Short, counted};
+use eom_cli::plots::Mark;
 use eom_cli::plots::vehicle::{VehiclePlot, write_vehicle_plots};
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -38,7 +40,6 @@ struct Outcome {
 /// Runs a vehicle scene, read and checked, into `out`, a folder already known to be writable,
 /// and prints its figures.
 pub fn execute(scene: &VehicleScene, out: &Path) -> Result<()> {
-    let start = scene.start()?;
     let mut manoeuvres = BTreeMap::new();
     let mut outcomes = Vec::new();
     let mut interrupted = None;
@@ -46,7 +47,7 @@ pub fn execute(scene: &VehicleScene, out: &Path) -> Result<()> {
         let folder = out.join(&manoeuvre.name);
         std::fs::create_dir_all(&folder)
             .with_context(|| format!("creating {}", folder.display()))?;
-        let outcome = match run_manoeuvre(scene, manoeuvre, start, &folder) {
+        let outcome = match run_manoeuvre(scene, manoeuvre, &folder) {
             Err(error) if is_stopped(&error) => {
                 interrupted = signal_received();
                 break;
@@ -61,7 +62,7 @@ pub fn execute(scene: &VehicleScene, out: &Path) -> Result<()> {
         model: ModelSummary::new(scene),
         integrator: IntegratorSummary::new(&scene.stepper),
         kirchhoff: scene.model.folded().iter().map(KirchhoffRow::new).collect(),
-        cruise: CruiseSummary::new(scene, &start),
+        cruise: CruiseSummary::new(scene),
         manoeuvre: manoeuvres,
         interrupted: interrupted.is_some(),
     };
@@ -73,8 +74,8 @@ pub fn execute(scene: &VehicleScene, out: &Path) -> Result<()> {
         Some(signal) => Err(Interrupted {
             signal,
             kept: format!(
-                "the {} manoeuvres finished before it, and summary.json, in {}",
-                outcomes.len(),
+                "the {} finished before it, and summary.json, in {}",
+                counted(outcomes.len(), "manoeuvre", "manoeuvres"),
                 out.display()
             ),
         }
@@ -90,12 +91,11 @@ fn is_stopped(error: &anyhow::Error) -> bool {
         .is_some_and(|e| matches!(e, VehicleError::Stopped { .. }))
 }
 
-/// Runs `manoeuvre` with the scene's method, its rows streamed to `folder/trajectory.csv`
+/// Runs `manoeuvre` from its trim with the scene's method, its rows streamed to `folder/trajectory.csv`
 /// (t, [`ROW`], the kinetic energy of the body and the fluid), then refined, and draws it.
 fn run_manoeuvre(
     scene: &VehicleScene,
     manoeuvre: &VehicleManoeuvre,
-    start: [f64; 15],
     folder: &Path,
 ) -> Result<Outcome> {
     let path = folder.join("trajectory.csv");
@@ -108,7 +108,7 @@ fn run_manoeuvre(
         model,
         &scene.fins,
         manoeuvre,
-        start,
+        manoeuvre.trim.state,
         (&scene.stepper, scene.every),
         |sample| {
             let row = Row {
@@ -131,7 +131,7 @@ fn run_manoeuvre(
         model,
         &scene.fins,
         manoeuvre,
-        start,
+        manoeuvre.trim.state,
         (&scene.stepper.refined(), scene.every),
         |_| signal_received().is_none(),
     )?;
@@ -156,16 +156,21 @@ fn run_manoeuvre(
         refinement: scene.stepper.refinement(),
         steps_taken: done.steps,
     };
-    write_plots(folder, scene, manoeuvre, &columns)?;
+    let marks = match &summary.trial {
+        Some(TrialFigures::TurningCircle(figures)) => figures.marks.as_slice(),
+        _ => &[],
+    };
+    write_plots(folder, (scene, manoeuvre), &columns, marks)?;
     Ok(Outcome { steps, summary })
 }
 
-/// The track in plan, the profile, the attitude and the fins, and the run in 3-D.
+/// The track in plan with `marks` (what, [x, y]), the profile, the attitude and the fins, and
+/// the run in 3-D.
 fn write_plots(
     folder: &Path,
-    scene: &VehicleScene,
-    manoeuvre: &VehicleManoeuvre,
+    (scene, manoeuvre): (&VehicleScene, &VehicleManoeuvre),
     columns: &Columns,
+    marks: &[(String, [f64; 2])],
 ) -> Result<()> {
     // The columns in ROW's order.
     let column = |name: &str| -> &[f64] {
@@ -179,6 +184,12 @@ fn write_plots(
         position: ["x", "y", "z"].map(column),
         attitude: ["phi", "theta", "psi"].map(column),
         fins: ["dr", "ds", "dr_command", "ds_command"].map(column),
+        marks: &(marks.iter())
+            .map(|(label, [x, y])| Mark {
+                label: label.clone(),
+                point: (*y, *x),
+            })
+            .collect::<Vec<_>>(),
     };
     write_vehicle_plots(folder, &plot)?;
     super::view::write_vehicle(folder, &title, &scene.table, columns)?;
@@ -189,15 +200,29 @@ fn print_report(scene: &VehicleScene, summary: &VehicleSummary, outcomes: &[Outc
     println!("{}", printable(&scene.title));
     let cruise = &summary.cruise;
     let closed = |x: Option<f64>, unit: &str| {
-        x.map_or_else(String::new, |x| format!(" (closed form {x:.4} {unit})"))
+        x.map_or_else(String::new, |x| {
+            format!(" (closed form {}{unit})", fixed(x, 4))
+        })
     };
     println!(
-        "  cruise: u = {:.4} m/s{}, roll trim φ = {:.4}°{}",
-        cruise.speed_m_s,
-        closed(cruise.speed_closed_form_m_s, "m/s"),
-        cruise.roll_deg,
+        "  cruise: u = {} m/s{}, roll trim φ = {}°{}",
+        fixed(cruise.speed_m_s, 4),
+        closed(cruise.speed_closed_form_m_s, " m/s"),
+        fixed(cruise.roll_deg, 4),
         closed(cruise.roll_closed_form_deg, "°")
     );
+    if let Some(steps) = cruise.newton_steps {
+        println!(
+            "    trimmed in every state but the position and the heading ({}): θ = {}°, v = \
+             {} m/s, w = {} m/s, ψ̇ = {} °/s, ż = {} m/s",
+            counted(steps, "Newton step", "Newton steps"),
+            fixed(cruise.pitch_deg, 3),
+            fixed(cruise.sway_m_s, 4),
+            fixed(cruise.heave_m_s, 4),
+            fixed(cruise.heading_rate_deg_s, 4),
+            fixed(cruise.depth_rate_m_s, 4)
+        );
+    }
     for (manoeuvre, outcome) in scene.manoeuvres.iter().zip(outcomes) {
         println!(
             "  {}: (refined: {:.1e})",
@@ -209,16 +234,16 @@ fn print_report(scene: &VehicleScene, summary: &VehicleSummary, outcomes: &[Outc
         );
         for s in &outcome.steps {
             println!(
-                "    {:>6.1} {:>6.1} {:>7.2} {:>7.2} {:>10.4} {:>8.4} {:>8.3} {:>8.3} {:>8.3}",
-                s.from_s,
-                s.to_s,
-                s.rudder_deg,
-                s.stern_planes_deg,
-                s.yaw_rate_deg_s,
-                s.speed_m_s,
-                s.roll_deg,
-                s.pitch_deg,
-                s.depth_m
+                "    {:>6} {:>6} {:>7} {:>7} {:>10} {:>8} {:>8} {:>8} {:>8}",
+                fixed(s.from_s, 1),
+                fixed(s.to_s, 1),
+                fixed(s.rudder_deg, 2),
+                fixed(s.stern_planes_deg, 2),
+                fixed(s.yaw_rate_deg_s, 4),
+                fixed(s.speed_m_s, 4),
+                fixed(s.roll_deg, 3),
+                fixed(s.pitch_deg, 3),
+                fixed(s.depth_m, 3)
             );
         }
         print_autopilot(&outcome.summary.autopilot);
@@ -248,32 +273,41 @@ fn print_autopilot(figures: &[SetpointFigures]) {
         let unit = if f.what == "heading" { "°" } else { " m" };
         let settles = f
             .settling_time_s
-            .map_or_else(|| "not settled".to_owned(), |t| format!("{t:.1}"));
+            .map_or_else(|| "not settled".to_owned(), |t| fixed(t, 1));
         println!(
-            "    {:<8} {:>6.1} {:>8.2}{unit} {:>8.2}{unit} {:>9.3}{unit} {settles:>12} {:>11.4}{unit}",
-            f.what, f.at_s, f.from, f.to, f.overshoot, f.steady_error
+            "    {:<8} {:>6} {:>8}{unit} {:>8}{unit} {:>9}{unit} {settles:>12} {:>11}{unit}",
+            f.what,
+            fixed(f.at_s, 1),
+            fixed(f.from, 2),
+            fixed(f.to, 2),
+            fixed(f.overshoot, 3),
+            fixed(f.steady_error, 4)
         );
     }
 }
 
 /// A trial's figures.
 fn print_trial(trial: &TrialFigures) {
-    let metres = |x: Option<f64>| x.map_or_else(|| "—".to_owned(), |x| format!("{x:.2} m"));
+    let metres =
+        |x: Option<f64>| x.map_or_else(|| "—".to_owned(), |x| format!("{} m", fixed(x, 2)));
     match trial {
         TrialFigures::TurningCircle(f) => {
             println!(
-                "    turning circle at {:.1}°: advance {}, transfer {}, tactical diameter {}, \
+                "    turning circle at {}°: advance {}, transfer {}, tactical diameter {}, \
                  steady diameter {}",
-                f.rudder_deg,
+                Short(f.rudder_deg),
                 metres(f.advance_m),
                 metres(f.transfer_m),
                 metres(f.tactical_diameter_m),
                 metres(f.steady_diameter_m)
             );
             println!(
-                "      at the end: U = {:.4} m/s, ψ̇ = {:.4} °/s, φ = {:.3}°, θ = {:.3}°, depth \
-                 change {:.3} m",
-                f.speed_m_s, f.heading_rate_deg_s, f.roll_deg, f.pitch_deg, f.depth_change_m
+                "      at the end: U = {} m/s, ψ̇ = {} °/s, φ = {}°, θ = {}°, depth change {} m",
+                fixed(f.speed_m_s, 4),
+                fixed(f.heading_rate_deg_s, 4),
+                fixed(f.roll_deg, 3),
+                fixed(f.pitch_deg, 3),
+                fixed(f.depth_change_m, 3)
             );
             if let Some(why) = &f.not_steady_because {
                 println!("      no steady figures: {why}");
@@ -282,18 +316,50 @@ fn print_trial(trial: &TrialFigures) {
         TrialFigures::ZigZag(f) => {
             let list = |v: &[f64]| {
                 v.iter()
-                    .map(|x| format!("{x:.3}"))
+                    .map(|x| fixed(*x, 3))
                     .collect::<Vec<_>>()
                     .join(", ")
             };
-            println!(
-                "    {:?} zig-zag {:.0}°/{:.0}°: overshoots {} °, switches at {} s",
-                f.plane,
-                f.fin_deg,
-                f.switch_deg,
-                list(&f.overshoots_deg),
-                list(&f.switches_s)
+            let plane = match f.plane {
+                Plane::Horizontal => "Horizontal",
+                Plane::Vertical => "Vertical",
+            };
+            let label = format!(
+                "    {plane} zig-zag {}°/{}°:",
+                Short(f.fin_deg),
+                Short(f.switch_deg)
             );
+            match &f.no_figures_because {
+                Some(why) => println!("{label} no figures: {why}"),
+                None => println!(
+                    "{label} overshoots {} °, switches at {} s",
+                    list(&f.overshoots_deg),
+                    list(&f.switches_s)
+                ),
+            }
         }
+    }
+}
+
+/// `x` with `decimals` decimals, without the sign of a value that rounds to zero (`-0.000` is
+/// `0.000`).
+fn fixed(x: f64, decimals: usize) -> String {
+    let text = format!("{x:.decimals$}");
+    match text.strip_prefix('-') {
+        Some(unsigned) if unsigned.chars().all(|c| c == '0' || c == '.') => unsigned.to_owned(),
+        _ => text,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::fixed;
+
+    #[test]
+    fn a_value_that_rounds_to_zero_is_printed_without_its_sign() {
+        assert_eq!(fixed(-2.5e-14, 3), "0.000");
+        assert_eq!(fixed(-0.0, 2), "0.00");
+        assert_eq!(fixed(-0.0006, 3), "-0.001");
+        assert_eq!(fixed(-5.3164, 4), "-5.3164");
     }
 }

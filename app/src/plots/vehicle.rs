@@ -1,10 +1,12 @@
-//! A vehicle manoeuvre's plots: the track in plan (north against east), the profile (height
-//! against the distance run, and seen from the east), the attitude (roll, pitch, yaw made
-//! continuous), and the fins with their commands.
+//! A vehicle manoeuvre's plots: the track in plan (north against east, with a turning
+//! circle's points marked as a ship's are: the execute, 90° with the advance and transfer,
+//! 180° with the tactical diameter), the profile (height against the distance run, and seen
+//! from the east), the attitude (roll, pitch, yaw made continuous), and the fins with their
+//! commands.
 
 use super::profile::draw_profile;
 use super::series::{Line, PanelStyle, draw_attitude, time_panel, time_range};
-use super::track::draw_track;
+use super::track::{Mark, draw_track};
 use super::{COLOURS, DrawError, PlotError, TITLE_FONT, WIDTH, emit, render};
 use eom::output::text::printable;
 use plotters::style::RGBColor;
@@ -23,6 +25,8 @@ pub struct VehiclePlot<'a> {
     pub attitude: [&'a [f64]; 3],
     /// δ_r, δ_s and their commands, rad.
     pub fins: [&'a [f64]; 4],
+    /// Points to mark on the track, in (east, north).
+    pub marks: &'a [Mark],
 }
 
 /// Writes `track.svg`, `profile.svg`, `attitude.svg` and `fins.svg` into `dir`.
@@ -45,7 +49,7 @@ pub fn write_vehicle_plots(dir: &Path, plot: &VehiclePlot) -> Result<Vec<PathBuf
             &caption,
             ("east Y [m]", "north X [m]"),
             (y, x),
-            &[],
+            plot.marks,
             &[],
         )
     })?;

@@ -16,7 +16,14 @@ macro_rules! fin_keys {
                 families: VEHICLE,
                 unit: "deg",
                 default: "no limit",
-                description: concat!("Where the ", $what, " saturate(s)."),
+                description: concat!(
+                    "Where the ",
+                    $what,
+                    " saturate(s). A manoeuvre's command beyond it (rudder_deg, \
+                     stern_planes_deg, a zigzag's fin_deg) is refused: it would run at the \
+                     stop while labelled and judged as asked; the autopilots' commands stop \
+                     there."
+                ),
                 example: "13.6",
                 shown: Shown::Commented,
                 ..Key::BLANK
@@ -81,7 +88,9 @@ pub(super) static KEYS: &[Key] = &[
         families: VEHICLE,
         unit: "kg",
         required: Required::Yes,
-        description: "M, the vehicle's mass.",
+        description: "M, the vehicle's mass. body.weight / body.mass must be gravity at the \
+                      Earth's surface (9.780 to 9.832 m/s²) to the rounding of the two numbers \
+                      as written: a payload in one and not the other is refused.",
         example: "30.48",
         ..Key::BLANK
     },
@@ -363,8 +372,12 @@ pub(super) static KEYS: &[Key] = &[
         unit: "N",
         frame: super::Frame::Body,
         required: Required::When("with the constant law (a law refuses it: it gives the thrust)"),
-        description: "X_prop, constant at the setting, along body x. Every run starts from the \
-                      cruise it makes: u and the roll angle trimmed so that u̇ = ṗ = 0.",
+        description: "X_prop, constant at the setting, along body x, positive (ahead: a table \
+                      is identified going ahead, and at zero the vehicle lies at rest). Every \
+                      run starts from the trim it makes (eom::vehicle::trim): u and the roll \
+                      angle so that u̇ = ṗ = 0, and where that is not a steady motion (W ≠ B, G \
+                      and the centre of buoyancy not on one vertical) the whole state but the \
+                      position and the heading; a scene without a trim ahead is refused.",
         example: "3.86",
         ..Key::BLANK
     },
@@ -605,7 +618,7 @@ pub(super) static KEYS: &[Key] = &[
         required: Required::Yes,
         description: "fin_steps: the fins' commands step at times_s to the angles given, zero \
                       before the first. autopilot: the autopilots hold the heading_deg and \
-                      depth_m given from times_s on, the cruise's before (a fin whose \
+                      depth_m given from times_s on, the start's before (a fin whose \
                       autopilot holds nothing may take steps); each change is reported with \
                       its overshoot, 2 % settling time and steady error. turning_circle: the \
                       rudder held at rudder_deg from times_s (one of each), the depth held if \
@@ -613,7 +626,9 @@ pub(super) static KEYS: &[Key] = &[
                       180°, the steady diameter once the turn has settled. zigzag: the fin of \
                       `plane` to ±fin_deg from times_s, reversed each time the heading (pitch) \
                       passes ±switch_deg; each overshoot read where its rate is zero. Each \
-                      manoeuvre starts from the cruise, at the origin, heading north.",
+                      manoeuvre starts from its trim at the origin, heading north: the \
+                      scene's, with the fins its autopilots work trimmed to hold their heading \
+                      and depth from the start, about which they act.",
         example: "\"fin_steps\"",
         ..Key::BLANK
     },
@@ -634,7 +649,7 @@ pub(super) static KEYS: &[Key] = &[
         unit: "deg",
         required: Required::When("fin_steps: unless stern_planes_deg is given"),
         default: "zero",
-        description: "The rudder's command from each time on.",
+        description: "The rudder's command from each time on, within rudder.max_deg.",
         example: "[4.0, -4.0]",
         ..Key::BLANK
     },
@@ -645,7 +660,8 @@ pub(super) static KEYS: &[Key] = &[
         unit: "deg",
         required: Required::When("fin_steps: unless rudder_deg is given"),
         default: "zero",
-        description: "The stern planes' command from each time on.",
+        description: "The stern planes' command from each time on, within \
+                      stern_planes.max_deg.",
         example: "[0.0, 0.0]",
         shown: Shown::Commented,
         ..Key::BLANK
@@ -667,7 +683,7 @@ pub(super) static KEYS: &[Key] = &[
         kind: Kind::Numbers("depths, one per time"),
         unit: "m",
         required: Required::When("autopilot: unless heading_deg is given"),
-        description: "An autopilot manoeuvre: the depth [autopilot.depth] holds from each time on (down positive, the cruise at 0).",
+        description: "An autopilot manoeuvre: the depth [autopilot.depth] holds from each time on (down positive, the start at 0).",
         example: "[0.0, 5.0]",
         shown: Shown::Commented,
         ..Key::BLANK
@@ -687,7 +703,7 @@ pub(super) static KEYS: &[Key] = &[
         families: VEHICLE,
         unit: "deg",
         required: Required::When("for a zigzag"),
-        description: "A zigzag's fin angle, below 90°: the fin goes to it at the execute, and to its opposite at each switch.",
+        description: "A zigzag's fin angle, below 90° and within its fin's max_deg: the fin goes to it at the execute, and to its opposite at each switch.",
         example: "10.0",
         shown: Shown::Commented,
         ..Key::BLANK
@@ -697,7 +713,7 @@ pub(super) static KEYS: &[Key] = &[
         families: VEHICLE,
         unit: "deg",
         required: Required::When("for a zigzag"),
-        description: "A zigzag's switch angle, below 90°: of the heading from the execute's, or of the pitch.",
+        description: "A zigzag's switch angle, below 90°: of the heading from the execute's, or of the pitch from the trim's.",
         example: "10.0",
         shown: Shown::Commented,
         ..Key::BLANK
@@ -727,7 +743,7 @@ pub(super) static KEYS: &[Key] = &[
         path: "linear.at.*",
         families: VEHICLE,
         kind: Kind::Table("state entries and inputs by name, and values"),
-        description: "The operating point of `eom linear`, where it differs from the cruise: \
+        description: "The operating point of `eom linear`, where it differs from the trim: \
                       `u`, `v`, `w`, `p`, `q`, `r` (SI), `phi`, `theta`, `psi` (rad) and the \
                       fins' angles `dr`, `ds` (or `rudder`, `stern_planes`, rad). The vehicle is \
                       linearised in Euler angles, the Euler-angle twin of its table.",
