@@ -911,7 +911,7 @@ fn the_mariner_runs_each_turn_to_both_sides_and_is_judged_on_the_worse() {
         overshoot(1)
     );
     let trial = (zigzag, runs.iter().map(|(s, f)| (*s, f)).collect());
-    let judged = criteria(scene.length, scene.table.design_speed, &[trial], false);
+    let judged = criteria(&scene, &[trial]);
     let first = judged
         .iter()
         .find(|c| c.name == "first_overshoot_10_10")
@@ -1206,7 +1206,7 @@ fn a_crash_stop_ends_where_the_ship_stops_and_is_judged() {
     assert!((get(&finer, "track_reach_m") - track).abs() < 0.1);
     assert!((get(&finer, "time_to_stop_s") - time).abs() < 0.01);
     let trial = (manoeuvre, vec![(None, &figures)]);
-    let judged = criteria(scene.length, scene.table.design_speed, &[trial], true);
+    let judged = criteria(&scene, &[trial]);
     let stopping = judged.iter().find(|c| c.name == "track_reach").unwrap();
     assert_eq!(stopping.value, Some(track));
     assert_eq!(stopping.pass(), Some(track <= 15.0 * scene.length));
@@ -1237,7 +1237,7 @@ fn the_published_esso_osaka_does_not_stop_and_says_so() {
         "u stays above 1 m/s"
     );
     let trial = (manoeuvre, vec![(None, &figures)]);
-    let judged = criteria(scene.length, scene.table.design_speed, &[trial], true);
+    let judged = criteria(&scene, &[trial]);
     let stopping = judged.iter().find(|c| c.name == "track_reach").unwrap();
     assert_eq!((stopping.value, stopping.pass()), (None, None));
 }
@@ -1290,4 +1290,130 @@ fn bad_propulsion_and_crash_stops_are_refused_naming_the_key() {
     let in_e = mariner.replacen("Xvv = -0.00899", "Xvv = -0.00899\nYeee = -0.001", 1);
     let error = ShipScene::parse(&in_e, "no propeller").unwrap_err();
     assert_eq!(error.key, "hydrodynamics.coefficients.Yeee", "{error}");
+}
+
+/// A rudder command beyond the steering gear's limit would run at the limit while the
+/// manoeuvre is named and judged at the angle asked: it is refused where the scene is read,
+/// the error at the command's key and naming `rudder.max_deg`, for every kind that commands
+/// an angle (a turn, a spiral's list and range, a series); at the limit itself it runs.
+#[test]
+fn a_rudder_command_beyond_the_gear_is_refused_naming_both_keys() {
+    let text = std::fs::read_to_string("scenes/mariner.toml")
+        .unwrap()
+        .replacen("max_deg = 40.0", "max_deg = 35.0", 1);
+    let spiral = "rudders_deg = [10.0, 5.0, 2.0, 1.0, 0.0, -1.0, -2.0, -5.0, -10.0]";
+    let series = "[[manoeuvre]]\nkind = \"rudder_series\"\ntimes_s = [0.0, 10.0]\n\
+                  series_deg = [0.0, -36.0]\nduration_s = 20.0\n";
+    let cases = [
+        (
+            "rudder_deg = 35.0",
+            "rudder_deg = 45.0",
+            "manoeuvre[0].rudder_deg",
+        ),
+        (
+            "rudder_deg = 20.0",
+            "rudder_deg = -35.5",
+            "manoeuvre[2].rudder_deg",
+        ),
+        (
+            spiral,
+            "rudders_deg = [40.0, -10.0]",
+            "manoeuvre[3].rudders_deg[0]",
+        ),
+        (
+            spiral,
+            "from_deg = 10.0\nto_deg = -40.0\nstep_deg = 10.0",
+            "manoeuvre[3].to_deg",
+        ),
+        (
+            spiral,
+            &format!("{spiral}\n\n{series}"),
+            "manoeuvre[4].series_deg[1]",
+        ),
+    ];
+    for (from, to, key) in cases {
+        assert!(text.contains(from), "{from}");
+        let error = ShipScene::parse(&text.replacen(from, to, 1), "beyond").unwrap_err();
+        assert_eq!(error.key, key, "{to}: {error}");
+        let message = error.to_string();
+        assert!(message.contains("rudder.max_deg = 35°"), "{message}");
+    }
+    let at_limit = ShipScene::parse(&text, "at the limit").unwrap();
+    assert_eq!(at_limit.manoeuvres[0].name, "turning_circle_35");
+}
+
+/// The turning criteria rest on the turning circle at 35°, or at the steering gear's limit
+/// where it is smaller, and on no other: a scene whose only turn is at 20° has them listed as
+/// not judged, saying which angle they need and what the scene ran, while a scene with both
+/// judges the one at 35° whatever the other gives. Every criterion names its manoeuvre.
+#[test]
+fn the_turning_criteria_rest_on_the_turn_at_35_degrees_or_the_gears_limit() {
+    let mariner = std::fs::read_to_string("scenes/mariner.toml").unwrap();
+    let turn = |deg: f64| {
+        format!(
+            "[[manoeuvre]]\nname = \"turn_{deg}\"\nkind = \"turning_circle\"\nrudder_deg = \
+             {deg}\nduration_s = 100.0\n"
+        )
+    };
+    let approach = &mariner[..mariner.find("[[manoeuvre]]").unwrap()];
+    // Figures made by hand: the criteria read only what the runs gave.
+    let figures = |advance: f64| Figures {
+        values: vec![
+            ("advance_90_m", Some(advance)),
+            ("tactical_diameter_m", Some(advance)),
+        ],
+        ..Figures::default()
+    };
+    let judge = |text: &str, advances: &[f64]| {
+        let scene = ShipScene::parse(text, "turns").unwrap();
+        let made: Vec<Figures> = advances.iter().map(|a| figures(*a)).collect();
+        let trials: Vec<_> = (scene.manoeuvres.iter().zip(&made))
+            .map(|(m, f)| (m, vec![(None, f)]))
+            .collect();
+        criteria(&scene, &trials)
+    };
+    let advance = |judged: &[eom::ship::imo::Criterion]| {
+        judged
+            .iter()
+            .find(|c| c.name == "advance")
+            .cloned()
+            .unwrap()
+    };
+    // Only a 20° turn: not judged, and why.
+    let only_20 = judge(&format!("{approach}{}", turn(20.0)), &[300.0]);
+    let criterion = advance(&only_20);
+    assert_eq!((criterion.value, criterion.pass()), (None, None));
+    let why = criterion.not_judged_because.unwrap();
+    assert!(
+        why.contains("35°") && why.contains("turn_20 at 20°"),
+        "{why}"
+    );
+    assert_eq!(criterion.manoeuvre, "turning_circle_35");
+    // 20° and 35°: the 35° turn's figure, whichever comes first.
+    let both = judge(
+        &format!("{approach}{}{}", turn(35.0), turn(20.0)),
+        &[500.0, 300.0],
+    );
+    let criterion = advance(&both);
+    assert_eq!(
+        (criterion.value, criterion.manoeuvre.as_str()),
+        (Some(500.0), "turn_35")
+    );
+    // A 30° gear: its limit is the angle, and a 20° turn is still not judged.
+    let gear = approach.replacen("max_deg = 40.0", "max_deg = 30.0", 1);
+    let at_30 = judge(
+        &format!("{gear}{}{}", turn(20.0), turn(30.0)),
+        &[300.0, 400.0],
+    );
+    assert_eq!(advance(&at_30).value, Some(400.0));
+    assert_eq!(advance(&at_30).manoeuvre, "turn_30");
+    let only_20 = judge(&format!("{gear}{}", turn(20.0)), &[300.0]);
+    let why = advance(&only_20).not_judged_because.unwrap();
+    assert!(
+        why.contains("30°") && why.contains("rudder.max_deg"),
+        "{why}"
+    );
+    for criterion in only_20.iter().chain(&at_30).chain(&both) {
+        assert!(!criterion.manoeuvre.is_empty(), "{criterion:?}");
+    }
 }

@@ -645,11 +645,31 @@ impl Checker<'_> {
         Ok((stepper, every))
     }
 
+    /// A rudder command of `degrees` at `key` within the steering gear's reach: a command
+    /// beyond `rudder.max_deg` would run at the limit while the manoeuvre is labelled and
+    /// judged at the angle asked, so it is refused, naming both keys.
+    fn within_gear(&self, key: &str, degrees: f64, rudder: &Rudder) -> Result<(), SceneError> {
+        match rudder.max_angle.map(f64::to_degrees) {
+            Some(max) if degrees.abs() > max * (1.0 + 1e-12) => Err(self.invalid(
+                key,
+                format!(
+                    "{}° is beyond the steering gear's limit, rudder.max_deg = {}°: the \
+                     rudder would stop at the limit while the run is named and judged at the \
+                     angle asked; command at most {}°, or raise rudder.max_deg",
+                    crate::Short(degrees),
+                    crate::Short(max),
+                    crate::Short(max)
+                ),
+            )),
+            _ => Ok(()),
+        }
+    }
+
     fn manoeuvre(
         &self,
         index: usize,
         table: &ManoeuvreTable,
-        (linear, propulsion): (&LinearModel, Option<&Propulsion>),
+        (linear, propulsion, rudder): (&LinearModel, Option<&Propulsion>, &Rudder),
     ) -> Result<Manoeuvre, SceneError> {
         let key = |k: &str| format!("manoeuvre[{index}].{k}");
         let required = |k: &str, v: Option<f64>| {
@@ -671,13 +691,14 @@ impl Checker<'_> {
             if degrees == 0.0 {
                 return Err(self.invalid(&key("rudder_deg"), "a manoeuvre needs a rudder angle"));
             }
+            self.within_gear(&key("rudder_deg"), degrees, rudder)?;
             Ok(degrees.to_radians())
         };
         let execute = self.finite(&key("execute_s"), table.execute_s.unwrap_or(0.0))?;
         if execute < 0.0 {
             return Err(self.invalid(&key("execute_s"), "the run starts at 0 s"));
         }
-        let spiral = self.spiral(index, table, linear)?;
+        let spiral = self.spiral(index, table, (linear, rudder))?;
         let duration = match (table.duration_s, &spiral) {
             (Some(duration), _) => self.positive(&key("duration_s"), duration)?,
             (None, Some((_, longest))) => execute + longest,
@@ -743,6 +764,9 @@ impl Checker<'_> {
                 let degrees = table.series_deg.clone().ok_or_else(|| {
                     self.error(&key("series_deg"), Problem::Missing(key("series_deg")))
                 })?;
+                for (k, angle) in degrees.iter().enumerate() {
+                    self.within_gear(&format!("{}[{k}]", key("series_deg")), *angle, rudder)?;
+                }
                 let angles = degrees.iter().map(|d| d.to_radians()).collect();
                 let series = Series::new(times, angles).ok_or_else(|| {
                     self.invalid(
@@ -890,7 +914,7 @@ impl Checker<'_> {
         &self,
         index: usize,
         table: &ManoeuvreTable,
-        linear: &LinearModel,
+        (linear, rudder): (&LinearModel, &Rudder),
     ) -> Result<Option<(ManoeuvreKind, f64)>, SceneError> {
         let key = |k: &str| format!("manoeuvre[{index}].{k}");
         let (list_key, list) = match table.kind.as_str() {
@@ -906,6 +930,18 @@ impl Checker<'_> {
         })?;
         if list.len() < 2 || list.iter().any(|v| !v.is_finite()) {
             return Err(self.invalid(&key(list_key), "at least two finite values"));
+        }
+        if table.kind == "spiral" {
+            // Each angle by the key that gave it: an entry of rudders_deg, or the range's ends
+            // (the angles between lie between them).
+            for (k, angle) in list.iter().enumerate() {
+                let given = match (&table.rudders_deg, k) {
+                    (Some(_), _) => format!("{}[{k}]", key("rudders_deg")),
+                    (None, 0) => key("from_deg"),
+                    (None, _) => key("to_deg"),
+                };
+                self.within_gear(&given, *angle, rudder)?;
+            }
         }
         let settle = Settle {
             window: self.positive(
@@ -1018,7 +1054,7 @@ impl ShipScene {
         }
         let mut manoeuvres: Vec<Manoeuvre> = Vec::new();
         for (index, table) in file.manoeuvre.iter().enumerate() {
-            let manoeuvre = check.manoeuvre(index, table, (&linear, table_propulsion))?;
+            let manoeuvre = check.manoeuvre(index, table, (&linear, table_propulsion, &rudder))?;
             if manoeuvres.iter().any(|m| m.name == manoeuvre.name) {
                 return Err(check.invalid(
                     &format!("manoeuvre[{index}].name"),

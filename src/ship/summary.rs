@@ -322,7 +322,7 @@ pub struct CriterionSummary {
     pub sides: Option<BTreeMap<&'static str, Option<f64>>>,
     /// Why it is not judged, where no manoeuvre of the scene could give its figure.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub not_judged_because: Option<&'static str>,
+    pub not_judged_because: Option<String>,
 }
 
 impl ModelSummary {
@@ -509,7 +509,7 @@ impl CriterionSummary {
                     .map(|(side, value)| (side.name(), *value))
                     .collect()
             }),
-            not_judged_because: criterion.not_judged_because,
+            not_judged_because: criterion.not_judged_because.clone(),
         }
     }
 }

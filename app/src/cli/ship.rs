@@ -236,8 +236,7 @@ fn run_into(scene: &ShipScene, name: &str, out: &Path) -> Result<ShipRun> {
     let trials: Vec<Trial> = (scene.manoeuvres.iter().zip(&outcomes))
         .map(|(m, runs)| (m, runs.iter().map(|(s, o)| (*s, &o.figures)).collect()))
         .collect();
-    let propulsion = scene.table.propulsion.is_some();
-    let judged = criteria(scene.length, scene.table.design_speed, &trials, propulsion);
+    let judged = criteria(scene, &trials);
     let runs = (scene.manoeuvres.iter().zip(&outcomes))
         .filter(|(_, runs)| !runs.is_empty())
         .map(|(manoeuvre, runs)| {
@@ -701,17 +700,18 @@ fn print_report(scene: &ShipScene, outcomes: &[Runs], judged: &[Criterion], out:
                 .collect();
             let sides = match sides.is_empty() {
                 true => String::new(),
-                false => format!("  ({})", sides.join(", ")),
+                false => format!(" ({})", sides.join(", ")),
             };
             match (c.value, c.pass()) {
                 (Some(value), Some(pass)) => println!(
-                    "    {:<24} {value:>10.2} {:<3} ≤ {:>9.2}  {}{sides}",
+                    "    {:<24} {value:>10.2} {:<3} ≤ {:>9.2}  {}  on {}{sides}",
                     c.name,
                     c.unit,
                     c.limit,
-                    if pass { "pass" } else { "FAIL" }
+                    if pass { "pass" } else { "FAIL" },
+                    c.manoeuvre
                 ),
-                _ => match c.not_judged_because {
+                _ => match &c.not_judged_because {
                     Some(why) => println!("    {:<24} not judged: {why}", c.name),
                     None => println!(
                         "    {:<24} not judged: {} did not give the figure (see its notes)\
