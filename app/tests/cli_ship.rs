@@ -163,7 +163,9 @@ fn the_mariner_runs_its_manoeuvres_and_is_judged() {
 }
 
 /// The Esso Osaka, course-unstable: both spirals find a loop about δ = 0, the summary gives
-/// its width and height, and spiral.svg draws both passes.
+/// its width and height, and spiral.svg draws both passes; beside them, the steady-turn curve
+/// and its two folds, and the report sets the loop from the settled points (its width, its
+/// bounds and the spiral's rudder step) beside the folds.
 #[test]
 fn the_esso_osakas_spirals_show_its_loop() {
     let out = folder("esso_osaka");
@@ -193,6 +195,67 @@ fn the_esso_osakas_spirals_show_its_loop() {
     }
     let svg = std::fs::read_to_string(out.join("spiral/spiral.svg")).unwrap();
     assert!(svg.contains("first pass") && svg.contains("back"));
+    assert!(
+        svg.contains("steady turns"),
+        "the curve is drawn beside the points"
+    );
+    let spiral = &summary["manoeuvre"]["spiral"];
+    let found = &spiral["spiral"]["loop"];
+    let degrees = |v: &serde_json::Value| v.as_f64().unwrap();
+    assert!(
+        (degrees(&found["rudder_step_deg"]) - 0.25).abs() < 1e-12,
+        "{found}"
+    );
+    let steady = &spiral["spiral"]["steady_turns"];
+    let folds = steady["folds"].as_array().unwrap();
+    assert_eq!(folds.len(), 2, "{steady}");
+    let width = degrees(&steady["loop_width_deg"]);
+    assert_eq!(degrees(&spiral["steady_loop_width_deg"]), width);
+    assert!(degrees(&found["least_width_deg"]) <= width);
+    assert!(width <= degrees(&found["most_width_deg"]));
+    for said in [
+        "loop from the settled points",
+        "rudder step 0.250°",
+        "folds at δ = ",
+    ] {
+        assert!(stdout.contains(said), "{said}: {stdout}");
+    }
+}
+
+/// A course-stable ship is not called a loop by a spiral that cannot tell: the S-175 on
+/// Clarke's linear derivatives (C′ > 0 by `eom linear`) at the default settling is
+/// "undetermined", with the settling that would tell, and its steady-turn curve has no fold.
+#[test]
+fn the_s175s_spiral_is_not_called_a_loop() {
+    let linear = succeeded(&eom(&["linear", &scene_arg("s175.toml"), "--json"]));
+    let linear: serde_json::Value = serde_json::from_str(&linear).unwrap();
+    assert_eq!(linear["course_stable"], true, "{linear}");
+    assert!(linear["stability_index"].as_f64().unwrap() > 0.0);
+    let out = folder("s175");
+    let stdout = succeeded(&eom(&[
+        "run",
+        &scene_arg("s175.toml"),
+        "--out",
+        out.to_str().unwrap(),
+    ]));
+    assert!(!stdout.contains("NO (a loop)"), "{stdout}");
+    assert!(stdout.contains("undetermined"), "{stdout}");
+    assert!(
+        stdout.contains("no fold: one steady turn at each δ"),
+        "{stdout}"
+    );
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let spiral = &summary["manoeuvre"]["spiral"];
+    assert!(
+        spiral["spiral"]["course_stable_by_spiral"].is_null(),
+        "{spiral}"
+    );
+    assert_eq!(spiral["spiral"]["verdict"], "undetermined");
+    let why = spiral["spiral"]["undetermined_because"].as_str().unwrap();
+    assert!(why.contains("settle_window_s = "), "{why}");
+    assert!(spiral["loop_width_deg"].is_null());
+    assert_eq!(spiral["steady_loop_width_deg"], 0.0);
 }
 
 /// A workboat on a crude made-up table whose turn drags it to a stop and astern.

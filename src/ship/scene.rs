@@ -69,6 +69,7 @@
 //! # settle_tolerance_deg_s = 0.001
 //! # max_hold_s = 2000.0        # the longest an angle is held
 //! # settle_rudder_deg = 0.01   # reverse_spiral: the mean rudder settled, window to window
+//! # settle_speed_m_s = 0.001   # the speed settled: within it over the window
 //! # controller_time_s = 20.0   # reverse_spiral: the controller's closed-loop τ
 //! ```
 //!
@@ -281,6 +282,8 @@ pub struct ManoeuvreTable {
     /// The reverse spiral's settling tolerance on the mean rudder from window to window,
     /// degrees.
     pub settle_rudder_deg: Option<f64>,
+    /// A spiral's settling tolerance on the speed over the window, m/s.
+    pub settle_speed_m_s: Option<f64>,
     /// A crash stop's full-astern propeller rate, rev/s (negative).
     pub astern_rps: Option<f64>,
 }
@@ -293,11 +296,13 @@ pub const SETTLE_TOLERANCE_DEG_S: f64 = 0.001;
 pub const MAX_HOLD_S: f64 = 2000.0;
 /// The reverse spiral's settling tolerance on the mean rudder by default, degrees.
 pub const SETTLE_RUDDER_DEG: f64 = 0.01;
+/// A spiral's settling tolerance on the speed by default, m/s.
+pub const SETTLE_SPEED_M_S: f64 = 0.001;
 /// The reverse spiral's closed-loop yaw time constant by default, s.
 pub const CONTROLLER_TIME_S: f64 = 20.0;
 
 /// The keys of `[[manoeuvre]]` that only some kinds read, with whether the table gives each.
-fn kind_keys(table: &ManoeuvreTable) -> [(&'static str, bool); 18] {
+fn kind_keys(table: &ManoeuvreTable) -> [(&'static str, bool); 19] {
     [
         ("rudder_deg", table.rudder_deg.is_some()),
         ("heading_deg", table.heading_deg.is_some()),
@@ -318,6 +323,7 @@ fn kind_keys(table: &ManoeuvreTable) -> [(&'static str, bool); 18] {
         ("max_hold_s", table.max_hold_s.is_some()),
         ("controller_time_s", table.controller_time_s.is_some()),
         ("settle_rudder_deg", table.settle_rudder_deg.is_some()),
+        ("settle_speed_m_s", table.settle_speed_m_s.is_some()),
         ("astern_rps", table.astern_rps.is_some()),
         ("duration_s", table.duration_s.is_some()),
     ]
@@ -339,6 +345,7 @@ fn keys_of(kind: &str) -> &'static [&'static str] {
             SETTLE[0],
             SETTLE[1],
             SETTLE[2],
+            "settle_speed_m_s",
             "duration_s",
         ],
         "reverse_spiral" => &[
@@ -348,11 +355,23 @@ fn keys_of(kind: &str) -> &'static [&'static str] {
             SETTLE[2],
             "controller_time_s",
             "settle_rudder_deg",
+            "settle_speed_m_s",
             "duration_s",
         ],
         "crash_stop" => &["astern_rps", "duration_s"],
         _ => &[],
     }
+}
+
+/// What a manoeuvre's checks read of the ship: its linear model (which side δ turns it to,
+/// the controller's gain, the time constant a spiral's settling allows), its propulsion
+/// model, its steering gear and its length.
+#[derive(Debug, Clone, Copy)]
+struct Ship<'a> {
+    linear: &'a LinearModel,
+    propulsion: Option<&'a Propulsion>,
+    rudder: &'a Rudder,
+    length: f64,
 }
 
 /// A ship scene, checked, ready to run.
@@ -669,8 +688,14 @@ impl Checker<'_> {
         &self,
         index: usize,
         table: &ManoeuvreTable,
-        (linear, propulsion, rudder): (&LinearModel, Option<&Propulsion>, &Rudder),
+        ship: Ship,
     ) -> Result<Manoeuvre, SceneError> {
+        let Ship {
+            linear,
+            propulsion,
+            rudder,
+            ..
+        } = ship;
         let key = |k: &str| format!("manoeuvre[{index}].{k}");
         let required = |k: &str, v: Option<f64>| {
             v.ok_or_else(|| self.error(&key(k), Problem::Missing(key(k))))
@@ -698,7 +723,7 @@ impl Checker<'_> {
         if execute < 0.0 {
             return Err(self.invalid(&key("execute_s"), "the run starts at 0 s"));
         }
-        let spiral = self.spiral(index, table, (linear, rudder))?;
+        let spiral = self.spiral(index, table, ship)?;
         let duration = match (table.duration_s, &spiral) {
             (Some(duration), _) => self.positive(&key("duration_s"), duration)?,
             (None, Some((_, longest))) => execute + longest,
@@ -914,8 +939,14 @@ impl Checker<'_> {
         &self,
         index: usize,
         table: &ManoeuvreTable,
-        (linear, rudder): (&LinearModel, &Rudder),
+        ship: Ship,
     ) -> Result<Option<(ManoeuvreKind, f64)>, SceneError> {
+        let Ship {
+            linear,
+            rudder,
+            length,
+            ..
+        } = ship;
         let key = |k: &str| format!("manoeuvre[{index}].{k}");
         let (list_key, list) = match table.kind.as_str() {
             "spiral" => ("rudders_deg", self.spiral_angles(index, table)?),
@@ -963,6 +994,11 @@ impl Checker<'_> {
                     table.settle_rudder_deg.unwrap_or(SETTLE_RUDDER_DEG),
                 )?
                 .to_radians(),
+            speed_tolerance: self.positive(
+                &key("settle_speed_m_s"),
+                table.settle_speed_m_s.unwrap_or(SETTLE_SPEED_M_S),
+            )?,
+            time_constant: linear.slowest_time_constant(),
         };
         if settle.max_hold < settle.window {
             return Err(self.invalid(
@@ -988,6 +1024,7 @@ impl Checker<'_> {
             let spiral = Spiral {
                 rudders: radians,
                 settle,
+                length,
             };
             return Ok(Some((ManoeuvreKind::Spiral(spiral), longest)));
         }
@@ -1009,6 +1046,7 @@ impl Checker<'_> {
             yaw_rates: radians,
             settle,
             gain,
+            length,
         };
         Ok(Some((ManoeuvreKind::ReverseSpiral(reverse), longest)))
     }
@@ -1054,7 +1092,13 @@ impl ShipScene {
         }
         let mut manoeuvres: Vec<Manoeuvre> = Vec::new();
         for (index, table) in file.manoeuvre.iter().enumerate() {
-            let manoeuvre = check.manoeuvre(index, table, (&linear, table_propulsion, &rudder))?;
+            let ship = Ship {
+                linear: &linear,
+                propulsion: table_propulsion,
+                rudder: &rudder,
+                length,
+            };
+            let manoeuvre = check.manoeuvre(index, table, ship)?;
             if manoeuvres.iter().any(|m| m.name == manoeuvre.name) {
                 return Err(check.invalid(
                     &format!("manoeuvre[{index}].name"),

@@ -13,6 +13,7 @@
 use super::run::{Interrupted, signal_received};
 use anyhow::{Context, Result};
 use eom::Model;
+use eom::Short;
 use eom::output::summary::write_atomically;
 use eom::output::text::printable;
 use eom::output::trajectory::{Columns, TrajectoryWriter};
@@ -25,7 +26,8 @@ use eom::ship::linear::{LinearModel, Nomoto, linearise, linearise_ship};
 use eom::ship::manoeuvre::ManoeuvreKind;
 use eom::ship::manoeuvre::{Figures, ROW, run, trajectory_columns};
 use eom::ship::side::{deciding_figure, worse};
-use eom::ship::spiral::{Branch, SpiralCurve};
+use eom::ship::spiral::{Branch, Loop, SpiralCurve, SpiralPoint, Verdict};
+use eom::ship::steady::SteadyTurns;
 use eom::ship::summary::{
     CriterionSummary, IntegratorSummary, LinearSummary, ManoeuvreSummary, Manoeuvres, ModelSummary,
     ShipSummary, nomoto_difference,
@@ -572,51 +574,149 @@ fn print_manoeuvre(manoeuvre: &Manoeuvre, runs: &Runs) {
     }
 }
 
-/// A spiral's curve: one line per angle (the two passes side by side for a direct spiral).
+/// A spiral's curve: its verdict, one line per angle (the two passes side by side for a
+/// direct spiral; a point that did not settle marked `*`), then the loop from the settled
+/// points beside the steady-turn curve's folds.
 fn print_spiral(curve: &SpiralCurve) {
-    let stable = curve.find_loop().is_none();
+    let verdict = curve.verdict();
     println!(
         "    course stable by the spiral        {}",
-        if stable {
-            "yes (no loop)"
-        } else {
-            "NO (a loop)"
+        match verdict {
+            Verdict::NoLoop => "yes (no loop)",
+            Verdict::Loop(_) => "NO (a loop)",
+            Verdict::Undetermined(_) => "undetermined (see the note)",
         }
     );
     let settle = curve.settle;
+    let resolution = match settle.resolution().is_finite() {
+        true => format!(
+            "a settled r within ε = {}°/s of the steady one at T₁ = {} s",
+            Short(settle.resolution().to_degrees()),
+            Short(settle.time_constant)
+        ),
+        false => "no bound on a settled r's distance from the steady one (the linear model has \
+                  a mode that neither grows nor decays)"
+            .to_owned(),
+    };
     println!(
-        "    settled: r within {}°/s over {} s (held at most {} s)",
-        settle.tolerance.to_degrees(),
-        settle.window,
-        settle.max_hold
+        "    settled: r within {}°/s over {} s (held at most {} s): {resolution}",
+        Short(settle.tolerance.to_degrees()),
+        Short(settle.window),
+        Short(settle.max_hold),
     );
+    let mark = |p: &SpiralPoint, text: String| match p.settled {
+        true => format!("{text} "),
+        false => format!("{text}*"),
+    };
     let reverse = curve.points.iter().any(|p| p.branch == Branch::Reverse);
     if reverse {
         println!(
-            "    {:>14} {:>14} {:>14}",
+            "    {:>14} {:>14} {:>15}",
             "r_c [°/s]", "r [°/s]", "mean δ [°]"
         );
         for p in &curve.points {
             let target = p.target.map_or(f64::NAN, f64::to_degrees);
             let (r, d) = (p.yaw_rate.to_degrees(), p.rudder.to_degrees());
-            println!("    {target:>14.4} {r:>14.4} {d:>14.3}");
+            println!(
+                "    {:>14} {:>14} {:>15}",
+                fixed(target, 4),
+                fixed(r, 4),
+                mark(p, fixed(d, 3))
+            );
         }
-        return;
-    }
-    println!(
-        "    {:>10} {:>14} {:>14}",
-        "δ [°]", "r first [°/s]", "r back [°/s]"
-    );
-    for first in curve.points.iter().filter(|p| p.branch == Branch::First) {
-        let back = (curve.points.iter())
-            .find(|p| p.branch == Branch::Back && p.rudder == first.rudder)
-            .map(|p| p.yaw_rate.to_degrees());
+    } else {
         println!(
-            "    {:>10.2} {:>14.4} {:>14}",
-            first.rudder.to_degrees(),
-            first.yaw_rate.to_degrees(),
-            back.map_or_else(|| "—".to_owned(), |r| format!("{r:.4}"))
+            "    {:>10} {:>15} {:>15}",
+            "δ [°]", "r first [°/s]", "r back [°/s]"
         );
+        for first in curve.points.iter().filter(|p| p.branch == Branch::First) {
+            let back = (curve.points.iter())
+                .find(|p| p.branch == Branch::Back && p.rudder == first.rudder)
+                .map(|p| mark(p, fixed(p.yaw_rate.to_degrees(), 4)));
+            println!(
+                "    {:>10} {:>15} {:>15}",
+                fixed(first.rudder.to_degrees(), 2),
+                mark(first, fixed(first.yaw_rate.to_degrees(), 4)),
+                back.unwrap_or_else(|| "— ".to_owned())
+            );
+        }
+    }
+    if curve.points.iter().any(|p| !p.settled) {
+        println!("    * not settled: no figure rests on it");
+    }
+    if let Verdict::Loop(found) = verdict {
+        print_loop(&found);
+    }
+    match &curve.steady {
+        Ok(steady) => print_steady(steady),
+        Err(why) => println!("    steady turns: not traced ({why})"),
+    }
+}
+
+/// The loop the settled points show: its ends, width and bounds, and the spiral's step.
+fn print_loop(found: &Loop) {
+    let degrees = |x: f64| fixed(x.to_degrees(), 3);
+    let most = found
+        .most_width
+        .map_or_else(String::new, |w| format!(", at most {}°", degrees(w)));
+    let step = found
+        .step
+        .map_or_else(String::new, |s| format!(", rudder step {}°", degrees(s)));
+    println!(
+        "    loop from the settled points: δ from {}° to {}°, {}° wide (at least {}°{most}){step}",
+        degrees(found.ends.0),
+        degrees(found.ends.1),
+        degrees(found.width),
+        degrees(found.least_width()),
+    );
+}
+
+/// The steady-turn curve's folds and the loop between them, beside the spiral's.
+fn print_steady(steady: &SteadyTurns) {
+    let (low, high) = steady.range;
+    let range = format!(
+        "δ from {}° to {}°",
+        fixed(low.to_degrees(), 2),
+        fixed(high.to_degrees(), 2)
+    );
+    let mut folds = steady.folds.clone();
+    folds.sort_by(|a, b| a.rudder.total_cmp(&b.rudder));
+    let folds: Vec<String> = (folds.iter())
+        .map(|f| {
+            format!(
+                "δ = {}° (r = {}°/s)",
+                fixed(f.rudder.to_degrees(), 4),
+                fixed(f.r.to_degrees(), 4)
+            )
+        })
+        .collect();
+    let what = match (steady.folds.len(), steady.loop_width()) {
+        (0, Some(_)) => "no fold: one steady turn at each δ".to_owned(),
+        (0, None) => "no fold where it was traced".to_owned(),
+        (_, Some(width)) => format!(
+            "folds at {}: the loop {}° wide",
+            folds.join(" and "),
+            fixed(width.to_degrees(), 4)
+        ),
+        (_, None) => format!("one fold, at {}: the loop runs past the range", folds[0]),
+    };
+    println!(
+        "    steady turns ({} points, by continuation over {range}): {what}",
+        steady.turns.len()
+    );
+    for (end, why) in ["low", "high"].iter().zip(&steady.ends) {
+        if !steady.spans_range() {
+            println!("      the curve's {end} end: {why}");
+        }
+    }
+}
+
+/// `value` to `decimals` places, with no sign on a zero (`-0.0000` is `0.0000`).
+fn fixed(value: f64, decimals: usize) -> String {
+    let text = format!("{value:.decimals$}");
+    match text.strip_prefix('-') {
+        Some(digits) if digits.chars().all(|c| c == '0' || c == '.') => digits.to_owned(),
+        _ => text,
     }
 }
 
@@ -657,9 +757,20 @@ fn write_spiral_plot(folder: &Path, title: &str, curve: &SpiralCurve) -> Result<
             points: &reverse,
         });
     }
-    let verdict = match curve.find_loop() {
-        None => "no loop (course-stable)".to_owned(),
-        Some(l) => format!(
+    let steady: Vec<(f64, f64)> = (curve.steady.iter())
+        .flat_map(|s| &s.turns)
+        .map(|t| (t.rudder.to_degrees(), t.r.to_degrees()))
+        .collect();
+    if !steady.is_empty() {
+        curves.push(Curve {
+            name: "steady turns",
+            points: &steady,
+        });
+    }
+    let verdict = match curve.verdict() {
+        Verdict::NoLoop => "no loop (course-stable)".to_owned(),
+        Verdict::Undetermined(_) => "loop undetermined (see the notes)".to_owned(),
+        Verdict::Loop(l) => format!(
             "loop {:.2}° wide{}",
             l.width.to_degrees(),
             l.height

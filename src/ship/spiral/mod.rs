@@ -187,7 +187,10 @@ impl SpiralCurve {
 /// The least and the largest of `angles`.
 pub fn range(angles: &[f64]) -> (f64, f64) {
     let low = angles.iter().copied().fold(f64::INFINITY, f64::min);
-    (low, angles.iter().copied().fold(f64::NEG_INFINITY, f64::max))
+    (
+        low,
+        angles.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+    )
 }
 
 /// A spiral's figures: the loop's width and height from its settled points (zero for a
