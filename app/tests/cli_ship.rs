@@ -534,3 +534,77 @@ fn a_ship_sweep_over_the_rudder_runs_whole_or_in_shards_alike() {
         "the merge draws the same plot"
     );
 }
+
+/// A sweep over the rudder angle of a turning circle the scene does not name (README's and
+/// `eom new ship`'s own example): its default name is made from the swept angle, so its
+/// columns are named by its position, `manoeuvre[0]`, the same in every case. Run whole and
+/// as two shards merged, the tables are equal, and every case has its figures.
+#[test]
+fn a_sweep_over_an_unnamed_turns_rudder_keeps_every_cases_figures() {
+    let dir = folder("sweep_unnamed");
+    let text = std::fs::read_to_string(scene_arg("mariner.toml")).unwrap();
+    let approach = &text[..text.find("[[manoeuvre]]").unwrap()];
+    let text = format!(
+        "{approach}[[manoeuvre]]\nkind = \"turning_circle\"\nrudder_deg = 35.0\n\
+         duration_s = 450.0\n\n[sweep]\n\"manoeuvre[0].rudder_deg\" = [15.0, 25.0, 35.0]\n"
+    );
+    let path = dir.join("sweep.toml");
+    std::fs::write(&path, text).unwrap();
+    let run = |out: &Path, shard: Option<&str>| {
+        let mut args = vec![
+            "run",
+            path.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ];
+        args.extend(shard.map(|s| ["--shard", s]).into_iter().flatten());
+        succeeded(&eom(&args))
+    };
+    let whole = dir.join("whole");
+    run(&whole, None);
+    let table = std::fs::read_to_string(whole.join("sweep.csv")).unwrap();
+    let mut reader = csv::Reader::from_reader(table.as_bytes());
+    let header = reader.headers().unwrap().clone();
+    assert_eq!(header.get(1), Some("manoeuvre[0].rudder_deg"));
+    assert!(
+        !header.iter().any(|c| c.starts_with("turning_circle_")),
+        "{header:?}"
+    );
+    let rows: Vec<csv::StringRecord> = reader.records().map(Result::unwrap).collect();
+    assert_eq!(rows.len(), 3);
+    let column = |key: &str| {
+        (header.iter().position(|c| c == key)).unwrap_or_else(|| panic!("{key}: {header:?}"))
+    };
+    for key in [
+        "manoeuvre[0].advance_90_m",
+        "manoeuvre[0].tactical_diameter_m",
+        "manoeuvre[0].port.tactical_diameter_m",
+        "manoeuvre[0].starboard.tactical_diameter_m",
+    ] {
+        for row in &rows {
+            let value: f64 =
+                (row[column(key)].parse()).unwrap_or_else(|_| panic!("{key}: {row:?}"));
+            assert!(value > 0.0, "{key}: {row:?}");
+        }
+    }
+    // The turning criteria rest on the 35° turn alone: judged in that case, with each side's
+    // figure, and not in the others, whose columns are there, empty.
+    for (row, judged) in rows.iter().zip([false, false, true]) {
+        for key in [
+            "imo.advance",
+            "imo.advance.pass",
+            "imo.tactical_diameter.port",
+        ] {
+            assert_eq!(!row[column(key)].is_empty(), judged, "{key}: {row:?}");
+        }
+    }
+    // The plot over the rudder angle finds the one swept key and the turn's columns.
+    let plot = std::fs::read_to_string(whole.join("rudder_sweep.svg")).unwrap();
+    assert!(plot.contains("manoeuvre[0] tactical diameter") || plot.contains("tactical diameter"));
+    let sharded = dir.join("sharded");
+    run(&sharded, Some("0/2"));
+    run(&sharded, Some("1/2"));
+    succeeded(&eom(&["sweep-merge", sharded.to_str().unwrap()]));
+    let merged = std::fs::read_to_string(sharded.join("sweep.csv")).unwrap();
+    assert_eq!(merged, table);
+}

@@ -144,6 +144,41 @@ fn not_judged(
     }
 }
 
+/// The turning criteria, judged on the turning circle at 35° or the gear's limit.
+pub const TURNING: [&str; 2] = ["advance", "tactical_diameter"];
+/// The zig-zag criteria, judged on the 10°/10° and the 20°/20° zig-zags.
+pub const ZIGZAG: [&str; 4] = [
+    "initial_turning",
+    "first_overshoot_10_10",
+    "second_overshoot_10_10",
+    "first_overshoot_20_20",
+];
+/// The stopping criterion, listed whether or not it can be judged.
+pub const STOPPING: &str = "track_reach";
+
+/// The criteria the kinds of `scene`'s manoeuvres may give, whatever their angles, in the
+/// order [`criteria`] lists them, each with whether a manoeuvre it may rest on runs to both
+/// sides: what a sweep's table has a column for, the same in every case.
+pub fn possible(scene: &ShipScene) -> Vec<(&'static str, bool)> {
+    let of_kind = |turning: bool| {
+        let mut runs = (scene.manoeuvres.iter()).filter(|m| match m.kind {
+            ManoeuvreKind::TurningCircle { .. } => turning,
+            ManoeuvreKind::ZigZag { .. } => !turning,
+            _ => false,
+        });
+        let any = runs.clone().next().is_some();
+        (any, runs.any(|m| m.sides.len() > 1))
+    };
+    let mut names = Vec::new();
+    for (turning, group) in [(true, &TURNING[..]), (false, &ZIGZAG[..])] {
+        if let (true, sided) = of_kind(turning) {
+            names.extend(group.iter().map(|name| (*name, sided)));
+        }
+    }
+    names.push((STOPPING, false));
+    names
+}
+
 /// The criteria the runs of `scene` allow judging: its length, design speed, steering gear
 /// and propulsion model (or none) decide the limits and what can be judged.
 pub fn criteria(scene: &ShipScene, runs: &[Trial]) -> Vec<Criterion> {

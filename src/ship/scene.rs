@@ -288,6 +288,10 @@ pub struct ManoeuvreTable {
     pub astern_rps: Option<f64>,
 }
 
+/// The keys of `[[manoeuvre]]` a manoeuvre's name is made from where the scene gives none
+/// (`turning_circle_35`, `zigzag_10_10`).
+pub const NAMED_FROM: [&str; 3] = ["kind", "rudder_deg", "heading_deg"];
+
 /// A spiral's settling window by default, s.
 pub const SETTLE_WINDOW_S: f64 = 100.0;
 /// A spiral's settling tolerance by default, degrees per second.

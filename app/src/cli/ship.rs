@@ -18,13 +18,15 @@ use eom::output::summary::write_atomically;
 use eom::output::text::printable;
 use eom::output::trajectory::{Columns, TrajectoryWriter};
 use eom::run::{Row, Sink};
+use eom::scene::reference::{SceneFamily, keys_of};
 use eom::scene::sweep::TableCase;
 use eom::ship::Side;
 use eom::ship::imo::Trial;
-use eom::ship::imo::{Criterion, criteria};
+use eom::ship::imo::{Criterion, criteria, possible};
 use eom::ship::linear::{LinearModel, Nomoto, linearise, linearise_ship};
 use eom::ship::manoeuvre::ManoeuvreKind;
 use eom::ship::manoeuvre::{Figures, ROW, run, trajectory_columns};
+use eom::ship::scene::NAMED_FROM;
 use eom::ship::side::{deciding_figure, worse};
 use eom::ship::spiral::{Branch, Loop, SpiralCurve, SpiralPoint, Verdict};
 use eom::ship::steady::SteadyTurns;
@@ -50,18 +52,53 @@ const SWEPT_FIGURES: [(&str, &str); 2] = [
     ("steady_turning_radius_m", "steady turning radius"),
 ];
 
-/// Whether a column of a sweep's table is a swept key (a key path of the scene: an entry of
-/// an array, `manoeuvre[0].rudder_deg`, or a key of one of its tables), not a figure.
+/// Whether a column of a sweep's table is a swept key (a key path of the scene: a key of an
+/// entry of an array, `manoeuvre[0].rudder_deg`, or a key of one of its tables), not a figure
+/// (`manoeuvre[0].tactical_diameter_m`, a manoeuvre's figure named by its position).
 fn is_key_path(column: &str) -> bool {
     let tables = [
         "model.",
         "body.",
         "hydrodynamics.",
+        "propulsion.",
         "rudder.",
         "integrator.",
         "output.",
     ];
-    column.contains('[') || column == "title" || tables.iter().any(|t| column.starts_with(t))
+    if let Some((array, rest)) = column.split_once('[') {
+        // `manoeuvre[0].rudder_deg` is the reference's `manoeuvre[].rudder_deg`.
+        let key = rest
+            .split_once(']')
+            .map(|(_, key)| format!("{array}[]{key}"));
+        return key.is_some_and(|key| keys_of(SceneFamily::Ship).any(|k| k.path == key));
+    }
+    column == "title" || tables.iter().any(|t| column.starts_with(t))
+}
+
+/// What each manoeuvre's columns of a sweep's table are named by: its name where no swept
+/// value makes it (a name the scene gives, or one made from keys the sweep leaves alone), else
+/// its position, `manoeuvre[0]`: a name made from a swept angle (`turning_circle_15`,
+/// `turning_circle_25`) would give each case columns of its own, and shards that could not be
+/// merged. The swept keys are every case's, so every case and every shard names them alike.
+fn column_names(case: &TableCase, scene: &ShipScene) -> Vec<String> {
+    let given = |index: usize| {
+        let entry = case.table.get("manoeuvre").and_then(|m| m.get(index));
+        entry.is_some_and(|m| m.get("name").is_some())
+    };
+    (scene.manoeuvres.iter().enumerate())
+        .map(|(index, manoeuvre)| {
+            let swept = |key: &str| {
+                let path = format!("manoeuvre[{index}].{key}");
+                case.values.iter().any(|(k, _)| *k == path)
+            };
+            let named = given(index) && !swept("name");
+            let made_from_swept = swept("name") || NAMED_FROM.iter().any(|key| swept(key));
+            match named || !made_from_swept {
+                true => manoeuvre.name.clone(),
+                false => format!("manoeuvre[{index}]"),
+            }
+        })
+        .collect()
 }
 
 /// `rudder_sweep.svg` in `dir`, from a ship sweep's table (`sweep.csv`'s text), when the sweep
@@ -312,14 +349,14 @@ pub fn run_sweep(
 /// The columns of a ship sweep's table after the case and its values, from the first case
 /// that ran (every case has the same manoeuvres and criteria).
 fn sweep_columns(cases: &[(TableCase, ShipScene)], runs: &[Result<ShipRun>]) -> Vec<String> {
-    let Some(((_, scene), run)) = cases
+    let Some(((case, scene), run)) = cases
         .iter()
         .zip(runs)
         .find_map(|(case, run)| run.as_ref().ok().map(|run| (case, run)))
     else {
         return Vec::new();
     };
-    sweep_cells(scene, run)
+    sweep_cells((case, scene), run)
         .into_iter()
         .map(|(k, _)| k)
         .collect()
@@ -327,40 +364,49 @@ fn sweep_columns(cases: &[(TableCase, ShipScene)], runs: &[Result<ShipRun>]) -> 
 
 /// Each column of a ship sweep's table with its value in `run`, in the table's order: each
 /// manoeuvre's figures (the worse side's, for one run to both), then each side's
-/// (`turn.port.tactical_diameter_m`), then each IMO criterion's value, verdict and sides.
-fn sweep_cells(scene: &ShipScene, run: &ShipRun) -> Vec<(String, String)> {
+/// (`turn.port.tactical_diameter_m`), then each IMO criterion's value, verdict and sides; a
+/// manoeuvre's columns are named as [`column_names`] says.
+fn sweep_cells((case, scene): (&TableCase, &ShipScene), run: &ShipRun) -> Vec<(String, String)> {
     let text = |value: Option<f64>| value.map_or_else(String::new, |v| v.to_string());
     let mut cells = Vec::new();
-    for (manoeuvre, runs) in scene.manoeuvres.iter().zip(&run.outcomes) {
+    let names = column_names(case, scene);
+    for ((manoeuvre, runs), name) in scene.manoeuvres.iter().zip(&run.outcomes).zip(&names) {
         if let Some(outcome) = shown(manoeuvre, runs) {
             for (key, value) in &outcome.figures.values {
-                cells.push((format!("{}.{key}", manoeuvre.name), text(*value)));
+                cells.push((format!("{name}.{key}"), text(*value)));
             }
         }
         for (side, outcome) in runs.iter().filter(|_| runs.len() > 1) {
             let side = side.map_or("", Side::name);
             for (key, value) in &outcome.figures.values {
-                cells.push((format!("{}.{side}.{key}", manoeuvre.name), text(*value)));
+                cells.push((format!("{name}.{side}.{key}"), text(*value)));
             }
         }
     }
-    for criterion in &run.judged {
-        let pass = criterion.pass().map_or_else(String::new, |p| p.to_string());
-        cells.push((format!("imo.{}", criterion.name), text(criterion.value)));
-        cells.push((format!("imo.{}.pass", criterion.name), pass));
-        for (side, value) in &criterion.sides {
-            cells.push((
-                format!("imo.{}.{}", criterion.name, side.name()),
-                text(*value),
-            ));
+    // Every criterion the scene's kinds may give, judged in this case or not, so that the
+    // columns do not depend on a swept angle (a turn at 20° is not judged; at 35° it is).
+    for (name, sided) in possible(scene) {
+        let criterion = run.judged.iter().find(|c| c.name == name);
+        let value = criterion.and_then(|c| c.value);
+        let pass = criterion.and_then(Criterion::pass);
+        cells.push((format!("imo.{name}"), text(value)));
+        cells.push((
+            format!("imo.{name}.pass"),
+            pass.map_or_else(String::new, |p| p.to_string()),
+        ));
+        for side in Side::BOTH.iter().filter(|_| sided) {
+            let value = (criterion.iter().flat_map(|c| &c.sides))
+                .find(|(s, _)| s == side)
+                .and_then(|(_, v)| *v);
+            cells.push((format!("imo.{name}.{}", side.name()), text(value)));
         }
     }
     cells
 }
 
 /// The value of each of `columns` in `run`, empty where it gave none.
-fn sweep_values(scene: &ShipScene, run: &ShipRun, columns: &[String]) -> Vec<String> {
-    let mut values: BTreeMap<String, String> = sweep_cells(scene, run).into_iter().collect();
+fn sweep_values(case: (&TableCase, &ShipScene), run: &ShipRun, columns: &[String]) -> Vec<String> {
+    let mut values: BTreeMap<String, String> = sweep_cells(case, run).into_iter().collect();
     columns
         .iter()
         .map(|column| values.remove(column).unwrap_or_default())
@@ -384,7 +430,7 @@ fn sweep_table(cases: &[(TableCase, ShipScene)], runs: &[Result<ShipRun>]) -> St
         row.extend(case.values.iter().map(|(_, v)| v.to_string()));
         match run {
             Ok(run) => {
-                row.extend(sweep_values(scene, run, &columns));
+                row.extend(sweep_values((case, scene), run, &columns));
                 row.push(String::new());
             }
             Err(error) => {
