@@ -608,3 +608,44 @@ fn a_sweep_over_an_unnamed_turns_rudder_keeps_every_cases_figures() {
     let merged = std::fs::read_to_string(sharded.join("sweep.csv")).unwrap();
     assert_eq!(merged, table);
 }
+
+/// `eom new ship` runs as printed and gives figures: its turning circle is long enough for its
+/// 325 m tanker to pass 180° and settle, so every turning figure is there and the IMO turning
+/// criteria are judged, each naming the turn.
+#[test]
+fn the_ship_template_runs_as_printed_and_gives_its_figures() {
+    let dir = folder("ship_template");
+    let template = succeeded(&eom(&["new", "ship"]));
+    let path = dir.join("ship.toml");
+    std::fs::write(&path, template).unwrap();
+    let out = dir.join("out");
+    let stdout = succeeded(&eom(&[
+        "run",
+        path.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]));
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let (name, turn) = (summary["manoeuvre"].as_object().unwrap().iter())
+        .find(|(_, m)| m["kind"] == "turning_circle")
+        .unwrap();
+    for key in [
+        "advance_90_m",
+        "transfer_90_m",
+        "tactical_diameter_m",
+        "steady_turning_radius_m",
+        "steady_speed_m_s",
+        "t_90_s",
+        "t_180_s",
+    ] {
+        assert!(turn[key].as_f64().is_some_and(|v| v > 0.0), "{key}: {turn}");
+    }
+    for criterion in ["advance", "tactical_diameter"] {
+        let line = (stdout.lines())
+            .find(|l| l.trim_start().starts_with(&format!("{criterion} ")))
+            .unwrap_or_else(|| panic!("{criterion}: {stdout}"));
+        assert!(line.contains("pass") || line.contains("FAIL"), "{line}");
+        assert!(line.contains(&format!("on {name}")), "{line}");
+    }
+}

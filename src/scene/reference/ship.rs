@@ -485,8 +485,10 @@ pub(super) static KEYS: &[Key] = &[
         required: Required::When("except for spiral and reverse_spiral"),
         default: "a spiral's: the longest it may take, every setpoint held max_hold_s",
         description: "The end of the run, after the execute. A spiral ends once every \
-                      setpoint is measured.",
-        example: "60.0",
+                      setpoint is measured. A turn's steady radius and speed are read once the \
+                      heading has turned 540° and U and r have settled: for a 325 m tanker at \
+                      8 knots, after some two hours (the template's 8000 s).",
+        example: "8000.0",
         ..Key::BLANK
     },
     Key {
