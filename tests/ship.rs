@@ -1644,3 +1644,30 @@ fn the_turning_criteria_rest_on_the_turn_at_35_degrees_or_the_gears_limit() {
         assert!(!criterion.manoeuvre.is_empty(), "{criterion:?}");
     }
 }
+
+/// A zig-zag cut short after its first reversal says so in words ("1 reversal", not "1
+/// reversals"), and the angles a scene wrote come back in the summary as written (7.5°, not
+/// 7.499999999999999°).
+#[test]
+fn short_zigzag_notes_and_angles_read_as_written() {
+    let text = std::fs::read_to_string("scenes/mariner.toml").unwrap();
+    let approach = &text[..text.find("[[manoeuvre]]").unwrap()];
+    let text = format!(
+        "{approach}[[manoeuvre]]\nname = \"zigzag\"\nkind = \"zigzag\"\nrudder_deg = 7.5\n\
+         heading_deg = 7.5\nside = \"port\"\nduration_s = 60.0\n"
+    );
+    let scene = ShipScene::parse(&text, "short").unwrap();
+    let figures = spiral_of(&scene, "zigzag");
+    assert!(
+        figures
+            .notes
+            .iter()
+            .any(|n| n.starts_with("1 reversal by the end")),
+        "{:?}",
+        figures.notes
+    );
+    let summary = eom::ship::summary::KindSummary::new(&scene.manoeuvres[0].kind);
+    let json = serde_json::to_value(summary).unwrap();
+    assert_eq!(json["rudder_deg"].as_f64(), Some(7.5), "{json}");
+    assert_eq!(json["heading_deg"].as_f64(), Some(7.5), "{json}");
+}

@@ -324,9 +324,13 @@ impl SpiralSummary {
         SpiralSummary {
             points: (curve.points.iter())
                 .map(|p| SpiralPointSummary {
-                    rudder_deg: p.rudder.to_degrees(),
+                    // A direct spiral's δ is the scene's; a reverse spiral's, a mean.
+                    rudder_deg: match p.branch {
+                        Branch::Reverse => p.rudder.to_degrees(),
+                        _ => as_given(p.rudder),
+                    },
                     yaw_rate_deg_s: p.yaw_rate.to_degrees(),
-                    commanded_yaw_rate_deg_s: p.target.map(f64::to_degrees),
+                    commanded_yaw_rate_deg_s: p.target.map(as_given),
                     branch: p.branch.name(),
                     settled: p.settled,
                     held_s: p.held,
@@ -350,9 +354,9 @@ impl SpiralSummary {
             },
             settle: SettleSummary {
                 window_s: settle.window,
-                tolerance_deg_s: settle.tolerance.to_degrees(),
+                tolerance_deg_s: as_given(settle.tolerance),
                 max_hold_s: settle.max_hold,
-                rudder_tolerance_deg: reverse.then(|| settle.rudder_tolerance.to_degrees()),
+                rudder_tolerance_deg: reverse.then(|| as_given(settle.rudder_tolerance)),
                 speed_tolerance_m_s: settle.speed_tolerance,
                 time_constant_s: settle.time_constant,
                 resolution_deg_s: settle.resolution().to_degrees(),
@@ -492,6 +496,14 @@ impl NomotoSummary {
     }
 }
 
+/// An angle (or a rate) the scene gave in degrees, back from radians as it was written: the
+/// conversion there and back is off by an ulp (7.5° came back as 7.499999999999999°), and
+/// fifteen significant digits, well above that and below anything a scene writes, undo it.
+fn as_given(radians: f64) -> f64 {
+    let degrees = radians.to_degrees();
+    format!("{degrees:.14e}").parse().unwrap_or(degrees)
+}
+
 /// The largest relative difference between two Nomoto models' K, T₁, T₂, T₃.
 pub fn nomoto_difference(a: Option<Nomoto>, b: Option<Nomoto>) -> Option<f64> {
     let (a, b) = (a?, b?);
@@ -531,22 +543,22 @@ impl KindSummary {
     pub fn new(kind: &ManoeuvreKind) -> Self {
         match *kind {
             ManoeuvreKind::TurningCircle { rudder } => KindSummary::TurningCircle {
-                rudder_deg: rudder.to_degrees(),
+                rudder_deg: as_given(rudder),
             },
             ManoeuvreKind::ZigZag { rudder, heading } => KindSummary::Zigzag {
-                rudder_deg: rudder.to_degrees(),
-                heading_deg: heading.to_degrees(),
+                rudder_deg: as_given(rudder),
+                heading_deg: as_given(heading),
             },
             ManoeuvreKind::PullOut { rudder, release } => KindSummary::PullOut {
-                rudder_deg: rudder.to_degrees(),
+                rudder_deg: as_given(rudder),
                 release_s: release,
             },
             ManoeuvreKind::Series(_) => KindSummary::RudderSeries,
             ManoeuvreKind::Spiral(ref spiral) => KindSummary::Spiral {
-                rudders_deg: spiral.rudders.iter().map(|d| d.to_degrees()).collect(),
+                rudders_deg: spiral.rudders.iter().map(|d| as_given(*d)).collect(),
             },
             ManoeuvreKind::ReverseSpiral(ref reverse) => KindSummary::ReverseSpiral {
-                yaw_rates_deg_s: reverse.yaw_rates.iter().map(|r| r.to_degrees()).collect(),
+                yaw_rates_deg_s: reverse.yaw_rates.iter().map(|r| as_given(*r)).collect(),
                 controller_gain_s: reverse.gain,
             },
             ManoeuvreKind::CrashStop { astern } => KindSummary::CrashStop { astern_rps: astern },
@@ -620,5 +632,20 @@ impl CriterionSummary {
             }),
             not_judged_because: criterion.not_judged_because.clone(),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Angles a scene writes come back as written, where the round trip through radians
+    /// alone is off by an ulp.
+    #[test]
+    fn an_angle_comes_back_as_the_scene_wrote_it() {
+        for written in [7.5, -0.75, -1.5, -3.0, 35.0, 0.1, -0.025, 0.0] {
+            assert_eq!(as_given(f64::to_radians(written)), written);
+        }
+        assert_ne!(7.5f64.to_radians().to_degrees(), 7.5);
     }
 }

@@ -217,8 +217,11 @@ pub fn execute(scene: &ShipScene, name: &str, out: &Path) -> Result<()> {
         Some(signal) => Err(Interrupted {
             signal,
             kept: format!(
-                "the {} manoeuvres finished before it, and summary.json, in {}",
-                run.outcomes.len(),
+                "{} finished before it, and summary.json, in {}",
+                match run.outcomes.len() {
+                    1 => "the 1 manoeuvre".to_owned(),
+                    n => format!("the {n} manoeuvres"),
+                },
                 out.display()
             ),
         }
@@ -548,7 +551,7 @@ fn write_plots(
         rudder_deg: &rudder,
         command_deg: &command,
         marks: &marks,
-        // The scene gives no beam: the one view.html assumes.
+        // A ship scene has no key for the beam: the one view.html assumes.
         hull: Hull {
             length: scene.length,
             beam: scene.length / super::view::ASSUMED_LENGTH_OVER_BEAM,
@@ -571,9 +574,10 @@ fn write_plots(
     Ok(())
 }
 
-/// A figure as the report prints it: three decimals, or a dash where the run gave none.
+/// A figure as the report prints it: three decimals (no sign on a zero), or a dash where the
+/// run gave none.
 fn cell(value: Option<f64>) -> String {
-    value.map_or_else(|| "—".to_owned(), |v| format!("{v:.3}"))
+    value.map_or_else(|| "—".to_owned(), |v| fixed(v, 3))
 }
 
 /// A manoeuvre's figures as the report prints them: a column per side for one run to both
@@ -848,11 +852,7 @@ fn print_report(scene: &ShipScene, outcomes: &[Runs], judged: &[Criterion], out:
         for c in judged {
             let sides: Vec<String> = (c.sides.iter())
                 .map(|(side, v)| {
-                    format!(
-                        "{} {}",
-                        side.name(),
-                        v.map_or("—".into(), |v| format!("{v:.2}"))
-                    )
+                    format!("{} {}", side.name(), v.map_or("—".into(), |v| fixed(v, 2)))
                 })
                 .collect();
             let sides = match sides.is_empty() {
@@ -861,8 +861,9 @@ fn print_report(scene: &ShipScene, outcomes: &[Runs], judged: &[Criterion], out:
             };
             match (c.value, c.pass()) {
                 (Some(value), Some(pass)) => println!(
-                    "    {:<24} {value:>10.2} {:<3} ≤ {:>9.2}  {}  on {}{sides}",
+                    "    {:<24} {:>10} {:<3} ≤ {:>9.2}  {}  on {}{sides}",
                     c.name,
+                    fixed(value, 2),
                     c.unit,
                     c.limit,
                     if pass { "pass" } else { "FAIL" },
@@ -938,4 +939,30 @@ pub fn linear(args: &super::linear::Args, scene: &ShipScene) -> Result<()> {
         pivot / scene.length
     );
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_zero_is_printed_without_a_sign() {
+        assert_eq!(fixed(-0.00001, 4), "0.0000");
+        assert_eq!(fixed(-0.0, 3), "0.000");
+        assert_eq!(fixed(-0.0001, 4), "-0.0001");
+        assert_eq!(fixed(12.3456, 2), "12.35");
+        assert_eq!(cell(Some(-0.0002)), "0.000");
+    }
+
+    /// A sweep's key columns are the scene's keys; a manoeuvre's figure named by its
+    /// position is not one.
+    #[test]
+    fn a_figure_named_by_position_is_not_a_swept_key() {
+        assert!(is_key_path("manoeuvre[0].rudder_deg"));
+        assert!(is_key_path("manoeuvre[12].heading_deg"));
+        assert!(is_key_path("hydrodynamics.coefficients.Yv"));
+        assert!(!is_key_path("manoeuvre[0].tactical_diameter_m"));
+        assert!(!is_key_path("manoeuvre[0].port.advance_90_m"));
+        assert!(!is_key_path("imo.advance"));
+    }
 }
