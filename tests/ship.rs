@@ -1036,10 +1036,12 @@ fn the_spirals_find_the_esso_osakas_loop_and_none_on_the_mariner() {
 }
 
 /// No figure rests on a spiral point that did not settle. The Esso Osaka's direct spiral does
-/// not settle at three angles in 4000 s, each next to a fold of the steady-turn curve, where
-/// the ship leaves a vanished turn slowly (its first pass at −1.25° was still at −0.128°/s
-/// on its way to +0.16°/s): the loop's extent is read from the settled angles alone, every
-/// point inside it settled, and the nearest settled angles beyond each end agreeing.
+/// not settle at two angles in 8000 s, each next to a fold of the steady-turn curve, where the
+/// ship leaves a vanished turn slowly (its first pass at −1.25°, 0.08° past the fold at
+/// −1.17°, was still crossing zero on its way to +0.16°/s): the loop's extent is read from
+/// the settled angles alone, every point inside it settled, and the nearest settled angles
+/// beyond each end agreeing. (The loop was read as 1.25° wide from the first pass at −1.25°
+/// while it had not settled.)
 #[test]
 fn no_loop_figure_rests_on_an_unsettled_spiral_point() {
     let direct = spiral_of(&scene("esso_osaka.toml"), "spiral");
