@@ -127,8 +127,7 @@ fn case(
     let trials: Vec<Trial> = (manoeuvres.iter().zip(&runs))
         .map(|(m, sides)| (*m, sides.iter().map(|(s, f)| (*s, f)).collect()))
         .collect();
-    let propulsion = scene.table.propulsion.is_some();
-    let judged = criteria(scene.length, scene.table.design_speed, &trials, propulsion);
+    let judged = criteria(scene, &trials);
     let verdicts = judged
         .iter()
         .map(|c| (c.name.to_string(), c.pass()))

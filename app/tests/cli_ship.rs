@@ -163,7 +163,9 @@ fn the_mariner_runs_its_manoeuvres_and_is_judged() {
 }
 
 /// The Esso Osaka, course-unstable: both spirals find a loop about δ = 0, the summary gives
-/// its width and height, and spiral.svg draws both passes.
+/// its width and height, and spiral.svg draws both passes; beside them, the steady-turn curve
+/// and its two folds, and the report sets the loop from the settled points (its width, its
+/// bounds and the spiral's rudder step) beside the folds.
 #[test]
 fn the_esso_osakas_spirals_show_its_loop() {
     let out = folder("esso_osaka");
@@ -193,6 +195,67 @@ fn the_esso_osakas_spirals_show_its_loop() {
     }
     let svg = std::fs::read_to_string(out.join("spiral/spiral.svg")).unwrap();
     assert!(svg.contains("first pass") && svg.contains("back"));
+    assert!(
+        svg.contains("steady turns"),
+        "the curve is drawn beside the points"
+    );
+    let spiral = &summary["manoeuvre"]["spiral"];
+    let found = &spiral["spiral"]["loop"];
+    let degrees = |v: &serde_json::Value| v.as_f64().unwrap();
+    assert!(
+        (degrees(&found["rudder_step_deg"]) - 0.25).abs() < 1e-12,
+        "{found}"
+    );
+    let steady = &spiral["spiral"]["steady_turns"];
+    let folds = steady["folds"].as_array().unwrap();
+    assert_eq!(folds.len(), 2, "{steady}");
+    let width = degrees(&steady["loop_width_deg"]);
+    assert_eq!(degrees(&spiral["steady_loop_width_deg"]), width);
+    assert!(degrees(&found["least_width_deg"]) <= width);
+    assert!(width <= degrees(&found["most_width_deg"]));
+    for said in [
+        "loop from the settled points",
+        "rudder step 0.250°",
+        "folds at δ = ",
+    ] {
+        assert!(stdout.contains(said), "{said}: {stdout}");
+    }
+}
+
+/// A course-stable ship is not called a loop by a spiral that cannot tell: the S-175 on
+/// Clarke's linear derivatives (C′ > 0 by `eom linear`) at the default settling is
+/// "undetermined", with the settling that would tell, and its steady-turn curve has no fold.
+#[test]
+fn the_s175s_spiral_is_not_called_a_loop() {
+    let linear = succeeded(&eom(&["linear", &scene_arg("s175.toml"), "--json"]));
+    let linear: serde_json::Value = serde_json::from_str(&linear).unwrap();
+    assert_eq!(linear["course_stable"], true, "{linear}");
+    assert!(linear["stability_index"].as_f64().unwrap() > 0.0);
+    let out = folder("s175");
+    let stdout = succeeded(&eom(&[
+        "run",
+        &scene_arg("s175.toml"),
+        "--out",
+        out.to_str().unwrap(),
+    ]));
+    assert!(!stdout.contains("NO (a loop)"), "{stdout}");
+    assert!(stdout.contains("undetermined"), "{stdout}");
+    assert!(
+        stdout.contains("no fold: one steady turn at each δ"),
+        "{stdout}"
+    );
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let spiral = &summary["manoeuvre"]["spiral"];
+    assert!(
+        spiral["spiral"]["course_stable_by_spiral"].is_null(),
+        "{spiral}"
+    );
+    assert_eq!(spiral["spiral"]["verdict"], "undetermined");
+    let why = spiral["spiral"]["undetermined_because"].as_str().unwrap();
+    assert!(why.contains("settle_window_s = "), "{why}");
+    assert!(spiral["loop_width_deg"].is_null());
+    assert_eq!(spiral["steady_loop_width_deg"], 0.0);
 }
 
 /// A workboat on a crude made-up table whose turn drags it to a stop and astern.
@@ -474,4 +537,119 @@ fn a_ship_sweep_over_the_rudder_runs_whole_or_in_shards_alike() {
         plot,
         "the merge draws the same plot"
     );
+}
+
+/// A sweep over the rudder angle of a turning circle the scene does not name (README's and
+/// `eom new ship`'s own example): its default name is made from the swept angle, so its
+/// columns are named by its position, `manoeuvre[0]`, the same in every case. Run whole and
+/// as two shards merged, the tables are equal, and every case has its figures.
+#[test]
+fn a_sweep_over_an_unnamed_turns_rudder_keeps_every_cases_figures() {
+    let dir = folder("sweep_unnamed");
+    let text = std::fs::read_to_string(scene_arg("mariner.toml")).unwrap();
+    let approach = &text[..text.find("[[manoeuvre]]").unwrap()];
+    let text = format!(
+        "{approach}[[manoeuvre]]\nkind = \"turning_circle\"\nrudder_deg = 35.0\n\
+         duration_s = 450.0\n\n[sweep]\n\"manoeuvre[0].rudder_deg\" = [15.0, 25.0, 35.0]\n"
+    );
+    let path = dir.join("sweep.toml");
+    std::fs::write(&path, text).unwrap();
+    let run = |out: &Path, shard: Option<&str>| {
+        let mut args = vec![
+            "run",
+            path.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ];
+        args.extend(shard.map(|s| ["--shard", s]).into_iter().flatten());
+        succeeded(&eom(&args))
+    };
+    let whole = dir.join("whole");
+    run(&whole, None);
+    let table = std::fs::read_to_string(whole.join("sweep.csv")).unwrap();
+    let mut reader = csv::Reader::from_reader(table.as_bytes());
+    let header = reader.headers().unwrap().clone();
+    assert_eq!(header.get(1), Some("manoeuvre[0].rudder_deg"));
+    assert!(
+        !header.iter().any(|c| c.starts_with("turning_circle_")),
+        "{header:?}"
+    );
+    let rows: Vec<csv::StringRecord> = reader.records().map(Result::unwrap).collect();
+    assert_eq!(rows.len(), 3);
+    let column = |key: &str| {
+        (header.iter().position(|c| c == key)).unwrap_or_else(|| panic!("{key}: {header:?}"))
+    };
+    for key in [
+        "manoeuvre[0].advance_90_m",
+        "manoeuvre[0].tactical_diameter_m",
+        "manoeuvre[0].port.tactical_diameter_m",
+        "manoeuvre[0].starboard.tactical_diameter_m",
+    ] {
+        for row in &rows {
+            let value: f64 =
+                (row[column(key)].parse()).unwrap_or_else(|_| panic!("{key}: {row:?}"));
+            assert!(value > 0.0, "{key}: {row:?}");
+        }
+    }
+    // The turning criteria rest on the 35° turn alone: judged in that case, with each side's
+    // figure, and not in the others, whose columns are there, empty.
+    for (row, judged) in rows.iter().zip([false, false, true]) {
+        for key in [
+            "imo.advance",
+            "imo.advance.pass",
+            "imo.tactical_diameter.port",
+        ] {
+            assert_eq!(!row[column(key)].is_empty(), judged, "{key}: {row:?}");
+        }
+    }
+    // The plot over the rudder angle finds the one swept key and the turn's columns.
+    let plot = std::fs::read_to_string(whole.join("rudder_sweep.svg")).unwrap();
+    assert!(plot.contains("manoeuvre[0] tactical diameter") || plot.contains("tactical diameter"));
+    let sharded = dir.join("sharded");
+    run(&sharded, Some("0/2"));
+    run(&sharded, Some("1/2"));
+    succeeded(&eom(&["sweep-merge", sharded.to_str().unwrap()]));
+    let merged = std::fs::read_to_string(sharded.join("sweep.csv")).unwrap();
+    assert_eq!(merged, table);
+}
+
+/// `eom new ship` runs as printed and gives figures: its turning circle is long enough for its
+/// 325 m tanker to pass 180° and settle, so every turning figure is there and the IMO turning
+/// criteria are judged, each naming the turn.
+#[test]
+fn the_ship_template_runs_as_printed_and_gives_its_figures() {
+    let dir = folder("ship_template");
+    let template = succeeded(&eom(&["new", "ship"]));
+    let path = dir.join("ship.toml");
+    std::fs::write(&path, template).unwrap();
+    let out = dir.join("out");
+    let stdout = succeeded(&eom(&[
+        "run",
+        path.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]));
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let (name, turn) = (summary["manoeuvre"].as_object().unwrap().iter())
+        .find(|(_, m)| m["kind"] == "turning_circle")
+        .unwrap();
+    for key in [
+        "advance_90_m",
+        "transfer_90_m",
+        "tactical_diameter_m",
+        "steady_turning_radius_m",
+        "steady_speed_m_s",
+        "t_90_s",
+        "t_180_s",
+    ] {
+        assert!(turn[key].as_f64().is_some_and(|v| v > 0.0), "{key}: {turn}");
+    }
+    for criterion in ["advance", "tactical_diameter"] {
+        let line = (stdout.lines())
+            .find(|l| l.trim_start().starts_with(&format!("{criterion} ")))
+            .unwrap_or_else(|| panic!("{criterion}: {stdout}"));
+        assert!(line.contains("pass") || line.contains("FAIL"), "{line}");
+        assert!(line.contains(&format!("on {name}")), "{line}");
+    }
 }

@@ -3,7 +3,7 @@
 //!
 //! | criterion | manoeuvre | limit |
 //! |---|---|---|
-//! | advance | turning circle, the largest rudder of the scene's (35° in the standard) | ≤ 4.5 L |
+//! | advance | turning circle at 35°, or at the steering gear's limit where it is smaller | ≤ 4.5 L |
 //! | tactical diameter | the same turning circle | ≤ 5 L |
 //! | initial turning | 10°/10° zig-zag: distance run when the heading has changed by 10° | ≤ 2.5 L |
 //! | first overshoot, 10°/10° | 10°/10° zig-zag | 10° if L/V < 10 s; 20° if L/V ≥ 30 s; (5 + ½ L/V)° between |
@@ -11,7 +11,10 @@
 //! | first overshoot, 20°/20° | 20°/20° zig-zag | ≤ 25° |
 //! | track reach | crash stop: full astern from the test speed | ≤ 15 L |
 //!
-//! V is the test speed, the scene's design speed U₀. A manoeuvre run to both sides (the
+//! V is the test speed, the scene's design speed U₀. The turning criteria are judged on the
+//! turning circle at the standard's angle, 35° or the steering gear's limit (`rudder.max_deg`)
+//! where it is smaller, and on no other: a scene whose turning circles are all at other angles
+//! has them listed as not judged, saying which angle they need. A manoeuvre run to both sides (the
 //! default for a turning circle and a zig-zag: the resolution asks for the turning circle "to
 //! port and starboard") is judged on each, and its verdict is the worse: the value judged is
 //! the larger of the two, or the one that fails where the other side gave no figure; a side
@@ -22,6 +25,8 @@
 //! where the scene has no propulsion model to go astern with, or runs no crash stop.
 
 use super::manoeuvre::{Figures, Manoeuvre, ManoeuvreKind};
+use super::rudder::Rudder;
+use super::scene::ShipScene;
 use super::side::Side;
 
 /// A manoeuvre as it ran: the manoeuvre, and the figures of each of its runs, by side (one run
@@ -49,7 +54,7 @@ pub struct Criterion {
     /// The side `value` is of, for a manoeuvre run to both or to one.
     pub side: Option<Side>,
     /// Why it is not judged, where that is not a missing figure of a manoeuvre that ran.
-    pub not_judged_because: Option<&'static str>,
+    pub not_judged_because: Option<String>,
 }
 
 impl Criterion {
@@ -107,12 +112,81 @@ fn judged_value(values: &[(Option<Side>, Option<f64>)], limit: f64) -> (Option<f
     }
 }
 
-/// The criteria the runs allow judging, for a ship of length `length` (m) at `speed` (m/s),
-/// with a propulsion model or without (`propulsion`).
-pub fn criteria(length: f64, speed: f64, runs: &[Trial], propulsion: bool) -> Vec<Criterion> {
+/// The rudder angle the turning criteria are judged at, rad: 35°, or the steering gear's
+/// limit where it is smaller.
+pub fn turning_angle(rudder: &Rudder) -> f64 {
+    let standard = 35f64.to_radians();
+    rudder.max_angle.map_or(standard, |max| max.min(standard))
+}
+
+/// Whether `kind` is a turning circle at `angle` (rad) to either side, to 1e-9 of a degree.
+fn is_turn_at(kind: &ManoeuvreKind, angle: f64) -> bool {
+    matches!(kind, ManoeuvreKind::TurningCircle { rudder }
+        if (rudder.abs().to_degrees() - angle.to_degrees()).abs() < 1e-9)
+}
+
+/// A criterion listed as not judged, with why, resting on `manoeuvre`.
+fn not_judged(
+    name: &'static str,
+    manoeuvre: String,
+    (limit, unit): (f64, &'static str),
+    why: String,
+) -> Criterion {
+    Criterion {
+        name,
+        manoeuvre,
+        value: None,
+        limit,
+        unit,
+        sides: Vec::new(),
+        side: None,
+        not_judged_because: Some(why),
+    }
+}
+
+/// The turning criteria, judged on the turning circle at 35° or the gear's limit.
+pub const TURNING: [&str; 2] = ["advance", "tactical_diameter"];
+/// The zig-zag criteria, judged on the 10°/10° and the 20°/20° zig-zags.
+pub const ZIGZAG: [&str; 4] = [
+    "initial_turning",
+    "first_overshoot_10_10",
+    "second_overshoot_10_10",
+    "first_overshoot_20_20",
+];
+/// The stopping criterion, listed whether or not it can be judged.
+pub const STOPPING: &str = "track_reach";
+
+/// The criteria the kinds of `scene`'s manoeuvres may give, whatever their angles, in the
+/// order [`criteria`] lists them, each with whether a manoeuvre it may rest on runs to both
+/// sides: what a sweep's table has a column for, the same in every case.
+pub fn possible(scene: &ShipScene) -> Vec<(&'static str, bool)> {
+    let of_kind = |turning: bool| {
+        let mut runs = (scene.manoeuvres.iter()).filter(|m| match m.kind {
+            ManoeuvreKind::TurningCircle { .. } => turning,
+            ManoeuvreKind::ZigZag { .. } => !turning,
+            _ => false,
+        });
+        let any = runs.clone().next().is_some();
+        (any, runs.any(|m| m.sides.len() > 1))
+    };
+    let mut names = Vec::new();
+    for (turning, group) in [(true, &TURNING[..]), (false, &ZIGZAG[..])] {
+        if let (true, sided) = of_kind(turning) {
+            names.extend(group.iter().map(|name| (*name, sided)));
+        }
+    }
+    names.push((STOPPING, false));
+    names
+}
+
+/// The criteria the runs of `scene` allow judging: its length, design speed, steering gear
+/// and propulsion model (or none) decide the limits and what can be judged.
+pub fn criteria(scene: &ShipScene, runs: &[Trial]) -> Vec<Criterion> {
+    let (length, speed) = (scene.length, scene.table.design_speed);
+    let propulsion = scene.table.propulsion.is_some();
     let l_over_v = length / speed;
     let mut judged = Vec::new();
-    let mut judge = |name, run: &Trial, key: &str, limit: f64, unit| {
+    let judge = |name, run: &Trial, key: &str, limit: f64, unit| {
         let values: Vec<(Option<Side>, Option<f64>)> =
             run.1.iter().map(|(side, f)| (*side, f.get(key))).collect();
         let (value, side) = judged_value(&values, limit);
@@ -123,7 +197,7 @@ pub fn criteria(length: f64, speed: f64, runs: &[Trial], propulsion: bool) -> Ve
                 .collect(),
             _ => Vec::new(),
         };
-        judged.push(Criterion {
+        Criterion {
             name,
             manoeuvre: run.0.name.clone(),
             value,
@@ -132,58 +206,64 @@ pub fn criteria(length: f64, speed: f64, runs: &[Trial], propulsion: bool) -> Ve
             sides,
             side,
             not_judged_because: None,
-        });
+        }
     };
-    let turn = runs
-        .iter()
-        .filter_map(|run| match run.0.kind {
-            ManoeuvreKind::TurningCircle { rudder } => Some((rudder.abs(), run)),
-            _ => None,
-        })
-        .max_by(|a, b| a.0.total_cmp(&b.0));
-    if let Some((_, run)) = turn {
-        judge("advance", run, "advance_90_m", 4.5 * length, "m");
-        judge(
-            "tactical_diameter",
-            run,
-            "tactical_diameter_m",
-            5.0 * length,
-            "m",
-        );
+    let angle = turning_angle(&scene.rudder);
+    let turns: Vec<&Trial> = (runs.iter())
+        .filter(|run| matches!(run.0.kind, ManoeuvreKind::TurningCircle { .. }))
+        .collect();
+    let turning = [
+        ("advance", "advance_90_m", 4.5 * length),
+        ("tactical_diameter", "tactical_diameter_m", 5.0 * length),
+    ];
+    match turns.iter().find(|run| is_turn_at(&run.0.kind, angle)) {
+        Some(run) => {
+            for (name, key, limit) in turning {
+                judged.push(judge(name, run, key, limit, "m"));
+            }
+        }
+        None if !turns.is_empty() => {
+            let why = wrong_turns(&turns, angle, scene.rudder.max_angle);
+            let wanted = format!("turning_circle_{}", crate::Short(angle.to_degrees()));
+            for (name, _, limit) in turning {
+                judged.push(not_judged(name, wanted.clone(), (limit, "m"), why.clone()));
+            }
+        }
+        None => {}
     }
     if let Some(run) = runs.iter().find(|run| is_zigzag(&run.0.kind, 10.0)) {
-        judge(
+        judged.push(judge(
             "initial_turning",
             run,
             "initial_turning_distance_m",
             2.5 * length,
             "m",
-        );
+        ));
         let first = first_overshoot_limit(l_over_v);
-        judge(
+        judged.push(judge(
             "first_overshoot_10_10",
             run,
             "first_overshoot_deg",
             first,
             "deg",
-        );
+        ));
         let second = second_overshoot_limit(l_over_v);
-        judge(
+        judged.push(judge(
             "second_overshoot_10_10",
             run,
             "second_overshoot_deg",
             second,
             "deg",
-        );
+        ));
     }
     if let Some(run) = runs.iter().find(|run| is_zigzag(&run.0.kind, 20.0)) {
-        judge(
+        judged.push(judge(
             "first_overshoot_20_20",
             run,
             "first_overshoot_deg",
             25.0,
             "deg",
-        );
+        ));
     }
     // The stopping ability: the track reach of a full astern stop from the test speed. A ship
     // table without a propulsion model cannot go astern, so the criterion is listed as not
@@ -192,23 +272,53 @@ pub fn criteria(length: f64, speed: f64, runs: &[Trial], propulsion: bool) -> Ve
         .iter()
         .find(|run| matches!(run.0.kind, ManoeuvreKind::CrashStop { .. }));
     match crash_stop {
-        Some(run) if propulsion => judge("track_reach", run, "track_reach_m", 15.0 * length, "m"),
-        _ => judged.push(Criterion {
-            name: "track_reach",
-            manoeuvre: "crash_stop".to_owned(),
-            value: None,
-            limit: 15.0 * length,
-            unit: "m",
-            sides: Vec::new(),
-            side: None,
-            not_judged_because: Some(if propulsion {
+        Some(run) if propulsion => {
+            judged.push(judge(
+                "track_reach",
+                run,
+                "track_reach_m",
+                15.0 * length,
+                "m",
+            ));
+        }
+        _ => judged.push(not_judged(
+            "track_reach",
+            "crash_stop".to_owned(),
+            (15.0 * length, "m"),
+            (if propulsion {
                 NO_CRASH_STOP
             } else {
                 NO_PROPULSION
-            }),
-        }),
+            })
+            .to_owned(),
+        )),
     }
     judged
+}
+
+/// Why the turning criteria are not judged on a scene whose turning circles are all at
+/// other angles than `angle` (rad): which angle they need, and the angles the scene ran.
+fn wrong_turns(turns: &[&Trial], angle: f64, gear: Option<f64>) -> String {
+    let ran: Vec<String> = (turns.iter())
+        .filter_map(|run| match run.0.kind {
+            ManoeuvreKind::TurningCircle { rudder } => Some(format!(
+                "{} at {}°",
+                run.0.name,
+                crate::Short(rudder.abs().to_degrees())
+            )),
+            _ => None,
+        })
+        .collect();
+    let standard = match gear {
+        Some(max) if max < 35f64.to_radians() => "the steering gear's limit, rudder.max_deg",
+        _ => "the standard's angle",
+    };
+    format!(
+        "the turning criteria rest on a turning circle at {}° ({standard}), and the scene \
+         runs only {}",
+        crate::Short(angle.to_degrees()),
+        ran.join(", ")
+    )
 }
 
 /// Why the stopping criterion is not judged, without a propulsion model.

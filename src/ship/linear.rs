@@ -219,6 +219,24 @@ impl LinearModel {
         Nomoto::from_sums(sum, det_m / det_n, k, k_t3)
     }
 
+    /// The slowest time constant of the sway–yaw modes, s: 1/min |Re λ| over the eigenvalues
+    /// λ of A (|T₁| of Nomoto's model where T₁ and T₂ are real; the decay of the pair's
+    /// envelope where they are not); infinite for a mode that neither grows nor decays.
+    pub fn slowest_time_constant(&self) -> f64 {
+        let (a, _) = self.state_space();
+        let trace = a[0][0] + a[1][1];
+        let det = a[0][0] * a[1][1] - a[0][1] * a[1][0];
+        let discriminant = 0.25 * trace * trace - det;
+        let slowest = if discriminant < 0.0 {
+            (0.5 * trace).abs()
+        } else {
+            // The root of larger magnitude without cancellation, the other from the product.
+            let large = 0.5 * trace + trace.signum() * discriminant.sqrt();
+            (det / large).abs().min(large.abs())
+        };
+        1.0 / slowest
+    }
+
     /// The pivot point x_p = −v/r of the steady turn, m ahead of midship.
     pub fn pivot_point(&self) -> f64 {
         let (n, b) = (self.damping, self.rudder);

@@ -28,7 +28,8 @@ use super::model::ShipModel;
 use super::propulsion::RateCommand;
 use super::rudder::{Rudder, Series};
 use super::side::Side;
-use super::spiral::{Progress, ReverseSpiral, Spiral, SpiralCurve};
+use super::spiral::{self, Progress, ReverseSpiral, Spiral, SpiralCurve};
+use super::steady::steady_turns;
 use crate::integrate::segment::{self, Hooks, add};
 use crate::integrate::{IntegrateError, OdeSystem, Reached, RowClock, Stats, Stepper};
 use crate::models::{Driven, Loads, Model};
@@ -428,7 +429,7 @@ pub fn run(
             break;
         }
     }
-    let figures = driver.figures(&y);
+    let figures = driver.figures((t, &y));
     Ok(ManoeuvreRun {
         figures,
         steps: total.steps as u64,
@@ -691,7 +692,7 @@ impl<'a> Driver<'a> {
         {
             self.set_command(angle, y);
         }
-        progress.start(t, y[2], y[6]);
+        progress.start(spiral_sample(t, y));
         self.spiral = Some(progress);
     }
 
@@ -705,7 +706,7 @@ impl<'a> Driver<'a> {
     /// Adds the instant to the course, from the execute on.
     fn record(&mut self, t: f64, y: &DriveState) {
         if let Some(progress) = &mut self.spiral {
-            progress.record(t, y[2], y[6]);
+            progress.record(spiral_sample(t, y));
         }
         let heading0 = self.heading0();
         if let Some(course) = &mut self.log.course {
@@ -765,7 +766,7 @@ impl<'a> Driver<'a> {
         }
     }
 
-    fn figures(&self, end: &DriveState) -> Figures {
+    fn figures(&self, (t, end): (f64, &DriveState)) -> Figures {
         let Some(execute) = self.log.execute else {
             return Figures {
                 notes: vec!["the run ended before the execute".into()],
@@ -779,13 +780,13 @@ impl<'a> Driver<'a> {
                 self.zigzag_figures(&execute, heading, &course)
             }
             ManoeuvreKind::PullOut { release, .. } => {
-                pull_out_figures(self.log.release.as_ref(), end, release)
+                let at_release = self.log.release.as_ref().map(|y| (release, y));
+                pull_out_figures(release, at_release, (t, end), &course)
             }
             ManoeuvreKind::Series(_) => Figures::default(),
-            ManoeuvreKind::Spiral(Spiral { settle, .. })
-            | ManoeuvreKind::ReverseSpiral(ReverseSpiral { settle, .. }) => {
-                let points = self.spiral.as_ref().map(|p| p.points.clone());
-                super::spiral::figures(points.unwrap_or_default(), settle, self.spiral_done())
+            ManoeuvreKind::Spiral(Spiral { settle, length, .. })
+            | ManoeuvreKind::ReverseSpiral(ReverseSpiral { settle, length, .. }) => {
+                spiral::figures(self.spiral_curve(&execute, (settle, length), &course))
             }
             // Read where the ship stops, which is what the course's conditions rule out
             // elsewhere.
@@ -793,6 +794,50 @@ impl<'a> Driver<'a> {
         };
         figures.notes.extend(course.notes());
         figures
+    }
+
+    /// A spiral's curve: its points up to the instant the ship went astern or stopped (none
+    /// after), whether they cover every setpoint, and the steady turns over their range of δ,
+    /// traced from the approach's speed.
+    fn spiral_curve(
+        &self,
+        execute: &DriveState,
+        (settle, length): (spiral::Settle, f64),
+        course: &Course,
+    ) -> SpiralCurve {
+        let mut points = self
+            .spiral
+            .as_ref()
+            .map_or_else(Vec::new, |p| p.points.clone());
+        let measured = points.len();
+        points.retain(|p| course.broken_by(p.at).is_none());
+        let incomplete = match (points.len() < measured, self.spiral_done()) {
+            (true, _) => course
+                .broken_by(f64::INFINITY)
+                .map(|why| format!("{why}: no point taken from then on is given")),
+            (false, true) => None,
+            (false, false) => Some(
+                "the run ended before every setpoint was measured: lengthen duration_s or \
+                 max_hold_s"
+                    .to_owned(),
+            ),
+        };
+        let mut curve = SpiralCurve {
+            points,
+            settle,
+            incomplete,
+            steady: Err("the spiral measured no point".to_owned()),
+        };
+        // A direct spiral's angles are its own; a reverse spiral's are those it measured.
+        let range = match &self.manoeuvre.kind {
+            ManoeuvreKind::Spiral(spiral) => Some(spiral::range(&spiral.rudders)),
+            _ => (!curve.points.is_empty()).then(|| curve.rudder_range()),
+        };
+        if let Some(range) = range {
+            let speed = execute[0].hypot(execute[1]);
+            curve.steady = steady_turns(self.model, (speed, length), range);
+        }
+        curve
     }
 
     /// The crash stop's figures at the instant the ship stops (u = 0), from the execute:
@@ -950,9 +995,12 @@ impl<'a> Driver<'a> {
         let t_exec = self.manoeuvre.execute;
         let mut notes = Vec::new();
         if switches.len() < 3 {
+            let reversals = match switches.len() {
+                1 => "1 reversal".to_owned(),
+                n => format!("{n} reversals"),
+            };
             notes.push(format!(
-                "{} reversals by the end: the period needs three; lengthen duration_s",
-                switches.len()
+                "{reversals} by the end: the period needs three; lengthen duration_s"
             ));
         }
         Figures {
@@ -974,21 +1022,45 @@ impl<'a> Driver<'a> {
     }
 }
 
-/// A pull-out: the yaw rate when the rudder is released and at the end; a course-stable ship's
-/// dies out, an unstable one's settles to a residual turn.
-fn pull_out_figures(at_release: Option<&DriveState>, end: &DriveState, release: f64) -> Figures {
+/// A pull-out released at `release` (s): the yaw rate when the rudder is released,
+/// `at_release` (t, state), and at the end (t, state); a course-stable ship's dies out, an
+/// unstable one's settles to a residual turn. Neither is read after the ship went astern or
+/// stopped ([`Course::broken_by`]).
+fn pull_out_figures(
+    release: f64,
+    at_release: Option<(f64, &DriveState)>,
+    (end, last): (f64, &DriveState),
+    course: &Course,
+) -> Figures {
+    let mut notes = Vec::new();
+    let mut read = |(t, y): (f64, &DriveState), what: &str| match course.broken_by(t) {
+        Some(why) => {
+            notes.push(format!("{what} not given: {why}"));
+            None
+        }
+        None => Some(y[2].to_degrees()),
+    };
+    let at_release = at_release.and_then(|at| read(at, "the yaw rate at the release"));
+    let at_end = read((end, last), "the final yaw rate");
     Figures {
         values: vec![
             ("release_s", Some(release)),
-            (
-                "yaw_rate_at_release_deg_s",
-                at_release.map(|y| y[2].to_degrees()),
-            ),
-            ("final_yaw_rate_deg_s", Some(end[2].to_degrees())),
+            ("yaw_rate_at_release_deg_s", at_release),
+            ("final_yaw_rate_deg_s", at_end),
         ],
         side: None,
-        notes: vec![],
+        notes,
         marks: vec![],
         spiral: None,
+    }
+}
+
+/// The instant a spiral's window records: t, r, δ and the speed u.
+fn spiral_sample(t: f64, y: &DriveState) -> spiral::Sample {
+    spiral::Sample {
+        t,
+        r: y[2],
+        delta: y[6],
+        u: y[0],
     }
 }

@@ -14,6 +14,7 @@
 //! | the manoeuvres as schedules and events over the one driver (any method), their figures | [`manoeuvre`] |
 //! | the two sides of a turn or zig-zag, and which is the worse | [`side`] |
 //! | the spiral tests (direct and reverse), the r–δ curve and its loop | [`spiral`] |
+//! | the steady turns at fixed rudder by continuation, and the folds that end the loop | [`steady`] |
 //! | what a run reports, as data (`summary.json`'s types) | [`summary`] |
 //! | what the figures assume (ahead, not stopped, one way, settled), checked on the run | [`course`] |
 //! | the IMO MSC.137(76) criteria | [`imo`] |
@@ -39,6 +40,7 @@ pub mod rudder;
 pub mod scene;
 pub mod side;
 pub mod spiral;
+pub mod steady;
 pub mod summary;
 pub mod table;
 

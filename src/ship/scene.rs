@@ -69,6 +69,7 @@
 //! # settle_tolerance_deg_s = 0.001
 //! # max_hold_s = 2000.0        # the longest an angle is held
 //! # settle_rudder_deg = 0.01   # reverse_spiral: the mean rudder settled, window to window
+//! # settle_speed_m_s = 0.001   # the speed settled: within it over the window
 //! # controller_time_s = 20.0   # reverse_spiral: the controller's closed-loop τ
 //! ```
 //!
@@ -281,9 +282,15 @@ pub struct ManoeuvreTable {
     /// The reverse spiral's settling tolerance on the mean rudder from window to window,
     /// degrees.
     pub settle_rudder_deg: Option<f64>,
+    /// A spiral's settling tolerance on the speed over the window, m/s.
+    pub settle_speed_m_s: Option<f64>,
     /// A crash stop's full-astern propeller rate, rev/s (negative).
     pub astern_rps: Option<f64>,
 }
+
+/// The keys of `[[manoeuvre]]` a manoeuvre's name is made from where the scene gives none
+/// (`turning_circle_35`, `zigzag_10_10`).
+pub const NAMED_FROM: [&str; 3] = ["kind", "rudder_deg", "heading_deg"];
 
 /// A spiral's settling window by default, s.
 pub const SETTLE_WINDOW_S: f64 = 100.0;
@@ -293,11 +300,13 @@ pub const SETTLE_TOLERANCE_DEG_S: f64 = 0.001;
 pub const MAX_HOLD_S: f64 = 2000.0;
 /// The reverse spiral's settling tolerance on the mean rudder by default, degrees.
 pub const SETTLE_RUDDER_DEG: f64 = 0.01;
+/// A spiral's settling tolerance on the speed by default, m/s.
+pub const SETTLE_SPEED_M_S: f64 = 0.001;
 /// The reverse spiral's closed-loop yaw time constant by default, s.
 pub const CONTROLLER_TIME_S: f64 = 20.0;
 
 /// The keys of `[[manoeuvre]]` that only some kinds read, with whether the table gives each.
-fn kind_keys(table: &ManoeuvreTable) -> [(&'static str, bool); 18] {
+fn kind_keys(table: &ManoeuvreTable) -> [(&'static str, bool); 19] {
     [
         ("rudder_deg", table.rudder_deg.is_some()),
         ("heading_deg", table.heading_deg.is_some()),
@@ -318,6 +327,7 @@ fn kind_keys(table: &ManoeuvreTable) -> [(&'static str, bool); 18] {
         ("max_hold_s", table.max_hold_s.is_some()),
         ("controller_time_s", table.controller_time_s.is_some()),
         ("settle_rudder_deg", table.settle_rudder_deg.is_some()),
+        ("settle_speed_m_s", table.settle_speed_m_s.is_some()),
         ("astern_rps", table.astern_rps.is_some()),
         ("duration_s", table.duration_s.is_some()),
     ]
@@ -339,6 +349,7 @@ fn keys_of(kind: &str) -> &'static [&'static str] {
             SETTLE[0],
             SETTLE[1],
             SETTLE[2],
+            "settle_speed_m_s",
             "duration_s",
         ],
         "reverse_spiral" => &[
@@ -348,11 +359,23 @@ fn keys_of(kind: &str) -> &'static [&'static str] {
             SETTLE[2],
             "controller_time_s",
             "settle_rudder_deg",
+            "settle_speed_m_s",
             "duration_s",
         ],
         "crash_stop" => &["astern_rps", "duration_s"],
         _ => &[],
     }
+}
+
+/// What a manoeuvre's checks read of the ship: its linear model (which side δ turns it to,
+/// the controller's gain, the time constant a spiral's settling allows), its propulsion
+/// model, its steering gear and its length.
+#[derive(Debug, Clone, Copy)]
+struct Ship<'a> {
+    linear: &'a LinearModel,
+    propulsion: Option<&'a Propulsion>,
+    rudder: &'a Rudder,
+    length: f64,
 }
 
 /// A ship scene, checked, ready to run.
@@ -645,12 +668,38 @@ impl Checker<'_> {
         Ok((stepper, every))
     }
 
+    /// A rudder command of `degrees` at `key` within the steering gear's reach: a command
+    /// beyond `rudder.max_deg` would run at the limit while the manoeuvre is labelled and
+    /// judged at the angle asked, so it is refused, naming both keys.
+    fn within_gear(&self, key: &str, degrees: f64, rudder: &Rudder) -> Result<(), SceneError> {
+        match rudder.max_angle.map(f64::to_degrees) {
+            Some(max) if degrees.abs() > max * (1.0 + 1e-12) => Err(self.invalid(
+                key,
+                format!(
+                    "{}° is beyond the steering gear's limit, rudder.max_deg = {}°: the \
+                     rudder would stop at the limit while the run is named and judged at the \
+                     angle asked; command at most {}°, or raise rudder.max_deg",
+                    crate::Short(degrees),
+                    crate::Short(max),
+                    crate::Short(max)
+                ),
+            )),
+            _ => Ok(()),
+        }
+    }
+
     fn manoeuvre(
         &self,
         index: usize,
         table: &ManoeuvreTable,
-        (linear, propulsion): (&LinearModel, Option<&Propulsion>),
+        ship: Ship,
     ) -> Result<Manoeuvre, SceneError> {
+        let Ship {
+            linear,
+            propulsion,
+            rudder,
+            ..
+        } = ship;
         let key = |k: &str| format!("manoeuvre[{index}].{k}");
         let required = |k: &str, v: Option<f64>| {
             v.ok_or_else(|| self.error(&key(k), Problem::Missing(key(k))))
@@ -671,13 +720,14 @@ impl Checker<'_> {
             if degrees == 0.0 {
                 return Err(self.invalid(&key("rudder_deg"), "a manoeuvre needs a rudder angle"));
             }
+            self.within_gear(&key("rudder_deg"), degrees, rudder)?;
             Ok(degrees.to_radians())
         };
         let execute = self.finite(&key("execute_s"), table.execute_s.unwrap_or(0.0))?;
         if execute < 0.0 {
             return Err(self.invalid(&key("execute_s"), "the run starts at 0 s"));
         }
-        let spiral = self.spiral(index, table, linear)?;
+        let spiral = self.spiral(index, table, ship)?;
         let duration = match (table.duration_s, &spiral) {
             (Some(duration), _) => self.positive(&key("duration_s"), duration)?,
             (None, Some((_, longest))) => execute + longest,
@@ -743,6 +793,9 @@ impl Checker<'_> {
                 let degrees = table.series_deg.clone().ok_or_else(|| {
                     self.error(&key("series_deg"), Problem::Missing(key("series_deg")))
                 })?;
+                for (k, angle) in degrees.iter().enumerate() {
+                    self.within_gear(&format!("{}[{k}]", key("series_deg")), *angle, rudder)?;
+                }
                 let angles = degrees.iter().map(|d| d.to_radians()).collect();
                 let series = Series::new(times, angles).ok_or_else(|| {
                     self.invalid(
@@ -890,8 +943,14 @@ impl Checker<'_> {
         &self,
         index: usize,
         table: &ManoeuvreTable,
-        linear: &LinearModel,
+        ship: Ship,
     ) -> Result<Option<(ManoeuvreKind, f64)>, SceneError> {
+        let Ship {
+            linear,
+            rudder,
+            length,
+            ..
+        } = ship;
         let key = |k: &str| format!("manoeuvre[{index}].{k}");
         let (list_key, list) = match table.kind.as_str() {
             "spiral" => ("rudders_deg", self.spiral_angles(index, table)?),
@@ -906,6 +965,18 @@ impl Checker<'_> {
         })?;
         if list.len() < 2 || list.iter().any(|v| !v.is_finite()) {
             return Err(self.invalid(&key(list_key), "at least two finite values"));
+        }
+        if table.kind == "spiral" {
+            // Each angle by the key that gave it: an entry of rudders_deg, or the range's ends
+            // (the angles between lie between them).
+            for (k, angle) in list.iter().enumerate() {
+                let given = match (&table.rudders_deg, k) {
+                    (Some(_), _) => format!("{}[{k}]", key("rudders_deg")),
+                    (None, 0) => key("from_deg"),
+                    (None, _) => key("to_deg"),
+                };
+                self.within_gear(&given, *angle, rudder)?;
+            }
         }
         let settle = Settle {
             window: self.positive(
@@ -927,6 +998,11 @@ impl Checker<'_> {
                     table.settle_rudder_deg.unwrap_or(SETTLE_RUDDER_DEG),
                 )?
                 .to_radians(),
+            speed_tolerance: self.positive(
+                &key("settle_speed_m_s"),
+                table.settle_speed_m_s.unwrap_or(SETTLE_SPEED_M_S),
+            )?,
+            time_constant: linear.slowest_time_constant(),
         };
         if settle.max_hold < settle.window {
             return Err(self.invalid(
@@ -952,6 +1028,7 @@ impl Checker<'_> {
             let spiral = Spiral {
                 rudders: radians,
                 settle,
+                length,
             };
             return Ok(Some((ManoeuvreKind::Spiral(spiral), longest)));
         }
@@ -973,6 +1050,7 @@ impl Checker<'_> {
             yaw_rates: radians,
             settle,
             gain,
+            length,
         };
         Ok(Some((ManoeuvreKind::ReverseSpiral(reverse), longest)))
     }
@@ -1018,7 +1096,13 @@ impl ShipScene {
         }
         let mut manoeuvres: Vec<Manoeuvre> = Vec::new();
         for (index, table) in file.manoeuvre.iter().enumerate() {
-            let manoeuvre = check.manoeuvre(index, table, (&linear, table_propulsion))?;
+            let ship = Ship {
+                linear: &linear,
+                propulsion: table_propulsion,
+                rudder: &rudder,
+                length,
+            };
+            let manoeuvre = check.manoeuvre(index, table, ship)?;
             if manoeuvres.iter().any(|m| m.name == manoeuvre.name) {
                 return Err(check.invalid(
                     &format!("manoeuvre[{index}].name"),

@@ -10,7 +10,8 @@ use super::imo::Criterion;
 use super::linear::{LinearModel, Nomoto, linearise};
 use super::manoeuvre::{Figures, Manoeuvre, ManoeuvreKind};
 use super::side::Side;
-use super::spiral::{Branch, SpiralCurve};
+use super::spiral::{Branch, SpiralCurve, Verdict};
+use super::steady::{SteadyTurn, SteadyTurns};
 use super::table::RigidBodyTerms;
 use super::{ShipModel, ShipScene};
 use super::{Units, YawInertia};
@@ -183,15 +184,72 @@ pub struct ManoeuvreSummary {
     pub notes: Vec<String>,
 }
 
-/// A spiral's curve as measured, and what it says.
+/// A spiral's curve as measured, what it says, and the steady turns it measures.
 #[derive(Debug, Clone, Serialize)]
 pub struct SpiralSummary {
     /// The points in the order measured.
     pub points: Vec<SpiralPointSummary>,
-    /// Whether the curve has no loop: one steady turn at each rudder angle.
-    pub course_stable_by_spiral: bool,
+    /// Whether the curve has no loop (one steady turn at each rudder angle); `null` where the
+    /// points cannot tell (`undetermined_because` says why).
+    pub course_stable_by_spiral: Option<bool>,
+    /// `no loop`, `loop` or `undetermined`.
+    pub verdict: &'static str,
+    /// Why the points cannot tell, and the settling that would.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub undetermined_because: Option<String>,
+    /// The loop the settled points show.
+    #[serde(rename = "loop", skip_serializing_if = "Option::is_none")]
+    pub found: Option<LoopSummary>,
     /// The settling criterion the points were measured by.
     pub settle: SettleSummary,
+    /// The steady turns over the points' range of rudder angles, traced by continuation;
+    /// `null` where they could not be (the manoeuvre's notes say why).
+    pub steady_turns: Option<SteadyTurnsSummary>,
+}
+
+/// The loop as the settled points show it, in degrees.
+#[derive(Debug, Clone, Serialize)]
+pub struct LoopSummary {
+    /// Its ends, to the middle of the gaps between the split and the agreed angles.
+    pub ends_deg: [f64; 2],
+    /// The width between them.
+    pub width_deg: f64,
+    /// The least width the points allow.
+    pub least_width_deg: f64,
+    /// The most, where agreed angles bound it on both sides.
+    pub most_width_deg: Option<f64>,
+    /// The direct spiral's spacing of angles at the loop's ends.
+    pub rudder_step_deg: Option<f64>,
+}
+
+/// One steady turn, in degrees.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct SteadyTurnSummary {
+    /// δ.
+    pub rudder_deg: f64,
+    /// r, degrees per second.
+    pub yaw_rate_deg_s: f64,
+    /// u, m/s.
+    pub u_m_s: f64,
+    /// v, m/s.
+    pub v_m_s: f64,
+    /// Whether it is stable with the rudder held.
+    pub stable: bool,
+}
+
+/// The steady turns of a spiral's range, their folds, and the loop between them.
+#[derive(Debug, Clone, Serialize)]
+pub struct SteadyTurnsSummary {
+    /// The turns in order along the curve.
+    pub turns: Vec<SteadyTurnSummary>,
+    /// Where the curve turns back in δ: the loop's ends.
+    pub folds: Vec<SteadyTurnSummary>,
+    /// The δ between the outermost folds (zero without folds); `null` for a single fold.
+    pub loop_width_deg: Option<f64>,
+    /// Why each end of the curve is where it is.
+    pub ends: [String; 2],
+    /// The Newton steps taken.
+    pub newton_steps: usize,
 }
 
 /// One point of a spiral's curve.
@@ -224,31 +282,86 @@ pub struct SettleSummary {
     /// The reverse spiral's largest change of the mean rudder from window to window, degrees.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub rudder_tolerance_deg: Option<f64>,
+    /// The largest variation of the speed over the window, m/s.
+    pub speed_tolerance_m_s: f64,
+    /// T, s: the ship's slowest sway–yaw time constant the resolution is taken at.
+    pub time_constant_s: f64,
+    /// ε, degrees per second: the largest distance of a settled r from the steady one.
+    pub resolution_deg_s: f64,
+}
+
+impl SteadyTurnSummary {
+    fn new(turn: &SteadyTurn) -> Self {
+        SteadyTurnSummary {
+            rudder_deg: turn.rudder.to_degrees(),
+            yaw_rate_deg_s: turn.r.to_degrees(),
+            u_m_s: turn.u,
+            v_m_s: turn.v,
+            stable: turn.stable,
+        }
+    }
+}
+
+impl SteadyTurnsSummary {
+    /// The summary of a traced curve.
+    pub fn new(steady: &SteadyTurns) -> Self {
+        SteadyTurnsSummary {
+            turns: steady.turns.iter().map(SteadyTurnSummary::new).collect(),
+            folds: steady.folds.iter().map(SteadyTurnSummary::new).collect(),
+            loop_width_deg: steady.loop_width().map(f64::to_degrees),
+            ends: steady.ends.clone(),
+            newton_steps: steady.newton_steps,
+        }
+    }
 }
 
 impl SpiralSummary {
     /// The summary of a measured curve.
     pub fn new(curve: &SpiralCurve) -> Self {
+        let verdict = curve.verdict();
+        let reverse = curve.points.iter().any(|p| p.branch == Branch::Reverse);
+        let settle = curve.settle;
         SpiralSummary {
             points: (curve.points.iter())
                 .map(|p| SpiralPointSummary {
-                    rudder_deg: p.rudder.to_degrees(),
+                    // A direct spiral's δ is the scene's; a reverse spiral's, a mean.
+                    rudder_deg: match p.branch {
+                        Branch::Reverse => p.rudder.to_degrees(),
+                        _ => as_given(p.rudder),
+                    },
                     yaw_rate_deg_s: p.yaw_rate.to_degrees(),
-                    commanded_yaw_rate_deg_s: p.target.map(f64::to_degrees),
+                    commanded_yaw_rate_deg_s: p.target.map(as_given),
                     branch: p.branch.name(),
                     settled: p.settled,
                     held_s: p.held,
                 })
                 .collect(),
-            course_stable_by_spiral: curve.find_loop().is_none(),
-            settle: SettleSummary {
-                window_s: curve.settle.window,
-                tolerance_deg_s: curve.settle.tolerance.to_degrees(),
-                max_hold_s: curve.settle.max_hold,
-                rudder_tolerance_deg: (curve.points.iter())
-                    .any(|p| p.branch == Branch::Reverse)
-                    .then(|| curve.settle.rudder_tolerance.to_degrees()),
+            course_stable_by_spiral: verdict.course_stable(),
+            verdict: verdict.name(),
+            undetermined_because: match &verdict {
+                Verdict::Undetermined(why) => Some(why.clone()),
+                _ => None,
             },
+            found: match &verdict {
+                Verdict::Loop(found) => Some(LoopSummary {
+                    ends_deg: [found.ends.0.to_degrees(), found.ends.1.to_degrees()],
+                    width_deg: found.width.to_degrees(),
+                    least_width_deg: found.least_width().to_degrees(),
+                    most_width_deg: found.most_width.map(f64::to_degrees),
+                    rudder_step_deg: found.step.map(f64::to_degrees),
+                }),
+                _ => None,
+            },
+            settle: SettleSummary {
+                window_s: settle.window,
+                tolerance_deg_s: as_given(settle.tolerance),
+                max_hold_s: settle.max_hold,
+                rudder_tolerance_deg: reverse.then(|| as_given(settle.rudder_tolerance)),
+                speed_tolerance_m_s: settle.speed_tolerance,
+                time_constant_s: settle.time_constant,
+                resolution_deg_s: settle.resolution().to_degrees(),
+            },
+            steady_turns: curve.steady.as_ref().ok().map(SteadyTurnsSummary::new),
         }
     }
 }
@@ -322,7 +435,7 @@ pub struct CriterionSummary {
     pub sides: Option<BTreeMap<&'static str, Option<f64>>>,
     /// Why it is not judged, where no manoeuvre of the scene could give its figure.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub not_judged_because: Option<&'static str>,
+    pub not_judged_because: Option<String>,
 }
 
 impl ModelSummary {
@@ -383,6 +496,14 @@ impl NomotoSummary {
     }
 }
 
+/// An angle (or a rate) the scene gave in degrees, back from radians as it was written: the
+/// conversion there and back is off by an ulp (7.5° came back as 7.499999999999999°), and
+/// fifteen significant digits, well above that and below anything a scene writes, undo it.
+fn as_given(radians: f64) -> f64 {
+    let degrees = radians.to_degrees();
+    format!("{degrees:.14e}").parse().unwrap_or(degrees)
+}
+
 /// The largest relative difference between two Nomoto models' K, T₁, T₂, T₃.
 pub fn nomoto_difference(a: Option<Nomoto>, b: Option<Nomoto>) -> Option<f64> {
     let (a, b) = (a?, b?);
@@ -422,22 +543,22 @@ impl KindSummary {
     pub fn new(kind: &ManoeuvreKind) -> Self {
         match *kind {
             ManoeuvreKind::TurningCircle { rudder } => KindSummary::TurningCircle {
-                rudder_deg: rudder.to_degrees(),
+                rudder_deg: as_given(rudder),
             },
             ManoeuvreKind::ZigZag { rudder, heading } => KindSummary::Zigzag {
-                rudder_deg: rudder.to_degrees(),
-                heading_deg: heading.to_degrees(),
+                rudder_deg: as_given(rudder),
+                heading_deg: as_given(heading),
             },
             ManoeuvreKind::PullOut { rudder, release } => KindSummary::PullOut {
-                rudder_deg: rudder.to_degrees(),
+                rudder_deg: as_given(rudder),
                 release_s: release,
             },
             ManoeuvreKind::Series(_) => KindSummary::RudderSeries,
             ManoeuvreKind::Spiral(ref spiral) => KindSummary::Spiral {
-                rudders_deg: spiral.rudders.iter().map(|d| d.to_degrees()).collect(),
+                rudders_deg: spiral.rudders.iter().map(|d| as_given(*d)).collect(),
             },
             ManoeuvreKind::ReverseSpiral(ref reverse) => KindSummary::ReverseSpiral {
-                yaw_rates_deg_s: reverse.yaw_rates.iter().map(|r| r.to_degrees()).collect(),
+                yaw_rates_deg_s: reverse.yaw_rates.iter().map(|r| as_given(*r)).collect(),
                 controller_gain_s: reverse.gain,
             },
             ManoeuvreKind::CrashStop { astern } => KindSummary::CrashStop { astern_rps: astern },
@@ -509,7 +630,22 @@ impl CriterionSummary {
                     .map(|(side, value)| (side.name(), *value))
                     .collect()
             }),
-            not_judged_because: criterion.not_judged_because,
+            not_judged_because: criterion.not_judged_because.clone(),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Angles a scene writes come back as written, where the round trip through radians
+    /// alone is off by an ulp.
+    #[test]
+    fn an_angle_comes_back_as_the_scene_wrote_it() {
+        for written in [7.5, -0.75, -1.5, -3.0, 35.0, 0.1, -0.025, 0.0] {
+            assert_eq!(as_given(f64::to_radians(written)), written);
+        }
+        assert_ne!(7.5f64.to_radians().to_degrees(), 7.5);
     }
 }

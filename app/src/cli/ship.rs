@@ -13,19 +13,23 @@
 use super::run::{Interrupted, signal_received};
 use anyhow::{Context, Result};
 use eom::Model;
+use eom::Short;
 use eom::output::summary::write_atomically;
 use eom::output::text::printable;
 use eom::output::trajectory::{Columns, TrajectoryWriter};
 use eom::run::{Row, Sink};
+use eom::scene::reference::{SceneFamily, keys_of};
 use eom::scene::sweep::TableCase;
 use eom::ship::Side;
 use eom::ship::imo::Trial;
-use eom::ship::imo::{Criterion, criteria};
+use eom::ship::imo::{Criterion, criteria, possible};
 use eom::ship::linear::{LinearModel, Nomoto, linearise, linearise_ship};
 use eom::ship::manoeuvre::ManoeuvreKind;
 use eom::ship::manoeuvre::{Figures, ROW, run, trajectory_columns};
+use eom::ship::scene::NAMED_FROM;
 use eom::ship::side::{deciding_figure, worse};
-use eom::ship::spiral::{Branch, SpiralCurve};
+use eom::ship::spiral::{Branch, Loop, SpiralCurve, SpiralPoint, Verdict};
+use eom::ship::steady::SteadyTurns;
 use eom::ship::summary::{
     CriterionSummary, IntegratorSummary, LinearSummary, ManoeuvreSummary, Manoeuvres, ModelSummary,
     ShipSummary, nomoto_difference,
@@ -48,18 +52,53 @@ const SWEPT_FIGURES: [(&str, &str); 2] = [
     ("steady_turning_radius_m", "steady turning radius"),
 ];
 
-/// Whether a column of a sweep's table is a swept key (a key path of the scene: an entry of
-/// an array, `manoeuvre[0].rudder_deg`, or a key of one of its tables), not a figure.
+/// Whether a column of a sweep's table is a swept key (a key path of the scene: a key of an
+/// entry of an array, `manoeuvre[0].rudder_deg`, or a key of one of its tables), not a figure
+/// (`manoeuvre[0].tactical_diameter_m`, a manoeuvre's figure named by its position).
 fn is_key_path(column: &str) -> bool {
     let tables = [
         "model.",
         "body.",
         "hydrodynamics.",
+        "propulsion.",
         "rudder.",
         "integrator.",
         "output.",
     ];
-    column.contains('[') || column == "title" || tables.iter().any(|t| column.starts_with(t))
+    if let Some((array, rest)) = column.split_once('[') {
+        // `manoeuvre[0].rudder_deg` is the reference's `manoeuvre[].rudder_deg`.
+        let key = rest
+            .split_once(']')
+            .map(|(_, key)| format!("{array}[]{key}"));
+        return key.is_some_and(|key| keys_of(SceneFamily::Ship).any(|k| k.path == key));
+    }
+    column == "title" || tables.iter().any(|t| column.starts_with(t))
+}
+
+/// What each manoeuvre's columns of a sweep's table are named by: its name where no swept
+/// value makes it (a name the scene gives, or one made from keys the sweep leaves alone), else
+/// its position, `manoeuvre[0]`: a name made from a swept angle (`turning_circle_15`,
+/// `turning_circle_25`) would give each case columns of its own, and shards that could not be
+/// merged. The swept keys are every case's, so every case and every shard names them alike.
+fn column_names(case: &TableCase, scene: &ShipScene) -> Vec<String> {
+    let given = |index: usize| {
+        let entry = case.table.get("manoeuvre").and_then(|m| m.get(index));
+        entry.is_some_and(|m| m.get("name").is_some())
+    };
+    (scene.manoeuvres.iter().enumerate())
+        .map(|(index, manoeuvre)| {
+            let swept = |key: &str| {
+                let path = format!("manoeuvre[{index}].{key}");
+                case.values.iter().any(|(k, _)| *k == path)
+            };
+            let named = given(index) && !swept("name");
+            let made_from_swept = swept("name") || NAMED_FROM.iter().any(|key| swept(key));
+            match named || !made_from_swept {
+                true => manoeuvre.name.clone(),
+                false => format!("manoeuvre[{index}]"),
+            }
+        })
+        .collect()
 }
 
 /// `rudder_sweep.svg` in `dir`, from a ship sweep's table (`sweep.csv`'s text), when the sweep
@@ -178,8 +217,11 @@ pub fn execute(scene: &ShipScene, name: &str, out: &Path) -> Result<()> {
         Some(signal) => Err(Interrupted {
             signal,
             kept: format!(
-                "the {} manoeuvres finished before it, and summary.json, in {}",
-                run.outcomes.len(),
+                "{} finished before it, and summary.json, in {}",
+                match run.outcomes.len() {
+                    1 => "the 1 manoeuvre".to_owned(),
+                    n => format!("the {n} manoeuvres"),
+                },
                 out.display()
             ),
         }
@@ -236,8 +278,7 @@ fn run_into(scene: &ShipScene, name: &str, out: &Path) -> Result<ShipRun> {
     let trials: Vec<Trial> = (scene.manoeuvres.iter().zip(&outcomes))
         .map(|(m, runs)| (m, runs.iter().map(|(s, o)| (*s, &o.figures)).collect()))
         .collect();
-    let propulsion = scene.table.propulsion.is_some();
-    let judged = criteria(scene.length, scene.table.design_speed, &trials, propulsion);
+    let judged = criteria(scene, &trials);
     let runs = (scene.manoeuvres.iter().zip(&outcomes))
         .filter(|(_, runs)| !runs.is_empty())
         .map(|(manoeuvre, runs)| {
@@ -311,14 +352,14 @@ pub fn run_sweep(
 /// The columns of a ship sweep's table after the case and its values, from the first case
 /// that ran (every case has the same manoeuvres and criteria).
 fn sweep_columns(cases: &[(TableCase, ShipScene)], runs: &[Result<ShipRun>]) -> Vec<String> {
-    let Some(((_, scene), run)) = cases
+    let Some(((case, scene), run)) = cases
         .iter()
         .zip(runs)
         .find_map(|(case, run)| run.as_ref().ok().map(|run| (case, run)))
     else {
         return Vec::new();
     };
-    sweep_cells(scene, run)
+    sweep_cells((case, scene), run)
         .into_iter()
         .map(|(k, _)| k)
         .collect()
@@ -326,40 +367,49 @@ fn sweep_columns(cases: &[(TableCase, ShipScene)], runs: &[Result<ShipRun>]) -> 
 
 /// Each column of a ship sweep's table with its value in `run`, in the table's order: each
 /// manoeuvre's figures (the worse side's, for one run to both), then each side's
-/// (`turn.port.tactical_diameter_m`), then each IMO criterion's value, verdict and sides.
-fn sweep_cells(scene: &ShipScene, run: &ShipRun) -> Vec<(String, String)> {
+/// (`turn.port.tactical_diameter_m`), then each IMO criterion's value, verdict and sides; a
+/// manoeuvre's columns are named as [`column_names`] says.
+fn sweep_cells((case, scene): (&TableCase, &ShipScene), run: &ShipRun) -> Vec<(String, String)> {
     let text = |value: Option<f64>| value.map_or_else(String::new, |v| v.to_string());
     let mut cells = Vec::new();
-    for (manoeuvre, runs) in scene.manoeuvres.iter().zip(&run.outcomes) {
+    let names = column_names(case, scene);
+    for ((manoeuvre, runs), name) in scene.manoeuvres.iter().zip(&run.outcomes).zip(&names) {
         if let Some(outcome) = shown(manoeuvre, runs) {
             for (key, value) in &outcome.figures.values {
-                cells.push((format!("{}.{key}", manoeuvre.name), text(*value)));
+                cells.push((format!("{name}.{key}"), text(*value)));
             }
         }
         for (side, outcome) in runs.iter().filter(|_| runs.len() > 1) {
             let side = side.map_or("", Side::name);
             for (key, value) in &outcome.figures.values {
-                cells.push((format!("{}.{side}.{key}", manoeuvre.name), text(*value)));
+                cells.push((format!("{name}.{side}.{key}"), text(*value)));
             }
         }
     }
-    for criterion in &run.judged {
-        let pass = criterion.pass().map_or_else(String::new, |p| p.to_string());
-        cells.push((format!("imo.{}", criterion.name), text(criterion.value)));
-        cells.push((format!("imo.{}.pass", criterion.name), pass));
-        for (side, value) in &criterion.sides {
-            cells.push((
-                format!("imo.{}.{}", criterion.name, side.name()),
-                text(*value),
-            ));
+    // Every criterion the scene's kinds may give, judged in this case or not, so that the
+    // columns do not depend on a swept angle (a turn at 20° is not judged; at 35° it is).
+    for (name, sided) in possible(scene) {
+        let criterion = run.judged.iter().find(|c| c.name == name);
+        let value = criterion.and_then(|c| c.value);
+        let pass = criterion.and_then(Criterion::pass);
+        cells.push((format!("imo.{name}"), text(value)));
+        cells.push((
+            format!("imo.{name}.pass"),
+            pass.map_or_else(String::new, |p| p.to_string()),
+        ));
+        for side in Side::BOTH.iter().filter(|_| sided) {
+            let value = (criterion.iter().flat_map(|c| &c.sides))
+                .find(|(s, _)| s == side)
+                .and_then(|(_, v)| *v);
+            cells.push((format!("imo.{name}.{}", side.name()), text(value)));
         }
     }
     cells
 }
 
 /// The value of each of `columns` in `run`, empty where it gave none.
-fn sweep_values(scene: &ShipScene, run: &ShipRun, columns: &[String]) -> Vec<String> {
-    let mut values: BTreeMap<String, String> = sweep_cells(scene, run).into_iter().collect();
+fn sweep_values(case: (&TableCase, &ShipScene), run: &ShipRun, columns: &[String]) -> Vec<String> {
+    let mut values: BTreeMap<String, String> = sweep_cells(case, run).into_iter().collect();
     columns
         .iter()
         .map(|column| values.remove(column).unwrap_or_default())
@@ -383,7 +433,7 @@ fn sweep_table(cases: &[(TableCase, ShipScene)], runs: &[Result<ShipRun>]) -> St
         row.extend(case.values.iter().map(|(_, v)| v.to_string()));
         match run {
             Ok(run) => {
-                row.extend(sweep_values(scene, run, &columns));
+                row.extend(sweep_values((case, scene), run, &columns));
                 row.push(String::new());
             }
             Err(error) => {
@@ -501,7 +551,7 @@ fn write_plots(
         rudder_deg: &rudder,
         command_deg: &command,
         marks: &marks,
-        // The scene gives no beam: the one view.html assumes.
+        // A ship scene has no key for the beam: the one view.html assumes.
         hull: Hull {
             length: scene.length,
             beam: scene.length / super::view::ASSUMED_LENGTH_OVER_BEAM,
@@ -524,9 +574,10 @@ fn write_plots(
     Ok(())
 }
 
-/// A figure as the report prints it: three decimals, or a dash where the run gave none.
+/// A figure as the report prints it: three decimals (no sign on a zero), or a dash where the
+/// run gave none.
 fn cell(value: Option<f64>) -> String {
-    value.map_or_else(|| "—".to_owned(), |v| format!("{v:.3}"))
+    value.map_or_else(|| "—".to_owned(), |v| fixed(v, 3))
 }
 
 /// A manoeuvre's figures as the report prints them: a column per side for one run to both
@@ -573,51 +624,149 @@ fn print_manoeuvre(manoeuvre: &Manoeuvre, runs: &Runs) {
     }
 }
 
-/// A spiral's curve: one line per angle (the two passes side by side for a direct spiral).
+/// A spiral's curve: its verdict, one line per angle (the two passes side by side for a
+/// direct spiral; a point that did not settle marked `*`), then the loop from the settled
+/// points beside the steady-turn curve's folds.
 fn print_spiral(curve: &SpiralCurve) {
-    let stable = curve.find_loop().is_none();
+    let verdict = curve.verdict();
     println!(
         "    course stable by the spiral        {}",
-        if stable {
-            "yes (no loop)"
-        } else {
-            "NO (a loop)"
+        match verdict {
+            Verdict::NoLoop => "yes (no loop)",
+            Verdict::Loop(_) => "NO (a loop)",
+            Verdict::Undetermined(_) => "undetermined (see the note)",
         }
     );
     let settle = curve.settle;
+    let resolution = match settle.resolution().is_finite() {
+        true => format!(
+            "a settled r within ε = {}°/s of the steady one at T₁ = {} s",
+            Short(settle.resolution().to_degrees()),
+            Short(settle.time_constant)
+        ),
+        false => "no bound on a settled r's distance from the steady one (the linear model has \
+                  a mode that neither grows nor decays)"
+            .to_owned(),
+    };
     println!(
-        "    settled: r within {}°/s over {} s (held at most {} s)",
-        settle.tolerance.to_degrees(),
-        settle.window,
-        settle.max_hold
+        "    settled: r within {}°/s over {} s (held at most {} s): {resolution}",
+        Short(settle.tolerance.to_degrees()),
+        Short(settle.window),
+        Short(settle.max_hold),
     );
+    let mark = |p: &SpiralPoint, text: String| match p.settled {
+        true => format!("{text} "),
+        false => format!("{text}*"),
+    };
     let reverse = curve.points.iter().any(|p| p.branch == Branch::Reverse);
     if reverse {
         println!(
-            "    {:>14} {:>14} {:>14}",
+            "    {:>14} {:>14} {:>15}",
             "r_c [°/s]", "r [°/s]", "mean δ [°]"
         );
         for p in &curve.points {
             let target = p.target.map_or(f64::NAN, f64::to_degrees);
             let (r, d) = (p.yaw_rate.to_degrees(), p.rudder.to_degrees());
-            println!("    {target:>14.4} {r:>14.4} {d:>14.3}");
+            println!(
+                "    {:>14} {:>14} {:>15}",
+                fixed(target, 4),
+                fixed(r, 4),
+                mark(p, fixed(d, 3))
+            );
         }
-        return;
-    }
-    println!(
-        "    {:>10} {:>14} {:>14}",
-        "δ [°]", "r first [°/s]", "r back [°/s]"
-    );
-    for first in curve.points.iter().filter(|p| p.branch == Branch::First) {
-        let back = (curve.points.iter())
-            .find(|p| p.branch == Branch::Back && p.rudder == first.rudder)
-            .map(|p| p.yaw_rate.to_degrees());
+    } else {
         println!(
-            "    {:>10.2} {:>14.4} {:>14}",
-            first.rudder.to_degrees(),
-            first.yaw_rate.to_degrees(),
-            back.map_or_else(|| "—".to_owned(), |r| format!("{r:.4}"))
+            "    {:>10} {:>15} {:>15}",
+            "δ [°]", "r first [°/s]", "r back [°/s]"
         );
+        for first in curve.points.iter().filter(|p| p.branch == Branch::First) {
+            let back = (curve.points.iter())
+                .find(|p| p.branch == Branch::Back && p.rudder == first.rudder)
+                .map(|p| mark(p, fixed(p.yaw_rate.to_degrees(), 4)));
+            println!(
+                "    {:>10} {:>15} {:>15}",
+                fixed(first.rudder.to_degrees(), 2),
+                mark(first, fixed(first.yaw_rate.to_degrees(), 4)),
+                back.unwrap_or_else(|| "— ".to_owned())
+            );
+        }
+    }
+    if curve.points.iter().any(|p| !p.settled) {
+        println!("    * not settled: no figure rests on it");
+    }
+    if let Verdict::Loop(found) = verdict {
+        print_loop(&found);
+    }
+    match &curve.steady {
+        Ok(steady) => print_steady(steady),
+        Err(why) => println!("    steady turns: not traced ({why})"),
+    }
+}
+
+/// The loop the settled points show: its ends, width and bounds, and the spiral's step.
+fn print_loop(found: &Loop) {
+    let degrees = |x: f64| fixed(x.to_degrees(), 3);
+    let most = found
+        .most_width
+        .map_or_else(String::new, |w| format!(", at most {}°", degrees(w)));
+    let step = found
+        .step
+        .map_or_else(String::new, |s| format!(", rudder step {}°", degrees(s)));
+    println!(
+        "    loop from the settled points: δ from {}° to {}°, {}° wide (at least {}°{most}){step}",
+        degrees(found.ends.0),
+        degrees(found.ends.1),
+        degrees(found.width),
+        degrees(found.least_width()),
+    );
+}
+
+/// The steady-turn curve's folds and the loop between them, beside the spiral's.
+fn print_steady(steady: &SteadyTurns) {
+    let (low, high) = steady.range;
+    let range = format!(
+        "δ from {}° to {}°",
+        fixed(low.to_degrees(), 2),
+        fixed(high.to_degrees(), 2)
+    );
+    let mut folds = steady.folds.clone();
+    folds.sort_by(|a, b| a.rudder.total_cmp(&b.rudder));
+    let folds: Vec<String> = (folds.iter())
+        .map(|f| {
+            format!(
+                "δ = {}° (r = {}°/s)",
+                fixed(f.rudder.to_degrees(), 4),
+                fixed(f.r.to_degrees(), 4)
+            )
+        })
+        .collect();
+    let what = match (steady.folds.len(), steady.loop_width()) {
+        (0, Some(_)) => "no fold: one steady turn at each δ".to_owned(),
+        (0, None) => "no fold where it was traced".to_owned(),
+        (_, Some(width)) => format!(
+            "folds at {}: the loop {}° wide",
+            folds.join(" and "),
+            fixed(width.to_degrees(), 4)
+        ),
+        (_, None) => format!("one fold, at {}: the loop runs past the range", folds[0]),
+    };
+    println!(
+        "    steady turns ({} points, by continuation over {range}): {what}",
+        steady.turns.len()
+    );
+    for (end, why) in ["low", "high"].iter().zip(&steady.ends) {
+        if !steady.spans_range() {
+            println!("      the curve's {end} end: {why}");
+        }
+    }
+}
+
+/// `value` to `decimals` places, with no sign on a zero (`-0.0000` is `0.0000`).
+fn fixed(value: f64, decimals: usize) -> String {
+    let text = format!("{value:.decimals$}");
+    match text.strip_prefix('-') {
+        Some(digits) if digits.chars().all(|c| c == '0' || c == '.') => digits.to_owned(),
+        _ => text,
     }
 }
 
@@ -658,9 +807,20 @@ fn write_spiral_plot(folder: &Path, title: &str, curve: &SpiralCurve) -> Result<
             points: &reverse,
         });
     }
-    let verdict = match curve.find_loop() {
-        None => "no loop (course-stable)".to_owned(),
-        Some(l) => format!(
+    let steady: Vec<(f64, f64)> = (curve.steady.iter())
+        .flat_map(|s| &s.turns)
+        .map(|t| (t.rudder.to_degrees(), t.r.to_degrees()))
+        .collect();
+    if !steady.is_empty() {
+        curves.push(Curve {
+            name: "steady turns",
+            points: &steady,
+        });
+    }
+    let verdict = match curve.verdict() {
+        Verdict::NoLoop => "no loop (course-stable)".to_owned(),
+        Verdict::Undetermined(_) => "loop undetermined (see the notes)".to_owned(),
+        Verdict::Loop(l) => format!(
             "loop {:.2}° wide{}",
             l.width.to_degrees(),
             l.height
@@ -692,26 +852,24 @@ fn print_report(scene: &ShipScene, outcomes: &[Runs], judged: &[Criterion], out:
         for c in judged {
             let sides: Vec<String> = (c.sides.iter())
                 .map(|(side, v)| {
-                    format!(
-                        "{} {}",
-                        side.name(),
-                        v.map_or("—".into(), |v| format!("{v:.2}"))
-                    )
+                    format!("{} {}", side.name(), v.map_or("—".into(), |v| fixed(v, 2)))
                 })
                 .collect();
             let sides = match sides.is_empty() {
                 true => String::new(),
-                false => format!("  ({})", sides.join(", ")),
+                false => format!(" ({})", sides.join(", ")),
             };
             match (c.value, c.pass()) {
                 (Some(value), Some(pass)) => println!(
-                    "    {:<24} {value:>10.2} {:<3} ≤ {:>9.2}  {}{sides}",
+                    "    {:<24} {:>10} {:<3} ≤ {:>9.2}  {}  on {}{sides}",
                     c.name,
+                    fixed(value, 2),
                     c.unit,
                     c.limit,
-                    if pass { "pass" } else { "FAIL" }
+                    if pass { "pass" } else { "FAIL" },
+                    c.manoeuvre
                 ),
-                _ => match c.not_judged_because {
+                _ => match &c.not_judged_because {
                     Some(why) => println!("    {:<24} not judged: {why}", c.name),
                     None => println!(
                         "    {:<24} not judged: {} did not give the figure (see its notes)\
@@ -807,4 +965,30 @@ fn nomoto_report(scene: &ShipScene, model: &ShipModel, linear: &LinearModel) -> 
         ),
     );
     text
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_zero_is_printed_without_a_sign() {
+        assert_eq!(fixed(-0.00001, 4), "0.0000");
+        assert_eq!(fixed(-0.0, 3), "0.000");
+        assert_eq!(fixed(-0.0001, 4), "-0.0001");
+        assert_eq!(fixed(12.3456, 2), "12.35");
+        assert_eq!(cell(Some(-0.0002)), "0.000");
+    }
+
+    /// A sweep's key columns are the scene's keys; a manoeuvre's figure named by its
+    /// position is not one.
+    #[test]
+    fn a_figure_named_by_position_is_not_a_swept_key() {
+        assert!(is_key_path("manoeuvre[0].rudder_deg"));
+        assert!(is_key_path("manoeuvre[12].heading_deg"));
+        assert!(is_key_path("hydrodynamics.coefficients.Yv"));
+        assert!(!is_key_path("manoeuvre[0].tactical_diameter_m"));
+        assert!(!is_key_path("manoeuvre[0].port.advance_90_m"));
+        assert!(!is_key_path("imo.advance"));
+    }
 }

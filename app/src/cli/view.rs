@@ -12,7 +12,7 @@
 //! - the pendulum: its rod from the pivot to G and a bob at G;
 //! - a planar body: a plate (sides 2 : 1) with its mass and I_zz, or for a body about
 //!   midship a hull of length 4 √(I_zz/M) (a radius of gyration of L/4); a ship scene's
-//!   hull has its L, and a beam of L/7 where the scene gives none.
+//!   hull has its L, and a beam of L/7, assumed (a ship scene has no key for it).
 //!
 //! The panel of the page says which of these it drew, and what it assumed.
 
@@ -28,7 +28,8 @@ use eom_cli::view::{
 };
 use std::path::{Path, PathBuf};
 
-/// A beam of L over this where a ship scene gives none (a cargo ship's L/B is 6 to 8).
+/// A beam of L over this for a ship's hull: a ship scene has no key for the beam (a cargo
+/// ship's L/B is 6 to 8).
 pub const ASSUMED_LENGTH_OVER_BEAM: f64 = 7.0;
 
 /// Writes `view.html` of a catalog scene's run into `out`.
@@ -425,7 +426,8 @@ pub fn write_ship(out: &Path, ship: ShipColumns) -> Result<PathBuf> {
     let column = |k: usize| ship.state[k].1;
     let beam = ship.length / ASSUMED_LENGTH_OVER_BEAM;
     let note = format!(
-        "the hull of length L = {} m; the scene gives no beam, so B = L/{} = {} m is assumed",
+        "the hull of length L = {} m, and of beam B = L/{} = {} m, assumed: a ship scene has \
+         no key for the beam (its table does not need one)",
         Short(ship.length),
         ASSUMED_LENGTH_OVER_BEAM,
         Short(beam)

@@ -485,8 +485,10 @@ pub(super) static KEYS: &[Key] = &[
         required: Required::When("except for spiral and reverse_spiral"),
         default: "a spiral's: the longest it may take, every setpoint held max_hold_s",
         description: "The end of the run, after the execute. A spiral ends once every \
-                      setpoint is measured.",
-        example: "60.0",
+                      setpoint is measured. A turn's steady radius and speed are read once the \
+                      heading has turned 540° and U and r have settled: for a 325 m tanker at \
+                      8 knots, after some two hours (the template's 8000 s).",
+        example: "8000.0",
         ..Key::BLANK
     },
     Key {
@@ -600,8 +602,22 @@ pub(super) static KEYS: &[Key] = &[
         description: "spiral, reverse_spiral: the largest variation of r (max − min) over the \
                       window for a settled setpoint (and, for the reverse spiral, the largest \
                       distance of the mean r from the commanded one). For an approach as one \
-                      exponential of time constant T, a settled r is within \
-                      tolerance/(e^(W/T) − 1) of the steady one.",
+                      exponential of time constant T, a settled r is within ε = \
+                      tolerance/(e^(W/T) − 1) of the steady one; with T = |T₁| of the linear \
+                      model, a direct spiral's passes closer than 2ε are not read as a loop.",
+        example: "0.001",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].settle_speed_m_s",
+        families: SHIP,
+        unit: "m/s",
+        default: "0.001",
+        description: "spiral, reverse_spiral: the largest variation of the speed u (max − \
+                      min) over the window for a settled setpoint. The speed converges slowest \
+                      and r and the rudder follow it: an r that overshoots and turns back \
+                      stops moving for a window while the turn is still far from steady.",
         example: "0.001",
         shown: Shown::Commented,
         ..Key::BLANK

@@ -4,8 +4,9 @@
 //! Each key is written with what it means, then a line of its unit, axes, default and whether
 //! it is required, then the key set to its example (or commented out, for an alternative or
 //! an option the template's run does not use). The template is short to run on purpose
-//! (`integrator.end_time = 1`, a ship's one turn of 60 s): it is a form to fill in, and the
-//! tests run every one.
+//! (`integrator.end_time = 1`; a ship's one turn, as long as its tanker needs for every
+//! figure): it is a form to fill in that gives figures as printed, and the tests run every
+//! one.
 
 use super::{Key, Kind, SceneFamily, Shown, keys_of};
 
