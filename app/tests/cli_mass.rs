@@ -134,8 +134,11 @@ fn swing_amplitude_shortens_the_small_swing_period() {
 fn bad_swing_arguments_fail_clearly() {
     let base = ["swing", "--pivot-to-cg", "0.12", "--mass", "20"];
     let cases: [(&[&str], &str); 6] = [
-        (&["--period", "-1"], "period must be positive"),
-        (&["--period", "NaN"], "period must be positive"),
+        (&["--period", "-1"], "'--period <PERIOD>': must be positive"),
+        (
+            &["--period", "NaN"],
+            "'--period <PERIOD>': must be positive",
+        ),
         (&["--period", "1.4", "--amplitude-deg", "180"], "below 180°"),
         (&["--period", "1.4", "--amplitude-deg", "-3"], "at least 0°"),
         (&["--period", "0.3"], "imaginary"),
@@ -155,7 +158,7 @@ fn bad_swing_arguments_fail_clearly() {
         "1",
     ]);
     assert!(
-        message.contains("pivot_to_cg must be positive"),
+        message.contains("'--pivot-to-cg <PIVOT_TO_CG>': must be positive"),
         "{message}"
     );
     let message = failure(&[
@@ -167,5 +170,8 @@ fn bad_swing_arguments_fail_clearly() {
         "--mass",
         "-2",
     ]);
-    assert!(message.contains("mass must be positive"), "{message}");
+    assert!(
+        message.contains("'--mass <MASS>': must be positive"),
+        "{message}"
+    );
 }
