@@ -111,6 +111,15 @@ pub fn exit_code(error: &anyhow::Error) -> u8 {
         if cause.downcast_ref::<eom::linear::LinearError>().is_some() {
             return 5;
         }
+        if let Some(vehicle) = cause.downcast_ref::<eom::vehicle::VehicleError>() {
+            use eom::vehicle::VehicleError;
+            return match vehicle {
+                VehicleError::Invalid { .. } | VehicleError::Table(_) => 3,
+                VehicleError::Run { .. } | VehicleError::Linear(_) => 5,
+                VehicleError::Stopped { .. } => 130,
+                VehicleError::Prove(_) => 1,
+            };
+        }
         if let Some(ship) = cause.downcast_ref::<eom::ship::ShipError>() {
             return match ship {
                 eom::ship::ShipError::Run { .. } => 5,
@@ -121,4 +130,28 @@ pub fn exit_code(error: &anyhow::Error) -> u8 {
         }
     }
     1
+}
+
+#[cfg(test)]
+mod tests {
+    use super::exit_code;
+    use eom::vehicle::VehicleError;
+
+    /// A vehicle's run that cannot go on exits 5, as every kind's does (README's table); a
+    /// value it refuses, 3; one stopped by Ctrl-C, 130.
+    #[test]
+    fn a_vehicles_errors_exit_as_every_kinds() {
+        let run = VehicleError::Run {
+            time: 1.0,
+            reason: "the state component u is not finite".into(),
+        };
+        let code = |error: VehicleError| exit_code(&anyhow::Error::new(error).context("manoeuvre"));
+        assert_eq!(code(run), 5);
+        let invalid = VehicleError::Invalid {
+            key: "propeller.thrust".into(),
+            reason: "astern".into(),
+        };
+        assert_eq!(code(invalid), 3);
+        assert_eq!(code(VehicleError::Stopped { time: 2.0 }), 130);
+    }
 }
