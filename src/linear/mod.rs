@@ -67,10 +67,7 @@ pub enum LinearError {
 
 /// "1 Newton step", "2 Newton steps".
 pub fn newton_steps(steps: usize) -> String {
-    match steps {
-        1 => "1 Newton step".to_owned(),
-        n => format!("{n} Newton steps"),
-    }
+    crate::counted(steps, "Newton step", "Newton steps")
 }
 
 /// The tolerance of an equilibrium: a rate below `EQUILIBRIUM_TOLERANCE · (1 + max|x|)`

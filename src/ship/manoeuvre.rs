@@ -995,10 +995,7 @@ impl<'a> Driver<'a> {
         let t_exec = self.manoeuvre.execute;
         let mut notes = Vec::new();
         if switches.len() < 3 {
-            let reversals = match switches.len() {
-                1 => "1 reversal".to_owned(),
-                n => format!("{n} reversals"),
-            };
+            let reversals = crate::counted(switches.len(), "reversal", "reversals");
             notes.push(format!(
                 "{reversals} by the end: the period needs three; lengthen duration_s"
             ));
