@@ -83,5 +83,5 @@ pub use inertia::{InertiaError, InertiaTensor};
 pub use integrate::{AdaptiveOptions, Dop853, Dopri5, Integrator, OdeSystem, Rk4, Statistics};
 pub use models::{AnyModel, Constant, Loads, Model};
 pub use pendulum::PendulumParameters;
-pub use short::{Short, counted};
+pub use short::{Short, counted, fixed};
 pub use validate::ParameterError;

@@ -50,6 +50,21 @@ pub fn counted(n: usize, one: &str, many: &str) -> String {
     format!("{n} {}", if n == 1 { one } else { many })
 }
 
+/// `x` with `decimals` decimals, without the sign of a value that rounds to zero: a figure
+/// printed in a fixed column reads `0.000`, never `-0.000`.
+///
+/// ```
+/// assert_eq!(eom::fixed(-2.5e-14, 3), "0.000");
+/// assert_eq!(eom::fixed(-0.0006, 3), "-0.001");
+/// ```
+pub fn fixed(x: f64, decimals: usize) -> String {
+    let text = format!("{x:.decimals$}");
+    match text.strip_prefix('-') {
+        Some(unsigned) if unsigned.chars().all(|c| c == '0' || c == '.') => unsigned.to_owned(),
+        _ => text,
+    }
+}
+
 /// `1.500` → `1.5`, `20.000` → `20`; a number without a decimal point as it is.
 fn trim_zeros(text: &str) -> &str {
     match text.contains('.') {
@@ -60,7 +75,15 @@ fn trim_zeros(text: &str) -> &str {
 
 #[cfg(test)]
 mod tests {
-    use super::Short;
+    use super::{Short, fixed};
+
+    #[test]
+    fn a_value_that_rounds_to_zero_is_printed_without_its_sign() {
+        assert_eq!(fixed(-2.5e-14, 3), "0.000");
+        assert_eq!(fixed(-0.0, 2), "0.00");
+        assert_eq!(fixed(-0.0006, 3), "-0.001");
+        assert_eq!(fixed(-5.3164, 4), "-5.3164");
+    }
 
     #[test]
     fn at_most_six_significant_digits_at_every_scale() {

@@ -13,7 +13,6 @@
 use super::run::{Interrupted, signal_received};
 use anyhow::{Context, Result};
 use eom::Model;
-use eom::Short;
 use eom::output::summary::write_atomically;
 use eom::output::text::printable;
 use eom::output::trajectory::{Columns, TrajectoryWriter};
@@ -35,6 +34,7 @@ use eom::ship::summary::{
     ShipSummary, nomoto_difference,
 };
 use eom::ship::{Manoeuvre, ShipError, ShipModel, ShipScene};
+use eom::{Short, fixed};
 use eom_cli::plots::Mark;
 use eom_cli::plots::curves::{Curve, Curves, write_curves};
 use eom_cli::plots::ship::{Hull, ManoeuvrePlot, write_manoeuvre_plots};
@@ -758,15 +758,6 @@ fn print_steady(steady: &SteadyTurns) {
         if !steady.spans_range() {
             println!("      the curve's {end} end: {why}");
         }
-    }
-}
-
-/// `value` to `decimals` places, with no sign on a zero (`-0.0000` is `0.0000`).
-fn fixed(value: f64, decimals: usize) -> String {
-    let text = format!("{value:.decimals$}");
-    match text.strip_prefix('-') {
-        Some(digits) if digits.chars().all(|c| c == '0' || c == '.') => digits.to_owned(),
-        _ => text,
     }
 }
 

@@ -12,7 +12,6 @@
 
 use super::run::{Interrupted, signal_received};
 use anyhow::{Context, Result};
-use eom::Model;
 use eom::output::summary::write_atomically;
 use eom::output::text::printable;
 use eom::output::trajectory::{Columns, TrajectoryWriter};
@@ -25,6 +24,7 @@ use eom::vehicle::summary::{
 };
 use eom::vehicle::trial::{Plane, TrialFigures, largest_trial_difference};
 use eom::vehicle::{VehicleError, VehicleScene, format_folded};
+use eom::{Model, fixed};
 use eom::{Short, counted};
 use eom_cli::plots::Mark;
 use eom_cli::plots::vehicle::{VehiclePlot, write_vehicle_plots};
@@ -338,28 +338,5 @@ fn print_trial(trial: &TrialFigures) {
                 ),
             }
         }
-    }
-}
-
-/// `x` with `decimals` decimals, without the sign of a value that rounds to zero (`-0.000` is
-/// `0.000`).
-fn fixed(x: f64, decimals: usize) -> String {
-    let text = format!("{x:.decimals$}");
-    match text.strip_prefix('-') {
-        Some(unsigned) if unsigned.chars().all(|c| c == '0' || c == '.') => unsigned.to_owned(),
-        _ => text,
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::fixed;
-
-    #[test]
-    fn a_value_that_rounds_to_zero_is_printed_without_its_sign() {
-        assert_eq!(fixed(-2.5e-14, 3), "0.000");
-        assert_eq!(fixed(-0.0, 2), "0.00");
-        assert_eq!(fixed(-0.0006, 3), "-0.001");
-        assert_eq!(fixed(-5.3164, 4), "-5.3164");
     }
 }
