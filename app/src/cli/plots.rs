@@ -4,12 +4,19 @@ use anyhow::{Context, Result};
 use eom::models::{Family, Kinematics};
 use eom::output::trajectory::Columns;
 use eom::scene::{Body, Scene, euler_angles};
-use eom_cli::plots::{PlotInput, Polhode, in_principal_axes, write_plots};
+use eom_cli::plots::{PlotInput, Polhode, in_principal_axes, not_drawn, write_plots};
 use std::path::{Path, PathBuf};
 
-/// Draws the state, the attitude, the track (and a spatial body's profile), the energy drift and, for a spatial body free of
-/// moments about G, the polhode of a run into `out`, under `title`.
-pub fn write(scene: &Scene, title: &str, columns: &Columns, out: &Path) -> Result<Vec<PathBuf>> {
+/// Draws the state, the attitude, the track (and a spatial body's profile), the energy drift
+/// and, for a spatial body free of moments about G, the polhode of a run into `out`, under
+/// `title`. Returns the files written and, for a plot left out although the run has its data,
+/// why.
+pub fn write(
+    scene: &Scene,
+    title: &str,
+    columns: &Columns,
+    out: &Path,
+) -> Result<(Vec<PathBuf>, Vec<String>)> {
     let names = scene.state_names();
     let info = scene.selection.info;
     let attitude = match (info.family, info.kinematics) {
@@ -58,7 +65,9 @@ pub fn write(scene: &Scene, title: &str, columns: &Columns, out: &Path) -> Resul
             omega: [w1, w2, w3],
         }),
     };
-    write_plots(out, &input).with_context(|| format!("drawing the plots into {}", out.display()))
+    let written = write_plots(out, &input)
+        .with_context(|| format!("drawing the plots into {}", out.display()))?;
+    Ok((written, not_drawn(&input)))
 }
 
 /// Roll, pitch and yaw in degrees of every kept row, the attitude from state entry `first`.

@@ -445,6 +445,8 @@ fn writable_folder(out: &Path) -> Result<(), FolderError> {
 struct Outcome {
     report: Report,
     files: Vec<PathBuf>,
+    /// The plots left out although the run has their data, each with why.
+    not_drawn: Vec<String>,
     /// The family's own figures ([`family_measures`]), or why each is not given.
     measures: Vec<(&'static str, Result<f64, String>)>,
 }
@@ -522,6 +524,7 @@ fn run_case(
         .write(&summary_path)
         .with_context(|| format!("writing {}", summary_path.display()))?;
     let mut files = vec![csv_path, summary_path];
+    let mut not_drawn = Vec::new();
     // A plot needs two rows; a run stopped at its start has at most one.
     if columns.time.len() >= 2 {
         // A sweep case's plots say its values; its summary keeps the scene's title exactly
@@ -530,7 +533,9 @@ fn run_case(
             Some(case) => format!("{} — {}", scene.title, case.label()),
             None => scene.title.clone(),
         };
-        files.extend(super::plots::write(scene, &title, &columns, out)?);
+        let (plots, left_out) = super::plots::write(scene, &title, &columns, out)?;
+        files.extend(plots);
+        not_drawn = left_out;
         files.push(super::view::write(scene, &columns, out)?);
     }
     if let Some(signal) = interrupted {
@@ -561,6 +566,7 @@ fn run_case(
     Ok(Outcome {
         report,
         files,
+        not_drawn,
         measures,
     })
 }
@@ -702,6 +708,9 @@ fn print_outcome(scene: &Scene, outcome: &Outcome, out: &Path) {
             file.file_name()
                 .map_or_else(String::new, |f| f.to_string_lossy().into_owned())
         );
+    }
+    for reason in &outcome.not_drawn {
+        println!("    ({reason})");
     }
     if let Some(view) = outcome
         .files

@@ -4,7 +4,9 @@
 //! that a loop about δ = 0, r = 0 shows where it sits.
 
 use super::scale::{axis_range, tick_label};
-use super::{COLOURS, FONT, LABEL_FONT, PlotError, TITLE_FONT, WIDTH, emit, render};
+use super::{
+    COLOURS, FONT, LABEL_FONT, PlotError, TITLE_FONT, WIDTH, emit, fitted_caption, render,
+};
 use eom::output::text::printable;
 use plotters::prelude::*;
 use std::path::{Path, PathBuf};
@@ -46,11 +48,11 @@ pub fn write_curves(dir: &Path, file: &str, plot: &Curves) -> Result<PathBuf, Pl
     let ticks = 8;
     let x_label = |v: &f64| tick_label(*v, x, ticks);
     let y_label = |v: &f64| tick_label(*v, y, ticks);
-    let caption = printable(plot.caption);
+    let (caption, caption_size) = fitted_caption(&printable(plot.caption), TITLE_FONT, WIDTH);
     emit(dir, file, |svg| {
         render(svg, (WIDTH, 560), |root, _| {
             let mut chart = ChartBuilder::on(root)
-                .caption(&caption, (FONT, TITLE_FONT))
+                .caption(&caption, (FONT, caption_size))
                 .margin(16)
                 .x_label_area_size(48)
                 .y_label_area_size(80)

@@ -4,7 +4,7 @@
 use super::precise::PixelFrame;
 use super::scale::{bounded, decimate, extent, tick_label};
 use super::series::time_range;
-use super::{COLOURS, DrawError, FONT, LABEL_FONT, TITLE_FONT, WIDTH, render};
+use super::{COLOURS, DrawError, FONT, LABEL_FONT, TITLE_FONT, WIDTH, fitted_caption, render};
 use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint, KeyPointWeight};
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
@@ -101,7 +101,11 @@ pub(super) fn draw_energy(
         .iter()
         .filter(|d| d.is_finite())
         .fold(0.0f64, |m, d| m.max(d.abs()));
-    let caption = format!("{title}: relative energy drift, largest |ΔE/E₀| = {largest:.1e}");
+    let (caption, caption_size) = fitted_caption(
+        &format!("{title}: relative energy drift, largest |ΔE/E₀| = {largest:.1e}"),
+        TITLE_FONT,
+        WIDTH,
+    );
     render(svg, size, |root, overlay| {
         let windows = size.0 as usize;
         let finite = |i: usize| time[i].is_finite() && drift[i].is_finite();
@@ -122,7 +126,7 @@ pub(super) fn draw_energy(
         let x_label = |v: &f64| tick_label(*v, time_range, time_ticks);
         let y_label = |d: &f64| decade_label(*d);
         let mut chart = ChartBuilder::on(root)
-            .caption(&caption, (FONT, TITLE_FONT))
+            .caption(&caption, (FONT, caption_size))
             .margin(12)
             .x_label_area_size(52)
             .y_label_area_size(96)

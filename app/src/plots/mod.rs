@@ -165,7 +165,8 @@ pub const PLOT_FILES: [&str; 6] = [STATE, ATTITUDE, TRACK, ENERGY, POLHODE, PROF
 /// Draws every plot the input has data for into `dir` and returns the files written:
 /// `state.svg`, `attitude.svg`, `track.svg`, `energy.svg`, `polhode.svg`, `profile.svg`.
 ///
-/// `state.svg` is written when the input has a state component, `profile.svg` when the track
+/// `state.svg` is written when the input has a state component, `track.svg` when it has a
+/// track that is more than one point (see [`not_drawn`]), `profile.svg` when the track
 /// and the depth leave the horizontal plane (z varies by more than 1 % of the larger of the x
 /// and y spans), the others when their `Option`
 /// is `Some`; each replaces a file of the same name. `dir` must exist. Every column's
@@ -188,7 +189,9 @@ pub fn write_plots(dir: &Path, input: &PlotInput) -> Result<Vec<PathBuf>, PlotEr
             draw_attitude(svg, input.title, input.time, angles)
         })?);
     }
-    if let Some((x, y)) = input.track {
+    if let Some((x, y)) = input.track
+        && track::stays_at(x, y).is_none()
+    {
         let caption = format!("{}: track in space axes", input.title);
         let axes = ("x [m]", "y [m]");
         written.push(emit(dir, TRACK, |svg| {
@@ -213,6 +216,23 @@ pub fn write_plots(dir: &Path, input: &PlotInput) -> Result<Vec<PathBuf>, PlotEr
         })?);
     }
     Ok(written)
+}
+
+/// The plots [`write_plots`] leaves out although `input` has their data, each with why: the
+/// track of a body that does not translate (x and y one point to round-off, as a body turning
+/// in place), which would be an empty frame.
+pub fn not_drawn(input: &PlotInput) -> Vec<String> {
+    let still = input.track.and_then(|(x, y)| track::stays_at(x, y));
+    still
+        .map(|(x, y)| {
+            format!(
+                "{TRACK} not drawn: the body does not translate, it stays at ({}, {}) m",
+                eom::Short(x),
+                eom::Short(y)
+            )
+        })
+        .into_iter()
+        .collect()
 }
 
 /// Checks that every column has one value per sample time.
@@ -341,6 +361,42 @@ const TITLE_FONT: u32 = 22;
 const PANEL_FONT: u32 = 18;
 /// Tick labels, axis labels and legends: 12.1 px, the smallest that reads at a glance.
 const LABEL_FONT: u32 = 15;
+
+/// A caption as it is drawn across `width` pixels: at `largest` if it fits, else at the
+/// panels' and then the labels' size, and a caption too long even at that keeps its start and
+/// what the plot is (the text after its last ": ") with "…" between, so that a long scene
+/// title is never cut off at the plot's edge. The full title is in the run's summary.
+///
+/// The width is estimated at 0.6 em a character (plotters' SVG backend writes a font of size s
+/// as s/1.24 px), wider than sans-serif's average, with 24 px of margin.
+fn fitted_caption(caption: &str, largest: u32, width: u32) -> (String, u32) {
+    let fits = |size: u32| ((f64::from(width) - 24.0) / (0.6 * f64::from(size) / 1.24)) as usize;
+    let length = caption.chars().count();
+    for size in [TITLE_FONT, PANEL_FONT, LABEL_FONT] {
+        if size <= largest && length <= fits(size) {
+            return (caption.to_string(), size);
+        }
+    }
+    let size = LABEL_FONT.min(largest);
+    (shortened(caption, fits(size)), size)
+}
+
+/// `caption` in at most `room` characters: its start, "…", and its end from the last ": ".
+fn shortened(caption: &str, room: usize) -> String {
+    let chars: Vec<char> = caption.chars().collect();
+    let tail_start = caption
+        .rfind(": ")
+        .map(|byte| caption[..byte].chars().count())
+        .filter(|&start| chars.len() - start < room / 2)
+        .unwrap_or(chars.len());
+    let tail = &chars[tail_start..];
+    let head = room.saturating_sub(tail.len() + 1);
+    chars[..head]
+        .iter()
+        .chain(std::iter::once(&'…'))
+        .chain(tail)
+        .collect()
+}
 
 #[cfg(test)]
 mod tests {
@@ -520,6 +576,63 @@ mod tests {
     }
 
     #[test]
+    fn a_long_title_is_fitted_to_the_plot_not_cut_off_at_its_edge() {
+        let folder = Folder::new("long-title");
+        let run = Run::spatial(1_000);
+        let title = "A REMUS 100 with 6.5 kg of payload forward of its centre of buoyancy, \
+                     trimmed nose-down at 1.5 m/s, on Prestero's table with the fins at 15°";
+        let written = write_plots(&folder.0, &run.input(title, true)).unwrap();
+        assert_eq!(written.len(), 4);
+        for file in written {
+            let svg = Svg::read(&file);
+            let captions = svg.elements("text", |n| {
+                let size: f64 = n.attribute("font-size").unwrap_or("0").parse().unwrap();
+                (n.text().unwrap_or("").trim().to_string(), size)
+            });
+            let (caption, size) = captions
+                .iter()
+                .find(|(text, _)| text.starts_with("A REMUS 100"))
+                .unwrap_or_else(|| panic!("{}: no caption in {captions:?}", file.display()));
+            // Drawn within the width at 0.6 em a character, the estimate `fitted_caption`
+            // makes (sans-serif's average character is narrower).
+            let drawn = caption.chars().count() as f64 * 0.6 * size;
+            assert!(
+                drawn <= f64::from(WIDTH) - 24.0,
+                "{}: {caption:?} at {size} px is {drawn:.0} px wide",
+                file.display()
+            );
+            // Shortened in the title, so that what the plot is stays legible.
+            assert!(caption.contains('…'), "{caption}");
+            let what = file.file_stem().unwrap().to_str().unwrap();
+            let what = if what == "track" {
+                "track in space axes"
+            } else {
+                what
+            };
+            assert!(caption.contains(what), "{}: {caption}", file.display());
+        }
+    }
+
+    #[test]
+    fn a_caption_that_fits_is_kept_whole_at_the_largest_size_it_fits() {
+        assert_eq!(
+            fitted_caption("tennis racket: state", TITLE_FONT, WIDTH),
+            ("tennis racket: state".to_string(), TITLE_FONT)
+        );
+        let long = "x".repeat(90);
+        assert_eq!(
+            fitted_caption(&long, TITLE_FONT, WIDTH),
+            (long.clone(), PANEL_FONT)
+        );
+        assert_eq!(fitted_caption(&long, PANEL_FONT, WIDTH).1, PANEL_FONT);
+        let longer = format!("{}: attitude", "y".repeat(300));
+        let (shortened, size) = fitted_caption(&longer, TITLE_FONT, WIDTH);
+        assert_eq!(size, LABEL_FONT);
+        assert!(shortened.ends_with("…: attitude"), "{shortened}");
+        assert!(shortened.starts_with("yyy"), "{shortened}");
+    }
+
+    #[test]
     fn writes_the_four_plots_with_their_series_and_titles() {
         let folder = Folder::new("four");
         let run = Run::spatial(100_000);
@@ -554,7 +667,7 @@ mod tests {
         assert_eq!(attitude.series().len(), 3);
         let texts = attitude.texts();
         for text in [
-            "tennis racket: attitude (Euler angles, continuous: no wraps)",
+            "tennis racket: attitude (Euler angles, continuous, no wraps)",
             "roll φ",
             "pitch θ",
             "yaw ψ",
@@ -827,21 +940,19 @@ mod tests {
         let folder = Folder::new("profile");
         let mut run = Run::spatial(2_000);
         let still = vec![0.0; 2_000];
-        // Turning in place: the track is a point, said so, with nothing drawn on it.
+        // Turning in place: the track is a point, not drawn as an empty frame, and said so.
         let mut input = run.input("in place", true);
         input.track = Some((&still, &still));
         input.depth = Some(&still);
         let written = write_plots(&folder.0, &input).unwrap();
         assert!(!written.contains(&folder.0.join("profile.svg")));
-        let track = Svg::read(&folder.0.join("track.svg"));
-        assert!(track.series().is_empty());
-        assert!(track.elements("circle", |_| ()).is_empty());
-        let caption = "in place: track in space axes: a single point throughout, (0, 0) m";
-        assert!(
-            track.texts().contains(&caption.to_string()),
-            "{:?}",
-            track.texts()
+        assert!(!written.contains(&folder.0.join("track.svg")));
+        assert!(!folder.0.join("track.svg").exists());
+        assert_eq!(
+            not_drawn(&input),
+            ["track.svg not drawn: the body does not translate, it stays at (0, 0) m"]
         );
+        assert!(not_drawn(&run.input("circle", true)).is_empty());
 
         // Climbing 30 m on the 50 m circle (3 % of its 100 m span): a profile, the height
         // against the distance run, which ends at 1/10 of the circumference.

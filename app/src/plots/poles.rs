@@ -4,7 +4,9 @@
 //! ring, "grows" in the legend), so that a reader sees which modes made the verdict.
 
 use super::scale::tick_label;
-use super::{COLOURS, FONT, LABEL_FONT, PlotError, TITLE_FONT, WIDTH, emit, render};
+use super::{
+    COLOURS, FONT, LABEL_FONT, PlotError, TITLE_FONT, WIDTH, emit, fitted_caption, render,
+};
 use plotters::prelude::*;
 use std::path::{Path, PathBuf};
 
@@ -35,11 +37,15 @@ pub fn write_pole_plot(
     let range = (-half, half);
     let ticks = 8;
     let label = |v: &f64| tick_label(*v, range, ticks);
-    let caption = format!("{title}: poles (eigenvalues of A)");
+    let (caption, caption_size) = fitted_caption(
+        &format!("{title}: poles (eigenvalues of A)"),
+        TITLE_FONT,
+        WIDTH,
+    );
     emit(dir, POLES, |svg| {
         render(svg, (WIDTH, WIDTH), |root, _| {
             let mut chart = ChartBuilder::on(root)
-                .caption(&caption, (FONT, TITLE_FONT))
+                .caption(&caption, (FONT, caption_size))
                 .margin(16)
                 .x_label_area_size(48)
                 .y_label_area_size(72)

@@ -18,7 +18,10 @@
 
 use super::precise::{Overlay, PixelFrame};
 use super::scale::{bounded, decimate, extent, tick_label};
-use super::{Area, COLOURS, DrawError, FONT, LABEL_FONT, PANEL_FONT, TITLE_FONT, WIDTH, render};
+use super::{
+    Area, COLOURS, DrawError, FONT, LABEL_FONT, PANEL_FONT, TITLE_FONT, WIDTH, fitted_caption,
+    render,
+};
 use eom::InertiaTensor;
 use eom::Short;
 use plotters::prelude::*;
@@ -247,7 +250,8 @@ pub(super) fn draw_polhode(
 ) -> Result<(), DrawError> {
     let figure = Figure::new(title, polhode);
     render(svg, (WIDTH, WIDTH), |root, overlay| {
-        let body = root.titled(&figure.caption, (FONT, TITLE_FONT))?;
+        let (caption, size) = fitted_caption(&figure.caption, TITLE_FONT, WIDTH);
+        let body = root.titled(&caption, (FONT, size))?;
         let cells = body.split_evenly((2, 2));
         for (area, projection) in cells.iter().zip(PROJECTIONS) {
             draw_projection(area, overlay, &figure, projection)?;
@@ -298,9 +302,10 @@ fn projection_builder<'a, 'b>(
     area: &'a Area<'b>,
     caption: &str,
 ) -> ChartBuilder<'a, 'b, SVGBackend<'b>> {
+    let (caption, size) = fitted_caption(caption, PANEL_FONT, area.dim_in_pixel().0);
     let mut builder = ChartBuilder::on(area);
     builder
-        .caption(caption, (FONT, PANEL_FONT))
+        .caption(caption, (FONT, size))
         .margin(8)
         .x_label_area_size(52)
         .y_label_area_size(76);

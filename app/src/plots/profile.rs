@@ -10,7 +10,9 @@
 
 use super::precise::{Overlay, PixelFrame};
 use super::scale::{axis_range, bounded, decimate, extent, tick_label};
-use super::{Area, COLOURS, DrawError, FONT, LABEL_FONT, TITLE_FONT, WIDTH, render};
+use super::{
+    Area, COLOURS, DrawError, FONT, LABEL_FONT, TITLE_FONT, WIDTH, fitted_caption, render,
+};
 use plotters::prelude::*;
 
 /// How much z must vary, as a fraction of the horizontal extent, for a profile to be drawn.
@@ -119,8 +121,9 @@ fn draw_panel(area: &Area, overlay: &mut Overlay, panel: &Panel) -> Result<(), D
     let ticks = (8, 6);
     let x_label = |v: &f64| tick_label(*v, x_range, ticks.0);
     let y_label = |v: &f64| tick_label(*v, y_range, ticks.1);
+    let (caption, size) = fitted_caption(&panel.caption, TITLE_FONT, area.dim_in_pixel().0);
     let mut chart = ChartBuilder::on(area)
-        .caption(&panel.caption, (FONT, TITLE_FONT))
+        .caption(caption, (FONT, size))
         .margin(12)
         .x_label_area_size(52)
         .y_label_area_size(84)

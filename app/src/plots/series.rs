@@ -4,7 +4,8 @@
 use super::precise::{Overlay, PixelFrame};
 use super::scale::{axis_range, bounded, decimate, extent, tick_label};
 use super::{
-    Area, COLOURS, DrawError, FONT, LABEL_FONT, PANEL_FONT, PlotInput, TITLE_FONT, WIDTH, render,
+    Area, COLOURS, DrawError, FONT, LABEL_FONT, PANEL_FONT, PlotInput, TITLE_FONT, WIDTH,
+    fitted_caption, render,
 };
 use eom::models::state_unit;
 use plotters::prelude::*;
@@ -79,8 +80,10 @@ pub(super) fn time_panel(
     let x_label = |v: &f64| tick_label(*v, time_range, style.time_ticks);
     let y_label = |v: &f64| tick_label(*v, value_range, value_ticks);
 
+    let (caption, caption_size) =
+        fitted_caption(style.caption, style.caption_size, area.dim_in_pixel().0);
     let mut chart = ChartBuilder::on(area)
-        .caption(style.caption, (FONT, style.caption_size))
+        .caption(caption, (FONT, caption_size))
         .margin(8)
         .x_label_area_size(if style.time_desc { 50 } else { 24 })
         .y_label_area_size(if style.y_desc.is_empty() { 80 } else { 96 })
@@ -179,7 +182,8 @@ pub(super) fn draw_state(svg: &mut String, input: &PlotInput) -> Result<(), Draw
         ),
     };
     render(svg, size, |root, overlay| {
-        let body = root.titled(&caption, (FONT, TITLE_FONT))?;
+        let (caption, size) = fitted_caption(&caption, TITLE_FONT, WIDTH);
+        let body = root.titled(&caption, (FONT, size))?;
         let panels = body.split_evenly((rows, columns));
         for (&(name, values), area) in shown.iter().zip(&panels) {
             let y_desc = match state_unit(name) {
@@ -250,7 +254,7 @@ pub(super) fn draw_attitude(
 ) -> Result<(), DrawError> {
     let unwrapped = continuous_euler_deg(angles);
     render(svg, (WIDTH, 420), |root, overlay| {
-        let caption = format!("{title}: attitude (Euler angles, continuous: no wraps)");
+        let caption = format!("{title}: attitude (Euler angles, continuous, no wraps)");
         let style = PanelStyle {
             caption: &caption,
             caption_size: TITLE_FONT,

@@ -6,19 +6,11 @@
 
 use super::precise::PixelFrame;
 use super::scale::{axis_range, bounded, decimate, extent, tick_label};
-use super::{Area, COLOURS, DrawError, FONT, LABEL_FONT, PANEL_FONT, TITLE_FONT, WIDTH, render};
+use super::{
+    Area, COLOURS, DrawError, FONT, LABEL_FONT, TITLE_FONT, WIDTH, fitted_caption, render,
+};
 use eom::Short;
 use plotters::prelude::*;
-
-/// The caption's font: the title's, or a panel title's for a caption too long to fit at it
-/// (about 0.55 em a character).
-fn title_font(caption: &str) -> u32 {
-    if caption.chars().count() > 64 {
-        PANEL_FONT
-    } else {
-        TITLE_FONT
-    }
-}
 
 /// Where the legend covers the fewest of the track's points and marks: a corner, or the
 /// middle (inside a turning circle). A candidate's box is taken as 45 % of the width by 30 %
@@ -72,13 +64,27 @@ fn track_builder<'a, 'b>(
     area: &'a Area<'b>,
     caption: &str,
 ) -> ChartBuilder<'a, 'b, SVGBackend<'b>> {
+    let (caption, size) = fitted_caption(caption, TITLE_FONT, area.dim_in_pixel().0);
     let mut builder = ChartBuilder::on(area);
     builder
-        .caption(caption, (FONT, title_font(caption)))
+        .caption(caption, (FONT, size))
         .margin(12)
         .x_label_area_size(52)
         .y_label_area_size(96);
     builder
+}
+
+/// Where a track of samples `x`, `y` stays, if it is one point to round-off (see
+/// [`single_point`]); non-finite samples are left out, and a track with no finite one is
+/// not one point.
+pub(super) fn stays_at(x: &[f64], y: &[f64]) -> Option<(f64, f64)> {
+    let points: Vec<(f64, f64)> = x
+        .iter()
+        .zip(y)
+        .map(|(&x, &y)| (x, y))
+        .filter(|p| p.0.is_finite() && p.1.is_finite())
+        .collect();
+    single_point(&points).then(|| points[0])
 }
 
 /// Whether the points (some) are one point to round-off: both spans within 10⁻⁹ of the
