@@ -24,6 +24,7 @@
 //! browser can check the drawing against the trajectory.
 
 use serde::Serialize;
+use std::borrow::Cow;
 use std::path::{Path, PathBuf};
 use thiserror::Error;
 
@@ -123,7 +124,8 @@ pub struct ViewInput<'a> {
     pub position: [Vec<f64>; 3],
     /// The attitude as a unit quaternion (q0 scalar), body to space axes, one column each.
     pub attitude: [Vec<f64>; 4],
-    /// The state shown in the panel: each name with its unit, and its values.
+    /// The state shown in the panel: each name with its unit, and its values. An angle labelled
+    /// `[rad]` is shown in degrees, a heading wrapped as a compass reads (see `shown`).
     pub readout: Vec<(String, &'a [f64])>,
     /// ω and H, for a body that spins freely or on a pivot.
     pub vectors: Option<Vectors>,
@@ -258,7 +260,7 @@ fn render_view(input: &ViewInput) -> Result<String, Problem> {
         shape: &input.shape,
         axes: input.axes,
         rows: rows.len(),
-        readout: input.readout.iter().map(|(n, _)| n.as_str()).collect(),
+        readout: columns[8..].iter().map(|(n, _)| n.as_str()).collect(),
         data: base64(&pack(&columns, &rows)),
         vectors: input.vectors.as_ref().map(|v| VectorsJson {
             omega: v.omega,
@@ -288,19 +290,39 @@ fn render_view(input: &ViewInput) -> Result<String, Problem> {
     Ok(TEMPLATE.replace("/*EOM-DATA*/", &json))
 }
 
-/// Every column in the order the page reads them: t, position, quaternion, readout.
-fn all_columns<'a>(input: &'a ViewInput) -> Vec<(String, &'a [f64])> {
-    let mut columns = vec![("t".to_string(), input.time)];
+/// Every column in the order the page reads them: t, position, quaternion, then the readout
+/// as the panel shows it ([`shown`]).
+fn all_columns<'a>(input: &'a ViewInput) -> Vec<(String, Cow<'a, [f64]>)> {
+    let mut columns = vec![("t".to_string(), Cow::Borrowed(input.time))];
     for (name, column) in ["x", "y", "z"].iter().zip(&input.position) {
-        columns.push((format!("position {name}"), column.as_slice()));
+        columns.push((format!("position {name}"), Cow::Borrowed(column.as_slice())));
     }
     for (name, column) in ["q0", "q1", "q2", "q3"].iter().zip(&input.attitude) {
-        columns.push((format!("attitude {name}"), column.as_slice()));
+        columns.push((format!("attitude {name}"), Cow::Borrowed(column.as_slice())));
     }
     for (name, column) in &input.readout {
-        columns.push((name.clone(), column));
+        columns.push(shown(name, column));
     }
     columns
+}
+
+/// A readout column as a person reads it: an angle (a name labelled `[rad]`) in degrees, and
+/// a heading or yaw (ψ, `psi`) wrapped into [−180°, 180°) as a compass reads; any other column
+/// as it is. The rates stay in rad/s: the page draws ω from them.
+fn shown<'a>(label: &str, values: &'a [f64]) -> (String, Cow<'a, [f64]>) {
+    let Some(name) = label.strip_suffix("[rad]") else {
+        return (label.to_string(), Cow::Borrowed(values));
+    };
+    let heading = matches!(name.trim(), "psi" | "ψ" | "yaw");
+    let degrees = values.iter().map(|&angle| {
+        let deg = angle.to_degrees();
+        if heading {
+            (deg + 180.0).rem_euclid(360.0) - 180.0
+        } else {
+            deg
+        }
+    });
+    (format!("{name}[deg]"), Cow::Owned(degrees.collect()))
 }
 
 /// The rows embedded out of `len`: all of them up to [`MAX_FRAMES`], else that many evenly
@@ -316,7 +338,7 @@ pub fn frame_rows(len: usize) -> Vec<usize> {
 }
 
 /// The chosen rows of every column as little-endian f32, column after column.
-fn pack(columns: &[(String, &[f64])], rows: &[usize]) -> Vec<u8> {
+fn pack(columns: &[(String, Cow<[f64]>)], rows: &[usize]) -> Vec<u8> {
     let mut bytes = Vec::with_capacity(columns.len() * rows.len() * 4);
     for (_, column) in columns {
         for &row in rows {
@@ -411,6 +433,28 @@ mod tests {
         assert!((50.0 * r * r / 2.0 - 2.0).abs() < 1e-12);
         assert!((50.0 * (3.0 * r * r + length * length) / 12.0 - 12.0).abs() < 1e-12);
         assert!(cylinder_size(1.0, 10.0, 1.0).is_none());
+    }
+
+    #[test]
+    fn the_panel_reads_angles_in_degrees_and_a_heading_as_a_compass() {
+        // A ship's heading after one and a quarter turns to starboard, and a vehicle's.
+        let turned = [0.0, 1.25 * std::f64::consts::TAU, -4.0];
+        for label in ["psi[rad]", "psi [rad]"] {
+            let (name, values) = shown(label, &turned);
+            assert_eq!(name, label.replace("rad", "deg"));
+            let expected = [0.0, 90.0, 360.0 - 4f64.to_degrees()];
+            for (v, e) in values.iter().zip(expected) {
+                assert!((v - e).abs() < 1e-9, "{values:?}");
+            }
+        }
+        // Pitch and the rudder in degrees, not wrapped; a rate and a length as they are.
+        let (name, values) = shown("delta[rad]", &[-0.6108652381980153, 7.0]);
+        assert_eq!(name, "delta[deg]");
+        assert!((values[0] + 35.0).abs() < 1e-12 && (values[1] - 7f64.to_degrees()).abs() < 1e-9);
+        for label in ["r[rad/s]", "x [m]", "q0 [-]"] {
+            let (name, values) = shown(label, &turned);
+            assert_eq!((name.as_str(), &values[..]), (label, &turned[..]));
+        }
     }
 
     #[test]
