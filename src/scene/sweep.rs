@@ -198,16 +198,29 @@ impl Axis {
     fn get(&self, i: usize) -> Value {
         match self {
             Axis::List(values) => values[i].clone(),
-            Axis::Range { from, to, count } => {
-                let step = (to - from) / (count - 1) as f64;
-                Value::Float(if i + 1 == *count {
-                    *to
-                } else {
-                    from + step * i as f64
-                })
-            }
+            Axis::Range { from, to, count } => Value::Float(range_point(*from, *to, *count, i)),
         }
     }
+}
+
+/// Point `i` of `count` evenly spaced from `from` to `to`, the ends exactly as written: the
+/// decimal of fewest significant digits within 10⁻¹² of a step of the evenly spaced point, so
+/// that 0 to 1 in 11 gives 0.3 as the user means it, not the 0.30000000000000004 that
+/// `0 + 3·0.1` rounds to (a label, a sweep.csv column and the case's scene all read it).
+fn range_point(from: f64, to: f64, count: usize, i: usize) -> f64 {
+    if i == 0 {
+        return from;
+    }
+    if i + 1 == count {
+        return to;
+    }
+    let intervals = (count - 1) as f64;
+    let even = from + (to - from) * (i as f64 / intervals);
+    let tolerance = 1e-12 * ((to - from) / intervals).abs();
+    (0..17)
+        .filter_map(|decimals| format!("{even:.decimals$e}").parse::<f64>().ok())
+        .find(|decimal| (decimal - even).abs() <= tolerance)
+        .unwrap_or(even)
 }
 
 /// `{ from, to, count }`: finite ends and an integer count of at least 2.
@@ -375,6 +388,36 @@ end_time = 1.0
             ]
         );
         assert!(cases.iter().enumerate().all(|(i, c)| c.index == i));
+    }
+
+    #[test]
+    fn a_range_gives_the_decimals_the_user_means_and_its_ends_as_written() {
+        let points = |from, to, count| -> Vec<f64> {
+            (0..count)
+                .map(|i| range_point(from, to, count, i))
+                .collect()
+        };
+        let tenths: Vec<f64> = (0..=10).map(|k| f64::from(k) / 10.0).collect();
+        assert_eq!(points(0.0, 1.0, 11), tenths);
+        assert_eq!(points(0.0, 0.3, 4), [0.0, 0.1, 0.2, 0.3]);
+        assert_eq!(points(0.0, 30.0, 5), [0.0, 7.5, 15.0, 22.5, 30.0]);
+        assert_eq!(points(-35.0, 35.0, 3), [-35.0, 0.0, 35.0]);
+        // Thirds have no short decimal: within 10⁻¹² of a step of the even point, itself within
+        // a rounding of k/3 (so 2·10⁻¹² of a step of k/3 is asked here).
+        let thirds = points(0.0, 1.0, 4);
+        for (k, point) in thirds.iter().enumerate() {
+            assert!((point - k as f64 / 3.0).abs() <= 2e-12 / 3.0, "{thirds:?}");
+        }
+        // Ends exactly as written, whatever they are.
+        assert_eq!(points(0.1 + 0.2, 1e-300, 3)[0], 0.1 + 0.2);
+        assert_eq!(points(0.1 + 0.2, 1e-300, 3)[2], 1e-300);
+        let text = SCENE.replace(
+            "from = 10.0, to = 30.0, count = 3",
+            "from = 0.0, to = 1.0, count = 11",
+        );
+        let cases = cases(&text, "s.toml").unwrap();
+        assert_eq!(cases[3].file.initial.theta_deg, Some(0.3));
+        assert_eq!(cases[3].label(), "body.mass = 1.0, initial.theta_deg = 0.3");
     }
 
     #[test]
