@@ -161,9 +161,9 @@ fn mode_json(mode: &Mode) -> Value {
     })
 }
 
-/// A number to six significant digits, or `-`.
+/// A number to six decimals (no sign on a zero), or `-`.
 fn number(value: Option<f64>) -> String {
-    value.map_or_else(|| "-".into(), |v| format!("{v:.6}"))
+    value.map_or_else(|| "-".into(), |v| eom::fixed(v, 6))
 }
 
 /// The report as text, as `eom linear` prints it and `--out` keeps it.
@@ -176,7 +176,7 @@ pub fn text_report(title: &str, linear: &Linearisation) -> String {
         .iter()
         .zip(&linear.state)
         .chain(linear.input_names.iter().zip(&linear.inputs))
-        .map(|(n, v)| format!("{n} = {v:.6}"))
+        .map(|(n, v)| format!("{n} = {}", eom::fixed(*v, 6)))
         .collect();
     line(text, format!("  operating point: {}", point.join(", ")));
     let set_aside = linear.set_aside_names();
@@ -195,7 +195,7 @@ pub fn text_report(title: &str, linear: &Linearisation) -> String {
     if let Some((values, steps)) = &linear.trimmed {
         let values: Vec<String> = values
             .iter()
-            .map(|(n, v)| format!("{n} = {v:.9}"))
+            .map(|(n, v)| format!("{n} = {}", eom::fixed(*v, 9)))
             .collect();
         line(
             text,
