@@ -16,7 +16,10 @@
 //! sign, a dropped term, a wrong coefficient — leaves a residual and stops the build with the
 //! model's name and the output that differs (`tests/program_check.rs` tries every such mutant).
 
-use super::program::{Function, Node, Program};
+use std::collections::HashMap;
+use std::ops::Index;
+
+use super::program::{Function, Id, Node, Program};
 use crate::model::jacobian::expand;
 use crate::model::{BuildError, Jacobian, System};
 use crate::symbolic::{Expr, SymbolicError};
@@ -121,7 +124,7 @@ fn check_jacobian(
     system: &System,
     program: &Program,
     jacobian: &Jacobian,
-    folded: &[Expr],
+    folded: &impl Index<usize, Output = Expr>,
 ) -> Result<(), BuildError> {
     let fail = |what: String, residual: &Expr| BuildError::Verification {
         model: system.name.clone(),
@@ -179,7 +182,7 @@ fn check_opaque_stages(
     system: &System,
     program: &Program,
     jacobians: &super::program::Jacobians,
-    folded: &[Expr],
+    folded: &impl Index<usize, Output = Expr>,
 ) -> Result<(), BuildError> {
     let opaque = opaque_stages(system, program);
     for named in jacobians.state.stages.iter().chain(&jacobians.input.stages) {
@@ -257,21 +260,112 @@ pub fn fold(
 ) -> Result<Vec<Expr>, SymbolicError> {
     let mut folded: Vec<Expr> = Vec::with_capacity(program.nodes.len());
     for node in &program.nodes {
-        let value = match node {
-            Node::Variable(symbol) => Expr::symbol(symbol),
-            Node::Coefficient(index) => program.coefficients[*index].value.clone(),
-            Node::Constant(c) => Expr::constant(c.clone()),
-            Node::Sin(angle) => Expr::sin(&angle_name(program, *angle)),
-            Node::Cos(angle) => Expr::cos(&angle_name(program, *angle)),
-            Node::Recip(of) => reciprocal(system, program, &folded, *of, opaque)?,
-            Node::Neg(a) => -&folded[a.index()],
-            Node::Add(a, b) => &folded[a.index()] + &folded[b.index()],
-            Node::Sub(a, b) => &folded[a.index()] - &folded[b.index()],
-            Node::Mul(a, b) => &folded[a.index()] * &folded[b.index()],
-        };
+        let value = fold_node(system, program, node, &folded, opaque)?;
         folded.push(value);
     }
     Ok(folded)
+}
+
+/// One node as an expression, its operands' expressions taken from `folded`.
+fn fold_node(
+    system: &System,
+    program: &Program,
+    node: &Node,
+    folded: &impl Index<usize, Output = Expr>,
+    opaque: &[String],
+) -> Result<Expr, SymbolicError> {
+    Ok(match node {
+        Node::Variable(symbol) => Expr::symbol(symbol),
+        Node::Coefficient(index) => program.coefficients[*index].value.clone(),
+        Node::Constant(c) => Expr::constant(c.clone()),
+        Node::Sin(angle) => Expr::sin(&angle_name(program, *angle)),
+        Node::Cos(angle) => Expr::cos(&angle_name(program, *angle)),
+        Node::Recip(of) => reciprocal(system, program, folded, *of, opaque)?,
+        Node::Neg(a) => -&folded[a.index()],
+        Node::Add(a, b) => &folded[a.index()] + &folded[b.index()],
+        Node::Sub(a, b) => &folded[a.index()] - &folded[b.index()],
+        Node::Mul(a, b) => &folded[a.index()] * &folded[b.index()],
+    })
+}
+
+/// The operands a node reads.
+fn operands(node: &Node) -> Vec<Id> {
+    match node {
+        Node::Variable(_) | Node::Coefficient(_) | Node::Constant(_) => vec![],
+        Node::Sin(a) | Node::Cos(a) | Node::Recip(a) | Node::Neg(a) => vec![*a],
+        Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) => vec![*a, *b],
+    }
+}
+
+/// A program's fold (every node as an expression, and the stages kept as symbols), kept to
+/// check programs that differ from it in one node: a mutation test checks hundreds of them,
+/// and folding each whole would fold again every node the change does not reach.
+pub struct Folded {
+    opaque: Vec<String>,
+    nodes: Vec<Expr>,
+}
+
+impl Folded {
+    /// The fold of `program`, built from `system`.
+    pub fn of(system: &System, program: &Program) -> Result<Folded, BuildError> {
+        let opaque = opaque_stages(system, program);
+        let nodes = fold(system, program, &opaque).map_err(|source| BuildError::Symbolic {
+            model: system.name.clone(),
+            source,
+        })?;
+        Ok(Folded { opaque, nodes })
+    }
+}
+
+/// A fold read through changes: the nodes refolded after a change, the others as they were.
+struct Changed<'a> {
+    base: &'a [Expr],
+    changed: HashMap<usize, Expr>,
+}
+
+impl Index<usize> for Changed<'_> {
+    type Output = Expr;
+
+    fn index(&self, index: usize) -> &Expr {
+        self.changed.get(&index).unwrap_or(&self.base[index])
+    }
+}
+
+/// [`verify_jacobian`] of `program`, which differs from the program `base` was folded from
+/// only in node `changed`: that node and every node that reads it, directly or through
+/// others, are folded again, the rest taken from `base`. The same verdict as
+/// [`verify_jacobian`] (a changed reciprocal that changes the stages kept as symbols falls
+/// back to it).
+pub fn verify_jacobian_changed(
+    system: &System,
+    program: &Program,
+    jacobian: &Jacobian,
+    base: &Folded,
+    changed: usize,
+) -> Result<(), BuildError> {
+    if opaque_stages(system, program) != base.opaque {
+        return verify_jacobian(system, program, jacobian);
+    }
+    let mut folded = Changed {
+        base: &base.nodes,
+        changed: HashMap::new(),
+    };
+    for (index, node) in program.nodes.iter().enumerate().skip(changed) {
+        let reads_a_change = operands(node)
+            .iter()
+            .any(|id| folded.changed.contains_key(&id.index()));
+        if index == changed || reads_a_change {
+            let value =
+                fold_node(system, program, node, &folded, &base.opaque).map_err(|source| {
+                    BuildError::Symbolic {
+                        model: system.name.clone(),
+                        source,
+                    }
+                })?;
+            folded.changed.insert(index, value);
+        }
+    }
+    check_jacobian(system, program, jacobian, &folded)
 }
 
 fn angle_name(program: &Program, angle: super::program::Id) -> String {
@@ -285,7 +379,7 @@ fn angle_name(program: &Program, angle: super::program::Id) -> String {
 fn reciprocal(
     system: &System,
     program: &Program,
-    folded: &[Expr],
+    folded: &impl Index<usize, Output = Expr>,
     of: super::program::Id,
     opaque: &[String],
 ) -> Result<Expr, SymbolicError> {

@@ -11,7 +11,7 @@
 #![allow(dead_code)]
 
 use eom_codegen::emit::Program;
-use eom_codegen::emit::fold::verify_jacobian;
+use eom_codegen::emit::fold::{Folded, verify_jacobian, verify_jacobian_changed};
 use eom_codegen::emit::program::{Id, Node};
 use eom_codegen::model::{Jacobian, System};
 use num_rational::BigRational;
@@ -70,20 +70,31 @@ pub fn jacobian_mutants(system: &System, stride: usize) -> Caught {
     for (r, e) in reached.iter_mut().zip(program.reached(&jacobians.input)) {
         *r |= e;
     }
+    // Each mutant is checked against the unmutated fold, refolding only what the mutated
+    // node reaches (`verify_jacobian_changed`, the same verdict as `verify_jacobian`).
+    let folded = Folded::of(system, &program).unwrap();
+    let mut mutated = program.clone();
     let mut tried = 0;
     let nodes = (0..program.nodes.len()).filter(|&i| reached[i]);
     for index in nodes.step_by(stride) {
         for mutant in mutants(&program, index) {
-            let mut mutated = program.clone();
             mutated.nodes[index] = mutant.clone();
             tried += 1;
             assert!(
-                verify_jacobian(system, &mutated, &jacobian).is_err(),
+                verify_jacobian_changed(system, &mutated, &jacobian, &folded, index).is_err(),
                 "{}: replacing node {index} ({:?}) by {mutant:?} passed the Jacobian check",
                 system.name,
                 program.nodes[index]
             );
         }
+        mutated.nodes[index] = program.nodes[index].clone();
+        // The refolding check passes the unmutated program, read as changed at this node: it
+        // does not fail every program it is given.
+        assert!(
+            verify_jacobian_changed(system, &mutated, &jacobian, &folded, index).is_ok(),
+            "{}: the unmutated program fails the refolding check at node {index}",
+            system.name
+        );
     }
     Caught {
         tried,
