@@ -17,16 +17,20 @@
 //! - [`trim`]: Newton on the reduced state for the free variables a `[linear]` table names.
 //! - [`modes`](mod@modes): eigenvalues and eigenvectors of A, each mode's period, damping, doubling or
 //!   halving time, dominant states and a name where the family knows one.
+//! - [`state_space`]: the result as control tools read it (A, B, C, D with the names and units
+//!   of x, u and y, the point and what was set aside), for `linear.json` and `linear.mat`.
 
 pub mod modes;
 pub mod plant;
 pub mod reduce;
 mod scene;
+pub mod state_space;
 pub mod trim;
 
 pub use modes::{Mode, Naming, Stability, modes};
 pub use plant::{Evaluation, LinearPlant, Plant};
 pub use reduce::{SetAsideReason, set_aside, set_aside_why};
+pub use state_space::StateSpace;
 pub use scene::{
     LinearSpec, Linearisation, linearise, linearise_scene, resolve, resolve_aliased, set_at,
 };
