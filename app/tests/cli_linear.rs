@@ -232,7 +232,7 @@ fn every_example_scene_gets_a_verdict_that_holds() {
 /// written into `dir`: its track and heading are set aside, (u, v, r) reduced, three inputs.
 fn hull(dir: &Path, linear: &str) -> String {
     let text = format!(
-        "title = \"A damped hull\"\n[body]\nmass = 1000.0\nizz = 2.0e5\n[model]\n\
+        "title = \"A damped hull, ψ₀ = 0°\"\n[body]\nmass = 1000.0\nizz = 2.0e5\n[model]\n\
          family = \"planar-g\"\n[initial]\nu = 2.0\n[loads]\nforce_body = [200.0, 0.0]\n\
          linear_damping = [100.0, 400.0, 8.0e4]\n[integrator]\nmethod = \"dop853\"\nend_time = 1.0\n{linear}"
     );
@@ -282,7 +282,7 @@ fn out_writes_the_state_space_model_as_linear_json_beside_the_matrices() {
     let printed: Value = serde_json::from_str(&succeeded(&eom(&["linear", &scene, "--json"]))).unwrap();
     assert_eq!(model, printed);
     assert_eq!(model["scene"], scene.as_str(), "the scene file as given");
-    assert_eq!(model["title"], "A damped hull");
+    assert_eq!(model["title"], "A damped hull, ψ₀ = 0°");
     // x is the reduced state, named as A.csv's header; u the inputs, as B.csv's.
     let (a_header, a_rows) = csv(&out.join("A.csv"));
     let (b_header, b_rows) = csv(&out.join("B.csv"));
@@ -425,10 +425,13 @@ fn variable(data: &[u8]) -> (String, Variable) {
                 .map(|d| u64::from_le_bytes(d.try_into().unwrap()))
                 .collect();
         }
-        // mxCHAR_CLASS, its data miUTF8.
+        // mxCHAR_CLASS, its data miUTF16.
         4 => {
-            assert_eq!(parts[3].0, 16);
-            read.text = String::from_utf8(parts[3].1.to_vec()).unwrap();
+            assert_eq!(parts[3].0, 17);
+            let units: Vec<u16> = (parts[3].1.chunks(2))
+                .map(|d| u16::from_le_bytes(d.try_into().unwrap()))
+                .collect();
+            read.text = String::from_utf16(&units).unwrap();
         }
         // mxCELL_CLASS: a miMATRIX per cell, unnamed.
         1 => {
@@ -500,10 +503,12 @@ fn linear_mat_holds_the_same_model_for_matlab() {
         assert_eq!(texts, names(&model[key]), "{key}");
         for cell in &read.cells {
             assert_eq!(cell.class, 4);
-            assert_eq!(cell.dimensions, [1, cell.text.chars().count()]);
+            assert_eq!(cell.dimensions, [1, cell.text.encode_utf16().count()]);
         }
     }
-    assert_eq!(get("title").text, "A damped hull");
+    // A title beyond ASCII, whole: one dimension per UTF-16 unit.
+    assert_eq!(get("title").text, "A damped hull, ψ₀ = 0°");
+    assert_eq!(get("title").dimensions, [1, 22]);
     assert_eq!(get("scene").text, scene);
     assert_eq!(get("jacobians").text, model["jacobians"].as_str().unwrap());
 }

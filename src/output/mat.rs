@@ -18,10 +18,12 @@
 //!   class), the dimensions, the name and the data, column by column. A cell array's data
 //!   are `miMATRIX` elements with empty names, one per cell.
 //!
-//! Strings are written as UTF-8 (`miUTF8`), as `scipy.io.savemat` writes them, with one
-//! dimension per character: scipy reads them back exactly; `miUINT16` data, which MATLAB
-//! itself writes, scipy decodes as bytes and garbles any character beyond ASCII (a title's
-//! `°`). Every double is written as its eight bytes, so it reads back to the same bits.
+//! Strings are written as UTF-16 (`miUTF16`), one dimension per UTF-16 unit, as MATLAB counts
+//! a char array's characters. Of the encodings the format allows for character data, it is
+//! the one both scipy and Octave read back whole beyond ASCII (a title's `°`): scipy decodes
+//! `miUINT16` data as bytes and garbles such a character, and Octave reads `miUTF8` data one
+//! byte per dimension, cutting a string short by its extra bytes. Every double is written as
+//! its eight bytes, so it reads back to the same bits.
 
 use nalgebra::DMatrix;
 
@@ -54,7 +56,7 @@ mod data_type {
     pub const UINT32: u32 = 6;
     pub const DOUBLE: u32 = 9;
     pub const MATRIX: u32 = 14;
-    pub const UTF8: u32 = 16;
+    pub const UTF16: u32 = 17;
 }
 
 /// The array classes of the array flags.
@@ -128,7 +130,10 @@ fn array(name: &str, value: &MatValue) -> Option<Vec<u8>> {
             let data: Vec<u8> = matrix.iter().flat_map(|v| v.to_le_bytes()).collect();
             element(&mut body, data_type::DOUBLE, &data)?;
         }
-        MatValue::Text(text) => element(&mut body, data_type::UTF8, text.as_bytes())?,
+        MatValue::Text(text) => {
+            let data: Vec<u8> = text.encode_utf16().flat_map(u16::to_le_bytes).collect();
+            element(&mut body, data_type::UTF16, &data)?;
+        }
         MatValue::Texts(texts) => {
             for text in texts {
                 body.extend(array("", &MatValue::Text(text.clone()))?);
@@ -140,10 +145,10 @@ fn array(name: &str, value: &MatValue) -> Option<Vec<u8>> {
     Some(bytes)
 }
 
-/// A string's dimensions: one row of its characters, or 0 × 0 for the empty string (as
+/// A string's dimensions: one row of its UTF-16 units, or 0 × 0 for the empty string (as
 /// MATLAB writes `''`).
 fn text_dimensions(text: &str) -> [usize; 2] {
-    match text.chars().count() {
+    match text.encode_utf16().count() {
         0 => [0, 0],
         n => [1, n],
     }
@@ -211,14 +216,17 @@ mod tests {
         assert_eq!(word(&bytes, cell + 8 + 8), class::CHAR);
         // Its name is empty: a tag of no bytes.
         assert_eq!([word(&bytes, cell + 40), word(&bytes, cell + 44)], [1, 0]);
-        assert_eq!([word(&bytes, cell + 48), word(&bytes, cell + 52)], [16, 1]);
-        assert_eq!(bytes[cell + 56], b'u');
+        // Its text, UTF-16: one unit, two bytes.
+        assert_eq!([word(&bytes, cell + 48), word(&bytes, cell + 52)], [17, 2]);
+        assert_eq!(&bytes[cell + 56..cell + 58], b"u\0");
     }
 
     #[test]
-    fn a_string_counts_characters_not_bytes() {
+    fn a_string_counts_utf16_units_not_bytes() {
         assert_eq!(text_dimensions("+4°"), [1, 3]);
         assert_eq!(text_dimensions(""), [0, 0]);
+        // Beyond the basic plane a character is two units, as MATLAB counts it.
+        assert_eq!(text_dimensions("𝜓"), [1, 2]);
     }
 
     #[test]
