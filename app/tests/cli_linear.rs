@@ -279,7 +279,8 @@ fn out_writes_the_state_space_model_as_linear_json_beside_the_matrices() {
     let model: Value =
         serde_json::from_str(&std::fs::read_to_string(out.join("linear.json")).unwrap()).unwrap();
     // The object `--json` prints, to the last bit of every number.
-    let printed: Value = serde_json::from_str(&succeeded(&eom(&["linear", &scene, "--json"]))).unwrap();
+    let printed: Value =
+        serde_json::from_str(&succeeded(&eom(&["linear", &scene, "--json"]))).unwrap();
     assert_eq!(model, printed);
     assert_eq!(model["scene"], scene.as_str(), "the scene file as given");
     assert_eq!(model["title"], "A damped hull, ψ₀ = 0°");
@@ -315,7 +316,10 @@ fn out_writes_the_state_space_model_as_linear_json_beside_the_matrices() {
     assert_eq!(x0[0], model["operating_point"]["u"].as_f64().unwrap());
     // What was set aside, its values and why; how A and B were obtained.
     assert_eq!(names(&model["set_aside"]), ["X", "Y", "psi"]);
-    assert_eq!(model["set_aside_values"], serde_json::json!([0.0, 0.0, 0.0]));
+    assert_eq!(
+        model["set_aside_values"],
+        serde_json::json!([0.0, 0.0, 0.0])
+    );
     assert_eq!(
         names(&model["set_aside_why"]),
         ["only integrates the rest"; 3]
@@ -330,7 +334,8 @@ fn out_writes_the_state_space_model_as_linear_json_beside_the_matrices() {
 fn linear_outputs_pick_the_rows_of_c() {
     let dir = folder("linear_outputs");
     let scene = hull(&dir, "[linear]\noutputs = [\"r\", \"v\"]\n");
-    let model: Value = serde_json::from_str(&succeeded(&eom(&["linear", &scene, "--json"]))).unwrap();
+    let model: Value =
+        serde_json::from_str(&succeeded(&eom(&["linear", &scene, "--json"]))).unwrap();
     assert_eq!(names(&model["y_names"]), ["r", "v"]);
     assert_eq!(names(&model["y_units"]), ["rad/s", "m/s"]);
     assert_eq!(
@@ -474,8 +479,23 @@ fn linear_mat_holds_the_same_model_for_matlab() {
     };
     // Every key of the state-space model is a variable.
     for key in [
-        "A", "B", "C", "D", "x_names", "u_names", "y_names", "x_units", "u_units", "y_units",
-        "x0", "u0", "set_aside", "set_aside_values", "set_aside_why", "jacobians", "scene",
+        "A",
+        "B",
+        "C",
+        "D",
+        "x_names",
+        "u_names",
+        "y_names",
+        "x_units",
+        "u_units",
+        "y_units",
+        "x0",
+        "u0",
+        "set_aside",
+        "set_aside_values",
+        "set_aside_why",
+        "jacobians",
+        "scene",
         "title",
     ] {
         get(key);
@@ -495,8 +515,18 @@ fn linear_mat_holds_the_same_model_for_matlab() {
     // x0 as a column; the names as a column of cells of text.
     let x0: Vec<f64> = serde_json::from_value(model["x0"].clone()).unwrap();
     assert_eq!(get("x0").dimensions, [3, 1]);
-    assert_eq!(get("x0").doubles, x0.iter().map(|v| v.to_bits()).collect::<Vec<_>>());
-    for key in ["x_names", "u_names", "y_names", "x_units", "set_aside", "set_aside_why"] {
+    assert_eq!(
+        get("x0").doubles,
+        x0.iter().map(|v| v.to_bits()).collect::<Vec<_>>()
+    );
+    for key in [
+        "x_names",
+        "u_names",
+        "y_names",
+        "x_units",
+        "set_aside",
+        "set_aside_why",
+    ] {
         let read = get(key);
         assert_eq!(read.class, 1, "{key}");
         let texts: Vec<&str> = read.cells.iter().map(|c| c.text.as_str()).collect();

@@ -117,7 +117,11 @@ fn array(name: &str, value: &MatValue) -> Option<Vec<u8>> {
         MatValue::Text(text) => (class::CHAR, text_dimensions(text)),
         MatValue::Texts(texts) => (class::CELL, [texts.len(), 1]),
     };
-    element(&mut body, data_type::UINT32, &[class, 0].map(u32::to_le_bytes).concat())?;
+    element(
+        &mut body,
+        data_type::UINT32,
+        &[class, 0].map(u32::to_le_bytes).concat(),
+    )?;
     let dimensions: Vec<u8> = (dimensions.iter())
         .map(|&d| i32::try_from(d).ok().map(i32::to_le_bytes))
         .collect::<Option<Vec<_>>>()?
