@@ -17,19 +17,23 @@
 //! - [`trim`]: Newton on the reduced state for the free variables a `[linear]` table names.
 //! - [`modes`](mod@modes): eigenvalues and eigenvectors of A, each mode's period, damping, doubling or
 //!   halving time, dominant states and a name where the family knows one.
+//! - [`state_space`]: the result as control tools read it (A, B, C, D with the names and units
+//!   of x, u and y, the point and what was set aside), for `linear.json` and `linear.mat`.
 
 pub mod modes;
 pub mod plant;
 pub mod reduce;
 mod scene;
+pub mod state_space;
 pub mod trim;
 
 pub use modes::{Mode, Naming, Stability, modes};
 pub use plant::{Evaluation, LinearPlant, Plant};
-pub use reduce::set_aside;
+pub use reduce::{SetAsideReason, set_aside, set_aside_why};
 pub use scene::{
     LinearSpec, Linearisation, linearise, linearise_scene, resolve, resolve_aliased, set_at,
 };
+pub use state_space::StateSpace;
 
 use thiserror::Error;
 
@@ -63,6 +67,29 @@ pub enum LinearError {
     /// A name in `[linear]` that is neither a state entry nor an input of the model.
     #[error("`{0}` is neither a state entry nor an input of the model linearised")]
     Unknown(String),
+    /// An output `linear.outputs` names that is not in the reduced state at the point.
+    #[error(
+        "linear.outputs[{index}]: `{name}` {why}; the outputs are entries of the reduced \
+         state: {reduced}"
+    )]
+    Output {
+        /// Its place in `linear.outputs`.
+        index: usize,
+        /// The name, as the table gives it.
+        name: String,
+        /// Why it is not an output.
+        why: String,
+        /// The reduced state's entries, which are.
+        reduced: String,
+    },
+}
+
+impl LinearError {
+    /// Whether the scene asked for what cannot be (an output set aside), rather than the
+    /// linearisation failing at its point.
+    pub fn is_scene_error(&self) -> bool {
+        matches!(self, LinearError::Output { .. })
+    }
 }
 
 /// "1 Newton step", "2 Newton steps".

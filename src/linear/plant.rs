@@ -35,6 +35,8 @@ pub trait LinearPlant {
     fn evaluate(&self, state: &[f64], extra: &[f64]) -> Result<Evaluation, LinearError>;
     /// Where ∂f/∂x can be non-zero, as (row, column): the model's declared pattern.
     fn pattern(&self) -> Vec<(usize, usize)>;
+    /// How A and B are obtained, in words, as the outputs say it.
+    fn jacobians(&self) -> &'static str;
 }
 
 /// A model, the loads acting on it, and inputs added to them.
@@ -83,6 +85,12 @@ impl LinearPlant for Plant<'_> {
 
     fn pattern(&self) -> Vec<(usize, usize)> {
         self.model.state_jacobian_pattern().to_vec()
+    }
+
+    fn jacobians(&self) -> &'static str {
+        "emitted and proved: the model's Jacobian programs, proved equal to the exact \
+         derivatives of its equations at build time; the loads' dependence on the state \
+         (∂f/∂u · ∂loads/∂x) by central differences"
     }
 
     /// The rates, A and B at `state` with `extra` added to the loads' inputs.

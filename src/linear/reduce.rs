@@ -35,18 +35,68 @@ pub fn set_aside(
     state: &[f64],
     coordinate: &[bool],
 ) -> Vec<usize> {
+    set_aside_why(depends, rates, state, coordinate)
+        .into_iter()
+        .map(|(i, _)| i)
+        .collect()
+}
+
+/// Why a state entry was set aside.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SetAsideReason {
+    /// Its rate reads other states but not itself, and nothing left reads it: a position or a
+    /// heading, which only integrates the rest.
+    Integrates,
+    /// It is a coordinate that grows at the point (its rate is not zero), with the states it
+    /// reads among themselves, and nothing left reads them: the attitude of a spinning body.
+    Grows,
+}
+
+impl SetAsideReason {
+    /// The reason in words, as the outputs give it.
+    pub fn describe(self) -> &'static str {
+        match self {
+            SetAsideReason::Integrates => "only integrates the rest",
+            SetAsideReason::Grows => "grows at the point",
+        }
+    }
+}
+
+/// [`set_aside`] with the reason for each index, ascending.
+///
+/// ```
+/// use eom::linear::{SetAsideReason, set_aside_why};
+/// // ẋ = v, v̇ = 0: the position integrates the velocity.
+/// let depends = vec![vec![false, true], vec![false, false]];
+/// assert_eq!(
+///     set_aside_why(&depends, &[1.0, 0.0], &[0.0, 1.0], &[true, false]),
+///     vec![(0, SetAsideReason::Integrates)]
+/// );
+/// ```
+pub fn set_aside_why(
+    depends: &[Vec<bool>],
+    rates: &[f64],
+    state: &[f64],
+    coordinate: &[bool],
+) -> Vec<(usize, SetAsideReason)> {
     let n = depends.len();
     let tolerance = EQUILIBRIUM_TOLERANCE * rate_scale(state);
     let mut remaining = vec![true; n];
+    let mut why = vec![None; n];
     let growing: Vec<bool> = (0..n)
         .map(|i| coordinate[i] && rates[i].abs() > tolerance)
         .collect();
-    while let Some(component) = next_to_set_aside(depends, &growing, coordinate, &remaining) {
+    while let Some((component, reason)) =
+        next_to_set_aside(depends, &growing, coordinate, &remaining)
+    {
         for i in component {
             remaining[i] = false;
+            why[i] = Some(reason);
         }
     }
-    (0..n).filter(|&i| !remaining[i]).collect()
+    (why.into_iter().enumerate())
+        .filter_map(|(i, reason)| Some((i, reason?)))
+        .collect()
 }
 
 fn next_to_set_aside(
@@ -54,7 +104,7 @@ fn next_to_set_aside(
     growing: &[bool],
     coordinate: &[bool],
     remaining: &[bool],
-) -> Option<Vec<usize>> {
+) -> Option<(Vec<usize>, SetAsideReason)> {
     let reach = reachability(depends, remaining);
     let alive: Vec<usize> = (0..depends.len()).filter(|&i| remaining[i]).collect();
     for &i in &alive {
@@ -75,8 +125,11 @@ fn next_to_set_aside(
             && alive.iter().any(|&j| j != i && depends[i][j]);
         let grows =
             component.iter().all(|&c| coordinate[c]) && component.iter().any(|&c| growing[c]);
-        if integrates_others || grows {
-            return Some(component);
+        if integrates_others {
+            return Some((component, SetAsideReason::Integrates));
+        }
+        if grows {
+            return Some((component, SetAsideReason::Grows));
         }
     }
     None
@@ -150,6 +203,12 @@ mod tests {
             set_aside(&depends, &at_speed, &state, &coordinate),
             vec![3, 4, 5]
         );
+        // The track and the heading each only integrate the rest, though X grows at speed.
+        let integrates = SetAsideReason::Integrates;
+        assert_eq!(
+            set_aside_why(&depends, &at_speed, &state, &coordinate),
+            vec![(3, integrates), (4, integrates), (5, integrates)]
+        );
         // Slowing down, the velocities are kept: the point is not steady, which is reported.
         let slowing = [-0.2, 0.0, 0.0, 2.0, 0.0, 0.0];
         assert_eq!(
@@ -167,6 +226,10 @@ mod tests {
         assert_eq!(
             set_aside(&depends, &[0.0, 5.0, 0.0], &state, &coordinate),
             vec![1, 2]
+        );
+        assert_eq!(
+            set_aside_why(&depends, &[0.0, 5.0, 0.0], &state, &coordinate),
+            vec![(1, SetAsideReason::Grows), (2, SetAsideReason::Grows)]
         );
         // Not growing, the pair is kept.
         assert!(set_aside(&depends, &[0.0; 3], &state, &coordinate).is_empty());

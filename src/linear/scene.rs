@@ -3,7 +3,7 @@
 
 use super::modes::{Mode, Stability, growth_tolerance, modes};
 use super::plant::{LinearPlant, Plant};
-use super::reduce::set_aside;
+use super::reduce::{SetAsideReason, set_aside_why};
 use super::trim::{Free, trim};
 use super::{EQUILIBRIUM_TOLERANCE, EULER_PITCH_LIMIT, LinearError, rate_scale};
 use crate::models::{AnyModel, Family, Kinematics};
@@ -18,6 +18,9 @@ pub struct LinearSpec {
     pub at: Vec<(String, f64)>,
     /// The free variables the trim solves for.
     pub trim: Vec<String>,
+    /// The outputs y = C x of the linear model, state entries by name; empty for every entry
+    /// of the reduced state (C the identity).
+    pub outputs: Vec<String>,
 }
 
 /// A state entry or an input of a model, by its name: exactly as the model names it, or
@@ -70,6 +73,13 @@ pub struct Linearisation {
     pub reduced: Vec<usize>,
     /// The indices set aside.
     pub set_aside: Vec<usize>,
+    /// Why each of them was set aside, in the order of `set_aside`.
+    pub set_aside_why: Vec<SetAsideReason>,
+    /// The outputs y = C x + D u, as indices of the state (each in the reduced state): the
+    /// `[linear]` table's `outputs`, or the whole reduced state.
+    pub outputs: Vec<usize>,
+    /// How A and B were obtained ([`LinearPlant::jacobians`]).
+    pub jacobians: &'static str,
     /// The rates of the reduced state at the point (zero at an equilibrium).
     pub residual: Vec<f64>,
     /// Whether the point is an equilibrium of the reduced state (to
@@ -107,6 +117,33 @@ impl Linearisation {
             .iter()
             .map(|&i| self.state_names[i])
             .collect()
+    }
+
+    /// The reduced state at the point, x₀ of the linear model.
+    pub fn reduced_state(&self) -> Vec<f64> {
+        self.reduced.iter().map(|&i| self.state[i]).collect()
+    }
+
+    /// The values of the states set aside at the point.
+    pub fn set_aside_values(&self) -> Vec<f64> {
+        self.set_aside.iter().map(|&i| self.state[i]).collect()
+    }
+
+    /// The names of the outputs.
+    pub fn output_names(&self) -> Vec<&'static str> {
+        self.outputs.iter().map(|&i| self.state_names[i]).collect()
+    }
+
+    /// C: each output's row picks its entry of the reduced state.
+    pub fn c(&self) -> DMatrix<f64> {
+        DMatrix::from_fn(self.outputs.len(), self.reduced.len(), |row, column| {
+            f64::from(u8::from(self.reduced[column] == self.outputs[row]))
+        })
+    }
+
+    /// D: zero, the outputs being state entries.
+    pub fn d(&self) -> DMatrix<f64> {
+        DMatrix::zeros(self.outputs.len(), self.input_names.len())
     }
 }
 
@@ -197,7 +234,7 @@ pub fn linearise_scene(scene: &Scene) -> Result<Linearisation, LinearError> {
         model: twin.model,
         loads: twin.loads.as_ref().unwrap_or(&scene.loads),
     };
-    let mut linearisation = linearise(&plant, (twin.state, extra), &scene.linear.trim)?;
+    let mut linearisation = linearise(&plant, (twin.state, extra), &scene.linear)?;
     linearisation.note = twin.note;
     Ok(linearisation)
 }
@@ -219,22 +256,33 @@ pub fn set_at(
     Ok(())
 }
 
-/// Linearises `plant` about `(state, extra)`, trimmed for the free variables `trim` names: the
-/// states set aside, A and B on the reduced state, the modes and the verdict.
+/// Linearises `plant` about `(state, extra)`, trimmed for the free variables `spec.trim`
+/// names (its `at` entries are the caller's, already in the point): the states set aside, A
+/// and B on the reduced state, the outputs `spec.outputs` names, the modes and the verdict.
 pub fn linearise(
     plant: &dyn LinearPlant,
     (state, extra): (Vec<f64>, Vec<f64>),
-    trim_names: &[String],
+    spec: &LinearSpec,
 ) -> Result<Linearisation, LinearError> {
+    let trim_names = &spec.trim;
     let state_names = plant.state_names();
     let input_names = plant.input_names();
     let first = plant.evaluate(&state, &extra)?;
     let depends = dependencies(&plant.pattern(), &first.a);
     let coordinate: Vec<bool> = state_names.iter().map(|s| is_coordinate(s)).collect();
-    let set_aside = set_aside(&depends, &first.rates, &state, &coordinate);
+    let (set_aside, set_aside_why): (Vec<usize>, Vec<SetAsideReason>) =
+        set_aside_why(&depends, &first.rates, &state, &coordinate)
+            .into_iter()
+            .unzip();
     let reduced: Vec<usize> = (0..state.len())
         .filter(|i| !set_aside.contains(i))
         .collect();
+    let outputs = outputs(
+        &spec.outputs,
+        (&state_names, &reduced),
+        (&set_aside, &set_aside_why),
+        plant.name(),
+    )?;
     let (state, extra, trimmed) = if trim_names.is_empty() {
         (state, extra, None)
     } else {
@@ -293,6 +341,9 @@ pub fn linearise(
         state,
         reduced,
         set_aside,
+        set_aside_why,
+        outputs,
+        jacobians: plant.jacobians(),
         residual,
         trimmed,
         a,
@@ -310,6 +361,47 @@ fn is_coordinate(name: &str) -> bool {
 
 fn unknown(name: &str) -> LinearError {
     LinearError::Unknown(name.to_owned())
+}
+
+/// The outputs `names` names, as indices of the state: each must be in the reduced state (a
+/// state set aside has no row in A). No names: the whole reduced state.
+fn outputs(
+    names: &[String],
+    (state_names, reduced): (&[&str], &[usize]),
+    (set_aside, why): (&[usize], &[SetAsideReason]),
+    model: &str,
+) -> Result<Vec<usize>, LinearError> {
+    if names.is_empty() {
+        return Ok(reduced.to_vec());
+    }
+    let reduced_names: Vec<&str> = reduced.iter().map(|&i| state_names[i]).collect();
+    let refused = |index: usize, name: &str, why: String| LinearError::Output {
+        index,
+        name: name.to_owned(),
+        why,
+        reduced: reduced_names.join(", "),
+    };
+    (names.iter().enumerate())
+        .map(|(index, name)| match resolve(name, state_names, &[]) {
+            Some(Free::State(i)) if reduced.contains(&i) => Ok(i),
+            Some(Free::State(i)) => {
+                let reason = set_aside
+                    .iter()
+                    .position(|&j| j == i)
+                    .map_or("", |k| why[k].describe());
+                Err(refused(
+                    index,
+                    name,
+                    format!("is set aside at this point (it {reason}), so A has no row for it"),
+                ))
+            }
+            _ => Err(refused(
+                index,
+                name,
+                format!("is not a state entry of the model linearised ({model})"),
+            )),
+        })
+        .collect()
 }
 
 /// Row i depends on state j: the declared pattern, and what the loads add at the point.

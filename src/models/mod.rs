@@ -40,7 +40,7 @@ mod units;
 pub use eom_kernel::Operations;
 pub use info::ModelInfo;
 pub use model::{Constant, Driven, Loads, Model};
-pub use units::{ENERGY_UNIT, TIME_UNIT, state_unit, state_with_unit, with_unit};
+pub use units::{ENERGY_UNIT, TIME_UNIT, input_unit, state_unit, state_with_unit, with_unit};
 
 include!(concat!(env!("OUT_DIR"), "/catalog.rs"));
 

@@ -1,4 +1,4 @@
-//! The unit of a state entry, by its name.
+//! The unit of a state entry or an input, by its name.
 //!
 //! The layouts themselves are the catalog's ([`ModelInfo::state`](super::ModelInfo)) and the
 //! ship model's (`ship::model::STATE`, with the feature `ship`); this module knows only what each name
@@ -53,6 +53,26 @@ pub fn state_unit(name: &str) -> Option<&'static str> {
     }
 }
 
+/// The unit of the input `name`: a force `F_…` in N, a moment `M_…` in N m, a rudder's or a
+/// fin's angle as [`state_unit`] gives it. `None` for a name no model uses.
+///
+/// ```
+/// use eom::models::input_unit;
+/// assert_eq!(input_unit("F_x"), Some("N"));
+/// assert_eq!(input_unit("M_O"), Some("N m"));
+/// assert_eq!(input_unit("delta"), Some("rad"));
+/// assert_eq!(input_unit("thrust"), None);
+/// ```
+pub fn input_unit(name: &str) -> Option<&'static str> {
+    if name.starts_with("F_") {
+        Some("N")
+    } else if name.starts_with("M_") {
+        Some("N m")
+    } else {
+        state_unit(name)
+    }
+}
+
 /// The unit of a name that is not a rate of another.
 fn base_unit(name: &str) -> Option<&'static str> {
     match name {
@@ -98,6 +118,15 @@ mod tests {
     fn every_ship_state_entry_has_a_unit() {
         for name in crate::ship::model::STATE {
             assert!(state_unit(name).is_some(), "{name}");
+        }
+    }
+
+    #[test]
+    fn every_catalog_input_has_a_unit() {
+        for info in CATALOG {
+            for name in info.inputs {
+                assert!(input_unit(name).is_some(), "{}: {name}", info.name);
+            }
         }
     }
 

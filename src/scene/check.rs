@@ -717,7 +717,51 @@ impl Checker<'_> {
             known(&format!("linear.trim[{i}]"), name)?;
             spec.trim.push(name.clone());
         }
+        if let Some(outputs) = &table.outputs {
+            spec.outputs = self.linear_outputs(outputs, model, state)?;
+        }
         Ok(spec)
+    }
+
+    /// `linear.outputs`: state entries of `model`, each once, at least one.
+    fn linear_outputs(
+        &self,
+        names: &[String],
+        model: &str,
+        state: &[&str],
+    ) -> Result<Vec<String>, SceneError> {
+        if names.is_empty() {
+            return Err(self.invalid(
+                "linear.outputs",
+                "names no output; leave it out for every entry of the reduced state",
+            ));
+        }
+        let mut resolved = Vec::with_capacity(names.len());
+        for (i, name) in names.iter().enumerate() {
+            let key = format!("linear.outputs[{i}]");
+            let Some(crate::linear::trim::Free::State(index)) =
+                crate::linear::resolve(name, state, &[])
+            else {
+                return Err(self.invalid(
+                    &key,
+                    format!(
+                        "`{name}` is not a state entry of {model}: it has {}",
+                        state.join(", ")
+                    ),
+                ));
+            };
+            if resolved.contains(&index) {
+                return Err(self.invalid(
+                    &key,
+                    format!(
+                        "`{}` is already an output (each state entry is named once)",
+                        state[index]
+                    ),
+                ));
+            }
+            resolved.push(index);
+        }
+        Ok(names.to_vec())
     }
 
     pub(super) fn every(&self, file: &SceneFile, end_time: f64) -> Result<f64, SceneError> {

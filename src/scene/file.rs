@@ -42,6 +42,9 @@ pub struct LinearTable {
     pub at: Option<std::collections::BTreeMap<String, f64>>,
     /// The free variables solved for so that the reduced state is in equilibrium.
     pub trim: Option<Vec<String>>,
+    /// The outputs y = C x of the linear model, state entries by name (by default every entry
+    /// of the reduced state).
+    pub outputs: Option<Vec<String>>,
 }
 
 /// `[body]`: each family reads its own keys and refuses the others.

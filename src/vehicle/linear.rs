@@ -106,6 +106,13 @@ impl LinearPlant for VehiclePlant {
             .filter(|&(_, column)| column < BODY)
             .collect()
     }
+
+    fn jacobians(&self) -> &'static str {
+        "proved: the Euler-angle twin's Jacobian programs, derived and proved equal to the \
+         exact derivatives of its equations when the scene was read, with the chain rule \
+         through what is computed beside them (absolute values, the propeller's law, the \
+         cross-flow drag)"
+    }
 }
 
 /// The vehicle of `scene` linearised about the point its `[linear]` table names, by default
@@ -126,7 +133,7 @@ pub fn linearise_vehicle(scene: &VehicleScene) -> Result<Linearisation, VehicleE
         &ALIASES[..],
     );
     set_at(&scene.linear, names, (&mut state, &mut extra))?;
-    let mut linearisation = linearise(&plant, (state, extra), &scene.linear.trim)?;
+    let mut linearisation = linearise(&plant, (state, extra), &scene.linear)?;
     linearisation.note = Some(
         "a vehicle is linearised as the Euler-angle twin of its table (its quaternion's four \
          components hold three angles)"

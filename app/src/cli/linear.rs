@@ -4,13 +4,17 @@
 //!
 //! It prints the reduced state and what was set aside, whether the point is an equilibrium
 //! (and by how much it is not), the trim, A and B, the modes and the verdict; `--json`
-//! prints the same as one object. With `--out DIR` it also writes `A.csv`, `B.csv` (plain
-//! numbers, rows and columns in the order of `reduced_state` and `inputs`, as a control
-//! toolbox reads them) and `poles.svg`, into a folder taken as `eom run` takes one.
+//! prints the same as one object, with the state-space model as control tools read it
+//! (`eom::linear::StateSpace`: A, B, C, D, the names and units of x, u and y, the point).
+//! With `--out DIR` it also writes `A.csv`, `B.csv` (plain numbers, rows and columns in the
+//! order of `reduced_state` and `inputs`, as a control toolbox reads them), `poles.svg`, the
+//! text report, `linear.json` (the object `--json` prints) and `linear.mat` (the state-space
+//! model as MATLAB variables), into a folder taken as `eom run` takes one.
 
 use anyhow::Result;
-use eom::linear::{Linearisation, Mode, Stability, linearise_scene, newton_steps};
+use eom::linear::{Linearisation, Mode, Stability, StateSpace, linearise_scene, newton_steps};
 use eom::output::folder::{Claim, Writer};
+use eom::output::mat::mat_file;
 use eom::output::summary::write_atomically;
 use eom::scene::AnyScene;
 use eom::vehicle::linear::linearise_vehicle;
@@ -26,7 +30,8 @@ pub struct Args {
     /// Print JSON instead of text.
     #[arg(long)]
     pub json: bool,
-    /// Also write A.csv, B.csv and poles.svg into this folder.
+    /// Also write A.csv, B.csv, poles.svg, report.txt, linear.json and linear.mat into this
+    /// folder.
     #[arg(long)]
     pub out: Option<PathBuf>,
     /// Replace an earlier run in --out, or write into a folder eom did not make.
@@ -35,10 +40,16 @@ pub struct Args {
 }
 
 /// The files `--out` writes.
-const FILES: [&str; 4] = ["A.csv", "B.csv", POLES, REPORT];
+const FILES: [&str; 6] = ["A.csv", "B.csv", POLES, REPORT, JSON, MAT];
 
 /// The text report, as `eom linear` prints it.
 const REPORT: &str = "report.txt";
+
+/// The JSON report, as `eom linear --json` prints it.
+const JSON: &str = "linear.json";
+
+/// The state-space model as MATLAB variables.
+const MAT: &str = "linear.mat";
 
 /// Runs `eom linear`.
 pub fn run(args: Args) -> Result<()> {
@@ -47,11 +58,22 @@ pub fn run(args: Args) -> Result<()> {
         AnyScene::Vehicle(scene) => (scene.title.clone(), linearise_vehicle(&scene)?),
         AnyScene::Catalog(scene) => (scene.title.clone(), linearise_scene(&scene)?),
     };
+    let space = state_space(&args, &title, &linear);
     let text = text_report(&title, &linear);
-    write_out(&args, &title, &linear, &text)?;
+    let report = report(&space, &linear)?;
+    write_out(&args, (&space, &linear), &text, &report)?;
+    show(&args, &text, &report)
+}
+
+/// The state-space model of `linear`, of the scene `args` names as it was given.
+pub fn state_space(args: &Args, title: &str, linear: &Linearisation) -> StateSpace {
+    StateSpace::new(&args.scene.display().to_string(), title, linear)
+}
+
+/// Prints the JSON report with `--json`, else the text and, with `--out`, the files written.
+pub fn show(args: &Args, text: &str, report: &Value) -> Result<()> {
     if args.json {
-        let report = report(&title, &linear);
-        println!("{}", serde_json::to_string_pretty(&report)?);
+        println!("{}", serde_json::to_string_pretty(report)?);
     } else {
         print!("{text}");
         if let Some(out) = &args.out {
@@ -62,18 +84,29 @@ pub fn run(args: Args) -> Result<()> {
     Ok(())
 }
 
-/// With `--out`, A.csv, B.csv, poles.svg and the text report into a folder taken as `eom run`
-/// takes one.
-pub fn write_out(args: &Args, title: &str, linear: &Linearisation, text: &str) -> Result<()> {
+/// With `--out`, A.csv, B.csv, poles.svg, the text report, the JSON report and the MAT-file
+/// into a folder taken as `eom run` takes one.
+pub fn write_out(
+    args: &Args,
+    (space, linear): (&StateSpace, &Linearisation),
+    text: &str,
+    report: &Value,
+) -> Result<()> {
     if let Some(out) = &args.out {
         let planned: Vec<String> = FILES.map(String::from).to_vec();
         let _claim = Claim::take(out, args.force, &Writer::Whole, &planned)?;
-        write_files(out, title, linear, text)?;
+        write_files(out, (space, linear), text, report)?;
     }
     Ok(())
 }
 
-fn write_files(out: &Path, title: &str, linear: &Linearisation, text: &str) -> Result<()> {
+fn write_files(
+    out: &Path,
+    (space, linear): (&StateSpace, &Linearisation),
+    text: &str,
+    report: &Value,
+) -> Result<()> {
+    let title = &space.title;
     let reduced = linear.reduced_names();
     write_atomically(&out.join("A.csv"), csv(&reduced, &linear.a).as_bytes())?;
     write_atomically(
@@ -83,6 +116,10 @@ fn write_files(out: &Path, title: &str, linear: &Linearisation, text: &str) -> R
     let poles: Vec<(f64, f64)> = linear.eigenvalues.iter().map(|l| (l.re, l.im)).collect();
     write_pole_plot(out, title, &poles, linear.growth_tolerance)?;
     write_atomically(&out.join(REPORT), text.as_bytes())?;
+    let mut json = serde_json::to_string_pretty(report)?;
+    json.push('\n');
+    write_atomically(&out.join(JSON), json.as_bytes())?;
+    write_atomically(&out.join(MAT), &mat_file(&space.mat_variables())?)?;
     Ok(())
 }
 
@@ -99,15 +136,9 @@ fn csv(columns: &[&str], matrix: &eom::nalgebra::DMatrix<f64>) -> String {
     text
 }
 
-fn rows(matrix: &eom::nalgebra::DMatrix<f64>) -> Value {
-    matrix
-        .row_iter()
-        .map(|row| row.iter().copied().collect::<Vec<f64>>())
-        .collect()
-}
-
-/// The JSON report.
-pub fn report(title: &str, linear: &Linearisation) -> Value {
+/// The JSON report: the linearisation, and the state-space model as control tools read it
+/// (its keys [`StateSpace`]'s: `scene`, `title`, `A`, `B`, `C`, `D`, `x_names`, …).
+pub fn report(space: &StateSpace, linear: &Linearisation) -> Result<Value> {
     let mut point = Map::new();
     for (name, value) in linear.state_names.iter().zip(&linear.state) {
         point.insert((*name).into(), json!(value));
@@ -121,8 +152,7 @@ pub fn report(title: &str, linear: &Linearisation) -> Value {
         .zip(&linear.residual)
         .map(|(name, r)| ((*name).to_owned(), json!(r)))
         .collect();
-    json!({
-        "scene": title,
+    let mut report = json!({
         "model": linear.model,
         "operating_point": point,
         "equilibrium": linear.equilibrium,
@@ -132,10 +162,7 @@ pub fn report(title: &str, linear: &Linearisation) -> Value {
             "newton_steps": steps,
         })),
         "reduced_state": linear.reduced_names(),
-        "set_aside": linear.set_aside_names(),
         "inputs": linear.input_names,
-        "A": rows(&linear.a),
-        "B": rows(&linear.b),
         "eigenvalues": linear.eigenvalues.iter().map(|l| json!({"re": l.re, "im": l.im})).collect::<Vec<_>>(),
         "modes": linear.modes.iter().map(mode_json).collect::<Vec<_>>(),
         "stable": linear.stability.and_then(Stability::is_stable),
@@ -143,7 +170,13 @@ pub fn report(title: &str, linear: &Linearisation) -> Value {
         "stability": verdict(linear),
         "growth_tolerance_per_s": linear.growth_tolerance,
         "note": linear.note,
-    })
+    });
+    if let (Some(report), Value::Object(space)) =
+        (report.as_object_mut(), serde_json::to_value(space)?)
+    {
+        report.extend(space);
+    }
+    Ok(report)
 }
 
 fn mode_json(mode: &Mode) -> Value {
@@ -207,6 +240,7 @@ pub fn text_report(title: &str, linear: &Linearisation) -> String {
         );
     }
     print_equilibrium(text, linear);
+    line(text, format!("  A and B: {}", linear.jacobians));
     print_matrix(
         text,
         "A",

@@ -108,13 +108,14 @@ pub fn exit_code(error: &anyhow::Error) -> u8 {
         if cause.downcast_ref::<eom::run::RunError>().is_some() {
             return 5;
         }
-        if cause.downcast_ref::<eom::linear::LinearError>().is_some() {
-            return 5;
+        if let Some(linear) = cause.downcast_ref::<eom::linear::LinearError>() {
+            return if linear.is_scene_error() { 3 } else { 5 };
         }
         if let Some(vehicle) = cause.downcast_ref::<eom::vehicle::VehicleError>() {
             use eom::vehicle::VehicleError;
             return match vehicle {
                 VehicleError::Invalid { .. } | VehicleError::Table(_) => 3,
+                VehicleError::Linear(linear) if linear.is_scene_error() => 3,
                 VehicleError::Run { .. } | VehicleError::Linear(_) => 5,
                 VehicleError::Stopped { .. } => 130,
                 VehicleError::Prove(_) => 1,

@@ -879,22 +879,17 @@ pub fn linear(args: &super::linear::Args, scene: &ShipScene) -> Result<()> {
     let model = ShipModel::new(&scene.table)?;
     let linear = LinearModel::closed_form(&scene.table);
     let linearised = linearise_ship(scene, &model)?;
+    let space = super::linear::state_space(args, &scene.title, &linearised);
     let mut text = super::linear::text_report(&scene.title, &linearised);
     text.push_str(&nomoto_report(scene, &model, &linear));
-    super::linear::write_out(args, &scene.title, &linearised, &text)?;
-    if args.json {
-        // Every scene's report, with the ship's Nomoto block beside it.
-        let mut report = super::linear::report(&scene.title, &linearised);
-        let nomoto = serde_json::to_value(LinearSummary::new(scene, &model, &linear))?;
-        if let (Some(report), serde_json::Value::Object(nomoto)) = (report.as_object_mut(), nomoto)
-        {
-            report.extend(nomoto);
-        }
-        println!("{}", serde_json::to_string_pretty(&report)?);
-        return Ok(());
+    // Every scene's report, with the ship's Nomoto block beside it.
+    let mut report = super::linear::report(&space, &linearised)?;
+    let nomoto = serde_json::to_value(LinearSummary::new(scene, &model, &linear))?;
+    if let (Some(report), serde_json::Value::Object(nomoto)) = (report.as_object_mut(), nomoto) {
+        report.extend(nomoto);
     }
-    print!("{text}");
-    Ok(())
+    super::linear::write_out(args, (&space, &linearised), &text, &report)?;
+    super::linear::show(args, &text, &report)
 }
 
 /// Nomoto's models, the course stability and the pivot point, as text.

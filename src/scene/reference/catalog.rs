@@ -805,6 +805,42 @@ pub(super) static KEYS: &[Key] = &[
         shown: Shown::Commented,
         ..Key::BLANK
     },
+    Key {
+        path: "linear.outputs",
+        families: &[PENDULUM],
+        kind: Kind::Names("state entries"),
+        description: "Outputs of the linear model `eom linear` writes (y = C x + D u in linear.json and linear.mat): state entries by the model's names, each in the reduced state at the point; C picks them, D is zero. By default every entry of the reduced state (C the identity).",
+        example: "[\"theta\"]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "linear.outputs",
+        families: &[PLANAR_G, PLANAR_MIDSHIP],
+        kind: Kind::Names("state entries"),
+        description: "Outputs of the linear model `eom linear` writes (y = C x + D u in linear.json and linear.mat): state entries by the model's names, each in the reduced state at the point; C picks them, D is zero. By default every entry of the reduced state (C the identity).",
+        example: "[\"v\", \"r\"]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "linear.outputs",
+        families: &[PLANAR_SPACE],
+        kind: Kind::Names("state entries"),
+        description: "Outputs of the linear model `eom linear` writes (y = C x + D u in linear.json and linear.mat): state entries by the model's names, each in the reduced state at the point; C picks them, D is zero. By default every entry of the reduced state (C the identity).",
+        example: "[\"X_dot\", \"psi_dot\"]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "linear.outputs",
+        families: ATTITUDE,
+        kind: Kind::Names("state entries"),
+        description: "Outputs of the linear model `eom linear` writes (y = C x + D u in linear.json and linear.mat): state entries by the model's names, each in the reduced state at the point; C picks them, D is zero. By default every entry of the reduced state (C the identity).",
+        example: "[\"p\", \"q\"]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
     // [sweep]
     Key {
         path: "sweep.*",

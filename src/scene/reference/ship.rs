@@ -692,6 +692,17 @@ pub(super) static KEYS: &[Key] = &[
         shown: Shown::Commented,
         ..Key::BLANK
     },
+    Key {
+        path: "linear.outputs",
+        families: SHIP,
+        kind: Kind::Names("state entries"),
+        description: "Outputs of the linear model `eom linear` writes (y = C x + D u in \
+                      linear.json and linear.mat): entries of (u, v, r) by name; C picks \
+                      them, D is zero. By default all three (C the identity).",
+        example: "[\"v\", \"r\"]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
     // [sweep]
     Key {
         path: "sweep.*",

@@ -764,4 +764,17 @@ pub(super) static KEYS: &[Key] = &[
         shown: Shown::Commented,
         ..Key::BLANK
     },
+    Key {
+        path: "linear.outputs",
+        families: VEHICLE,
+        kind: Kind::Names("state entries"),
+        description: "Outputs of the linear model `eom linear` writes (y = C x + D u in \
+                      linear.json and linear.mat): state entries of the Euler-angle twin by \
+                      name, each in the reduced state at the point (not x, y, z or psi at a \
+                      cruise, which are set aside); C picks them, D is zero. By default every \
+                      entry of the reduced state (C the identity).",
+        example: "[\"r\", \"theta\"]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
 ];
