@@ -1147,6 +1147,20 @@ fn a_thrust_not_ahead_and_a_mass_against_its_weight_are_refused_by_key() {
 }
 
 #[test]
+fn a_trim_that_newton_does_not_find_names_the_state_whose_rate_is_left() {
+    // 1 kg of payload at O: W − B = 9.81 N, and Newton from the cruise does not converge in
+    // its steps. The message names the rate left, not only its size.
+    let error = parse(&with_payload(1.0, 0.0)).unwrap_err();
+    println!("{error}");
+    assert!(error.contains("no trim: "), "{error}");
+    assert!(
+        error.contains("the largest rate left is d") && error.contains("/dt = "),
+        "{error}"
+    );
+    assert_eq!(error.matches("no trim").count(), 1, "said once: {error}");
+}
+
+#[test]
 fn a_heavy_remus_has_no_trim_ahead_and_is_refused_by_its_body() {
     // 6.5 kg of payload aft: the only steady motion Newton finds from the cruise backs down
     // as it sinks (u = −0.28 m/s), outside a table identified ahead.

@@ -274,11 +274,12 @@ fn newton_failure(error: &LinearError) -> String {
     match error {
         LinearError::NoConvergence {
             iterations,
+            state,
             residual,
             tolerance,
             ..
         } => format!(
-            "after {} the largest rate is still {} (tolerance {})",
+            "after {} the largest rate left is d{state}/dt = {} (tolerance {})",
             crate::counted(*iterations, "Newton step", "Newton steps"),
             Short(*residual),
             Short(*tolerance)
