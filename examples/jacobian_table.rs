@@ -84,13 +84,15 @@ fn main() {
          programs [ns] | dual numbers [ns] | ratio |"
     );
     println!("|---|---|---|---|---|---|---|");
-    let mariner = eom::ship::ShipScene::load("scenes/mariner.toml".as_ref()).expect("the scene");
-    let ship = eom::ship::ShipModel::new(&mariner.table).expect("the Mariner builds");
+    let mariner =
+        eom::kinds::ship::ShipScene::load("scenes/mariner.toml".as_ref()).expect("the scene");
+    let ship = eom::kinds::ship::ShipModel::new(&mariner.table).expect("the Mariner builds");
     let mut state = mariner.start();
     (state[1], state[2], state[6]) = (0.3, 0.004, 0.05);
     scene_row("mariner", &ship, ship.operations(), (&state, &[0.0; 2]));
     let remus = std::fs::read_to_string("scenes/remus100.toml").expect("the scene");
-    let remus = eom::vehicle::VehicleScene::parse(&remus, "remus100.toml").expect("REMUS builds");
+    let remus =
+        eom::kinds::vehicle::VehicleScene::parse(&remus, "remus100.toml").expect("REMUS builds");
     let mut state = remus.start().expect("REMUS cruises");
     (state[1], state[2], state[4], state[13]) = (0.05, -0.02, 0.01, 0.03);
     let operations = remus.model.operations();

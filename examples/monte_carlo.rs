@@ -29,10 +29,10 @@
 //! second. `--shard K/N` runs the cases k ≡ K (mod N) only, for one process of N; each
 //! prints its counts (`counts:`), which add up over the shards to the whole run's.
 
+use eom::kinds::ship::imo::{Trial, criteria};
+use eom::kinds::ship::manoeuvre::{Figures, Manoeuvre, ManoeuvreKind, run};
+use eom::kinds::ship::{ShipModel, ShipScene, Side};
 use eom::scene::sweep::parse_shard;
-use eom::ship::imo::{Trial, criteria};
-use eom::ship::manoeuvre::{Figures, Manoeuvre, ManoeuvreKind, run};
-use eom::ship::{ShipModel, ShipScene, Side};
 use eom_test_support::random::Random;
 use rayon::prelude::*;
 use std::collections::BTreeMap;

@@ -59,7 +59,10 @@ pub mod energy;
 pub mod generic;
 mod inertia;
 pub mod integrate;
+pub mod kinds;
 pub mod linear;
+#[cfg(feature = "ship")]
+pub mod manoeuvring;
 pub mod mass;
 pub mod models;
 pub mod output;
@@ -67,13 +70,9 @@ mod pendulum;
 pub mod reference;
 pub mod run;
 pub mod scene;
-#[cfg(feature = "ship")]
-pub mod ship;
 mod short;
 pub mod swing;
 pub mod validate;
-#[cfg(feature = "ship")]
-pub mod vehicle;
 
 /// The nalgebra that eom's models, states and integrators are written in, so that a user's
 /// vectors are of the same version without choosing it by hand.

@@ -4,9 +4,9 @@
 //! without deriving, proving or compiling again, against the ship built from its values.
 
 use eom::Model;
+use eom::kinds::ship::{ShipModel, ShipScene};
+use eom::kinds::vehicle::VehicleModel;
 use eom::scene::AnyScene;
-use eom::ship::{ShipModel, ShipScene};
-use eom::vehicle::VehicleModel;
 use eom_test_support::random::Random;
 use std::path::Path;
 
@@ -244,7 +244,10 @@ fn other_number_types_are_interpreted() {
 }
 
 /// The Mariner's table with every term and added mass scaled by its own factor.
-fn perturbed(table: &eom::ship::table::ShipTable, seed: u64) -> eom::ship::table::ShipTable {
+fn perturbed(
+    table: &eom::kinds::ship::table::ShipTable,
+    seed: u64,
+) -> eom::kinds::ship::table::ShipTable {
     let mut random = Random(seed);
     let mut table = table.clone();
     for value in table.terms.values_mut().chain(table.added_mass.iter_mut()) {

@@ -7,11 +7,11 @@
 //! ε and the cross-flow drag change in it; and bad tables, laws and strips refused by key.
 
 use eom::Model;
+use eom::kinds::vehicle::manoeuvre::{self, VehicleManoeuvre, VehicleRun};
+use eom::kinds::vehicle::summary::{CruiseSummary, StepFigures, largest_difference};
+use eom::kinds::vehicle::trim::cruise;
+use eom::kinds::vehicle::{InertiaAbout, VehicleModel, VehicleScene};
 use eom::scene::AnyScene;
-use eom::vehicle::manoeuvre::{self, VehicleManoeuvre, VehicleRun};
-use eom::vehicle::summary::{CruiseSummary, StepFigures, largest_difference};
-use eom::vehicle::trim::cruise;
-use eom::vehicle::{InertiaAbout, VehicleModel, VehicleScene};
 use num_dual::Dual64;
 use std::path::Path;
 
@@ -288,7 +288,7 @@ fn the_cruise_is_the_propeller_law_s_speed_and_holds() {
 /// The steady turn of the linear sway and yaw equations in the prime system (U = u, x_G = 0):
 /// Y′_v v′ + (Y′_r − m′) r′ + Y′_δ δ = 0 and N′_v v′ + N′_r r′ + N′_δ δ = 0, so
 /// r′ = δ (Y′_v N′_δ − Y′_δ N′_v)/(N′_v(Y′_r − m′) − Y′_v N′_r), r = r′u/L.
-fn linear_yaw_rate(table: &eom::vehicle::VehicleTable, rudder: f64, u: f64) -> f64 {
+fn linear_yaw_rate(table: &eom::kinds::vehicle::VehicleTable, rudder: f64, u: f64) -> f64 {
     let c = |name: &str| table.coefficients[name];
     let m = table.mass / (0.5 * RHO * LENGTH.powi(3));
     let (yv, yr, yd) = (c("Yv"), c("Yr"), c("Ydr"));
@@ -303,7 +303,7 @@ fn closed_form_errors(scene: &VehicleScene, model: &VehicleModel, degrees: [f64;
     let start = cruise(model).unwrap();
     degrees.map(|degrees| {
         let step = VehicleManoeuvre {
-            steps: eom::vehicle::FinSteps::new(vec![10.0], vec![[f64::to_radians(degrees), 0.0]])
+            steps: eom::kinds::vehicle::FinSteps::new(vec![10.0], vec![[f64::to_radians(degrees), 0.0]])
                 .unwrap(),
             ..scene.manoeuvres[0].clone()
         };

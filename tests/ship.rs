@@ -5,13 +5,13 @@
 
 use eom::Model;
 use eom::integrate::Stepper;
-use eom::ship::imo::criteria;
-use eom::ship::linear::{LinearModel, Nomoto, linearise};
-use eom::ship::manoeuvre::{Figures, Manoeuvre, ManoeuvreKind, Sample, run};
-use eom::ship::spiral::{Branch, SpiralPoint, Verdict};
-use eom::ship::steady::{Held, steady_turn};
-use eom::ship::table::ShipTable;
-use eom::ship::{RigidBodyTerms, ShipModel, ShipScene, Side};
+use eom::kinds::ship::imo::criteria;
+use eom::kinds::ship::linear::{LinearModel, Nomoto, linearise};
+use eom::kinds::ship::manoeuvre::{Figures, Manoeuvre, ManoeuvreKind, Sample, run};
+use eom::kinds::ship::spiral::{Branch, SpiralPoint, Verdict};
+use eom::kinds::ship::steady::{Held, steady_turn};
+use eom::kinds::ship::table::ShipTable;
+use eom::kinds::ship::{RigidBodyTerms, ShipModel, ShipScene, Side};
 use eom_codegen::model::ship::{Force, Units, YawInertia};
 use eom_test_support::random::Random;
 use nalgebra::{Matrix3, Vector3};
@@ -678,7 +678,7 @@ fn a_rudder_without_lag_follows_its_series() {
     );
     let scene = ShipScene::parse(&ideal, "ideal rudder").unwrap();
     let model = ShipModel::new(&scene.table).unwrap();
-    let series = eom::ship::Series::new(
+    let series = eom::kinds::ship::Series::new(
         vec![5.0, 20.0, 32.5, 50.0],
         [0.0, 15.0, -20.0, 0.0].map(f64::to_radians).to_vec(),
     )
@@ -1318,8 +1318,8 @@ fn the_spirals_steady_rate_at_small_rudder_is_nomotos_k_delta() {
 /// tables say, the Mariner is stable and the Esso Osaka (C′ < 0) is not.
 #[test]
 fn a_ships_modes_are_nomotos_time_constants() {
+    use eom::kinds::ship::linear::linearise_ship;
     use eom::linear::Stability;
-    use eom::ship::linear::linearise_ship;
     for (file, stable) in [("mariner.toml", true), ("esso_osaka.toml", false)] {
         let scene = ShipScene::parse(&without_linear(file), file).unwrap();
         let model = ShipModel::new(&scene.table).unwrap();
@@ -1363,7 +1363,7 @@ fn a_ships_modes_are_nomotos_time_constants() {
 
 #[test]
 fn a_ship_with_bias_terms_is_trimmed_to_a_straight_course_by_rudder_and_drift() {
-    use eom::ship::linear::linearise_ship;
+    use eom::kinds::ship::linear::linearise_ship;
     let text = without_linear("mariner.toml");
     let with = |linear: &str| ShipScene::parse(&format!("{text}\n[linear]\n{linear}\n"), "mariner");
     // At the approach the Mariner's bias terms Y₀, N₀ turn it: not an equilibrium.
@@ -1615,7 +1615,7 @@ fn the_turning_criteria_rest_on_the_turn_at_35_degrees_or_the_gears_limit() {
             .collect();
         criteria(&scene, &trials)
     };
-    let advance = |judged: &[eom::ship::imo::Criterion]| {
+    let advance = |judged: &[eom::kinds::ship::imo::Criterion]| {
         judged
             .iter()
             .find(|c| c.name == "advance")
@@ -1682,7 +1682,7 @@ fn short_zigzag_notes_and_angles_read_as_written() {
         "{:?}",
         figures.notes
     );
-    let summary = eom::ship::summary::KindSummary::new(&scene.manoeuvres[0].kind);
+    let summary = eom::kinds::ship::summary::KindSummary::new(&scene.manoeuvres[0].kind);
     let json = serde_json::to_value(summary).unwrap();
     assert_eq!(json["rudder_deg"].as_f64(), Some(7.5), "{json}");
     assert_eq!(json["heading_deg"].as_f64(), Some(7.5), "{json}");

@@ -4,11 +4,11 @@
 //! |x|, the folded table against its added mass, and bad tables each refused by key.
 
 use eom::Model;
+use eom::kinds::vehicle::manoeuvre::{self, VehicleManoeuvre, VehicleRun};
+use eom::kinds::vehicle::summary::{CruiseSummary, StepFigures, largest_difference};
+use eom::kinds::vehicle::trim::cruise;
+use eom::kinds::vehicle::{VehicleModel, VehicleScene, format_folded};
 use eom::scene::AnyScene;
-use eom::vehicle::manoeuvre::{self, VehicleManoeuvre, VehicleRun};
-use eom::vehicle::summary::{CruiseSummary, StepFigures, largest_difference};
-use eom::vehicle::trim::cruise;
-use eom::vehicle::{VehicleModel, VehicleScene, format_folded};
 use std::path::Path;
 
 const SCENE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/remus100.toml");
@@ -81,7 +81,10 @@ fn the_remus_scene_holds_the_published_data_bit_for_bit() {
         let value = number(&body["inertia_about_O_kg_m2"][axis]);
         assert_eq!(table.inertia[i][i].to_bits(), value.to_bits(), "{axis}");
     }
-    assert_eq!(table.inertia_about, eom::vehicle::InertiaAbout::Origin);
+    assert_eq!(
+        table.inertia_about,
+        eom::kinds::vehicle::InertiaAbout::Origin
+    );
     for i in 0..3 {
         let g = number(&body["centre_of_gravity_m"][i]);
         let b = number(&body["centre_of_buoyancy_m"][i]);
@@ -418,7 +421,10 @@ fn a_tensor_with_zero_products_builds_the_principal_model() {
 fn the_tensor_about_o_is_the_tensor_about_g_carried_by_steiner() {
     let scene = remus();
     let table = &scene.table;
-    assert_eq!(table.inertia_about, eom::vehicle::InertiaAbout::Origin);
+    assert_eq!(
+        table.inertia_about,
+        eom::kinds::vehicle::InertiaAbout::Origin
+    );
     let ([x, y, z], m, i) = (table.centre_of_gravity, table.mass, table.inertia);
     // x_G = y_G = 0: the products about G are zero too.
     assert_eq!((x, y), (0.0, 0.0));
@@ -499,8 +505,8 @@ fn quaternion<
 
 #[test]
 fn the_linearised_vehicle_is_the_running_model_in_euler_angles() {
+    use eom::kinds::vehicle::linear::VehiclePlant;
     use eom::linear::LinearPlant;
-    use eom::vehicle::linear::VehiclePlant;
     use num_dual::{Dual64, DualNum};
     let scene = remus();
     let plant = VehiclePlant::new(&scene.table).unwrap();
@@ -581,8 +587,8 @@ fn with_linear(table: &str) -> VehicleScene {
 
 #[test]
 fn remus_at_cruise_is_unstable_open_loop_in_yaw_and_in_pitch() {
+    use eom::kinds::vehicle::linear::linearise_vehicle;
     use eom::linear::Stability;
-    use eom::vehicle::linear::linearise_vehicle;
     let scene = remus();
     let linear = linearise_vehicle(&scene).unwrap();
     for m in &linear.modes {
@@ -610,7 +616,10 @@ fn remus_at_cruise_is_unstable_open_loop_in_yaw_and_in_pitch() {
         .find(|m| m.name == Some("roll"))
         .expect("a roll mode");
     let table = &scene.table;
-    assert_eq!(table.inertia_about, eom::vehicle::InertiaAbout::Origin);
+    assert_eq!(
+        table.inertia_about,
+        eom::kinds::vehicle::InertiaAbout::Origin
+    );
     let inertia = table.inertia[0][0] - table.added_mass["Kpdot"];
     let restoring =
         table.centre_of_gravity[2] * table.weight - table.centre_of_buoyancy[2] * table.buoyancy;
@@ -631,7 +640,7 @@ fn remus_at_cruise_is_unstable_open_loop_in_yaw_and_in_pitch() {
 
 #[test]
 fn a_vehicle_is_trimmed_for_the_variables_its_linear_table_names() {
-    use eom::vehicle::linear::linearise_vehicle;
+    use eom::kinds::vehicle::linear::linearise_vehicle;
     let scene = remus();
     let start = scene.start().unwrap();
     let cruise_roll =
@@ -698,7 +707,9 @@ const TURN_AND_DIVE: &str = "[[manoeuvre]]\nname = \"turn_and_dive\"\nkind = \"a
 
 #[test]
 fn the_autopilots_take_remus_to_a_new_heading_and_depth_and_hold_them() {
-    use eom::vehicle::summary::{SETTLING_BAND, SetpointFigures, largest_setpoint_difference};
+    use eom::kinds::vehicle::summary::{
+        SETTLING_BAND, SetpointFigures, largest_setpoint_difference,
+    };
     let scene = parse(&autopiloted(AUTOPILOTS, TURN_AND_DIVE)).unwrap();
     let start = scene.start().unwrap();
     let m = &scene.manoeuvres[0];
@@ -845,8 +856,8 @@ const TRIALS: &str = "[[manoeuvre]]\nname = \"turning_circle\"\nkind = \"turning
 
 #[test]
 fn a_turning_circle_s_figures_are_read_at_its_events_and_once_it_has_settled() {
-    use eom::vehicle::summary::trial_figures;
-    use eom::vehicle::trial::{TrialFigures, Watch, largest_trial_difference};
+    use eom::kinds::vehicle::summary::trial_figures;
+    use eom::kinds::vehicle::trial::{TrialFigures, Watch, largest_trial_difference};
     let scene = parse(&autopiloted(AUTOPILOTS, TRIALS)).unwrap();
     let start = scene.start().unwrap();
     let m = &scene.manoeuvres[0];
@@ -871,8 +882,8 @@ fn a_turning_circle_s_figures_are_read_at_its_events_and_once_it_has_settled() {
     // Settled under the depth autopilot: the steady diameter is 2 V_h/|ψ̇| at the end.
     let steady = figures.steady_diameter_m.expect("settled");
     let end = run.ends.last().unwrap().state;
-    let (psi_dot, _) = eom::vehicle::trial::heading_and_pitch_rates(&end);
-    let v_h = eom::vehicle::trial::horizontal_speed(&end);
+    let (psi_dot, _) = eom::kinds::vehicle::trial::heading_and_pitch_rates(&end);
+    let v_h = eom::kinds::vehicle::trial::horizontal_speed(&end);
     assert_eq!(steady, 2.0 * v_h / psi_dot.abs());
     // The tactical diameter, read at 180°, is near the steady one (a small vehicle settles
     // within the first half turn), and the advance at 90° is more than half of it.
@@ -916,8 +927,8 @@ fn a_turning_circle_s_figures_are_read_at_its_events_and_once_it_has_settled() {
 
 #[test]
 fn a_zigzag_switches_at_its_angle_and_reads_each_overshoot_where_the_rate_is_zero() {
-    use eom::vehicle::summary::trial_figures;
-    use eom::vehicle::trial::{TrialFigures, Watch, heading_and_pitch_rates};
+    use eom::kinds::vehicle::summary::trial_figures;
+    use eom::kinds::vehicle::trial::{TrialFigures, Watch, heading_and_pitch_rates};
     let scene = parse(&autopiloted(AUTOPILOTS, TRIALS)).unwrap();
     let start = scene.start().unwrap();
     for (m, vertical) in [(&scene.manoeuvres[1], false), (&scene.manoeuvres[2], true)] {
@@ -1178,8 +1189,8 @@ fn a_heavy_remus_has_no_trim_ahead_and_is_refused_by_its_body() {
 
 #[test]
 fn a_vehicle_out_of_trim_starts_each_manoeuvre_steady_from_its_trim() {
+    use eom::kinds::vehicle::linear::VehiclePlant;
     use eom::linear::{EQUILIBRIUM_TOLERANCE, LinearPlant};
-    use eom::vehicle::linear::VehiclePlant;
     // 0.5 kg of payload 1 cm aft of the centre of buoyancy: level, REMUS would pitch up by
     // tens of degrees before its first command.
     let scene = parse(&with_payload(0.5, -0.01)).unwrap();
@@ -1247,7 +1258,7 @@ fn a_vehicle_out_of_trim_starts_each_manoeuvre_steady_from_its_trim() {
 
 #[test]
 fn a_vertical_zigzag_switches_about_the_trim_s_pitch() {
-    use eom::vehicle::trial::Watch;
+    use eom::kinds::vehicle::trial::Watch;
     // G 1 cm aft: REMUS trims 26.9° nose up with its heading held, and zig-zags about that.
     let scene = parse(&with_payload(0.0, -0.01)).unwrap();
     let m = &scene.manoeuvres[5];

@@ -181,7 +181,10 @@ fn remus_moments_about_g() -> (f64, f64, f64) {
         Ok(eom::scene::AnyScene::Vehicle(scene)) => scene.table,
         _ => panic!("remus100.toml is read as a vehicle"),
     };
-    assert_eq!(table.inertia_about, eom::vehicle::InertiaAbout::Origin);
+    assert_eq!(
+        table.inertia_about,
+        eom::kinds::vehicle::InertiaAbout::Origin
+    );
     let (m, r, i) = (table.mass, table.centre_of_gravity, table.inertia);
     let squared: f64 = r.iter().map(|x| x * x).sum();
     let about_g = |k: usize| i[k][k] - m * (squared - r[k] * r[k]);

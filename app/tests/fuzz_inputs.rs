@@ -17,14 +17,14 @@
 //! others and `PROPTEST_CASES=<n>` sets the number of inputs per parser. Longer runs:
 //! `cargo fuzz` in `fuzz/` (docs/fuzzing.md).
 
+use eom::kinds::ship::linear::LinearModel;
+use eom::kinds::ship::manoeuvre::{Manoeuvre, run as run_manoeuvre};
+use eom::kinds::ship::{ShipModel, ShipScene};
+use eom::kinds::vehicle::manoeuvre::{VehicleManoeuvre, run as run_vehicle};
 use eom::mass::{BodyFile, BodyFileError, Mesh, MeshMass};
 use eom::models::{Family, Kinematics, Symmetry};
 use eom::run::{Row, Sink};
 use eom::scene::{AnyScene, Problem, Scene, SceneError, sweep};
-use eom::ship::linear::LinearModel;
-use eom::ship::manoeuvre::{Manoeuvre, run as run_manoeuvre};
-use eom::ship::{ShipModel, ShipScene};
-use eom::vehicle::manoeuvre::{VehicleManoeuvre, run as run_vehicle};
 use eom_cli::eval::evaluate;
 use eom_test_support::cli::root;
 use nalgebra::Vector3;

@@ -6,10 +6,10 @@
 //! the table (found by walking the schema itself, so a key added to a table struct and not
 //! to the reference fails here).
 
+use eom::kinds::ship::scene::ShipSceneFile;
+use eom::kinds::vehicle::scene::VehicleSceneFile;
 use eom::scene::file::SceneFile;
 use eom::scene::reference::{Key, REGENERATE, Required, SceneFamily, keys_of, markdown, template};
-use eom::ship::scene::ShipSceneFile;
-use eom::vehicle::scene::VehicleSceneFile;
 use eom_test_support::cli::{eom, folder, root};
 use eom_test_support::schema;
 use std::collections::BTreeSet;

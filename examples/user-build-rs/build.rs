@@ -67,7 +67,7 @@ fn mariner_spec() -> ShipSpec {
     }
 }
 
-/// REMUS 100 as `eom` builds a vehicle scene's model (`eom::vehicle::model::spec`): the
+/// REMUS 100 as `eom` builds a vehicle scene's model (`eom::kinds::vehicle::model::spec`): the
 /// added-mass entries and the terms `scenes/remus100.toml` names, read as Prestero writes
 /// them, in SI; quaternions; the principal moments of inertia about the point the scene's
 /// `body.inertia_about` names (G by default; Prestero's are about O); the fins `dr` and `ds`;

@@ -6,9 +6,9 @@ use eom::mass::{BodyFile, Mesh, MeshMass};
 use eom::models::{Family, Kinematics, Symmetry};
 use eom::run::{Row, Sink};
 use eom::scene::{AnyScene, Problem, Scene, SceneError, sweep};
-use eom::ship::ShipScene;
-use eom::vehicle::VehicleScene;
-use eom::vehicle::manoeuvre::VehicleManoeuvre;
+use eom::kinds::ship::ShipScene;
+use eom::kinds::vehicle::VehicleScene;
+use eom::kinds::vehicle::manoeuvre::VehicleManoeuvre;
 use nalgebra::Vector3;
 use std::io::Cursor;
 use std::path::{Path, PathBuf};
@@ -91,7 +91,7 @@ fn vehicle_accepted(scene: &VehicleScene) {
     stepper.step = stepper.step.map(|step| step.max(short.duration / 200.0));
     let every = scene.every.max(short.duration / 10.0);
     let result = scene.start().and_then(|start| {
-        eom::vehicle::manoeuvre::run(
+        eom::kinds::vehicle::manoeuvre::run(
             &scene.model,
             &scene.fins,
             &short,
@@ -107,7 +107,7 @@ fn vehicle_accepted(scene: &VehicleScene) {
 
 /// A ship scene read: its model was built and proved.
 fn ship_accepted(scene: &ShipScene) {
-    if let Err(error) = eom::ship::ShipModel::new(&scene.table) {
+    if let Err(error) = eom::kinds::ship::ShipModel::new(&scene.table) {
         assert!(!error.to_string().trim().is_empty());
     }
 }

@@ -116,7 +116,7 @@ mod tests {
     #[cfg(feature = "ship")]
     #[test]
     fn every_ship_state_entry_has_a_unit() {
-        for name in crate::ship::model::STATE {
+        for name in crate::kinds::ship::model::STATE {
             assert!(state_unit(name).is_some(), "{name}");
         }
     }

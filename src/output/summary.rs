@@ -18,6 +18,7 @@
 //! The file is written whole to a temporary name in the same folder and renamed over
 //! `summary.json`, so a reader never sees half of one.
 
+use crate::integrate::Stepper;
 use crate::models::{ModelInfo, Operations};
 use crate::run::Report;
 use serde::Serialize;
@@ -165,4 +166,33 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     let temporary = path.with_file_name(format!(".{name}.partial"));
     std::fs::write(&temporary, bytes)?;
     std::fs::rename(&temporary, path)
+}
+
+/// The method and its settings, as a scene with manoeuvres ran each of them (a ship's, a
+/// vehicle's): the step or the tolerances, where [`IntegratorSummary`] counts one run's steps.
+#[derive(Debug, Clone, Serialize)]
+pub struct MethodSummary {
+    /// Its name in scene files.
+    pub method: &'static str,
+    /// The step of a fixed-step method, s.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub step: Option<f64>,
+    /// The relative tolerance of an adaptive one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rtol: Option<f64>,
+    /// Its absolute tolerance.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub atol: Option<f64>,
+}
+
+impl MethodSummary {
+    /// The method of `stepper` with the settings it ran with.
+    pub fn new(stepper: &Stepper) -> Self {
+        MethodSummary {
+            method: stepper.method.name(),
+            step: stepper.step,
+            rtol: stepper.adaptive.map(|o| o.rtol),
+            atol: stepper.adaptive.map(|o| o.atol),
+        }
+    }
 }

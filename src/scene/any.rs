@@ -34,10 +34,10 @@ pub enum AnyScene {
     Catalog(Box<Scene>),
     /// A ship on its own hydrodynamic table, with its manoeuvres.
     #[cfg(feature = "ship")]
-    Ship(Box<crate::ship::ShipScene>),
+    Ship(Box<crate::kinds::ship::ShipScene>),
     /// An underwater vehicle on its own hydrodynamic table, with its manoeuvres.
     #[cfg(feature = "ship")]
-    Vehicle(Box<crate::vehicle::VehicleScene>),
+    Vehicle(Box<crate::kinds::vehicle::VehicleScene>),
 }
 
 impl AnyScene {
@@ -84,20 +84,20 @@ impl AnyScene {
     /// The scene whose tables `read` reads, with a model its own table defines.
     #[cfg(feature = "ship")]
     fn defined_by_table(
-        read: impl FnOnce() -> Result<crate::ship::scene::ShipSceneFile, SceneError>,
+        read: impl FnOnce() -> Result<crate::kinds::ship::scene::ShipSceneFile, SceneError>,
         name: &str,
     ) -> Result<Self, SceneError> {
-        let scene = crate::ship::ShipScene::from_file(&read()?, name)?;
+        let scene = crate::kinds::ship::ShipScene::from_file(&read()?, name)?;
         Ok(AnyScene::Ship(Box::new(scene)))
     }
 
     /// The vehicle scene whose tables `read` reads.
     #[cfg(feature = "ship")]
     fn vehicle(
-        read: impl FnOnce() -> Result<crate::vehicle::scene::VehicleSceneFile, SceneError>,
+        read: impl FnOnce() -> Result<crate::kinds::vehicle::scene::VehicleSceneFile, SceneError>,
         name: &str,
     ) -> Result<Self, SceneError> {
-        let scene = crate::vehicle::VehicleScene::from_file(&read()?, name)?;
+        let scene = crate::kinds::vehicle::VehicleScene::from_file(&read()?, name)?;
         Ok(AnyScene::Vehicle(Box::new(scene)))
     }
 

@@ -16,6 +16,7 @@
 
 mod any;
 pub(crate) mod check;
+pub mod envelope;
 mod error;
 pub mod file;
 mod loads;

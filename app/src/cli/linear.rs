@@ -12,12 +12,12 @@
 //! model as MATLAB variables), into a folder taken as `eom run` takes one.
 
 use anyhow::Result;
+use eom::kinds::vehicle::linear::linearise_vehicle;
 use eom::linear::{Linearisation, Mode, Stability, StateSpace, linearise_scene, newton_steps};
 use eom::output::folder::{Claim, Writer};
 use eom::output::mat::mat_file;
 use eom::output::summary::write_atomically;
 use eom::scene::AnyScene;
-use eom::vehicle::linear::linearise_vehicle;
 use eom_cli::plots::poles::{POLES, write_pole_plot};
 use serde_json::{Map, Value, json};
 use std::path::{Path, PathBuf};

@@ -111,8 +111,8 @@ pub fn exit_code(error: &anyhow::Error) -> u8 {
         if let Some(linear) = cause.downcast_ref::<eom::linear::LinearError>() {
             return if linear.is_scene_error() { 3 } else { 5 };
         }
-        if let Some(vehicle) = cause.downcast_ref::<eom::vehicle::VehicleError>() {
-            use eom::vehicle::VehicleError;
+        if let Some(vehicle) = cause.downcast_ref::<eom::kinds::vehicle::VehicleError>() {
+            use eom::kinds::vehicle::VehicleError;
             return match vehicle {
                 VehicleError::Invalid { .. } | VehicleError::Table(_) => 3,
                 VehicleError::Linear(linear) if linear.is_scene_error() => 3,
@@ -121,12 +121,12 @@ pub fn exit_code(error: &anyhow::Error) -> u8 {
                 VehicleError::Prove(_) => 1,
             };
         }
-        if let Some(ship) = cause.downcast_ref::<eom::ship::ShipError>() {
+        if let Some(ship) = cause.downcast_ref::<eom::kinds::ship::ShipError>() {
             return match ship {
-                eom::ship::ShipError::Run { .. } => 5,
-                eom::ship::ShipError::Stopped { .. } => 130,
-                eom::ship::ShipError::Invalid { .. } => 3,
-                eom::ship::ShipError::Build(_) => 1,
+                eom::kinds::ship::ShipError::Run { .. } => 5,
+                eom::kinds::ship::ShipError::Stopped { .. } => 130,
+                eom::kinds::ship::ShipError::Invalid { .. } => 3,
+                eom::kinds::ship::ShipError::Build(_) => 1,
             };
         }
     }
@@ -136,7 +136,7 @@ pub fn exit_code(error: &anyhow::Error) -> u8 {
 #[cfg(test)]
 mod tests {
     use super::exit_code;
-    use eom::vehicle::VehicleError;
+    use eom::kinds::vehicle::VehicleError;
 
     /// A vehicle's run that cannot go on exits 5, as every kind's does (README's table); a
     /// value it refuses, 3; one stopped by Ctrl-C, 130.

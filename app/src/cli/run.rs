@@ -18,6 +18,8 @@
 
 use anyhow::{Context, Result, bail};
 use eom::Short;
+use eom::kinds::ship::ShipScene;
+use eom::kinds::vehicle::VehicleScene;
 use eom::output::folder::{Claim, FolderError, Writer, sweep_identity};
 use eom::output::summary::{Extra, Summary, write_atomically};
 use eom::output::text::printable;
@@ -25,8 +27,6 @@ use eom::output::trajectory::{Columns, TrajectoryWriter, number_text};
 use eom::run::{Report, Row, RunError, Sink, run_reporting};
 use eom::scene::sweep::{TableCase, is_swept, parse_shard, shard_tables};
 use eom::scene::{AnyScene, Body, Problem, Scene, SceneError};
-use eom::ship::ShipScene;
-use eom::vehicle::VehicleScene;
 use eom_cli::plots::PLOT_FILES;
 use eom_cli::shell_path;
 use eom_cli::view::VIEW_FILE;

@@ -5,7 +5,7 @@
 //! model that ran, the linear model, each manoeuvre's figures under `"manoeuvre"` with how
 //! much each moves when the run is refined (half the step, or tolerances a hundred times
 //! tighter), and the IMO criteria under `"manoeuvre"."imo"` (the types of
-//! `eom::ship::summary`).
+//! `eom::kinds::ship::summary`).
 //! Every file is written whole to a temporary name and renamed. Ctrl-C (or SIGTERM) ends the
 //! run at its next step: the manoeuvres finished before it keep their folders, summary.json
 //! says `"interrupted": true` and holds their figures, and the exit code is 128 + the signal.
@@ -13,27 +13,27 @@
 use super::run::{Interrupted, signal_received};
 use anyhow::{Context, Result};
 use eom::Model;
+use eom::kinds::ship::Side;
+use eom::kinds::ship::imo::Trial;
+use eom::kinds::ship::imo::{Criterion, criteria, possible};
+use eom::kinds::ship::linear::{LinearModel, Nomoto, linearise, linearise_ship};
+use eom::kinds::ship::manoeuvre::ManoeuvreKind;
+use eom::kinds::ship::manoeuvre::{Figures, ROW, run, trajectory_columns};
+use eom::kinds::ship::scene::NAMED_FROM;
+use eom::kinds::ship::side::{deciding_figure, worse};
+use eom::kinds::ship::spiral::{Branch, Loop, SpiralCurve, SpiralPoint, Verdict};
+use eom::kinds::ship::steady::SteadyTurns;
+use eom::kinds::ship::summary::{
+    CriterionSummary, LinearSummary, ManoeuvreSummary, Manoeuvres, ModelSummary, ShipSummary,
+    nomoto_difference,
+};
+use eom::kinds::ship::{Manoeuvre, ShipError, ShipModel, ShipScene};
 use eom::output::summary::write_atomically;
 use eom::output::text::printable;
 use eom::output::trajectory::{Columns, TrajectoryWriter};
 use eom::run::{Row, Sink};
 use eom::scene::reference::{SceneFamily, keys_of};
 use eom::scene::sweep::TableCase;
-use eom::ship::Side;
-use eom::ship::imo::Trial;
-use eom::ship::imo::{Criterion, criteria, possible};
-use eom::ship::linear::{LinearModel, Nomoto, linearise, linearise_ship};
-use eom::ship::manoeuvre::ManoeuvreKind;
-use eom::ship::manoeuvre::{Figures, ROW, run, trajectory_columns};
-use eom::ship::scene::NAMED_FROM;
-use eom::ship::side::{deciding_figure, worse};
-use eom::ship::spiral::{Branch, Loop, SpiralCurve, SpiralPoint, Verdict};
-use eom::ship::steady::SteadyTurns;
-use eom::ship::summary::{
-    CriterionSummary, IntegratorSummary, LinearSummary, ManoeuvreSummary, Manoeuvres, ModelSummary,
-    ShipSummary, nomoto_difference,
-};
-use eom::ship::{Manoeuvre, ShipError, ShipModel, ShipScene};
 use eom::{Short, fixed};
 use eom_cli::plots::Mark;
 use eom_cli::plots::curves::{Curve, Curves, write_curves};
@@ -302,7 +302,7 @@ fn run_into(scene: &ShipScene, name: &str, out: &Path) -> Result<ShipRun> {
         scene: name.to_owned(),
         title: scene.title.clone(),
         model: ModelSummary::new(scene, &model),
-        integrator: IntegratorSummary::new(&scene.stepper),
+        integrator: eom::output::summary::MethodSummary::new(&scene.stepper),
         linear: LinearSummary::new(scene, &model, &linear),
         manoeuvre: Manoeuvres {
             runs,

@@ -1,29 +1,29 @@
 //! Vehicle scenes: `eom run SCENE` for a scene with `[model] family = "vehicle"` and
 //! `[hydrodynamics]`.
 //!
-//! Each `[[manoeuvre]]` runs from its trim ([`eom::vehicle::trim`]) into its own folder (`trajectory.csv`; as SVG the
+//! Each `[[manoeuvre]]` runs from its trim ([`eom::kinds::vehicle::trim`]) into its own folder (`trajectory.csv`; as SVG the
 //! track in plan, the profile, the attitude and the fins with their commands; `view.html`, the
 //! run in 3-D), and
 //! `summary.json` beside them holds the model that ran, the method, the folded table against
 //! its added mass per coefficient, the cruise against its closed forms, and each manoeuvre's
 //! figures with how far they move when the run is refined (the types of
-//! `eom::vehicle::summary`). Ctrl-C ends the run at its next
+//! `eom::kinds::vehicle::summary`). Ctrl-C ends the run at its next
 //! step, keeping the manoeuvres finished before it.
 
 use super::run::{Interrupted, signal_received};
 use anyhow::{Context, Result};
+use eom::kinds::vehicle::manoeuvre::{ROW, VehicleManoeuvre, run};
+use eom::kinds::vehicle::summary::{
+    CruiseSummary, KirchhoffRow, ManoeuvreSummary, ModelSummary, SetpointFigures, StepFigures,
+    VehicleSummary, largest_difference, largest_setpoint_difference, trial_figures,
+};
+use eom::kinds::vehicle::trial::{Plane, TrialFigures, largest_trial_difference};
+use eom::kinds::vehicle::{VehicleError, VehicleScene, format_folded};
+use eom::output::summary::MethodSummary;
 use eom::output::summary::write_atomically;
 use eom::output::text::printable;
 use eom::output::trajectory::{Columns, TrajectoryWriter};
 use eom::run::{Row, Sink};
-use eom::ship::summary::IntegratorSummary;
-use eom::vehicle::manoeuvre::{ROW, VehicleManoeuvre, run};
-use eom::vehicle::summary::{
-    CruiseSummary, KirchhoffRow, ManoeuvreSummary, ModelSummary, SetpointFigures, StepFigures,
-    VehicleSummary, largest_difference, largest_setpoint_difference, trial_figures,
-};
-use eom::vehicle::trial::{Plane, TrialFigures, largest_trial_difference};
-use eom::vehicle::{VehicleError, VehicleScene, format_folded};
 use eom::{Model, fixed};
 use eom::{Short, counted};
 use eom_cli::plots::Mark;
@@ -60,7 +60,7 @@ pub fn execute(scene: &VehicleScene, out: &Path) -> Result<()> {
     let summary = VehicleSummary {
         title: scene.title.clone(),
         model: ModelSummary::new(scene),
-        integrator: IntegratorSummary::new(&scene.stepper),
+        integrator: MethodSummary::new(&scene.stepper),
         kirchhoff: scene.model.folded().iter().map(KirchhoffRow::new).collect(),
         cruise: CruiseSummary::new(scene),
         manoeuvre: manoeuvres,

@@ -457,14 +457,14 @@ pub fn write_ship(out: &Path, ship: ShipColumns) -> Result<PathBuf> {
 /// vehicle's mass and principal moments about G (along the principal axis nearest body x),
 /// drawn about the table's origin O (G's offset from O, 2 cm for REMUS, is not drawn), moving
 /// through the water in north, east, down and turned by the run's quaternion. `columns` are
-/// [`eom::vehicle::manoeuvre::ROW`]'s.
+/// [`eom::kinds::vehicle::manoeuvre::ROW`]'s.
 pub fn write_vehicle(
     out: &Path,
     title: &str,
-    table: &eom::vehicle::table::VehicleTable,
+    table: &eom::kinds::vehicle::table::VehicleTable,
     columns: &Columns,
 ) -> Result<PathBuf> {
-    use eom::vehicle::manoeuvre::ROW;
+    use eom::kinds::vehicle::manoeuvre::ROW;
     let column = |name: &str| -> &[f64] {
         let index = ROW.iter().position(|r| *r == name).unwrap_or(0);
         &columns.state[index]
@@ -501,11 +501,11 @@ pub fn write_vehicle(
 
 /// The vehicle's inertia tensor about G: as the scene gives it, or from the one about O by
 /// 4.23 turned round, I_G = I_O − M(|r_G|² E − r_G r_Gᵀ).
-fn inertia_about_g(table: &eom::vehicle::table::VehicleTable) -> Matrix3<f64> {
+fn inertia_about_g(table: &eom::kinds::vehicle::table::VehicleTable) -> Matrix3<f64> {
     let given = Matrix3::from_fn(|r, c| table.inertia[r][c]);
     match table.inertia_about {
-        eom::vehicle::InertiaAbout::Gravity => given,
-        eom::vehicle::InertiaAbout::Origin => {
+        eom::kinds::vehicle::InertiaAbout::Gravity => given,
+        eom::kinds::vehicle::InertiaAbout::Origin => {
             let r = Vector3::from(table.centre_of_gravity);
             given - (Matrix3::identity() * r.norm_squared() - r * r.transpose()) * table.mass
         }

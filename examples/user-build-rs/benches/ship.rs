@@ -20,8 +20,8 @@ use common::{
     remus_coefficients, remus_rates, remus_scene, table,
 };
 use eom::integrate::{Integrator, Rk4, Statistics};
+use eom::kinds::ship::ShipModel;
 use eom::nalgebra::SVector;
-use eom::ship::ShipModel;
 use eom::{Constant, Model, OdeSystem};
 use eom_example_user_build_rs::{example_ship, ship};
 use std::hint::black_box;

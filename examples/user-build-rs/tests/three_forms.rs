@@ -15,7 +15,7 @@ use common::{
     remus_coefficients, remus_rates, remus_scene, table,
 };
 use eom::Model;
-use eom::ship::ShipModel;
+use eom::kinds::ship::ShipModel;
 use eom_example_user_build_rs::{example_ship, ship};
 
 /// Whether rustc's `mul_add` is one fused operation in this build.

@@ -264,11 +264,11 @@ fn trajectory_columns() -> String {
 /// The ship's columns, from the manoeuvre's own list.
 #[cfg(feature = "ship")]
 fn ship_columns() -> String {
-    let columns: Vec<String> = crate::ship::manoeuvre::trajectory_columns()
+    let columns: Vec<String> = crate::kinds::ship::manoeuvre::trajectory_columns()
         .iter()
         .map(|c| format!("`{c}`"))
         .collect();
-    let vehicle: Vec<String> = crate::vehicle::manoeuvre::trajectory_columns()
+    let vehicle: Vec<String> = crate::kinds::vehicle::manoeuvre::trajectory_columns()
         .iter()
         .map(|c| format!("`{c}`"))
         .collect();

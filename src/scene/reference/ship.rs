@@ -1,4 +1,4 @@
-//! The keys of a ship scene (`eom::ship::scene::ShipSceneFile`), in the order a template
+//! The keys of a ship scene (`eom::kinds::ship::scene::ShipSceneFile`), in the order a template
 //! writes them. The template's ship is the Esso Osaka of `scenes/esso_osaka.toml` (its
 //! sources and estimates are said there), in the prime system, with the dimensional keys
 //! shown commented out beside their prime counterparts.
@@ -226,7 +226,7 @@ pub(super) static KEYS: &[Key] = &[
         families: SHIP,
         unit: "m",
         required: Required::When("with [propulsion]"),
-        description: "d, the propeller's diameter. [propulsion] is optional (prime tables only): with it the propeller rate is the model's second input, the thrust law and the resistance are in X, the rudder's terms are on its inflow speed c and the bias terms on the propeller's induced velocity (eom::ship::propulsion), and a crash_stop can be run.",
+        description: "d, the propeller's diameter. [propulsion] is optional (prime tables only): with it the propeller rate is the model's second input, the thrust law and the resistance are in X, the rudder's terms are on its inflow speed c and the bias terms on the propeller's induced velocity (eom::kinds::ship::propulsion), and a crash_stop can be run.",
         example: "9.1",
         shown: Shown::Commented,
         ..Key::BLANK
@@ -415,7 +415,7 @@ pub(super) static KEYS: &[Key] = &[
         description: "Which manoeuvre. Each starts straight ahead at U₀, midship at the \
                       origin, heading north, rudder amidships. spiral: Dieudonné's direct \
                       spiral; reverse_spiral: Bech's reverse spiral (the steady yaw rate \
-                      against the rudder angle, and its loop; see eom::ship::spiral); \
+                      against the rudder angle, and its loop; see eom::kinds::ship::spiral); \
                       crash_stop (with [propulsion]): full ahead to full astern, the rudder \
                       amidships, until the ship stops (u = 0).",
         example: "\"turning_circle\"",

@@ -1,4 +1,4 @@
-//! The keys of a vehicle scene (`eom::vehicle::scene::VehicleSceneFile`), in the order a
+//! The keys of a vehicle scene (`eom::kinds::vehicle::scene::VehicleSceneFile`), in the order a
 //! template writes them. The template's vehicle is REMUS on Prestero's table, as in
 //! `scenes/remus100.toml` (its sources and the readings that differ are said there), with a
 //! short turn so that the template runs in a moment.
@@ -279,7 +279,7 @@ pub(super) static KEYS: &[Key] = &[
         kind: Kind::Numbers("one per strip"),
         unit: "m",
         required: Required::When("with [hydrodynamics.cross_flow]"),
-        description: "x_i, each strip's station along body x from O. The cross-flow drag (eom::vehicle::cross_flow, after npsauv.m's strips): at each strip the local cross flow a = v + x r, b = w − x q gives the force −½ρΔx(C_dy H a² + C_dz B b²)(a, b)/√(a² + b²) in y and z, and the loads about O are these forces and their moments (the pitch moment −Σ x F_z: npsauv.m's reads w + x q there, and the scene follows the moment of its own forces). Not a polynomial: computed beside the proved program, which reads its loads as its applied loads, with its derivatives in the Jacobian.",
+        description: "x_i, each strip's station along body x from O. The cross-flow drag (eom::kinds::vehicle::cross_flow, after npsauv.m's strips): at each strip the local cross flow a = v + x r, b = w − x q gives the force −½ρΔx(C_dy H a² + C_dz B b²)(a, b)/√(a² + b²) in y and z, and the loads about O are these forces and their moments (the pitch moment −Σ x F_z: npsauv.m's reads w + x q there, and the scene follows the moment of its own forces). Not a polynomial: computed beside the proved program, which reads its loads as its applied loads, with its derivatives in the Jacobian.",
         example: "[-0.6, 0.0, 0.6]",
         shown: Shown::Commented,
         ..Key::BLANK
@@ -374,7 +374,7 @@ pub(super) static KEYS: &[Key] = &[
         required: Required::When("with the constant law (a law refuses it: it gives the thrust)"),
         description: "X_prop, constant at the setting, along body x, positive (ahead: a table \
                       is identified going ahead, and at zero the vehicle lies at rest). Every \
-                      run starts from the trim it makes (eom::vehicle::trim): u and the roll \
+                      run starts from the trim it makes (eom::kinds::vehicle::trim): u and the roll \
                       angle so that u̇ = ṗ = 0, and where that is not a steady motion (W ≠ B, G \
                       and the centre of buoyancy not on one vertical) the whole state but the \
                       position and the heading; a scene without a trim ahead is refused.",

@@ -3,11 +3,11 @@
 //! `scenes/mariner.toml`), each parameter by its generated symbol, and random ship states.
 
 use eom::Model;
+use eom::kinds::ship::table::{GivenTable, ShipBody, ShipTable};
+use eom::kinds::ship::{RigidBodyTerms, ShipScene, Units, YawInertia};
+use eom::kinds::vehicle::VehicleScene;
+use eom::kinds::vehicle::model::{parameter_values, spec};
 use eom::scene::AnyScene;
-use eom::ship::table::{GivenTable, ShipBody, ShipTable};
-use eom::ship::{RigidBodyTerms, ShipScene, Units, YawInertia};
-use eom::vehicle::VehicleScene;
-use eom::vehicle::model::{parameter_values, spec};
 use eom_codegen::model::Kinematics;
 use eom_codegen::model::ship::{ADDED_MASS, PRIME_SCALES, ShipSpec};
 use eom_example_user_build_rs::{example_ship, mariner, remus};

@@ -91,7 +91,7 @@
 
 use super::autopilot::{Autopilots, DepthGains, HeadingGains, Setpoints};
 use super::cross_flow::CrossFlow;
-use super::fins::{FinSteps, Fins, Rudder};
+use super::fins::{FinSteps, Fins};
 use super::manoeuvre::VehicleManoeuvre;
 use super::model::VehicleModel;
 use super::propeller::PropellerLaw;
@@ -101,8 +101,8 @@ use super::trim::{Held, Trim, TrimError, Trimmer};
 use super::{AddedMassCoriolis, Convention, InertiaAbout, VehicleError};
 use crate::integrate::Stepper;
 use crate::scene::check::Checker;
+use crate::scene::envelope::{FamilyTable, IntegratorTable, OutputTable, SteeringGearTable};
 use crate::scene::{Problem, SceneError};
-use crate::ship::scene::{IntegratorTable, OutputTable, RudderTable};
 use crate::{InertiaTensor, Short, counted};
 use nalgebra::Matrix3;
 use serde::Deserialize;
@@ -129,7 +129,7 @@ pub struct VehicleSceneFile {
     /// What the scene is.
     pub title: String,
     /// `family = "vehicle"`.
-    pub model: crate::ship::scene::ModelTable,
+    pub model: FamilyTable,
     /// The body.
     pub body: BodyTable,
     /// The hydrodynamic table.
@@ -138,10 +138,10 @@ pub struct VehicleSceneFile {
     pub propeller: Option<PropellerTable>,
     /// The rudder's steering gear.
     #[serde(default)]
-    pub rudder: RudderTable,
+    pub rudder: SteeringGearTable,
     /// The stern planes' steering gear.
     #[serde(default)]
-    pub stern_planes: RudderTable,
+    pub stern_planes: SteeringGearTable,
     /// The method.
     pub integrator: IntegratorTable,
     /// The manoeuvres, each run from the cruise.
@@ -686,31 +686,6 @@ impl Checker<'_> {
             .map(|(density, length)| PrimeScales { density, length }))
     }
 
-    fn fin(&self, table: &str, fin: &RudderTable) -> Result<Rudder, SceneError> {
-        let key = |k: &str| format!("{table}.{k}");
-        let angle = |k: &str, value: Option<f64>| {
-            value
-                .map(|v| self.positive(&key(k), v).map(f64::to_radians))
-                .transpose()
-        };
-        let max_angle = angle("max_deg", fin.max_deg)?;
-        let max_rate = angle("max_rate_deg_s", fin.max_rate_deg_s)?;
-        let time_constant = (fin.time_constant_s)
-            .map(|t| self.positive(&key("time_constant_s"), t))
-            .transpose()?;
-        if max_rate.is_some() && time_constant.is_none() {
-            return Err(self.invalid(
-                &key("max_rate_deg_s"),
-                format!("a rate limit acts on the lag's rate: give {table}.time_constant_s too"),
-            ));
-        }
-        Ok(Rudder {
-            max_angle,
-            max_rate,
-            time_constant,
-        })
-    }
-
     /// Manoeuvre `index`, from `trim` (the scene's; one held by its autopilots is set by
     /// [`Checker::held_trim`]).
     fn vehicle_manoeuvre(
@@ -881,7 +856,7 @@ impl Checker<'_> {
                 ));
             }
         }
-        let pitch = crate::vehicle::manoeuvre::euler_angles(&trim.state)[1];
+        let pitch = crate::kinds::vehicle::manoeuvre::euler_angles(&trim.state)[1];
         let max_pitch = (file.autopilot.as_ref())
             .and_then(|a| a.depth.as_ref())
             .map(|d| d.max_pitch_deg);
@@ -907,8 +882,8 @@ impl Checker<'_> {
         &self,
         index: usize,
         table: &ManoeuvreTable,
-        rudder: &RudderTable,
-        stern_planes: &RudderTable,
+        rudder: &SteeringGearTable,
+        stern_planes: &SteeringGearTable,
     ) -> Result<(), SceneError> {
         let key = |k: &str| format!("manoeuvre[{index}].{k}");
         let vertical = table.plane.as_deref() == Some("vertical");
@@ -1152,8 +1127,8 @@ impl VehicleScene {
         let model =
             VehicleModel::new(&table).map_err(|e| check.invalid(&e.key(), e.to_string()))?;
         let fins = Fins {
-            rudder: check.fin("rudder", &file.rudder)?,
-            stern_planes: check.fin("stern_planes", &file.stern_planes)?,
+            rudder: check.steering_gear("rudder", &file.rudder)?,
+            stern_planes: check.steering_gear("stern_planes", &file.stern_planes)?,
         };
         if file.manoeuvre.is_empty() {
             return Err(check.error(

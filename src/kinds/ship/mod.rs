@@ -9,14 +9,14 @@
 //! |---|---|
 //! | the table as written: names, units, the rigid-body convention, folded tables converted | [`table`] |
 //! | 4.46 with exactly the table's terms, derived, solved and proved by `eom-codegen`, evaluated | [`model`] |
-//! | the rudder: saturation, first-order lag, rate limit; its commands | [`rudder`] |
+//! | the rudder: saturation, first-order lag, rate limit; its commands (the steering gear every craft shares) | [`crate::manoeuvring::steering`] |
 //! | the propeller: the thrust law, the rudder's inflow speed, the engine's rate command | [`propulsion`] |
 //! | the manoeuvres as schedules and events over the one driver (any method), their figures | [`manoeuvre`] |
 //! | the two sides of a turn or zig-zag, and which is the worse | [`side`] |
 //! | the spiral tests (direct and reverse), the r–δ curve and its loop | [`spiral`] |
 //! | the steady turns at fixed rudder by continuation, and the folds that end the loop | [`steady`] |
 //! | what a run reports, as data (`summary.json`'s types) | [`summary`] |
-//! | what the figures assume (ahead, not stopped, one way, settled), checked on the run | [`course`] |
+//! | what the figures assume (ahead, not stopped, one way, settled), checked on the run (shared with the vehicle's turning circle) | [`crate::manoeuvring::course`] |
 //! | the IMO MSC.137(76) criteria | [`imo`] |
 //! | the linear model about the straight course: Nomoto, course stability, pivot point | [`linear`] |
 //! | the scene file | [`scene`] |
@@ -30,13 +30,12 @@
 //! one seam, `crate::defined`. A user who wants the same model compiled calls the generator's
 //! `emit::system_source` (crate `eom-codegen`) from a `build.rs`.
 
-pub mod course;
 pub mod imo;
 pub mod linear;
 pub mod manoeuvre;
 pub mod model;
 pub mod propulsion;
-pub mod rudder;
+
 pub mod scene;
 pub mod side;
 pub mod spiral;
@@ -50,11 +49,11 @@ pub(crate) use crate::defined::engine::{ADDED_MASS, VARIABLES};
 /// The table's vocabulary, from the generator that builds the model: a term, its load, the
 /// units, and about which point the yaw inertia is given.
 pub use crate::defined::engine::{Force, Term, Units, YawInertia};
+pub use crate::manoeuvring::{Rudder, Series};
 pub use linear::{LinearModel, Nomoto};
 pub use manoeuvre::{Manoeuvre, ManoeuvreKind, ManoeuvreRun};
 pub use model::ShipModel;
 pub use propulsion::Propulsion;
-pub use rudder::{Rudder, Series};
 pub use scene::ShipScene;
 pub use side::Side;
 pub use table::{RigidBodyTerms, ShipTable};

@@ -23,15 +23,15 @@
 //! ship stops (u = 0).
 
 use super::ShipError;
-use super::course::Course;
 use super::model::ShipModel;
 use super::propulsion::RateCommand;
-use super::rudder::{Rudder, Series};
 use super::side::Side;
 use super::spiral::{self, Progress, ReverseSpiral, Spiral, SpiralCurve};
 use super::steady::steady_turns;
 use crate::integrate::segment::{self, Hooks, add};
 use crate::integrate::{IntegrateError, OdeSystem, Reached, RowClock, Stats, Stepper};
+use crate::manoeuvring::course::Course;
+use crate::manoeuvring::steering::{Rudder, Series};
 use crate::models::{Driven, Loads, Model};
 use nalgebra::SVector;
 use std::f64::consts::PI;

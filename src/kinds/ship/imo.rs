@@ -25,9 +25,9 @@
 //! where the scene has no propulsion model to go astern with, or runs no crash stop.
 
 use super::manoeuvre::{Figures, Manoeuvre, ManoeuvreKind};
-use super::rudder::Rudder;
 use super::scene::ShipScene;
 use super::side::Side;
+use crate::manoeuvring::steering::Rudder;
 
 /// A manoeuvre as it ran: the manoeuvre, and the figures of each of its runs, by side (one run
 /// of no side for a manoeuvre run as given).

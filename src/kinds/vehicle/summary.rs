@@ -6,7 +6,7 @@ use super::VehicleScene;
 use super::autopilot::wrapped;
 use super::manoeuvre::{Tracked, VehicleManoeuvre, VehicleRun, euler_angles};
 use super::trial::TrialFigures;
-use crate::ship::summary::IntegratorSummary;
+use crate::output::summary::MethodSummary;
 use serde::Serialize;
 use std::collections::BTreeMap;
 
@@ -18,7 +18,7 @@ pub struct VehicleSummary {
     /// The model.
     pub model: ModelSummary,
     /// The method.
-    pub integrator: IntegratorSummary,
+    pub integrator: MethodSummary,
     /// Per cross term of the added mass's Coriolis and centripetal terms: the table's value,
     /// what M_A implies, the difference (a folded table; empty for a derived one).
     pub kirchhoff: Vec<KirchhoffRow>,

@@ -8,8 +8,8 @@
 //! has a kink, which a step across would be only first-order accurate about, so the run
 //! locates it as an event ([`Steering::rate_margin`]), as the ship's does.
 
+pub use crate::manoeuvring::Rudder;
 use crate::models::Loads;
-pub use crate::ship::Rudder;
 
 /// The two fins' steering gears.
 #[derive(Debug, Clone, Copy, PartialEq)]

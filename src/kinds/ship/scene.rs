@@ -15,7 +15,7 @@
 //!
 //! [hydrodynamics]
 //! units = "prime"              # or "dimensional"
-//! rigid_body_terms = "folded"  # or "separate" (see eom::ship::table)
+//! rigid_body_terms = "folded"  # or "separate" (see eom::kinds::ship::table)
 //! density = 1025.0             # ρ, kg/m³ (prime only)
 //! design_speed = 7.7175        # U₀, m/s: the approach speed, and the surge perturbation's reference
 //!
@@ -80,13 +80,14 @@ use super::ShipError;
 use super::linear::LinearModel;
 use super::manoeuvre::{Manoeuvre, ManoeuvreKind};
 use super::propulsion::Propulsion;
-use super::rudder::{Rudder, Series};
 use super::side::Side;
 use super::spiral::{ReverseSpiral, Settle, Spiral};
 use super::table::{GivenTable, RigidBodyTerms, ShipBody, ShipTable};
 use super::{Units, YawInertia};
-use crate::integrate::{Method, Stepper};
-use crate::scene::check::{Checker, MethodKeys};
+use crate::integrate::Stepper;
+use crate::manoeuvring::steering::{Rudder, Series};
+use crate::scene::check::Checker;
+use crate::scene::envelope::{FamilyTable, IntegratorTable, OutputTable, SteeringGearTable};
 use crate::scene::{Problem, SceneError};
 use serde::Deserialize;
 use std::collections::BTreeMap;
@@ -99,14 +100,14 @@ pub struct ShipSceneFile {
     /// What the scene is.
     pub title: String,
     /// `family = "planar-midship"`.
-    pub model: ModelTable,
+    pub model: FamilyTable,
     /// The body.
     pub body: BodyTable,
     /// The hydrodynamic table.
     pub hydrodynamics: HydrodynamicsTable,
     /// The steering gear.
     #[serde(default)]
-    pub rudder: RudderTable,
+    pub rudder: SteeringGearTable,
     /// The propeller, its thrust law and the rudder in its slipstream (prime tables).
     pub propulsion: Option<PropulsionTable>,
     /// The step.
@@ -121,14 +122,6 @@ pub struct ShipSceneFile {
     pub sweep: Option<toml::Table>,
     /// The operating point of `eom linear`.
     pub linear: Option<crate::scene::file::LinearTable>,
-}
-
-/// `[model]`.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct ModelTable {
-    /// `planar-midship`.
-    pub family: String,
 }
 
 /// `[body]`: the keys of the table's units (`_prime` in the prime system), one of each.
@@ -171,18 +164,6 @@ pub struct HydrodynamicsTable {
     pub coefficients: BTreeMap<String, f64>,
 }
 
-/// `[rudder]`.
-#[derive(Debug, Clone, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct RudderTable {
-    /// δ_max, degrees.
-    pub max_deg: Option<f64>,
-    /// δ̇_max, degrees per second.
-    pub max_rate_deg_s: Option<f64>,
-    /// The lag's time constant, s.
-    pub time_constant_s: Option<f64>,
-}
-
 /// `[propulsion]`: the propeller, its thrust law, and the rudder in its slipstream
 /// ([`super::propulsion`]); every key required where the table is given (the checker names the
 /// one missing).
@@ -209,31 +190,6 @@ pub struct PropulsionTable {
     pub wetted_surface: Option<f64>,
     /// The engine's rate limit, rev/s².
     pub max_rate_rps_s: Option<f64>,
-}
-
-/// `[integrator]`: the keys of every scene's but the end time (each manoeuvre gives its
-/// duration) and the stop condition (a manoeuvre's events end its stretches).
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct IntegratorTable {
-    /// `euler`, `symplectic-euler`, `rk4`, `dopri5` or `dop853`.
-    pub method: String,
-    /// The largest step of a fixed-step method, s.
-    pub step: Option<f64>,
-    /// Relative tolerance (adaptive methods).
-    pub rtol: Option<f64>,
-    /// Absolute tolerance (adaptive methods).
-    pub atol: Option<f64>,
-    /// The most steps (accepted and rejected) a manoeuvre may take.
-    pub max_steps: Option<u64>,
-}
-
-/// `[output]`.
-#[derive(Debug, Clone, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct OutputTable {
-    /// A trajectory row every this many seconds (every step where absent).
-    pub every: Option<f64>,
 }
 
 /// `[[manoeuvre]]`: each kind reads its own keys and refuses the others.
@@ -590,84 +546,6 @@ impl Checker<'_> {
         })
     }
 
-    fn rudder(&self, rudder: &RudderTable) -> Result<Rudder, SceneError> {
-        let angle = |key: &str, value: Option<f64>| {
-            value
-                .map(|v| {
-                    self.positive(&format!("rudder.{key}"), v)
-                        .map(f64::to_radians)
-                })
-                .transpose()
-        };
-        let max_angle = angle("max_deg", rudder.max_deg)?;
-        let max_rate = angle("max_rate_deg_s", rudder.max_rate_deg_s)?;
-        let time_constant = rudder
-            .time_constant_s
-            .map(|t| self.positive("rudder.time_constant_s", t))
-            .transpose()?;
-        if max_rate.is_some() && time_constant.is_none() {
-            return Err(self.invalid(
-                "rudder.max_rate_deg_s",
-                "a rate limit acts on the lag's rate: give rudder.time_constant_s too",
-            ));
-        }
-        Ok(Rudder {
-            max_angle,
-            max_rate,
-            time_constant,
-        })
-    }
-
-    /// The method of a scene-defined model's manoeuvres (a ship's, a vehicle's: `what` names
-    /// it in the message, `kicked` are its velocities), read by the checker of every scene's
-    /// `[integrator]` over the longest manoeuvre, and the rows' interval: `output.every`, or
-    /// the step where absent (an adaptive method has none, so it needs `output.every`).
-    pub(crate) fn stepping(
-        &self,
-        (integrator, output): (&IntegratorTable, &OutputTable),
-        longest: f64,
-        (what, kicked): (&str, std::ops::Range<usize>),
-    ) -> Result<(Stepper, f64), SceneError> {
-        let t = integrator;
-        let keys = MethodKeys {
-            method: &t.method,
-            step: t.step,
-            rtol: t.rtol,
-            atol: t.atol,
-            max_steps: t.max_steps,
-        };
-        let settings = self.method_settings(&keys, longest)?;
-        if settings.method == Method::LieMidpoint {
-            return Err(self.invalid(
-                "integrator.method",
-                format!(
-                    "lie-midpoint integrates a free body's rotation alone; {what} takes euler, \
-                     symplectic-euler, rk4, dopri5 or dop853"
-                ),
-            ));
-        }
-        let every = match (output.every, settings.step) {
-            (Some(every), _) => self.positive("output.every", every)?,
-            (None, Some(step)) => step,
-            (None, None) => {
-                return Err(self.error(
-                    "output.every",
-                    Problem::Missing(format!(
-                        "the rows' interval, s: {} chooses its own steps",
-                        settings.method.name()
-                    )),
-                ));
-            }
-        };
-        let stepper = Stepper {
-            method: settings.method,
-            step: settings.step,
-            adaptive: settings.adaptive,
-            kicked,
-        };
-        Ok((stepper, every))
-    }
-
     /// A rudder command of `degrees` at `key` within the steering gear's reach: a command
     /// beyond `rudder.max_deg` would run at the limit while the manoeuvre is labelled and
     /// judged at the angle asked, so it is refused, naming both keys.
@@ -750,7 +628,7 @@ impl Checker<'_> {
                 }
             },
         };
-        // The rudder's magnitude, put over to the first side (see `eom::ship::side`).
+        // The rudder's magnitude, put over to the first side (see `eom::kinds::ship::side`).
         let to_first_side = |rudder: f64| rudder.abs() * sides[0].rudder_sign(linear);
         let (kind, default_name) = match table.kind.as_str() {
             "turning_circle" => {
@@ -1085,7 +963,7 @@ impl ShipScene {
             ));
         }
         let (table, length) = check.table(file)?;
-        let rudder = check.rudder(&file.rudder)?;
+        let rudder = check.steering_gear("rudder", &file.rudder)?;
         let linear = LinearModel::closed_form(&table);
         let table_propulsion = table.propulsion.as_ref();
         if file.manoeuvre.is_empty() {

@@ -11,7 +11,7 @@
 //! rates are the Euler angles' (4.60): ψ̇ = (q sin φ + r cos φ)/cos θ, θ̇ = q cos φ − r sin φ.
 //!
 //! The turning circle's steady figures are given only once the turn has settled, by the
-//! criterion the ship's turning circle uses ([`crate::ship::course`]): the heading has changed
+//! criterion the ship's turning circle uses ([`crate::manoeuvring::course`]): the heading has changed
 //! by 540° and over the last 360° the horizontal speed and the heading rate stay within 1 % of
 //! their final values; else the summary says why not. The steady diameter is then
 //! 2 V_h / |ψ̇| at the end, V_h the horizontal speed of O from 4.57.
@@ -20,7 +20,7 @@ use super::autopilot::wrapped;
 use super::manoeuvre::euler_angles;
 use super::summary::degrees;
 use crate::Short;
-use crate::ship::course::Course;
+use crate::manoeuvring::Course;
 use serde::Serialize;
 use std::f64::consts::{PI, TAU};
 

@@ -15,8 +15,10 @@ use super::steady::{SteadyTurn, SteadyTurns};
 use super::table::RigidBodyTerms;
 use super::{ShipModel, ShipScene};
 use super::{Units, YawInertia};
+
 use crate::integrate::Stepper;
 use crate::models::Operations;
+use crate::output::summary::MethodSummary;
 use serde::Serialize;
 use std::collections::BTreeMap;
 
@@ -30,7 +32,7 @@ pub struct ShipSummary {
     /// The model that ran.
     pub model: ModelSummary,
     /// The method.
-    pub integrator: IntegratorSummary,
+    pub integrator: MethodSummary,
     /// The linear model about the straight course.
     pub linear: LinearSummary,
     /// Each manoeuvre's figures by its name, and the IMO criteria under `imo`.
@@ -74,22 +76,6 @@ pub struct PropulsionSummary {
     pub approach_inflow_m_s: f64,
     /// The engine's rate limit, rev/s².
     pub max_rate_rps_s: f64,
-}
-
-/// The method and its settings.
-#[derive(Debug, Clone, Serialize)]
-pub struct IntegratorSummary {
-    /// Its name in scene files.
-    pub method: &'static str,
-    /// The step of a fixed-step method, s.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub step: Option<f64>,
-    /// The relative tolerance of an adaptive one.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub rtol: Option<f64>,
-    /// Its absolute tolerance.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub atol: Option<f64>,
 }
 
 /// Nomoto's second-order model and the course stability about the straight course.
@@ -466,18 +452,6 @@ impl ModelSummary {
                 approach_inflow_m_s: p.approach_inflow,
                 max_rate_rps_s: p.max_rate,
             }),
-        }
-    }
-}
-
-impl IntegratorSummary {
-    /// The method of `stepper` with the settings it ran with.
-    pub fn new(stepper: &Stepper) -> Self {
-        IntegratorSummary {
-            method: stepper.method.name(),
-            step: stepper.step,
-            rtol: stepper.adaptive.map(|o| o.rtol),
-            atol: stepper.adaptive.map(|o| o.atol),
         }
     }
 }
