@@ -376,3 +376,79 @@ fn a_command_of_7_5_degrees_is_reported_as_7_5() {
     assert_eq!(manoeuvres["zigzag"]["trial"]["fin_deg"], 7.5);
     assert_eq!(manoeuvres["zigzag"]["trial"]["switch_deg"], 7.5);
 }
+
+/// A vehicle scene takes a `[sweep]` as every scene does: REMUS's turning circle over its fin
+/// lift `Nuudr` (the thesis's −6.15 and 20 % either side), run whole and as two shards merged
+/// by `eom sweep-merge`, gives the same table, and each case's line carries its trial figures.
+/// A stronger rudder moment turns tighter, so the tactical diameter falls as |Nuudr| grows.
+#[test]
+fn a_vehicle_sweep_over_a_coefficient_runs_whole_or_in_shards_alike() {
+    let dir = folder("vehicle_sweep");
+    let text = std::fs::read_to_string(scene("remus100.toml")).unwrap();
+    let approach = &text[..text.find("[[manoeuvre]]").unwrap()];
+    let turn_at = text.find("name = \"turning_circle\"").unwrap();
+    let turn_end = turn_at + text[turn_at..].find("\n\n").unwrap();
+    let text = format!(
+        "{approach}[[manoeuvre]]\n{}\n\n[sweep]\n\"hydrodynamics.coefficients.Nuudr\" = \
+         [-4.92, -6.15, -7.38]\n",
+        &text[turn_at..turn_end]
+    );
+    let path = dir.join("remus_sweep.toml");
+    std::fs::write(&path, text).unwrap();
+    let run = |out: &Path, shard: Option<&str>| {
+        let mut args = vec![
+            "run",
+            path.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ];
+        args.extend(shard.map(|s| ["--shard", s]).into_iter().flatten());
+        succeeded(&eom(&args))
+    };
+    let whole = dir.join("whole");
+    run(&whole, None);
+    let table = std::fs::read_to_string(whole.join("sweep.csv")).unwrap();
+    let mut reader = csv::Reader::from_reader(table.as_bytes());
+    let header = reader.headers().unwrap().clone();
+    assert_eq!(header.get(1), Some("hydrodynamics.coefficients.Nuudr"));
+    assert_eq!(header.get(header.len() - 1), Some("error"));
+    let rows: Vec<csv::StringRecord> = reader.records().map(Result::unwrap).collect();
+    assert_eq!(rows.len(), 3);
+    let column = |key: &str| {
+        (header.iter().position(|c| c == key)).unwrap_or_else(|| panic!("{key}: {header:?}"))
+    };
+    let diameters: Vec<f64> = rows
+        .iter()
+        .map(|row| {
+            assert_eq!(&row[column("error")], "", "{row:?}");
+            let value = &row[column("turning_circle.tactical_diameter_m")];
+            value
+                .parse()
+                .unwrap_or_else(|_| panic!("{value:?} in {row:?}"))
+        })
+        .collect();
+    assert!(
+        diameters[0] > diameters[1] && diameters[1] > diameters[2],
+        "{diameters:?}"
+    );
+    // The middle case is the scene as shipped: its line is its own run's figure, every digit.
+    let alone: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(whole.join("case-0001/summary.json")).unwrap(),
+    )
+    .unwrap();
+    let figure = &alone["manoeuvre"]["turning_circle"]["trial"]["tactical_diameter_m"];
+    assert_eq!(figure.as_f64(), Some(diameters[1]));
+    for key in [
+        "turning_circle.advance_m",
+        "turning_circle.refined_difference",
+        "turning_circle.steps_taken",
+    ] {
+        assert!(!rows[0][column(key)].is_empty(), "{key}: {:?}", rows[0]);
+    }
+    let sharded = dir.join("sharded");
+    run(&sharded, Some("0/2"));
+    run(&sharded, Some("1/2"));
+    succeeded(&eom(&["sweep-merge", sharded.to_str().unwrap()]));
+    let merged = std::fs::read_to_string(sharded.join("sweep.csv")).unwrap();
+    assert_eq!(merged, table);
+}

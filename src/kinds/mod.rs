@@ -61,10 +61,7 @@ mod tidy {
             for file in sources(&root.join(kind)) {
                 let text = std::fs::read_to_string(&file).unwrap_or_default();
                 for other in kinds.iter().filter(|other| *other != kind) {
-                    let paths = [
-                        format!("kinds::{other}"),
-                        format!("super::super::{other}"),
-                    ];
+                    let paths = [format!("kinds::{other}"), format!("super::super::{other}")];
                     for (number, line) in text.lines().enumerate() {
                         if paths.iter().any(|path| line.contains(path.as_str())) {
                             found.push(format!("{}:{}: {line}", file.display(), number + 1));

@@ -11,6 +11,7 @@ mod plots;
 mod run;
 mod serves;
 mod ship;
+mod sweep;
 mod swing;
 mod tradeoff;
 mod values;

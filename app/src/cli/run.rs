@@ -16,6 +16,8 @@
 //! to the file). Exit codes: 5 for a failed run, 128 + the signal (130, 143) for an
 //! interrupted one.
 
+use super::ship::{SWEEP_PLOT, write_sweep_plot};
+use super::sweep::{SweptCase, run_cases};
 use anyhow::{Context, Result, bail};
 use eom::Short;
 use eom::kinds::ship::ShipScene;
@@ -252,31 +254,20 @@ fn execute(text: &str, name: &str, base: &Path, out: &Path, options: Options) ->
         .collect::<Result<_, SceneError>>()?;
     let mut scenes: Vec<(TableCase, Scene)> = Vec::new();
     let mut ships: Vec<(TableCase, ShipScene)> = Vec::new();
-    let mut vehicles: Vec<VehicleScene> = Vec::new();
+    let mut vehicles: Vec<(TableCase, VehicleScene)> = Vec::new();
     for (case, scene) in cases {
         match scene {
             AnyScene::Catalog(scene) => scenes.push((case, *scene)),
             AnyScene::Ship(scene) => ships.push((case, *scene)),
-            AnyScene::Vehicle(scene) => vehicles.push(*scene),
+            AnyScene::Vehicle(scene) => vehicles.push((case, *scene)),
         }
     }
-    if let Some(scene) = vehicles.first() {
-        if swept {
-            let message = format!("{name}: a vehicle scene does not take a [sweep] yet");
-            return Err(Usage(message).into());
-        }
-        let rows: f64 = (scene.manoeuvres.iter())
-            .map(|m| m.duration / scene.every)
-            .sum();
-        refuse_large_output(rows * VEHICLE_ROW_BYTES, options)?;
-        let planned: Vec<String> = (scene.manoeuvres.iter().map(|m| m.name.clone()))
-            .chain(["summary.json".to_owned()])
-            .collect();
-        let _claim = Claim::take(out, options.force, &Writer::Whole, &planned)?;
-        return super::vehicle::execute(scene, out);
+    let manoeuvring = (text, name, out, options, swept);
+    if !vehicles.is_empty() {
+        return execute_manoeuvres(vehicles, manoeuvring);
     }
     if !ships.is_empty() {
-        return execute_ship(ships, text, name, out, options, swept);
+        return execute_manoeuvres(ships, manoeuvring);
     }
     refuse_large_output(
         scenes.iter().map(|(_, s)| trajectory_bytes(s)).sum(),
@@ -294,57 +285,43 @@ fn execute(text: &str, name: &str, base: &Path, out: &Path, options: Options) ->
     run_sweep(&scenes, name, out, options.shard)
 }
 
-/// Runs a ship scene, or each case of its sweep, into `out`.
-fn execute_ship(
-    cases: Vec<(TableCase, ShipScene)>,
-    text: &str,
-    name: &str,
-    out: &Path,
-    options: Options,
-    swept: bool,
+/// Runs a scene with manoeuvres (a ship's, a vehicle's), or each case of its sweep, into
+/// `out`.
+fn execute_manoeuvres<C: SweptCase>(
+    cases: Vec<(TableCase, C)>,
+    (text, name, out, options, swept): (&str, &str, &Path, Options, bool),
 ) -> Result<()> {
-    let rows: f64 = cases
+    let bytes = cases
         .iter()
-        .flat_map(|(_, scene)| scene.manoeuvres.iter().map(|m| m.duration / scene.every))
+        .map(|(_, scene)| scene.trajectory_bytes())
         .sum();
-    refuse_large_output(rows * SHIP_ROW_BYTES, options)?;
+    refuse_large_output(bytes, options)?;
     let single = cases.first().filter(|_| !swept).map(|(_, scene)| scene);
     let planned: Vec<String> = match single {
-        Some(scene) => scene
-            .manoeuvres
-            .iter()
-            .map(|m| m.name.clone())
+        Some(scene) => (scene.folders().into_iter())
             .chain(["summary.json".to_owned()])
             .collect(),
-        None => cases
-            .iter()
+        None => (cases.iter())
             .map(|(case, _)| case_folder(case.index))
             .chain([sweep_file(options.shard)])
-            .chain(
-                options
-                    .shard
-                    .is_none()
-                    .then(|| super::ship::SWEEP_PLOT.to_owned()),
-            )
+            .chain((options.shard.is_none()).then(|| SWEEP_PLOT.to_owned()))
             .collect(),
     };
     let writer = writer_of(name, text, options.shard);
     let _claim = Claim::take(out, options.force, &writer, &planned)?;
-    match single {
-        Some(scene) => super::ship::execute(scene, name, out),
-        None => {
-            let (table, failures) = super::ship::run_sweep(&cases, name, |index| {
-                let folder = out.join(case_folder(index));
-                writable_folder(&folder)?;
-                Ok(folder)
-            });
-            // A shard's table is a part; its plot is drawn when the shards are merged.
-            if options.shard.is_none() {
-                super::ship::write_sweep_plot(out, &table)?;
-            }
-            finish_sweep(name, out, options.shard, &table, &failures)
-        }
+    if let Some(scene) = single {
+        return scene.execute(name, out);
     }
+    let (table, failures) = run_cases(&cases, name, |index| {
+        let folder = out.join(case_folder(index));
+        writable_folder(&folder)?;
+        Ok(folder)
+    });
+    // A shard's table is a part; its plot is drawn when the shards are merged.
+    if options.shard.is_none() {
+        write_sweep_plot(out, &table)?;
+    }
+    finish_sweep(name, out, options.shard, &table, &failures)
 }
 
 /// Who writes into the folder: the whole run, or one shard of its sweep.
@@ -361,11 +338,7 @@ fn writer_of(name: &str, text: &str, shard: Option<(usize, usize)>) -> Writer {
 
 /// Bytes per trajectory number as written (shortest round-trip, up to 24 characters, most
 /// 18–20) with its comma.
-const NUMBER_BYTES: f64 = 21.0;
-/// Bytes per row of a ship's trajectory: ten numbers.
-const SHIP_ROW_BYTES: f64 = 10.0 * NUMBER_BYTES;
-/// Bytes per row of a vehicle's trajectory: twenty-two numbers.
-const VEHICLE_ROW_BYTES: f64 = 22.0 * NUMBER_BYTES;
+pub(super) const NUMBER_BYTES: f64 = 21.0;
 
 /// About how many bytes a scene's trajectory.csv takes.
 fn trajectory_bytes(scene: &Scene) -> f64 {

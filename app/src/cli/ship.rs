@@ -10,7 +10,9 @@
 //! run at its next step: the manoeuvres finished before it keep their folders, summary.json
 //! says `"interrupted": true` and holds their figures, and the exit code is 128 + the signal.
 
+use super::run::NUMBER_BYTES;
 use super::run::{Interrupted, signal_received};
+use super::sweep::{SweptCase, manoeuvre_columns};
 use anyhow::{Context, Result};
 use eom::Model;
 use eom::kinds::ship::Side;
@@ -38,10 +40,12 @@ use eom::{Short, fixed};
 use eom_cli::plots::Mark;
 use eom_cli::plots::curves::{Curve, Curves, write_curves};
 use eom_cli::plots::ship::{Hull, ManoeuvrePlot, write_manoeuvre_plots};
-use rayon::prelude::*;
-use std::collections::BTreeMap;
-use std::path::{Path, PathBuf};
+
+use std::path::Path;
 use std::time::Instant;
+
+/// Bytes per row of a ship's trajectory: ten numbers.
+const SHIP_ROW_BYTES: f64 = 10.0 * NUMBER_BYTES;
 
 /// A ship sweep's plot over a rudder angle, beside its table.
 pub const SWEEP_PLOT: &str = "rudder_sweep.svg";
@@ -73,32 +77,6 @@ fn is_key_path(column: &str) -> bool {
         return key.is_some_and(|key| keys_of(SceneFamily::Ship).any(|k| k.path == key));
     }
     column == "title" || tables.iter().any(|t| column.starts_with(t))
-}
-
-/// What each manoeuvre's columns of a sweep's table are named by: its name where no swept
-/// value makes it (a name the scene gives, or one made from keys the sweep leaves alone), else
-/// its position, `manoeuvre[0]`: a name made from a swept angle (`turning_circle_15`,
-/// `turning_circle_25`) would give each case columns of its own, and shards that could not be
-/// merged. The swept keys are every case's, so every case and every shard names them alike.
-fn column_names(case: &TableCase, scene: &ShipScene) -> Vec<String> {
-    let given = |index: usize| {
-        let entry = case.table.get("manoeuvre").and_then(|m| m.get(index));
-        entry.is_some_and(|m| m.get("name").is_some())
-    };
-    (scene.manoeuvres.iter().enumerate())
-        .map(|(index, manoeuvre)| {
-            let swept = |key: &str| {
-                let path = format!("manoeuvre[{index}].{key}");
-                case.values.iter().any(|(k, _)| *k == path)
-            };
-            let named = given(index) && !swept("name");
-            let made_from_swept = swept("name") || NAMED_FROM.iter().any(|key| swept(key));
-            match named || !made_from_swept {
-                true => manoeuvre.name.clone(),
-                false => format!("manoeuvre[{index}]"),
-            }
-        })
-        .collect()
 }
 
 /// `rudder_sweep.svg` in `dir`, from a ship sweep's table (`sweep.csv`'s text), when the sweep
@@ -321,58 +299,45 @@ fn run_into(scene: &ShipScene, name: &str, out: &Path) -> Result<ShipRun> {
     })
 }
 
-/// Runs every case of a ship sweep in parallel, each into the folder `folder_of` makes for
-/// its index (`case-NNNN/`, made and found writable by the sweep's runner), and returns
-/// the lines of its table: the case, the swept values, each manoeuvre's figures
-/// (`turning_circle_35.tactical_diameter_m`), each IMO criterion's value and verdict
-/// (`imo.tactical_diameter`, `imo.tactical_diameter.pass`), and the error of a case that
-/// failed. A case that fails leaves the others running.
-pub fn run_sweep(
-    cases: &[(TableCase, ShipScene)],
-    name: &str,
-    folder_of: impl Fn(usize) -> Result<PathBuf> + Sync,
-) -> (String, Vec<(usize, Option<String>)>) {
-    let runs: Vec<Result<ShipRun>> = cases
-        .par_iter()
-        .map(|(case, scene)| {
-            if signal_received().is_some() {
-                anyhow::bail!("not run: the sweep was interrupted");
-            }
-            run_into(scene, name, &folder_of(case.index)?)
-        })
-        .collect();
-    let failures = cases
-        .iter()
-        .zip(&runs)
-        .map(|((case, _), run)| (case.index, run.as_ref().err().map(|e| format!("{e:#}"))))
-        .collect();
-    (sweep_table(cases, &runs), failures)
-}
+impl SweptCase for ShipScene {
+    type Run = ShipRun;
 
-/// The columns of a ship sweep's table after the case and its values, from the first case
-/// that ran (every case has the same manoeuvres and criteria).
-fn sweep_columns(cases: &[(TableCase, ShipScene)], runs: &[Result<ShipRun>]) -> Vec<String> {
-    let Some(((case, scene), run)) = cases
-        .iter()
-        .zip(runs)
-        .find_map(|(case, run)| run.as_ref().ok().map(|run| (case, run)))
-    else {
-        return Vec::new();
-    };
-    sweep_cells((case, scene), run)
-        .into_iter()
-        .map(|(k, _)| k)
-        .collect()
+    fn folders(&self) -> Vec<String> {
+        self.manoeuvres.iter().map(|m| m.name.clone()).collect()
+    }
+
+    fn trajectory_bytes(&self) -> f64 {
+        let rows: f64 = (self.manoeuvres.iter())
+            .map(|m| m.duration / self.every * m.runs().len() as f64)
+            .sum();
+        rows * SHIP_ROW_BYTES
+    }
+
+    fn execute(&self, name: &str, out: &Path) -> Result<()> {
+        execute(self, name, out)
+    }
+
+    fn run_into(&self, name: &str, out: &Path) -> Result<ShipRun> {
+        run_into(self, name, out)
+    }
+
+    fn cells(&self, case: &TableCase, run: &ShipRun) -> Vec<(String, String)> {
+        sweep_cells((case, self), run)
+    }
 }
 
 /// Each column of a ship sweep's table with its value in `run`, in the table's order: each
 /// manoeuvre's figures (the worse side's, for one run to both), then each side's
 /// (`turn.port.tactical_diameter_m`), then each IMO criterion's value, verdict and sides; a
-/// manoeuvre's columns are named as [`column_names`] says.
+/// manoeuvre's columns are named as [`manoeuvre_columns`] says.
 fn sweep_cells((case, scene): (&TableCase, &ShipScene), run: &ShipRun) -> Vec<(String, String)> {
     let text = |value: Option<f64>| value.map_or_else(String::new, |v| v.to_string());
     let mut cells = Vec::new();
-    let names = column_names(case, scene);
+    let names = manoeuvre_columns(
+        case,
+        scene.manoeuvres.iter().map(|m| m.name.as_str()),
+        &NAMED_FROM,
+    );
     for ((manoeuvre, runs), name) in scene.manoeuvres.iter().zip(&run.outcomes).zip(&names) {
         if let Some(outcome) = shown(manoeuvre, runs) {
             for (key, value) in &outcome.figures.values {
@@ -405,45 +370,6 @@ fn sweep_cells((case, scene): (&TableCase, &ShipScene), run: &ShipRun) -> Vec<(S
         }
     }
     cells
-}
-
-/// The value of each of `columns` in `run`, empty where it gave none.
-fn sweep_values(case: (&TableCase, &ShipScene), run: &ShipRun, columns: &[String]) -> Vec<String> {
-    let mut values: BTreeMap<String, String> = sweep_cells(case, run).into_iter().collect();
-    columns
-        .iter()
-        .map(|column| values.remove(column).unwrap_or_default())
-        .collect()
-}
-
-/// `case, <swept keys…>, <figures and verdicts…>, error`, one line per case.
-fn sweep_table(cases: &[(TableCase, ShipScene)], runs: &[Result<ShipRun>]) -> String {
-    let Some((first, _)) = cases.first() else {
-        return String::new();
-    };
-    let columns = sweep_columns(cases, runs);
-    let mut header = vec!["case".to_owned()];
-    header.extend(first.values.iter().map(|(k, _)| k.clone()));
-    header.extend(columns.iter().cloned());
-    header.push("error".into());
-    let mut writer = csv::Writer::from_writer(Vec::new());
-    let _ = writer.write_record(&header);
-    for ((case, scene), run) in cases.iter().zip(runs) {
-        let mut row = vec![case.index.to_string()];
-        row.extend(case.values.iter().map(|(_, v)| v.to_string()));
-        match run {
-            Ok(run) => {
-                row.extend(sweep_values((case, scene), run, &columns));
-                row.push(String::new());
-            }
-            Err(error) => {
-                row.extend(std::iter::repeat_n(String::new(), columns.len()));
-                row.push(format!("{error:#}"));
-            }
-        }
-        let _ = writer.write_record(&row);
-    }
-    String::from_utf8(writer.into_inner().unwrap_or_default()).unwrap_or_default()
 }
 
 /// Whether a run ended because a signal asked it to.

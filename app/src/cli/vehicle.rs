@@ -10,9 +10,12 @@
 //! `eom::kinds::vehicle::summary`). Ctrl-C ends the run at its next
 //! step, keeping the manoeuvres finished before it.
 
+use super::run::NUMBER_BYTES;
 use super::run::{Interrupted, signal_received};
+use super::sweep::{SweptCase, manoeuvre_columns};
 use anyhow::{Context, Result};
 use eom::kinds::vehicle::manoeuvre::{ROW, VehicleManoeuvre, run};
+use eom::kinds::vehicle::scene::NAMED_FROM;
 use eom::kinds::vehicle::summary::{
     CruiseSummary, KirchhoffRow, ManoeuvreSummary, ModelSummary, SetpointFigures, StepFigures,
     VehicleSummary, largest_difference, largest_setpoint_difference, trial_figures,
@@ -22,8 +25,9 @@ use eom::kinds::vehicle::{VehicleError, VehicleScene, format_folded};
 use eom::output::summary::MethodSummary;
 use eom::output::summary::write_atomically;
 use eom::output::text::printable;
-use eom::output::trajectory::{Columns, TrajectoryWriter};
+use eom::output::trajectory::{Columns, TrajectoryWriter, number_text};
 use eom::run::{Row, Sink};
+use eom::scene::sweep::TableCase;
 use eom::{Model, fixed};
 use eom::{Short, counted};
 use eom_cli::plots::Mark;
@@ -31,15 +35,44 @@ use eom_cli::plots::vehicle::{VehiclePlot, write_vehicle_plots};
 use std::collections::BTreeMap;
 use std::path::Path;
 
+/// Bytes per row of a vehicle's trajectory: twenty-two numbers.
+const VEHICLE_ROW_BYTES: f64 = 22.0 * NUMBER_BYTES;
+
 /// A manoeuvre run with the scene's method, and its figures refined.
 struct Outcome {
     steps: Vec<StepFigures>,
     summary: ManoeuvreSummary,
 }
 
+/// What a vehicle scene's run gave: its summary (written into summary.json), each manoeuvre's
+/// outcome, and the signal that ended it early, if one did.
+pub struct VehicleRun {
+    summary: VehicleSummary,
+    outcomes: Vec<Outcome>,
+    interrupted: Option<i32>,
+}
+
 /// Runs a vehicle scene, read and checked, into `out`, a folder already known to be writable,
 /// and prints its figures.
 pub fn execute(scene: &VehicleScene, out: &Path) -> Result<()> {
+    let run = run_into(scene, out)?;
+    print_report(scene, &run.summary, &run.outcomes, out);
+    match run.interrupted {
+        Some(signal) => Err(Interrupted {
+            signal,
+            kept: format!(
+                "the {} finished before it, and summary.json, in {}",
+                counted(run.outcomes.len(), "manoeuvre", "manoeuvres"),
+                out.display()
+            ),
+        }
+        .into()),
+        None => Ok(()),
+    }
+}
+
+/// Runs every manoeuvre of `scene` into its folder under `out` and writes summary.json.
+fn run_into(scene: &VehicleScene, out: &Path) -> Result<VehicleRun> {
     let mut manoeuvres = BTreeMap::new();
     let mut outcomes = Vec::new();
     let mut interrupted = None;
@@ -69,18 +102,90 @@ pub fn execute(scene: &VehicleScene, out: &Path) -> Result<()> {
     let bytes = serde_json::to_vec_pretty(&serde_json::to_value(&summary)?)?;
     let path = out.join("summary.json");
     write_atomically(&path, &bytes).with_context(|| format!("writing {}", path.display()))?;
-    print_report(scene, &summary, &outcomes, out);
-    match interrupted {
-        Some(signal) => Err(Interrupted {
-            signal,
-            kept: format!(
-                "the {} finished before it, and summary.json, in {}",
-                counted(outcomes.len(), "manoeuvre", "manoeuvres"),
-                out.display()
-            ),
+    Ok(VehicleRun {
+        summary,
+        outcomes,
+        interrupted,
+    })
+}
+
+impl SweptCase for VehicleScene {
+    type Run = VehicleRun;
+
+    fn folders(&self) -> Vec<String> {
+        self.manoeuvres.iter().map(|m| m.name.clone()).collect()
+    }
+
+    fn trajectory_bytes(&self) -> f64 {
+        let rows: f64 = (self.manoeuvres.iter())
+            .map(|m| m.duration / self.every)
+            .sum();
+        rows * VEHICLE_ROW_BYTES
+    }
+
+    fn execute(&self, _name: &str, out: &Path) -> Result<()> {
+        execute(self, out)
+    }
+
+    fn run_into(&self, _name: &str, out: &Path) -> Result<VehicleRun> {
+        run_into(self, out)
+    }
+
+    /// Each manoeuvre's figures, `<manoeuvre>.<figure>`: a trial's (`turning_circle.
+    /// tactical_diameter_m`), each autopilot's by what it holds (`turn_and_dive.heading.
+    /// overshoot`), or, for fin steps, each step's end (`rudder_4.step_1.heading_deg`); then
+    /// how far they moved when refined and the steps taken. A figure a trial gives as a list
+    /// (a zig-zag's overshoot times) stays in summary.json.
+    fn cells(&self, case: &TableCase, run: &VehicleRun) -> Vec<(String, String)> {
+        let names = self.manoeuvres.iter().map(|m| m.name.as_str());
+        let columns = manoeuvre_columns(case, names, &NAMED_FROM);
+        let mut cells = Vec::new();
+        for (manoeuvre, column) in self.manoeuvres.iter().zip(&columns) {
+            let Some(summary) = run.summary.manoeuvre.get(&manoeuvre.name) else {
+                continue;
+            };
+            let json = serde_json::to_value(summary).unwrap_or_default();
+            let mut scalars = |prefix: String, value: &serde_json::Value| {
+                for (key, value) in value.as_object().into_iter().flatten() {
+                    if let Some(text) = scalar_text(value) {
+                        cells.push((format!("{prefix}.{key}"), text));
+                    }
+                }
+            };
+            match (&json["trial"], json["autopilot"].as_array()) {
+                (trial, _) if trial.is_object() => scalars(column.clone(), trial),
+                (_, Some(autopilots)) => {
+                    for autopilot in autopilots {
+                        let what = autopilot["what"].as_str().unwrap_or("autopilot");
+                        scalars(format!("{column}.{what}"), autopilot);
+                    }
+                }
+                _ => {
+                    let steps = json["steps"].as_array().into_iter().flatten();
+                    for (index, step) in steps.enumerate() {
+                        scalars(format!("{column}.step_{index}"), step);
+                    }
+                }
+            }
+            for key in ["refined_difference", "steps_taken"] {
+                if let Some(text) = scalar_text(&json[key]) {
+                    cells.push((format!("{column}.{key}"), text));
+                }
+            }
         }
-        .into()),
-        None => Ok(()),
+        cells
+    }
+}
+
+/// A figure as the sweep's table writes it: a number in its shortest round-trip form, a text
+/// or a verdict as it is, an absent figure empty; `None` for a list or a table.
+fn scalar_text(value: &serde_json::Value) -> Option<String> {
+    match value {
+        serde_json::Value::Number(n) => Some(n.as_f64().map_or_else(|| n.to_string(), number_text)),
+        serde_json::Value::String(text) => Some(text.clone()),
+        serde_json::Value::Bool(b) => Some(b.to_string()),
+        serde_json::Value::Null => Some(String::new()),
+        _ => None,
     }
 }
 

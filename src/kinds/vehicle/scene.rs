@@ -122,6 +122,9 @@ fn written_rounding(x: f64) -> f64 {
     0.5 * 10f64.powi(exponent - (digits - 1))
 }
 
+/// The keys a manoeuvre's name is made from where the scene gives it none: its `kind`.
+pub const NAMED_FROM: [&str; 1] = ["kind"];
+
 /// The file as written.
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -152,6 +155,8 @@ pub struct VehicleSceneFile {
     pub output: OutputTable,
     /// The operating point of `eom linear`.
     pub linear: Option<crate::scene::file::LinearTable>,
+    /// Values to sweep over (read by [`crate::scene::sweep`], which runs each case).
+    pub sweep: Option<toml::Table>,
     /// The autopilots.
     pub autopilot: Option<AutopilotTable>,
 }

@@ -777,4 +777,20 @@ pub(super) static KEYS: &[Key] = &[
         shown: Shown::Commented,
         ..Key::BLANK
     },
+    Key {
+        path: "sweep.*",
+        families: VEHICLE,
+        kind: Kind::Table("key paths and values"),
+        description: "Values to vary, one run of every manoeuvre per combination, in parallel, \
+                      each case into case-NNNN/ with one line per case in sweep.csv (the \
+                      swept values and each manoeuvre's figures, `turning_circle.\
+                      tactical_diameter_m`): a key's path in quotes, an entry of the manoeuvre \
+                      array by its index (`manoeuvre[0].rudder_deg`), and a list of values or \
+                      { from, to, count }. At most 100 000 cases a run; `eom run --shard K/N` \
+                      runs the cases k ≡ K (mod N) and `eom sweep-merge` joins the shards' \
+                      tables.",
+        example: "\"hydrodynamics.coefficients.Nuudr\" = [-4.92, -6.15, -7.38]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
 ];
