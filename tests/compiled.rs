@@ -33,9 +33,10 @@ fn mariner() -> ShipModel {
 fn remus() -> VehicleModel {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/remus100.toml");
     let text = std::fs::read_to_string(path).unwrap();
-    match AnyScene::parse(&text, "remus100.toml", Path::new(".")) {
-        Ok(AnyScene::Vehicle(scene)) => scene.model,
-        _ => panic!("remus100.toml is read as a vehicle"),
+    let scene = AnyScene::parse(&text, "remus100.toml", Path::new(".")).ok();
+    match scene.and_then(AnyScene::downcast::<eom::kinds::vehicle::VehicleScene>) {
+        Some(scene) => scene.model,
+        None => panic!("remus100.toml is read as a vehicle"),
     }
 }
 

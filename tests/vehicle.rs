@@ -19,8 +19,9 @@ fn scene_text() -> String {
 
 fn parse(text: &str) -> Result<VehicleScene, String> {
     match AnyScene::parse(text, "remus100.toml", Path::new(".")) {
-        Ok(AnyScene::Vehicle(scene)) => Ok(*scene),
-        Ok(_) => Err("not read as a vehicle".into()),
+        Ok(scene) => (scene.downcast::<VehicleScene>())
+            .map(|scene| *scene)
+            .ok_or_else(|| "not read as a vehicle".into()),
         Err(e) => Err(e.to_string()),
     }
 }

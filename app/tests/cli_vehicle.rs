@@ -177,9 +177,13 @@ fn eom_linear_linearises_a_vehicle_at_its_cruise_and_writes_its_matrices() {
 fn remus_moments_about_g() -> (f64, f64, f64) {
     let path = std::path::PathBuf::from(scene_arg("remus100.toml"));
     let text = std::fs::read_to_string(&path).unwrap();
-    let table = match eom::scene::AnyScene::parse(&text, "remus100.toml", path.parent().unwrap()) {
-        Ok(eom::scene::AnyScene::Vehicle(scene)) => scene.table,
-        _ => panic!("remus100.toml is read as a vehicle"),
+    let scene = eom::scene::AnyScene::parse(&text, "remus100.toml", path.parent().unwrap());
+    let table = match scene
+        .ok()
+        .and_then(|s| s.downcast::<eom::kinds::vehicle::VehicleScene>())
+    {
+        Some(scene) => scene.table,
+        None => panic!("remus100.toml is read as a vehicle"),
     };
     assert_eq!(
         table.inertia_about,

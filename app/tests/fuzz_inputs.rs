@@ -20,6 +20,7 @@
 use eom::kinds::ship::linear::LinearModel;
 use eom::kinds::ship::manoeuvre::{Manoeuvre, run as run_manoeuvre};
 use eom::kinds::ship::{ShipModel, ShipScene};
+use eom::kinds::vehicle::VehicleScene;
 use eom::kinds::vehicle::manoeuvre::{VehicleManoeuvre, run as run_vehicle};
 use eom::mass::{BodyFile, BodyFileError, Mesh, MeshMass};
 use eom::models::{Family, Kinematics, Symmetry};
@@ -1490,8 +1491,10 @@ fn vehicle_scene_text(text: &str, run: bool, tally: &mut Tally) -> Result<(), Te
         AnyScene::parse(text, "fuzz.toml", &base)
     })?;
     let scene = match read {
-        Ok(AnyScene::Vehicle(scene)) => *scene,
-        Ok(_) => return Ok(()),
+        Ok(scene) => match scene.downcast::<VehicleScene>() {
+            Some(scene) => *scene,
+            None => return Ok(()),
+        },
         Err(error) => return check_scene_error(&error, text, tally),
     };
     tally.count("vehicle scene read");

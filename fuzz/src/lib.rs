@@ -121,8 +121,14 @@ pub fn scene_text(text: &str) {
     let base = scenes();
     match AnyScene::parse(text, "fuzz.toml", &base) {
         Ok(AnyScene::Catalog(scene)) => accepted(&scene),
-        Ok(AnyScene::Ship(scene)) => ship_accepted(&scene),
-        Ok(AnyScene::Vehicle(scene)) => vehicle_accepted(&scene),
+        Ok(AnyScene::Kind(scene)) => {
+            if let Some(ship) = scene.as_any().downcast_ref() {
+                ship_accepted(ship);
+            }
+            if let Some(vehicle) = scene.as_any().downcast_ref() {
+                vehicle_accepted(vehicle);
+            }
+        }
         Err(error) => scene_error(&error),
     }
     match sweep::cases(text, "fuzz.toml") {

@@ -13,6 +13,167 @@ pub mod ship;
 #[cfg(feature = "ship")]
 pub mod vehicle;
 
+use crate::linear::Linearisation;
+use crate::run::record::Recorder;
+use crate::scene::SceneError;
+use crate::scene::sweep::TableCase;
+use std::any::Any;
+use std::path::Path;
+
+/// What every scene is, whatever its kind: its title, the runs it asks for and what they
+/// write, the run itself (rows to a [`Recorder`], figures into a [`Finished`]), and its linear
+/// plant. The command runs, sweeps, shards, guards and reports a scene through this alone.
+pub trait Kind: Send + Sync + std::fmt::Debug {
+    /// The kind's name, as the registry lists it (`ship`, `vehicle`).
+    fn kind(&self) -> &'static str;
+
+    /// The scene's title.
+    fn title(&self) -> &str;
+
+    /// The entries its run writes at the top of its output folder besides `summary.json`
+    /// (each manoeuvre's folder), for the folder's claim.
+    fn folders(&self) -> Vec<String>;
+
+    /// About how many numbers its trajectories hold (rows × columns, every run), for the
+    /// output-size guard.
+    fn trajectory_numbers(&self) -> f64;
+
+    /// Runs every run the scene asks for, in order, each one's rows to `recorder` (`name` is
+    /// the scene's file, as the summary names it). A run the recorder stops ends the scene's,
+    /// keeping the runs before it: [`Finished::stopped`] says so.
+    fn run(
+        &self,
+        name: &str,
+        recorder: &mut dyn Recorder,
+    ) -> Result<Box<dyn Finished + '_>, KindError>;
+
+    /// The scene linearised at its operating point (`[linear]`, or its own: a ship's straight
+    /// course, a vehicle's cruise), with what the kind adds to the report.
+    fn linear(&self) -> Result<Linearised, KindError>;
+
+    /// The scene as its own type, for a library user who knows the kind
+    /// (`scene.as_any().downcast_ref::<ShipScene>()`).
+    fn as_any(&self) -> &dyn Any;
+
+    /// The scene as its own type, owned ([`crate::scene::AnyScene::downcast`]).
+    fn into_any(self: Box<Self>) -> Box<dyn Any>;
+}
+
+/// What a scene's run gave: the summary, the report, a sweep case's line.
+pub trait Finished: std::fmt::Debug {
+    /// `summary.json`, as a JSON value (its objects' keys sorted).
+    fn summary(&self) -> serde_json::Value;
+
+    /// The report as the command prints it (the folder it wrote aside).
+    fn report(&self) -> String;
+
+    /// Each column of a sweep's table after the case and its swept values, with its value
+    /// in this run (empty where it gave none), in the table's order.
+    fn cells(&self, case: &TableCase) -> Vec<(String, String)>;
+
+    /// Whether the recorder stopped the run before every run the scene asks for had run.
+    fn stopped(&self) -> bool;
+
+    /// How many of the scene's runs (manoeuvres) finished, or began and kept a part.
+    fn runs_kept(&self) -> usize;
+}
+
+/// A scene's linearisation and what its kind adds to the report beside every scene's: text
+/// after the text report, keys in the JSON report.
+#[derive(Debug, Clone)]
+pub struct Linearised {
+    /// A, B, the modes, the verdict.
+    pub linearisation: Linearisation,
+    /// Lines after the text report (a ship's Nomoto models), empty for none.
+    pub text: String,
+    /// Keys added to the JSON report.
+    pub json: serde_json::Map<String, serde_json::Value>,
+}
+
+/// Why a scene of some kind could not be run or linearised, by what the command's exit code
+/// says of it; each carries the kind's own error, whose message it gives.
+#[derive(Debug, thiserror::Error)]
+pub enum KindError {
+    /// A value of the scene that cannot be used (exit 3).
+    #[error(transparent)]
+    Scene(Box<dyn std::error::Error + Send + Sync>),
+    /// A run that cannot go on (exit 5).
+    #[error(transparent)]
+    Run(Box<dyn std::error::Error + Send + Sync>),
+    /// A run its recorder stopped (Ctrl-C).
+    #[error(transparent)]
+    Stopped(Box<dyn std::error::Error + Send + Sync>),
+    /// What a run gave could not be kept: a file not written (exit 4).
+    #[error(transparent)]
+    Output(Box<dyn std::error::Error + Send + Sync>),
+    /// The model could not be built or proved (exit 1).
+    #[error(transparent)]
+    Internal(Box<dyn std::error::Error + Send + Sync>),
+}
+
+impl From<crate::linear::LinearError> for KindError {
+    /// A point the scene names that cannot be used is the scene's; a trim that does not
+    /// converge, the run's.
+    fn from(error: crate::linear::LinearError) -> Self {
+        match error.is_scene_error() {
+            true => KindError::Scene(Box::new(error)),
+            false => KindError::Run(Box::new(error)),
+        }
+    }
+}
+
+/// Where a kind's tables are read from: a scene's text, or one case of a sweep (its tables).
+pub enum Source<'a> {
+    /// The scene file's text.
+    Text(&'a str),
+    /// A sweep case's tables.
+    Table(toml::Table),
+}
+
+impl Source<'_> {
+    /// The tables read as `T`, every error naming its key.
+    pub fn read<T: serde::de::DeserializeOwned>(self, name: &str) -> Result<T, SceneError> {
+        match self {
+            Source::Text(text) => crate::scene::read_as(text, name),
+            Source::Table(table) => crate::scene::sweep::read_table(table, name),
+        }
+    }
+}
+
+/// How a kind reads and checks a scene: from its tables, the name errors give the file, the
+/// folder a file it names is found in.
+pub type Reader = fn(Source, &str, &Path) -> Result<Box<dyn Kind>, SceneError>;
+
+/// A kind of scene as the registry lists it: its name, how its tables are recognised, and
+/// how they are read and checked.
+pub struct Registered {
+    /// The kind's name (`ship`).
+    pub name: &'static str,
+    /// Whether a scene's tables are this kind's.
+    pub recognises: fn(&toml::Table) -> bool,
+    /// Reads and checks the scene (`name` is how errors name the file, `base` where a file
+    /// it names is found).
+    pub read: Reader,
+}
+
+/// The kinds of scene whose tables define their model: the only list of them.
+pub const REGISTRY: &[Registered] = &[
+    #[cfg(feature = "ship")]
+    ship::KIND,
+    #[cfg(feature = "ship")]
+    vehicle::KIND,
+];
+
+/// The registered kind whose tables `table` are, if one is.
+pub fn recognise(table: &toml::Table) -> Option<&'static Registered> {
+    REGISTRY.iter().find(|kind| (kind.recognises)(table))
+}
+
+/// The family a scene's `[model]` names, if it names one.
+pub fn family_of(table: &toml::Table) -> Option<&str> {
+    table.get("model")?.get("family")?.as_str()
+}
+
 #[cfg(test)]
 mod tidy {
     //! The map's rules about kinds, held by reading the sources, as a linter would: a rule

@@ -4,6 +4,7 @@
 //! `eom` command adds its plots and its 3-D view (crate `eom-cli`); what is here needs none of
 //! the command's crates, so a program that runs scenes writes the same files the command does.
 
+pub mod drawing;
 pub mod folder;
 pub mod mat;
 pub mod summary;

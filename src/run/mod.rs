@@ -583,6 +583,7 @@ fn run_error(error: IntegrateError, names: &[String]) -> RunError {
 }
 
 pub mod guard;
+pub mod record;
 pub mod tradeoff;
 
 #[cfg(test)]

@@ -346,6 +346,37 @@ pub fn parse_shard(text: &str) -> Result<(usize, usize), String> {
     Ok((k, n))
 }
 
+/// What each manoeuvre's columns are named by: its name, unless a swept key of its entry
+/// may make it (`manoeuvre[0].rudder_deg` in `zigzag_10_10`, or its `name` itself) and the
+/// scene does not give it one, then its position, `manoeuvre[0]`: a name made from a swept
+/// value would give each case columns of its own, and shards that could not be merged.
+/// `named_from` lists the keys a kind makes its names from.
+pub fn manoeuvre_columns<'a>(
+    case: &TableCase,
+    names: impl Iterator<Item = &'a str>,
+    named_from: &[&str],
+) -> Vec<String> {
+    let given = |index: usize| {
+        let entry = case.table.get("manoeuvre").and_then(|m| m.get(index));
+        entry.is_some_and(|m| m.get("name").is_some())
+    };
+    names
+        .enumerate()
+        .map(|(index, name)| {
+            let swept = |key: &str| {
+                let path = format!("manoeuvre[{index}].{key}");
+                case.values.iter().any(|(k, _)| *k == path)
+            };
+            let named = given(index) && !swept("name");
+            let made_from_swept = swept("name") || named_from.iter().any(|key| swept(key));
+            match named || !made_from_swept {
+                true => name.to_owned(),
+                false => format!("manoeuvre[{index}]"),
+            }
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

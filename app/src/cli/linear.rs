@@ -12,7 +12,6 @@
 //! model as MATLAB variables), into a folder taken as `eom run` takes one.
 
 use anyhow::Result;
-use eom::kinds::vehicle::linear::linearise_vehicle;
 use eom::linear::{Linearisation, Mode, Stability, StateSpace, linearise_scene, newton_steps};
 use eom::output::folder::{Claim, Writer};
 use eom::output::mat::mat_file;
@@ -53,14 +52,35 @@ const MAT: &str = "linear.mat";
 
 /// Runs `eom linear`.
 pub fn run(args: Args) -> Result<()> {
-    let (title, linear) = match super::serves::linearised(&args.scene)? {
-        AnyScene::Ship(scene) => return super::ship::linear(&args, &scene),
-        AnyScene::Vehicle(scene) => (scene.title.clone(), linearise_vehicle(&scene)?),
-        AnyScene::Catalog(scene) => (scene.title.clone(), linearise_scene(&scene)?),
+    let (title, linear, extra_text, extra_json) = match super::serves::linearised(&args.scene)? {
+        AnyScene::Kind(scene) => {
+            let linearised = scene.linear()?;
+            let text = linearised.text;
+            (
+                scene.title().to_owned(),
+                linearised.linearisation,
+                text,
+                linearised.json,
+            )
+        }
+        AnyScene::Catalog(scene) => {
+            let linear = linearise_scene(&scene)?;
+            (
+                scene.title.clone(),
+                linear,
+                String::new(),
+                Default::default(),
+            )
+        }
     };
     let space = state_space(&args, &title, &linear);
-    let text = text_report(&title, &linear);
-    let report = report(&space, &linear)?;
+    // Every scene's report, with what its kind adds beside it (a ship's Nomoto models).
+    let mut text = text_report(&title, &linear);
+    text.push_str(&extra_text);
+    let mut report = report(&space, &linear)?;
+    if let Some(report) = report.as_object_mut() {
+        report.extend(extra_json);
+    }
     write_out(&args, (&space, &linear), &text, &report)?;
     show(&args, &text, &report)
 }

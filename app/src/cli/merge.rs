@@ -8,7 +8,7 @@
 //! `rudder_sweep.svg`, as a whole run's does (drawn from the table alone).
 
 use super::run::Usage;
-use super::ship::{SWEEP_PLOT, write_sweep_plot};
+use super::sweep::{SWEEP_PLOT, write_sweep_plot};
 use anyhow::{Context, Result, bail};
 use eom::output::folder::Claim;
 use eom::output::summary::write_atomically;

@@ -8,14 +8,13 @@ mod merge;
 mod models;
 mod new;
 mod plots;
+mod record;
 mod run;
 mod serves;
-mod ship;
 mod sweep;
 mod swing;
 mod tradeoff;
 mod values;
-mod vehicle;
 mod view;
 
 use clap::Subcommand;
@@ -112,22 +111,14 @@ pub fn exit_code(error: &anyhow::Error) -> u8 {
         if let Some(linear) = cause.downcast_ref::<eom::linear::LinearError>() {
             return if linear.is_scene_error() { 3 } else { 5 };
         }
-        if let Some(vehicle) = cause.downcast_ref::<eom::kinds::vehicle::VehicleError>() {
-            use eom::kinds::vehicle::VehicleError;
-            return match vehicle {
-                VehicleError::Invalid { .. } | VehicleError::Table(_) => 3,
-                VehicleError::Linear(linear) if linear.is_scene_error() => 3,
-                VehicleError::Run { .. } | VehicleError::Linear(_) => 5,
-                VehicleError::Stopped { .. } => 130,
-                VehicleError::Prove(_) => 1,
-            };
-        }
-        if let Some(ship) = cause.downcast_ref::<eom::kinds::ship::ShipError>() {
-            return match ship {
-                eom::kinds::ship::ShipError::Run { .. } => 5,
-                eom::kinds::ship::ShipError::Stopped { .. } => 130,
-                eom::kinds::ship::ShipError::Invalid { .. } => 3,
-                eom::kinds::ship::ShipError::Build(_) => 1,
+        if let Some(kind) = cause.downcast_ref::<eom::kinds::KindError>() {
+            use eom::kinds::KindError;
+            return match kind {
+                KindError::Scene(_) => 3,
+                KindError::Output(_) => 4,
+                KindError::Run(_) => 5,
+                KindError::Stopped(_) => 130,
+                KindError::Internal(_) => 1,
             };
         }
     }
@@ -137,6 +128,7 @@ pub fn exit_code(error: &anyhow::Error) -> u8 {
 #[cfg(test)]
 mod tests {
     use super::exit_code;
+    use eom::kinds::KindError;
     use eom::kinds::vehicle::VehicleError;
 
     /// A vehicle's run that cannot go on exits 5, as every kind's does (README's table); a
@@ -147,7 +139,10 @@ mod tests {
             time: 1.0,
             reason: "the state component u is not finite".into(),
         };
-        let code = |error: VehicleError| exit_code(&anyhow::Error::new(error).context("manoeuvre"));
+        let code = |error: VehicleError| {
+            let error = KindError::from(error.in_manoeuvre("turn"));
+            exit_code(&anyhow::Error::new(error).context("the scene"))
+        };
         assert_eq!(code(run), 5);
         let invalid = VehicleError::Invalid {
             key: "propeller.thrust".into(),

@@ -16,12 +16,10 @@
 //! to the file). Exit codes: 5 for a failed run, 128 + the signal (130, 143) for an
 //! interrupted one.
 
-use super::ship::{SWEEP_PLOT, write_sweep_plot};
-use super::sweep::{SweptCase, run_cases};
+use super::sweep::{SWEEP_PLOT, run_cases, write_sweep_plot};
 use anyhow::{Context, Result, bail};
 use eom::Short;
-use eom::kinds::ship::ShipScene;
-use eom::kinds::vehicle::VehicleScene;
+use eom::kinds::Kind;
 use eom::output::folder::{Claim, FolderError, Writer, sweep_identity};
 use eom::output::summary::{Extra, Summary, write_atomically};
 use eom::output::text::printable;
@@ -253,21 +251,15 @@ fn execute(text: &str, name: &str, base: &Path, out: &Path, options: Options) ->
         })
         .collect::<Result<_, SceneError>>()?;
     let mut scenes: Vec<(TableCase, Scene)> = Vec::new();
-    let mut ships: Vec<(TableCase, ShipScene)> = Vec::new();
-    let mut vehicles: Vec<(TableCase, VehicleScene)> = Vec::new();
+    let mut kinds: Vec<(TableCase, Box<dyn Kind>)> = Vec::new();
     for (case, scene) in cases {
         match scene {
             AnyScene::Catalog(scene) => scenes.push((case, *scene)),
-            AnyScene::Ship(scene) => ships.push((case, *scene)),
-            AnyScene::Vehicle(scene) => vehicles.push((case, *scene)),
+            AnyScene::Kind(scene) => kinds.push((case, scene)),
         }
     }
-    let manoeuvring = (text, name, out, options, swept);
-    if !vehicles.is_empty() {
-        return execute_manoeuvres(vehicles, manoeuvring);
-    }
-    if !ships.is_empty() {
-        return execute_manoeuvres(ships, manoeuvring);
+    if !kinds.is_empty() {
+        return execute_kind(kinds, (text, name, out, options, swept));
     }
     refuse_large_output(
         scenes.iter().map(|(_, s)| trajectory_bytes(s)).sum(),
@@ -285,16 +277,15 @@ fn execute(text: &str, name: &str, base: &Path, out: &Path, options: Options) ->
     run_sweep(&scenes, name, out, options.shard)
 }
 
-/// Runs a scene with manoeuvres (a ship's, a vehicle's), or each case of its sweep, into
-/// `out`.
-fn execute_manoeuvres<C: SweptCase>(
-    cases: Vec<(TableCase, C)>,
+/// Runs a scene of a registered kind, or each case of its sweep, into `out`.
+fn execute_kind(
+    cases: Vec<(TableCase, Box<dyn Kind>)>,
     (text, name, out, options, swept): (&str, &str, &Path, Options, bool),
 ) -> Result<()> {
-    let bytes = cases
-        .iter()
-        .map(|(_, scene)| scene.trajectory_bytes())
+    let numbers: f64 = (cases.iter())
+        .map(|(_, scene)| scene.trajectory_numbers())
         .sum();
+    let bytes = numbers * NUMBER_BYTES;
     refuse_large_output(bytes, options)?;
     let single = cases.first().filter(|_| !swept).map(|(_, scene)| scene);
     let planned: Vec<String> = match single {
@@ -310,7 +301,7 @@ fn execute_manoeuvres<C: SweptCase>(
     let writer = writer_of(name, text, options.shard);
     let _claim = Claim::take(out, options.force, &writer, &planned)?;
     if let Some(scene) = single {
-        return scene.execute(name, out);
+        return super::sweep::execute(scene.as_ref(), name, out);
     }
     let (table, failures) = run_cases(&cases, name, |index| {
         let folder = out.join(case_folder(index));
@@ -338,7 +329,7 @@ fn writer_of(name: &str, text: &str, shard: Option<(usize, usize)>) -> Writer {
 
 /// Bytes per trajectory number as written (shortest round-trip, up to 24 characters, most
 /// 18–20) with its comma.
-pub(super) const NUMBER_BYTES: f64 = 21.0;
+const NUMBER_BYTES: f64 = 21.0;
 
 /// About how many bytes a scene's trajectory.csv takes.
 fn trajectory_bytes(scene: &Scene) -> f64 {

@@ -9,10 +9,8 @@ use std::path::Path;
 /// The kinds of scene the commands tell apart.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Kind {
-    /// A scene with `[hydrodynamics]`: a ship on its own table.
-    Ship,
-    /// A scene with `[hydrodynamics]` and `family = "vehicle"`: a vehicle on its own table.
-    Vehicle,
+    /// A scene of a registered kind (its name): its own table defines its model.
+    Registered(&'static str),
     /// A catalog scene, with or without a `[sweep]`.
     Catalog { swept: bool },
 }
@@ -28,8 +26,7 @@ fn read(path: &Path) -> Result<(String, Kind)> {
     }
     let base = path.parent().unwrap_or(Path::new("."));
     let kind = match AnyScene::parse(&text, &name, base)? {
-        AnyScene::Ship(_) => Kind::Ship,
-        AnyScene::Vehicle(_) => Kind::Vehicle,
+        AnyScene::Kind(scene) => Kind::Registered(scene.kind()),
         AnyScene::Catalog(_) => Kind::Catalog { swept: false },
     };
     Ok((text, kind))
@@ -71,17 +68,10 @@ pub fn require_single_catalog(path: &Path) -> Result<()> {
             path.display()
         ))
         .into()),
-        Kind::Vehicle => Err(Usage(format!(
+        Kind::Registered(kind) => Err(Usage(format!(
             "eom tradeoff serves catalog scenes (pendulum, planar, spatial, top), whose \
-             integrators it compares over one run; {} is a vehicle scene, whose manoeuvres \
+             integrators it compares over one run; {} is a {kind} scene, whose manoeuvres \
              name their method in [integrator]",
-            path.display()
-        ))
-        .into()),
-        Kind::Ship => Err(Usage(format!(
-            "eom tradeoff serves catalog scenes (pendulum, planar, spatial, top), whose \
-             integrators it compares over one run; {} is a ship scene, whose manoeuvres name \
-             their method in [integrator]",
             path.display()
         ))
         .into()),

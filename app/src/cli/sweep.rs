@@ -2,57 +2,41 @@
 //! own folder (`case-NNNN/`, holding what a single run of it holds), and one line per case in
 //! the sweep's table, the case's swept values then its figures by column name.
 //!
-//! What a kind gives is its run and its cells ([`SweptCase`]); the running, the order of the
-//! columns, the failed cases and the table are written once here, so that a table of any kind
-//! reads alike and its shards merge alike (`eom sweep-merge`).
+//! What a kind gives is its run and its cells ([`eom::kinds::Finished::cells`]); the running,
+//! the order of the columns, the failed cases and the table are written once here, so that a
+//! table of any kind reads alike and its shards merge alike (`eom sweep-merge`). A sweep over
+//! one rudder angle gets its plot beside the table, drawn from the table alone so that a
+//! whole run and the merge of its shards draw the same.
 
-use super::run::signal_received;
-use anyhow::Result;
+use super::record::FolderRecorder;
+use super::run::{Interrupted, signal_received};
+use anyhow::{Context, Result};
+use eom::kinds::{Finished, Kind};
+use eom::output::summary::write_atomically;
+use eom::scene::reference::keys;
 use eom::scene::sweep::TableCase;
+use eom_cli::plots::curves::{Curve, Curves, write_curves};
 use rayon::prelude::*;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
-
-/// A checked scene with manoeuvres, of a kind the command runs: what it writes, how it runs
-/// into its folder, and what its line of a sweep's table holds.
-pub trait SweptCase: Sync {
-    /// What a case's run gave.
-    type Run: Send;
-
-    /// Its manoeuvres' folders, in the order they run.
-    fn folders(&self) -> Vec<String>;
-
-    /// About how many bytes its trajectories take, for the output-size guard.
-    fn trajectory_bytes(&self) -> f64;
-
-    /// Runs the scene alone into `out` (not as a case of a sweep) and prints its report.
-    fn execute(&self, name: &str, out: &Path) -> Result<()>;
-
-    /// Runs the case into `out`, a folder made and found writable, writing there what a
-    /// single run of the scene writes.
-    fn run_into(&self, name: &str, out: &Path) -> Result<Self::Run>;
-
-    /// Each column of the table after the case and its swept values, with its value in `run`
-    /// (empty where the run gave none), in the table's order.
-    fn cells(&self, case: &TableCase, run: &Self::Run) -> Vec<(String, String)>;
-}
 
 /// Runs every case in parallel, each into the folder `folder_of` makes for its index, and
 /// returns the sweep's table (`case, <swept keys…>, <cells…>, error`) and each case's error,
 /// if it failed. A case that fails leaves the others running; after a signal the cases not
 /// yet started are not run, and say so.
-pub fn run_cases<C: SweptCase>(
-    cases: &[(TableCase, C)],
+pub fn run_cases(
+    cases: &[(TableCase, Box<dyn Kind>)],
     name: &str,
     folder_of: impl Fn(usize) -> Result<PathBuf> + Sync,
 ) -> (String, Vec<(usize, Option<String>)>) {
-    let runs: Vec<Result<C::Run>> = cases
+    let runs: Vec<Result<Vec<(String, String)>>> = cases
         .par_iter()
         .map(|(case, scene)| {
             if signal_received().is_some() {
                 anyhow::bail!("not run: the sweep was interrupted");
             }
-            scene.run_into(name, &folder_of(case.index)?)
+            let finished = run_into(scene.as_ref(), name, &folder_of(case.index)?)?;
+            Ok(finished.cells(case))
         })
         .collect();
     let failures = cases
@@ -65,38 +49,38 @@ pub fn run_cases<C: SweptCase>(
 
 /// The columns after the case and its values, from the first case that ran (every case has
 /// the same manoeuvres, and names their columns alike).
-fn columns<C: SweptCase>(cases: &[(TableCase, C)], runs: &[Result<C::Run>]) -> Vec<String> {
-    let first = cases
-        .iter()
-        .zip(runs)
-        .find_map(|((case, scene), run)| run.as_ref().ok().map(|run| scene.cells(case, run)));
-    first
-        .unwrap_or_default()
-        .into_iter()
-        .map(|(column, _)| column)
+fn columns(runs: &[Result<Vec<(String, String)>>]) -> Vec<String> {
+    let first = runs.iter().find_map(|run| run.as_ref().ok());
+    (first.into_iter().flatten())
+        .map(|(column, _)| column.clone())
         .collect()
 }
 
 /// `case, <swept keys…>, <cells…>, error`, one line per case.
-fn table<C: SweptCase>(cases: &[(TableCase, C)], runs: &[Result<C::Run>]) -> String {
+fn table(cases: &[(TableCase, Box<dyn Kind>)], runs: &[Result<Vec<(String, String)>>]) -> String {
     let Some((first, _)) = cases.first() else {
         return String::new();
     };
-    let columns = columns(cases, runs);
+    let columns = columns(runs);
     let mut header = vec!["case".to_owned()];
     header.extend(first.values.iter().map(|(k, _)| k.clone()));
     header.extend(columns.iter().cloned());
     header.push("error".into());
     let mut writer = csv::Writer::from_writer(Vec::new());
     let _ = writer.write_record(&header);
-    for ((case, scene), run) in cases.iter().zip(runs) {
+    for ((case, _), run) in cases.iter().zip(runs) {
         let mut row = vec![case.index.to_string()];
         row.extend(case.values.iter().map(|(_, v)| v.to_string()));
         match run {
-            Ok(run) => {
-                let mut values: BTreeMap<String, String> =
-                    scene.cells(case, run).into_iter().collect();
-                row.extend(columns.iter().map(|c| values.remove(c).unwrap_or_default()));
+            Ok(cells) => {
+                let mut values: BTreeMap<&str, &str> = (cells.iter())
+                    .map(|(k, v)| (k.as_str(), v.as_str()))
+                    .collect();
+                row.extend(
+                    columns
+                        .iter()
+                        .map(|c| values.remove(c.as_str()).unwrap_or_default().to_owned()),
+                );
                 row.push(String::new());
             }
             Err(error) => {
@@ -109,33 +93,126 @@ fn table<C: SweptCase>(cases: &[(TableCase, C)], runs: &[Result<C::Run>]) -> Str
     String::from_utf8(writer.into_inner().unwrap_or_default()).unwrap_or_default()
 }
 
-/// What each manoeuvre's columns are named by: its name, unless a swept key of its entry
-/// may make it (`manoeuvre[0].rudder_deg` in `zigzag_10_10`, or its `name` itself) and the
-/// scene does not give it one, then its position, `manoeuvre[0]`: a name made from a swept
-/// value would give each case columns of its own, and shards that could not be merged.
-/// `named_from` lists the keys a kind makes its names from.
-pub fn manoeuvre_columns<'a>(
-    case: &TableCase,
-    names: impl Iterator<Item = &'a str>,
-    named_from: &[&str],
-) -> Vec<String> {
-    let given = |index: usize| {
-        let entry = case.table.get("manoeuvre").and_then(|m| m.get(index));
-        entry.is_some_and(|m| m.get("name").is_some())
+/// Runs a scene of a registered kind into `out`, a folder claimed and found writable: each
+/// run's trajectory and drawings through the command's recorder, then `summary.json`.
+pub fn run_into<'a>(scene: &'a dyn Kind, name: &str, out: &Path) -> Result<Box<dyn Finished + 'a>> {
+    let mut recorder = FolderRecorder::new(out);
+    let finished = scene.run(name, &mut recorder)?;
+    let bytes = serde_json::to_vec_pretty(&finished.summary())?;
+    let path = out.join("summary.json");
+    write_atomically(&path, &bytes).with_context(|| format!("writing {}", path.display()))?;
+    Ok(finished)
+}
+
+/// Runs a scene of a registered kind alone into `out` and prints its report; a signal that
+/// stopped it says what was kept.
+pub fn execute(scene: &dyn Kind, name: &str, out: &Path) -> Result<()> {
+    let finished = run_into(scene, name, out)?;
+    print!("{}", finished.report());
+    println!("  written to {}", eom_cli::shell_path(out));
+    match (finished.stopped(), signal_received()) {
+        (true, Some(signal)) => Err(Interrupted {
+            signal,
+            kept: format!(
+                "the {} finished before it, and summary.json, in {}",
+                eom::counted(finished.runs_kept(), "manoeuvre", "manoeuvres"),
+                out.display()
+            ),
+        }
+        .into()),
+        _ => Ok(()),
+    }
+}
+
+/// A ship sweep's plot over a rudder angle, beside its table.
+pub const SWEEP_PLOT: &str = "rudder_sweep.svg";
+
+/// The figures [`write_sweep_plot`] draws against the rudder angle, with their names.
+const SWEPT_FIGURES: [(&str, &str); 2] = [
+    ("tactical_diameter_m", "tactical diameter"),
+    ("steady_turning_radius_m", "steady turning radius"),
+];
+
+/// Whether a column of a sweep's table is a swept key (a key path of the scene: a key of an
+/// entry of an array, `manoeuvre[0].rudder_deg`, or a key of one of its tables), not a figure
+/// (`manoeuvre[0].tactical_diameter_m`, a manoeuvre's figure named by its position).
+fn is_key_path(column: &str) -> bool {
+    // `manoeuvre[0].rudder_deg` is the reference's `manoeuvre[].rudder_deg`.
+    let path = match column.split_once('[') {
+        Some((array, rest)) => match rest.split_once(']') {
+            Some((_, key)) => format!("{array}[]{key}"),
+            None => return false,
+        },
+        None => column.to_owned(),
     };
-    names
-        .enumerate()
-        .map(|(index, name)| {
-            let swept = |key: &str| {
-                let path = format!("manoeuvre[{index}].{key}");
-                case.values.iter().any(|(k, _)| *k == path)
-            };
-            let named = given(index) && !swept("name");
-            let made_from_swept = swept("name") || named_from.iter().any(|key| swept(key));
-            match named || !made_from_swept {
-                true => name.to_owned(),
-                false => format!("manoeuvre[{index}]"),
-            }
-        })
-        .collect()
+    // A key of any kind's reference, `hydrodynamics.coefficients.*` standing for every name.
+    keys().any(|key| match key.path.strip_suffix('*') {
+        Some(table) => path.starts_with(table),
+        None => key.path == path,
+    })
+}
+
+/// `rudder_sweep.svg` in `dir`, from a ship sweep's table (`sweep.csv`'s text), when the sweep
+/// varies one key and that key is a rudder angle (`….rudder_deg`): the tactical diameter and
+/// the steady turning radius of each turning circle against it, each side's where a turn ran
+/// to both. Draws nothing for any other sweep. The table alone decides, so that a whole run
+/// and the merge of its shards draw the same plot.
+pub fn write_sweep_plot(dir: &Path, table: &str) -> Result<()> {
+    let mut reader = csv::Reader::from_reader(table.as_bytes());
+    let Ok(header) = reader.headers().cloned() else {
+        return Ok(());
+    };
+    let swept: Vec<&str> = header
+        .iter()
+        .skip(1)
+        .take_while(|c| is_key_path(c))
+        .collect();
+    let [rudder] = swept.as_slice() else {
+        return Ok(());
+    };
+    if !rudder.ends_with("rudder_deg") {
+        return Ok(());
+    }
+    let rows: Vec<csv::StringRecord> = reader.records().filter_map(Result::ok).collect();
+    let number = |row: &csv::StringRecord, i: usize| row.get(i)?.parse::<f64>().ok();
+    let mut lines: Vec<(String, Vec<(f64, f64)>)> = Vec::new();
+    for (i, column) in header.iter().enumerate() {
+        let Some((key, what)) = SWEPT_FIGURES
+            .iter()
+            .find(|(k, _)| column.ends_with(&format!(".{k}")))
+        else {
+            continue;
+        };
+        let manoeuvre = &column[..column.len() - key.len() - 1];
+        // A turn run to both sides: its sides' columns, not the worse side's.
+        let sided = ["port", "starboard"].iter().any(|side| {
+            header
+                .iter()
+                .any(|c| c == format!("{manoeuvre}.{side}.{key}"))
+        });
+        if sided {
+            continue;
+        }
+        let mut points: Vec<(f64, f64)> = rows
+            .iter()
+            .filter_map(|row| Some((number(row, 1)?, number(row, i)?)))
+            .collect();
+        points.sort_by(|a, b| a.0.total_cmp(&b.0));
+        lines.push((format!("{} {what}", manoeuvre.replace('.', " ")), points));
+    }
+    if lines.is_empty() {
+        return Ok(());
+    }
+    let curves: Vec<Curve> = (lines.iter())
+        .map(|(name, points)| Curve { name, points })
+        .collect();
+    let caption = format!("Turning circles against the rudder angle ({rudder})");
+    let plot = Curves {
+        caption: &caption,
+        x_desc: "rudder angle [deg]",
+        y_desc: "tactical diameter, steady turning radius [m]",
+        curves: &curves,
+    };
+    write_curves(dir, SWEEP_PLOT, &plot)?;
+    Ok(())
 }

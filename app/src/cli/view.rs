@@ -16,10 +16,13 @@
 //!
 //! The panel of the page says which of these it drew, and what it assumed.
 
+use super::record::Kept;
 use anyhow::{Context, Result};
 use eom::Short;
+use eom::models::state_with_unit;
 use eom::models::{Family, Kinematics, state_unit};
 use eom::nalgebra::{Matrix3, UnitQuaternion, Vector3};
+use eom::output::drawing::{Hull, PlaneManoeuvre, SpaceManoeuvre};
 use eom::output::trajectory::Columns;
 use eom::scene::SceneLoads;
 use eom::scene::{Body, Scene};
@@ -27,10 +30,6 @@ use eom_cli::view::{
     CameraTarget, Shape, SpaceAxes, Vectors, ViewInput, box_sides, cylinder_size, write_view,
 };
 use std::path::{Path, PathBuf};
-
-/// A beam of L over this for a ship's hull: a ship scene has no key for the beam (a cargo
-/// ship's L/B is 6 to 8).
-pub const ASSUMED_LENGTH_OVER_BEAM: f64 = 7.0;
 
 /// Writes `view.html` of a catalog scene's run into `out`.
 pub fn write(scene: &Scene, columns: &Columns, out: &Path) -> Result<PathBuf> {
@@ -364,13 +363,13 @@ fn planar<'a>(
     let n = columns.time.len();
     let (shape, water, note) = if family == Family::PlanarMidship {
         let length = 4.0 * (izz / mass).sqrt();
-        let beam = length / ASSUMED_LENGTH_OVER_BEAM;
+        let beam = length / Hull::ASSUMED_LENGTH_OVER_BEAM;
         let note = format!(
             "a hull of length {} m (a radius of gyration of L/4 about G) and beam {} m \
              (L/B = {} assumed)",
             Short(length),
             Short(beam),
-            ASSUMED_LENGTH_OVER_BEAM
+            Hull::ASSUMED_LENGTH_OVER_BEAM
         );
         (Shape::Hull { length, beam }, true, note)
     } else {
@@ -408,41 +407,43 @@ fn planar<'a>(
     }
 }
 
-/// The columns of a ship's manoeuvre: t and the state u, v, r, X, Y, ψ, δ.
-pub struct ShipColumns<'a> {
-    /// The scene's title and the manoeuvre.
-    pub title: &'a str,
-    /// L, m.
-    pub length: f64,
-    /// t, s.
-    pub time: &'a [f64],
-    /// u, v, r, X, Y, ψ, δ, each with its label.
-    pub state: Vec<(String, &'a [f64])>,
-}
-
-/// Writes a manoeuvre's `view.html` into its folder.
-pub fn write_ship(out: &Path, ship: ShipColumns) -> Result<PathBuf> {
-    let n = ship.time.len();
-    let column = |k: usize| ship.state[k].1;
-    let beam = ship.length / ASSUMED_LENGTH_OVER_BEAM;
-    let note = format!(
-        "the hull of length L = {} m, and of beam B = L/{} = {} m, assumed: a ship scene has \
-         no key for the beam (its table does not need one)",
-        Short(ship.length),
-        ASSUMED_LENGTH_OVER_BEAM,
-        Short(beam)
-    );
+/// Writes the `view.html` of a manoeuvre in the plane into its folder: the hull moving on
+/// the water, turned by ψ, its readout the drawing's columns.
+pub fn write_plane(out: &Path, drawing: &PlaneManoeuvre, kept: &Kept) -> Result<PathBuf> {
+    let n = kept.columns.time.len();
+    let hull = drawing.hull;
+    let note = match hull.beam_assumed {
+        true => format!(
+            "the hull of length L = {} m, and of beam B = L/{} = {} m, assumed: a ship scene \
+             has no key for the beam (its table does not need one)",
+            Short(hull.length),
+            Hull::ASSUMED_LENGTH_OVER_BEAM,
+            Short(hull.beam)
+        ),
+        false => format!(
+            "the hull of length L = {} m and beam B = {} m",
+            Short(hull.length),
+            Short(hull.beam)
+        ),
+    };
+    let readout = (drawing.readout.iter())
+        .map(|name| Ok((state_with_unit(name), kept.column(name)?)))
+        .collect::<Result<Vec<_>>>()?;
     let input = ViewInput {
-        title: ship.title,
+        title: &drawing.title,
         shape: Shape::Hull {
-            length: ship.length,
-            beam,
+            length: hull.length,
+            beam: hull.beam,
         },
         axes: SpaceAxes::ZDown,
-        time: ship.time,
-        position: [column(3).to_vec(), column(4).to_vec(), vec![0.0; n]],
-        attitude: about_axis(column(5), 2),
-        readout: ship.state.clone(),
+        time: &kept.columns.time,
+        position: [
+            kept.column("x")?.to_vec(),
+            kept.column("y")?.to_vec(),
+            vec![0.0; n],
+        ],
+        attitude: about_axis(kept.column("psi")?, 2),
+        readout,
         vectors: None,
         trail: ([0.0; 3], "midship".into()),
         camera: CameraTarget::Follow,
@@ -453,41 +454,43 @@ pub fn write_ship(out: &Path, ship: ShipColumns) -> Result<PathBuf> {
     write_view(out, &input).with_context(|| format!("writing the view into {}", out.display()))
 }
 
-/// Writes a vehicle manoeuvre's `view.html` into its folder: the solid cylinder of the
-/// vehicle's mass and principal moments about G (along the principal axis nearest body x),
-/// drawn about the table's origin O (G's offset from O, 2 cm for REMUS, is not drawn), moving
-/// through the water in north, east, down and turned by the run's quaternion. `columns` are
-/// [`eom::kinds::vehicle::manoeuvre::ROW`]'s.
-pub fn write_vehicle(
-    out: &Path,
-    title: &str,
-    table: &eom::kinds::vehicle::table::VehicleTable,
-    columns: &Columns,
-) -> Result<PathBuf> {
-    use eom::kinds::vehicle::manoeuvre::ROW;
-    let column = |name: &str| -> &[f64] {
-        let index = ROW.iter().position(|r| *r == name).unwrap_or(0);
-        &columns.state[index]
-    };
-    let (moments, axes) = principal(inertia_about_g(table));
-    let (shape, note) = match vehicle(table.mass, moments, axes) {
+/// Writes the `view.html` of a manoeuvre in space into its folder: the solid cylinder of the
+/// body's mass and principal moments about G (along the principal axis nearest body x), drawn
+/// about the rows' reference point (G's offset from it, 2 cm for REMUS's origin, is not
+/// drawn), moving through the water in north, east, down and turned by the run's quaternion;
+/// every column in its readout.
+pub fn write_space(out: &Path, drawing: &SpaceManoeuvre, kept: &Kept) -> Result<PathBuf> {
+    let solid = drawing.solid;
+    let inertia = Matrix3::from_fn(|r, c| solid.inertia_about_g[r][c]);
+    let (moments, axes) = principal(inertia);
+    let (shape, note) = match vehicle(solid.mass, moments, axes) {
         Some((shape, _, note)) => (shape, note),
         None => anyhow::bail!(
-            "no solid cylinder has the vehicle's mass {} kg and principal moments {:?} kg m²",
-            Short(table.mass),
+            "no solid cylinder has the body's mass {} kg and principal moments {:?} kg m²",
+            Short(solid.mass),
             moments
         ),
     };
-    let readout = (ROW.iter().zip(&columns.state))
+    let readout = (kept.names.iter().zip(&kept.columns.state))
         .map(|(name, values)| (labelled(name), values.as_slice()))
         .collect();
+    let quaternion = [
+        kept.column("q0")?,
+        kept.column("q1")?,
+        kept.column("q2")?,
+        kept.column("q3")?,
+    ];
     let input = ViewInput {
-        title,
+        title: &drawing.title,
         shape,
         axes: SpaceAxes::ZDown,
-        time: &columns.time,
-        position: ["x", "y", "z"].map(|name| column(name).to_vec()),
-        attitude: unit(["q0", "q1", "q2", "q3"].map(column)),
+        time: &kept.columns.time,
+        position: [
+            kept.column("x")?.to_vec(),
+            kept.column("y")?.to_vec(),
+            kept.column("z")?.to_vec(),
+        ],
+        attitude: unit(quaternion),
         readout,
         vectors: None,
         trail: ([0.0; 3], "the table's origin O".into()),
@@ -497,19 +500,6 @@ pub fn write_vehicle(
         notes: vec![note],
     };
     write_view(out, &input).with_context(|| format!("writing the view into {}", out.display()))
-}
-
-/// The vehicle's inertia tensor about G: as the scene gives it, or from the one about O by
-/// 4.23 turned round, I_G = I_O − M(|r_G|² E − r_G r_Gᵀ).
-fn inertia_about_g(table: &eom::kinds::vehicle::table::VehicleTable) -> Matrix3<f64> {
-    let given = Matrix3::from_fn(|r, c| table.inertia[r][c]);
-    match table.inertia_about {
-        eom::kinds::vehicle::InertiaAbout::Gravity => given,
-        eom::kinds::vehicle::InertiaAbout::Origin => {
-            let r = Vector3::from(table.centre_of_gravity);
-            given - (Matrix3::identity() * r.norm_squared() - r * r.transpose()) * table.mass
-        }
-    }
 }
 
 /// Quaternion columns divided by their length, row by row (a run's quaternion drifts from

@@ -52,7 +52,7 @@
 //!
 //! Here: the input, the errors, and writing each plot atomically. `scale` decides which
 //! samples are drawn and where the axes run; `series`, `track`, `profile`, `polhode` and
-//! `energy` draw the plots; `ship` draws a manoeuvre's, `poles` a linear model's eigenvalues,
+//! `energy` draw the plots; `plane_manoeuvre` and `space_manoeuvre` draw a manoeuvre's (in the plane, in space), `poles` a linear model's eigenvalues,
 //! `curves` one quantity against another (a spiral's r–δ curve, a rudder sweep's diameters).
 
 use std::fs::{self, File};
@@ -68,15 +68,15 @@ use eom::output::text::printable;
 
 pub mod curves;
 mod energy;
+pub mod plane_manoeuvre;
 pub mod poles;
 mod polhode;
 mod precise;
 mod profile;
 mod scale;
 mod series;
-pub mod ship;
+pub mod space_manoeuvre;
 mod track;
-pub mod vehicle;
 
 use energy::draw_energy;
 use polhode::draw_polhode;

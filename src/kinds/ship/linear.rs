@@ -348,3 +348,71 @@ pub fn linearise_ship(
     crate::linear::set_at(&scene.linear, names, (&mut state, &mut extra))?;
     crate::linear::linearise(&plant, (state, extra), &scene.linear)
 }
+
+/// Nomoto's models, the course stability and the pivot point, as text.
+pub fn nomoto_report(scene: &super::ShipScene, model: &ShipModel, linear: &LinearModel) -> String {
+    let mut text = String::new();
+    let speed = scene.table.design_speed;
+    line(
+        &mut text,
+        format!(
+            "{}: the linear model about the straight course at U₀ = {speed} m/s",
+            crate::output::text::printable(&scene.title)
+        ),
+    );
+    let show = |text: &mut String, what: &str, nomoto: Option<Nomoto>| {
+        let said = match nomoto {
+            Some(n) => format!(
+                "  {what:<34} K = {:.6e} 1/s, T₁ = {:.6} s, T₂ = {:.6} s, T₃ = {:.6} s, T = {:.6} s",
+                n.k, n.t1, n.t2, n.t3, n.t
+            ),
+            None => format!("  {what:<34} T₁ and T₂ are not real: no Nomoto form"),
+        };
+        line(text, said);
+    };
+    show(&mut text, "Nomoto, closed form:", linear.nomoto());
+    let (a, b) = linearise(model, speed);
+    show(
+        &mut text,
+        "Nomoto, linearised model:",
+        Nomoto::from_state_space(a, b),
+    );
+    if let Some(d) =
+        super::summary::nomoto_difference(linear.nomoto(), Nomoto::from_state_space(a, b))
+    {
+        line(
+            &mut text,
+            format!("  {:<34} {d:.1e}", "largest relative difference:"),
+        );
+    }
+    let verdict = if linear.course_stable() {
+        "stable"
+    } else {
+        "UNSTABLE"
+    };
+    let stability = match linear.stability_index() {
+        Some(c) => format!(
+            "  course stability: C′ = Y′v(N′r − m′x′G) − (Y′r − m′)N′v = {c:.6e}: {verdict}"
+        ),
+        None => format!(
+            "  course stability: det N = {:.6e} (SI): {verdict}",
+            linear.det_damping()
+        ),
+    };
+    line(&mut text, stability);
+    let pivot = linear.pivot_point();
+    line(
+        &mut text,
+        format!(
+            "  pivot point: x_p = {pivot:.2} m ahead of midship ({:.3} L)",
+            pivot / scene.length
+        ),
+    );
+    text
+}
+
+/// Appends `content` and a newline.
+fn line(text: &mut String, content: String) {
+    text.push_str(&content);
+    text.push('\n');
+}

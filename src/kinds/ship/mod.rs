@@ -31,10 +31,12 @@
 //! `emit::system_source` (crate `eom-codegen`) from a `build.rs`.
 
 pub mod imo;
+pub mod kind;
 pub mod linear;
 pub mod manoeuvre;
 pub mod model;
 pub mod propulsion;
+pub mod run;
 
 pub mod scene;
 pub mod side;
@@ -50,6 +52,7 @@ pub(crate) use crate::defined::engine::{ADDED_MASS, VARIABLES};
 /// units, and about which point the yaw inertia is given.
 pub use crate::defined::engine::{Force, Term, Units, YawInertia};
 pub use crate::manoeuvring::{Rudder, Series};
+pub use kind::KIND;
 pub use linear::{LinearModel, Nomoto};
 pub use manoeuvre::{Manoeuvre, ManoeuvreKind, ManoeuvreRun};
 pub use model::ShipModel;
@@ -86,9 +89,45 @@ pub enum ShipError {
         /// When.
         time: f64,
     },
+    /// An error of one manoeuvre's run.
+    #[error("manoeuvre {manoeuvre}")]
+    In {
+        /// The manoeuvre's name.
+        manoeuvre: String,
+        /// What went wrong.
+        source: Box<ShipError>,
+    },
+    /// The rows of a run could not be kept by the caller's recorder (a trajectory file that
+    /// could not be written).
+    #[error("keeping what {run} gave")]
+    Record {
+        /// The run's path under the output (`turning_circle_35/port`).
+        run: String,
+        /// Why.
+        source: crate::run::record::RecordError,
+    },
 }
 
 impl ShipError {
+    /// The error said as of the manoeuvre it happened in (`manoeuvre turning_circle_35: …`).
+    pub fn in_manoeuvre(self, manoeuvre: &str) -> Self {
+        match self {
+            stopped @ ShipError::Stopped { .. } => stopped,
+            error => ShipError::In {
+                manoeuvre: manoeuvre.to_owned(),
+                source: Box::new(error),
+            },
+        }
+    }
+
+    /// The error itself, whichever manoeuvre it is said of.
+    pub fn cause(&self) -> &ShipError {
+        match self {
+            ShipError::In { source, .. } => source.cause(),
+            error => error,
+        }
+    }
+
     pub(crate) fn invalid(key: impl Into<String>, reason: impl Into<String>) -> Self {
         ShipError::Invalid {
             key: key.into(),

@@ -25,10 +25,12 @@
 pub mod autopilot;
 pub mod cross_flow;
 pub mod fins;
+pub mod kind;
 pub mod linear;
 pub mod manoeuvre;
 pub mod model;
 pub mod propeller;
+pub mod run;
 pub mod scene;
 pub mod summary;
 pub mod table;
@@ -43,6 +45,7 @@ pub use crate::defined::engine::{
 };
 pub use cross_flow::CrossFlow;
 pub use fins::{FinSteps, Fins};
+pub use kind::KIND;
 pub use manoeuvre::{VehicleManoeuvre, VehicleRun};
 pub use model::VehicleModel;
 pub use propeller::PropellerLaw;
@@ -85,9 +88,45 @@ pub enum VehicleError {
         /// When.
         time: f64,
     },
+    /// An error of one manoeuvre's run.
+    #[error("manoeuvre {manoeuvre}")]
+    In {
+        /// The manoeuvre's name.
+        manoeuvre: String,
+        /// What went wrong.
+        source: Box<VehicleError>,
+    },
+    /// The rows of a run could not be kept by the caller's recorder (a trajectory file that
+    /// could not be written).
+    #[error("keeping what {run} gave")]
+    Record {
+        /// The run's path under the output (`turning_circle_35/port`).
+        run: String,
+        /// Why.
+        source: crate::run::record::RecordError,
+    },
 }
 
 impl VehicleError {
+    /// The error said as of the manoeuvre it happened in (`manoeuvre turning_circle: …`).
+    pub fn in_manoeuvre(self, manoeuvre: &str) -> Self {
+        match self {
+            stopped @ VehicleError::Stopped { .. } => stopped,
+            error => VehicleError::In {
+                manoeuvre: manoeuvre.to_owned(),
+                source: Box::new(error),
+            },
+        }
+    }
+
+    /// The error itself, whichever manoeuvre it is said of.
+    pub fn cause(&self) -> &VehicleError {
+        match self {
+            VehicleError::In { source, .. } => source.cause(),
+            error => error,
+        }
+    }
+
     pub(crate) fn invalid(key: impl Into<String>, reason: impl Into<String>) -> Self {
         VehicleError::Invalid {
             key: key.into(),

@@ -1113,6 +1113,25 @@ impl Checker<'_> {
 }
 
 impl VehicleScene {
+    /// The body as the view draws it: its mass and its inertia tensor about G, as the table
+    /// gives it or from the one about O by 4.23 turned round, I_G = I_O − M(|r_G|² E −
+    /// r_G r_Gᵀ).
+    pub fn solid(&self) -> crate::output::drawing::Solid {
+        let table = &self.table;
+        let given = Matrix3::from_fn(|r, c| table.inertia[r][c]);
+        let about_g = match table.inertia_about {
+            InertiaAbout::Gravity => given,
+            InertiaAbout::Origin => {
+                let r = nalgebra::Vector3::from(table.centre_of_gravity);
+                given - (Matrix3::identity() * r.norm_squared() - r * r.transpose()) * table.mass
+            }
+        };
+        crate::output::drawing::Solid {
+            mass: table.mass,
+            inertia_about_g: about_g.transpose().into(),
+        }
+    }
+
     /// Reads and checks vehicle scene text; `name` is how errors name it.
     pub fn parse(text: &str, name: &str) -> Result<Self, SceneError> {
         let file: VehicleSceneFile = crate::scene::read_as(text, name)?;

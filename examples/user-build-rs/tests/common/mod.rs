@@ -138,9 +138,10 @@ pub fn mariner_rates(m: &mariner::Coefficients<f64>, s: &[f64; 7], rate: f64) ->
 /// REMUS 100's scene as `eom` reads it.
 pub fn remus_scene() -> VehicleScene {
     let text = std::fs::read_to_string(scene_path("remus100.toml")).expect("REMUS's scene");
-    match AnyScene::parse(&text, "remus100.toml", Path::new(".")) {
-        Ok(AnyScene::Vehicle(scene)) => *scene,
-        _ => panic!("remus100.toml is read as a vehicle"),
+    let scene = AnyScene::parse(&text, "remus100.toml", Path::new(".")).ok();
+    match scene.and_then(AnyScene::downcast::<VehicleScene>) {
+        Some(scene) => *scene,
+        None => panic!("remus100.toml is read as a vehicle"),
     }
 }
 

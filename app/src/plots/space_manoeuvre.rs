@@ -1,4 +1,4 @@
-//! A vehicle manoeuvre's plots: the track in plan (north against east, with a turning
+//! A manoeuvre in space (a vehicle's): its plots: the track in plan (north against east, with a turning
 //! circle's points marked as a ship's are: the execute, 90° with the advance and transfer,
 //! 180° with the tactical diameter), the profile (height against the distance run, and seen
 //! from the east), the attitude (roll, pitch, yaw made continuous), and the fins with their
@@ -14,7 +14,7 @@ use std::path::{Path, PathBuf};
 
 /// The columns a vehicle's plots read, each in SI (angles in radians), one value per time.
 #[derive(Clone, Copy)]
-pub struct VehiclePlot<'a> {
+pub struct SpacePlot<'a> {
     /// The plots' title.
     pub title: &'a str,
     /// t, s.
@@ -30,7 +30,7 @@ pub struct VehiclePlot<'a> {
 }
 
 /// Writes `track.svg`, `profile.svg`, `attitude.svg` and `fins.svg` into `dir`.
-pub fn write_vehicle_plots(dir: &Path, plot: &VehiclePlot) -> Result<Vec<PathBuf>, PlotError> {
+pub fn write_space_plots(dir: &Path, plot: &SpacePlot) -> Result<Vec<PathBuf>, PlotError> {
     let columns = plot.position.iter().chain(&plot.attitude).chain(&plot.fins);
     if let Some(len) = columns.map(|c| c.len()).find(|len| *len != plot.time.len()) {
         return Err(PlotError::Length {
@@ -68,7 +68,7 @@ pub fn write_vehicle_plots(dir: &Path, plot: &VehiclePlot) -> Result<Vec<PathBuf
     Ok(vec![track, profile, attitude, fins])
 }
 
-fn draw_fins(svg: &mut String, title: &str, plot: &VehiclePlot) -> Result<(), DrawError> {
+fn draw_fins(svg: &mut String, title: &str, plot: &SpacePlot) -> Result<(), DrawError> {
     let caption = format!("{title}: fins and their commands");
     let style = PanelStyle {
         caption: &caption,

@@ -41,16 +41,9 @@ pub struct ManoeuvrePlot<'a> {
     pub hull: Hull,
 }
 
-/// The hull's size, for its waterline drawn along the track.
-#[derive(Debug, Clone, Copy)]
-pub struct Hull {
-    /// L, m.
-    pub length: f64,
-    /// B, m.
-    pub beam: f64,
-    /// Whether B is assumed (the scene gives none): the caption says so.
-    pub beam_assumed: bool,
-}
+/// The hull's size, for its waterline drawn along the track (the library's, as the kind
+/// says it).
+pub use eom::output::drawing::Hull;
 
 /// How many times the hull is drawn along the track, evenly by distance run, besides the start.
 const HULLS: usize = 10;

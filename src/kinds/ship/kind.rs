@@ -1,0 +1,131 @@
+//! The ship as a kind of scene: recognised by its `[hydrodynamics]` (with any family but the
+//! vehicle's), run through [`super::run`], linearised about its straight course with Nomoto's
+//! models beside.
+
+use super::linear::{LinearModel, linearise_ship, nomoto_report};
+use super::manoeuvre::ROW;
+use super::run::{Finished, run_scene};
+use super::summary::LinearSummary;
+use super::{ShipError, ShipModel, ShipScene};
+use crate::kinds::{self, KindError, Linearised, Registered, Source};
+use crate::run::record::Recorder;
+use crate::scene::SceneError;
+use crate::scene::sweep::TableCase;
+use std::any::Any;
+use std::path::Path;
+
+/// The registry's entry.
+pub const KIND: Registered = Registered {
+    name: "ship",
+    recognises,
+    read,
+};
+
+/// A ship's scene has `[hydrodynamics]` and is not a vehicle's.
+fn recognises(table: &toml::Table) -> bool {
+    table.contains_key("hydrodynamics") && kinds::family_of(table) != Some("vehicle")
+}
+
+fn read(source: Source, name: &str, _base: &Path) -> Result<Box<dyn kinds::Kind>, SceneError> {
+    let file = source.read(name)?;
+    Ok(Box::new(ShipScene::from_file(&file, name)?))
+}
+
+impl From<ShipError> for KindError {
+    fn from(error: ShipError) -> Self {
+        let class = match error.cause() {
+            ShipError::Invalid { .. } => KindError::Scene,
+            ShipError::Run { .. } => KindError::Run,
+            ShipError::Stopped { .. } => KindError::Stopped,
+            ShipError::Record { .. } => KindError::Output,
+            ShipError::Build(_) | ShipError::In { .. } => KindError::Internal,
+        };
+        class(Box::new(error))
+    }
+}
+
+impl kinds::Kind for ShipScene {
+    fn kind(&self) -> &'static str {
+        KIND.name
+    }
+
+    fn title(&self) -> &str {
+        &self.title
+    }
+
+    fn folders(&self) -> Vec<String> {
+        self.manoeuvres.iter().map(|m| m.name.clone()).collect()
+    }
+
+    /// Each side's rows of each manoeuvre, t and [`ROW`] with the kinetic energy.
+    fn trajectory_numbers(&self) -> f64 {
+        let rows: f64 = (self.manoeuvres.iter())
+            .map(|m| m.duration / self.every * m.runs().len() as f64)
+            .sum();
+        rows * (ROW.len() + 2) as f64
+    }
+
+    fn run(
+        &self,
+        name: &str,
+        recorder: &mut dyn Recorder,
+    ) -> Result<Box<dyn kinds::Finished + '_>, KindError> {
+        let finished = run_scene(self, name, recorder)?;
+        Ok(Box::new(ShipFinished {
+            scene: self,
+            finished,
+        }))
+    }
+
+    fn linear(&self) -> Result<Linearised, KindError> {
+        let model = ShipModel::new(&self.table)?;
+        let linear = LinearModel::closed_form(&self.table);
+        let linearisation = linearise_ship(self, &model)?;
+        let json = match serde_json::to_value(LinearSummary::new(self, &model, &linear)) {
+            Ok(serde_json::Value::Object(map)) => map,
+            _ => serde_json::Map::new(),
+        };
+        Ok(Linearised {
+            linearisation,
+            text: nomoto_report(self, &model, &linear),
+            json,
+        })
+    }
+
+    fn as_any(&self) -> &dyn Any {
+        self
+    }
+
+    fn into_any(self: Box<Self>) -> Box<dyn Any> {
+        self
+    }
+}
+
+/// A ship's run with its scene, for what the report and the sweep's line say of it.
+#[derive(Debug)]
+struct ShipFinished<'a> {
+    scene: &'a ShipScene,
+    finished: Finished,
+}
+
+impl kinds::Finished for ShipFinished<'_> {
+    fn summary(&self) -> serde_json::Value {
+        serde_json::to_value(&self.finished.summary).unwrap_or_default()
+    }
+
+    fn report(&self) -> String {
+        self.finished.report(self.scene)
+    }
+
+    fn cells(&self, case: &TableCase) -> Vec<(String, String)> {
+        self.finished.cells(self.scene, case)
+    }
+
+    fn stopped(&self) -> bool {
+        self.finished.stopped
+    }
+
+    fn runs_kept(&self) -> usize {
+        self.finished.outcomes.len()
+    }
+}

@@ -1,0 +1,124 @@
+//! The vehicle as a kind of scene: recognised by its `[hydrodynamics]` with
+//! `family = "vehicle"`, run through [`super::run`], linearised at its cruise through the
+//! table's Euler-angle twin.
+
+use super::linear::linearise_vehicle;
+use super::manoeuvre::ROW;
+use super::run::{Finished, run_scene};
+use super::{VehicleError, VehicleScene};
+use crate::kinds::{self, KindError, Linearised, Registered, Source};
+use crate::run::record::Recorder;
+use crate::scene::SceneError;
+use crate::scene::sweep::TableCase;
+use std::any::Any;
+use std::path::Path;
+
+/// The registry's entry.
+pub const KIND: Registered = Registered {
+    name: "vehicle",
+    recognises,
+    read,
+};
+
+/// A vehicle's scene has `[hydrodynamics]` and `[model] family = "vehicle"`.
+fn recognises(table: &toml::Table) -> bool {
+    table.contains_key("hydrodynamics") && kinds::family_of(table) == Some("vehicle")
+}
+
+fn read(source: Source, name: &str, _base: &Path) -> Result<Box<dyn kinds::Kind>, SceneError> {
+    let file = source.read(name)?;
+    Ok(Box::new(VehicleScene::from_file(&file, name)?))
+}
+
+impl From<VehicleError> for KindError {
+    fn from(error: VehicleError) -> Self {
+        let class = match error.cause() {
+            VehicleError::Invalid { .. } | VehicleError::Table(_) => KindError::Scene,
+            VehicleError::Linear(linear) if linear.is_scene_error() => KindError::Scene,
+            VehicleError::Run { .. } | VehicleError::Linear(_) => KindError::Run,
+            VehicleError::Stopped { .. } => KindError::Stopped,
+            VehicleError::Record { .. } => KindError::Output,
+            VehicleError::Prove(_) | VehicleError::In { .. } => KindError::Internal,
+        };
+        class(Box::new(error))
+    }
+}
+
+impl kinds::Kind for VehicleScene {
+    fn kind(&self) -> &'static str {
+        KIND.name
+    }
+
+    fn title(&self) -> &str {
+        &self.title
+    }
+
+    fn folders(&self) -> Vec<String> {
+        self.manoeuvres.iter().map(|m| m.name.clone()).collect()
+    }
+
+    /// Each manoeuvre's rows, t and [`ROW`] with the kinetic energy.
+    fn trajectory_numbers(&self) -> f64 {
+        let rows: f64 = (self.manoeuvres.iter())
+            .map(|m| m.duration / self.every)
+            .sum();
+        rows * (ROW.len() + 2) as f64
+    }
+
+    fn run(
+        &self,
+        _name: &str,
+        recorder: &mut dyn Recorder,
+    ) -> Result<Box<dyn kinds::Finished + '_>, KindError> {
+        let finished = run_scene(self, recorder)?;
+        Ok(Box::new(VehicleFinished {
+            scene: self,
+            finished,
+        }))
+    }
+
+    fn linear(&self) -> Result<Linearised, KindError> {
+        Ok(Linearised {
+            linearisation: linearise_vehicle(self)?,
+            text: String::new(),
+            json: serde_json::Map::new(),
+        })
+    }
+
+    fn as_any(&self) -> &dyn Any {
+        self
+    }
+
+    fn into_any(self: Box<Self>) -> Box<dyn Any> {
+        self
+    }
+}
+
+/// A vehicle's run with its scene, for what the report and the sweep's line say of it.
+#[derive(Debug)]
+struct VehicleFinished<'a> {
+    scene: &'a VehicleScene,
+    finished: Finished,
+}
+
+impl kinds::Finished for VehicleFinished<'_> {
+    fn summary(&self) -> serde_json::Value {
+        serde_json::to_value(&self.finished.summary).unwrap_or_default()
+    }
+
+    fn report(&self) -> String {
+        self.finished.report(self.scene)
+    }
+
+    fn cells(&self, case: &TableCase) -> Vec<(String, String)> {
+        self.finished.cells(self.scene, case)
+    }
+
+    fn stopped(&self) -> bool {
+        self.finished.stopped
+    }
+
+    fn runs_kept(&self) -> usize {
+        self.finished.outcomes.len()
+    }
+}

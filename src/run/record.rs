@@ -1,0 +1,69 @@
+//! Where the runs of a scene put their rows: a [`Recorder`] is told when each run begins (its
+//! path under the output, its columns) and ends, and takes its rows between. The command's
+//! recorder writes each run's `trajectory.csv` and keeps its columns for the plots; a library
+//! user's may keep them in memory, or drop them ([`Discard`]).
+//!
+//! A scene of many runs (a ship's manoeuvres, each to both sides) runs them in order through
+//! one recorder, so that what a run writes, and whether it may go on, is the caller's and not
+//! the kind's.
+
+use super::Row;
+use crate::output::drawing::RunDrawings;
+
+/// Why a recorder could not keep what it was given: a file not written, a plot not drawn.
+pub type RecordError = Box<dyn std::error::Error + Send + Sync>;
+
+/// What a scene's runs hand their rows to, run after run.
+pub trait Recorder {
+    /// A run begins: its rows go under `path` (its folder under the output:
+    /// `turning_circle_35/port`), each with the time then `columns`; about `expected_rows`
+    /// of them.
+    fn begin(
+        &mut self,
+        path: &str,
+        columns: &[String],
+        expected_rows: usize,
+    ) -> Result<(), RecordError>;
+
+    /// Takes one row of the run begun last; `false` ends the run (the recorder keeps its own
+    /// reason: a write that failed, a signal).
+    fn row(&mut self, row: &Row) -> bool;
+
+    /// The run begun last has given its last row: everything it gave is kept.
+    fn end(&mut self) -> Result<(), RecordError>;
+
+    /// What the plots and the view of a run that ended draw, once its figures are known
+    /// (its marks, its title): the command draws them from the rows it kept.
+    fn drawn(&mut self, drawings: RunDrawings) -> Result<(), RecordError>;
+
+    /// Whether the caller asked the runs to stop (Ctrl-C): a run checks it between rows it
+    /// does not record (a refined run) and before it begins.
+    fn stop_asked(&self) -> bool;
+}
+
+/// A recorder that keeps nothing and never asks to stop: for a library user who wants a
+/// scene's figures alone.
+#[derive(Debug, Default, Clone, Copy)]
+pub struct Discard;
+
+impl Recorder for Discard {
+    fn begin(&mut self, _: &str, _: &[String], _: usize) -> Result<(), RecordError> {
+        Ok(())
+    }
+
+    fn row(&mut self, _: &Row) -> bool {
+        true
+    }
+
+    fn end(&mut self) -> Result<(), RecordError> {
+        Ok(())
+    }
+
+    fn drawn(&mut self, _: RunDrawings) -> Result<(), RecordError> {
+        Ok(())
+    }
+
+    fn stop_asked(&self) -> bool {
+        false
+    }
+}
