@@ -2,11 +2,64 @@
 //!
 //! A catalog body's scene selects a variant the build generated (`crate::scene`); a ship's
 //! and a vehicle's define their model by their own table, derived and proved when the scene is
-//! read. Each kind lives in its folder here, with its tables, keys, manoeuvres and figures,
-//! and none imports another: what two kinds share is in the layers below them
-//! ([`crate::manoeuvring`]: the steering gear, the course; [`crate::scene::envelope`]: the
-//! tables every scene with manoeuvres writes; [`crate::output::summary`]: the method's
-//! summary).
+//! read. Each of these lives in its folder here, with its tables, keys, manoeuvres and
+//! figures, implements [`Kind`] (what the command and a library user need of any scene: its
+//! runs, its rows, its summary, its report, its drawings, its linear plant), and has one line
+//! in [`REGISTRY`], the only list of them. None imports another: what two kinds share is in the
+//! layers below them ([`crate::manoeuvring`]: the steering gear, the course;
+//! [`crate::scene::envelope`]: the tables every scene with manoeuvres writes;
+//! [`crate::output::summary`]: the method's summary; [`crate::output::drawing`]: what a run
+//! draws; [`crate::run::record`]: where its rows go). A test below holds that.
+//!
+//! A scene of any kind is loaded through one entry, says which kind it is, and runs to its
+//! summary without the command; here the Mariner's manoeuvres, with a recorder that counts
+//! each run's rows:
+//!
+//! ```
+//! use eom::output::drawing::RunDrawings;
+//! use eom::run::Row;
+//! use eom::run::record::{RecordError, Recorder};
+//! use eom::scene::AnyScene;
+//!
+//! /// How many rows each run gave, by its path (`turning_circle_35/port`).
+//! #[derive(Default)]
+//! struct Counted(Vec<(String, usize)>);
+//!
+//! impl Recorder for Counted {
+//!     fn begin(&mut self, run: &str, _: &[String], _: usize) -> Result<(), RecordError> {
+//!         self.0.push((run.to_owned(), 0));
+//!         Ok(())
+//!     }
+//!     fn row(&mut self, _: &Row) -> bool {
+//!         self.0.last_mut().map(|(_, rows)| *rows += 1);
+//!         true // false would stop the run here
+//!     }
+//!     fn end(&mut self) -> Result<(), RecordError> {
+//!         Ok(())
+//!     }
+//!     fn drawn(&mut self, _: RunDrawings) -> Result<(), RecordError> {
+//!         Ok(())
+//!     }
+//!     fn stop_asked(&self) -> bool {
+//!         false
+//!     }
+//! }
+//!
+//! let AnyScene::Kind(mariner) = AnyScene::load("scenes/mariner.toml".as_ref())? else {
+//!     panic!("the Mariner's table defines its model");
+//! };
+//! assert_eq!(mariner.kind(), "ship");
+//! let mut counted = Counted::default();
+//! let finished = mariner.run("mariner.toml", &mut counted)?;
+//! assert_eq!(counted.0[0], ("turning_circle_35/port".to_owned(), 1504)); // a row a second
+//! // summary.json as the command writes it: the turn's worse side, and the IMO verdicts.
+//! let summary = finished.summary();
+//! let turn = &summary["manoeuvre"]["turning_circle_35"];
+//! assert!((turn["tactical_diameter_m"].as_f64().unwrap() - 1178.27).abs() < 0.01);
+//! assert_eq!(summary["manoeuvre"]["imo"][0]["criterion"], "advance");
+//! assert_eq!(summary["manoeuvre"]["imo"][0]["pass"], true);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
 
 #[cfg(feature = "ship")]
 pub mod ship;

@@ -117,14 +117,14 @@ pub fn growth_tolerance(a: &DMatrix<f64>) -> f64 {
     GROWTH_TOLERANCE * norm
 }
 
-/// Whose names a mode is given: a catalog family's, or a vehicle's (surge, sway and yaw,
-/// heave and pitch, roll: the planes of motion a vehicle's designer reads).
+/// Whose names a mode is given: a catalog family's, or the planes of motion a vehicle's
+/// designer reads (surge, sway and yaw, heave and pitch, roll).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Naming {
     /// The family's names.
     Family(Family),
-    /// A vehicle's planes.
-    Vehicle,
+    /// The planes of motion of a body moving in six degrees of freedom.
+    Planes,
 }
 
 /// The eigenvalues of `a`, sorted (largest real part first, then by imaginary part), its
@@ -148,9 +148,9 @@ pub fn modes(
         .collect();
     match naming {
         Naming::Family(family) => name_modes(&mut modes, family),
-        Naming::Vehicle => {
+        Naming::Planes => {
             for mode in &mut modes {
-                mode.name = vehicle_plane(mode);
+                mode.name = plane_of_motion(mode);
             }
         }
     }
@@ -286,7 +286,7 @@ pub fn eigenvector(
 /// A vehicle's mode by the plane of motion its dominant states lie in: surge (u), sway and yaw
 /// (v, r, ψ), heave and pitch (w, q, θ), roll (p, φ); none where they span planes, or for a
 /// state that neither grows nor decays.
-fn vehicle_plane(mode: &Mode) -> Option<&'static str> {
+fn plane_of_motion(mode: &Mode) -> Option<&'static str> {
     const PLANES: [(&str, &[&str]); 4] = [
         ("surge", &["u"]),
         ("sway and yaw", &["v", "r", "psi"]),

@@ -129,26 +129,19 @@ pub fn exit_code(error: &anyhow::Error) -> u8 {
 mod tests {
     use super::exit_code;
     use eom::kinds::KindError;
-    use eom::kinds::vehicle::VehicleError;
 
-    /// A vehicle's run that cannot go on exits 5, as every kind's does (README's table); a
-    /// value it refuses, 3; one stopped by Ctrl-C, 130.
+    /// A run of any kind that cannot go on exits 5 (README's table); a value it refuses, 3;
+    /// one stopped by Ctrl-C, 130; what it could not write, 4; a model not built, 1.
     #[test]
-    fn a_vehicles_errors_exit_as_every_kinds() {
-        let run = VehicleError::Run {
-            time: 1.0,
-            reason: "the state component u is not finite".into(),
-        };
-        let code = |error: VehicleError| {
-            let error = KindError::from(error.in_manoeuvre("turn"));
+    fn every_kinds_errors_exit_by_what_failed() {
+        let code = |class: fn(Box<dyn std::error::Error + Send + Sync>) -> KindError| {
+            let error = class("why".into());
             exit_code(&anyhow::Error::new(error).context("the scene"))
         };
-        assert_eq!(code(run), 5);
-        let invalid = VehicleError::Invalid {
-            key: "propeller.thrust".into(),
-            reason: "astern".into(),
-        };
-        assert_eq!(code(invalid), 3);
-        assert_eq!(code(VehicleError::Stopped { time: 2.0 }), 130);
+        assert_eq!(code(KindError::Scene), 3);
+        assert_eq!(code(KindError::Output), 4);
+        assert_eq!(code(KindError::Run), 5);
+        assert_eq!(code(KindError::Stopped), 130);
+        assert_eq!(code(KindError::Internal), 1);
     }
 }

@@ -122,3 +122,30 @@ impl kinds::Finished for VehicleFinished<'_> {
         self.finished.outcomes.len()
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A vehicle's run that cannot go on is a run's error, whichever manoeuvre it is said of;
+    /// a value it refuses, the scene's; one stopped by its recorder, a stop; and the message
+    /// is the vehicle's own.
+    #[test]
+    fn a_vehicles_errors_are_classed_by_what_failed() {
+        let run = VehicleError::Run {
+            time: 1.0,
+            reason: "the state component u is not finite".into(),
+        };
+        let error = KindError::from(run.in_manoeuvre("turn"));
+        assert!(matches!(error, KindError::Run(_)), "{error:?}");
+        assert_eq!(error.to_string(), "manoeuvre turn");
+        let invalid = VehicleError::Invalid {
+            key: "propeller.thrust".into(),
+            reason: "astern".into(),
+        };
+        let error = KindError::from(invalid.in_manoeuvre("turn"));
+        assert!(matches!(error, KindError::Scene(_)), "{error:?}");
+        let stopped = VehicleError::Stopped { time: 2.0 }.in_manoeuvre("turn");
+        assert!(matches!(KindError::from(stopped), KindError::Stopped(_)));
+    }
+}

@@ -58,7 +58,7 @@ impl LinearPlant for VehiclePlant {
     }
 
     fn naming(&self) -> Naming {
-        Naming::Vehicle
+        Naming::Planes
     }
 
     fn state_names(&self) -> Vec<&'static str> {
