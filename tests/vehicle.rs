@@ -478,7 +478,7 @@ fn the_tensor_about_o_is_the_tensor_about_g_carried_by_steiner() {
 fn the_template_s_remus_reads_its_moments_about_o_as_the_scene_does() {
     use eom::scene::reference::{SceneFamily, template};
     let scene = remus();
-    let text = template(SceneFamily::Vehicle);
+    let text = template(SceneFamily::Kind("vehicle"));
     let written = parse(&text).unwrap();
     assert_eq!(written.table.inertia, scene.table.inertia);
     assert_eq!(written.table.inertia_about, scene.table.inertia_about);

@@ -69,6 +69,7 @@ pub mod vehicle;
 use crate::linear::Linearisation;
 use crate::run::record::Recorder;
 use crate::scene::SceneError;
+use crate::scene::reference::Key;
 use crate::scene::sweep::TableCase;
 use std::any::Any;
 use std::path::Path;
@@ -197,11 +198,29 @@ impl Source<'_> {
 /// folder a file it names is found in.
 pub type Reader = fn(Source, &str, &Path) -> Result<Box<dyn Kind>, SceneError>;
 
-/// A kind of scene as the registry lists it: its name, how its tables are recognised, and
-/// how they are read and checked.
+/// What the scene reference (docs/scenes.md, `eom new`) says of a kind.
+pub struct Reference {
+    /// What a scene of it is, in one line (`eom new`'s help, the template's first lines).
+    pub doc: &'static str,
+    /// Its section's first paragraph in docs/scenes.md.
+    pub intro: &'static str,
+    /// Every key it reads, in the order a template writes them.
+    pub keys: &'static [Key],
+    /// What its section says after the keys (its table's conventions); empty for nothing.
+    pub notes: &'static str,
+    /// What its trajectory.csv is, the sentence its columns end (`A ship writes one …`).
+    pub columns_said: &'static str,
+    /// Its trajectory.csv's columns.
+    pub columns: fn() -> Vec<String>,
+}
+
+/// A kind of scene as the registry lists it: its name, how its tables are recognised, how
+/// they are read and checked, and what the reference says of it.
 pub struct Registered {
     /// The kind's name (`ship`).
     pub name: &'static str,
+    /// What the scene reference says of it.
+    pub reference: Reference,
     /// Whether a scene's tables are this kind's.
     pub recognises: fn(&toml::Table) -> bool,
     /// Reads and checks the scene (`name` is how errors name the file, `base` where a file
@@ -220,6 +239,11 @@ pub const REGISTRY: &[Registered] = &[
 /// The registered kind whose tables `table` are, if one is.
 pub fn recognise(table: &toml::Table) -> Option<&'static Registered> {
     REGISTRY.iter().find(|kind| (kind.recognises)(table))
+}
+
+/// The registered kind of this name.
+pub fn named(name: &str) -> Option<&'static Registered> {
+    REGISTRY.iter().find(|kind| kind.name == name)
 }
 
 /// The family a scene's `[model]` names, if it names one.
@@ -287,6 +311,52 @@ mod tidy {
         assert!(
             found.is_empty(),
             "a kind names another; move what they share into a shared layer:\n{}",
+            found.join("\n")
+        );
+    }
+
+    /// The names by which a file names a kind of the registry: its module path, and its own
+    /// types (`ShipScene`, `VehicleError`).
+    fn names_of(kind: &str) -> Vec<String> {
+        let title: String = (kind.chars().next().into_iter())
+            .flat_map(char::to_uppercase)
+            .chain(kind.chars().skip(1))
+            .collect();
+        vec![format!("kinds::{kind}"), format!("{title}Scene"), format!("{title}Error")]
+    }
+
+    /// Where each line of the `.rs` files under `dirs` names one of `kinds`.
+    fn naming(root: &Path, dirs: &[&str], kinds: &[String]) -> Vec<String> {
+        let mut found = Vec::new();
+        for dir in dirs {
+            for file in sources(&root.join(dir)) {
+                let text = std::fs::read_to_string(&file).unwrap_or_default();
+                for (number, line) in text.lines().enumerate() {
+                    let names = kinds.iter().flat_map(|kind| names_of(kind));
+                    if names.into_iter().any(|name| line.contains(&name)) {
+                        found.push(format!("{}:{}: {line}", file.display(), number + 1));
+                    }
+                }
+            }
+        }
+        found
+    }
+
+    #[test]
+    fn the_shared_layers_and_the_application_name_no_kind() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+        let kinds = kinds(&root.join("src/kinds"));
+        let shared = ["src/scene", "src/run", "src/output", "src/linear", "src/models"];
+        let found = naming(root, &shared, &kinds);
+        assert!(
+            found.is_empty(),
+            "a shared layer names a kind; let the kind say it through the registry:\n{}",
+            found.join("\n")
+        );
+        let found = naming(root, &["app/src"], &kinds);
+        assert!(
+            found.is_empty(),
+            "the application names a kind; let the kind say it through `Kind`:\n{}",
             found.join("\n")
         );
     }

@@ -113,14 +113,6 @@ mod tests {
         }
     }
 
-    #[cfg(feature = "ship")]
-    #[test]
-    fn every_ship_state_entry_has_a_unit() {
-        for name in crate::kinds::ship::model::STATE {
-            assert!(state_unit(name).is_some(), "{name}");
-        }
-    }
-
     #[test]
     fn every_catalog_input_has_a_unit() {
         for info in CATALOG {

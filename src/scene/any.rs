@@ -76,7 +76,7 @@ impl AnyScene {
         }
     }
 
-    /// The scene as `T`, a kind's own scene (`VehicleScene`), if it is one.
+    /// The scene as `T`, a kind's own scene type, if it is one.
     pub fn downcast<T: Kind + 'static>(self) -> Option<Box<T>> {
         match self {
             AnyScene::Kind(scene) => scene.into_any().downcast::<T>().ok(),

@@ -22,7 +22,9 @@ pub struct Args {
 
 /// A parser for a family's name, each with its one-line doc as help.
 fn family() -> impl TypedValueParser<Value = SceneFamily> {
-    let values = SceneFamily::ALL.map(|f| PossibleValue::new(f.name()).help(f.doc()));
+    let values = SceneFamily::all()
+        .into_iter()
+        .map(|f| PossibleValue::new(f.name()).help(f.doc()));
     PossibleValuesParser::new(values)
         .map(|name| SceneFamily::from_name(&name).expect("clap accepts only the families' names"))
 }
@@ -34,7 +36,7 @@ pub fn run(args: Args) -> Result<()> {
         (Some(family), _) => template(family),
         (None, true) => markdown(),
         (None, false) => {
-            let families: Vec<String> = (SceneFamily::ALL.iter())
+            let families: Vec<String> = (SceneFamily::all().iter())
                 .map(|f| format!("  {:<16} {}", f.name(), f.doc()))
                 .collect();
             let message = format!(

@@ -2,12 +2,14 @@
 //! vehicle's), run through [`super::run`], linearised about its straight course with Nomoto's
 //! models beside.
 
+use super::keys;
 use super::linear::{LinearModel, linearise_ship, nomoto_report};
 use super::manoeuvre::ROW;
+use super::manoeuvre::trajectory_columns;
 use super::run::{Finished, run_scene};
 use super::summary::LinearSummary;
 use super::{ShipError, ShipModel, ShipScene};
-use crate::kinds::{self, KindError, Linearised, Registered, Source};
+use crate::kinds::{self, KindError, Linearised, Reference, Registered, Source};
 use crate::run::record::Recorder;
 use crate::scene::SceneError;
 use crate::scene::sweep::TableCase;
@@ -17,6 +19,19 @@ use std::path::Path;
 /// The registry's entry.
 pub const KIND: Registered = Registered {
     name: "ship",
+    reference: Reference {
+        doc: "A ship on its hydrodynamic table: planar-midship (4.46) with [hydrodynamics], \
+              a rudder and the standard manoeuvres.",
+        intro: "A scene with a `[hydrodynamics]` table is a ship scene: 4.46 at midship with \
+                exactly the terms the table lists, derived and proved when the scene is read, \
+                run through each `[[manoeuvre]]` from the same straight approach at U₀ \
+                (`scenes/mariner.toml`, `scenes/esso_osaka.toml`; `eom new ship`).",
+        keys: keys::KEYS,
+        notes: keys::NOTES,
+        columns_said: "A ship writes one `trajectory.csv` per manoeuvre, with the rudder command \
+                      after saturation and the distance run by midship",
+        columns: trajectory_columns,
+    },
     recognises,
     read,
 };

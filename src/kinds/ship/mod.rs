@@ -31,6 +31,7 @@
 //! `emit::system_source` (crate `eom-codegen`) from a `build.rs`.
 
 pub mod imo;
+pub mod keys;
 pub mod kind;
 pub mod linear;
 pub mod manoeuvre;

@@ -413,3 +413,16 @@ impl<T: SimdRealField + Copy> Model<T, 7, 2> for ShipModel {
         self.jacobians(state, input).1
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::STATE;
+    use crate::models::state_unit;
+
+    #[test]
+    fn every_ship_state_entry_has_a_unit() {
+        for name in STATE {
+            assert!(state_unit(name).is_some(), "{name}");
+        }
+    }
+}

@@ -2,11 +2,13 @@
 //! `family = "vehicle"`, run through [`super::run`], linearised at its cruise through the
 //! table's Euler-angle twin.
 
+use super::keys;
 use super::linear::linearise_vehicle;
 use super::manoeuvre::ROW;
+use super::manoeuvre::trajectory_columns;
 use super::run::{Finished, run_scene};
 use super::{VehicleError, VehicleScene};
-use crate::kinds::{self, KindError, Linearised, Registered, Source};
+use crate::kinds::{self, KindError, Linearised, Reference, Registered, Source};
 use crate::run::record::Recorder;
 use crate::scene::SceneError;
 use crate::scene::sweep::TableCase;
@@ -16,6 +18,21 @@ use std::path::Path;
 /// The registry's entry.
 pub const KIND: Registered = Registered {
     name: "vehicle",
+    reference: Reference {
+        doc: "An underwater vehicle on its hydrodynamic table: six degrees of freedom about \
+              the table's origin with [hydrodynamics], a propeller, fins and their steps.",
+        intro: "A scene with `[model] family = \"vehicle\"` and a `[hydrodynamics]` table is a \
+                vehicle scene: the six equations about the table's origin O with G at r_G, the \
+                added mass, Kirchhoff's terms folded or derived, exactly the terms the table \
+                lists, the propeller and the hydrostatics, derived and proved when the scene is \
+                read, run through each `[[manoeuvre]]` from the cruise \
+                (`scenes/remus100.toml`; `eom new vehicle`; docs/vehicles.md).",
+        keys: keys::KEYS,
+        notes: "",
+        columns_said: "A vehicle writes one per manoeuvre, with the fins' commands after saturation and \
+                      the Euler angles of its quaternion",
+        columns: trajectory_columns,
+    },
     recognises,
     read,
 };

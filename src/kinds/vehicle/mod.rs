@@ -25,6 +25,7 @@
 pub mod autopilot;
 pub mod cross_flow;
 pub mod fins;
+pub mod keys;
 pub mod kind;
 pub mod linear;
 pub mod manoeuvre;

@@ -3,6 +3,7 @@
 //! a test compares the committed page with it.
 
 use super::{Key, SceneFamily, keys_of};
+use crate::kinds::{REGISTRY, Registered};
 use crate::models::{ENERGY_UNIT, Family, ModelInfo, TIME_UNIT, state_with_unit, with_unit};
 
 /// The command that writes the page.
@@ -16,11 +17,11 @@ pub fn markdown() -> String {
         families(),
         catalog_keys(),
         RUNNING.to_owned(),
-        ship_keys(),
-        SHIP_TABLE.to_owned(),
-        vehicle_keys(),
-        trajectory_columns(),
     ]
+    .into_iter()
+    .chain(REGISTRY.iter().flat_map(kind_sections))
+    .chain([trajectory_columns()])
+    .collect::<Vec<String>>()
     .join("\n")
 }
 
@@ -63,7 +64,7 @@ parts, `kinetic_energy[J]` (see [trajectory.csv](#trajectorycsv)).\n";
 
 fn families() -> String {
     let mut out = String::from("## Families\n\n| family | what | template |\n|---|---|---|\n");
-    for family in SceneFamily::ALL {
+    for family in SceneFamily::all() {
         out.push_str(&format!(
             "| `{name}` | {doc} | `eom new {name}` |\n",
             name = family.name(),
@@ -172,58 +173,38 @@ at once. A run that stops early keeps what it ran: every row, a summary with `\"
 true` or the `\"error\"`, and the plots. Gimbal lock and a fixed step too long for the rate of \
 turn stop a run as `model.kinematics` and `integrator.step` say.\n";
 
-fn ship_keys() -> String {
-    let mut out = String::from(
-        "## Ship scenes\n\n\
-         A scene with a `[hydrodynamics]` table is a ship scene: 4.46 at midship with exactly \
-         the terms the table lists, derived and proved when the scene is read, run through \
-         each `[[manoeuvre]]` from the same straight approach at U₀ (`scenes/mariner.toml`, \
-         `scenes/esso_osaka.toml`; `eom new ship`).\n\n",
+/// A registered kind's section: what its scenes are, its keys, and what its table's
+/// conventions are.
+fn kind_keys(kind: &Registered) -> String {
+    let reference = &kind.reference;
+    let mut out = format!(
+        "## {} scenes\n\n{}\n\n",
+        capitalised(kind.name),
+        reference.intro
     );
     out.push_str(&table_header(false));
-    for key in keys_of(SceneFamily::Ship) {
+    for key in keys_of(SceneFamily::Kind(kind.name)) {
         out.push_str(&row(key, false));
     }
     out
 }
 
-fn vehicle_keys() -> String {
-    let mut out = String::from(
-        "## Vehicle scenes\n\n\
-         A scene with `[model] family = \"vehicle\"` and a `[hydrodynamics]` table is a \
-         vehicle scene: the six equations about the table's origin O with G at r_G, the added \
-         mass, Kirchhoff's terms folded or derived, exactly the terms the table lists, the \
-         propeller and the hydrostatics, derived and proved when the scene is read, run \
-         through each `[[manoeuvre]]` from the cruise (`scenes/remus100.toml`; `eom new \
-         vehicle`; docs/vehicles.md).\n\n",
-    );
-    out.push_str(&table_header(false));
-    for key in keys_of(SceneFamily::Vehicle) {
-        out.push_str(&row(key, false));
-    }
-    out
+/// A registered kind's sections: its keys, then its table's conventions where it says any.
+fn kind_sections(kind: &Registered) -> Vec<String> {
+    let notes = Some(kind.reference.notes).filter(|notes| !notes.is_empty());
+    [kind_keys(kind)]
+        .into_iter()
+        .chain(notes.map(str::to_owned))
+        .collect()
 }
 
-const SHIP_TABLE: &str = "### The hydrodynamic table\n\n\
-- **Term names.** A coefficient's name is its load, X, Y or N, then one letter per power of u, \
-v, r and δ (`d`), in any order: `Yvvr` is the coefficient of v²r in Y, `Xrv` and `Xvr` name one \
-term, `Nuud` multiplies u²δ in N. `0` marks a bias (`Y0`, `N0`; `Y0u` is the same term as \
-`Yu`), and an underscore may follow the load (`Y_vvr`). The added mass is `Xudot`, `Yvdot`, \
-`Yrdot`, `Nvdot`, `Nrdot`, on the left of 4.46. Only the terms listed are modelled: a table of \
-eight terms emits eight products. With `[propulsion]`, `e` is a letter too, the effective rudder \
-angle (`Xee`, `Yeee`), the terms in δ or e alone are on the rudder's inflow speed c, and a bias \
-is the propeller's, on its induced velocity (docs/ships.md, The Esso Osaka as published).\n\
-- **Prime system or SI.** `units = \"prime\"` reads every number in the prime system (forces \
-over ½ρU²L², moments over ½ρU²L³, mass over ½ρL³, I_zz over ½ρL⁵, lengths over L, u and v \
-over U, r over U/L, the surge variable (u − U₀)/U) and needs `density`; the body's keys end \
-in `_prime` (`mass_prime`, `x_g_prime`). `units = \"dimensional\"` reads SI and refuses \
-`density`; the body's keys are `mass`, `x_g`. `length` is in metres either way.\n\
-- **Yaw inertia.** Give exactly one of four: about G (`izz`, `izz_prime`), as 4.46 writes it, \
-or about midship (`izz_midship`, `izz_midship_prime`), as many tables' mass matrices hold it, \
-taken to G by I_zz = I_O − M x_G² (4.45). Each is read as written.\n\
-- **Folded tables.** `rigid_body_terms = \"folded\"` for a table that holds 4.46's \
-rigid-body terms in its coefficients; `eom` takes them out and lists each conversion in \
-`summary.json`.\n";
+/// A kind's name as a title says it, its first letter capital.
+fn capitalised(name: &str) -> String {
+    let mut chars = name.chars();
+    chars.next().map_or_else(String::new, |first| {
+        first.to_uppercase().chain(chars).collect()
+    })
+}
 
 fn trajectory_columns() -> String {
     let mut out = format!(
@@ -257,32 +238,22 @@ fn trajectory_columns() -> String {
             ));
         }
     }
-    out.push_str(&ship_columns());
+    out.push_str(&kinds_columns());
     out
 }
 
-/// The ship's columns, from the manoeuvre's own list.
-#[cfg(feature = "ship")]
-fn ship_columns() -> String {
-    let columns: Vec<String> = crate::kinds::ship::manoeuvre::trajectory_columns()
-        .iter()
-        .map(|c| format!("`{c}`"))
-        .collect();
-    let vehicle: Vec<String> = crate::kinds::vehicle::manoeuvre::trajectory_columns()
-        .iter()
-        .map(|c| format!("`{c}`"))
-        .collect();
-    format!(
-        "\nA ship writes one `trajectory.csv` per manoeuvre, with the rudder command after \
-         saturation and the distance run by midship: {}.\n\n\
-         A vehicle writes one per manoeuvre, with the fins' commands after saturation and the \
-         Euler angles of its quaternion: {}.\n",
-        columns.join(", "),
-        vehicle.join(", ")
-    )
-}
-
-#[cfg(not(feature = "ship"))]
-fn ship_columns() -> String {
-    String::new()
+/// What each registered kind's trajectory.csv holds, from its own list of columns.
+fn kinds_columns() -> String {
+    let mut out = String::new();
+    for kind in REGISTRY {
+        let columns: Vec<String> = ((kind.reference.columns)().iter())
+            .map(|c| format!("`{c}`"))
+            .collect();
+        out.push_str(&format!(
+            "\n{}: {}.\n",
+            kind.reference.columns_said,
+            columns.join(", ")
+        ));
+    }
+    out
 }

@@ -1,8 +1,8 @@
 //! The scene reference: every key a scene file takes, defined once.
 //!
 //! A key's path, the families that read it, its type, unit, axes, default, whether it is
-//! required and what it means stand in one static table (the `KEYS` of `catalog`, `ship` and
-//! `vehicle`, chained). Three things are made from it, so that they cannot disagree: the
+//! required and what it means stand in one static table (the `KEYS` of `catalog` and of each
+//! kind of the registry, in its folder, chained). Three things are made from it, so that they cannot disagree: the
 //! family check of a scene file (a key another family reads is refused, [`table_keys`]), the
 //! commented TOML template `eom new FAMILY` prints ([`template`]), and the reference page
 //! `docs/scenes.md` ([`markdown`], printed by `eom new --reference`). The tests keep the
@@ -11,9 +11,7 @@
 
 mod catalog;
 mod markdown;
-mod ship;
 mod template;
-mod vehicle;
 
 pub use markdown::{REGENERATE, markdown};
 pub use template::template;
@@ -21,57 +19,47 @@ pub use template::template;
 use crate::models::{Family, Kinematics, Symmetry};
 use crate::scene::Method;
 
-/// What `eom new` makes a template of: a catalog family, or a ship on its hydrodynamic table.
+/// What `eom new` makes a template of: a catalog family, or a kind of the registry
+/// ([`crate::kinds::REGISTRY`]), whose own table defines its model.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum SceneFamily {
     /// A scene of one of the catalog's families (`model.family`).
     Catalog(Family),
-    /// A ship scene: `planar-midship` with a `[hydrodynamics]` table and its manoeuvres.
-    Ship,
-    /// A vehicle scene: `vehicle` with a `[hydrodynamics]` table, fins and manoeuvres.
-    Vehicle,
+    /// A scene of the registered kind of this name (`ship`).
+    Kind(&'static str),
 }
 
 impl SceneFamily {
-    /// Every family, the catalog's in its order, then the ship and the vehicle.
-    pub const ALL: [SceneFamily; 8] = [
-        SceneFamily::Catalog(Family::ALL[0]),
-        SceneFamily::Catalog(Family::ALL[1]),
-        SceneFamily::Catalog(Family::ALL[2]),
-        SceneFamily::Catalog(Family::ALL[3]),
-        SceneFamily::Catalog(Family::ALL[4]),
-        SceneFamily::Catalog(Family::ALL[5]),
-        SceneFamily::Ship,
-        SceneFamily::Vehicle,
-    ];
+    /// Every family, the catalog's in its order, then the registry's kinds in its.
+    pub fn all() -> Vec<SceneFamily> {
+        let catalog = Family::ALL.into_iter().map(SceneFamily::Catalog);
+        let kinds = crate::kinds::REGISTRY
+            .iter()
+            .map(|kind| SceneFamily::Kind(kind.name));
+        catalog.chain(kinds).collect()
+    }
 
-    /// Its name on the command line: the catalog family's own, or `ship`.
+    /// Its name on the command line: the catalog family's own, or the kind's (`ship`).
     pub const fn name(self) -> &'static str {
         match self {
             SceneFamily::Catalog(family) => family.name(),
-            SceneFamily::Ship => "ship",
-            SceneFamily::Vehicle => "vehicle",
+            SceneFamily::Kind(name) => name,
         }
     }
 
     /// What it is, in one line.
-    pub const fn doc(self) -> &'static str {
+    pub fn doc(self) -> &'static str {
         match self {
             SceneFamily::Catalog(family) => family.doc(),
-            SceneFamily::Ship => {
-                "A ship on its hydrodynamic table: planar-midship (4.46) with [hydrodynamics], \
-                 a rudder and the standard manoeuvres."
-            }
-            SceneFamily::Vehicle => {
-                "An underwater vehicle on its hydrodynamic table: six degrees of freedom about \
-                 the table's origin with [hydrodynamics], a propeller, fins and their steps."
+            SceneFamily::Kind(name) => {
+                crate::kinds::named(name).map_or("", |kind| kind.reference.doc)
             }
         }
     }
 
     /// The family of this name, if there is one.
     pub fn from_name(name: &str) -> Option<Self> {
-        Self::ALL.into_iter().find(|f| f.name() == name)
+        Self::all().into_iter().find(|f| f.name() == name)
     }
 }
 
@@ -107,7 +95,7 @@ pub struct Key {
 
 impl Key {
     /// What every field is unless an entry says otherwise.
-    const BLANK: Key = Key {
+    pub const BLANK: Key = Key {
         path: "",
         families: &[],
         kind: Kind::Number,
@@ -275,7 +263,10 @@ pub enum Shown {
 /// Every key of every scene file, the catalog's, the ship's and the vehicle's, in the order a
 /// template writes them.
 pub fn keys() -> impl Iterator<Item = &'static Key> {
-    catalog::KEYS.iter().chain(ship::KEYS).chain(vehicle::KEYS)
+    let kinds = crate::kinds::REGISTRY
+        .iter()
+        .flat_map(|kind| kind.reference.keys);
+    catalog::KEYS.iter().chain(kinds)
 }
 
 /// The keys `family` reads, in template order.
@@ -305,7 +296,7 @@ mod tests {
 
     #[test]
     fn no_family_reads_a_path_twice() {
-        for family in SceneFamily::ALL {
+        for family in SceneFamily::all() {
             let mut paths: Vec<&str> = keys_of(family).map(|k| k.path).collect();
             let all = paths.len();
             paths.sort_unstable();
@@ -333,7 +324,7 @@ mod tests {
 
     #[test]
     fn every_family_is_named_and_found_by_its_name() {
-        for family in SceneFamily::ALL {
+        for family in SceneFamily::all() {
             assert_eq!(SceneFamily::from_name(family.name()), Some(family));
             assert!(keys_of(family).any(|k| k.path == "title"));
         }

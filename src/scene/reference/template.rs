@@ -140,7 +140,7 @@ mod tests {
 
     #[test]
     fn every_template_names_every_key_of_its_family() {
-        for family in SceneFamily::ALL {
+        for family in SceneFamily::all() {
             let text = template(family);
             for key in keys_of(family) {
                 assert!(
@@ -156,7 +156,7 @@ mod tests {
 
     #[test]
     fn a_table_of_only_commented_keys_has_a_commented_header() {
-        let text = template(SceneFamily::ALL[0]);
+        let text = template(SceneFamily::all()[0]);
         assert!(text.contains("\n# [sweep]\n"), "{text}");
         assert!(text.contains("\n[body]\n"));
     }

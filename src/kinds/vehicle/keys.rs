@@ -3,9 +3,9 @@
 //! `scenes/remus100.toml` (its sources and the readings that differ are said there), with a
 //! short turn so that the template runs in a moment.
 
-use super::{Choices, Key, Kind, Required, SceneFamily, Shown};
+use crate::scene::reference::{Choices, Key, Kind, Required, SceneFamily, Shown};
 
-const VEHICLE: &[SceneFamily] = &[SceneFamily::Vehicle];
+const VEHICLE: &[SceneFamily] = &[SceneFamily::Kind("vehicle")];
 
 /// A fin's keys, for `[rudder]` and `[stern_planes]`.
 macro_rules! fin_keys {
@@ -63,7 +63,7 @@ const RUDDER: [Key; 3] = fin_keys!("rudder", "rudder");
 const STERN_PLANES: [Key; 3] = fin_keys!("stern_planes", "stern planes");
 
 /// Every key of a vehicle scene.
-pub(super) static KEYS: &[Key] = &[
+pub const KEYS: &[Key] = &[
     Key {
         path: "title",
         families: VEHICLE,
@@ -117,7 +117,7 @@ pub(super) static KEYS: &[Key] = &[
         families: VEHICLE,
         kind: Kind::Numbers("3: x_G, y_G, z_G"),
         unit: "m",
-        frame: super::Frame::Body,
+        frame: crate::scene::reference::Frame::Body,
         required: Required::Yes,
         description: "r_G, from the table's origin O.",
         example: "[0.0, 0.0, 0.0196]",
@@ -128,7 +128,7 @@ pub(super) static KEYS: &[Key] = &[
         families: VEHICLE,
         kind: Kind::Numbers("3: x_B, y_B, z_B"),
         unit: "m",
-        frame: super::Frame::Body,
+        frame: crate::scene::reference::Frame::Body,
         required: Required::Yes,
         description: "r_B, from O.",
         example: "[0.0, 0.0, 0.0]",
@@ -139,7 +139,7 @@ pub(super) static KEYS: &[Key] = &[
         families: VEHICLE,
         kind: Kind::Numbers("3: I_xx, I_yy, I_zz"),
         unit: "kg m²",
-        frame: super::Frame::Body,
+        frame: crate::scene::reference::Frame::Body,
         required: Required::Yes,
         description: "The moments of inertia about the point body.inertia_about names; with \
                       body.products_of_inertia, the tensor [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], \
@@ -153,7 +153,7 @@ pub(super) static KEYS: &[Key] = &[
         families: VEHICLE,
         kind: Kind::Numbers("3: I_xy, I_yz, I_xz"),
         unit: "kg m²",
-        frame: super::Frame::Body,
+        frame: crate::scene::reference::Frame::Body,
         default: "[0, 0, 0]: principal axes along the body axes",
         description: "The products of inertia, the tensor's off-diagonal entries with the \
                       chapter's sign, Ixy = −∫xy dm (4.12–4.14), as a catalog scene writes them \
@@ -370,7 +370,7 @@ pub(super) static KEYS: &[Key] = &[
         path: "propeller.thrust",
         families: VEHICLE,
         unit: "N",
-        frame: super::Frame::Body,
+        frame: crate::scene::reference::Frame::Body,
         required: Required::When("with the constant law (a law refuses it: it gives the thrust)"),
         description: "X_prop, constant at the setting, along body x, positive (ahead: a table \
                       is identified going ahead, and at zero the vehicle lies at rest). Every \
@@ -385,7 +385,7 @@ pub(super) static KEYS: &[Key] = &[
         path: "propeller.torque",
         families: VEHICLE,
         unit: "N m",
-        frame: super::Frame::Body,
+        frame: crate::scene::reference::Frame::Body,
         required: Required::When("with the constant law (0 by default with healey_lienard)"),
         description: "K_prop, the propeller's torque on the hull about body x, constant.",
         example: "-0.543",

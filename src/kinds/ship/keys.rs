@@ -3,9 +3,9 @@
 //! sources and estimates are said there), in the prime system, with the dimensional keys
 //! shown commented out beside their prime counterparts.
 
-use super::{Choices, Frame, Key, Kind, Required, SceneFamily, Shown};
+use crate::scene::reference::{Choices, Frame, Key, Kind, Required, SceneFamily, Shown};
 
-const SHIP: &[SceneFamily] = &[SceneFamily::Ship];
+const SHIP: &[SceneFamily] = &[SceneFamily::Kind("ship")];
 
 /// The yaw inertia: one of four keys, by the table's units and the point it is taken about.
 const ONE_YAW_INERTIA: Required = Required::When(
@@ -13,7 +13,7 @@ const ONE_YAW_INERTIA: Required = Required::When(
 );
 
 /// Every key of a ship scene.
-pub(super) static KEYS: &[Key] = &[
+pub const KEYS: &[Key] = &[
     Key {
         path: "title",
         families: SHIP,
@@ -720,3 +720,25 @@ pub(super) static KEYS: &[Key] = &[
         ..Key::BLANK
     },
 ];
+
+/// What docs/scenes.md says after a ship's keys: the conventions of its table.
+pub const NOTES: &str = "### The hydrodynamic table\n\n\
+- **Term names.** A coefficient's name is its load, X, Y or N, then one letter per power of u, \
+v, r and δ (`d`), in any order: `Yvvr` is the coefficient of v²r in Y, `Xrv` and `Xvr` name one \
+term, `Nuud` multiplies u²δ in N. `0` marks a bias (`Y0`, `N0`; `Y0u` is the same term as \
+`Yu`), and an underscore may follow the load (`Y_vvr`). The added mass is `Xudot`, `Yvdot`, \
+`Yrdot`, `Nvdot`, `Nrdot`, on the left of 4.46. Only the terms listed are modelled: a table of \
+eight terms emits eight products. With `[propulsion]`, `e` is a letter too, the effective rudder \
+angle (`Xee`, `Yeee`), the terms in δ or e alone are on the rudder's inflow speed c, and a bias \
+is the propeller's, on its induced velocity (docs/ships.md, The Esso Osaka as published).\n\
+- **Prime system or SI.** `units = \"prime\"` reads every number in the prime system (forces \
+over ½ρU²L², moments over ½ρU²L³, mass over ½ρL³, I_zz over ½ρL⁵, lengths over L, u and v \
+over U, r over U/L, the surge variable (u − U₀)/U) and needs `density`; the body's keys end \
+in `_prime` (`mass_prime`, `x_g_prime`). `units = \"dimensional\"` reads SI and refuses \
+`density`; the body's keys are `mass`, `x_g`. `length` is in metres either way.\n\
+- **Yaw inertia.** Give exactly one of four: about G (`izz`, `izz_prime`), as 4.46 writes it, \
+or about midship (`izz_midship`, `izz_midship_prime`), as many tables' mass matrices hold it, \
+taken to G by I_zz = I_O − M x_G² (4.45). Each is read as written.\n\
+- **Folded tables.** `rigid_body_terms = \"folded\"` for a table that holds 4.46's \
+rigid-body terms in its coefficients; `eom` takes them out and lists each conversion in \
+`summary.json`.\n";
