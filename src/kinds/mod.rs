@@ -322,7 +322,11 @@ mod tidy {
             .flat_map(char::to_uppercase)
             .chain(kind.chars().skip(1))
             .collect();
-        vec![format!("kinds::{kind}"), format!("{title}Scene"), format!("{title}Error")]
+        vec![
+            format!("kinds::{kind}"),
+            format!("{title}Scene"),
+            format!("{title}Error"),
+        ]
     }
 
     /// Where each line of the `.rs` files under `dirs` names one of `kinds`.
@@ -346,7 +350,13 @@ mod tidy {
     fn the_shared_layers_and_the_application_name_no_kind() {
         let root = Path::new(env!("CARGO_MANIFEST_DIR"));
         let kinds = kinds(&root.join("src/kinds"));
-        let shared = ["src/scene", "src/run", "src/output", "src/linear", "src/models"];
+        let shared = [
+            "src/scene",
+            "src/run",
+            "src/output",
+            "src/linear",
+            "src/models",
+        ];
         let found = naming(root, &shared, &kinds);
         assert!(
             found.is_empty(),
