@@ -18,7 +18,7 @@
 //! ```
 //! use eom::output::drawing::RunDrawings;
 //! use eom::run::Row;
-//! use eom::run::record::{RecordError, Recorder};
+//! use eom::run::record::{RecordError, Recorder, RunStart};
 //! use eom::scene::AnyScene;
 //!
 //! /// How many rows each run gave, by its path (`turning_circle_35/port`).
@@ -26,8 +26,8 @@
 //! struct Counted(Vec<(String, usize)>);
 //!
 //! impl Recorder for Counted {
-//!     fn begin(&mut self, run: &str, _: &[String], _: usize) -> Result<(), RecordError> {
-//!         self.0.push((run.to_owned(), 0));
+//!     fn begin(&mut self, run: RunStart) -> Result<(), RecordError> {
+//!         self.0.push((run.path.to_owned(), 0));
 //!         Ok(())
 //!     }
 //!     fn row(&mut self, _: &Row) -> bool {

@@ -13,17 +13,23 @@ use crate::output::drawing::RunDrawings;
 /// Why a recorder could not keep what it was given: a file not written, a plot not drawn.
 pub type RecordError = Box<dyn std::error::Error + Send + Sync>;
 
+/// A run as it begins: where its rows go, what they hold, and how long it runs.
+#[derive(Debug, Clone, Copy)]
+pub struct RunStart<'a> {
+    /// Its path under the output (`turning_circle_35/port`).
+    pub path: &'a str,
+    /// The state columns of each row, after the time.
+    pub columns: &'a [String],
+    /// About how many rows it gives.
+    pub expected_rows: usize,
+    /// The time it runs to, s (a progress bar's end).
+    pub end_time: f64,
+}
+
 /// What a scene's runs hand their rows to, run after run.
 pub trait Recorder {
-    /// A run begins: its rows go under `path` (its folder under the output:
-    /// `turning_circle_35/port`), each with the time then `columns`; about `expected_rows`
-    /// of them.
-    fn begin(
-        &mut self,
-        path: &str,
-        columns: &[String],
-        expected_rows: usize,
-    ) -> Result<(), RecordError>;
+    /// A run begins: its rows go under its path, each with the time then its columns.
+    fn begin(&mut self, run: RunStart) -> Result<(), RecordError>;
 
     /// Takes one row of the run begun last; `false` ends the run (the recorder keeps its own
     /// reason: a write that failed, a signal).
@@ -47,7 +53,7 @@ pub trait Recorder {
 pub struct Discard;
 
 impl Recorder for Discard {
-    fn begin(&mut self, _: &str, _: &[String], _: usize) -> Result<(), RecordError> {
+    fn begin(&mut self, _: RunStart) -> Result<(), RecordError> {
         Ok(())
     }
 

@@ -4,11 +4,11 @@
 //! says them, are drawn into the same folder (the SVG plots, `view.html`). A signal stops the
 //! run at its next row. The kind names the runs and what they draw; this module names no kind.
 
-use super::run::signal_received;
+use super::run::{progress_bar, signal_received};
 use anyhow::{Context, Result};
 use eom::output::drawing::{Curves, Drawing, Mark, PlaneManoeuvre, RunDrawings, SpaceManoeuvre};
 use eom::output::trajectory::{Columns, TrajectoryWriter};
-use eom::run::record::{RecordError, Recorder};
+use eom::run::record::{RecordError, Recorder, RunStart};
 use eom::run::{Row, Sink};
 use eom_cli::plots;
 use eom_cli::plots::curves::{Curve, write_curves};
@@ -47,16 +47,20 @@ struct Current {
 /// Each run into its folder under `out`.
 pub struct FolderRecorder<'a> {
     out: &'a Path,
+    /// Whether each run shows a progress bar (a scene run alone, not a sweep's case).
+    progress: bool,
     current: Option<Current>,
     /// The rows of each run that ended, until its drawings are drawn.
     kept: BTreeMap<String, Kept>,
 }
 
 impl<'a> FolderRecorder<'a> {
-    /// Runs into folders under `out`, a folder already claimed and found writable.
-    pub fn new(out: &'a Path) -> Self {
+    /// Runs into folders under `out`, a folder already claimed and found writable; with
+    /// `progress`, each run shows a bar over its time (on a terminal, after a second).
+    pub fn new(out: &'a Path, progress: bool) -> Self {
         FolderRecorder {
             out,
+            progress,
             current: None,
             kept: BTreeMap::new(),
         }
@@ -64,22 +68,20 @@ impl<'a> FolderRecorder<'a> {
 }
 
 impl Recorder for FolderRecorder<'_> {
-    fn begin(
-        &mut self,
-        path: &str,
-        columns: &[String],
-        expected_rows: usize,
-    ) -> Result<(), RecordError> {
-        let folder = self.out.join(path);
+    fn begin(&mut self, run: RunStart) -> Result<(), RecordError> {
+        let folder = self.out.join(run.path);
         std::fs::create_dir_all(&folder)
             .with_context(|| format!("creating {}", folder.display()))?;
         let file = folder.join("trajectory.csv");
-        let writer = TrajectoryWriter::create(&file, columns, false, expected_rows)
+        let mut writer = TrajectoryWriter::create(&file, run.columns, false, run.expected_rows)
             .with_context(|| format!("creating {}", file.display()))?;
+        if self.progress {
+            writer.on_row(progress_bar(run.end_time));
+        }
         self.current = Some(Current {
-            path: path.to_owned(),
+            path: run.path.to_owned(),
             file,
-            names: columns.to_vec(),
+            names: run.columns.to_vec(),
             writer,
         });
         Ok(())

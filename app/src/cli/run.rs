@@ -609,7 +609,7 @@ impl Drop for Progress {
 
 /// A bar over the run's simulated time, hidden until the run has taken a second; indicatif
 /// draws nothing when standard error is not a terminal.
-fn progress_bar(end_time: f64) -> impl FnMut(f64) + 'static {
+pub(super) fn progress_bar(end_time: f64) -> impl FnMut(f64) + 'static {
     let bar = ProgressBar::with_draw_target(
         Some((end_time * 1000.0) as u64),
         ProgressDrawTarget::hidden(),

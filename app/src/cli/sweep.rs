@@ -35,7 +35,8 @@ pub fn run_cases(
             if signal_received().is_some() {
                 anyhow::bail!("not run: the sweep was interrupted");
             }
-            let finished = run_into(scene.as_ref(), name, &folder_of(case.index)?)?;
+            let folder = folder_of(case.index)?;
+            let finished = run_into(scene.as_ref(), name, (&folder, false))?;
             Ok(finished.cells(case))
         })
         .collect();
@@ -95,8 +96,12 @@ fn table(cases: &[(TableCase, Box<dyn Kind>)], runs: &[Result<Vec<(String, Strin
 
 /// Runs a scene of a registered kind into `out`, a folder claimed and found writable: each
 /// run's trajectory and drawings through the command's recorder, then `summary.json`.
-pub fn run_into<'a>(scene: &'a dyn Kind, name: &str, out: &Path) -> Result<Box<dyn Finished + 'a>> {
-    let mut recorder = FolderRecorder::new(out);
+pub fn run_into<'a>(
+    scene: &'a dyn Kind,
+    name: &str,
+    (out, progress): (&Path, bool),
+) -> Result<Box<dyn Finished + 'a>> {
+    let mut recorder = FolderRecorder::new(out, progress);
     let finished = scene.run(name, &mut recorder)?;
     let bytes = serde_json::to_vec_pretty(&finished.summary())?;
     let path = out.join("summary.json");
@@ -107,7 +112,7 @@ pub fn run_into<'a>(scene: &'a dyn Kind, name: &str, out: &Path) -> Result<Box<d
 /// Runs a scene of a registered kind alone into `out` and prints its report; a signal that
 /// stopped it says what was kept.
 pub fn execute(scene: &dyn Kind, name: &str, out: &Path) -> Result<()> {
-    let finished = run_into(scene, name, out)?;
+    let finished = run_into(scene, name, (out, true))?;
     print!("{}", finished.report());
     println!("  written to {}", eom_cli::shell_path(out));
     match (finished.stopped(), signal_received()) {

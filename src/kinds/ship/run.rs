@@ -21,7 +21,7 @@ use crate::output::drawing::{Curves, Drawing, Hull, Mark, PlaneManoeuvre, RunDra
 use crate::output::summary::MethodSummary;
 use crate::output::text::printable;
 use crate::run::Row;
-use crate::run::record::Recorder;
+use crate::run::record::{Recorder, RunStart};
 use crate::scene::sweep::{TableCase, manoeuvre_columns};
 use crate::{Model, Short, fixed};
 use std::fmt::Write;
@@ -313,9 +313,13 @@ fn run_manoeuvre(
     };
     let names = ROW.map(str::to_owned);
     let expected_rows = (manoeuvre.duration / scene.every) as usize + 1;
-    recorder
-        .begin(path, &names, expected_rows)
-        .map_err(not_recorded)?;
+    let start = RunStart {
+        path,
+        columns: &names,
+        expected_rows,
+        end_time: manoeuvre.duration,
+    };
+    recorder.begin(start).map_err(not_recorded)?;
     let settings = (&scene.stepper, scene.every);
     let done = run(
         model,

@@ -17,7 +17,7 @@ use crate::output::summary::MethodSummary;
 use crate::output::text::printable;
 use crate::output::trajectory::number_text;
 use crate::run::Row;
-use crate::run::record::{RecordError, Recorder};
+use crate::run::record::{RecordError, Recorder, RunStart};
 use crate::scene::sweep::{TableCase, manoeuvre_columns};
 use crate::{Model, Short, counted, fixed};
 use std::collections::BTreeMap;
@@ -102,7 +102,14 @@ fn run_manoeuvre(
     }
     let names = ROW.map(str::to_owned);
     let expected_rows = (manoeuvre.duration / scene.every) as usize + 1;
-    (recorder.begin(&manoeuvre.name, &names, expected_rows))
+    let start = RunStart {
+        path: &manoeuvre.name,
+        columns: &names,
+        expected_rows,
+        end_time: manoeuvre.duration,
+    };
+    recorder
+        .begin(start)
         .map_err(|e| not_recorded(manoeuvre, e))?;
     let model = &scene.model;
     let done = run(
