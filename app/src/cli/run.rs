@@ -16,10 +16,11 @@
 //! to the file). Exit codes: 5 for a failed run, 128 + the signal (130, 143) for an
 //! interrupted one.
 
+use super::record::FolderRecorder;
 use super::sweep::{SWEEP_PLOT, run_cases, write_sweep_plot};
 use anyhow::{Context, Result, bail};
 use eom::Short;
-use eom::kinds::Kind;
+use eom::kinds::{Finished, Kind};
 use eom::output::folder::{Claim, FolderError, Writer, sweep_identity};
 use eom::output::summary::{Extra, Summary, write_atomically};
 use eom::output::text::printable;
@@ -301,7 +302,7 @@ fn execute_kind(
     let writer = writer_of(name, text, options.shard);
     let _claim = Claim::take(out, options.force, &writer, &planned)?;
     if let Some(scene) = single {
-        return super::sweep::execute(scene.as_ref(), name, out);
+        return execute_alone(scene.as_ref(), name, out);
     }
     let (table, failures) = run_cases(&cases, name, |index| {
         let folder = out.join(case_folder(index));
@@ -313,6 +314,41 @@ fn execute_kind(
         write_sweep_plot(out, &table)?;
     }
     finish_sweep(name, out, options.shard, &table, &failures)
+}
+
+/// Runs a scene of a registered kind into `out`, a folder claimed and found writable: each
+/// run's trajectory and drawings through the command's recorder, then `summary.json`.
+pub(super) fn run_into<'a>(
+    scene: &'a dyn Kind,
+    name: &str,
+    (out, progress): (&Path, bool),
+) -> Result<Box<dyn Finished + 'a>> {
+    let mut recorder = FolderRecorder::new(out, progress);
+    let finished = scene.run(name, &mut recorder)?;
+    let bytes = serde_json::to_vec_pretty(&finished.summary())?;
+    let path = out.join("summary.json");
+    write_atomically(&path, &bytes).with_context(|| format!("writing {}", path.display()))?;
+    Ok(finished)
+}
+
+/// Runs a scene of a registered kind alone into `out` and prints its report; a signal that
+/// stopped it says what was kept.
+fn execute_alone(scene: &dyn Kind, name: &str, out: &Path) -> Result<()> {
+    let finished = run_into(scene, name, (out, true))?;
+    print!("{}", finished.report());
+    println!("  written to {}", eom_cli::shell_path(out));
+    match (finished.stopped(), signal_received()) {
+        (true, Some(signal)) => Err(Interrupted {
+            signal,
+            kept: format!(
+                "the {} finished before it, and summary.json, in {}",
+                eom::counted(finished.runs_kept(), "manoeuvre", "manoeuvres"),
+                out.display()
+            ),
+        }
+        .into()),
+        _ => Ok(()),
+    }
 }
 
 /// Who writes into the folder: the whole run, or one shard of its sweep.

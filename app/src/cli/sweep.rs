@@ -8,11 +8,9 @@
 //! one rudder angle gets its plot beside the table, drawn from the table alone so that a
 //! whole run and the merge of its shards draw the same.
 
-use super::record::FolderRecorder;
-use super::run::{Interrupted, signal_received};
-use anyhow::{Context, Result};
-use eom::kinds::{Finished, Kind};
-use eom::output::summary::write_atomically;
+use super::run::{run_into, signal_received};
+use anyhow::Result;
+use eom::kinds::Kind;
 use eom::scene::reference::keys;
 use eom::scene::sweep::TableCase;
 use eom_cli::plots::curves::{Curve, Curves, write_curves};
@@ -92,41 +90,6 @@ fn table(cases: &[(TableCase, Box<dyn Kind>)], runs: &[Result<Vec<(String, Strin
         let _ = writer.write_record(&row);
     }
     String::from_utf8(writer.into_inner().unwrap_or_default()).unwrap_or_default()
-}
-
-/// Runs a scene of a registered kind into `out`, a folder claimed and found writable: each
-/// run's trajectory and drawings through the command's recorder, then `summary.json`.
-pub fn run_into<'a>(
-    scene: &'a dyn Kind,
-    name: &str,
-    (out, progress): (&Path, bool),
-) -> Result<Box<dyn Finished + 'a>> {
-    let mut recorder = FolderRecorder::new(out, progress);
-    let finished = scene.run(name, &mut recorder)?;
-    let bytes = serde_json::to_vec_pretty(&finished.summary())?;
-    let path = out.join("summary.json");
-    write_atomically(&path, &bytes).with_context(|| format!("writing {}", path.display()))?;
-    Ok(finished)
-}
-
-/// Runs a scene of a registered kind alone into `out` and prints its report; a signal that
-/// stopped it says what was kept.
-pub fn execute(scene: &dyn Kind, name: &str, out: &Path) -> Result<()> {
-    let finished = run_into(scene, name, (out, true))?;
-    print!("{}", finished.report());
-    println!("  written to {}", eom_cli::shell_path(out));
-    match (finished.stopped(), signal_received()) {
-        (true, Some(signal)) => Err(Interrupted {
-            signal,
-            kept: format!(
-                "the {} finished before it, and summary.json, in {}",
-                eom::counted(finished.runs_kept(), "manoeuvre", "manoeuvres"),
-                out.display()
-            ),
-        }
-        .into()),
-        _ => Ok(()),
-    }
 }
 
 /// A ship sweep's plot over a rudder angle, beside its table.
