@@ -83,12 +83,11 @@ impl Finished {
         report(scene, &self.outcomes, &self.judged).unwrap_or_default()
     }
 
-    /// Each column of a ship sweep's table with its value in `run`, in the table's order: each
+    /// Each column of a ship sweep's table with its value in this run, in the table's order: each
     /// manoeuvre's figures (the worse side's, for one run to both), then each side's
     /// (`turn.port.tactical_diameter_m`), then each IMO criterion's value, verdict and sides; a
     /// manoeuvre's columns are named as [`manoeuvre_columns`] says.
     pub fn cells(&self, scene: &ShipScene, case: &TableCase) -> Vec<(String, String)> {
-        let run = self;
         let text = |value: Option<f64>| value.map_or_else(String::new, |v| v.to_string());
         let mut cells = Vec::new();
         let names = manoeuvre_columns(
@@ -96,7 +95,7 @@ impl Finished {
             scene.manoeuvres.iter().map(|m| m.name.as_str()),
             &NAMED_FROM,
         );
-        for ((manoeuvre, runs), name) in scene.manoeuvres.iter().zip(&run.outcomes).zip(&names) {
+        for ((manoeuvre, runs), name) in scene.manoeuvres.iter().zip(&self.outcomes).zip(&names) {
             if let Some(outcome) = shown(manoeuvre, runs) {
                 for (key, value) in &outcome.figures.values {
                     cells.push((format!("{name}.{key}"), text(*value)));
@@ -112,7 +111,7 @@ impl Finished {
         // Every criterion the scene's kinds may give, judged in this case or not, so that the
         // columns do not depend on a swept angle (a turn at 20° is not judged; at 35° it is).
         for (name, sided) in possible(scene) {
-            let criterion = run.judged.iter().find(|c| c.name == name);
+            let criterion = self.judged.iter().find(|c| c.name == name);
             let value = criterion.and_then(|c| c.value);
             let pass = criterion.and_then(Criterion::pass);
             cells.push((format!("imo.{name}"), text(value)));
