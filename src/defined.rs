@@ -268,17 +268,19 @@ impl Interpreter {
         {
             return;
         }
-        self.interpret(plan, variables, outputs);
+        self.interpret(plan, variables.state, variables.computed, outputs);
     }
 
-    /// The outputs of `plan` by the interpreter: each node it needs once, in order.
+    /// The outputs of `plan` by the interpreter: each node it needs once, in order. The
+    /// variables come as slices, in registers, so that a compiled call does not lay them out in
+    /// memory for a call it does not make.
     fn interpret<T: SimdRealField + Copy>(
         &self,
         plan: &Plan,
-        variables: Variables<T>,
+        state: &[T],
+        computed: &[T],
         outputs: &mut [T],
     ) {
-        let Variables { state, computed } = variables;
         let mut values: Vec<T> = vec![T::zero(); self.ops.len()];
         for &index in &plan.needed {
             values[index] = match self.ops[index] {

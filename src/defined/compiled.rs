@@ -544,7 +544,9 @@ fn mul_by(b: &mut FunctionBuilder<'_>, x: Value, c: f64) -> Value {
 fn linear(b: &mut FunctionBuilder<'_>, c0: f64, x: Value, c1: f64) -> Value {
     let product = mul_by(b, x, c1);
     let c0 = b.ins().f64const(c0);
-    b.ins().fadd(c0, product)
+    // The sum's bits do not depend on the order (c0 is never NaN), and with the constant
+    // second it is read from memory by the addition itself, not moved through a register.
+    b.ins().fadd(product, c0)
 }
 
 /// The degree-5 polynomial in z = r² of the sine's and the cosine's kernels, in pairs
