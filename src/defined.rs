@@ -13,8 +13,11 @@
 //! against the system and its exact derivative before it gets here. A call evaluates the nodes
 //! its function needs, once each, in order; the hoisted coefficients are computed once per
 //! table. It is generic over simba's `SimdRealField`, so it runs on f64, on SIMD lanes and on
-//! dual numbers. The program's variables (state, inputs, and whatever the model computes from
-//! the state, like a ship's U) are read from one slice whose order the model chooses.
+//! dual numbers. Each of the program's variables is read where the model says ([`Source`]):
+//! an entry of the state the call is given, its magnitude (a vehicle's |u|), or one of the
+//! values the model sets beside the state (a ship's δ̇ and U, a vehicle's applied loads).
+//! So a call copies nothing of the state: the compiled code reads it where it lies, and writes
+//! the rates where the caller wants them.
 
 use engine::{Expr, Function, Node, Program, System};
 
@@ -34,7 +37,12 @@ mod compiled {
         None
     }
 
-    pub(super) fn run<T>(machine: &Machine, _: &[f64], _: &[T], _: &mut [T]) -> bool {
+    pub(super) fn run<T>(
+        machine: &Machine,
+        _: &[f64],
+        _: super::Variables<T>,
+        _: &mut [T],
+    ) -> bool {
         match *machine {}
     }
 }
@@ -61,10 +69,34 @@ pub(crate) mod engine {
 use simba::simd::SimdRealField;
 use std::collections::BTreeMap;
 
+/// Where the program reads one of its variables, as the model lays out a call.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Source {
+    /// The entry of the state at this position.
+    State(usize),
+    /// The magnitude |x| of the state's entry at this position.
+    Magnitude(usize),
+    /// The value at this position among those the model sets beside the state.
+    Computed(usize),
+}
+
+/// What a call reads its variables from: the state it is given, and what the model set
+/// beside it (see [`Source`]).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Variables<'a, T> {
+    pub(crate) state: &'a [T],
+    pub(crate) computed: &'a [T],
+}
+
 /// One node of the program, with its operands resolved to positions.
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Op {
-    Variable(usize),
+    /// A variable: an entry of the state.
+    State(usize),
+    /// A variable: the magnitude of an entry of the state.
+    Magnitude(usize),
+    /// A variable: a value the model computed.
+    Computed(usize),
     Value(f64),
     Sin(usize),
     Cos(usize),
@@ -173,16 +205,20 @@ impl Plan {
 
 impl Interpreter {
     /// The program's nodes with the hoisted `coefficients` put in and each variable read from
-    /// the position `variable` gives it; a variable without one is returned as the error.
+    /// where `variable` says; a variable it does not place is returned as the error.
     pub(crate) fn new(
         program: &Program,
         coefficients: &[f64],
-        variable: impl Fn(&str) -> Option<usize>,
+        variable: impl Fn(&str) -> Option<Source>,
     ) -> Result<Self, String> {
         let mut ops = Vec::with_capacity(program.nodes.len());
         for node in &program.nodes {
             ops.push(match node {
-                Node::Variable(name) => Op::Variable(variable(name).ok_or_else(|| name.clone())?),
+                Node::Variable(name) => match variable(name).ok_or_else(|| name.clone())? {
+                    Source::State(i) => Op::State(i),
+                    Source::Magnitude(i) => Op::Magnitude(i),
+                    Source::Computed(i) => Op::Computed(i),
+                },
                 Node::Coefficient(i) => Op::Value(coefficients[*i]),
                 Node::Constant(c) => Op::Value(Expr::constant(c.clone()).eval(&|_| f64::NAN)),
                 Node::Sin(a) => Op::Sin(a.index()),
@@ -205,26 +241,26 @@ impl Interpreter {
         })
     }
 
-    /// The outputs of `plan` with the program's variables at `variables`.
+    /// The outputs of `plan` with its `variables`.
     pub(crate) fn evaluate<'a, T: SimdRealField + Copy>(
         &self,
         plan: &'a Plan,
-        variables: &[T],
+        variables: Variables<T>,
     ) -> impl Iterator<Item = T> + use<'a, T> {
         let mut outputs = vec![T::zero(); plan.outputs.len()];
         self.evaluate_into(plan, variables, &mut outputs);
         outputs.into_iter()
     }
 
-    /// The outputs of `plan` with the program's variables at `variables`, into `outputs` (as
-    /// many as the plan has): by the plan's machine code in f64 when it is compiled, else by
-    /// the interpreter. Inlined, so that a compiled call costs its caller a few comparisons
-    /// and the call, not the interpreter's frame.
+    /// The outputs of `plan` with its `variables`, into `outputs` (as many as the plan has): by
+    /// the plan's machine code in f64 when it is compiled, else by the interpreter. Inlined,
+    /// so that a compiled call costs its caller a few comparisons and the call, not the
+    /// interpreter's frame.
     #[inline]
     pub(crate) fn evaluate_into<T: SimdRealField + Copy>(
         &self,
         plan: &Plan,
-        variables: &[T],
+        variables: Variables<T>,
         outputs: &mut [T],
     ) {
         if let Some(machine) = &plan.machine
@@ -232,15 +268,25 @@ impl Interpreter {
         {
             return;
         }
-        self.interpret(plan, variables, outputs);
+        self.interpret(plan, variables.state, variables.computed, outputs);
     }
 
-    /// The outputs of `plan` by the interpreter: each node it needs once, in order.
-    fn interpret<T: SimdRealField + Copy>(&self, plan: &Plan, variables: &[T], outputs: &mut [T]) {
+    /// The outputs of `plan` by the interpreter: each node it needs once, in order. The
+    /// variables come as slices, in registers, so that a compiled call does not lay them out in
+    /// memory for a call it does not make.
+    fn interpret<T: SimdRealField + Copy>(
+        &self,
+        plan: &Plan,
+        state: &[T],
+        computed: &[T],
+        outputs: &mut [T],
+    ) {
         let mut values: Vec<T> = vec![T::zero(); self.ops.len()];
         for &index in &plan.needed {
             values[index] = match self.ops[index] {
-                Op::Variable(i) => variables[i],
+                Op::State(i) => state[i],
+                Op::Magnitude(i) => state[i].simd_abs(),
+                Op::Computed(i) => computed[i],
                 Op::Value(x) => T::from_subset(&x),
                 Op::Sin(a) => eom_kernel::sin_cos([values[a]])[0].0,
                 Op::Cos(a) => eom_kernel::sin_cos([values[a]])[0].1,

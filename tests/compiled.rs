@@ -285,3 +285,106 @@ fn a_model_with_other_values_is_the_model_of_those_values() {
     fewer.terms.remove(&first);
     assert!(base.with_table(&fewer).is_err());
 }
+
+/// Numbers at the edges of f64: both zeros, subnormals, the largest magnitudes, the
+/// infinities, and NaN of either sign.
+const EXTREMES: [f64; 10] = [
+    0.0,
+    -0.0,
+    5e-324,
+    -2.2e-308,
+    1e300,
+    -f64::MAX,
+    f64::INFINITY,
+    f64::NEG_INFINITY,
+    f64::NAN,
+    -f64::NAN,
+];
+
+/// The entries whose bits differ between `model`'s and `reference`'s rates at `state` under
+/// `input`, each named with the state and input.
+fn rates_differing<M: Model<f64, N, I>, const N: usize, const I: usize>(
+    model: &M,
+    reference: &M,
+    state: &[f64; N],
+    input: &[f64; I],
+) -> Vec<String> {
+    let (a, b) = (model.rhs(state, input), reference.rhs(state, input));
+    (0..N)
+        .filter(|&k| a[k].to_bits() != b[k].to_bits())
+        .map(|k| format!("rate {k}: {:e} ≠ {:e} at {state:?}, {input:?}", a[k], b[k]))
+        .collect()
+}
+
+/// `model`'s rates against its interpreter's at `draw`'s states with each entry of the state
+/// and the input set in turn to each of [`EXTREMES`], and at states and inputs whose every
+/// entry is drawn from them or from `draw`: the differing entries.
+fn extremes_differing<M: Model<f64, N, I>, const N: usize, const I: usize>(
+    model: &M,
+    reference: &M,
+    mut draw: impl FnMut() -> ([f64; N], [f64; I]),
+    random: &mut Random,
+) -> Vec<String> {
+    let mut differing = Vec::new();
+    for position in 0..N + I {
+        for extreme in EXTREMES {
+            let (mut state, mut input) = draw();
+            match position.checked_sub(N) {
+                None => state[position] = extreme,
+                Some(k) => input[k] = extreme,
+            }
+            differing.extend(rates_differing(model, reference, &state, &input));
+        }
+    }
+    for _ in 0..2000 {
+        let (mut state, mut input) = draw();
+        for x in state.iter_mut().chain(input.iter_mut()) {
+            if random.unit() < 0.5 {
+                *x = EXTREMES[(random.unit() * EXTREMES.len() as f64) as usize];
+            }
+        }
+        differing.extend(rates_differing(model, reference, &state, &input));
+    }
+    differing
+}
+
+/// The compiled call reads each of the program's variables where the model puts it (an entry
+/// of the state where it lies, the magnitude |x| of one, what the model sets beside the state:
+/// a ship's δ̇, U, n, |n|, u_A and c, a vehicle's propeller ε and cross-flow loads) and writes
+/// the rates in place: at the edges of f64 (signed zeros, subnormals, the largest magnitudes,
+/// the infinities, NaN of either sign) in any entry of the state or the input, its rates are
+/// the interpreter's bit for bit, for ships with and without propulsion and for vehicles with
+/// and without computed inputs.
+#[test]
+fn the_compiled_call_is_the_interpreter_s_at_the_edges_of_f64() {
+    let nps = {
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/nps_auv2.toml");
+        let text = std::fs::read_to_string(path).unwrap();
+        match AnyScene::parse(&text, "nps_auv2.toml", Path::new(".")) {
+            Ok(AnyScene::Vehicle(scene)) => scene.model,
+            _ => panic!("nps_auv2.toml is read as a vehicle"),
+        }
+    };
+    let mut random = Random(0x5EED_0006);
+    let mut differing = Vec::new();
+    for ship in [mariner(), ship("esso_osaka.toml")] {
+        assert_eq!(ship.is_compiled(), ANGLES_COMPILE);
+        let reference = ship.interpreted();
+        let mut draws = Random(0x5EED_0007);
+        let draw = || ship_state(&mut draws);
+        differing.extend(extremes_differing(&ship, &reference, draw, &mut random));
+    }
+    for vehicle in [remus(), nps] {
+        assert!(vehicle.is_compiled());
+        let reference = vehicle.interpreted();
+        let mut draws = Random(0x5EED_0008);
+        let draw = || vehicle_state(&mut draws);
+        differing.extend(extremes_differing(&vehicle, &reference, draw, &mut random));
+    }
+    assert!(
+        differing.is_empty(),
+        "{} differing rates, the first: {:#?}",
+        differing.len(),
+        &differing[..differing.len().min(5)]
+    );
+}

@@ -19,6 +19,12 @@
 //! the kernel changes path. With the feature `platform-trig` (the platform's sine and cosine,
 //! which no written-out kernel reproduces) a program with an angle is not compiled.
 //!
+//! A call is given pointers to the caller's state, to the few values the model sets beside it,
+//! to the interpreter's values and to the caller's outputs: the state is read where it lies
+//! (a vehicle's |u| is taken in the code, as `f64::abs` takes it), nothing is copied into a
+//! buffer of variables first, and the outputs are written in place. What it reads and writes
+//! is checked against the slices at each call, a few comparisons.
+//!
 //! The values of the program's constants and hoisted coefficients are not in the code: the
 //! compiled function reads them from the interpreter's table at each call, so one compiled
 //! program serves every interpreter of the same program (a table re-parameterised, as a Monte
@@ -26,7 +32,7 @@
 //! compiler does not know, a host Cranelift does not support, or a failure of code generation
 //! leaves the plans uncompiled, and the interpreter evaluates them.
 
-use super::{Functions, Interpreter, Op, Plan};
+use super::{Functions, Interpreter, Op, Plan, Variables};
 use cranelift_codegen::ir::condcodes::{FloatCC, IntCC};
 use cranelift_codegen::ir::{AbiParam, Block, BlockArg, InstBuilder, MemFlags, Value, types};
 use cranelift_codegen::isa::OwnedTargetIsa;
@@ -52,16 +58,18 @@ pub(crate) enum CompileError {
     Generation(String),
 }
 
-/// A compiled function: variables, values, outputs, each a pointer to f64s; returns 1 when it
-/// wrote the outputs, 0 when an angle was beyond the kernel's reduction (nothing written).
-type Entry = unsafe extern "C" fn(*const f64, *const f64, *mut f64) -> u8;
+/// A compiled function: the state, the values the model set beside it, the interpreter's
+/// values, the outputs, each a pointer to f64s; returns 1 when it wrote the outputs, 0 when an
+/// angle was beyond the kernel's reduction (nothing written).
+type Entry = unsafe extern "C" fn(*const f64, *const f64, *const f64, *mut f64) -> u8;
 
 /// One plan compiled: its entry point and what it reads and writes.
 #[derive(Clone)]
 pub(crate) struct Machine {
     entry: Entry,
-    /// How many variables it reads (one past the largest position).
-    variables: usize,
+    /// How many entries of the state and of the computed values it reads (one past the
+    /// largest position of each).
+    reads: [usize; 2],
     /// How many of the interpreter's values it reads.
     values: usize,
     /// How many outputs it writes.
@@ -73,7 +81,7 @@ pub(crate) struct Machine {
 impl std::fmt::Debug for Machine {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("Machine")
-            .field("variables", &self.variables)
+            .field("reads", &self.reads)
             .field("values", &self.values)
             .field("outputs", &self.outputs)
             .finish_non_exhaustive()
@@ -84,8 +92,7 @@ impl std::fmt::Debug for Machine {
 impl PartialEq for Machine {
     fn eq(&self, other: &Self) -> bool {
         Arc::ptr_eq(&self.code, &other.code)
-            && (self.variables, self.values, self.outputs)
-                == (other.variables, other.values, other.outputs)
+            && (self.reads, self.values, self.outputs) == (other.reads, other.values, other.outputs)
     }
 }
 
@@ -127,15 +134,18 @@ impl Functions {
             .map(|plan| compiler.define(&interpreter.ops, plan))
             .collect::<Result<Vec<_>, _>>()?;
         let (code, entries) = compiler.finish(&ids)?;
-        let machine = |plan: &Plan, entry: Entry| Plan {
-            machine: Some(Machine {
-                entry,
-                variables: variables_read(&interpreter.ops, plan),
-                values: interpreter.values.len(),
-                outputs: plan.outputs.len(),
-                code: code.clone(),
-            }),
-            ..plan.clone()
+        let machine = |plan: &Plan, entry: Entry| {
+            let reads = variables_read(&interpreter.ops, plan);
+            Plan {
+                machine: Some(Machine {
+                    entry,
+                    reads,
+                    values: interpreter.values.len(),
+                    outputs: plan.outputs.len(),
+                    code: code.clone(),
+                }),
+                ..plan.clone()
+            }
         };
         Ok(Functions {
             rhs: machine(&self.rhs, entries[0]),
@@ -152,15 +162,18 @@ pub(super) fn compile(functions: &Functions, interpreter: &Interpreter) -> Optio
     functions.compiled(interpreter).ok()
 }
 
-/// One past the largest variable position `plan` reads.
-fn variables_read(ops: &[Op], plan: &Plan) -> usize {
-    (plan.needed.iter())
-        .filter_map(|&i| match ops[i] {
-            Op::Variable(position) => Some(position + 1),
-            _ => None,
-        })
-        .max()
-        .unwrap_or(0)
+/// One past the largest position of the state, and of the computed values, that `plan` reads.
+fn variables_read(ops: &[Op], plan: &Plan) -> [usize; 2] {
+    let mut reads = [0; 2];
+    for &i in &plan.needed {
+        let (which, position) = match ops[i] {
+            Op::State(position) | Op::Magnitude(position) => (STATE, position),
+            Op::Computed(position) => (COMPUTED, position),
+            _ => continue,
+        };
+        reads[which] = reads[which].max(position + 1);
+    }
+    reads
 }
 
 /// Runs `machine` when `T` is f64 and the slices have the lengths it was compiled for;
@@ -169,22 +182,27 @@ fn variables_read(ops: &[Op], plan: &Plan) -> usize {
 pub(super) fn run<T: 'static>(
     machine: &Machine,
     values: &[f64],
-    variables: &[T],
+    variables: Variables<T>,
     out: &mut [T],
 ) -> bool {
-    let fits = variables.len() >= machine.variables
+    let Variables { state, computed } = variables;
+    let [state_read, computed_read] = machine.reads;
+    let fits = state.len() >= state_read
+        && computed.len() >= computed_read
         && values.len() >= machine.values
         && out.len() == machine.outputs;
     if TypeId::of::<T>() != TypeId::of::<f64>() || !fits {
         return false;
     }
     // SAFETY: `T` is f64 (same type id), so the slices hold f64s; the compiled function reads
-    // `machine.variables` variables and `machine.values` values and writes `machine.outputs`
-    // outputs, each within the slice just checked; it was compiled with this signature in the
-    // platform's C calling convention, and its code lives as long as `machine.code`.
+    // `machine.reads` entries of the state and the computed values and
+    // `machine.values` values and writes `machine.outputs` outputs, each within the slice just
+    // checked; it was compiled with this signature in the platform's C calling convention, and
+    // its code lives as long as `machine.code`.
     let wrote = unsafe {
         (machine.entry)(
-            variables.as_ptr().cast(),
+            state.as_ptr().cast(),
+            computed.as_ptr().cast(),
             values.as_ptr(),
             out.as_mut_ptr().cast(),
         )
@@ -236,7 +254,7 @@ impl Compiler {
     fn define(&mut self, ops: &[Op], plan: &Plan) -> Result<FuncId, CompileError> {
         let pointer = self.module.target_config().pointer_type();
         let mut signature = self.module.make_signature();
-        signature.params = vec![AbiParam::new(pointer); 3];
+        signature.params = vec![AbiParam::new(pointer); ARGUMENTS];
         signature.returns = vec![AbiParam::new(types::I8)];
         let id = (self.module.declare_anonymous_function(&signature)).map_err(generation)?;
         let mut context = self.module.make_context();
@@ -247,7 +265,7 @@ impl Compiler {
         builder.switch_to_block(block);
         builder.seal_block(block);
         let params = builder.block_params(block).to_vec();
-        let arguments = [params[0], params[1], params[2]];
+        let arguments: [Value; ARGUMENTS] = std::array::from_fn(|i| params[i]);
         Body::new(&mut builder, arguments, ops).emit(plan)?;
         builder.finalize();
         (self.module.define_function(id, &mut context)).map_err(generation)?;
@@ -261,7 +279,7 @@ impl Compiler {
             .iter()
             .map(|&id| {
                 let address = self.module.get_finalized_function(id);
-                // SAFETY: `id` was defined by `define` with three pointer parameters and a
+                // SAFETY: `id` was defined by `define` with four pointer parameters and a
                 // byte returned, in the platform's default (C) calling convention: `Entry`.
                 unsafe { std::mem::transmute::<*const u8, Entry>(address) }
             })
@@ -275,11 +293,18 @@ impl Compiler {
     }
 }
 
+/// The arguments of a compiled function, by position ([`Entry`]).
+const STATE: usize = 0;
+const COMPUTED: usize = 1;
+const VALUES: usize = 2;
+const OUTPUTS: usize = 3;
+const ARGUMENTS: usize = 4;
+
 /// The body of one function being written: the nodes' values so far.
 struct Body<'a, 'b, 'o> {
     builder: &'a mut FunctionBuilder<'b>,
-    /// Variables, values, outputs.
-    arguments: [Value; 3],
+    /// The state, the computed values, the interpreter's values, the outputs.
+    arguments: [Value; ARGUMENTS],
     ops: &'o [Op],
     /// Each `Value` node's position among the interpreter's values.
     slots: Vec<usize>,
@@ -292,7 +317,11 @@ struct Body<'a, 'b, 'o> {
 }
 
 impl<'a, 'b, 'o> Body<'a, 'b, 'o> {
-    fn new(builder: &'a mut FunctionBuilder<'b>, arguments: [Value; 3], ops: &'o [Op]) -> Self {
+    fn new(
+        builder: &'a mut FunctionBuilder<'b>,
+        arguments: [Value; ARGUMENTS],
+        ops: &'o [Op],
+    ) -> Self {
         Body {
             builder,
             arguments,
@@ -317,7 +346,7 @@ impl<'a, 'b, 'o> Body<'a, 'b, 'o> {
                 // Read where they are used, as a memory operand where one fits: read once
                 // into a register at the start, they would be held, or spilled and read
                 // back, across the whole function.
-                Op::Variable(_) | Op::Value(_) => continue,
+                Op::State(_) | Op::Magnitude(_) | Op::Computed(_) | Op::Value(_) => continue,
                 Op::Sin(a) => self.sin_cos(a)?.0,
                 Op::Cos(a) => self.sin_cos(a)?.1,
                 Op::Recip(a) => {
@@ -359,7 +388,7 @@ impl<'a, 'b, 'o> Body<'a, 'b, 'o> {
                 value = self.builder.ins().insertlane(lanes, second, 1);
             }
             let offset = offset(2 * pair)?;
-            (self.builder.ins()).store(MemFlags::trusted(), value, self.arguments[2], offset);
+            (self.builder.ins()).store(MemFlags::trusted(), value, self.arguments[OUTPUTS], offset);
         }
         let wrote = self.builder.ins().iconst(types::I8, 1);
         self.builder.ins().return_(&[wrote]);
@@ -378,13 +407,18 @@ impl<'a, 'b, 'o> Body<'a, 'b, 'o> {
     /// as emitted before (the arena's order).
     fn operand(&mut self, index: usize) -> Result<Value, CompileError> {
         match self.ops.get(index) {
-            Some(&Op::Variable(i)) => self.load(0, i),
-            Some(Op::Value(_)) => self.load(1, self.slots[index]),
+            Some(&Op::State(i)) => self.load(STATE, i),
+            Some(&Op::Magnitude(i)) => {
+                let x = self.load(STATE, i)?;
+                Ok(self.builder.ins().fabs(x))
+            }
+            Some(&Op::Computed(i)) => self.load(COMPUTED, i),
+            Some(Op::Value(_)) => self.load(VALUES, self.slots[index]),
             _ => (self.nodes.get(index).copied().flatten()).ok_or(CompileError::Operation(index)),
         }
     }
 
-    /// Entry `i` of the argument `which` (0: variables, 1: values).
+    /// Entry `i` of the argument `which` ([`STATE`], [`COMPUTED`] or [`VALUES`]).
     fn load(&mut self, which: usize, i: usize) -> Result<Value, CompileError> {
         let offset = offset(i)?;
         let base = self.arguments[which];
@@ -510,7 +544,9 @@ fn mul_by(b: &mut FunctionBuilder<'_>, x: Value, c: f64) -> Value {
 fn linear(b: &mut FunctionBuilder<'_>, c0: f64, x: Value, c1: f64) -> Value {
     let product = mul_by(b, x, c1);
     let c0 = b.ins().f64const(c0);
-    b.ins().fadd(c0, product)
+    // The sum's bits do not depend on the order (c0 is never NaN), and with the constant
+    // second it is read from memory by the addition itself, not moved through a register.
+    b.ins().fadd(product, c0)
 }
 
 /// The degree-5 polynomial in z = r² of the sine's and the cosine's kernels, in pairs
@@ -592,4 +628,100 @@ fn value_slots(ops: &[Op]) -> Vec<usize> {
             slot
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::{Functions, Interpreter, Source, Variables};
+    use eom_codegen::emit::program::{Function, Id, Jacobians, Named, Node, Program};
+
+    /// Numbers at the edges of f64: both zeros, subnormals, the largest magnitudes, the
+    /// infinities, NaN of either sign and with a payload.
+    const EDGES: [f64; 11] = [
+        0.0,
+        -0.0,
+        5e-324,
+        -2.2e-308,
+        1e300,
+        -f64::MAX,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NAN,
+        -f64::NAN,
+        f64::from_bits(0xFFF0_0000_0000_0001),
+    ];
+
+    /// A program of three variables, x, |x| and c, that outputs each of them and three
+    /// operations of them: each source a compiled call reads, seen in its outputs' bits.
+    fn program() -> Program {
+        let node = |i: u32| Id(i);
+        let function = |ids: &[u32]| Function {
+            stages: vec![],
+            outputs: (ids.iter())
+                .map(|&i| Named {
+                    name: format!("out{i}"),
+                    id: node(i),
+                })
+                .collect(),
+        };
+        Program {
+            nodes: vec![
+                Node::Variable("x".into()),
+                Node::Variable("abs_x".into()),
+                Node::Variable("c".into()),
+                Node::Mul(node(0), node(1)),
+                Node::Add(node(1), node(2)),
+                Node::Neg(node(1)),
+            ],
+            coefficients: vec![],
+            rhs: function(&[1, 0, 2, 3, 4, 5]),
+            kinetic_energy: Some(function(&[3])),
+            potential_energy: None,
+            jacobians: Some(Jacobians {
+                state: function(&[1]),
+                input: function(&[2]),
+                state_pattern: vec![(0, 0)],
+                input_pattern: vec![(0, 0)],
+            }),
+        }
+    }
+
+    /// The compiled call reads x from the state where it lies (the second entry: the first
+    /// is not read), takes |x| of it as `f64::abs` does (a cleared sign bit, for −0 and a
+    /// negative NaN too), reads c from what the model sets, and writes its outputs in place:
+    /// at every pair of edges of f64 its outputs are the interpreter's bit for bit, and its
+    /// first output is `x.abs()`.
+    #[test]
+    fn each_variable_is_read_where_it_lies_at_the_edges_of_f64() {
+        let program = program();
+        let source = |name: &str| match name {
+            "x" => Some(Source::State(1)),
+            "abs_x" => Some(Source::Magnitude(1)),
+            "c" => Some(Source::Computed(0)),
+            _ => None,
+        };
+        let interpreter = Interpreter::new(&program, &[], source).unwrap();
+        let functions = Functions::of(&program).unwrap();
+        let compiled = functions.compiled(&interpreter).unwrap();
+        assert!(compiled.is_compiled());
+        let interpreted = functions.interpreted();
+        for x in EDGES {
+            for c in EDGES {
+                let (state, computed) = ([f64::NAN, x], [c]);
+                let variables = Variables {
+                    state: &state,
+                    computed: &computed,
+                };
+                let (mut fast, mut reference) = ([0.0; 6], [0.0; 6]);
+                interpreter.evaluate_into(&compiled.rhs, variables, &mut fast);
+                interpreter.evaluate_into(&interpreted.rhs, variables, &mut reference);
+                assert_eq!(
+                    fast.map(f64::to_bits),
+                    reference.map(f64::to_bits),
+                    "x = {x:e}, c = {c:e}"
+                );
+                assert_eq!(fast[0].to_bits(), x.abs().to_bits(), "|{x:e}|");
+            }
+        }
+    }
 }

@@ -10,7 +10,8 @@
 //! bench stops if one does; with `-C target-cpu=native` rustc's `mul_add`s are fused,
 //! Cranelift's code is not).
 //!
-//! `cargo bench -p eom-example-user-build-rs`
+//! `cargo bench -p eom-example-user-build-rs`, or with the names of the tables to run (`ten`,
+//! `mariner`, `remus`) after `--`: `cargo bench -p eom-example-user-build-rs -- ten remus`.
 
 #[path = "../tests/common/mod.rs"]
 mod common;
@@ -101,7 +102,28 @@ fn print(name: &str, [rustc, jit, interpreted]: [Option<f64>; 3]) {
     );
 }
 
+/// Whether the table `name` is to run: every one, unless the command line names some.
+fn chosen(name: &str) -> bool {
+    let named: Vec<String> = (std::env::args().skip(1))
+        .filter(|a| !a.starts_with('-'))
+        .collect();
+    named.is_empty() || named.iter().any(|n| n == name)
+}
+
 fn main() {
+    if chosen("ten") {
+        ten_terms();
+    }
+    if chosen("mariner") {
+        mariner();
+    }
+    if chosen("remus") {
+        remus();
+    }
+}
+
+/// The ten-term ship of `build.rs`, alone and inside RK4.
+fn ten_terms() {
     let ship_start = [6.0, 0.4, -0.02, 10.0, -5.0, 0.3, 0.1];
     let k = ship::Coefficients::<f64>::new(&example_ship());
     let jit = ShipModel::new(&table()).expect("the table builds");
@@ -135,7 +157,10 @@ fn main() {
         "ship, 10 terms, in RK4",
         [Some(times[0]), Some(times[1]), Some(times[2])],
     );
+}
 
+/// The Mariner's 39 terms, and what building and compiling its model costs.
+fn mariner() {
     let table = mariner_table();
     let m = mariner_coefficients(&table);
     let m_rhs = |s: &[f64; 7], d: f64| mariner_rates(&m, s, d);
@@ -162,7 +187,10 @@ fn main() {
     let build = compile_ms(|| ShipModel::new(&table));
     let compile = compile_ms(|| interpreted.compiled());
     println!("Mariner: built and proved in {build:.1} ms, of which compiled in {compile:.2} ms");
+}
 
+/// REMUS in six degrees of freedom, and what compiling its model costs.
+fn remus() {
     let scene = remus_scene();
     let r = remus_coefficients(&scene);
     let vehicle = &scene.model;

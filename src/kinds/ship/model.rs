@@ -21,7 +21,7 @@ use crate::defined::engine::{
     ADDED_MASS, EmitError, Operations, PRIME_SCALES, PROPULSION, Program, ShipSpec, Units,
     prove_with_jacobians, ship,
 };
-use crate::defined::{CoefficientFormulas, Functions, Interpreter, Plan};
+use crate::defined::{CoefficientFormulas, Functions, Interpreter, Plan, Source, Variables};
 use crate::models::Model;
 use simba::simd::SimdRealField;
 use std::collections::BTreeMap;
@@ -36,23 +36,10 @@ pub const STATE: [&str; 7] = ["u", "v", "r", "X", "Y", "psi", "delta"];
 /// ([`super::propulsion`]; read only by a ship with a propulsion model).
 pub const INPUTS: [&str; 2] = ["delta_rate", "n"];
 
-/// Where the program's variables sit in the slice `evaluate` gives it: the state, δ̇, U, then
-/// what propulsion reads.
-const VARIABLES: [&str; 13] = [
-    "u",
-    "v",
-    "r",
-    "X",
-    "Y",
-    "psi",
-    "delta",
-    "delta_rate",
-    "U",
-    "n",
-    "n_abs",
-    "u_A",
-    "c",
-];
+/// The program's variables this model sets beside the state, in the order of
+/// [`ShipModel::computed`]: δ̇, U, then what propulsion reads. The state's are read where they
+/// lie.
+const COMPUTED: [&str; 6] = ["delta_rate", "U", "n", "n_abs", "u_A", "c"];
 
 /// Where the rates can depend on the state, for any table: u̇, v̇, ṙ on u, v, r and δ (the
 /// terms in U of a prime table are in u and v); Ẋ, Ẏ on u, v, ψ (4.44); ψ̇ on r; δ̇ on none.
@@ -198,24 +185,24 @@ impl ShipModel {
         })
     }
 
-    /// The program's variables at `state` under `input` (δ̇, n), in [`VARIABLES`]' order: the
-    /// state, δ̇, U (zero where the program does not read it: a table in SI), and what a
+    /// The program's variables set beside `state` under `input` (δ̇, n), in [`COMPUTED`]'s
+    /// order: δ̇, U (zero where the program does not read it: a table in SI), and what a
     /// propulsion model computes (zero without one).
-    fn variables<T: SimdRealField + Copy>(&self, state: &[T; 7], input: &[T; 2]) -> [T; 13] {
-        let mut variables = [T::zero(); 13];
-        variables[..7].copy_from_slice(state);
-        variables[7] = input[0];
+    #[inline]
+    fn computed<T: SimdRealField + Copy>(&self, state: &[T; 7], input: &[T; 2]) -> [T; 6] {
+        let mut computed = [T::zero(); 6];
+        computed[0] = input[0];
         if self.reads_speed {
-            variables[8] = (state[0] * state[0] + state[1] * state[1]).simd_sqrt();
+            computed[1] = (state[0] * state[0] + state[1] * state[1]).simd_sqrt();
         }
         if let Some(propulsion) = &self.propulsion {
             let inflow = propulsion.inflow(state[0], input[1]);
-            variables[9] = input[1];
-            variables[10] = input[1].simd_abs();
-            variables[11] = inflow.induced;
-            variables[12] = inflow.speed;
+            computed[2] = input[1];
+            computed[3] = input[1].simd_abs();
+            computed[4] = inflow.induced;
+            computed[5] = inflow.speed;
         }
-        variables
+        computed
     }
 
     /// The outputs of `plan` at `state` under `input` (δ̇, n).
@@ -225,7 +212,12 @@ impl ShipModel {
         state: &[T; 7],
         input: &[T; 2],
     ) -> impl Iterator<Item = T> + use<'a, T> {
-        (self.program).evaluate(plan, &self.variables(state, input))
+        let computed = self.computed(state, input);
+        let variables = Variables {
+            state,
+            computed: &computed,
+        };
+        (self.program).evaluate(plan, variables)
     }
 
     /// ∂f/∂x and ∂f/∂(δ̇, n) of the model, dense: the proved Jacobian programs scattered by
@@ -328,8 +320,11 @@ fn coefficients(proved: &Proved, table: &ShipTable) -> Vec<f64> {
 
 /// The proved program resolved with the `coefficients`' values.
 fn interpreter(proved: &Proved, coefficients: &[f64]) -> Result<Interpreter, ShipError> {
-    // The variables in `evaluate`'s order (VARIABLES).
-    let position = |name: &str| VARIABLES.iter().position(|s| *s == name);
+    // The state's variables where they lie, the others as `ShipModel::computed` lays them out.
+    let position = |name: &str| {
+        let index = |names: &[&str]| names.iter().position(|s| *s == name);
+        (index(&STATE).map(Source::State)).or_else(|| index(&COMPUTED).map(Source::Computed))
+    };
     Interpreter::new(&proved.program, coefficients, position)
         .map_err(|name| ShipError::invalid("hydrodynamics", format!("the program reads `{name}`")))
 }
@@ -387,9 +382,13 @@ impl<T: SimdRealField + Copy> Model<T, 7, 2> for ShipModel {
     /// The rates of the state with the rudder moving at `input[0]` and the propeller turning
     /// at `input[1]`: the proved program.
     fn rhs(&self, state: &[T; 7], input: &[T; 2]) -> [T; 7] {
-        let variables = self.variables(state, input);
+        let computed = self.computed(state, input);
+        let variables = Variables {
+            state,
+            computed: &computed,
+        };
         let mut rates = [T::zero(); 7];
-        (self.program).evaluate_into(&self.functions.rhs, &variables, &mut rates);
+        (self.program).evaluate_into(&self.functions.rhs, variables, &mut rates);
         rates
     }
 

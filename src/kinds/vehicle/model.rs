@@ -24,7 +24,7 @@ use crate::defined::engine::{
     VEHICLE_LOADS as LOADS, VEHICLE_PRIME_SCALES as PRIME_SCALES, VehicleSpec, folded_comparison,
     prove_with_jacobians, vehicle,
 };
-use crate::defined::{Functions, Interpreter, coefficient_values};
+use crate::defined::{Functions, Interpreter, Source, Variables, coefficient_values};
 use crate::models::Model;
 use simba::simd::SimdRealField;
 use std::collections::BTreeMap;
@@ -39,6 +39,10 @@ pub const INPUTS: [&str; 2] = ["dr_rate", "ds_rate"];
 
 /// The number of the generator's state entries (before the fins').
 const BODY: usize = 13;
+
+/// The most program inputs a model computes beside the state: the propeller law's ε and the
+/// six applied loads.
+const COMPUTED: usize = 1 + 6;
 
 /// Where the rates can depend on the state, for any table: ν̇ on ν, the attitude (the
 /// restoring loads) and the fins; the position's rates on ν and the attitude; the attitude's
@@ -99,6 +103,9 @@ pub(crate) struct Proved {
     functions: Functions,
     /// For each program input, what it is.
     inputs: Vec<Variable>,
+    /// The program inputs computed beside the state at each call (ε, the applied loads), in
+    /// the order the program reads them: the others are read from the state where they lie.
+    computed: Vec<Variable>,
     /// The cross-flow drag, whose loads the program reads as its applied loads.
     cross_flow: Option<CrossFlow>,
     /// The number of the generator's state entries (before the fins').
@@ -261,9 +268,30 @@ impl Proved {
         let inputs = (system.inputs.iter())
             .map(|name| input_variable(name, &state, body, law))
             .collect::<Result<Vec<_>, _>>()?;
-        // The variables in `variables`'s order: the generator's state, then its inputs.
-        let position =
-            |name: &str| (system.state.iter().chain(&system.inputs)).position(|s| *s == name);
+        let computed: Vec<Variable> = (inputs.iter().copied())
+            .filter(|input| matches!(input, Variable::Epsilon(_) | Variable::Load(_)))
+            .collect();
+        if computed.len() > COMPUTED {
+            return Err(VehicleError::invalid(
+                "hydrodynamics",
+                format!("the program reads {} computed inputs", computed.len()),
+            ));
+        }
+        // The state's variables where they lie (a fin's angle too, and |x| of an entry), the
+        // computed ones as `Proved::computed_values` lays them out.
+        let position = |name: &str| {
+            if let Some(i) = system.state.iter().position(|s| *s == name) {
+                return Some(Source::State(i));
+            }
+            let input = inputs[system.inputs.iter().position(|s| *s == name)?];
+            Some(match input {
+                Variable::Fin(i) => Source::State(i),
+                Variable::Absolute(i) => Source::Magnitude(i),
+                Variable::Epsilon(_) | Variable::Load(_) => {
+                    Source::Computed(computed.iter().position(|c| *c == input)?)
+                }
+            })
+        };
         let interpreter = Interpreter::new(&program, &coefficients, position).map_err(|name| {
             VehicleError::invalid("hydrodynamics", format!("the program reads `{name}`"))
         })?;
@@ -273,6 +301,7 @@ impl Proved {
         let proved = Proved {
             functions,
             inputs,
+            computed,
             cross_flow: table.cross_flow.clone(),
             body,
             operations: program.operations(&program.rhs),
@@ -297,38 +326,32 @@ impl Proved {
         }
     }
 
-    /// The cross-flow drag's loads at `state` (zero without it).
-    fn applied_loads<T: SimdRealField + Copy>(&self, state: &[T]) -> [T; 6] {
-        match &self.cross_flow {
-            Some(hull) => hull.forces(&state[..6]),
-            None => [T::zero(); 6],
-        }
-    }
-
-    /// The program's variables at `state`: the generator's state, then its inputs.
-    fn variables<T: SimdRealField + Copy>(&self, state: &[T]) -> Vec<T> {
-        let loads = self.applied_loads(state);
-        let mut variables = state[..self.body].to_vec();
-        variables.extend(self.inputs.iter().map(|input| input.value(state, &loads)));
-        variables
-    }
-
-    /// The rates of the generator's state entries into `rates`, the variables on the stack
-    /// when they fit (the generator's state and up to sixteen inputs): a call allocates
-    /// nothing.
-    fn rates_into<T: SimdRealField + Copy>(&self, state: &[T], rates: &mut [T]) {
-        let mut variables = [T::zero(); BODY + 16];
-        let count = self.body + self.inputs.len();
-        if count <= variables.len() {
-            let loads = self.applied_loads(state);
-            variables[..self.body].copy_from_slice(&state[..self.body]);
-            for (variable, input) in variables[self.body..].iter_mut().zip(&self.inputs) {
-                *variable = input.value(state, &loads);
+    /// The program inputs computed beside `state`, in the order of [`Proved::computed`]
+    /// (none for a table without a propeller law or a cross-flow drag).
+    fn computed_values<T: SimdRealField + Copy>(&self, state: &[T]) -> [T; COMPUTED] {
+        let mut values = [T::zero(); COMPUTED];
+        if !self.computed.is_empty() {
+            let loads = match &self.cross_flow {
+                Some(hull) => hull.forces(&state[..6]),
+                None => [T::zero(); 6],
+            };
+            for (value, input) in values.iter_mut().zip(&self.computed) {
+                *value = input.value(state, &loads);
             }
-            (self.program).evaluate_into(&self.functions.rhs, &variables[..count], rates);
+        }
+        values
+    }
+
+    /// The rates of the generator's state entries into `rates`: the program reads `state`
+    /// where it lies and writes `rates` in place, and a call allocates nothing.
+    #[inline]
+    fn rates_into<T: SimdRealField + Copy>(&self, state: &[T], rates: &mut [T]) {
+        let rhs = &self.functions.rhs;
+        if self.computed.is_empty() {
+            (self.program).evaluate_into(rhs, variables(state, &[]), rates);
         } else {
-            let variables = self.variables(state);
-            (self.program).evaluate_into(&self.functions.rhs, &variables, rates);
+            let computed = self.computed_values(state);
+            (self.program).evaluate_into(rhs, variables(state, &computed), rates);
         }
     }
 
@@ -337,16 +360,17 @@ impl Proved {
         &self,
         state: &[T],
     ) -> impl Iterator<Item = T> + use<'_, T> {
-        let variables = self.variables(state);
-        self.program.evaluate(&self.functions.rhs, &variables)
+        let computed = self.computed_values(state);
+        (self.program).evaluate(&self.functions.rhs, variables(state, &computed))
     }
 
     /// The kinetic energy of the body and the fluid.
     fn kinetic_energy<T: SimdRealField + Copy>(&self, state: &[T]) -> T {
-        let variables = self.variables(state);
+        let computed = self.computed_values(state);
+        let plan = &self.functions.kinetic_energy;
         (self
             .program
-            .evaluate(&self.functions.kinetic_energy, &variables)
+            .evaluate(plan, variables(state, &computed))
             .next())
         .unwrap_or_else(T::zero)
     }
@@ -361,16 +385,16 @@ impl Proved {
         mut set: impl FnMut(usize, usize, T),
     ) {
         let applied = self.applied(state);
-        let variables = self.variables(state);
+        let computed = self.computed_values(state);
         let entries = self
             .program
-            .evaluate(&self.functions.state_jacobian, &variables);
+            .evaluate(&self.functions.state_jacobian, variables(state, &computed));
         for (&(row, column), value) in self.functions.state_pattern.iter().zip(entries) {
             set(row, column, value);
         }
         let entries = self
             .program
-            .evaluate(&self.functions.input_jacobian, &variables);
+            .evaluate(&self.functions.input_jacobian, variables(state, &computed));
         for (&(row, column), value) in self.functions.input_pattern.iter().zip(entries) {
             match self.inputs[column] {
                 Variable::Fin(i) => set(row, i, value),
@@ -464,6 +488,11 @@ impl VehicleModel {
         model.proved.functions = (self.proved.functions.clone()).compile(&self.proved.program);
         model
     }
+}
+
+/// What the program reads: `state`, and the inputs `computed` beside it.
+fn variables<'a, T>(state: &'a [T], computed: &'a [T]) -> Variables<'a, T> {
+    Variables { state, computed }
 }
 
 impl Variable {

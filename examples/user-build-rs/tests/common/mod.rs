@@ -13,6 +13,7 @@ use eom_codegen::model::ship::{ADDED_MASS, PRIME_SCALES, ShipSpec};
 use eom_example_user_build_rs::{example_ship, mariner, remus};
 use std::collections::BTreeMap;
 use std::path::Path;
+use std::sync::OnceLock;
 
 /// The same numbers as `example_ship`, as a table `eom` reads.
 pub fn table() -> ShipTable {
@@ -155,18 +156,35 @@ pub fn remus_coefficients(scene: &VehicleScene) -> remus::Coefficients<f64> {
     }))
 }
 
+/// Where the rustc-compiled REMUS reads each of its inputs in `eom`'s fifteen-entry state (the
+/// fins' angles last), as `eom`'s model sets it: the entry, and whether its magnitude |x|.
+/// Found by name once, so that a call costs what the generated code costs.
+fn remus_inputs() -> &'static [(usize, bool); remus::INPUTS.len()] {
+    static INPUTS: OnceLock<[(usize, bool); remus::INPUTS.len()]> = OnceLock::new();
+    INPUTS.get_or_init(|| {
+        remus::INPUTS.map(|name| match name {
+            "dr" => (13, false),
+            "ds" => (14, false),
+            _ => {
+                let of = name.strip_prefix("abs_").expect("an input |x|");
+                let index = (remus::STATE.iter().position(|s| *s == of)).expect("a state");
+                (index, true)
+            }
+        })
+    })
+}
+
 /// The rustc-compiled REMUS's rates of its thirteen states at `eom`'s fifteen-entry state (the
 /// fins' angles last), each input set as `eom`'s model sets it: a fin's angle, or |x|.
 pub fn remus_rates(k: &remus::Coefficients<f64>, state: &[f64; 15]) -> [f64; 13] {
-    let inputs = remus::INPUTS.map(|name| match name {
-        "dr" => state[13],
-        "ds" => state[14],
-        _ => {
-            let of = name.strip_prefix("abs_").expect("an input |x|");
-            let index = (remus::STATE.iter().position(|s| *s == of)).expect("a state");
+    let mut inputs = [0.0; remus::INPUTS.len()];
+    for (input, &(index, magnitude)) in inputs.iter_mut().zip(remus_inputs()) {
+        *input = if magnitude {
             state[index].abs()
-        }
-    });
+        } else {
+            state[index]
+        };
+    }
     let body: [f64; 13] = std::array::from_fn(|i| state[i]);
     k.rhs(&body, &inputs)
 }

@@ -1,0 +1,112 @@
+//! Runs one form of one table's right-hand side a given number of times, each call on the
+//! state the last left (as the bench's loop does), and nothing else: what instructions one
+//! call costs is then counted under callgrind, the loop being the only function collected.
+//!
+//! ```sh
+//! cargo build --release -p eom-example-user-build-rs --example calls
+//! valgrind --tool=callgrind --collect-atstart=no --toggle-collect='*calls::run*' \
+//!     target/release/examples/calls remus jit 100000
+//! ```
+//!
+//! `TABLE` is `ten` (the ten-term ship of `build.rs`), `mariner` or `remus`; `FORM` is
+//! `rustc`, `jit` (compiled when the scene is read) or `interpreted`.
+
+#[path = "../tests/common/mod.rs"]
+#[allow(dead_code)]
+mod common;
+
+use common::{mariner_coefficients, mariner_rates, mariner_table, remus_coefficients, remus_rates};
+use eom::Model;
+use eom::kinds::ship::ShipModel;
+use eom_example_user_build_rs::{example_ship, ship};
+use std::hint::black_box;
+
+/// `calls` calls of `rhs`, each on the state nudged by the last rates: the loop of the bench.
+#[inline(never)]
+fn run<const N: usize>(
+    start: [f64; N],
+    calls: usize,
+    rhs: impl Fn(&[f64; N]) -> [f64; N],
+) -> [f64; N] {
+    let mut state = start;
+    for _ in 0..calls {
+        let rates = rhs(black_box(&state));
+        for (x, r) in state.iter_mut().zip(rates) {
+            *x += 1e-9 * r;
+        }
+    }
+    state
+}
+
+fn main() {
+    let arguments: Vec<String> = std::env::args().skip(1).collect();
+    let [table, form, calls] = arguments.as_slice() else {
+        eprintln!(
+            "usage: calls TABLE FORM CALLS (TABLE: ten, mariner, remus; FORM: rustc, jit, interpreted)"
+        );
+        std::process::exit(2);
+    };
+    let calls: usize = calls.parse().expect("CALLS is a count");
+    let ship_start = [6.0, 0.4, -0.02, 10.0, -5.0, 0.3, 0.1];
+    let end = match (table.as_str(), form.as_str()) {
+        ("ten", "rustc") => {
+            let k = ship::Coefficients::<f64>::new(&example_ship());
+            run(ship_start, calls, |y| k.rhs(y, &[0.01])).to_vec()
+        }
+        ("ten", form) => {
+            let jit = ShipModel::new(&common::table()).expect("the table builds");
+            let model = if form == "jit" {
+                jit
+            } else {
+                jit.interpreted()
+            };
+            run(ship_start, calls, |y| model.rhs(y, &[0.01, 0.0])).to_vec()
+        }
+        ("mariner", form) => {
+            let table = mariner_table();
+            let start = [7.5, 0.3, -0.01, 10.0, -5.0, 0.3, 0.1];
+            if form == "rustc" {
+                let m = mariner_coefficients(&table);
+                run(start, calls, |y| mariner_rates(&m, y, 0.01)).to_vec()
+            } else {
+                let jit = ShipModel::new(&table).expect("the Mariner builds");
+                let model = if form == "jit" {
+                    jit
+                } else {
+                    jit.interpreted()
+                };
+                run(start, calls, |y| model.rhs(y, &[0.01, 0.0])).to_vec()
+            }
+        }
+        ("remus", form) => {
+            let scene = common::remus_scene();
+            let mut start = [0.0; 15];
+            start[..6].copy_from_slice(&[1.5, 0.05, -0.03, 0.01, 0.02, -0.03]);
+            start[9] = 1.0;
+            start[13] = 0.05;
+            if form == "rustc" {
+                let r = remus_coefficients(&scene);
+                let rustc = |y: &[f64; 15]| {
+                    let rates = remus_rates(&r, y);
+                    std::array::from_fn(|i| {
+                        if i < 13 {
+                            rates[i]
+                        } else {
+                            [0.01, -0.01][i - 13]
+                        }
+                    })
+                };
+                run(start, calls, rustc).to_vec()
+            } else {
+                let model = if form == "jit" {
+                    scene.model.clone()
+                } else {
+                    scene.model.interpreted()
+                };
+                run(start, calls, |y| model.rhs(y, &[0.01, -0.01])).to_vec()
+            }
+        }
+        _ => panic!("unknown table {table}"),
+    };
+    black_box(end);
+}
