@@ -360,9 +360,10 @@ fn the_compiled_call_is_the_interpreter_s_at_the_edges_of_f64() {
     let nps = {
         let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/nps_auv2.toml");
         let text = std::fs::read_to_string(path).unwrap();
-        match AnyScene::parse(&text, "nps_auv2.toml", Path::new(".")) {
-            Ok(AnyScene::Vehicle(scene)) => scene.model,
-            _ => panic!("nps_auv2.toml is read as a vehicle"),
+        let scene = AnyScene::parse(&text, "nps_auv2.toml", Path::new(".")).ok();
+        match scene.and_then(AnyScene::downcast::<eom::kinds::vehicle::VehicleScene>) {
+            Some(scene) => scene.model,
+            None => panic!("nps_auv2.toml is read as a vehicle"),
         }
     };
     let mut random = Random(0x5EED_0006);
