@@ -800,6 +800,57 @@ fn euler_angles_stop_at_gimbal_lock_where_the_quaternion_goes_on_and_agree_befor
     assert!(stderr.contains("gimbal lock"), "{stderr}");
 }
 
+/// A sweep of a body whose every case fails (gimbal lock) keeps each case's rows, plots and
+/// summary (with its `case`), and its table has every column, each case's variant and its
+/// error: the columns are the scene's, not borrowed from a case that ran to its end.
+#[test]
+fn a_sweep_whose_every_case_fails_keeps_its_columns_and_says_each_error() {
+    let dir = folder("sweep_failing");
+    let text = std::fs::read_to_string(scene("looping.toml"))
+        .unwrap()
+        .replace("kinematics = \"quaternion\"", "kinematics = \"euler\"")
+        + "\n[sweep]\n\"body.mass\" = [10.0, 20.0]\n";
+    let path = dir.join("looping_sweep.toml");
+    std::fs::write(&path, text).unwrap();
+    let out = dir.join("out");
+    let (code, stderr) = run_failing(&path, &out);
+    assert_ne!(code, 0, "{stderr}");
+    assert!(stderr.contains("2 of 2 cases failed"), "{stderr}");
+    let table = std::fs::read_to_string(out.join("sweep.csv")).unwrap();
+    let mut reader = csv::Reader::from_reader(table.as_bytes());
+    let header: Vec<String> = reader.headers().unwrap().iter().map(String::from).collect();
+    for column in ["variant", "steps", "energy_drift", "final_theta", "error"] {
+        assert!(
+            header.iter().any(|h| h == column),
+            "no {column} in {header:?}"
+        );
+    }
+    let at = |name: &str| header.iter().position(|h| h == name).unwrap();
+    let rows: Vec<csv::StringRecord> = reader.records().map(Result::unwrap).collect();
+    assert_eq!(rows.len(), 2);
+    for (k, row) in rows.iter().enumerate() {
+        assert!(!row[at("variant")].is_empty(), "{row:?}");
+        assert_eq!(
+            &row[at("steps")],
+            "",
+            "a failed case gives no figure: {row:?}"
+        );
+        assert!(
+            row[at("error")].contains("gimbal lock at t = 1.254 s"),
+            "{row:?}"
+        );
+        let case = out.join(format!("case-{k:04}"));
+        let s = summary(&case);
+        assert_eq!(s["case"]["index"], k, "{s}");
+        assert_eq!(s["case"]["values"]["body.mass"], [10.0, 20.0][k], "{s}");
+        assert!(s["error"].as_str().unwrap().contains("gimbal lock"), "{s}");
+        // The case's plots say its values in their title.
+        let plot = std::fs::read_to_string(case.join("state.svg")).unwrap();
+        let label = format!("body.mass = {}", ["10.0", "20.0"][k]);
+        assert!(plot.contains(&label), "no `{label}` in state.svg");
+    }
+}
+
 /// A free body spinning about its z-axis at `rate` rad/s, with `method` and `step`, and
 /// `extra` lines in its [loads].
 fn spinning(

@@ -442,6 +442,10 @@ fn a_vehicle_sweep_over_a_coefficient_runs_whole_or_in_shards_alike() {
     .unwrap();
     let figure = &alone["manoeuvre"]["turning_circle"]["trial"]["tactical_diameter_m"];
     assert_eq!(figure.as_f64(), Some(diameters[1]));
+    // Its summary says which case it is, as a body's case's does.
+    assert_eq!(alone["case"]["index"], 1, "{}", alone["case"]);
+    let nuudr = &alone["case"]["values"]["hydrodynamics.coefficients.Nuudr"];
+    assert_eq!(nuudr.as_f64(), Some(-6.15));
     for key in [
         "turning_circle.advance_m",
         "turning_circle.refined_difference",

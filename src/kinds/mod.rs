@@ -61,6 +61,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+pub mod body;
 #[cfg(feature = "ship")]
 pub mod ship;
 #[cfg(feature = "ship")]
@@ -118,6 +119,19 @@ pub trait Finished: std::fmt::Debug {
     /// `summary.json`, as a JSON value (its objects' keys sorted).
     fn summary(&self) -> serde_json::Value;
 
+    /// `summary.json` as written: [`Self::summary`], pretty-printed, with a sweep case's
+    /// number and values under `"case"`. A kind whose summary has an order of its own (a
+    /// body's: the run, its cost, then its figures) writes it in that order.
+    fn summary_file(&self, case: Option<&TableCase>) -> Vec<u8> {
+        let mut summary = self.summary();
+        if let (Some(case), Some(object)) = (case, summary.as_object_mut()) {
+            let values = serde_json::to_value(case.values_json()).unwrap_or_default();
+            let case = serde_json::json!({ "index": case.index, "values": values });
+            object.insert("case".into(), case);
+        }
+        serde_json::to_vec_pretty(&summary).unwrap_or_default()
+    }
+
     /// The report as the command prints it (the folder it wrote aside).
     fn report(&self) -> String;
 
@@ -128,8 +142,23 @@ pub trait Finished: std::fmt::Debug {
     /// Whether the recorder stopped the run before every run the scene asks for had run.
     fn stopped(&self) -> bool;
 
-    /// How many of the scene's runs (manoeuvres) finished, or began and kept a part.
-    fn runs_kept(&self) -> usize;
+    /// What a run that stopped early kept, in words (`the 2 manoeuvres finished before it,
+    /// and summary.json`; `every row up to t = 3 s of 10 s in trajectory.csv, …`).
+    fn kept(&self) -> String;
+
+    /// Why the run failed where it failed, having kept what it ran (a body's run that came
+    /// to gimbal lock: its rows, its drawings and a summary that gives the error); `None`
+    /// for a run that did not fail. The command writes what was kept, then exits as for a
+    /// failed run.
+    fn failure(&self) -> Option<KindError> {
+        None
+    }
+
+    /// What the run did not stop for but a reader should know (a fixed step past its
+    /// accuracy bound), for the command to say beside the report; also in the summary.
+    fn warnings(&self) -> Vec<String> {
+        Vec::new()
+    }
 }
 
 /// A scene's linearisation and what its kind adds to the report beside every scene's: text
@@ -235,6 +264,15 @@ pub const REGISTRY: &[Registered] = &[
     #[cfg(feature = "ship")]
     vehicle::KIND,
 ];
+
+/// What a scene of manoeuvres kept when it stopped early: the `count` it finished, or began
+/// and kept a part of, and its summary.
+pub(crate) fn manoeuvres_kept(count: usize) -> String {
+    format!(
+        "the {} finished before it, and summary.json",
+        crate::counted(count, "manoeuvre", "manoeuvres")
+    )
+}
 
 /// The registered kind whose tables `table` are, if one is.
 pub fn recognise(table: &toml::Table) -> Option<&'static Registered> {

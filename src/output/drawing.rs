@@ -6,6 +6,8 @@
 //! columns it reads, so a new kind whose rows carry them is drawn without a line of the
 //! command changed, and the command names no kind.
 
+use crate::models::{Family, Kinematics};
+
 /// A point to mark on a track: a turning circle's execute, its 90° and 180° points.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Mark {
@@ -111,9 +113,75 @@ pub struct Curves {
     pub curves: Vec<(String, Vec<(f64, f64)>)>,
 }
 
+/// The shape of a rigid body of the catalog's families, as its plots and its view need it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum BodyShape {
+    /// A spatial body: M and the inertia tensor about G, body axes, kg m².
+    Spatial {
+        /// M, kg.
+        mass: f64,
+        /// The tensor about G.
+        inertia: [[f64; 3]; 3],
+        /// Whether water acts on it (buoyancy, damping): the view draws it as a cylinder on
+        /// the water rather than a box over a floor.
+        in_water: bool,
+        /// Whether it turns free of moments about G (no loads, or uniform gravity at G alone):
+        /// its polhode is drawn.
+        free_of_moments: bool,
+    },
+    /// The heavy top: M, its tensor about G in principal axes, G at h along body z.
+    Top {
+        /// M, kg.
+        mass: f64,
+        /// The tensor about G.
+        inertia: [[f64; 3]; 3],
+        /// Pivot to G, m.
+        h: f64,
+    },
+    /// The compound pendulum: pivot to G, the moment of inertia about the pivot, M.
+    Pendulum {
+        /// Pivot to G, m.
+        h: f64,
+        /// I about the pivot, kg m².
+        i0: f64,
+        /// M, kg.
+        mass: f64,
+    },
+    /// A planar body: M and I_zz about G.
+    Planar {
+        /// M, kg.
+        mass: f64,
+        /// I_zz about G, kg m².
+        izz: f64,
+    },
+}
+
+/// A rigid body of the catalog's families. Its rows carry the model's state in its own layout
+/// (the family's and the attitude's: `family` and `kinematics` say which) and, where its loads
+/// have a potential, the potential and total energy. Drawn: the state against time, the
+/// attitude, the track (and a spatial body's profile), the energy drift, a free body's
+/// polhode; and the view of its shape moving, every column in its readout.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RigidBody {
+    /// The captions' title.
+    pub title: String,
+    /// The model's family.
+    pub family: Family,
+    /// How its attitude is written, where it has one.
+    pub kinematics: Option<Kinematics>,
+    /// Its shape.
+    pub shape: BodyShape,
+    /// The state it started from (the view trails the tip of the axis it spins most about).
+    pub initial: Vec<f64>,
+    /// Whether its energy is conserved, so that the drift of the total energy is drawn.
+    pub conserves_energy: bool,
+}
+
 /// One drawing of a run.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Drawing {
+    /// A rigid body of the catalog's families.
+    RigidBody(RigidBody),
     /// A manoeuvre in the horizontal plane.
     PlaneManoeuvre(PlaneManoeuvre),
     /// A manoeuvre in space.

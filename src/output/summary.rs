@@ -26,7 +26,7 @@ use serde::ser::{SerializeMap, Serializer};
 use std::path::Path;
 
 /// The summary of one run.
-#[derive(Debug, Serialize)]
+#[derive(Debug, Clone, Serialize)]
 pub struct Summary {
     /// The scene file.
     pub scene: String,
@@ -84,7 +84,7 @@ pub enum Extra {
 }
 
 /// The integrator's part.
-#[derive(Debug, Serialize)]
+#[derive(Debug, Clone, Serialize)]
 pub struct IntegratorSummary {
     /// The method's name in scene files.
     pub method: &'static str,
@@ -97,7 +97,7 @@ pub struct IntegratorSummary {
 }
 
 /// Values by name, serialised as a JSON object in the given order.
-#[derive(Debug, Default)]
+#[derive(Debug, Clone, Default)]
 pub struct Named(pub Vec<(String, f64)>);
 
 impl Serialize for Named {

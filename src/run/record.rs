@@ -24,6 +24,9 @@ pub struct RunStart<'a> {
     pub expected_rows: usize,
     /// The time it runs to, s (a progress bar's end).
     pub end_time: f64,
+    /// Whether its rows carry a potential energy ([`Row::potential_energy`]): the trajectory
+    /// then has the potential and total energy columns after the kinetic.
+    pub potential: bool,
 }
 
 /// What a scene's runs hand their rows to, run after run.

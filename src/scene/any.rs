@@ -68,6 +68,15 @@ impl AnyScene {
         )?)))
     }
 
+    /// The scene as a [`Kind`], whatever its kind: what the command runs, sweeps and
+    /// reports (a catalog body is the kind `body`).
+    pub fn into_kind(self) -> Box<dyn Kind> {
+        match self {
+            AnyScene::Catalog(scene) => scene,
+            AnyScene::Kind(scene) => scene,
+        }
+    }
+
     /// The title.
     pub fn title(&self) -> &str {
         match self {

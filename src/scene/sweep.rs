@@ -95,6 +95,17 @@ pub struct TableCase {
 }
 
 impl TableCase {
+    /// Each swept key's value as JSON, by key: TOML's numbers, strings, booleans and arrays
+    /// as the scene gave them (a summary's `"case"`).
+    pub fn values_json(&self) -> std::collections::BTreeMap<String, serde_json::Value> {
+        (self.values.iter())
+            .map(|(key, value)| {
+                let value = serde_json::to_value(value).unwrap_or(serde_json::Value::Null);
+                (key.clone(), value)
+            })
+            .collect()
+    }
+
     /// The case read as a scene file of type `T`, errors naming the key.
     pub fn read<T: serde::de::DeserializeOwned>(&self, name: &str) -> Result<T, SceneError> {
         read_table(self.table.clone(), name)

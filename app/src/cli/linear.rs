@@ -12,11 +12,10 @@
 //! model as MATLAB variables), into a folder taken as `eom run` takes one.
 
 use anyhow::Result;
-use eom::linear::{Linearisation, Mode, Stability, StateSpace, linearise_scene, newton_steps};
+use eom::linear::{Linearisation, Mode, Stability, StateSpace, newton_steps};
 use eom::output::folder::{Claim, Writer};
 use eom::output::mat::mat_file;
 use eom::output::summary::write_atomically;
-use eom::scene::AnyScene;
 use eom_cli::plots::poles::{POLES, write_pole_plot};
 use serde_json::{Map, Value, json};
 use std::path::{Path, PathBuf};
@@ -52,27 +51,10 @@ const MAT: &str = "linear.mat";
 
 /// Runs `eom linear`.
 pub fn run(args: Args) -> Result<()> {
-    let (title, linear, extra_text, extra_json) = match super::serves::linearised(&args.scene)? {
-        AnyScene::Kind(scene) => {
-            let linearised = scene.linear()?;
-            let text = linearised.text;
-            (
-                scene.title().to_owned(),
-                linearised.linearisation,
-                text,
-                linearised.json,
-            )
-        }
-        AnyScene::Catalog(scene) => {
-            let linear = linearise_scene(&scene)?;
-            (
-                scene.title.clone(),
-                linear,
-                String::new(),
-                Default::default(),
-            )
-        }
-    };
+    let scene = super::serves::linearised(&args.scene)?.into_kind();
+    let linearised = scene.linear()?;
+    let (title, linear) = (scene.title().to_owned(), linearised.linearisation);
+    let (extra_text, extra_json) = (linearised.text, linearised.json);
     let space = state_space(&args, &title, &linear);
     // Every scene's report, with what its kind adds beside it (a ship's Nomoto models).
     let mut text = text_report(&title, &linear);

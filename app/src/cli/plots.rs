@@ -1,9 +1,13 @@
-//! The plots of a run: its kept columns handed to [`eom_cli::plots`].
+//! The plots of a rigid body's run: its kept columns handed to [`eom_cli::plots`].
 
+use super::record::Kept;
 use anyhow::{Context, Result};
+use eom::InertiaTensor;
 use eom::models::{Family, Kinematics};
+use eom::nalgebra::Matrix3;
+use eom::output::drawing::{BodyShape, RigidBody};
 use eom::output::trajectory::Columns;
-use eom::scene::{Body, Scene, euler_angles};
+use eom::scene::euler_angles;
 use eom_cli::plots::{PlotInput, Polhode, in_principal_axes, not_drawn, write_plots};
 use std::path::{Path, PathBuf};
 
@@ -11,20 +15,14 @@ use std::path::{Path, PathBuf};
 /// and, for a spatial body free of moments about G, the polhode of a run into `out`, under
 /// `title`. Returns the files written and, for a plot left out although the run has its data,
 /// why.
-pub fn write(
-    scene: &Scene,
-    title: &str,
-    columns: &Columns,
-    out: &Path,
-) -> Result<(Vec<PathBuf>, Vec<String>)> {
-    let names = scene.state_names();
-    let info = scene.selection.info;
-    let attitude = match (info.family, info.kinematics) {
+pub fn write(body: &RigidBody, kept: &Kept, out: &Path) -> Result<(Vec<PathBuf>, Vec<String>)> {
+    let (names, columns) = (&kept.names, &kept.columns);
+    let attitude = match (body.family, body.kinematics) {
         (Family::Spatial, Some(kinematics)) => Some(attitude_deg(columns, kinematics, 9)),
         (Family::Top, Some(kinematics)) => Some(attitude_deg(columns, kinematics, 3)),
         _ => None,
     };
-    let track = match info.family {
+    let track = match body.family {
         Family::Pendulum | Family::Top => None,
         Family::PlanarSpaceFixed => Some((0, 1)),
         Family::PlanarAtG | Family::PlanarMidship => Some((3, 4)),
@@ -33,19 +31,17 @@ pub fn write(
     // The drift relative to the larger of |E₀| and the largest kinetic energy, as the summary's
     // energy_drift (a potential's zero is a convention, so E₀ alone may be 0).
     let scale = columns.kinetic.iter().fold(0.0f64, |m, t| m.max(t.abs()));
-    let drift: Option<Vec<f64>> = scene
-        .loads
-        .potential_energy(&scene.initial)
-        .and(columns.energy.first())
+    let drift: Option<Vec<f64>> = (columns.energy.first())
+        .filter(|_| body.conserves_energy)
         .map(|&e0| e0.abs().max(scale))
         .filter(|scale| *scale > 0.0)
         .map(|scale| {
             let e0 = columns.energy[0];
             columns.energy.iter().map(|e| (e - e0) / scale).collect()
         });
-    let principal = free_rotation(scene, columns);
+    let principal = free_rotation(body, columns);
     let input = PlotInput {
-        title,
+        title: &body.title,
         time: &columns.time,
         state: names
             .iter()
@@ -56,7 +52,7 @@ pub fn write(
             .as_ref()
             .map(|[r, p, y]| [r.as_slice(), p.as_slice(), y.as_slice()]),
         track: track.map(|(x, y)| (columns.state[x].as_slice(), columns.state[y].as_slice())),
-        depth: (info.family == Family::Spatial)
+        depth: (body.family == Family::Spatial)
             .then(|| columns.state.get(8).map(Vec::as_slice))
             .flatten(),
         energy_drift: drift.as_deref(),
@@ -90,12 +86,16 @@ fn attitude_deg(columns: &Columns, kinematics: Kinematics, first: usize) -> [Vec
 
 /// The principal moments and ω in principal axes of a spatial body that turns free of moments
 /// about G (no loads, or uniform gravity at G alone), for the polhode; `None` for any other.
-fn free_rotation(scene: &Scene, columns: &Columns) -> Option<([f64; 3], [Vec<f64>; 3])> {
-    let torque_free = scene.loads.is_free() || scene.loads.uniform_gravity_only().is_some();
-    match &scene.body {
-        Body::Spatial { inertia, .. } if torque_free && columns.state.len() >= 6 => {
+fn free_rotation(body: &RigidBody, columns: &Columns) -> Option<([f64; 3], [Vec<f64>; 3])> {
+    match body.shape {
+        BodyShape::Spatial {
+            inertia,
+            free_of_moments: true,
+            ..
+        } if columns.state.len() >= 6 => {
+            let tensor = InertiaTensor::from_matrix(Matrix3::from_fn(|r, c| inertia[r][c])).ok()?;
             let [p, q, r] = [3, 4, 5].map(|k| columns.state[k].as_slice());
-            Some(in_principal_axes(inertia, [p, q, r]))
+            Some(in_principal_axes(&tensor, [p, q, r]))
         }
         _ => None,
     }

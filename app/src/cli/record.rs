@@ -6,7 +6,9 @@
 
 use super::run::{progress_bar, signal_received};
 use anyhow::{Context, Result};
-use eom::output::drawing::{Curves, Drawing, Mark, PlaneManoeuvre, RunDrawings, SpaceManoeuvre};
+use eom::output::drawing::{
+    Curves, Drawing, Mark, PlaneManoeuvre, RigidBody, RunDrawings, SpaceManoeuvre,
+};
 use eom::output::trajectory::{Columns, TrajectoryWriter};
 use eom::run::record::{RecordError, Recorder, RunStart};
 use eom::run::{Row, Sink};
@@ -52,17 +54,36 @@ pub struct FolderRecorder<'a> {
     current: Option<Current>,
     /// The rows of each run that ended, until its drawings are drawn.
     kept: BTreeMap<String, Kept>,
+    /// A sweep case's values, `key = value, …`, which each drawing's title adds.
+    case: Option<String>,
+    /// The files written at the top of `out` (by a run recorded there), in order.
+    pub written: Vec<PathBuf>,
+    /// The plots left out although a run has their data, each with why.
+    pub not_drawn: Vec<String>,
 }
 
 impl<'a> FolderRecorder<'a> {
     /// Runs into folders under `out`, a folder already claimed and found writable; with
-    /// `progress`, each run shows a bar over its time (on a terminal, after a second).
-    pub fn new(out: &'a Path, progress: bool) -> Self {
+    /// `progress`, each run shows a bar over its time (on a terminal, after a second); for a
+    /// sweep's case, `case` its values as its drawings' titles say them.
+    pub fn new(out: &'a Path, progress: bool, case: Option<String>) -> Self {
         FolderRecorder {
             out,
             progress,
             current: None,
             kept: BTreeMap::new(),
+            case,
+            written: Vec::new(),
+            not_drawn: Vec::new(),
+        }
+    }
+
+    /// `title`, with the case's values for a sweep's case (its summary keeps the scene's
+    /// title exactly, and says the values under `case`).
+    fn titled(&self, title: &str) -> String {
+        match &self.case {
+            Some(case) => format!("{title} — {case}"),
+            None => title.to_owned(),
         }
     }
 }
@@ -73,8 +94,12 @@ impl Recorder for FolderRecorder<'_> {
         std::fs::create_dir_all(&folder)
             .with_context(|| format!("creating {}", folder.display()))?;
         let file = folder.join("trajectory.csv");
-        let mut writer = TrajectoryWriter::create(&file, run.columns, false, run.expected_rows)
-            .with_context(|| format!("creating {}", file.display()))?;
+        if run.path.is_empty() {
+            self.written.push(file.clone());
+        }
+        let mut writer =
+            TrajectoryWriter::create(&file, run.columns, run.potential, run.expected_rows)
+                .with_context(|| format!("creating {}", file.display()))?;
         if self.progress {
             writer.on_row(progress_bar(run.end_time));
         }
@@ -87,9 +112,10 @@ impl Recorder for FolderRecorder<'_> {
         Ok(())
     }
 
+    /// After a signal, refuses the row: the last row written is the last the run reports.
     fn row(&mut self, row: &Row) -> bool {
-        let written = (self.current.as_mut()).is_some_and(|current| current.writer.row(row));
-        written && signal_received().is_none()
+        signal_received().is_none()
+            && (self.current.as_mut()).is_some_and(|current| current.writer.row(row))
     }
 
     fn end(&mut self) -> Result<(), RecordError> {
@@ -114,7 +140,12 @@ impl Recorder for FolderRecorder<'_> {
             .with_context(|| format!("{} was drawn before its rows were kept", run.path))?;
         let folder = self.out.join(&run.path);
         for drawing in &run.drawings {
-            draw(&folder, drawing, &kept)?;
+            let drawing = retitled(drawing, |title| self.titled(title));
+            let (files, not_drawn) = draw(&folder, &drawing, &kept)?;
+            if run.path.is_empty() {
+                self.written.extend(files);
+            }
+            self.not_drawn.extend(not_drawn);
         }
         Ok(())
     }
@@ -124,20 +155,41 @@ impl Recorder for FolderRecorder<'_> {
     }
 }
 
-/// Draws `drawing` of a run whose rows are `kept` into its `folder`.
-fn draw(folder: &Path, drawing: &Drawing, kept: &Kept) -> Result<()> {
+/// `drawing` with its title as `titled` makes it.
+fn retitled(drawing: &Drawing, titled: impl Fn(&str) -> String) -> Drawing {
+    let mut drawing = drawing.clone();
+    match &mut drawing {
+        Drawing::RigidBody(RigidBody { title, .. })
+        | Drawing::PlaneManoeuvre(PlaneManoeuvre { title, .. })
+        | Drawing::SpaceManoeuvre(SpaceManoeuvre { title, .. }) => *title = titled(title),
+        Drawing::Curves(Curves { caption, .. }) => *caption = titled(caption),
+    }
+    drawing
+}
+
+/// Draws `drawing` of a run whose rows are `kept` into its `folder`: the files written, and
+/// each plot left out although the run has its data, with why.
+fn draw(folder: &Path, drawing: &Drawing, kept: &Kept) -> Result<(Vec<PathBuf>, Vec<String>)> {
+    let mut files = Vec::new();
+    let mut not_drawn = Vec::new();
     match drawing {
+        Drawing::RigidBody(body) => {
+            let (plots, left_out) = super::plots::write(body, kept, folder)?;
+            files.extend(plots);
+            not_drawn = left_out;
+            files.push(super::view::write(body, kept, folder)?);
+        }
         Drawing::PlaneManoeuvre(plane) => {
-            draw_plane(folder, plane, kept)?;
-            super::view::write_plane(folder, plane, kept)?;
+            files.extend(draw_plane(folder, plane, kept)?);
+            files.push(super::view::write_plane(folder, plane, kept)?);
         }
         Drawing::SpaceManoeuvre(space) => {
-            draw_space(folder, space, kept)?;
-            super::view::write_space(folder, space, kept)?;
+            files.extend(draw_space(folder, space, kept)?);
+            files.push(super::view::write_space(folder, space, kept)?);
         }
-        Drawing::Curves(curves) => draw_curves(folder, curves)?,
+        Drawing::Curves(curves) => files.push(draw_curves(folder, curves)?),
     }
-    Ok(())
+    Ok((files, not_drawn))
 }
 
 /// The marks as the track plots take them: (east, north).
@@ -151,7 +203,7 @@ fn marks(marks: &[Mark]) -> Vec<plots::Mark> {
 }
 
 /// `track.svg` with the hull along it, and the heading and the rudder against time.
-fn draw_plane(folder: &Path, plane: &PlaneManoeuvre, kept: &Kept) -> Result<()> {
+fn draw_plane(folder: &Path, plane: &PlaneManoeuvre, kept: &Kept) -> Result<Vec<PathBuf>> {
     let time = &kept.columns.time;
     let psi = kept.column("psi")?;
     let psi0 = (time.iter().zip(psi))
@@ -175,12 +227,11 @@ fn draw_plane(folder: &Path, plane: &PlaneManoeuvre, kept: &Kept) -> Result<()> 
         marks: &marks(&plane.marks),
         hull: plane.hull,
     };
-    write_manoeuvre_plots(folder, &plot)?;
-    Ok(())
+    Ok(write_manoeuvre_plots(folder, &plot)?)
 }
 
 /// The track in plan, the profile, the attitude and the fins with their commands.
-fn draw_space(folder: &Path, space: &SpaceManoeuvre, kept: &Kept) -> Result<()> {
+fn draw_space(folder: &Path, space: &SpaceManoeuvre, kept: &Kept) -> Result<Vec<PathBuf>> {
     let column = |name: &str| kept.column(name);
     let plot = SpacePlot {
         title: &space.title,
@@ -195,12 +246,11 @@ fn draw_space(folder: &Path, space: &SpaceManoeuvre, kept: &Kept) -> Result<()> 
         ],
         marks: &marks(&space.marks),
     };
-    write_space_plots(folder, &plot)?;
-    Ok(())
+    Ok(write_space_plots(folder, &plot)?)
 }
 
 /// Named curves into their own file.
-fn draw_curves(folder: &Path, drawing: &Curves) -> Result<()> {
+fn draw_curves(folder: &Path, drawing: &Curves) -> Result<PathBuf> {
     let curves: Vec<Curve> = (drawing.curves.iter())
         .map(|(name, points)| Curve { name, points })
         .collect();
@@ -210,6 +260,5 @@ fn draw_curves(folder: &Path, drawing: &Curves) -> Result<()> {
         y_desc: &drawing.y_desc,
         curves: &curves,
     };
-    write_curves(folder, &drawing.file, &plot)?;
-    Ok(())
+    Ok(write_curves(folder, &drawing.file, &plot)?)
 }

@@ -22,17 +22,13 @@ use anyhow::{Context, Result, bail};
 use eom::Short;
 use eom::kinds::{Finished, Kind};
 use eom::output::folder::{Claim, FolderError, Writer, sweep_identity};
-use eom::output::summary::{Extra, Summary, write_atomically};
-use eom::output::text::printable;
-use eom::output::trajectory::{Columns, TrajectoryWriter, number_text};
-use eom::run::{Report, Row, RunError, Sink, run_reporting};
+use eom::output::summary::write_atomically;
 use eom::scene::sweep::{TableCase, is_swept, parse_shard, shard_tables};
-use eom::scene::{AnyScene, Body, Problem, Scene, SceneError};
+use eom::scene::{AnyScene, Problem, SceneError};
 use eom_cli::plots::PLOT_FILES;
 use eom_cli::shell_path;
 use eom_cli::view::VIEW_FILE;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
-use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
@@ -126,16 +122,6 @@ fn watch_signals() {
             let _ = flag::register(signal, &ARMED);
         }
     });
-}
-
-/// The trajectory writer, refusing the rows after a signal: the run ends at its next row, and
-/// the last row written is the last the run reports.
-struct Interruptible<'a>(&'a mut TrajectoryWriter);
-
-impl Sink for Interruptible<'_> {
-    fn row(&mut self, row: &Row) -> bool {
-        signal_received().is_none() && self.0.row(row)
-    }
 }
 
 /// Runs `eom run`.
@@ -244,55 +230,20 @@ fn execute(text: &str, name: &str, base: &Path, out: &Path, options: Options) ->
         return Err(Usage(message).into());
     }
     // Every case is checked before any runs: a bad value fails the sweep at once.
-    let cases: Vec<(TableCase, AnyScene)> = shard_tables(text, name, options.shard)?
+    let cases: Vec<(TableCase, Box<dyn Kind>)> = shard_tables(text, name, options.shard)?
         .into_iter()
         .map(|case| {
-            let scene = AnyScene::from_table(case.table.clone(), name, base)?;
+            let scene = AnyScene::from_table(case.table.clone(), name, base)?.into_kind();
             Ok((case, scene))
         })
         .collect::<Result<_, SceneError>>()?;
-    let mut scenes: Vec<(TableCase, Scene)> = Vec::new();
-    let mut kinds: Vec<(TableCase, Box<dyn Kind>)> = Vec::new();
-    for (case, scene) in cases {
-        match scene {
-            AnyScene::Catalog(scene) => scenes.push((case, *scene)),
-            AnyScene::Kind(scene) => kinds.push((case, scene)),
-        }
-    }
-    if !kinds.is_empty() {
-        return execute_kind(kinds, (text, name, out, options, swept));
-    }
-    refuse_large_output(
-        scenes.iter().map(|(_, s)| trajectory_bytes(s)).sum(),
-        options,
-    )?;
-    let writer = writer_of(name, text, options.shard);
-    let planned = planned_entries(&scenes, swept, options.shard);
-    let _claim = Claim::take(out, options.force, &writer, &planned)?;
-    if !swept {
-        let (_, scene) = &scenes[0];
-        let outcome = run_case(scene, name, out, true, None)?;
-        print_outcome(scene, &outcome, out);
-        return Ok(());
-    }
-    run_sweep(&scenes, name, out, options.shard)
-}
-
-/// Runs a scene of a registered kind, or each case of its sweep, into `out`.
-fn execute_kind(
-    cases: Vec<(TableCase, Box<dyn Kind>)>,
-    (text, name, out, options, swept): (&str, &str, &Path, Options, bool),
-) -> Result<()> {
     let numbers: f64 = (cases.iter())
         .map(|(_, scene)| scene.trajectory_numbers())
         .sum();
-    let bytes = numbers * NUMBER_BYTES;
-    refuse_large_output(bytes, options)?;
+    refuse_large_output(numbers * NUMBER_BYTES, options)?;
     let single = cases.first().filter(|_| !swept).map(|(_, scene)| scene);
     let planned: Vec<String> = match single {
-        Some(scene) => (scene.folders().into_iter())
-            .chain(["summary.json".to_owned()])
-            .collect(),
+        Some(scene) => planned_entries(scene.as_ref()),
         None => (cases.iter())
             .map(|(case, _)| case_folder(case.index))
             .chain([sweep_file(options.shard)])
@@ -316,38 +267,103 @@ fn execute_kind(
     finish_sweep(name, out, options.shard, &table, &failures)
 }
 
-/// Runs a scene of a registered kind into `out`, a folder claimed and found writable: each
-/// run's trajectory and drawings through the command's recorder, then `summary.json`.
+/// Every top-level entry a scene run alone may write into its folder: its runs' folders (or
+/// a run's trajectory at the top, with the plots and the view drawn beside it) and its
+/// summary.
+fn planned_entries(scene: &dyn Kind) -> Vec<String> {
+    let mut entries = scene.folders();
+    let at_top = entries.iter().any(|entry| entry == TRAJECTORY);
+    entries.push("summary.json".to_owned());
+    if at_top {
+        entries.extend(PLOT_FILES.map(String::from));
+        entries.push(VIEW_FILE.to_owned());
+    }
+    entries
+}
+
+/// A run's trajectory, in its folder.
+const TRAJECTORY: &str = "trajectory.csv";
+
+/// What a scene's run wrote at the top of its folder (a run recorded there: its trajectory,
+/// the summary, its plots and view), and the plots left out, with why.
+pub(super) struct Written {
+    files: Vec<PathBuf>,
+    not_drawn: Vec<String>,
+}
+
+/// Runs a scene into `out`, a folder claimed and found writable: each run's trajectory and
+/// drawings through the command's recorder, then `summary.json`, which for a sweep's `case`
+/// says its number and values under `"case"`.
 pub(super) fn run_into<'a>(
     scene: &'a dyn Kind,
     name: &str,
-    (out, progress): (&Path, bool),
-) -> Result<Box<dyn Finished + 'a>> {
-    let mut recorder = FolderRecorder::new(out, progress);
+    (out, progress, case): (&Path, bool, Option<&TableCase>),
+) -> Result<(Box<dyn Finished + 'a>, Written)> {
+    let mut recorder = FolderRecorder::new(out, progress, case.map(TableCase::label));
     let finished = scene.run(name, &mut recorder)?;
-    let bytes = serde_json::to_vec_pretty(&finished.summary())?;
+    let bytes = finished.summary_file(case);
     let path = out.join("summary.json");
     write_atomically(&path, &bytes).with_context(|| format!("writing {}", path.display()))?;
-    Ok(finished)
+    let mut files = recorder.written;
+    if let Some(at) = files.iter().position(|file| file.ends_with(TRAJECTORY)) {
+        files.insert(at + 1, path);
+    }
+    let written = Written {
+        files,
+        not_drawn: recorder.not_drawn,
+    };
+    Ok((finished, written))
 }
 
-/// Runs a scene of a registered kind alone into `out` and prints its report; a signal that
-/// stopped it says what was kept.
+/// Why a run that failed where it failed, having kept what it ran, failed, with where it
+/// kept it.
+pub(super) fn failed(finished: &dyn Finished, name: &str, out: &Path) -> Option<anyhow::Error> {
+    let error = finished.failure()?;
+    let kept = format!(
+        "{name} stopped early; {} holds {}",
+        out.display(),
+        finished.kept()
+    );
+    Some(anyhow::Error::new(error).context(kept))
+}
+
+/// Runs a scene alone into `out` and prints its report and what it wrote; a signal that
+/// stopped it, or a failure where it kept what it ran, says what was kept.
 fn execute_alone(scene: &dyn Kind, name: &str, out: &Path) -> Result<()> {
-    let finished = run_into(scene, name, (out, true))?;
+    let (finished, written) = run_into(scene, name, (out, true, None))?;
+    for warning in finished.warnings() {
+        eprintln!("warning: {warning}");
+    }
     print!("{}", finished.report());
-    println!("  written to {}", eom_cli::shell_path(out));
-    match (finished.stopped(), signal_received()) {
-        (true, Some(signal)) => Err(Interrupted {
-            signal,
-            kept: format!(
-                "the {} finished before it, and summary.json, in {}",
-                eom::counted(finished.runs_kept(), "manoeuvre", "manoeuvres"),
-                out.display()
-            ),
-        }
-        .into()),
-        _ => Ok(()),
+    print_written(out, &written);
+    if let (true, Some(signal)) = (finished.stopped(), signal_received()) {
+        let kept = format!("{}, in {}", finished.kept(), out.display());
+        return Err(Interrupted { signal, kept }.into());
+    }
+    match failed(finished.as_ref(), name, out) {
+        Some(error) => Err(error),
+        None => Ok(()),
+    }
+}
+
+/// Where the run wrote: each file at the top of its folder, with the plots left out and the
+/// view to open, or the folder that holds its runs.
+fn print_written(out: &Path, written: &Written) {
+    if written.files.is_empty() {
+        println!("  written to {}", shell_path(out));
+        return;
+    }
+    println!("  wrote into {}:", shell_path(out));
+    for file in &written.files {
+        let name = file.file_name().unwrap_or_default().to_string_lossy();
+        println!("    {name}");
+    }
+    for reason in &written.not_drawn {
+        println!("    ({reason})");
+    }
+    let view = (written.files.iter()).find(|file| file.extension().is_some_and(|e| e == "html"));
+    if let Some(view) = view {
+        println!("  open {} in a browser to see the run", shell_path(view));
     }
 }
 
@@ -367,18 +383,6 @@ fn writer_of(name: &str, text: &str, shard: Option<(usize, usize)>) -> Writer {
 /// 18–20) with its comma.
 const NUMBER_BYTES: f64 = 21.0;
 
-/// About how many bytes a scene's trajectory.csv takes.
-fn trajectory_bytes(scene: &Scene) -> f64 {
-    let rows = scene.integrator.end_time / scene.every + 1.0;
-    let energies = if scene.selection.info.potential_energy || scene.loads.has_potential() {
-        3.0
-    } else {
-        1.0
-    };
-    let columns = 1.0 + scene.state_names().len() as f64 + energies;
-    rows * columns * NUMBER_BYTES
-}
-
 /// Refuses, before anything runs, a run that would write more than [`LARGE_OUTPUT`] without
 /// `--large-output`.
 fn refuse_large_output(bytes: f64, options: Options) -> Result<()> {
@@ -391,27 +395,6 @@ fn refuse_large_output(bytes: f64, options: Options) -> Result<()> {
         Short((bytes / 1e6).round())
     );
     Err(Usage(message).into())
-}
-
-/// Every top-level entry a run may write into its folder: a sweep's case folders and its
-/// table, or a single run's trajectory, summary and plots.
-fn planned_entries(
-    scenes: &[(TableCase, Scene)],
-    swept: bool,
-    shard: Option<(usize, usize)>,
-) -> Vec<String> {
-    if swept {
-        let mut entries: Vec<String> = scenes
-            .iter()
-            .map(|(case, _)| case_folder(case.index))
-            .collect();
-        entries.push(sweep_file(shard));
-        return entries;
-    }
-    let mut entries = vec!["trajectory.csv".to_owned(), "summary.json".to_owned()];
-    entries.extend(PLOT_FILES.map(String::from));
-    entries.push(VIEW_FILE.to_owned());
-    entries
 }
 
 /// The folder of sweep case `index`, `case-NNNN`, for a case of any kind.
@@ -439,176 +422,6 @@ fn writable_folder(out: &Path) -> Result<(), FolderError> {
     std::fs::write(&probe, b"")
         .and_then(|()| std::fs::remove_file(&probe))
         .map_err(unwritable)
-}
-
-/// What one run wrote.
-struct Outcome {
-    report: Report,
-    files: Vec<PathBuf>,
-    /// The plots left out although the run has their data, each with why.
-    not_drawn: Vec<String>,
-    /// The family's own figures ([`family_measures`]), or why each is not given.
-    measures: Vec<(&'static str, Result<f64, String>)>,
-}
-
-/// Runs one scene into `out`, a folder already known to be writable: trajectory, summary,
-/// plots. A run that stops early (a failure, a signal) still writes its summary and plots of
-/// the rows it wrote, then returns the error.
-fn run_case(
-    scene: &Scene,
-    name: &str,
-    out: &Path,
-    progress: bool,
-    case: Option<&TableCase>,
-) -> Result<Outcome> {
-    let names = scene.state_names();
-    // Potential and total energy columns where the model or the loads have a potential.
-    let model_potential = scene.selection.info.potential_energy;
-    let with_potential = model_potential || scene.loads.has_potential();
-    let rows = (scene.integrator.end_time / scene.every) as usize + 1;
-    let csv_path = out.join("trajectory.csv");
-    let mut writer = TrajectoryWriter::create(&csv_path, &names, with_potential, rows)
-        .with_context(|| format!("creating {}", csv_path.display()))?;
-    if progress {
-        writer.on_row(progress_bar(scene.integrator.end_time));
-    }
-    let ran = run_reporting(scene, &mut Interruptible(&mut writer));
-    // The first write error, as an I/O error (exit 4), before anything the run says.
-    let columns = writer
-        .finish()
-        .with_context(|| format!("writing {}", csv_path.display()))?;
-    let report = ran.report;
-    if progress {
-        for warning in &report.warnings {
-            eprintln!("warning: {warning}");
-        }
-    }
-    // A row refused after a signal is the only way the run stops that the run calls `Stopped`.
-    let interrupted = match (&ran.error, signal_received()) {
-        (Some(RunError::Stopped { .. }), Some(signal)) => Some(signal),
-        _ => None,
-    };
-    let mut summary = Summary::new(
-        name.to_owned(),
-        scene.title.clone(),
-        (scene.selection.info, scene.selection.reason.clone()),
-        scene.integrator.method.name(),
-        &report,
-        &names,
-    );
-    summary.interrupted = interrupted.is_some();
-    if interrupted.is_none() {
-        summary.error = ran.error.as_ref().map(RunError::to_string);
-    }
-    let measures = family_measures(scene, &columns);
-    for (key, value) in &measures {
-        match value {
-            Ok(value) => {
-                summary.extra.insert((*key).into(), Extra::Number(*value));
-            }
-            Err(why) => summary.warnings.push(format!("{key} is not given: {why}")),
-        }
-    }
-    if let Some(case) = case {
-        let values = (case.values.iter())
-            .map(|(key, value)| (key.clone(), toml_to_json(value)))
-            .collect();
-        let index = case.index;
-        summary
-            .extra
-            .insert("case".into(), Extra::Case { index, values });
-    }
-    add_stop(scene, &report, &mut summary);
-    let summary_path = out.join("summary.json");
-    summary
-        .write(&summary_path)
-        .with_context(|| format!("writing {}", summary_path.display()))?;
-    let mut files = vec![csv_path, summary_path];
-    let mut not_drawn = Vec::new();
-    // A plot needs two rows; a run stopped at its start has at most one.
-    if columns.time.len() >= 2 {
-        // A sweep case's plots say its values; its summary keeps the scene's title exactly
-        // and says them under "case".
-        let title = match case {
-            Some(case) => format!("{} — {}", scene.title, case.label()),
-            None => scene.title.clone(),
-        };
-        let (plots, left_out) = super::plots::write(scene, &title, &columns, out)?;
-        files.extend(plots);
-        not_drawn = left_out;
-        files.push(super::view::write(scene, &columns, out)?);
-    }
-    if let Some(signal) = interrupted {
-        let kept = format!(
-            "the run stopped at t = {} s of {} s; {} holds it up to there: every row in \
-             trajectory.csv, summary.json (\"interrupted\": true) and the plots",
-            Short(report.final_time),
-            Short(scene.integrator.end_time),
-            out.display()
-        );
-        return Err(Interrupted { signal, kept }.into());
-    }
-    if let Some(error) = ran.error {
-        let kept = match columns.time.len() {
-            0 => format!(
-                "{name} stopped at its start; {} holds its summary.json",
-                out.display()
-            ),
-            _ => format!(
-                "{name} stopped early; {} holds its rows up to t = {} s, summary.json and the \
-                 plots",
-                out.display(),
-                Short(report.final_time)
-            ),
-        };
-        return Err(anyhow::Error::new(error).context(kept));
-    }
-    Ok(Outcome {
-        report,
-        files,
-        not_drawn,
-        measures,
-    })
-}
-
-/// What a scene with a stop condition adds to its summary: the condition, and the time it
-/// ended the run (`null` if it never held before the end time).
-fn add_stop(scene: &Scene, report: &Report, summary: &mut Summary) {
-    if let Some(condition) = &scene.stop {
-        let extra = &mut summary.extra;
-        extra.insert("stop_when".into(), Extra::Text(condition.text.clone()));
-        extra.insert("stopped_at".into(), Extra::Time(report.stopped_at));
-    }
-}
-
-/// The figures a family adds to its summary and its sweep's table, by key.
-fn family_measure_keys(scene: &Scene) -> &'static [&'static str] {
-    match scene.body {
-        Body::Pendulum(_) => &["period_s"],
-        _ => &[],
-    }
-}
-
-/// The family's figures: the pendulum's period, measured from the trajectory by the swing
-/// test's own measurement ([`eom::swing::measure_period`]); where the run gives none (fewer
-/// than two swings), why.
-fn family_measures(scene: &Scene, columns: &Columns) -> Vec<(&'static str, Result<f64, String>)> {
-    family_measure_keys(scene)
-        .iter()
-        .map(|&key| {
-            let value = match key {
-                "period_s" => eom::swing::measure_period(&columns.time, &columns.state[0])
-                    .map_err(|e| e.to_string()),
-                _ => Err(format!("{key} is not a figure of this family")),
-            };
-            (key, value)
-        })
-        .collect()
-}
-
-/// A swept value as JSON: TOML's numbers, strings, booleans and arrays as they are.
-fn toml_to_json(value: &toml::Value) -> serde_json::Value {
-    serde_json::to_value(value).unwrap_or(serde_json::Value::Null)
 }
 
 /// A progress bar on a terminal for runs longer than about a second; none otherwise.
@@ -663,91 +476,6 @@ pub(super) fn progress_bar(end_time: f64) -> impl FnMut(f64) + 'static {
     move |t| progress.tick_to(t)
 }
 
-fn print_outcome(scene: &Scene, outcome: &Outcome, out: &Path) {
-    let info = scene.selection.info;
-    let (ops, full) = (info.operations, info.full_variant().operations);
-    let report = &outcome.report;
-    println!(
-        "{}: ran {} ({})",
-        printable(&scene.title),
-        info.name,
-        scene.selection.reason
-    );
-    if full.arithmetic() != ops.arithmetic() {
-        println!(
-            "  {} arithmetic operations per call, against {} for {}",
-            ops.arithmetic(),
-            full.arithmetic(),
-            info.full_variant().name
-        );
-    }
-    println!(
-        "  {}: {} steps ({} rejected), {} rhs calls, {:.3} s",
-        scene.integrator.method.name(),
-        report.steps,
-        report.rejected,
-        report.rhs_evals,
-        report.wall_seconds
-    );
-    if let Some(drift) = report.energy_drift {
-        println!(
-            "  energy drift {drift:.2e} (largest |E − E₀| over the rows, relative to max(|E₀|, largest T))"
-        );
-    }
-    if let (Some(t), Some(condition)) = (report.stopped_at, &scene.stop) {
-        println!(
-            "  stopped at t = {} s, where `{condition}` first held (summary.json: stopped_at, every digit)",
-            Short(t)
-        );
-    }
-
-    println!("  wrote into {}:", shell_path(out));
-    for file in &outcome.files {
-        println!(
-            "    {}",
-            file.file_name()
-                .map_or_else(String::new, |f| f.to_string_lossy().into_owned())
-        );
-    }
-    for reason in &outcome.not_drawn {
-        println!("    ({reason})");
-    }
-    if let Some(view) = outcome
-        .files
-        .iter()
-        .find(|f| f.extension().is_some_and(|e| e == "html"))
-    {
-        println!("  open {} in a browser to see the run", shell_path(view));
-    }
-}
-
-/// Runs every case of a sweep in parallel and writes `sweep.csv`.
-fn run_sweep(
-    scenes: &[(TableCase, Scene)],
-    name: &str,
-    out: &Path,
-    shard: Option<(usize, usize)>,
-) -> Result<()> {
-    let outcomes: Vec<Result<Outcome>> = scenes
-        .par_iter()
-        .map(|(case, scene)| {
-            if signal_received().is_some() {
-                bail!("not run: the sweep was interrupted");
-            }
-            let folder = out.join(case_folder(case.index));
-            writable_folder(&folder)?;
-            run_case(scene, name, &folder, false, Some(case))
-        })
-        .collect();
-    let table = sweep_table(scenes, &outcomes);
-    let failures: Vec<(usize, Option<String>)> = scenes
-        .iter()
-        .zip(&outcomes)
-        .map(|((case, _), outcome)| (case.index, outcome.as_ref().err().map(|e| format!("{e:#}"))))
-        .collect();
-    finish_sweep(name, out, shard, &table, &failures)
-}
-
 /// Writes a sweep's table (any family's) and says how it went: how many cases ran and
 /// failed, each failure, and, after a signal, what was kept.
 fn finish_sweep(
@@ -785,66 +513,6 @@ fn finish_sweep(
         bail!("{failed} of {cases} cases failed");
     }
     Ok(())
-}
-
-/// `case, <swept keys…>, variant, steps, rhs_evals, wall_seconds, energy_drift, <final
-/// state…>, error`, one line per case.
-fn sweep_table(scenes: &[(TableCase, Scene)], outcomes: &[Result<Outcome>]) -> String {
-    let Some((first, scene)) = scenes.first() else {
-        return String::new();
-    };
-    let mut header = vec!["case".to_owned()];
-    header.extend(first.values.iter().map(|(k, _)| k.clone()));
-    header.extend(
-        [
-            "variant",
-            "steps",
-            "rhs_evals",
-            "wall_seconds",
-            "energy_drift",
-        ]
-        .map(String::from),
-    );
-    let measures = family_measure_keys(scene);
-    header.extend(measures.iter().map(|key| (*key).to_owned()));
-    header.extend(scene.state_names().iter().map(|n| format!("final_{n}")));
-    header.push("error".into());
-    let mut writer = csv::Writer::from_writer(Vec::new());
-    let _ = writer.write_record(&header);
-    for ((case, scene), outcome) in scenes.iter().zip(outcomes) {
-        let mut row = vec![case.index.to_string()];
-        row.extend(case.values.iter().map(|(_, v)| v.to_string()));
-        row.push(scene.selection.info.name.to_owned());
-        match outcome {
-            Ok(Outcome {
-                report: r,
-                measures,
-                ..
-            }) => {
-                row.extend([
-                    r.steps.to_string(),
-                    r.rhs_evals.to_string(),
-                    number_text(r.wall_seconds),
-                ]);
-                row.push(r.energy_drift.map_or_else(String::new, number_text));
-                row.extend((measures.iter()).map(|(_, v)| {
-                    v.as_ref()
-                        .map_or_else(|_| String::new(), |v| number_text(*v))
-                }));
-                row.extend(r.final_state.iter().map(|x| number_text(*x)));
-                row.push(String::new());
-            }
-            Err(error) => {
-                row.extend(std::iter::repeat_n(
-                    String::new(),
-                    4 + measures.len() + scene.state_names().len(),
-                ));
-                row.push(format!("{error:#}"));
-            }
-        }
-        let _ = writer.write_record(&row);
-    }
-    String::from_utf8(writer.into_inner().unwrap_or_default()).unwrap_or_default()
 }
 
 #[cfg(test)]

@@ -8,7 +8,7 @@
 //! one rudder angle gets its plot beside the table, drawn from the table alone so that a
 //! whole run and the merge of its shards draw the same.
 
-use super::run::{run_into, signal_received};
+use super::run::{failed, run_into, signal_received};
 use anyhow::Result;
 use eom::kinds::Kind;
 use eom::scene::reference::keys;
@@ -17,6 +17,15 @@ use eom_cli::plots::curves::{Curve, Curves, write_curves};
 use rayon::prelude::*;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
+
+/// One case as the table says it: its cells, and why it failed if it did.
+struct CaseRun {
+    /// Each column after the case and its values, with its value (none for a case that did
+    /// not run).
+    cells: Vec<(String, String)>,
+    /// Why it failed or stopped, if it did.
+    error: Option<String>,
+}
 
 /// Runs every case in parallel, each into the folder `folder_of` makes for its index, and
 /// returns the sweep's table (`case, <swept keys…>, <cells…>, error`) and each case's error,
@@ -27,36 +36,59 @@ pub fn run_cases(
     name: &str,
     folder_of: impl Fn(usize) -> Result<PathBuf> + Sync,
 ) -> (String, Vec<(usize, Option<String>)>) {
-    let runs: Vec<Result<Vec<(String, String)>>> = cases
+    let runs: Vec<CaseRun> = cases
         .par_iter()
         .map(|(case, scene)| {
-            if signal_received().is_some() {
-                anyhow::bail!("not run: the sweep was interrupted");
-            }
-            let folder = folder_of(case.index)?;
-            let finished = run_into(scene.as_ref(), name, (&folder, false))?;
-            Ok(finished.cells(case))
+            run_case(scene.as_ref(), case, name, &folder_of).unwrap_or_else(|error| CaseRun {
+                cells: Vec::new(),
+                error: Some(format!("{error:#}")),
+            })
         })
         .collect();
-    let failures = cases
-        .iter()
-        .zip(&runs)
-        .map(|((case, _), run)| (case.index, run.as_ref().err().map(|e| format!("{e:#}"))))
+    let failures = (cases.iter().zip(&runs))
+        .map(|((case, _), run)| (case.index, run.error.clone()))
         .collect();
     (table(cases, &runs), failures)
 }
 
-/// The columns after the case and its values, from the first case that ran (every case has
-/// the same manoeuvres, and names their columns alike).
-fn columns(runs: &[Result<Vec<(String, String)>>]) -> Vec<String> {
-    let first = runs.iter().find_map(|run| run.as_ref().ok());
-    (first.into_iter().flatten())
+/// Runs one case into its folder: its cells, and why it failed or stopped where it kept what
+/// it ran.
+fn run_case(
+    scene: &dyn Kind,
+    case: &TableCase,
+    name: &str,
+    folder_of: impl Fn(usize) -> Result<PathBuf>,
+) -> Result<CaseRun> {
+    if signal_received().is_some() {
+        anyhow::bail!("not run: the sweep was interrupted");
+    }
+    let folder = folder_of(case.index)?;
+    let (finished, _) = run_into(scene, name, (&folder, false, Some(case)))?;
+    let error = match finished.stopped() {
+        true => Some(format!(
+            "interrupted: {}, in {}",
+            finished.kept(),
+            folder.display()
+        )),
+        false => failed(finished.as_ref(), name, &folder).map(|error| format!("{error:#}")),
+    };
+    Ok(CaseRun {
+        cells: finished.cells(case),
+        error,
+    })
+}
+
+/// The columns after the case and its values, from the first case that gave cells (every
+/// case of a scene names its columns alike).
+fn columns(runs: &[CaseRun]) -> Vec<String> {
+    let first = runs.iter().find(|run| !run.cells.is_empty());
+    (first.into_iter().flat_map(|run| &run.cells))
         .map(|(column, _)| column.clone())
         .collect()
 }
 
 /// `case, <swept keys…>, <cells…>, error`, one line per case.
-fn table(cases: &[(TableCase, Box<dyn Kind>)], runs: &[Result<Vec<(String, String)>>]) -> String {
+fn table(cases: &[(TableCase, Box<dyn Kind>)], runs: &[CaseRun]) -> String {
     let Some((first, _)) = cases.first() else {
         return String::new();
     };
@@ -70,23 +102,13 @@ fn table(cases: &[(TableCase, Box<dyn Kind>)], runs: &[Result<Vec<(String, Strin
     for ((case, _), run) in cases.iter().zip(runs) {
         let mut row = vec![case.index.to_string()];
         row.extend(case.values.iter().map(|(_, v)| v.to_string()));
-        match run {
-            Ok(cells) => {
-                let mut values: BTreeMap<&str, &str> = (cells.iter())
-                    .map(|(k, v)| (k.as_str(), v.as_str()))
-                    .collect();
-                row.extend(
-                    columns
-                        .iter()
-                        .map(|c| values.remove(c.as_str()).unwrap_or_default().to_owned()),
-                );
-                row.push(String::new());
-            }
-            Err(error) => {
-                row.extend(std::iter::repeat_n(String::new(), columns.len()));
-                row.push(format!("{error:#}"));
-            }
-        }
+        let mut values: BTreeMap<&str, &str> = (run.cells.iter())
+            .map(|(k, v)| (k.as_str(), v.as_str()))
+            .collect();
+        row.extend(
+            (columns.iter()).map(|c| values.remove(c.as_str()).unwrap_or_default().to_owned()),
+        );
+        row.push(run.error.clone().unwrap_or_default());
         let _ = writer.write_record(&row);
     }
     String::from_utf8(writer.into_inner().unwrap_or_default()).unwrap_or_default()

@@ -22,53 +22,33 @@ use eom::Short;
 use eom::models::state_with_unit;
 use eom::models::{Family, Kinematics, state_unit};
 use eom::nalgebra::{Matrix3, UnitQuaternion, Vector3};
-use eom::output::drawing::{Hull, PlaneManoeuvre, SpaceManoeuvre};
+use eom::output::drawing::{BodyShape, Hull, PlaneManoeuvre, RigidBody, SpaceManoeuvre};
 use eom::output::trajectory::Columns;
-use eom::scene::SceneLoads;
-use eom::scene::{Body, Scene};
 use eom_cli::view::{
     CameraTarget, Shape, SpaceAxes, Vectors, ViewInput, box_sides, cylinder_size, write_view,
 };
 use std::path::{Path, PathBuf};
 
-/// Writes `view.html` of a catalog scene's run into `out`.
-pub fn write(scene: &Scene, columns: &Columns, out: &Path) -> Result<PathBuf> {
-    let names = scene.state_names();
-    let readout: Vec<(String, &[f64])> = names
-        .iter()
+/// Writes `view.html` of a rigid body's run into `out`.
+pub fn write(body: &RigidBody, kept: &Kept, out: &Path) -> Result<PathBuf> {
+    let columns = &kept.columns;
+    let readout: Vec<(String, &[f64])> = (kept.names.iter())
         .zip(&columns.state)
         .map(|(name, values)| (labelled(name), values.as_slice()))
         .collect();
-    let input = match (&scene.body, scene.selection.info.family) {
-        (Body::Spatial { mass, inertia }, _) => {
-            let kinematics = scene.selection.info.kinematics;
-            let water = in_water(&scene.loads);
-            let mut input = spatial(scene, columns, *mass, inertia.matrix(), kinematics, water);
-            input.readout = readout;
-            input
-        }
-        (
-            Body::Top {
-                mass, inertia, h, ..
-            },
-            _,
-        ) => {
-            let kinematics = scene.selection.info.kinematics;
-            let mut input = top(scene, columns, *mass, inertia.matrix(), *h, kinematics);
-            input.readout = readout;
-            input
-        }
-        (Body::Pendulum(p), _) => {
-            let mut input = pendulum(scene, columns, p.h(), p.i0(), p.mass());
-            input.readout = readout;
-            input
-        }
-        (Body::Planar { mass, izz, .. }, family) => {
-            let mut input = planar(scene, columns, family, *mass, *izz);
-            input.readout = readout;
-            input
-        }
+    let matrix = |rows: [[f64; 3]; 3]| Matrix3::from_fn(|r, c| rows[r][c]);
+    let mut input = match body.shape {
+        BodyShape::Spatial {
+            mass,
+            inertia,
+            in_water,
+            ..
+        } => spatial(body, columns, mass, matrix(inertia), in_water),
+        BodyShape::Top { mass, inertia, h } => top(body, columns, mass, matrix(inertia), h),
+        BodyShape::Pendulum { h, i0, mass } => pendulum(body, columns, h, i0, mass),
+        BodyShape::Planar { mass, izz } => planar(body, columns, mass, izz),
     };
+    input.readout = readout;
     write_view(out, &input).with_context(|| format!("writing the view into {}", out.display()))
 }
 
@@ -80,14 +60,9 @@ fn labelled(name: &str) -> String {
     }
 }
 
-/// Whether water acts on a spatial body: buoyancy, or any damping.
-fn in_water(loads: &SceneLoads) -> bool {
-    match loads {
-        SceneLoads::Spatial(l) => {
-            l.buoyancy != 0.0 || l.linear.iter().chain(&l.quadratic).any(|c| *c != 0.0)
-        }
-        _ => false,
-    }
+/// The body's initial state entry `k` (0 where it has none).
+fn initial(body: &RigidBody, k: usize) -> f64 {
+    body.initial.get(k).copied().unwrap_or(0.0)
 }
 
 /// A matrix as rows.
@@ -163,11 +138,10 @@ fn principal(inertia: Matrix3<f64>) -> ([f64; 3], Matrix3<f64>) {
 
 /// A spatial body: a box (or in water a cylinder) in its principal axes.
 fn spatial<'a>(
-    scene: &'a Scene,
+    body: &'a RigidBody,
     columns: &'a Columns,
     mass: f64,
     inertia: Matrix3<f64>,
-    kinematics: Option<Kinematics>,
     water: bool,
 ) -> ViewInput<'a> {
     let (moments, axes) = principal(inertia);
@@ -204,7 +178,7 @@ fn spatial<'a>(
     // A body whose G stays put (a free spin) trails the tip of the axis it spins most about.
     let trail = if path < 0.5 * size {
         let spin = (3..6)
-            .max_by(|&a, &b| scene.initial[a].abs().total_cmp(&scene.initial[b].abs()))
+            .max_by(|&a, &b| initial(body, a).abs().total_cmp(&initial(body, b).abs()))
             .unwrap_or(3)
             - 3;
         let mut tip = [0.0; 3];
@@ -222,12 +196,12 @@ fn spatial<'a>(
         notes.push("the blue plane is the water's surface, z = 0".into());
     }
     ViewInput {
-        title: &scene.title,
+        title: &body.title,
         shape,
         axes: SpaceAxes::ZDown,
         time: &columns.time,
         position,
-        attitude: quaternions(columns, kinematics, 9),
+        attitude: quaternions(columns, body.kinematics, 9),
         readout: Vec::new(),
         vectors: Some(Vectors {
             omega: [3, 4, 5],
@@ -277,12 +251,11 @@ fn vehicle(mass: f64, moments: [f64; 3], axes: Matrix3<f64>) -> Option<(Shape, f
 
 /// The heavy top: a cone from the pivot to a disc at G, Z up.
 fn top<'a>(
-    scene: &'a Scene,
+    body: &'a RigidBody,
     columns: &'a Columns,
     mass: f64,
     inertia: Matrix3<f64>,
     h: f64,
-    kinematics: Option<Kinematics>,
 ) -> ViewInput<'a> {
     let n = columns.time.len();
     let axial = inertia[(2, 2)];
@@ -294,12 +267,12 @@ fn top<'a>(
         Short(radius)
     )];
     ViewInput {
-        title: &scene.title,
+        title: &body.title,
         shape: Shape::Top { h, radius },
         axes: SpaceAxes::ZUp,
         time: &columns.time,
         position: [vec![0.0; n], vec![0.0; n], vec![0.0; n]],
-        attitude: quaternions(columns, kinematics, 3),
+        attitude: quaternions(columns, body.kinematics, 3),
         readout: Vec::new(),
         vectors: Some(Vectors {
             omega: [0, 1, 2],
@@ -315,7 +288,7 @@ fn top<'a>(
 
 /// The pendulum: a rod from the pivot down to G, swinging in the x–z plane.
 fn pendulum<'a>(
-    scene: &'a Scene,
+    body: &'a RigidBody,
     columns: &'a Columns,
     h: f64,
     i0: f64,
@@ -332,7 +305,7 @@ fn pendulum<'a>(
         Short(bob)
     )];
     ViewInput {
-        title: &scene.title,
+        title: &body.title,
         shape: Shape::Pendulum { length: h, bob },
         axes: SpaceAxes::ZDown,
         time: &columns.time,
@@ -349,13 +322,8 @@ fn pendulum<'a>(
 }
 
 /// A planar body: a hull about midship, else a plate.
-fn planar<'a>(
-    scene: &'a Scene,
-    columns: &'a Columns,
-    family: Family,
-    mass: f64,
-    izz: f64,
-) -> ViewInput<'a> {
+fn planar<'a>(body: &'a RigidBody, columns: &'a Columns, mass: f64, izz: f64) -> ViewInput<'a> {
+    let family = body.family;
     let (x, y, psi) = match family {
         Family::PlanarSpaceFixed => (0, 1, 2),
         _ => (3, 4, 5),
@@ -387,7 +355,7 @@ fn planar<'a>(
         (shape, false, note)
     };
     ViewInput {
-        title: &scene.title,
+        title: &body.title,
         shape,
         axes: SpaceAxes::ZDown,
         time: &columns.time,

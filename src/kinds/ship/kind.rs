@@ -85,11 +85,7 @@ impl kinds::Kind for ShipScene {
         name: &str,
         recorder: &mut dyn Recorder,
     ) -> Result<Box<dyn kinds::Finished + '_>, KindError> {
-        let finished = run_scene(self, name, recorder)?;
-        Ok(Box::new(ShipFinished {
-            scene: self,
-            finished,
-        }))
+        Ok(Box::new(run_scene(self, name, recorder)?))
     }
 
     fn linear(&self) -> Result<Linearised, KindError> {
@@ -116,31 +112,24 @@ impl kinds::Kind for ShipScene {
     }
 }
 
-/// A ship's run with its scene, for what the report and the sweep's line say of it.
-#[derive(Debug)]
-struct ShipFinished<'a> {
-    scene: &'a ShipScene,
-    finished: Finished,
-}
-
-impl kinds::Finished for ShipFinished<'_> {
+impl kinds::Finished for Finished<'_> {
     fn summary(&self) -> serde_json::Value {
-        serde_json::to_value(&self.finished.summary).unwrap_or_default()
+        serde_json::to_value(&self.summary).unwrap_or_default()
     }
 
     fn report(&self) -> String {
-        self.finished.report(self.scene)
+        Finished::report(self)
     }
 
     fn cells(&self, case: &TableCase) -> Vec<(String, String)> {
-        self.finished.cells(self.scene, case)
+        Finished::cells(self, case)
     }
 
     fn stopped(&self) -> bool {
-        self.finished.stopped
+        self.stopped
     }
 
-    fn runs_kept(&self) -> usize {
-        self.finished.outcomes.len()
+    fn kept(&self) -> String {
+        kinds::manoeuvres_kept(self.outcomes.len())
     }
 }

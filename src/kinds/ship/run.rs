@@ -65,7 +65,9 @@ pub fn shown<'a>(manoeuvre: &Manoeuvre, runs: &'a Runs) -> Option<&'a Outcome> {
 /// What a ship scene's run gave: its summary, each manoeuvre's runs (those finished before a
 /// stop was asked), the IMO criteria judged on them, and whether a stop was asked.
 #[derive(Debug, Clone)]
-pub struct Finished {
+pub struct Finished<'a> {
+    /// The scene that ran.
+    pub scene: &'a ShipScene,
     /// `summary.json`.
     pub summary: ShipSummary,
     /// Each manoeuvre's runs, in the scene's order.
@@ -76,18 +78,19 @@ pub struct Finished {
     pub stopped: bool,
 }
 
-impl Finished {
+impl Finished<'_> {
     /// The report as the command prints it: each manoeuvre's figures (a column per side), the
     /// spirals, the IMO criteria.
-    pub fn report(&self, scene: &ShipScene) -> String {
-        report(scene, &self.outcomes, &self.judged).unwrap_or_default()
+    pub fn report(&self) -> String {
+        report(self.scene, &self.outcomes, &self.judged).unwrap_or_default()
     }
 
     /// Each column of a ship sweep's table with its value in this run, in the table's order: each
     /// manoeuvre's figures (the worse side's, for one run to both), then each side's
     /// (`turn.port.tactical_diameter_m`), then each IMO criterion's value, verdict and sides; a
     /// manoeuvre's columns are named as [`manoeuvre_columns`] says.
-    pub fn cells(&self, scene: &ShipScene, case: &TableCase) -> Vec<(String, String)> {
+    pub fn cells(&self, case: &TableCase) -> Vec<(String, String)> {
+        let scene = self.scene;
         let text = |value: Option<f64>| value.map_or_else(String::new, |v| v.to_string());
         let mut cells = Vec::new();
         let names = manoeuvre_columns(
@@ -134,11 +137,11 @@ impl Finished {
 /// of a two-sided one, its rows to `recorder` under `manoeuvre` or `manoeuvre/side`; a run the
 /// recorder stops ends the scene's run, keeping the ones before it (a side finished before it
 /// too).
-pub fn run_scene(
-    scene: &ShipScene,
+pub fn run_scene<'a>(
+    scene: &'a ShipScene,
     name: &str,
     recorder: &mut dyn Recorder,
-) -> Result<Finished, ShipError> {
+) -> Result<Finished<'a>, ShipError> {
     let started = Instant::now();
     let model = ShipModel::new(&scene.table)?;
     let linear = LinearModel::closed_form(&scene.table);
@@ -213,6 +216,7 @@ pub fn run_scene(
         interrupted: stopped,
     };
     Ok(Finished {
+        scene,
         summary,
         outcomes,
         judged,
@@ -317,6 +321,7 @@ fn run_manoeuvre(
         columns: &names,
         expected_rows,
         end_time: manoeuvre.duration,
+        potential: false,
     };
     recorder.begin(start).map_err(not_recorded)?;
     let settings = (&scene.stepper, scene.every);

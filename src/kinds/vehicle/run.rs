@@ -37,7 +37,9 @@ pub struct Outcome {
 /// What a vehicle scene's run gave: its summary, each manoeuvre's outcome (those finished
 /// before a stop was asked), and whether a stop was asked.
 #[derive(Debug, Clone)]
-pub struct Finished {
+pub struct Finished<'a> {
+    /// The scene that ran.
+    pub scene: &'a VehicleScene,
     /// `summary.json`.
     pub summary: VehicleSummary,
     /// Each manoeuvre run, in the scene's order.
@@ -48,10 +50,10 @@ pub struct Finished {
 
 /// Runs every manoeuvre of `scene`, each from its trim, its rows to `recorder` under the
 /// manoeuvre's name; a manoeuvre the recorder stops ends the run, keeping the ones before it.
-pub fn run_scene(
-    scene: &VehicleScene,
+pub fn run_scene<'a>(
+    scene: &'a VehicleScene,
     recorder: &mut dyn Recorder,
-) -> Result<Finished, VehicleError> {
+) -> Result<Finished<'a>, VehicleError> {
     let mut manoeuvres = BTreeMap::new();
     let mut outcomes = Vec::new();
     let mut stopped = false;
@@ -76,6 +78,7 @@ pub fn run_scene(
         interrupted: stopped,
     };
     Ok(Finished {
+        scene,
         summary,
         outcomes,
         stopped,
@@ -107,6 +110,7 @@ fn run_manoeuvre(
         columns: &names,
         expected_rows,
         end_time: manoeuvre.duration,
+        potential: false,
     };
     recorder
         .begin(start)
@@ -180,11 +184,11 @@ fn run_manoeuvre(
     })
 }
 
-impl Finished {
+impl Finished<'_> {
     /// The report as the command prints it: the cruise, each manoeuvre's figures, the folded
     /// table against its added mass.
-    pub fn report(&self, scene: &VehicleScene) -> String {
-        report(scene, &self.summary, &self.outcomes).unwrap_or_default()
+    pub fn report(&self) -> String {
+        report(self.scene, &self.summary, &self.outcomes).unwrap_or_default()
     }
 
     /// Each manoeuvre's figures, `<manoeuvre>.<figure>`: a trial's (`turning_circle.
@@ -192,7 +196,8 @@ impl Finished {
     /// overshoot`), or, for fin steps, each step's end (`rudder_4.step_1.heading_deg`); then
     /// how far they moved when refined and the steps taken. A figure a trial gives as a list
     /// (a zig-zag's overshoot times) stays in summary.json.
-    pub fn cells(&self, scene: &VehicleScene, case: &TableCase) -> Vec<(String, String)> {
+    pub fn cells(&self, case: &TableCase) -> Vec<(String, String)> {
+        let scene = self.scene;
         let names = scene.manoeuvres.iter().map(|m| m.name.as_str());
         let columns = manoeuvre_columns(case, names, &NAMED_FROM);
         let mut cells = Vec::new();
