@@ -130,7 +130,7 @@ impl Tradeoff {
         }
     }
 
-    /// The largest end-state difference of DOP853 at [`REFERENCE_CHECKS`] from the reference;
+    /// The largest end-state difference of DOP853 at rtol 1e-11 and 1e-12 from the reference;
     /// `None` for an exact reference, or where those runs failed.
     pub fn reference_spread(&self) -> Option<f64> {
         if !self.reference.starts_with("DOP853") {

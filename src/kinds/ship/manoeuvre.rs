@@ -28,8 +28,8 @@ use super::propulsion::RateCommand;
 use super::side::Side;
 use super::spiral::{self, Progress, ReverseSpiral, Spiral, SpiralCurve};
 use super::steady::steady_turns;
-use crate::integrate::segment::{self, Hooks, add};
-use crate::integrate::{IntegrateError, OdeSystem, Reached, RowClock, Stats, Stepper};
+use crate::integrate::segment::{self, add};
+use crate::integrate::{IntegrateError, OdeSystem, RowClock, Stats, Stepper};
 use crate::manoeuvring::course::Course;
 use crate::manoeuvring::steering::{Rudder, Series};
 use crate::models::{Driven, Loads, Model};
@@ -461,12 +461,7 @@ fn run_error(error: IntegrateError, stepper: &Stepper) -> ShipError {
 
 /// What one stretch of a run gave: where it ended, its cost, the state after each accepted
 /// step, and the watch whose event ended it, if one did.
-struct Stretch {
-    reached: Result<Reached<f64, 8>, IntegrateError>,
-    stats: Stats,
-    steps: Vec<(f64, DriveState)>,
-    fired: Option<Watch>,
-}
+type Stretch = segment::Watched<Watch, 8>;
 
 /// The run's moving parts: the command, what it watches for, what it has seen.
 struct Driver<'a> {
@@ -529,47 +524,17 @@ impl<'a> Driver<'a> {
             Watch::RateLimit => steering.rate_margin(t, y[2], y[6]).unwrap_or(0.0),
             other => self.g(other, y),
         };
-        let start: Vec<f64> = watches.iter().map(|w| g(*w, a, &y_a)).collect();
-        // Whether `watch`, at g0 when the stretch began, has changed its sign at (t, y).
-        let moved = |watch: Watch, g0: f64, t: f64, y: &DriveState| {
-            g0 != 0.0 && g(watch, t, y).signum() != g0.signum()
-        };
-        let changed = |t: f64, y: &DriveState| -> Vec<Watch> {
-            (watches.iter().zip(&start))
-                .filter(|(w, g0)| moved(**w, **g0, t, y))
-                .map(|(w, _)| *w)
-                .collect()
-        };
-        // Asked after every step: no list made.
-        let stop = |t: f64, y: &DriveState| {
-            (watches.iter().zip(&start)).any(|(w, g0)| moved(*w, *g0, t, y))
-        };
-        let mut steps = Vec::new();
-        let hooks = Hooks {
-            check: &mut |t, y: &DriveState| {
-                steps.push((t, *y));
-                true
-            },
-            stop: (!watches.is_empty()).then_some(&stop as &dyn Fn(f64, &DriveState) -> bool),
-            emit: &mut |t, y: &DriveState| observe(&self.sample(t, y)),
-            // A rudder without a lag jumps at a schedule's instant and at an event: the rows
-            // there show the state after the jump (the run writes them).
-            row_at_end: b >= self.manoeuvre.duration,
-            row_at_stop: false,
-        };
-        let (reached, stats) = segment::advance(stepper, &system, (a, y_a, b), rows, hooks);
-        // The watch that ended the stretch: of those whose sign has changed, the one nearest
-        // its zero, where two changed at once.
-        let fired = reached.as_ref().ok().filter(|r| r.stopped).and_then(|r| {
-            let nearness = |w: &Watch| g(*w, r.t, &r.state).abs();
-            (changed(r.t, &r.state).into_iter()).min_by(|a, b| nearness(a).total_cmp(&nearness(b)))
-        });
-        Stretch {
-            reached,
-            stats,
-            steps,
-            fired,
-        }
+        // A rudder without a lag jumps at a schedule's instant and at an event: the rows there
+        // show the state after the jump (the run writes them).
+        let row_at_end = b >= self.manoeuvre.duration;
+        let emit = &mut |t, y: &DriveState| observe(&self.sample(t, y));
+        segment::advance_watching(
+            (stepper, &system),
+            (a, y_a, b),
+            rows,
+            (&watches, g),
+            (emit, row_at_end),
+        )
     }
 
     /// The watched function's value at `y`.

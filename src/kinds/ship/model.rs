@@ -32,7 +32,7 @@ use std::sync::Arc;
 pub const STATE: [&str; 7] = ["u", "v", "r", "X", "Y", "psi", "delta"];
 
 /// The inputs: the rudder's rate δ̇ (rad/s), which the steering gear sets
-/// ([`super::rudder`]), and the propeller rate n (rev/s), which the engine's command sets
+/// ([`crate::manoeuvring::steering`]), and the propeller rate n (rev/s), which the engine's command sets
 /// ([`super::propulsion`]; read only by a ship with a propulsion model).
 pub const INPUTS: [&str; 2] = ["delta_rate", "n"];
 

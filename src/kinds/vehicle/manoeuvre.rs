@@ -15,7 +15,7 @@ use super::fins::{FinSteps, Fins, Steering};
 use super::model::VehicleModel;
 use super::trial::{Progress, Trial, Watch};
 use super::trim::{Held, Trim};
-use crate::integrate::segment::{self, Hooks, add};
+use crate::integrate::segment::{self, add};
 use crate::integrate::{IntegrateError, RowClock, Stats, Stepper};
 use crate::models::Model;
 use nalgebra::SVector;
@@ -306,50 +306,31 @@ fn stretch(
             .filter(|&fin| steering.rate_margin(fin, &y_a.data.0[0]).is_some())
             .map(Kink::RateLimit),
     );
-    let g = |watch: Kink, y: &VehicleState| match watch {
+    let g = |watch: Kink, _: f64, y: &VehicleState| match watch {
         Kink::Trial(watch) => (progress.as_ref()).map_or(0.0, |p| p.g(watch, &y.data.0[0])),
         Kink::RateLimit(fin) => steering.rate_margin(fin, &y.data.0[0]).unwrap_or(0.0),
     };
-    let start: Vec<f64> = watches.iter().map(|w| g(*w, &y_a)).collect();
-    let changed = |y: &VehicleState| -> Vec<Kink> {
-        (watches.iter().zip(&start))
-            .filter(|(w, g0)| **g0 != 0.0 && g(**w, y).signum() != g0.signum())
-            .map(|(w, _)| *w)
-            .collect()
-    };
-    let stop = |_: f64, y: &VehicleState| !changed(y).is_empty();
     let sample = |t: f64, y: &VehicleState| Sample {
         t,
         state: y.data.0[0],
         commands: steering.saturated(),
     };
-    let mut steps: Vec<(f64, [f64; 15])> = Vec::new();
-    let hooks = Hooks {
-        check: &mut |t, y: &VehicleState| {
-            steps.push((t, y.data.0[0]));
-            true
-        },
-        stop: (!watches.is_empty()).then_some(&stop as &dyn Fn(f64, &VehicleState) -> bool),
-        emit: &mut |t, y: &VehicleState| observe(&sample(t, y)),
-        // A fin without a lag jumps at a change: the row there shows it after the jump.
-        row_at_end: last,
-        // An event may reverse a fin: the run writes the row there, after it.
-        row_at_stop: false,
-    };
-    let (reached, stats) = segment::advance(stepper, &system, (a, y_a, b), rows, hooks);
-    // The watch that ended the stretch: of those whose sign has changed, the one nearest its
-    // zero, where two changed at once.
-    let fired = reached.as_ref().ok().filter(|r| r.stopped).and_then(|r| {
-        let nearness = |w: &Kink| g(*w, &r.state).abs();
-        (changed(&r.state).into_iter()).min_by(|a, b| nearness(a).total_cmp(&nearness(b)))
-    });
+    // A fin without a lag jumps at a change: the row there shows it after the jump.
+    let emit = &mut |t, y: &VehicleState| observe(&sample(t, y));
+    let watched = segment::advance_watching(
+        (stepper, &system),
+        (a, y_a, b),
+        rows,
+        (&watches, g),
+        (emit, last),
+    );
     command.progress = progress.map(|mut p| {
-        for (t, state) in &steps {
-            p.record(*t, state);
+        for (t, state) in &watched.steps {
+            p.record(*t, &state.data.0[0]);
         }
         p
     });
-    (reached, stats, fired)
+    (watched.reached, watched.stats, watched.fired)
 }
 
 /// The instants within the run where the steps or the setpoints change.

@@ -66,7 +66,7 @@ pub struct KirchhoffRow {
 
 impl KirchhoffRow {
     /// A row of the generator's comparison, the implied value and the difference to twelve
-    /// significant digits ([`twelve_digits`]).
+    /// significant digits.
     pub fn new(row: &FoldedComparison) -> Self {
         KirchhoffRow {
             load: row.load.letter().to_string(),
