@@ -93,10 +93,11 @@ impl AnyScene {
         }
     }
 
-    /// The kind's name: `catalog` for a catalog body's, else the registry's (`ship`).
+    /// The kind's name, as [`Kind::kind`] says it: `body` for a catalog body's, else the
+    /// registry's (`ship`).
     pub fn kind(&self) -> &'static str {
         match self {
-            AnyScene::Catalog(_) => "catalog",
+            AnyScene::Catalog(scene) => scene.kind(),
             AnyScene::Kind(scene) => scene.kind(),
         }
     }

@@ -1,6 +1,6 @@
-//! A sweep of a scene with manoeuvres, whatever its kind: every case run in parallel into its
-//! own folder (`case-NNNN/`, holding what a single run of it holds), and one line per case in
-//! the sweep's table, the case's swept values then its figures by column name.
+//! A sweep of a scene of any kind (a body's, a ship's, a vehicle's): every case run in
+//! parallel into its own folder (`case-NNNN/`, holding what a single run of it holds), and one
+//! line per case in the sweep's table, the case's swept values then its figures by column name.
 //!
 //! What a kind gives is its run and its cells ([`eom::kinds::Finished::cells`]); the running,
 //! the order of the columns, the failed cases and the table are written once here, so that a
