@@ -361,7 +361,7 @@ fn the_ten_degree_turn_converges_and_port_and_starboard_mirror() {
     assert!(steady.yaw_rate_deg_s < -1.0, "{steady:?}");
     // Converged: half the step moves no figure by more than 1e-6 (RK4 at 0.02 s).
     let mut finer = scene.clone();
-    finer.stepper = scene.stepper.refined();
+    finer.stepper = scene.stepper.refined(scene.every);
     let refined = StepFigures::of(&run_with(&finer, &scene.model, turn, start));
     let difference = largest_difference(&figures, &refined);
     println!("half-step difference {difference:e}");

@@ -280,7 +280,12 @@ fn the_mariners_figures_are_converged_at_the_scenes_step() {
     let model = ShipModel::new(&scene.table).unwrap();
     for manoeuvre in &scene.manoeuvres {
         let (_, at_step) = run_to_end(&scene, &model, manoeuvre, &scene.stepper);
-        let (_, at_half) = run_to_end(&scene, &model, manoeuvre, &scene.stepper.refined());
+        let (_, at_half) = run_to_end(
+            &scene,
+            &model,
+            manoeuvre,
+            &scene.stepper.refined(scene.every),
+        );
         assert!(
             at_step.notes.is_empty(),
             "{}: {:?}",
@@ -873,7 +878,7 @@ fn the_rate_limit_is_an_event_of_the_run() {
         .find(|m| m.name == "zigzag_10_10")
         .unwrap();
     let (_, at_step) = run_to_end(&scene, &model, zigzag, &scene.stepper);
-    let (_, at_half) = run_to_end(&scene, &model, zigzag, &scene.stepper.refined());
+    let (_, at_half) = run_to_end(&scene, &model, zigzag, &scene.stepper.refined(scene.every));
     for (key, value) in &at_step.values {
         let (a, b) = (value.unwrap(), at_half.get(key).unwrap());
         assert!(
@@ -1444,7 +1449,7 @@ fn a_crash_stop_ends_where_the_ship_stops_and_is_judged() {
     assert!((track - head).abs() < 1e-6 && get(&figures, "lateral_deviation_m") < 1e-6);
     let time = get(&figures, "time_to_stop_s");
     assert!((last.t - time).abs() < 1e-9, "{} against {time}", last.t);
-    let refined = scene.stepper.refined();
+    let refined = scene.stepper.refined(scene.every);
     let (_, finer) = run_to_end(&scene, &model, manoeuvre, &refined);
     assert!((get(&finer, "track_reach_m") - track).abs() < 0.1);
     assert!((get(&finer, "time_to_stop_s") - time).abs() < 0.01);

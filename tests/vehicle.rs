@@ -153,7 +153,7 @@ fn remus_turns_at_the_thesis_s_rate_under_four_degrees_of_rudder() {
     // Converged: half the step moves no figure by more than 1e-6 (RK4's error at 0.01 s is
     // of order h⁴ = 1e-8 times the motion's fourth derivative).
     let mut finer = scene.clone();
-    finer.stepper = scene.stepper.refined();
+    finer.stepper = scene.stepper.refined(scene.every);
     let refined = StepFigures::of(&run_with(&finer, &scene.model, &scene.manoeuvres[0], start));
     let difference = largest_difference(&figures, &refined);
     println!("half-step difference {difference:e}");
@@ -753,7 +753,7 @@ fn the_autopilots_take_remus_to_a_new_heading_and_depth_and_hold_them() {
         &scene.fins,
         m,
         start,
-        (&scene.stepper.refined(), scene.every),
+        (&scene.stepper.refined(scene.every), scene.every),
         |_| true,
     )
     .unwrap();
@@ -901,7 +901,7 @@ fn a_turning_circle_s_figures_are_read_at_its_events_and_once_it_has_settled() {
         &scene.fins,
         m,
         start,
-        (&scene.stepper.refined(), scene.every),
+        (&scene.stepper.refined(scene.every), scene.every),
         |_| true,
     )
     .unwrap();

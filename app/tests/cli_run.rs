@@ -410,6 +410,48 @@ fn an_output_folder_that_holds_a_run_is_kept_without_force() {
     assert!(forced.status.success());
 }
 
+/// The pendulum's period runs again refined, and the summary says how far it moved: with
+/// DOP853 at tolerances / 100 (`tolerance_difference`), with RK4 at half the step actually
+/// taken (`half_step_difference`), which shrinks as the step does.
+#[test]
+fn the_pendulum_s_period_says_how_far_it_moves_when_the_run_is_refined() {
+    let dir = folder("pendulum_refined");
+    let text = std::fs::read_to_string(scene("pendulum.toml")).unwrap();
+    let adaptive = dir.join("adaptive");
+    run_scene("pendulum.toml", &adaptive);
+    let s = summary(&adaptive);
+    let moved = s["tolerance_difference"]["period_s"].as_f64().unwrap();
+    // DOP853 at 1e-11 keeps the phase to ~1e-9 s (the test above); a hundred times tighter
+    // moves the period by no more than that, and by something.
+    assert!(moved > 0.0 && moved < 1e-8, "{moved}");
+    assert!(s.get("half_step_difference").is_none(), "{s}");
+    let fixed = |step: f64, every: f64| -> f64 {
+        let path = dir.join(format!("rk4_{step}_{every}.toml"));
+        let text = text
+            .replace(
+                "method = \"dop853\"",
+                &format!("method = \"rk4\"\nstep = {step}"),
+            )
+            .replace("rtol = 1e-11\n", "")
+            .replace("atol = 1e-11\n", "")
+            .replace("every = 0.005", &format!("every = {every}"));
+        std::fs::write(&path, text).unwrap();
+        let out = dir.join(format!("rk4_{step}_{every}"));
+        let output = eom_run(&path, &out);
+        assert!(output.status.success(), "{output:?}");
+        let s = summary(&out);
+        assert!(s.get("tolerance_difference").is_none(), "{s}");
+        s["half_step_difference"]["period_s"].as_f64().unwrap()
+    };
+    // Rows every 5 ms cut a step of 20 ms to 5 ms: the refined run halves that, so the
+    // period moves (halving 20 ms alone would change nothing, and say 0).
+    assert!(fixed(0.02, 0.005) > 0.0);
+    // RK4 is of order 4: halving the step shrinks the difference about 16 times; 8 allows for
+    // a step not yet small enough for the order to show.
+    let (coarse, fine) = (fixed(0.02, 0.1), fixed(0.01, 0.1));
+    assert!(coarse > 8.0 * fine && fine > 0.0, "{coarse} then {fine}");
+}
+
 #[test]
 fn a_sweep_runs_every_case_and_shards_split_them() {
     let dir = folder("sweep");

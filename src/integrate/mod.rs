@@ -48,7 +48,7 @@ pub use euler::Euler;
 pub use lie_midpoint::{LieMidpoint, RigidRotation};
 pub use method::Method;
 pub use rk4::{Rk4, rk4_array, rk4_step};
-pub use segment::Stepper;
+pub use segment::{Stepper, half_the_step};
 pub use stats::Stats;
 pub use symplectic_euler::SymplecticEuler;
 

@@ -49,11 +49,12 @@ pub struct Stepper {
 }
 
 impl Stepper {
-    /// The same method made finer: half the step, or tolerances a hundred times tighter (the
-    /// check of a figure's convergence).
-    pub fn refined(&self) -> Self {
+    /// The same method made finer: half the step taken between rows `every` apart
+    /// ([`half_the_step`]), or tolerances a hundred times tighter (the check of a figure's
+    /// convergence).
+    pub fn refined(&self, every: f64) -> Self {
         let mut finer = self.clone();
-        finer.step = self.step.map(|h| h / 2.0);
+        finer.step = self.step.map(|h| half_the_step(h, every));
         if let Some(options) = finer.adaptive.as_mut() {
             options.rtol /= 100.0;
             options.atol /= 100.0;
@@ -69,6 +70,16 @@ impl Stepper {
             "half the step"
         }
     }
+}
+
+/// Half the step a fixed-step method takes with step `h` between rows `every` apart. It runs
+/// each interval between rows in equal steps of at most `h` (counted with the same slack as
+/// the fixed-step methods count them), so the step taken may be shorter than `h`: where `every` is
+/// shorter than `h`, halving `h` alone would change nothing, and a figure would seem to have
+/// converged. Where `h` divides `every`, this is `h / 2`.
+pub fn half_the_step(h: f64, every: f64) -> f64 {
+    let steps = ((every / h) * (1.0 - 1e-9)).ceil().max(1.0);
+    every / steps / 2.0
 }
 
 /// Where a stretch ended, and what it cost.
@@ -394,6 +405,25 @@ fn last_row<const N: usize>(
 mod tests {
     use super::*;
     use nalgebra::Vector1;
+
+    /// Half the step is half the one taken: `h / 2` to the bit where `h` divides the rows'
+    /// interval (the example scenes' steps and intervals), half the interval where the rows
+    /// are closer than `h`, and half the shortened step where `h` does not divide it.
+    #[test]
+    fn half_the_step_is_half_the_step_taken_between_rows() {
+        for (h, every) in [
+            (0.1, 1.0),
+            (0.2, 2.0),
+            (0.02, 0.5),
+            (0.01, 0.1),
+            (0.005, 0.005),
+        ] {
+            assert_eq!(half_the_step(h, every), h / 2.0, "h = {h}, every = {every}");
+        }
+        assert_eq!(half_the_step(0.02, 0.005), 0.0025);
+        // 1 s in steps of at most 0.3 s is four steps of 0.25 s.
+        assert_eq!(half_the_step(0.3, 1.0), 0.125);
+    }
 
     /// A stepper built by hand without its step or its tolerances is an error, not a panic;
     /// with them, a stretch of ẏ = 1 reaches its end with its rows on k·every.

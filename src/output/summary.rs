@@ -11,6 +11,10 @@
 //! `"stopped_at"` (the time it first held and ended the run, `null` if it never held);
 //! `final_time` and `final_state` are then where it stopped.
 //!
+//! A family that measures figures from its rows (the pendulum's `period_s`) runs again refined
+//! (half the step, or tolerances / 100) and says how far each moved, under
+//! `"half_step_difference"` or `"tolerance_difference"`, as a ship's manoeuvre does.
+//!
 //! A run that stopped early still has its summary: `"interrupted": true` after Ctrl-C, or
 //! `"error"` with the message of what stopped it; `final_time` and `final_state` are then its
 //! last row's.
@@ -58,8 +62,9 @@ pub struct Summary {
     /// What the run did not stop for but a reader should know.
     pub warnings: Vec<String>,
     /// What the family and the scene add, by name, written in the names' order: a family's
-    /// measures (a pendulum's measured period, a free body's |H| drift), a sweep's `case`, a
-    /// stop condition's `stop_when` and `stopped_at`.
+    /// measures (a pendulum's measured period) and how far they move when the run is refined
+    /// (`half_step_difference` or `tolerance_difference`), a sweep's `case`, a stop
+    /// condition's `stop_when` and `stopped_at`.
     #[serde(flatten)]
     pub extra: std::collections::BTreeMap<String, Extra>,
 }
@@ -74,6 +79,9 @@ pub enum Extra {
     Text(String),
     /// A time that may not have come: when the stop condition held (`null` if it never did).
     Time(Option<f64>),
+    /// How far each figure moved when the run was refined, by its key (`null` where the
+    /// refined run gave none).
+    Differences(std::collections::BTreeMap<String, Option<f64>>),
     /// The case of a sweep: its number and the values it set, by key.
     Case {
         /// The case's number, from 0.

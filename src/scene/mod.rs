@@ -121,6 +121,38 @@ pub struct IntegratorSpec {
 pub const LOOSE_TOLERANCE: f64 = 1e-3;
 
 impl IntegratorSpec {
+    /// The same method made finer, to check a figure's convergence: half the step, or
+    /// tolerances a hundred times tighter (as every kind refines its runs,
+    /// [`crate::integrate::Stepper::refined`]): the step halved is the one taken
+    /// between rows `every` apart ([`crate::integrate::half_the_step`]).
+    pub fn refined(&self, every: f64) -> Self {
+        let mut finer = *self;
+        finer.step = (self.step).map(|h| crate::integrate::half_the_step(h, every));
+        if let Some(options) = finer.adaptive.as_mut() {
+            options.rtol /= 100.0;
+            options.atol /= 100.0;
+        }
+        finer
+    }
+
+    /// How [`Self::refined`] refines, as a report says it: `half the step` or
+    /// `tolerances / 100`.
+    pub fn refinement(&self) -> &'static str {
+        match self.method.is_adaptive() {
+            true => "tolerances / 100",
+            false => "half the step",
+        }
+    }
+
+    /// The summary's key for how far a figure moves in the refined run:
+    /// `half_step_difference` or `tolerance_difference`, as a ship's manoeuvre says it.
+    pub fn refinement_key(&self) -> &'static str {
+        match self.method.is_adaptive() {
+            true => "tolerance_difference",
+            false => "half_step_difference",
+        }
+    }
+
     /// What the run should say about its own settings: a relative tolerance looser than
     /// [`LOOSE_TOLERANCE`] (rtol = 10 drifts a free body's energy by a third). The absolute
     /// tolerance is in the state's own units, so no one bound fits it.

@@ -30,6 +30,9 @@ pub struct BodyRun<'a> {
     pub rows: usize,
     /// The family's figures (the pendulum's period), each or why it is not given.
     pub measures: Vec<(&'static str, Result<f64, String>)>,
+    /// How far each figure moved when the run was refined (`None` where the refined run gave
+    /// none); empty where the run gave no figure, or did not end as it should.
+    pub refined: Vec<(&'static str, Option<f64>)>,
     /// `summary.json`.
     pub summary: Summary,
 }
@@ -128,6 +131,21 @@ pub(super) fn run_body<'a>(
             Err(why) => summary.warnings.push(format!("{key} is not given: {why}")),
         }
     }
+    let refined = match (&error, stopped) {
+        (None, false) => refined_differences(scene, &measures, &|| recorder.stop_asked()),
+        _ => (Vec::new(), Vec::new()),
+    };
+    let (refined, unrefined) = refined;
+    summary.warnings.extend(unrefined);
+    if !refined.is_empty() {
+        let differences = (refined.iter())
+            .map(|(k, d)| ((*k).to_owned(), *d))
+            .collect();
+        let key = scene.integrator.refinement_key();
+        summary
+            .extra
+            .insert(key.into(), Extra::Differences(differences));
+    }
     if let Some(condition) = &scene.stop {
         let extra = &mut summary.extra;
         extra.insert("stop_when".into(), Extra::Text(condition.text.clone()));
@@ -148,8 +166,65 @@ pub(super) fn run_body<'a>(
         stopped,
         rows,
         measures,
+        refined,
         summary,
     })
+}
+
+/// The rows of a refined run, kept for the figures alone; the run ends when the caller asks
+/// (Ctrl-C).
+struct Kept<'a> {
+    measured: (Vec<f64>, Vec<f64>),
+    stop_asked: &'a dyn Fn() -> bool,
+}
+
+impl Sink for Kept<'_> {
+    fn row(&mut self, row: &Row) -> bool {
+        self.measured.0.push(row.t);
+        (self.measured.1).push(row.state.first().copied().unwrap_or(f64::NAN));
+        !(self.stop_asked)()
+    }
+}
+
+/// How far each figure given moves when the scene runs again refined
+/// ([`crate::scene::IntegratorSpec::refined`]), by key; with a warning for each the refined
+/// run does not give, saying why. Nothing where the run gave no figure.
+fn refined_differences(
+    scene: &Scene,
+    measures: &[(&'static str, Result<f64, String>)],
+    stop_asked: &dyn Fn() -> bool,
+) -> (Vec<(&'static str, Option<f64>)>, Vec<String>) {
+    if !measures.iter().any(|(_, value)| value.is_ok()) {
+        return (Vec::new(), Vec::new());
+    }
+    let mut finer = scene.clone();
+    finer.integrator = scene.integrator.refined(scene.every);
+    let mut kept = Kept {
+        measured: Default::default(),
+        stop_asked,
+    };
+    let ran = run_reporting(&finer, &mut kept);
+    let refined_measures = self::measures(&finer, Some(&kept.measured));
+    let key = scene.integrator.refinement_key();
+    let mut warnings = Vec::new();
+    let differences = (measures.iter().zip(refined_measures))
+        .filter_map(|((name, value), (_, refined))| {
+            let value = value.as_ref().ok()?;
+            let difference = match (&ran.error, refined) {
+                (None, Ok(refined)) => Some((value - refined).abs()),
+                (Some(error), _) => {
+                    warnings.push(format!("{key} of {name} is not given: refined, {error}"));
+                    None
+                }
+                (None, Err(why)) => {
+                    warnings.push(format!("{key} of {name} is not given: {why}"));
+                    None
+                }
+            };
+            Some((*name, difference))
+        })
+        .collect();
+    (differences, warnings)
 }
 
 /// The family's figures from the rows kept for them; where the run gives none (a pendulum
@@ -260,6 +335,16 @@ impl BodyRun<'_> {
                 out,
                 "  energy drift {drift:.2e} (largest |E − E₀| over the rows, relative to max(|E₀|, largest T))"
             )?;
+        }
+        for ((key, value), (_, moved)) in self.measures.iter().zip(&self.refined) {
+            if let (Ok(value), Some(moved)) = (value, moved) {
+                writeln!(
+                    out,
+                    "  {key} = {}, which {} moves by {moved:.1e}",
+                    Short(*value),
+                    scene.integrator.refinement()
+                )?;
+            }
         }
         if let (Some(t), Some(condition)) = (report.stopped_at, &scene.stop) {
             writeln!(

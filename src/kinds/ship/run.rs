@@ -344,7 +344,7 @@ fn run_manoeuvre(
     // What the recorder could not keep comes first: the run stopped because of it.
     recorder.end().map_err(not_recorded)?;
     let done = done?;
-    let refined = (&scene.stepper.refined(), scene.every);
+    let refined = (&scene.stepper.refined(scene.every), scene.every);
     let refined = run(
         model,
         &scene.rudder,

@@ -140,7 +140,7 @@ fn run_manoeuvre(
         &scene.fins,
         manoeuvre,
         manoeuvre.trim.state,
-        (&scene.stepper.refined(), scene.every),
+        (&scene.stepper.refined(scene.every), scene.every),
         |_| !recorder.stop_asked(),
     )?;
     let steps = StepFigures::of(&done);
