@@ -24,7 +24,8 @@ pub struct BodyRun<'a> {
     pub report: Report,
     /// Why it ended before its end time, where it failed.
     pub error: Option<RunError>,
-    /// Whether the recorder stopped it before its end time (Ctrl-C).
+    /// Whether the recorder stopped it (Ctrl-C) before its end time, or while its refined
+    /// run checked its figures.
     pub stopped: bool,
     /// The rows the recorder took.
     pub rows: usize,
@@ -110,7 +111,7 @@ pub(super) fn run_body<'a>(
     } = recording;
     // A row the recorder could not keep is its error, before anything the run says.
     recorder.end().map_err(KindError::Output)?;
-    let stopped = matches!(ran.error, Some(RunError::Stopped { .. }));
+    let mut stopped = matches!(ran.error, Some(RunError::Stopped { .. }));
     let error = ran.error.filter(|_| !stopped);
     let measures = measures(scene, measured.as_ref());
     let mut summary = Summary::new(
@@ -121,7 +122,6 @@ pub(super) fn run_body<'a>(
         &ran.report,
         &names,
     );
-    summary.interrupted = stopped;
     summary.error = error.as_ref().map(RunError::to_string);
     for (key, value) in &measures {
         match value {
@@ -133,10 +133,13 @@ pub(super) fn run_body<'a>(
     }
     let refined = match (&error, stopped) {
         (None, false) => refined_differences(scene, &measures, &|| recorder.stop_asked()),
-        _ => (Vec::new(), Vec::new()),
+        _ => Refined::default(),
     };
-    let (refined, unrefined) = refined;
-    summary.warnings.extend(unrefined);
+    // A stop asked during the refined run stops the scene's run as one during its rows does.
+    stopped |= refined.stopped;
+    summary.interrupted = stopped;
+    summary.warnings.extend(refined.warnings);
+    let refined = refined.differences;
     if !refined.is_empty() {
         let differences = (refined.iter())
             .map(|(k, d)| ((*k).to_owned(), *d))
@@ -186,16 +189,24 @@ impl Sink for Kept<'_> {
     }
 }
 
+/// What refining a run gave: how far each figure moved, by key (`None` where the refined run
+/// gave none), a warning for each such, and whether the caller stopped it.
+#[derive(Default)]
+struct Refined {
+    differences: Vec<(&'static str, Option<f64>)>,
+    warnings: Vec<String>,
+    stopped: bool,
+}
+
 /// How far each figure given moves when the scene runs again refined
-/// ([`crate::scene::IntegratorSpec::refined`]), by key; with a warning for each the refined
-/// run does not give, saying why. Nothing where the run gave no figure.
+/// ([`crate::scene::IntegratorSpec::refined`]). Nothing where the run gave no figure.
 fn refined_differences(
     scene: &Scene,
     measures: &[(&'static str, Result<f64, String>)],
     stop_asked: &dyn Fn() -> bool,
-) -> (Vec<(&'static str, Option<f64>)>, Vec<String>) {
+) -> Refined {
     if !measures.iter().any(|(_, value)| value.is_ok()) {
-        return (Vec::new(), Vec::new());
+        return Refined::default();
     }
     let mut finer = scene.clone();
     finer.integrator = scene.integrator.refined(scene.every);
@@ -204,6 +215,12 @@ fn refined_differences(
         stop_asked,
     };
     let ran = run_reporting(&finer, &mut kept);
+    if let Some(RunError::Stopped { .. }) = ran.error {
+        return Refined {
+            stopped: true,
+            ..Refined::default()
+        };
+    }
     let refined_measures = self::measures(&finer, Some(&kept.measured));
     let key = scene.integrator.refinement_key();
     let mut warnings = Vec::new();
@@ -224,7 +241,11 @@ fn refined_differences(
             Some((*name, difference))
         })
         .collect();
-    (differences, warnings)
+    Refined {
+        differences,
+        warnings,
+        stopped: false,
+    }
 }
 
 /// The family's figures from the rows kept for them; where the run gives none (a pendulum
