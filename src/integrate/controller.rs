@@ -57,6 +57,16 @@ pub fn min_rtol<T: RealField>() -> f64 {
 }
 
 impl AdaptiveOptions {
+    /// The same options with rtol and atol a hundred times tighter: a refined run, to check
+    /// a figure's convergence.
+    pub fn tightened(self) -> Self {
+        Self {
+            rtol: self.rtol / 100.0,
+            atol: self.atol / 100.0,
+            ..self
+        }
+    }
+
     /// Hairer's DOPRI5 defaults with the given tolerances.
     pub fn dopri5(rtol: f64, atol: f64) -> Self {
         Self {

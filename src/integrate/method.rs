@@ -41,4 +41,14 @@ impl Method {
     pub fn is_adaptive(self) -> bool {
         matches!(self, Method::Dopri5 | Method::Dop853)
     }
+
+    /// How a run of it is refined to check its figures' convergence, as a summary and a
+    /// report say it: `"half the step"` or `"tolerances / 100"`
+    /// ([`super::Stepper::refined`], [`super::AdaptiveOptions::tightened`]).
+    pub fn refinement(self) -> &'static str {
+        match self.is_adaptive() {
+            true => "tolerances / 100",
+            false => "half the step",
+        }
+    }
 }

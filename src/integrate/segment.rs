@@ -53,22 +53,16 @@ impl Stepper {
     /// ([`half_the_step`]), or tolerances a hundred times tighter (the check of a figure's
     /// convergence).
     pub fn refined(&self, every: f64) -> Self {
-        let mut finer = self.clone();
-        finer.step = self.step.map(|h| half_the_step(h, every));
-        if let Some(options) = finer.adaptive.as_mut() {
-            options.rtol /= 100.0;
-            options.atol /= 100.0;
+        Stepper {
+            step: self.step.map(|h| half_the_step(h, every)),
+            adaptive: self.adaptive.map(AdaptiveOptions::tightened),
+            ..self.clone()
         }
-        finer
     }
 
-    /// What a summary says of the refined run: `"half the step"` or `"tolerances / 100"`.
+    /// What a summary says of the refined run ([`Method::refinement`]).
     pub fn refinement(&self) -> &'static str {
-        if self.method.is_adaptive() {
-            "tolerances / 100"
-        } else {
-            "half the step"
-        }
+        self.method.refinement()
     }
 }
 

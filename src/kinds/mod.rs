@@ -173,6 +173,17 @@ pub struct Linearised {
     pub json: serde_json::Map<String, serde_json::Value>,
 }
 
+impl Linearised {
+    /// A linearisation that the kind adds nothing to.
+    pub fn alone(linearisation: Linearisation) -> Self {
+        Linearised {
+            linearisation,
+            text: String::new(),
+            json: serde_json::Map::new(),
+        }
+    }
+}
+
 /// Why a scene of some kind could not be run or linearised, by what the command's exit code
 /// says of it; each carries the kind's own error, whose message it gives.
 #[derive(Debug, thiserror::Error)]

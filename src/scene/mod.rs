@@ -126,21 +126,10 @@ impl IntegratorSpec {
     /// [`crate::integrate::Stepper::refined`]): the step halved is the one taken
     /// between rows `every` apart ([`crate::integrate::half_the_step`]).
     pub fn refined(&self, every: f64) -> Self {
-        let mut finer = *self;
-        finer.step = (self.step).map(|h| crate::integrate::half_the_step(h, every));
-        if let Some(options) = finer.adaptive.as_mut() {
-            options.rtol /= 100.0;
-            options.atol /= 100.0;
-        }
-        finer
-    }
-
-    /// How [`Self::refined`] refines, as a report says it: `half the step` or
-    /// `tolerances / 100`.
-    pub fn refinement(&self) -> &'static str {
-        match self.method.is_adaptive() {
-            true => "tolerances / 100",
-            false => "half the step",
+        IntegratorSpec {
+            step: (self.step).map(|h| crate::integrate::half_the_step(h, every)),
+            adaptive: self.adaptive.map(AdaptiveOptions::tightened),
+            ..*self
         }
     }
 

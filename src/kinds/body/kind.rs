@@ -39,11 +39,7 @@ impl Kind for Scene {
     }
 
     fn linear(&self) -> Result<Linearised, KindError> {
-        Ok(Linearised {
-            linearisation: crate::linear::linearise_scene(self)?,
-            text: String::new(),
-            json: serde_json::Map::new(),
-        })
+        Ok(Linearised::alone(crate::linear::linearise_scene(self)?))
     }
 
     fn as_any(&self) -> &dyn Any {

@@ -51,13 +51,18 @@ impl Sink for Recording<'_> {
         let taken = self.recorder.row(row);
         if taken {
             self.rows += 1;
-            if let Some((time, first)) = &mut self.measured {
-                time.push(row.t);
-                first.push(row.state.first().copied().unwrap_or(f64::NAN));
+            if let Some(measured) = &mut self.measured {
+                keep(measured, row);
             }
         }
         taken
     }
+}
+
+/// Keeps a row's time and first state entry, what a family's figures are measured from.
+fn keep((time, first): &mut (Vec<f64>, Vec<f64>), row: &Row) {
+    time.push(row.t);
+    first.push(row.state.first().copied().unwrap_or(f64::NAN));
 }
 
 /// The figures a family measures from its rows, by key.
@@ -183,8 +188,7 @@ struct Kept<'a> {
 
 impl Sink for Kept<'_> {
     fn row(&mut self, row: &Row) -> bool {
-        self.measured.0.push(row.t);
-        (self.measured.1).push(row.state.first().copied().unwrap_or(f64::NAN));
+        keep(&mut self.measured, row);
         !(self.stop_asked)()
     }
 }
@@ -363,7 +367,7 @@ impl BodyRun<'_> {
                     out,
                     "  {key} = {}, which {} moves by {moved:.1e}",
                     Short(*value),
-                    scene.integrator.refinement()
+                    scene.integrator.method.refinement()
                 )?;
             }
         }

@@ -91,11 +91,7 @@ impl kinds::Kind for VehicleScene {
     }
 
     fn linear(&self) -> Result<Linearised, KindError> {
-        Ok(Linearised {
-            linearisation: linearise_vehicle(self)?,
-            text: String::new(),
-            json: serde_json::Map::new(),
-        })
+        Ok(Linearised::alone(linearise_vehicle(self)?))
     }
 
     fn as_any(&self) -> &dyn Any {
