@@ -27,6 +27,14 @@ fn remus_runs_its_rudder_steps_into_a_folder() {
     assert_eq!(summary["model"]["convention"], "prestero");
     assert_eq!(summary["model"]["terms"], 34);
     assert_eq!(summary["integrator"]["method"], "rk4");
+    // The keys every kind's summary shares: its kind, its file, and the steps of every
+    // manoeuvre's run with the scene's method.
+    assert_eq!(summary["kind"], "vehicle");
+    assert_eq!(summary["scene"], scene_arg("remus100.toml"));
+    let manoeuvres = summary["manoeuvre"].as_object().unwrap().values();
+    let steps: u64 = manoeuvres.map(|m| m["steps_taken"].as_u64().unwrap()).sum();
+    assert_eq!(summary["integrator"]["steps"].as_u64(), Some(steps));
+    assert!(summary["wall_seconds"].as_f64().unwrap() > 0.0);
     // The cruise at 1500 rpm: √(X_prop/−X_u|u|) and the roll trim, both to the closed forms.
     let cruise = &summary["cruise"];
     let speed = number(&cruise["speed_m_s"]);

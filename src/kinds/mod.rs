@@ -8,7 +8,7 @@
 //! in [`REGISTRY`], the only list of them. None imports another: what two kinds share is in the
 //! layers below them ([`crate::manoeuvring`]: the steering gear, the course;
 //! [`crate::scene::envelope`]: the tables every scene with manoeuvres writes;
-//! [`crate::output::summary`]: the method's summary; [`crate::output::drawing`]: what a run
+//! [`crate::output::summary`]: the one summary every kind builds; [`crate::output::drawing`]: what a run
 //! draws; [`crate::run::record`]: where its rows go). A test below holds that.
 //!
 //! A scene of any kind is loaded through one entry, says which kind it is, and runs to its
@@ -54,10 +54,15 @@
 //! assert_eq!(counted.0[0], ("turning_circle_35/port".to_owned(), 1504)); // a row a second
 //! // summary.json as the command writes it: the turn's worse side, and the IMO verdicts.
 //! let summary = finished.summary();
-//! let turn = &summary["manoeuvre"]["turning_circle_35"];
+//! let turn = &summary.section["manoeuvre"]["turning_circle_35"];
 //! assert!((turn["tactical_diameter_m"].as_f64().unwrap() - 1178.27).abs() < 0.01);
-//! assert_eq!(summary["manoeuvre"]["imo"][0]["criterion"], "advance");
-//! assert_eq!(summary["manoeuvre"]["imo"][0]["pass"], true);
+//! assert_eq!(summary.section["manoeuvre"]["imo"][0]["criterion"], "advance");
+//! assert_eq!(summary.section["manoeuvre"]["imo"][0]["pass"], true);
+//! // The same figures and verdicts in the shape every kind gives them.
+//! let diameter = summary.figure("turning_circle_35/port", "tactical_diameter_m");
+//! assert!((diameter.unwrap() - 1178.27).abs() < 0.01);
+//! assert_eq!(summary.verdicts[0].name, "advance");
+//! assert_eq!(summary.verdicts[0].pass, Some(true));
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
@@ -68,6 +73,7 @@ pub mod ship;
 pub mod vehicle;
 
 use crate::linear::Linearisation;
+use crate::output::summary::Summary;
 use crate::run::record::Recorder;
 use crate::scene::SceneError;
 use crate::scene::reference::Key;
@@ -116,20 +122,16 @@ pub trait Kind: Send + Sync + std::fmt::Debug {
 
 /// What a scene's run gave: the summary, the report, a sweep case's line.
 pub trait Finished: std::fmt::Debug {
-    /// `summary.json`, as a JSON value (its objects' keys sorted).
-    fn summary(&self) -> serde_json::Value;
+    /// `summary.json` as the library builds it for every kind: the shared keys, each run's
+    /// figures and the verdicts, and the kind's own section as a JSON value (its objects'
+    /// keys sorted).
+    fn summary(&self) -> Summary;
 
     /// `summary.json` as written: [`Self::summary`], pretty-printed, with a sweep case's
-    /// number and values under `"case"`. A kind whose summary has an order of its own (a
-    /// body's: the run, its cost, then its figures) writes it in that order.
+    /// number and values under `"case"`. A kind whose section has an order of its own (a
+    /// body's: its model, where it ended, then its figures) writes it in that order.
     fn summary_file(&self, case: Option<&TableCase>) -> Vec<u8> {
-        let mut summary = self.summary();
-        if let (Some(case), Some(object)) = (case, summary.as_object_mut()) {
-            let values = serde_json::to_value(case.values_json()).unwrap_or_default();
-            let case = serde_json::json!({ "index": case.index, "values": values });
-            object.insert("case".into(), case);
-        }
-        serde_json::to_vec_pretty(&summary).unwrap_or_default()
+        self.summary().file(case)
     }
 
     /// The report as the command prints it (the folder it wrote aside).

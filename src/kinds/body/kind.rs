@@ -3,7 +3,7 @@
 
 use super::run::{BodyRun, run_body, trajectory_numbers};
 use crate::kinds::{Finished, Kind, KindError, Linearised};
-use crate::output::summary::Extra;
+use crate::output::summary::Summary;
 use crate::run::record::Recorder;
 use crate::scene::Scene;
 use crate::scene::sweep::TableCase;
@@ -52,19 +52,13 @@ impl Kind for Scene {
 }
 
 impl Finished for BodyRun<'_> {
-    fn summary(&self) -> serde_json::Value {
-        serde_json::to_value(&self.summary).unwrap_or_default()
+    fn summary(&self) -> Summary {
+        self.summary.clone().into_json()
     }
 
-    /// In the order of [`crate::output::summary::Summary`]'s fields, its figures and the case
-    /// after them in the order of their keys.
+    /// In the order of its section's fields (the section as a JSON value would sort them).
     fn summary_file(&self, case: Option<&TableCase>) -> Vec<u8> {
-        let mut summary = self.summary.clone();
-        if let Some(case) = case {
-            let (index, values) = (case.index, case.values_json());
-            (summary.extra).insert("case".into(), Extra::Case { index, values });
-        }
-        serde_json::to_vec_pretty(&summary).unwrap_or_default()
+        self.summary.file(case)
     }
 
     fn report(&self) -> String {

@@ -3,7 +3,7 @@
 //! variant the build generated and proved ([`crate::scene`] reads and checks it, and selects
 //! the variant). It runs once, from its initial state to its end time or its stop condition,
 //! through the one runner ([`crate::run`]); its rows go to the caller's recorder, its summary
-//! is [`crate::output::summary::Summary`], and its drawing a [`RigidBody`].
+//! is [`crate::output::summary::Summary`] with a [`summary::BodySection`], and its drawing a [`RigidBody`].
 //!
 //! A body's run that fails (gimbal lock, a step too long, a value that is not finite) keeps
 //! what it ran: its rows, its drawings and a summary that gives the error; the failure is
@@ -20,9 +20,11 @@
 //! let finished = pendulum.run("pendulum.toml", &mut Discard)?;
 //! assert!(finished.failure().is_none());
 //! let summary = finished.summary();
-//! assert_eq!(summary["variant"], "pendulum");
-//! // The period measured from its rows, as summary.json gives it.
-//! assert!(summary["period_s"].as_f64().unwrap() > 0.0);
+//! assert_eq!(summary.section["variant"], "pendulum");
+//! // The period measured from its rows, as summary.json gives it, and as every kind's runs
+//! // give their figures.
+//! assert!(summary.section["period_s"].as_f64().unwrap() > 0.0);
+//! assert_eq!(summary.figure("", "period_s"), summary.section["period_s"].as_f64());
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 //!
@@ -30,5 +32,6 @@
 
 mod kind;
 mod run;
+pub mod summary;
 
 pub use run::BodyRun;

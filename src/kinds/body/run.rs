@@ -1,10 +1,11 @@
 //! A body's one run: its rows to the recorder, the figures its family measures from them, its
 //! summary, its report, its line in a sweep's table and its drawing.
 
+use super::summary::{BodySection, Extra};
 use crate::Short;
 use crate::kinds::KindError;
 use crate::output::drawing::{BodyShape, Drawing, RigidBody, RunDrawings};
-use crate::output::summary::{Extra, Summary};
+use crate::output::summary::{Figure, IntegratorSummary, RunFigures, Summary};
 use crate::output::text::printable;
 use crate::output::trajectory::number_text;
 use crate::run::record::{Recorder, RunStart};
@@ -35,7 +36,7 @@ pub struct BodyRun<'a> {
     /// none); empty where the run gave no figure, or did not end as it should.
     pub refined: Vec<(&'static str, Option<f64>)>,
     /// `summary.json`.
-    pub summary: Summary,
+    pub summary: Summary<BodySection>,
 }
 
 /// The rows to the recorder, counted, with what the family's figures are measured from.
@@ -119,19 +120,12 @@ pub(super) fn run_body<'a>(
     let mut stopped = matches!(ran.error, Some(RunError::Stopped { .. }));
     let error = ran.error.filter(|_| !stopped);
     let measures = measures(scene, measured.as_ref());
-    let mut summary = Summary::new(
-        name.to_owned(),
-        scene.title.clone(),
-        (scene.selection.info, scene.selection.reason.clone()),
-        scene.integrator.method.name(),
-        &ran.report,
-        &names,
-    );
+    let mut summary = summary_of(scene, name, &ran.report, &names);
     summary.error = error.as_ref().map(RunError::to_string);
     for (key, value) in &measures {
         match value {
             Ok(value) => {
-                summary.extra.insert((*key).into(), Extra::Number(*value));
+                (summary.section.extra).insert((*key).into(), Extra::Number(*value));
             }
             Err(why) => summary.warnings.push(format!("{key} is not given: {why}")),
         }
@@ -150,12 +144,11 @@ pub(super) fn run_body<'a>(
             .map(|(k, d)| ((*k).to_owned(), *d))
             .collect();
         let key = scene.integrator.refinement_key();
-        summary
-            .extra
-            .insert(key.into(), Extra::Differences(differences));
+        (summary.section.extra).insert(key.into(), Extra::Differences(differences));
     }
+    summary.runs = vec![run_figures(scene, &measures, &refined)];
     if let Some(condition) = &scene.stop {
-        let extra = &mut summary.extra;
+        let extra = &mut summary.section.extra;
         extra.insert("stop_when".into(), Extra::Text(condition.text.clone()));
         extra.insert("stopped_at".into(), Extra::Time(ran.report.stopped_at));
     }
@@ -177,6 +170,65 @@ pub(super) fn run_body<'a>(
         refined,
         summary,
     })
+}
+
+/// The summary of a run of `scene` (`name`, its file) that reported `report`, before its
+/// figures: the settings and statistics, the model and where the run ended.
+fn summary_of(
+    scene: &Scene,
+    name: &str,
+    report: &Report,
+    names: &[String],
+) -> Summary<BodySection> {
+    let spec = &scene.integrator;
+    let integrator = IntegratorSummary {
+        steps: report.steps as u64,
+        rejected: Some(report.rejected as u64),
+        rhs_evals: Some(report.rhs_evals as u64),
+        ..IntegratorSummary::settings(spec.method, spec.step, spec.adaptive)
+    };
+    let selection = &scene.selection;
+    Summary {
+        kind: super::kind::NAME,
+        scene: name.to_owned(),
+        title: scene.title.clone(),
+        integrator,
+        wall_seconds: report.wall_seconds,
+        interrupted: false,
+        error: None,
+        warnings: report.warnings.clone(),
+        case: None,
+        runs: Vec::new(),
+        verdicts: Vec::new(),
+        section: BodySection::new((selection.info, selection.reason.clone()), report, names),
+    }
+}
+
+/// The run's figures as every kind gives them: the family's measures, each with how far it
+/// moved when the run was refined, and why a measure is not given.
+fn run_figures(
+    scene: &Scene,
+    measures: &[(&'static str, Result<f64, String>)],
+    refined: &[(&'static str, Option<f64>)],
+) -> RunFigures {
+    let difference = |key: &str| refined.iter().find(|(k, _)| *k == key)?.1;
+    let figures = (measures.iter())
+        .map(|(key, value)| Figure {
+            key: (*key).to_owned(),
+            value: value.as_ref().ok().copied(),
+            difference: difference(key),
+        })
+        .collect();
+    let notes = (measures.iter())
+        .filter_map(|(key, value)| Some(format!("{key} is not given: {}", value.as_ref().err()?)))
+        .collect();
+    RunFigures {
+        run: String::new(),
+        figures,
+        refinement: (!refined.is_empty()).then(|| scene.integrator.method.refinement()),
+        largest_difference: None,
+        notes,
+    }
 }
 
 /// The rows of a refined run, kept for the figures alone; the run ends when the caller asks

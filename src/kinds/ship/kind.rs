@@ -10,6 +10,7 @@ use super::run::{Finished, run_scene};
 use super::summary::LinearSummary;
 use super::{ShipError, ShipModel, ShipScene};
 use crate::kinds::{self, KindError, Linearised, Reference, Registered, Source};
+use crate::output::summary::Summary;
 use crate::run::record::Recorder;
 use crate::scene::SceneError;
 use crate::scene::sweep::TableCase;
@@ -113,8 +114,8 @@ impl kinds::Kind for ShipScene {
 }
 
 impl kinds::Finished for Finished<'_> {
-    fn summary(&self) -> serde_json::Value {
-        serde_json::to_value(&self.summary).unwrap_or_default()
+    fn summary(&self) -> Summary {
+        self.summary.clone().into_json()
     }
 
     fn report(&self) -> String {

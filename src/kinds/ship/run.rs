@@ -14,11 +14,12 @@ use super::side::{deciding_figure, worse};
 use super::spiral::{Branch, Loop, SpiralCurve, SpiralPoint, Verdict};
 use super::steady::SteadyTurns;
 use super::summary::{
-    CriterionSummary, LinearSummary, ManoeuvreSummary, Manoeuvres, ModelSummary, ShipSummary,
+    CriterionSummary, LinearSummary, ManoeuvreSummary, Manoeuvres, ModelSummary, ShipSection,
+    run_figures, verdict,
 };
 use super::{Manoeuvre, ShipModel, ShipScene};
 use crate::output::drawing::{Curves, Drawing, Hull, Mark, PlaneManoeuvre, RunDrawings};
-use crate::output::summary::MethodSummary;
+use crate::output::summary::{IntegratorSummary, RunFigures, Summary};
 use crate::output::text::printable;
 use crate::run::Row;
 use crate::run::record::{Recorder, RunStart};
@@ -69,7 +70,7 @@ pub struct Finished<'a> {
     /// The scene that ran.
     pub scene: &'a ShipScene,
     /// `summary.json`.
-    pub summary: ShipSummary,
+    pub summary: Summary<ShipSection>,
     /// Each manoeuvre's runs, in the scene's order.
     pub outcomes: Vec<Runs>,
     /// The IMO criteria the runs allow.
@@ -202,18 +203,32 @@ pub fn run_scene<'a>(
             (manoeuvre.name.clone(), summary)
         })
         .collect();
-    let summary = ShipSummary {
-        scene: name.to_owned(),
-        title: scene.title.clone(),
+    let stepper = &scene.stepper;
+    let integrator = IntegratorSummary {
+        steps: (outcomes.iter().flatten()).map(|(_, o)| o.steps).sum(),
+        ..IntegratorSummary::settings(stepper.method, stepper.step, stepper.adaptive)
+    };
+    let section = ShipSection {
         model: ModelSummary::new(scene, &model),
-        integrator: MethodSummary::new(&scene.stepper),
         linear: LinearSummary::new(scene, &model, &linear),
         manoeuvre: Manoeuvres {
             runs,
             imo: judged.iter().map(CriterionSummary::new).collect(),
         },
+    };
+    let summary = Summary {
+        kind: super::KIND.name,
+        scene: name.to_owned(),
+        title: scene.title.clone(),
+        integrator,
         wall_seconds: started.elapsed().as_secs_f64(),
         interrupted: stopped,
+        error: None,
+        warnings: Vec::new(),
+        case: None,
+        runs: every_run_figures(scene, &outcomes),
+        verdicts: judged.iter().map(verdict).collect(),
+        section,
     };
     Ok(Finished {
         scene,
@@ -222,6 +237,22 @@ pub fn run_scene<'a>(
         judged,
         stopped,
     })
+}
+
+/// Each run's figures as every kind gives them, by its path (`turning_circle_35/port`).
+fn every_run_figures(scene: &ShipScene, outcomes: &[Runs]) -> Vec<RunFigures> {
+    let mut figures = Vec::new();
+    for (manoeuvre, runs) in scene.manoeuvres.iter().zip(outcomes) {
+        for (side, outcome) in runs {
+            let path = match side {
+                Some(side) if runs.len() > 1 => format!("{}/{}", manoeuvre.name, side.name()),
+                _ => manoeuvre.name.clone(),
+            };
+            let both = (&outcome.figures, &outcome.refined);
+            figures.push(run_figures(&path, &scene.stepper, both));
+        }
+    }
+    figures
 }
 
 /// What a manoeuvre's run draws: the manoeuvre in the plane, the hull of the scene's length

@@ -18,29 +18,19 @@ use super::{Units, YawInertia};
 
 use crate::integrate::Stepper;
 use crate::models::Operations;
-use crate::output::summary::MethodSummary;
+use crate::output::summary::{self, Figure, RunFigures};
 use serde::Serialize;
 use std::collections::BTreeMap;
 
-/// `summary.json` of a ship scene.
+/// What a ship's summary adds to the keys every scene's shares.
 #[derive(Debug, Clone, Serialize)]
-pub struct ShipSummary {
-    /// The scene file as given.
-    pub scene: String,
-    /// Its title.
-    pub title: String,
+pub struct ShipSection {
     /// The model that ran.
     pub model: ModelSummary,
-    /// The method.
-    pub integrator: MethodSummary,
     /// The linear model about the straight course.
     pub linear: LinearSummary,
     /// Each manoeuvre's figures by its name, and the IMO criteria under `imo`.
     pub manoeuvre: Manoeuvres,
-    /// The run's wall time, s.
-    pub wall_seconds: f64,
-    /// Whether a signal ended the run early (the manoeuvres finished before it are here).
-    pub interrupted: bool,
 }
 
 /// The model: 4.46 with the table's terms.
@@ -606,6 +596,43 @@ impl CriterionSummary {
             }),
             not_judged_because: criterion.not_judged_because.clone(),
         }
+    }
+}
+
+/// A manoeuvre's run (`path`: `turning_circle_35/port`) as every kind gives its figures:
+/// each with how far it moved in the run refined by `stepper`'s [`Stepper::refined`].
+pub fn run_figures(
+    path: &str,
+    stepper: &Stepper,
+    (figures, refined): (&Figures, &Figures),
+) -> RunFigures {
+    let figures_out = (figures.values.iter())
+        .map(|(key, value)| Figure {
+            key: (*key).to_owned(),
+            value: *value,
+            difference: value.zip(refined.get(key)).map(|(a, b)| (a - b).abs()),
+        })
+        .collect();
+    RunFigures {
+        run: path.to_owned(),
+        figures: figures_out,
+        refinement: Some(stepper.method.refinement()),
+        largest_difference: None,
+        notes: figures.notes.clone(),
+    }
+}
+
+/// An IMO criterion as every kind gives a verdict: judged on its manoeuvre's worse side.
+pub fn verdict(criterion: &Criterion) -> summary::Verdict {
+    let side = criterion.side.filter(|_| !criterion.sides.is_empty());
+    let run = match side {
+        Some(side) => format!("{}/{}", criterion.manoeuvre, side.name()),
+        None => criterion.manoeuvre.clone(),
+    };
+    summary::Verdict {
+        name: criterion.name.to_owned(),
+        run,
+        pass: criterion.pass(),
     }
 }
 

@@ -9,6 +9,7 @@ use super::manoeuvre::trajectory_columns;
 use super::run::{Finished, run_scene};
 use super::{VehicleError, VehicleScene};
 use crate::kinds::{self, KindError, Linearised, Reference, Registered, Source};
+use crate::output::summary::Summary;
 use crate::run::record::Recorder;
 use crate::scene::SceneError;
 use crate::scene::sweep::TableCase;
@@ -84,10 +85,10 @@ impl kinds::Kind for VehicleScene {
 
     fn run(
         &self,
-        _name: &str,
+        name: &str,
         recorder: &mut dyn Recorder,
     ) -> Result<Box<dyn kinds::Finished + '_>, KindError> {
-        Ok(Box::new(run_scene(self, recorder)?))
+        Ok(Box::new(run_scene(self, name, recorder)?))
     }
 
     fn linear(&self) -> Result<Linearised, KindError> {
@@ -104,8 +105,8 @@ impl kinds::Kind for VehicleScene {
 }
 
 impl kinds::Finished for Finished<'_> {
-    fn summary(&self) -> serde_json::Value {
-        serde_json::to_value(&self.summary).unwrap_or_default()
+    fn summary(&self) -> Summary {
+        self.summary.clone().into_json()
     }
 
     fn report(&self) -> String {

@@ -8,12 +8,12 @@ use super::manoeuvre::{ROW, VehicleManoeuvre, run};
 use super::scene::NAMED_FROM;
 use super::summary::{
     CruiseSummary, KirchhoffRow, ManoeuvreSummary, ModelSummary, SetpointFigures, StepFigures,
-    VehicleSummary, largest_difference, largest_setpoint_difference, trial_figures,
+    VehicleSection, largest_difference, largest_setpoint_difference, trial_figures,
 };
 use super::trial::{Plane, TrialFigures, largest_trial_difference};
 use super::{VehicleError, VehicleScene, format_folded};
 use crate::output::drawing::{Drawing, Mark, RunDrawings, SpaceManoeuvre};
-use crate::output::summary::MethodSummary;
+use crate::output::summary::{Figure, IntegratorSummary, RunFigures, Summary};
 use crate::output::text::printable;
 use crate::output::trajectory::number_text;
 use crate::run::Row;
@@ -22,6 +22,7 @@ use crate::scene::sweep::{TableCase, manoeuvre_columns};
 use crate::{Model, Short, counted, fixed};
 use std::collections::BTreeMap;
 use std::fmt::Write;
+use std::time::Instant;
 
 /// A manoeuvre run with the scene's method, and its figures refined.
 #[derive(Debug, Clone)]
@@ -41,19 +42,22 @@ pub struct Finished<'a> {
     /// The scene that ran.
     pub scene: &'a VehicleScene,
     /// `summary.json`.
-    pub summary: VehicleSummary,
+    pub summary: Summary<VehicleSection>,
     /// Each manoeuvre run, in the scene's order.
     pub outcomes: Vec<Outcome>,
     /// Whether the recorder asked the run to stop before every manoeuvre had run.
     pub stopped: bool,
 }
 
-/// Runs every manoeuvre of `scene`, each from its trim, its rows to `recorder` under the
-/// manoeuvre's name; a manoeuvre the recorder stops ends the run, keeping the ones before it.
+/// Runs every manoeuvre of `scene` (`name` is its file, as the summary names it), each from
+/// its trim, its rows to `recorder` under the manoeuvre's name; a manoeuvre the recorder stops
+/// ends the run, keeping the ones before it.
 pub fn run_scene<'a>(
     scene: &'a VehicleScene,
+    name: &str,
     recorder: &mut dyn Recorder,
 ) -> Result<Finished<'a>, VehicleError> {
+    let started = Instant::now();
     let mut manoeuvres = BTreeMap::new();
     let mut outcomes = Vec::new();
     let mut stopped = false;
@@ -68,14 +72,32 @@ pub fn run_scene<'a>(
         manoeuvres.insert(manoeuvre.name.clone(), outcome.summary.clone());
         outcomes.push(outcome);
     }
-    let summary = VehicleSummary {
+    let stepper = &scene.stepper;
+    let integrator = IntegratorSummary {
+        steps: outcomes.iter().map(|o| o.summary.steps_taken).sum(),
+        ..IntegratorSummary::settings(stepper.method, stepper.step, stepper.adaptive)
+    };
+    let runs = (scene.manoeuvres.iter().zip(&outcomes))
+        .map(|(manoeuvre, outcome)| run_figures(&manoeuvre.name, &outcome.summary))
+        .collect();
+    let summary = Summary {
+        kind: super::KIND.name,
+        scene: name.to_owned(),
         title: scene.title.clone(),
-        model: ModelSummary::new(scene),
-        integrator: MethodSummary::new(&scene.stepper),
-        kirchhoff: scene.model.folded().iter().map(KirchhoffRow::new).collect(),
-        cruise: CruiseSummary::new(scene),
-        manoeuvre: manoeuvres,
+        integrator,
+        wall_seconds: started.elapsed().as_secs_f64(),
         interrupted: stopped,
+        error: None,
+        warnings: Vec::new(),
+        case: None,
+        runs,
+        verdicts: Vec::new(),
+        section: VehicleSection {
+            model: ModelSummary::new(scene),
+            kirchhoff: scene.model.folded().iter().map(KirchhoffRow::new).collect(),
+            cruise: CruiseSummary::new(scene),
+            manoeuvre: manoeuvres,
+        },
     };
     Ok(Finished {
         scene,
@@ -202,30 +224,13 @@ impl Finished<'_> {
         let columns = manoeuvre_columns(case, names, &NAMED_FROM);
         let mut cells = Vec::new();
         for (manoeuvre, column) in scene.manoeuvres.iter().zip(&columns) {
-            let Some(summary) = self.summary.manoeuvre.get(&manoeuvre.name) else {
+            let Some(summary) = self.summary.section.manoeuvre.get(&manoeuvre.name) else {
                 continue;
             };
             let json = serde_json::to_value(summary).unwrap_or_default();
-            let mut scalars = |prefix: String, value: &serde_json::Value| {
-                for (key, value) in value.as_object().into_iter().flatten() {
-                    if let Some(text) = scalar_text(value) {
-                        cells.push((format!("{prefix}.{key}"), text));
-                    }
-                }
-            };
-            match (&json["trial"], json["autopilot"].as_array()) {
-                (trial, _) if trial.is_object() => scalars(column.clone(), trial),
-                (_, Some(autopilots)) => {
-                    for autopilot in autopilots {
-                        let what = autopilot["what"].as_str().unwrap_or("autopilot");
-                        scalars(format!("{column}.{what}"), autopilot);
-                    }
-                }
-                _ => {
-                    let steps = json["steps"].as_array().into_iter().flatten();
-                    for (index, step) in steps.enumerate() {
-                        scalars(format!("{column}.step_{index}"), step);
-                    }
+            for (key, value) in manoeuvre_figures(&json) {
+                if let Some(text) = scalar_text(value) {
+                    cells.push((format!("{column}.{key}"), text));
                 }
             }
             for key in ["refined_difference", "steps_taken"] {
@@ -235,6 +240,58 @@ impl Finished<'_> {
             }
         }
         cells
+    }
+}
+
+/// A manoeuvre's figures from its summary, by key: a trial's (`tactical_diameter_m`), each
+/// autopilot's by what it holds (`heading.overshoot`), or, for fin steps, each step's end
+/// (`step_1.heading_deg`).
+fn manoeuvre_figures(json: &serde_json::Value) -> Vec<(String, &serde_json::Value)> {
+    /// The entries of the object `value`, each key after `prefix`.
+    fn entries<'j>(
+        prefix: Option<&str>,
+        value: &'j serde_json::Value,
+    ) -> Vec<(String, &'j serde_json::Value)> {
+        (value.as_object().into_iter().flatten())
+            .map(|(key, value)| match prefix {
+                Some(prefix) => (format!("{prefix}.{key}"), value),
+                None => (key.clone(), value),
+            })
+            .collect()
+    }
+    match (&json["trial"], json["autopilot"].as_array()) {
+        (trial, _) if trial.is_object() => entries(None, trial),
+        (_, Some(autopilots)) => (autopilots.iter())
+            .flat_map(|autopilot| {
+                let what = autopilot["what"].as_str().unwrap_or("autopilot");
+                entries(Some(what), autopilot)
+            })
+            .collect(),
+        _ => (json["steps"].as_array().into_iter().flatten())
+            .enumerate()
+            .flat_map(|(index, step)| entries(Some(&format!("step_{index}")), step))
+            .collect(),
+    }
+}
+
+/// A manoeuvre's figures as every kind gives them: each number of [`manoeuvre_figures`] (or
+/// `None` where it is not given), the largest difference the refined run showed over them.
+fn run_figures(name: &str, summary: &ManoeuvreSummary) -> RunFigures {
+    let json = serde_json::to_value(summary).unwrap_or_default();
+    let figures = (manoeuvre_figures(&json).into_iter())
+        .filter(|(_, value)| value.is_number() || value.is_null())
+        .map(|(key, value)| Figure {
+            key,
+            value: value.as_f64(),
+            difference: None,
+        })
+        .collect();
+    RunFigures {
+        run: name.to_owned(),
+        figures,
+        refinement: Some(summary.refinement),
+        largest_difference: Some(summary.refined_difference),
+        notes: Vec::new(),
     }
 }
 
@@ -252,13 +309,13 @@ fn scalar_text(value: &serde_json::Value) -> Option<String> {
 
 fn report(
     scene: &VehicleScene,
-    summary: &VehicleSummary,
+    summary: &Summary<VehicleSection>,
     outcomes: &[Outcome],
 ) -> Result<String, std::fmt::Error> {
     let mut text = String::new();
     let out = &mut text;
     writeln!(out, "{}", printable(&scene.title))?;
-    let cruise = &summary.cruise;
+    let cruise = &summary.section.cruise;
     let closed = |x: Option<f64>, unit: &str| {
         x.map_or_else(String::new, |x| {
             format!(" (closed form {}{unit})", fixed(x, 4))

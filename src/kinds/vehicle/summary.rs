@@ -6,19 +6,14 @@ use super::VehicleScene;
 use super::autopilot::wrapped;
 use super::manoeuvre::{Tracked, VehicleManoeuvre, VehicleRun, euler_angles};
 use super::trial::TrialFigures;
-use crate::output::summary::MethodSummary;
 use serde::Serialize;
 use std::collections::BTreeMap;
 
-/// `summary.json` of a vehicle scene.
+/// What a vehicle's summary adds to the keys every scene's shares.
 #[derive(Debug, Clone, Serialize)]
-pub struct VehicleSummary {
-    /// The scene's title.
-    pub title: String,
+pub struct VehicleSection {
     /// The model.
     pub model: ModelSummary,
-    /// The method.
-    pub integrator: MethodSummary,
     /// Per cross term of the added mass's Coriolis and centripetal terms: the table's value,
     /// what M_A implies, the difference (a folded table; empty for a derived one).
     pub kirchhoff: Vec<KirchhoffRow>,
@@ -26,8 +21,6 @@ pub struct VehicleSummary {
     pub cruise: CruiseSummary,
     /// Each manoeuvre by name.
     pub manoeuvre: BTreeMap<String, ManoeuvreSummary>,
-    /// Whether the run was stopped (Ctrl-C) before every manoeuvre was run.
-    pub interrupted: bool,
 }
 
 /// The model: the six equations about O with the table's terms.
