@@ -124,7 +124,7 @@ fn with_example(family: SceneFamily, key: &Key) -> toml::Table {
         let needed = matches!(other.required, Required::When(when)
             if holders.iter().any(|holder| when == format!("with [{holder}]")));
         if needed {
-            set(&mut table, other);
+            set(&mut table, &other);
         }
     }
     set(&mut table, key);
@@ -135,7 +135,7 @@ fn with_example(family: SceneFamily, key: &Key) -> toml::Table {
 fn every_key_in_the_reference_is_read_with_its_example() {
     for family in SceneFamily::all() {
         for key in keys_of(family) {
-            let table = toml::Value::Table(with_example(family, key));
+            let table = toml::Value::Table(with_example(family, &key));
             let read = match family {
                 SceneFamily::Kind("ship") => table.try_into::<ShipSceneFile>().map(drop),
                 SceneFamily::Kind("vehicle") => table.try_into::<VehicleSceneFile>().map(drop),

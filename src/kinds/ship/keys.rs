@@ -14,15 +14,12 @@ const ONE_YAW_INERTIA: Required = Required::When(
 
 /// Every key of a ship scene.
 pub const KEYS: &[Key] = &[
-    Key {
-        path: "title",
-        families: SHIP,
-        kind: Kind::Text(Choices::Free),
-        required: Required::Yes,
-        description: "What the scene is: the title of the summary and the plots.",
-        example: "\"A ship from eom new: the Esso Osaka of scenes/esso_osaka.toml\"",
-        ..Key::BLANK
-    },
+    Key::shared(
+        "title",
+        SHIP,
+        "\"A ship from eom new: the Esso Osaka of scenes/esso_osaka.toml\"",
+        Shown::Set,
+    ),
     Key {
         path: "model.family",
         families: SHIP,
@@ -323,70 +320,11 @@ pub const KEYS: &[Key] = &[
         ..Key::BLANK
     },
     // [integrator]
-    Key {
-        path: "integrator.method",
-        families: SHIP,
-        kind: Kind::Text(Choices::These(&[
-            "euler",
-            "symplectic-euler",
-            "rk4",
-            "dopri5",
-            "dop853",
-        ])),
-        required: Required::Yes,
-        description: "Any method of every scene's but lie-midpoint (a free body's rotation \
-                      alone). The manoeuvre's events (the heading passing 90°, 180°, ±ψ_a; the \
-                      yaw rate passing zero; the steering gear reaching or leaving its rate \
-                      limit) end the method's stretches where they first hold, located to \
-                      adjacent floating-point numbers of t on its solution: the dense output \
-                      of dopri5 and dop853, the step taken again for the fixed-step methods.",
-        example: "\"rk4\"",
-        ..Key::BLANK
-    },
-    Key {
-        path: "integrator.step",
-        families: SHIP,
-        unit: "s",
-        required: Required::When("for a fixed-step method"),
-        description: "Fixed-step methods only: the largest step. Each manoeuvre runs again at \
-                      half the step, and summary.json says how far each figure moves \
-                      (`half_step_difference`).",
-        example: "0.2",
-        ..Key::BLANK
-    },
-    Key {
-        path: "integrator.rtol",
-        families: SHIP,
-        unit: "-",
-        default: "1e-9",
-        description: "Adaptive methods only: the relative tolerance. Each manoeuvre runs again \
-                      with rtol and atol a hundred times tighter, and summary.json says how far \
-                      each figure moves (`tolerance_difference`).",
-        example: "1e-9",
-        shown: Shown::Commented,
-        ..Key::BLANK
-    },
-    Key {
-        path: "integrator.atol",
-        families: SHIP,
-        default: "1e-9",
-        description: "Adaptive methods only: the absolute tolerance, in each state entry's \
-                      own unit.",
-        example: "1e-9",
-        shown: Shown::Commented,
-        ..Key::BLANK
-    },
-    Key {
-        path: "integrator.max_steps",
-        families: SHIP,
-        kind: Kind::Integer,
-        default: "1_000_000",
-        description: "The most steps, accepted and rejected, one manoeuvre may take (for a \
-                      fixed step, checked against the longest manoeuvre before it runs).",
-        example: "1_000_000",
-        shown: Shown::Commented,
-        ..Key::BLANK
-    },
+    Key::shared("integrator.method", SHIP, "\"rk4\"", Shown::Set),
+    Key::shared("integrator.step", SHIP, "0.2", Shown::Set),
+    Key::shared("integrator.rtol", SHIP, "1e-9", Shown::Commented),
+    Key::shared("integrator.atol", SHIP, "1e-9", Shown::Commented),
+    Key::shared("integrator.max_steps", SHIP, "1_000_000", Shown::Commented),
     // [[manoeuvre]]: at least one; each kind reads its own keys and refuses the others.
     Key {
         path: "manoeuvre[].name",
@@ -704,21 +642,12 @@ pub const KEYS: &[Key] = &[
         ..Key::BLANK
     },
     // [sweep]
-    Key {
-        path: "sweep.*",
-        families: SHIP,
-        kind: Kind::Table("key paths and values"),
-        description: "Values to vary, one run of every manoeuvre per combination, in parallel, \
-                      each case into case-NNNN/ with one line per case in sweep.csv (the \
-                      swept values, each manoeuvre's figures and each IMO criterion's value and \
-                      verdict): a key's path in quotes, an entry of the manoeuvre array by its \
-                      index (`manoeuvre[0].rudder_deg`), and a list of values or { from, to, \
-                      count }. At most 100 000 cases a run; `eom run --shard K/N` runs the \
-                      cases k ≡ K (mod N) and `eom sweep-merge` joins the shards' tables.",
-        example: "\"manoeuvre[0].rudder_deg\" = [5.0, 10.0, 15.0, 20.0, 25.0, 30.0, 35.0]",
-        shown: Shown::Commented,
-        ..Key::BLANK
-    },
+    Key::shared(
+        "sweep.*",
+        SHIP,
+        "\"manoeuvre[0].rudder_deg\" = [5.0, 10.0, 15.0, 20.0, 25.0, 30.0, 35.0]",
+        Shown::Commented,
+    ),
 ];
 
 /// What docs/scenes.md says after a ship's keys: the conventions of its table.

@@ -64,15 +64,12 @@ const STERN_PLANES: [Key; 3] = fin_keys!("stern_planes", "stern planes");
 
 /// Every key of a vehicle scene.
 pub const KEYS: &[Key] = &[
-    Key {
-        path: "title",
-        families: VEHICLE,
-        kind: Kind::Text(Choices::Free),
-        required: Required::Yes,
-        description: "What the scene is: the title of the summary and the plots.",
-        example: "\"A vehicle from eom new: REMUS 100 on Prestero's table\"",
-        ..Key::BLANK
-    },
+    Key::shared(
+        "title",
+        VEHICLE,
+        "\"A vehicle from eom new: REMUS 100 on Prestero's table\"",
+        Shown::Set,
+    ),
     Key {
         path: "model.family",
         families: VEHICLE,
@@ -537,65 +534,16 @@ pub const KEYS: &[Key] = &[
         shown: Shown::Commented,
         ..Key::BLANK
     },
-    Key {
-        path: "integrator.method",
-        families: VEHICLE,
-        kind: Kind::Text(Choices::These(&[
-            "euler",
-            "symplectic-euler",
-            "rk4",
-            "dopri5",
-            "dop853",
-        ])),
-        required: Required::Yes,
-        description: "Any method of every scene's but lie-midpoint. A run is cut at each \
-                      change of the fins' commands, so each step's figures are read exactly \
-                      where it ends.",
-        example: "\"rk4\"",
-        ..Key::BLANK
-    },
-    Key {
-        path: "integrator.step",
-        families: VEHICLE,
-        unit: "s",
-        required: Required::When("for a fixed-step method"),
-        description: "Fixed-step methods only: the largest step. Each manoeuvre runs again at \
-                      half the step, and summary.json says how far its figures move \
-                      (`refined_difference`).",
-        example: "0.01",
-        ..Key::BLANK
-    },
-    Key {
-        path: "integrator.rtol",
-        families: VEHICLE,
-        unit: "-",
-        default: "1e-9",
-        description: "Adaptive methods only: the relative tolerance (the refined run's is a \
-                      hundred times tighter).",
-        example: "1e-9",
-        shown: Shown::Commented,
-        ..Key::BLANK
-    },
-    Key {
-        path: "integrator.atol",
-        families: VEHICLE,
-        default: "1e-9",
-        description: "Adaptive methods only: the absolute tolerance, in each state entry's \
-                      own unit.",
-        example: "1e-9",
-        shown: Shown::Commented,
-        ..Key::BLANK
-    },
-    Key {
-        path: "integrator.max_steps",
-        families: VEHICLE,
-        kind: Kind::Integer,
-        default: "1_000_000",
-        description: "The most steps, accepted and rejected, one manoeuvre may take.",
-        example: "1_000_000",
-        shown: Shown::Commented,
-        ..Key::BLANK
-    },
+    Key::shared("integrator.method", VEHICLE, "\"rk4\"", Shown::Set),
+    Key::shared("integrator.step", VEHICLE, "0.01", Shown::Set),
+    Key::shared("integrator.rtol", VEHICLE, "1e-9", Shown::Commented),
+    Key::shared("integrator.atol", VEHICLE, "1e-9", Shown::Commented),
+    Key::shared(
+        "integrator.max_steps",
+        VEHICLE,
+        "1_000_000",
+        Shown::Commented,
+    ),
     Key {
         path: "manoeuvre[].name",
         families: VEHICLE,
@@ -777,20 +725,10 @@ pub const KEYS: &[Key] = &[
         shown: Shown::Commented,
         ..Key::BLANK
     },
-    Key {
-        path: "sweep.*",
-        families: VEHICLE,
-        kind: Kind::Table("key paths and values"),
-        description: "Values to vary, one run of every manoeuvre per combination, in parallel, \
-                      each case into case-NNNN/ with one line per case in sweep.csv (the \
-                      swept values and each manoeuvre's figures, `turning_circle.\
-                      tactical_diameter_m`): a key's path in quotes, an entry of the manoeuvre \
-                      array by its index (`manoeuvre[0].rudder_deg`), and a list of values or \
-                      { from, to, count }. At most 100 000 cases a run; `eom run --shard K/N` \
-                      runs the cases k ≡ K (mod N) and `eom sweep-merge` joins the shards' \
-                      tables.",
-        example: "\"hydrodynamics.coefficients.Nuudr\" = [-4.92, -6.15, -7.38]",
-        shown: Shown::Commented,
-        ..Key::BLANK
-    },
+    Key::shared(
+        "sweep.*",
+        VEHICLE,
+        "\"hydrodynamics.coefficients.Nuudr\" = [-4.92, -6.15, -7.38]",
+        Shown::Commented,
+    ),
 ];

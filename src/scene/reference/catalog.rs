@@ -27,15 +27,12 @@ const ATTITUDE: &[SceneFamily] = &[SPATIAL, TOP];
 
 /// Every key of a catalog scene.
 pub(super) static KEYS: &[Key] = &[
-    Key {
-        path: "title",
-        families: ALL,
-        kind: Kind::Text(Choices::Free),
-        required: Required::Yes,
-        description: "What the scene is: the title of the summary and the plots.",
-        example: "\"A {family} scene from eom new\"",
-        ..Key::BLANK
-    },
+    Key::shared(
+        "title",
+        ALL,
+        "\"A {family} scene from eom new\"",
+        Shown::Set,
+    ),
     // [body]
     Key {
         path: "body.i0",
@@ -641,56 +638,10 @@ pub(super) static KEYS: &[Key] = &[
         ..Key::BLANK
     },
     // [integrator]
-    Key {
-        path: "integrator.method",
-        families: ALL,
-        kind: Kind::Text(Choices::Methods),
-        required: Required::Yes,
-        description: "How to integrate. Fixed step: euler, symplectic-euler, rk4, and \
-                      lie-midpoint for a spatial body with quaternion kinematics under no load \
-                      or uniform gravity alone (the rotation by the geometric integrator, the \
-                      translation exactly). Adaptive, rows placed by dense output: dopri5, dop853.",
-        example: "\"dop853\"",
-        ..Key::BLANK
-    },
-    Key {
-        path: "integrator.rtol",
-        families: ALL,
-        unit: "-",
-        default: "1e-9",
-        description: "Adaptive methods only: the relative tolerance, at least ten rounding \
-                      units of f64 (1.1e-15), below which a method takes more steps for no \
-                      accuracy.",
-        example: "1e-9",
-        ..Key::BLANK
-    },
-    Key {
-        path: "integrator.atol",
-        families: ALL,
-        default: "1e-9",
-        description: "Adaptive methods only: the absolute tolerance, in each state entry's \
-                      own unit.",
-        example: "1e-9",
-        ..Key::BLANK
-    },
-    Key {
-        path: "integrator.step",
-        families: ALL,
-        unit: "s",
-        required: Required::When("for a fixed-step method"),
-        description: "Fixed-step methods only: the largest step. Each output interval is \
-                      integrated in equal steps of at most this, so that rows land on their \
-                      times. The run stops where h·|ω| passes the method's stability limit on \
-                      the imaginary axis (rk4 2√2 ≈ 2.83, symplectic Euler 2 on the pendulum; \
-                      |ω| the body's rate, |r| planar, √(Mgh/I₀) for the pendulum). Explicit \
-                      Euler is unstable there for every step, and so is symplectic Euler on a \
-                      body's rates, which it kicks together: they only warn, as any fixed step \
-                      does past the h·|ω| at which one turn errs by 10 % (0.0318 Euler, 1.18 \
-                      rk4). The bounds and their derivations: src/run/guard.rs.",
-        example: "0.001",
-        shown: Shown::Commented,
-        ..Key::BLANK
-    },
+    Key::shared("integrator.method", ALL, "\"dop853\"", Shown::Set),
+    Key::shared("integrator.rtol", ALL, "1e-9", Shown::Set),
+    Key::shared("integrator.atol", ALL, "1e-9", Shown::Set),
+    Key::shared("integrator.step", ALL, "0.001", Shown::Commented),
     Key {
         path: "integrator.end_time",
         families: ALL,
@@ -713,15 +664,7 @@ pub(super) static KEYS: &[Key] = &[
         shown: Shown::Commented,
         ..Key::BLANK
     },
-    Key {
-        path: "integrator.max_steps",
-        families: ALL,
-        kind: Kind::Integer,
-        default: "1_000_000",
-        description: "The most steps, accepted and rejected, a run may take.",
-        example: "1_000_000",
-        ..Key::BLANK
-    },
+    Key::shared("integrator.max_steps", ALL, "1_000_000", Shown::Set),
     // [output]
     Key {
         path: "output.every",
@@ -842,18 +785,10 @@ pub(super) static KEYS: &[Key] = &[
         ..Key::BLANK
     },
     // [sweep]
-    Key {
-        path: "sweep.*",
-        families: ALL,
-        kind: Kind::Table("key paths and values"),
-        description: "Values to vary, one run per combination, in parallel, each case into \
-                      case-NNNN/ with one line per case in sweep.csv: a key's path in quotes \
-                      and a list of values, or { from, to, count } evenly spaced. At most \
-                      100 000 cases a run, numbered in a fixed order (keys sorted, the last \
-                      varying fastest); `eom run --shard K/N` runs the cases k ≡ K (mod N) and \
-                      `eom sweep-merge` joins the shards' tables.",
-        example: "\"body.mass\" = { from = 1.0, to = 3.0, count = 5 }",
-        shown: Shown::Commented,
-        ..Key::BLANK
-    },
+    Key::shared(
+        "sweep.*",
+        ALL,
+        "\"body.mass\" = { from = 1.0, to = 3.0, count = 5 }",
+        Shown::Commented,
+    ),
 ];

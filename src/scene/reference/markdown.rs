@@ -2,7 +2,7 @@
 //! page, the templates and the scene checker say the same. `eom new --reference` prints it;
 //! a test compares the committed page with it.
 
-use super::{Key, SceneFamily, keys_of};
+use super::{Key, SceneFamily, keys_of, shared_keys};
 use crate::kinds::{REGISTRY, Registered};
 use crate::models::{ENERGY_UNIT, Family, ModelInfo, TIME_UNIT, state_with_unit, with_unit};
 
@@ -15,6 +15,7 @@ pub fn markdown() -> String {
         intro(),
         CONVENTIONS.to_owned(),
         families(),
+        every_scene_keys(),
         catalog_keys(),
         RUNNING.to_owned(),
     ]
@@ -128,16 +129,33 @@ fn row(key: &Key, with_families: bool) -> String {
     format!("| `{}` |{families} {} |\n", key.path, cells.join(" | "))
 }
 
-/// The keys of every catalog family, table by table.
+/// The keys every scene takes, whatever its family, each written once.
+fn every_scene_keys() -> String {
+    let mut out = String::from(
+        "## Keys every scene takes\n\n\
+         Every scene, of a catalog family or of a kind whose table defines its model, takes \
+         these keys, read and checked by one reader; each family's section below lists its \
+         own. Each template sets them to an example of its own.\n\n",
+    );
+    out.push_str(&table_header(false));
+    for key in shared_keys() {
+        out.push_str(&row(key, false));
+    }
+    out
+}
+
+/// The keys of every catalog family, table by table, but those every scene takes.
 fn catalog_keys() -> String {
     let mut out = String::from(
         "## Catalog scenes\n\n\
          The keys of the six catalog families, table by table: each key's type, its unit, \
          the axes a vector is in, its default, and whether it is required. A key that \
-         families read differently has a row for each.\n",
+         families read differently has a row for each. Beside them, a catalog scene takes \
+         the keys every scene takes.\n",
     );
+    let own = super::catalog::KEYS.iter().filter(|key| !key.shared);
     let mut table = None;
-    for key in super::catalog::KEYS {
+    for key in own {
         if table != Some(key.table()) {
             table = Some(key.table());
             let title = match key.table() {
@@ -183,8 +201,8 @@ fn kind_keys(kind: &Registered) -> String {
         reference.intro
     );
     out.push_str(&table_header(false));
-    for key in keys_of(SceneFamily::Kind(kind.name)) {
-        out.push_str(&row(key, false));
+    for key in keys_of(SceneFamily::Kind(kind.name)).filter(|key| !key.shared) {
+        out.push_str(&row(&key, false));
     }
     out
 }

@@ -11,6 +11,7 @@
 
 mod catalog;
 mod markdown;
+mod shared;
 mod template;
 
 pub use markdown::{REGENERATE, markdown};
@@ -91,6 +92,9 @@ pub struct Key {
     pub example: &'static str,
     /// Whether a template sets the key or shows it commented out.
     pub shown: Shown,
+    /// Whether the key is one every scene takes, defined once ([`Key::shared`]): this entry
+    /// says only where the family's template writes it, and with what example.
+    pub shared: bool,
 }
 
 impl Key {
@@ -106,7 +110,42 @@ impl Key {
         description: "",
         example: "",
         shown: Shown::Set,
+        shared: false,
     };
+
+    /// A key every scene takes ([`shared`]), where `families` write it: its place in their
+    /// list, the example their template sets, and whether it shows it commented out. Its
+    /// meaning is the shared definition's.
+    pub const fn shared(
+        path: &'static str,
+        families: &'static [SceneFamily],
+        example: &'static str,
+        shown: Shown,
+    ) -> Key {
+        Key {
+            path,
+            families,
+            example,
+            shown,
+            shared: true,
+            ..Key::BLANK
+        }
+    }
+
+    /// The key as a family reads it: a shared key's definition with the family's place,
+    /// example and showing; any other key as it is.
+    fn resolved(&self) -> Key {
+        match (self.shared, shared::definition(self.path)) {
+            (true, Some(definition)) => Key {
+                families: self.families,
+                example: self.example,
+                shown: self.shown,
+                shared: true,
+                ..*definition
+            },
+            _ => *self,
+        }
+    }
 
     /// The table the key is in: `integrator` of `integrator.step`, empty for a top-level key.
     pub fn table(&self) -> &'static str {
@@ -260,18 +299,23 @@ pub enum Shown {
     Commented,
 }
 
-/// Every key of every scene file, the catalog's, the ship's and the vehicle's, in the order a
-/// template writes them.
-pub fn keys() -> impl Iterator<Item = &'static Key> {
+/// Every key of every scene file, the catalog's, then each registered kind's, in the order a
+/// template writes them; a key every scene takes is given with each family's entry of it.
+pub fn keys() -> impl Iterator<Item = Key> {
     let kinds = crate::kinds::REGISTRY
         .iter()
         .flat_map(|kind| kind.reference.keys);
-    catalog::KEYS.iter().chain(kinds)
+    catalog::KEYS.iter().chain(kinds).map(Key::resolved)
 }
 
 /// The keys `family` reads, in template order.
-pub fn keys_of(family: SceneFamily) -> impl Iterator<Item = &'static Key> {
+pub fn keys_of(family: SceneFamily) -> impl Iterator<Item = Key> {
     keys().filter(move |key| key.is_of(family))
+}
+
+/// The keys every scene takes, each defined once, for the reference page.
+pub fn shared_keys() -> &'static [Key] {
+    shared::KEYS
 }
 
 /// The names of the keys a catalog family reads in `table` (`body`, `initial`, …): what the
@@ -279,7 +323,7 @@ pub fn keys_of(family: SceneFamily) -> impl Iterator<Item = &'static Key> {
 pub fn table_keys(family: Family, table: &str) -> Vec<&'static str> {
     keys_of(SceneFamily::Catalog(family))
         .filter(|key| key.table() == table)
-        .map(Key::name)
+        .map(|key| key.name())
         .collect()
 }
 
@@ -288,7 +332,7 @@ mod tests {
     use super::*;
     use crate::scene::{DEFAULT_MAX_STEPS, DEFAULT_ROWS, DEFAULT_TOLERANCE};
 
-    fn key(family: SceneFamily, path: &str) -> &'static Key {
+    fn key(family: SceneFamily, path: &str) -> Key {
         keys_of(family)
             .find(|k| k.path == path)
             .unwrap_or_else(|| panic!("no {path} for {}", family.name()))
@@ -320,6 +364,37 @@ mod tests {
         assert_eq!(steps, DEFAULT_MAX_STEPS);
         let rows = format!("end_time/{DEFAULT_ROWS}");
         assert_eq!(key(spatial, "output.every").default, rows);
+    }
+
+    /// A key every scene takes is taken by every family, each entry of it names a shared
+    /// definition, and no family defines it on its own.
+    #[test]
+    fn every_family_takes_every_shared_key_as_it_is_defined_once() {
+        let raw = catalog::KEYS
+            .iter()
+            .chain(crate::kinds::REGISTRY.iter().flat_map(|k| k.reference.keys));
+        for key in raw {
+            let definition = shared::definition(key.path);
+            assert_eq!(
+                definition.is_some(),
+                key.shared,
+                "{}: shared or its own",
+                key.path
+            );
+        }
+        for family in SceneFamily::all() {
+            for shared in shared::KEYS {
+                let taken = key(family, shared.path);
+                assert!(taken.shared, "{} {}", family.name(), shared.path);
+                assert_eq!(taken.description, shared.description);
+                assert!(
+                    !taken.example.is_empty(),
+                    "{} {}",
+                    family.name(),
+                    shared.path
+                );
+            }
+        }
     }
 
     #[test]

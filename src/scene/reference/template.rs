@@ -15,7 +15,7 @@ const WIDTH: usize = 92;
 
 /// The template of `family`: a TOML scene file with every key the family reads, commented.
 pub fn template(family: SceneFamily) -> String {
-    let keys: Vec<&Key> = keys_of(family).collect();
+    let keys: Vec<Key> = keys_of(family).collect();
     let mut out = preamble(family);
     let mut table = "";
     for (i, key) in keys.iter().enumerate() {

@@ -1,0 +1,100 @@
+//! The keys every scene takes, whatever its kind: its title, its method and the method's
+//! settings, and its sweep. Each is defined here once (its type, unit, default, whether it is
+//! required and what it means); a family's list of keys names it where its templates write
+//! it, with the example its template sets ([`Key::shared`]), so that the reference page
+//! writes it once and every template writes it in its place.
+
+use super::{Choices, Key, Kind, Required};
+
+/// The keys every scene takes. `families`, `example` and `shown` are each family's own
+/// ([`Key::shared`]).
+pub(super) static KEYS: &[Key] = &[
+    Key {
+        path: "title",
+        kind: Kind::Text(Choices::Free),
+        required: Required::Yes,
+        description: "What the scene is: the title of the summary and the plots.",
+        ..Key::BLANK
+    },
+    Key {
+        path: "integrator.method",
+        kind: Kind::Text(Choices::Methods),
+        required: Required::Yes,
+        description: "How to integrate. Fixed step: euler, symplectic-euler, rk4, and \
+                      lie-midpoint for a catalog spatial body with quaternion kinematics under \
+                      no load or uniform gravity alone (the rotation by the geometric \
+                      integrator, the translation exactly; no other scene takes it). Adaptive, \
+                      rows placed by dense output: dopri5, dop853. A run is cut at each change \
+                      of its schedule (a load table's times, a change of a manoeuvre's \
+                      commands) and at each of its events (a manoeuvre's heading passing 90°, \
+                      180° or ±ψ_a, its yaw rate passing zero, a steering gear reaching or \
+                      leaving its rate limit; a stop condition), located to adjacent \
+                      floating-point numbers of t on the method's solution: the dense output \
+                      of dopri5 and dop853, the step taken again for the fixed-step methods.",
+        ..Key::BLANK
+    },
+    Key {
+        path: "integrator.step",
+        unit: "s",
+        required: Required::When("for a fixed-step method"),
+        description: "Fixed-step methods only: the largest step. Each interval between rows \
+                      is integrated in equal steps of at most this, so that rows land on their \
+                      times. A run's figures are measured again at half the step taken, and \
+                      summary.json says how far each moves (`half_step_difference`; a \
+                      manoeuvre's largest, `refined_difference`, where its figures are many). \
+                      A catalog body's run stops where h·|ω| passes the method's stability \
+                      limit on the imaginary axis (rk4 2√2 ≈ 2.83, symplectic Euler 2 on the \
+                      pendulum; |ω| the body's rate, |r| planar, √(Mgh/I₀) for the pendulum). \
+                      Explicit Euler is unstable there for every step, and so is symplectic \
+                      Euler on a body's rates, which it kicks together: they only warn, as any \
+                      fixed step does past the h·|ω| at which one turn errs by 10 % (0.0318 \
+                      Euler, 1.18 rk4). The bounds and their derivations: src/run/guard.rs.",
+        ..Key::BLANK
+    },
+    Key {
+        path: "integrator.rtol",
+        unit: "-",
+        default: "1e-9",
+        description: "Adaptive methods only: the relative tolerance, at least ten rounding \
+                      units of f64 (1.1e-15), below which a method takes more steps for no \
+                      accuracy. A run's figures are measured again with rtol and atol a \
+                      hundred times tighter, and summary.json says how far each moves \
+                      (`tolerance_difference`; a manoeuvre's largest, `refined_difference`, \
+                      where its figures are many).",
+        ..Key::BLANK
+    },
+    Key {
+        path: "integrator.atol",
+        default: "1e-9",
+        description: "Adaptive methods only: the absolute tolerance, in each state entry's \
+                      own unit.",
+        ..Key::BLANK
+    },
+    Key {
+        path: "integrator.max_steps",
+        kind: Kind::Integer,
+        default: "1_000_000",
+        description: "The most steps, accepted and rejected, a run may take: a catalog \
+                      scene's one run, or each manoeuvre.",
+        ..Key::BLANK
+    },
+    Key {
+        path: "sweep.*",
+        kind: Kind::Table("key paths and values"),
+        description: "Values to vary, one run of the scene per combination, in parallel, each \
+                      case into case-NNNN/ with one line per case in sweep.csv (the swept \
+                      values and the run's figures: each manoeuvre's, each verdict's value and \
+                      whether it passed): a key's path in quotes (an entry of the manoeuvre \
+                      array by its index, `manoeuvre[0].rudder_deg`) and a list of values, or \
+                      { from, to, count } evenly spaced. At most 100 000 cases a run, numbered \
+                      in a fixed order (keys sorted, the last varying fastest); `eom run \
+                      --shard K/N` runs the cases k ≡ K (mod N) and `eom sweep-merge` joins \
+                      the shards' tables.",
+        ..Key::BLANK
+    },
+];
+
+/// The definition of the shared key at `path`, if there is one.
+pub(super) fn definition(path: &str) -> Option<&'static Key> {
+    KEYS.iter().find(|key| key.path == path)
+}
