@@ -35,7 +35,7 @@ use super::{IntegrateError, OdeSystem, Reached, RowClock, Stats, Stepper};
 use nalgebra::SVector;
 use std::cell::RefCell;
 
-/// What a run does after a change of its schedule or an event.
+/// What a run does after a change of its schedule or an event (or after a stretch).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Flow {
     /// It goes on.
@@ -128,58 +128,69 @@ pub(crate) fn solve<P: Problem<N>, const N: usize>(
         let (result, stats, fired) =
             stretch(&problem, stepper, (t, y, b, end), &mut rows, &mut row);
         add(&mut total, stats);
-        let reached = match result {
+        let mut reached = match result {
             Ok(reached) => reached,
             Err(error) => return (Err(error), total),
         };
-        let a = t;
-        (t, y) = (reached.t, reached.state);
-        let mut p = problem.borrow_mut();
-        let stopped_by_condition = reached.stopped && p.has_stop() && p.stop_holds(t, &y);
-        let flow = match fired {
-            _ if stopped_by_condition => {
-                // A condition holding at the stretch's start ends it before a step: its row
-                // there, if one was due, is written.
-                if t > a && !row(&**p, t, &y) {
-                    return (Err(IntegrateError::Stopped { t }), total);
-                }
-                return (Ok(reached), total);
-            }
-            Some(watch) => {
-                let flow = p.event(watch, t, &mut y);
-                if !row(&**p, t, &y) {
-                    return (Err(IntegrateError::Stopped { t }), total);
-                }
-                flow
-            }
-            None => Flow::Go,
-        };
-        let ended = |t, state| {
-            let stopped = false;
-            (Ok(Reached { t, state, stopped }), total)
-        };
-        if flow == Flow::Stop {
-            return ended(t, y);
-        }
-        // Short of the stretch's end: after an event, or where a watch was found within
-        // rounding of its zero without having changed sign (the step taken again to the
-        // located time lands a last bit apart): no event yet; the next stretch finds it.
-        if t < b {
-            continue;
-        }
-        if t >= end {
-            p.finish(t, &y);
-            return ended(t, y);
-        }
-        let flow = p.change(t, &mut y);
-        // A row due at the change is the next stretch's first, from the state after it.
-        if P::ROW_AT_CHANGE && rows.next_time() != t && !row(&**p, t, &y) {
-            return (Err(IntegrateError::Stopped { t }), total);
-        }
-        if flow == Flow::Stop {
-            return ended(t, y);
+        let p = &mut **problem.borrow_mut();
+        match resume(p, (t, b, end), (&mut reached, fired), (&rows, &mut row)) {
+            Ok(Flow::Go) => (t, y) = (reached.t, reached.state),
+            Ok(Flow::Stop) => return (Ok(reached), total),
+            Err(refused) => return (Err(refused), total),
         }
     }
+}
+
+/// What happens where a stretch from `a` ended (`reached`, short of `b` or at it): the stop
+/// condition ends the run; an event (`fired`) resets the problem, with a row after it; at
+/// `b`, the schedule's change resets it, with a row where [`Problem::ROW_AT_CHANGE`] (a row
+/// due there is the next stretch's first, from the state after it); at `end`, the run ends.
+/// The state after a reset is `reached`'s; whether the run goes on, or `Err` where the
+/// observer refused a row.
+fn resume<P: Problem<N>, const N: usize>(
+    p: &mut P,
+    (a, b, end): (f64, f64, f64),
+    (reached, fired): (&mut Reached<f64, N>, Option<P::Watch>),
+    (rows, row): (
+        &RowClock<f64>,
+        &mut dyn FnMut(&P, f64, &SVector<f64, N>) -> bool,
+    ),
+) -> Result<Flow, IntegrateError> {
+    let (t, y) = (reached.t, &mut reached.state);
+    let mut written = |p: &P, y: &SVector<f64, N>| {
+        row(p, t, y)
+            .then_some(())
+            .ok_or(IntegrateError::Stopped { t })
+    };
+    if reached.stopped && p.has_stop() && p.stop_holds(t, y) {
+        // A condition holding at the stretch's start ends it before a step: its row there,
+        // if one was due, is written.
+        if t > a {
+            written(p, y)?;
+        }
+        return Ok(Flow::Stop);
+    }
+    let mut flow = Flow::Go;
+    if let Some(watch) = fired {
+        flow = p.event(watch, t, y);
+        written(p, y)?;
+    }
+    reached.stopped = false;
+    // Short of the stretch's end: after an event, or where a watch was found within rounding
+    // of its zero without having changed sign (the step taken again to the located time lands
+    // a last bit apart): no event yet; the next stretch finds it.
+    if flow == Flow::Stop || t < b {
+        return Ok(flow);
+    }
+    if t >= end {
+        p.finish(t, y);
+        return Ok(Flow::Stop);
+    }
+    flow = p.change(t, y);
+    if P::ROW_AT_CHANGE && rows.next_time() != t {
+        written(p, y)?;
+    }
+    Ok(flow)
 }
 
 /// Where a stretch ended, what it cost, and the watch whose event ended it.
