@@ -151,10 +151,7 @@ fn resume<P: Problem<N>, const N: usize>(
     p: &mut P,
     (a, b, end): (f64, f64, f64),
     (reached, fired): (&mut Reached<f64, N>, Option<P::Watch>),
-    (rows, row): (
-        &RowClock<f64>,
-        &mut dyn FnMut(&P, f64, &SVector<f64, N>) -> bool,
-    ),
+    (rows, row): (&RowClock<f64>, Row<'_, P, N>),
 ) -> Result<Flow, IntegrateError> {
     let (t, y) = (reached.t, &mut reached.state);
     let mut written = |p: &P, y: &SVector<f64, N>| {
@@ -193,6 +190,9 @@ fn resume<P: Problem<N>, const N: usize>(
     Ok(flow)
 }
 
+/// Where a problem's rows go: the sample at `(t, y)` to the observer; `false` ends the run.
+type Row<'a, P, const N: usize> = &'a mut dyn FnMut(&P, f64, &SVector<f64, N>) -> bool;
+
 /// Where a stretch ended, what it cost, and the watch whose event ended it.
 type Stretch<W, const N: usize> = (Result<Reached<f64, N>, IntegrateError>, Stats, Option<W>);
 
@@ -207,7 +207,7 @@ fn stretch<P: Problem<N>, const N: usize>(
     stepper: &Stepper,
     (a, y_a, b, end): (f64, SVector<f64, N>, f64, f64),
     rows: &mut RowClock<f64>,
-    row: &mut dyn FnMut(&P, f64, &SVector<f64, N>) -> bool,
+    row: Row<'_, P, N>,
 ) -> Stretch<P::Watch, N> {
     let (system, watches, start, has_stop) = {
         let p = problem.borrow();
