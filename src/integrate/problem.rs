@@ -99,6 +99,12 @@ pub(crate) trait Problem<const N: usize> {
     /// The event `watch` at `t`: the inputs (and a state that jumps) reset.
     fn event(&mut self, watch: Self::Watch, t: f64, y: &mut SVector<f64, N>) -> Flow;
 
+    /// A stretch stopped at `(t, y)` where a watch was found within rounding of its zero
+    /// without having changed sign (the step taken again to the located time lands a last
+    /// bit apart): no event; the run goes on from there, and the steps past `t` were the
+    /// stretch's trial.
+    fn resumed(&mut self, _t: f64, _y: &SVector<f64, N>) {}
+
     /// The run has reached its end at `(t, y)`.
     fn finish(&mut self, _t: f64, _y: &SVector<f64, N>) {}
 
@@ -171,11 +177,16 @@ fn resume<P: Problem<N>, const N: usize>(
     if let Some(watch) = fired {
         flow = p.event(watch, t, y);
         written(p, y)?;
+    } else if reached.stopped {
+        // No event yet (see [`Problem::resumed`]); the next stretch finds it if the sign
+        // changes. The row due here, which the stop took the place of, is written.
+        p.resumed(t, y);
+        if rows.next > 0 && rows.time(rows.next - 1) == t {
+            written(p, y)?;
+        }
     }
     reached.stopped = false;
-    // Short of the stretch's end: after an event, or where a watch was found within rounding
-    // of its zero without having changed sign (the step taken again to the located time lands
-    // a last bit apart): no event yet; the next stretch finds it.
+    // Short of the stretch's end (after an event, or resumed): the run goes on.
     if flow == Flow::Stop || t < b {
         return Ok(flow);
     }
@@ -451,5 +462,99 @@ mod tests {
             assert_eq!((end.t, end.stopped, ramp.steps), (0.0, true, 0), "{method}");
             assert_eq!(rows, [(0.0, 0.0)], "{method}");
         }
+    }
+}
+
+#[cfg(test)]
+mod resumed {
+    use super::*;
+    use crate::integrate::Method;
+    use nalgebra::Vector1;
+    use std::cell::Cell;
+
+    /// ẏ = 1 to t = 1, watching a function that seems to change sign on its first evaluation
+    /// at t ≥ 1/2 and not when asked again there: as a watch within rounding of its zero
+    /// does where the step taken again to the located time lands a last bit apart.
+    #[derive(Default)]
+    struct Flicker {
+        flickered: Cell<bool>,
+        resumed: Vec<f64>,
+        events: usize,
+    }
+
+    impl Problem<1> for Flicker {
+        type System = fn(f64, &Vector1<f64>, &mut Vector1<f64>);
+        type Watch = ();
+        type Sample = f64;
+
+        fn start(&mut self) -> (f64, Vector1<f64>) {
+            (0.0, Vector1::new(0.0))
+        }
+
+        fn end(&self) -> f64 {
+            1.0
+        }
+
+        fn next_change(&self) -> Option<f64> {
+            None
+        }
+
+        fn system(&self, _t: f64, _until: f64) -> Self::System {
+            |_, _, dy| dy[0] = 1.0
+        }
+
+        fn watches(&self, _: &Self::System, _: f64, _: &Vector1<f64>) -> Vec<()> {
+            vec![()]
+        }
+
+        fn g(&self, _: &Self::System, _: (), t: f64, _: &Vector1<f64>) -> f64 {
+            if t >= 0.5 && !self.flickered.replace(true) {
+                -1.0
+            } else {
+                1.0
+            }
+        }
+
+        fn change(&mut self, _: f64, _: &mut Vector1<f64>) -> Flow {
+            Flow::Go
+        }
+
+        fn event(&mut self, _: (), _: f64, _: &mut Vector1<f64>) -> Flow {
+            self.events += 1;
+            Flow::Go
+        }
+
+        fn resumed(&mut self, t: f64, _: &Vector1<f64>) {
+            self.resumed.push(t);
+        }
+
+        fn sample(&self, t: f64, _: &Vector1<f64>) -> f64 {
+            t
+        }
+    }
+
+    /// No event: the run goes on from where the stretch stopped, the problem told; the row
+    /// due there (t = 1/2, a step's end), which the stop took the place of, is written once.
+    #[test]
+    fn a_stretch_stopped_without_an_event_goes_on_and_keeps_its_row() {
+        let stepper = Stepper {
+            method: Method::Rk4,
+            step: Some(0.1),
+            adaptive: None,
+            kicked: 0..1,
+        };
+        let mut flicker = Flicker::default();
+        let mut rows = Vec::new();
+        let (reached, _) = solve(&mut flicker, (&stepper, 0.5), |t: &f64| {
+            rows.push(*t);
+            true
+        });
+        let reached = reached.unwrap();
+        assert_eq!(
+            (reached.t, reached.stopped, flicker.events),
+            (1.0, false, 0)
+        );
+        assert_eq!(rows, [0.0, 0.5, 1.0]);
+        assert_eq!(flicker.resumed, [0.5]);
     }
 }

@@ -465,6 +465,12 @@ impl<'a> Problem<8> for Driver<'a> {
         self.settle(t, y)
     }
 
+    /// The instant is recorded, as one the run goes on from.
+    fn resumed(&mut self, t: f64, y: &DriveState) {
+        self.catch_up(t);
+        self.record(t, y);
+    }
+
     fn finish(&mut self, t: f64, y: &DriveState) {
         self.catch_up(t);
         self.settle(t, y);
