@@ -278,6 +278,9 @@ struct Tracked<'a> {
 }
 
 impl OdeSystem<f64, 8> for Tracked<'_> {
+    // Inlined into the method's step wherever the loop's stretches are compiled, as into the
+    // ship's own loop it was.
+    #[inline]
     fn rhs(&self, t: f64, y: &DriveState, dy: &mut DriveState) {
         let state = SVector::<f64, 7>::from_fn(|i, _| y[i]);
         let mut rates = SVector::<f64, 7>::zeros();
