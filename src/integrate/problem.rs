@@ -28,7 +28,9 @@
 //!
 //! A problem says its system under the inputs as they stand as a concrete type
 //! ([`Problem::System`]), so each stretch's steps are compiled for that model: the loop costs
-//! no call through a pointer per step beyond the driver's own.
+//! no call through a pointer per step beyond the driver's own. A system's `rhs` written in a
+//! kind's module is marked `#[inline]`, so that it is inlined into the method's step where
+//! this loop's stretches are compiled (without it the mariner's manoeuvres ran 5 % slower).
 
 use super::segment::{self, Hooks, Piece, add};
 use super::{IntegrateError, OdeSystem, Reached, RowClock, Stats, Stepper};

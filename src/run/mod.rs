@@ -8,16 +8,16 @@
 //! fixed-step method integrates each output interval in equal steps no longer than the
 //! scene's step, so every row lands on its time.
 //!
-//! A run is a [`Problem`] solved by the one loop every run is solved by
-//! (`integrate::problem::solve`): it is cut at the breakpoints of the loads given as time
-//! tables (see [`crate::scene::table`]), its schedule, and each piece is integrated on its
-//! own, so that no step
-//! straddles a jump: a fixed-step method lands on each breakpoint, an adaptive one starts
-//! afresh from it (its step-size heuristic, its first stage), as it must after a
+//! A run is a `Problem` solved by the one loop every run is solved by
+//! (`integrate::problem::solve`). Its schedule is the breakpoints of the loads given as time
+//! tables (see [`crate::scene::table`]): each piece between them is integrated on its own, so
+//! that no step straddles a jump: a fixed-step method lands on each breakpoint, an adaptive
+//! one starts afresh from it (its step-size heuristic, its first stage), as it must after a
 //! discontinuity; the rows go on at k·every across the cuts.
 //!
-//! A scene's stop condition (`integrator.stop_when`, [`StopCondition`](crate::scene::StopCondition)), the problem's, is evaluated at the
-//! end of every step. On the step where it first holds, the first time it holds is found by
+//! A scene's stop condition (`integrator.stop_when`,
+//! [`StopCondition`](crate::scene::StopCondition)) is the problem's, evaluated at the end of
+//! every step. On the step where it first holds, the first time it holds is found by
 //! bisection to adjacent floating-point numbers: on the dense output of an adaptive method,
 //! and for a fixed-step method by taking the one step again from its start to each trial
 //! time. The run ends there with a last row at that time, and [`Report::stopped_at`] says

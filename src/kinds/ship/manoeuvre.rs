@@ -1,14 +1,13 @@
 //! The standard manoeuvres as schedules and events over the one driver, and their figures.
 //!
 //! A manoeuvre is the ship model ([`ShipModel`], a [`Model`] like the catalog's) under the
-//! steering gear's loads ([`Steering`]: the rudder's rate from its command), a
-//! [`Problem`] solved by the one loop every run is solved by (`integrate::problem::solve`, over
-//! the one driver, with any of its methods). The run is
-//! cut into stretches at the instants its **schedule** changes the command (the execute, a
-//! pull-out's release, a series' breakpoints) and at its **events**, instants the state
-//! defines: the heading has changed by 90° (advance, transfer), the heading has passed ±ψ_a
-//! (the zig-zag reverses the rudder), the yaw rate is zero (an overshoot is largest). An event
-//! is a zero crossing of a function g of the state (`Watch`), located by the driver where g
+//! steering gear's loads ([`Steering`]: the rudder's rate from its command), a `Problem`
+//! solved by the one loop every run is solved by (`integrate::problem::solve`, over the one
+//! driver, with any of its methods). The run is cut into stretches at the instants its
+//! **schedule** changes the command (the execute, a pull-out's release, a series'
+//! breakpoints) and at its **events**, instants the state defines: the heading has changed by
+//! 90° (advance, transfer), the heading has passed ±ψ_a (the zig-zag reverses the rudder), the
+//! yaw rate is zero (an overshoot is largest). An event is a zero crossing of a function g of the state (`Watch`), located by the driver where g
 //! first has changed sign, to adjacent floating-point numbers of t on the integrator's own
 //! solution (the dense output of an adaptive method, the step taken again for a fixed-step
 //! one). So the figures are those of the integrated solution at the crossing, not at the

@@ -1,6 +1,6 @@
-//! A vehicle's manoeuvre: its fins under step commands or under the autopilots, a
-//! [`Problem`] solved by the one loop every run is solved by (`integrate::problem::solve`, over
-//! the one driver, any method), and the figures read where the commands change.
+//! A vehicle's manoeuvre: its fins under step commands or under the autopilots, a `Problem`
+//! solved by the one loop every run is solved by (`integrate::problem::solve`, over the one
+//! driver, any method), and the figures read where the commands change.
 //!
 //! The run is cut into stretches at the instants the commands change (the steps, the
 //! setpoints, and the autopilots' samples, [`super::autopilot`]), so each stretch holds its
