@@ -23,7 +23,9 @@
 //! Over both, `segment.rs` is the one driver of a run, a scene's or a ship's manoeuvre: any
 //! [`Method`] ([`Stepper`]) from one instant to the next, rows at t = k·every, a check after
 //! every step, and a stop condition (a time table's breakpoint, a manoeuvre's event) located
-//! where it first holds on the method's own solution.
+//! where it first holds on the method's own solution. Over it, `problem.rs` is the one loop
+//! every run is solved by: a run says its start, end, schedule, watches, resets and rows as a
+//! `Problem`, and `solve` cuts it into stretches and resumes it after each.
 
 mod adaptive;
 mod controller;
@@ -34,6 +36,7 @@ mod error;
 mod euler;
 mod lie_midpoint;
 mod method;
+pub(crate) mod problem;
 mod rk4;
 pub(crate) mod segment;
 mod stats;

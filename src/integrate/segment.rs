@@ -22,10 +22,9 @@
 //!   to each trial time. So an event is located to the last bit of t on the integrator's own
 //!   solution; its error against the exact motion is the integrator's error there. The stretch
 //!   ends there with a row at that time.
-//! - **Watches** ([`advance_watching`]): a run with events (a ship's manoeuvre, a vehicle's
-//!   trial) gives the functions of the time and state whose change of sign is one; the stretch
-//!   stops where the first changes sign and says which, the one nearest its zero where two
-//!   changed within the same step. Every kind with events runs its stretches through it.
+//! - **Watches** are stop conditions too: a run with events (a ship's manoeuvre, a vehicle's
+//!   trial) stops a stretch where one of its functions of the state first changes sign
+//!   ([`super::problem`], the one loop every run's stretches are cut and resumed by).
 
 use super::{
     AdaptiveOptions, Dop853, Dopri5, Euler, IntegrateError, Integrator, Method, OdeSystem, Reached,
@@ -171,73 +170,6 @@ pub(crate) fn advance<S: OdeSystem<f64, N>, const N: usize>(
             }),
             Stats::default(),
         ),
-    }
-}
-
-/// A stretch that watches functions of the time and state (a manoeuvre's events: a heading
-/// change, a zero yaw rate, a steering gear reaching its rate limit): where it ended, what it
-/// cost, the state after every accepted step, and the watch whose sign change ended it.
-pub(crate) struct Watched<W, const N: usize> {
-    /// Where the stretch ended.
-    pub(crate) reached: Result<Reached<f64, N>, IntegrateError>,
-    /// What it cost.
-    pub(crate) stats: Stats,
-    /// The time and state after every accepted step, for what the caller records of them.
-    pub(crate) steps: Vec<(f64, SVector<f64, N>)>,
-    /// The watch that ended it: of those whose sign changed, the one nearest its zero.
-    pub(crate) fired: Option<W>,
-}
-
-/// One stretch from `(a, y_a)` to `b` that ends where one of `watches` first changes sign
-/// from its sign at `a` (`g(watch, t, y)` its value; one at zero at `a` is not watched),
-/// located as a stop condition is, to adjacent floating-point numbers of t. Every row goes to
-/// `emit`; the row at the stop is the caller's (it may change the state there first), the
-/// row at `b` this stretch's where `row_at_end`. What every run with events does between its
-/// schedule's changes, written once for every kind.
-pub(crate) fn advance_watching<S, W, G, const N: usize>(
-    (stepper, system): (&Stepper, &S),
-    (a, y_a, b): (f64, SVector<f64, N>, f64),
-    rows: &mut RowClock<f64>,
-    (watches, g): (&[W], G),
-    (emit, row_at_end): (Emit<'_, N>, bool),
-) -> Watched<W, N>
-where
-    S: OdeSystem<f64, N>,
-    W: Copy,
-    G: Fn(W, f64, &SVector<f64, N>) -> f64,
-{
-    let start: Vec<f64> = watches.iter().map(|w| g(*w, a, &y_a)).collect();
-    // Whether `watch`, at g0 when the stretch began, has changed its sign at (t, y).
-    let moved = |watch: W, g0: f64, t: f64, y: &SVector<f64, N>| {
-        g0 != 0.0 && g(watch, t, y).signum() != g0.signum()
-    };
-    // Asked after every step: no list made.
-    let stop = |t: f64, y: &SVector<f64, N>| {
-        (watches.iter().zip(&start)).any(|(w, g0)| moved(*w, *g0, t, y))
-    };
-    let mut steps = Vec::new();
-    let hooks = Hooks {
-        check: &mut |t, y: &SVector<f64, N>| {
-            steps.push((t, *y));
-            true
-        },
-        stop: (!watches.is_empty()).then_some(&stop as &dyn Fn(f64, &SVector<f64, N>) -> bool),
-        emit,
-        row_at_end,
-        row_at_stop: false,
-    };
-    let (reached, stats) = advance(stepper, system, (a, y_a, b), rows, hooks);
-    let fired = reached.as_ref().ok().filter(|r| r.stopped).and_then(|r| {
-        let changed =
-            (watches.iter().zip(&start)).filter(|(w, g0)| moved(**w, **g0, r.t, &r.state));
-        let nearness = |w: &W| g(*w, r.t, &r.state).abs();
-        (changed.map(|(w, _)| *w)).min_by(|a, b| nearness(a).total_cmp(&nearness(b)))
-    });
-    Watched {
-        reached,
-        stats,
-        steps,
-        fired,
     }
 }
 

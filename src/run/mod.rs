@@ -8,14 +8,16 @@
 //! fixed-step method integrates each output interval in equal steps no longer than the
 //! scene's step, so every row lands on its time.
 //!
-//! A run is cut at the breakpoints of the loads given as time tables (see
-//! [`crate::scene::table`]), and each piece is integrated on its own, so that no step
-//! straddles a jump: a fixed-step method lands on each breakpoint, an adaptive one starts
-//! afresh from it (its step-size heuristic, its first stage), as it must after a
+//! A run is a `Problem` solved by the one loop every run is solved by
+//! (`integrate::problem::solve`). Its schedule is the breakpoints of the loads given as time
+//! tables (see [`crate::scene::table`]): each piece between them is integrated on its own, so
+//! that no step straddles a jump: a fixed-step method lands on each breakpoint, an adaptive
+//! one starts afresh from it (its step-size heuristic, its first stage), as it must after a
 //! discontinuity; the rows go on at k·every across the cuts.
 //!
-//! A scene's stop condition (`integrator.stop_when`, [`StopCondition`](crate::scene::StopCondition)) is evaluated at the
-//! end of every step. On the step where it first holds, the first time it holds is found by
+//! A scene's stop condition (`integrator.stop_when`,
+//! [`StopCondition`](crate::scene::StopCondition)) is the problem's, evaluated at the end of
+//! every step. On the step where it first holds, the first time it holds is found by
 //! bisection to adjacent floating-point numbers: on the dense output of an adaptive method,
 //! and for a fixed-step method by taking the one step again from its start to each trial
 //! time. The run ends there with a last row at that time, and [`Report::stopped_at`] says
@@ -52,14 +54,16 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use crate::integrate::segment::{self, Hooks, Piece, add};
+use crate::integrate::problem::{self, Flow, Problem};
+use crate::integrate::segment::{self, Hooks, Piece};
 use crate::integrate::{
-    IntegrateError, LieMidpoint, OdeSystem, Reached, RigidRotation, RowClock, Stats, Stepper,
+    IntegrateError, LieMidpoint, Reached, RigidRotation, RowClock, Stats, Stepper,
 };
-use crate::models::{Model, Visitor};
-use crate::scene::{Body, Method, Scene};
+use crate::models::{Driven, Model, Visitor};
+use crate::scene::{Body, Method, PreparedLoads, Scene};
 use guard::Guard;
 use nalgebra::{Matrix3, Quaternion, SVector, UnitQuaternion, Vector3};
+use std::convert::Infallible;
 use std::ops::Range;
 use std::time::Instant;
 use thiserror::Error;
@@ -414,52 +418,91 @@ fn pieces<Mo: Model<f64, N, M>, const N: usize, const M: usize>(
     emit: &mut impl FnMut(f64, &SVector<f64, N>) -> bool,
 ) -> Piece<N> {
     let end = scene.integrator.end_time;
-    let mut cuts: Vec<f64> = (scene.loads.breakpoints().into_iter())
+    let cuts = (scene.loads.breakpoints().into_iter())
         .filter(|t| *t > 0.0 && *t < end)
         .collect();
-    cuts.push(end);
-    let mut rows = RowClock::new(0.0, scene.every);
-    let mut total = Stats::default();
-    let mut at = Reached {
-        t: 0.0,
-        state: y0,
-        stopped: false,
+    let mut pieces = Pieces {
+        model,
+        scene,
+        y0,
+        guard,
+        cuts,
+        next: 0,
     };
-    for b in cuts {
-        let system = model.driven_by(scene.loads.prepared_on(at.t, b));
-        let interval = (at.t, at.state, b);
-        let (result, stats) = piece(&system, scene, interval, &mut rows, guard, emit);
-        add(&mut total, stats);
-        match result {
-            Ok(reached) if !reached.stopped => at = reached,
-            other => return (other, total),
-        }
-    }
-    (Ok(at), total)
+    let observe = |(t, y): &(f64, SVector<f64, N>)| emit(*t, y);
+    problem::solve(&mut pieces, (&stepper(scene), scene.every), observe)
 }
 
-/// One piece of a run, from `a` to `b`, with the scene's method: the guard checking every
-/// step, the stop condition ending it where it first holds.
-fn piece<S: OdeSystem<f64, N>, const N: usize>(
-    system: &S,
-    scene: &Scene,
-    interval: (f64, SVector<f64, N>, f64),
-    rows: &mut RowClock<f64>,
-    guard: &mut Guard,
-    emit: &mut impl FnMut(f64, &SVector<f64, N>) -> bool,
-) -> Piece<N> {
-    let condition = scene.stop.as_ref();
-    let stop = condition.map(|c| move |t: f64, y: &SVector<f64, N>| c.holds(t, y.as_slice()));
-    let hooks = Hooks {
-        check: &mut |t, y: &SVector<f64, N>| guard.check(t, y.as_slice()),
-        stop: stop
-            .as_ref()
-            .map(|f| f as &dyn Fn(f64, &SVector<f64, N>) -> bool),
-        emit,
-        row_at_end: true,
-        row_at_stop: true,
-    };
-    segment::advance(&stepper(scene), system, interval, rows, hooks)
+/// A scene's run as the one loop runs it: cut at its load tables' breakpoints, the guard
+/// checking every step, the stop condition ending it where it first holds.
+struct Pieces<'a, Mo, const N: usize, const M: usize> {
+    model: &'a Mo,
+    scene: &'a Scene,
+    y0: SVector<f64, N>,
+    guard: &'a mut Guard,
+    /// The breakpoints within the run, in order, and the index of the next.
+    cuts: Vec<f64>,
+    next: usize,
+}
+
+impl<'a, Mo: Model<f64, N, M>, const N: usize, const M: usize> Problem<N> for Pieces<'a, Mo, N, M> {
+    type System = Driven<'a, Mo, PreparedLoads, M>;
+    /// A scene watches for nothing but its stop condition.
+    type Watch = Infallible;
+    type Sample = (f64, SVector<f64, N>);
+
+    /// A breakpoint changes the loads, not the state, and a row shows the state alone.
+    const ROW_AT_CHANGE: bool = false;
+
+    fn start(&mut self) -> (f64, SVector<f64, N>) {
+        (0.0, self.y0)
+    }
+
+    fn end(&self) -> f64 {
+        self.scene.integrator.end_time
+    }
+
+    fn next_change(&self) -> Option<f64> {
+        self.cuts.get(self.next).copied()
+    }
+
+    /// The loads read on the piece from `t` to `until`.
+    fn system(&self, t: f64, until: f64) -> Self::System {
+        self.model.driven_by(self.scene.loads.prepared_on(t, until))
+    }
+
+    fn watches(&self, _: &Self::System, _: f64, _: &SVector<f64, N>) -> Vec<Infallible> {
+        Vec::new()
+    }
+
+    fn g(&self, _: &Self::System, watch: Infallible, _: f64, _: &SVector<f64, N>) -> f64 {
+        match watch {}
+    }
+
+    fn has_stop(&self) -> bool {
+        self.scene.stop.is_some()
+    }
+
+    fn stop_holds(&self, t: f64, y: &SVector<f64, N>) -> bool {
+        (self.scene.stop.as_ref()).is_some_and(|condition| condition.holds(t, y.as_slice()))
+    }
+
+    fn accepted(&mut self, t: f64, y: &SVector<f64, N>) -> bool {
+        self.guard.check(t, y.as_slice())
+    }
+
+    fn change(&mut self, _: f64, _: &mut SVector<f64, N>) -> Flow {
+        self.next += 1;
+        Flow::Go
+    }
+
+    fn event(&mut self, watch: Infallible, _: f64, _: &mut SVector<f64, N>) -> Flow {
+        match watch {}
+    }
+
+    fn sample(&self, t: f64, y: &SVector<f64, N>) -> Self::Sample {
+        (t, *y)
+    }
 }
 
 /// A free body's rotation, `[p, q, r, q0, q1, q2, q3]`, for the geometric integrator.

@@ -1,13 +1,13 @@
 //! The standard manoeuvres as schedules and events over the one driver, and their figures.
 //!
 //! A manoeuvre is the ship model ([`ShipModel`], a [`Model`] like the catalog's) under the
-//! steering gear's loads ([`Steering`]: the rudder's rate from its command), integrated by
-//! `segment::advance`, the driver every scene runs on, with any of its methods. The run is
-//! cut into stretches at the instants its **schedule** changes the command (the execute, a
-//! pull-out's release, a series' breakpoints) and at its **events**, instants the state
-//! defines: the heading has changed by 90° (advance, transfer), the heading has passed ±ψ_a
-//! (the zig-zag reverses the rudder), the yaw rate is zero (an overshoot is largest). An event
-//! is a zero crossing of a function g of the state (`Watch`), located by the driver where g
+//! steering gear's loads ([`Steering`]: the rudder's rate from its command), a `Problem`
+//! solved by the one loop every run is solved by (`integrate::problem::solve`, over the one
+//! driver, with any of its methods). The run is cut into stretches at the instants its
+//! **schedule** changes the command (the execute, a pull-out's release, a series'
+//! breakpoints) and at its **events**, instants the state defines: the heading has changed by
+//! 90° (advance, transfer), the heading has passed ±ψ_a (the zig-zag reverses the rudder), the
+//! yaw rate is zero (an overshoot is largest). An event is a zero crossing of a function g of the state (`Watch`), located by the driver where g
 //! first has changed sign, to adjacent floating-point numbers of t on the integrator's own
 //! solution (the dense output of an adaptive method, the step taken again for a fixed-step
 //! one). So the figures are those of the integrated solution at the crossing, not at the
@@ -28,8 +28,8 @@ use super::propulsion::RateCommand;
 use super::side::Side;
 use super::spiral::{self, Progress, ReverseSpiral, Spiral, SpiralCurve};
 use super::steady::steady_turns;
-use crate::integrate::segment::{self, add};
-use crate::integrate::{IntegrateError, OdeSystem, RowClock, Stats, Stepper};
+use crate::integrate::problem::{self, Flow, Problem};
+use crate::integrate::{IntegrateError, OdeSystem, Stepper};
 use crate::manoeuvring::course::Course;
 use crate::manoeuvring::steering::{Rudder, Series};
 use crate::models::{Driven, Loads, Model};
@@ -277,6 +277,9 @@ struct Tracked<'a> {
 }
 
 impl OdeSystem<f64, 8> for Tracked<'_> {
+    // Inlined into the method's step wherever the loop's stretches are compiled, as into the
+    // ship's own loop it was.
+    #[inline]
     fn rhs(&self, t: f64, y: &DriveState, dy: &mut DriveState) {
         let state = SVector::<f64, 7>::from_fn(|i, _| y[i]);
         let mut rates = SVector::<f64, 7>::zeros();
@@ -358,7 +361,7 @@ pub fn run(
     manoeuvre: &Manoeuvre,
     start: [f64; 7],
     (stepper, every): (&Stepper, f64),
-    mut observe: impl FnMut(&Sample) -> bool,
+    observe: impl FnMut(&Sample) -> bool,
 ) -> Result<ManoeuvreRun, ShipError> {
     let mut y = DriveState::zeros();
     for (i, value) in start.iter().enumerate() {
@@ -388,52 +391,101 @@ pub fn run(
         side: 0.0,
         log: Log::default(),
         spiral: None,
+        start: y,
+        times: Vec::new(),
+        pending: None,
     };
-    let mut times = driver.command_times();
-    let mut t = 0.0;
-    driver.apply_times(t, &mut y, &mut times);
-    let mut rows = RowClock::new(0.0, every);
-    let mut total = Stats::default();
-    while t < manoeuvre.duration {
-        let end = times
-            .first()
-            .map_or(manoeuvre.duration, |&b| b.min(manoeuvre.duration));
-        let stretch = driver.stretch(stepper, (t, y, end), &mut rows, &mut observe);
-        add(&mut total, stretch.stats);
-        let reached = stretch.reached.map_err(|error| run_error(error, stepper))?;
-        // The steps past an event are the stretch's trial, not the ship's course.
-        for (time, state) in stretch.steps.iter().filter(|(time, _)| *time < reached.t) {
-            driver.record(*time, state);
+    driver.times = driver.command_times();
+    let (reached, stats) = problem::solve(&mut driver, (stepper, every), observe);
+    let end = reached.map_err(|error| run_error(error, stepper))?;
+    Ok(ManoeuvreRun {
+        figures: driver.figures((end.t, &end.state)),
+        steps: stats.steps as u64,
+    })
+}
+
+/// A manoeuvre as the one loop runs it: the schedule's instants, the events it watches for
+/// (and the steering gear's rate limit), the rows with the command, the course from every
+/// accepted step.
+impl<'a> Problem<8> for Driver<'a> {
+    type System = Tracked<'a>;
+    type Watch = Watch;
+    type Sample = Sample;
+
+    fn start(&mut self) -> (f64, DriveState) {
+        let mut y = self.start;
+        self.apply_times(0.0, &mut y);
+        (0.0, y)
+    }
+
+    fn end(&self) -> f64 {
+        self.manoeuvre.duration
+    }
+
+    fn next_change(&self) -> Option<f64> {
+        self.times.first().copied()
+    }
+
+    fn system(&self, _t: f64, _until: f64) -> Tracked<'a> {
+        self.system()
+    }
+
+    fn watches(&self, system: &Tracked<'a>, t: f64, y: &DriveState) -> Vec<Watch> {
+        let mut watches = self.watches.clone();
+        if (system.driven.loads().rate_margin(t, y[2], y[6])).is_some() {
+            watches.push(Watch::RateLimit);
         }
-        (t, y) = (reached.t, reached.state);
-        // A row at each event and at each change of the schedule, showing the state after
-        // it (a row due at a schedule's instant anyway is the next stretch's first).
-        let row = match stretch.fired {
-            // The steering's own event: only the form of δ̇ changes.
-            Some(Watch::RateLimit) => true,
-            Some(watch) => {
-                driver.fire(watch, t, &mut y);
-                true
-            }
-            None if t < manoeuvre.duration => {
-                driver.apply_times(t, &mut y, &mut times);
-                rows.next_time() != t
-            }
-            None => false,
-        };
-        if row && !observe(&driver.sample(t, &y)) {
-            return Err(ShipError::Stopped { time: t });
-        }
-        driver.record(t, &y);
-        if driver.spiral_done() || driver.stopped() {
-            break;
+        watches
+    }
+
+    fn g(&self, system: &Tracked<'a>, watch: Watch, t: f64, y: &DriveState) -> f64 {
+        match watch {
+            Watch::RateLimit => (system.driven.loads().rate_margin(t, y[2], y[6])).unwrap_or(0.0),
+            other => other.g(y, self.heading0(), self.heading_a()),
         }
     }
-    let figures = driver.figures((t, &y));
-    Ok(ManoeuvreRun {
-        figures,
-        steps: total.steps as u64,
-    })
+
+    fn accepted(&mut self, t: f64, y: &DriveState) -> bool {
+        if let Some((time, state)) = self.pending.replace((t, *y)) {
+            self.record(time, &state);
+        }
+        true
+    }
+
+    /// An event of the manoeuvre; at the steering gear's own only the form of δ̇ changes.
+    fn event(&mut self, watch: Watch, t: f64, y: &mut DriveState) -> Flow {
+        self.catch_up(t);
+        if watch != Watch::RateLimit {
+            self.fire(watch, t, y);
+        }
+        self.settle(t, y)
+    }
+
+    fn change(&mut self, t: f64, y: &mut DriveState) -> Flow {
+        self.catch_up(t);
+        self.apply_times(t, y);
+        self.settle(t, y)
+    }
+
+    /// The instant is recorded, as one the run goes on from.
+    fn resumed(&mut self, t: f64, y: &DriveState) {
+        self.catch_up(t);
+        self.record(t, y);
+    }
+
+    fn finish(&mut self, t: f64, y: &DriveState) {
+        self.catch_up(t);
+        self.settle(t, y);
+    }
+
+    /// The state and the saturated command as it stands.
+    fn sample(&self, t: f64, y: &DriveState) -> Sample {
+        Sample {
+            t,
+            state: std::array::from_fn(|i| y[i]),
+            command: self.system().driven.loads().command(t, y[2]).0,
+        }
+    }
 }
 
 /// A failed stretch as a ship's error, naming the state entry or the cause.
@@ -459,10 +511,6 @@ fn run_error(error: IntegrateError, stepper: &Stepper) -> ShipError {
     }
 }
 
-/// What one stretch of a run gave: where it ended, its cost, the state after each accepted
-/// step, and the watch whose event ended it, if one did.
-type Stretch = segment::Watched<Watch, 8>;
-
 /// The run's moving parts: the command, what it watches for, what it has seen.
 struct Driver<'a> {
     model: &'a ShipModel,
@@ -480,6 +528,13 @@ struct Driver<'a> {
     log: Log,
     /// A spiral under way.
     spiral: Option<Progress>,
+    /// The state the run starts from.
+    start: DriveState,
+    /// The instants the command changes from here on, in order.
+    times: Vec<f64>,
+    /// The last accepted step, not yet recorded: the steps past where a stretch ends are
+    /// its trial, not the ship's course.
+    pending: Option<(f64, DriveState)>,
 }
 
 impl<'a> Driver<'a> {
@@ -501,53 +556,6 @@ impl<'a> Driver<'a> {
         };
         Tracked {
             driven: self.model.driven_by(steering),
-        }
-    }
-
-    /// One stretch of the run from `(a, y_a)` to `b`: the driver stepping the ship under the
-    /// command as it stands, ending early where a watched function first changes sign. Returns
-    /// where it ended, its cost, and the state after every accepted step (for the course).
-    fn stretch(
-        &self,
-        stepper: &Stepper,
-        (a, y_a, b): (f64, DriveState, f64),
-        rows: &mut RowClock<f64>,
-        observe: &mut impl FnMut(&Sample) -> bool,
-    ) -> Stretch {
-        let system = self.system();
-        let steering = *system.driven.loads();
-        let mut watches = self.watches.clone();
-        if steering.rate_margin(a, y_a[2], y_a[6]).is_some() {
-            watches.push(Watch::RateLimit);
-        }
-        let g = |watch: Watch, t: f64, y: &DriveState| match watch {
-            Watch::RateLimit => steering.rate_margin(t, y[2], y[6]).unwrap_or(0.0),
-            other => self.g(other, y),
-        };
-        // A rudder without a lag jumps at a schedule's instant and at an event: the rows there
-        // show the state after the jump (the run writes them).
-        let row_at_end = b >= self.manoeuvre.duration;
-        let emit = &mut |t, y: &DriveState| observe(&self.sample(t, y));
-        segment::advance_watching(
-            (stepper, &system),
-            (a, y_a, b),
-            rows,
-            (&watches, g),
-            (emit, row_at_end),
-        )
-    }
-
-    /// The watched function's value at `y`.
-    fn g(&self, watch: Watch, y: &DriveState) -> f64 {
-        watch.g(y, self.heading0(), self.heading_a())
-    }
-
-    /// The row at `t`: the state and the saturated command as it stands.
-    fn sample(&self, t: f64, y: &DriveState) -> Sample {
-        Sample {
-            t,
-            state: std::array::from_fn(|i| y[i]),
-            command: self.system().driven.loads().command(t, y[2]).0,
         }
     }
 
@@ -580,14 +588,14 @@ impl<'a> Driver<'a> {
     }
 
     /// Applies every command change due at `t`.
-    fn apply_times(&mut self, t: f64, y: &mut DriveState, times: &mut Vec<f64>) {
-        while times.first().is_some_and(|&time| time <= t) {
-            let time = times.remove(0);
+    fn apply_times(&mut self, t: f64, y: &mut DriveState) {
+        while self.times.first().is_some_and(|&time| time <= t) {
+            let time = self.times.remove(0);
             if time == self.manoeuvre.execute {
                 self.execute(y);
                 if let Some(window) = self.settle_window() {
-                    times.push(time + window);
-                    times.sort_by(f64::total_cmp);
+                    self.times.push(time + window);
+                    self.times.sort_by(f64::total_cmp);
                 }
             }
             if let ManoeuvreKind::PullOut { release, .. } = self.manoeuvre.kind
@@ -602,14 +610,14 @@ impl<'a> Driver<'a> {
                 y[6] = self.rudder.saturate(series.angle(time));
             }
             if time > self.manoeuvre.execute {
-                self.check_spiral(time, y, times);
+                self.check_spiral(time, y);
             }
         }
     }
 
     /// A spiral's check at `t`: the setpoint's point taken if it has settled, the next put on,
     /// and the next check scheduled.
-    fn check_spiral(&mut self, t: f64, y: &mut DriveState, times: &mut Vec<f64>) {
+    fn check_spiral(&mut self, t: f64, y: &mut DriveState) {
         let (settle, gain) = match &self.manoeuvre.kind {
             ManoeuvreKind::Spiral(spiral) => (spiral.settle, None),
             ManoeuvreKind::ReverseSpiral(reverse) => (reverse.settle, Some(reverse.gain)),
@@ -626,8 +634,8 @@ impl<'a> Driver<'a> {
             if gain.is_none() {
                 self.set_command(setpoint, y);
             }
-            times.push(t + settle.window);
-            times.sort_by(f64::total_cmp);
+            self.times.push(t + settle.window);
+            self.times.sort_by(f64::total_cmp);
         }
     }
 
@@ -665,6 +673,26 @@ impl<'a> Driver<'a> {
         self.command = angle;
         if self.rudder.time_constant.is_none() {
             y[6] = self.rudder.saturate(angle);
+        }
+    }
+
+    /// Records the stretch's last step if it came before `t`, where the stretch ended: a
+    /// step past it is the stretch's trial, not the ship's course. Before what happens at `t`.
+    fn catch_up(&mut self, t: f64) {
+        if let Some((time, state)) = self.pending.take().filter(|(time, _)| *time < t) {
+            self.record(time, &state);
+        }
+    }
+
+    /// Records the instant `(t, y)` as the run goes on from it, after what happened there;
+    /// a spiral that has measured every setpoint, or a crash stop's ship that has stopped,
+    /// ends the run.
+    fn settle(&mut self, t: f64, y: &DriveState) -> Flow {
+        self.record(t, y);
+        if self.spiral_done() || self.stopped() {
+            Flow::Stop
+        } else {
+            Flow::Go
         }
     }
 

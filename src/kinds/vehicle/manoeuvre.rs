@@ -1,6 +1,6 @@
-//! A vehicle's manoeuvre: its fins under step commands or under the autopilots, integrated by
-//! the one driver (`integrate::segment::advance`, any method), and the figures read where the
-//! commands change.
+//! A vehicle's manoeuvre: its fins under step commands or under the autopilots, a `Problem`
+//! solved by the one loop every run is solved by (`integrate::problem::solve`, over the one
+//! driver, any method), and the figures read where the commands change.
 //!
 //! The run is cut into stretches at the instants the commands change (the steps, the
 //! setpoints, and the autopilots' samples, [`super::autopilot`]), so each stretch holds its
@@ -15,9 +15,9 @@ use super::fins::{FinSteps, Fins, Steering};
 use super::model::VehicleModel;
 use super::trial::{Progress, Trial, Watch};
 use super::trim::{Held, Trim};
-use crate::integrate::segment::{self, add};
-use crate::integrate::{IntegrateError, RowClock, Stats, Stepper};
-use crate::models::Model;
+use crate::integrate::problem::{self, Flow, Problem};
+use crate::integrate::{IntegrateError, Stepper};
+use crate::models::{Driven, Model};
 use nalgebra::SVector;
 
 /// One manoeuvre of a scene: the fins' steps, from its trim, and the autopilots with what
@@ -183,95 +183,33 @@ pub fn run(
     manoeuvre: &VehicleManoeuvre,
     start: [f64; 15],
     (stepper, every): (&Stepper, f64),
-    mut observe: impl FnMut(&Sample) -> bool,
+    observe: impl FnMut(&Sample) -> bool,
 ) -> Result<VehicleRun, VehicleError> {
     let mut y = VehicleState::from(start);
     let schedule = schedule(manoeuvre);
-    let mut changes: Vec<f64> = instants(manoeuvre, &schedule);
-    changes.push(manoeuvre.duration);
-    let mut t = 0.0;
+    let changes = instants(manoeuvre, &schedule);
     let mut command = Command::new(manoeuvre, &start);
-    let mut steering = command.at(fins, t, &mut y, true);
-    let mut rows = RowClock::new(0.0, every);
-    let mut total = Stats::default();
-    let mut ends = Vec::new();
-    for b in changes {
-        let last = b >= manoeuvre.duration;
-        loop {
-            let (reached, stats, fired) = stretch(
-                model,
-                steering,
-                &mut command,
-                (stepper, &mut rows),
-                (t, y, b),
-                last,
-                &mut observe,
-            );
-            add(&mut total, stats);
-            let reached = reached.map_err(|error| run_error(error, stepper))?;
-            (t, y) = (reached.t, reached.state);
-            let Some(kink) = fired else {
-                // Stopped where the watched function is within rounding of zero, on the side
-                // it started (the step taken again to the located time lands a last bit
-                // apart): no event yet; the next stretch finds it if the sign changes.
-                if reached.stopped && t < b {
-                    continue;
-                }
-                break;
-            };
-            // An event: the trial takes it (a zig-zag reverses its fin), and a row shows the
-            // state after it; at a rate limit's kink only the form of δ̇ changes.
-            if let (Kink::Trial(watch), Some(progress)) = (kink, command.progress.as_mut()) {
-                progress.fire(watch, t, &y.data.0[0]);
-                steering = command.at(fins, t, &mut y, false);
-            }
-            let after = Sample {
-                t,
-                state: y.data.0[0],
-                commands: steering.saturated(),
-            };
-            if !observe(&after) {
-                return Err(VehicleError::Stopped { time: t });
-            }
-            if t >= b {
-                break;
-            }
-        }
-        if last || schedule.contains(&t) {
-            ends.push(StepEnd {
-                t,
-                state: y.data.0[0],
-                commands: steering.saturated(),
-            });
-        }
-        if last {
-            command.track(t, &y.data.0[0]);
-        } else {
-            steering = command.at(fins, t, &mut y, true);
-            let after = Sample {
-                t,
-                state: y.data.0[0],
-                commands: steering.saturated(),
-            };
-            if rows.next_time() != t && !observe(&after) {
-                return Err(VehicleError::Stopped { time: t });
-            }
-        }
-    }
+    let steering = command.at(fins, 0.0, &mut y, true);
+    let mut runner = Runner {
+        model,
+        manoeuvre,
+        start: y,
+        schedule,
+        changes,
+        next: 0,
+        command,
+        steering,
+        ends: Vec::new(),
+    };
+    let (reached, stats) = problem::solve(&mut runner, (stepper, every), observe);
+    reached.map_err(|error| run_error(error, stepper))?;
     Ok(VehicleRun {
-        ends,
-        tracked: command.tracked,
-        trial: command.progress,
-        steps: total.steps as u64,
+        ends: runner.ends,
+        tracked: runner.command.tracked,
+        trial: runner.command.progress,
+        steps: stats.steps as u64,
     })
 }
-
-/// What one stretch gives back: where it ended, its cost, and the event that ended it.
-type Stretch = (
-    Result<crate::integrate::Reached<f64, 15>, IntegrateError>,
-    Stats,
-    Option<Kink>,
-);
 
 /// What ends a stretch early: a trial's event, or a fin's rate limit starting or stopping to
 /// act (a kink in its rate, which a step across would be first-order accurate about).
@@ -283,54 +221,121 @@ enum Kink {
     RateLimit(usize),
 }
 
-/// One stretch from `(a, y_a)` to `b` under `steering`, ending early where one of the trial's
-/// watched functions or a fin's rate margin first changes sign; the trial's course records
-/// every accepted step.
-fn stretch(
-    model: &VehicleModel,
-    steering: Steering<'_>,
-    command: &mut Command<'_>,
-    (stepper, rows): (&Stepper, &mut RowClock<f64>),
-    (a, y_a, b): (f64, VehicleState, f64),
-    last: bool,
-    observe: &mut impl FnMut(&Sample) -> bool,
-) -> Stretch {
-    let system = model.driven_by(steering);
-    let progress = command.progress.take();
-    let mut watches: Vec<Kink> = (progress.as_ref().map_or_else(Vec::new, Progress::watches))
-        .into_iter()
-        .map(Kink::Trial)
-        .collect();
-    watches.extend(
-        (0..2)
-            .filter(|&fin| steering.rate_margin(fin, &y_a.data.0[0]).is_some())
-            .map(Kink::RateLimit),
-    );
-    let g = |watch: Kink, _: f64, y: &VehicleState| match watch {
-        Kink::Trial(watch) => (progress.as_ref()).map_or(0.0, |p| p.g(watch, &y.data.0[0])),
-        Kink::RateLimit(fin) => steering.rate_margin(fin, &y.data.0[0]).unwrap_or(0.0),
-    };
-    let sample = |t: f64, y: &VehicleState| Sample {
-        t,
-        state: y.data.0[0],
-        commands: steering.saturated(),
-    };
-    // A fin without a lag jumps at a change: the row there shows it after the jump.
-    let emit = &mut |t, y: &VehicleState| observe(&sample(t, y));
-    let watched = segment::advance_watching(
-        (stepper, &system),
-        (a, y_a, b),
-        rows,
-        (&watches, g),
-        (emit, last),
-    );
-    command.progress = progress.map(|mut p| {
-        for (t, state) in &watched.steps {
-            p.record(*t, &state.data.0[0]);
+/// A manoeuvre under way: the commands as they stand, where they change, and where each
+/// step of them ended.
+struct Runner<'a> {
+    model: &'a VehicleModel,
+    manoeuvre: &'a VehicleManoeuvre,
+    /// The state at the start, the fins without a lag at their first commands.
+    start: VehicleState,
+    /// The instants the steps or the setpoints change ([`schedule`]).
+    schedule: Vec<f64>,
+    /// Where the run is cut ([`instants`]), and the index of the next.
+    changes: Vec<f64>,
+    next: usize,
+    command: Command<'a>,
+    /// The fins' loads as they stand.
+    steering: Steering<'a>,
+    ends: Vec<StepEnd>,
+}
+
+impl Runner<'_> {
+    /// Where a step of the commands ended at `(t, y)`.
+    fn step_end(&self, t: f64, y: &VehicleState) -> StepEnd {
+        StepEnd {
+            t,
+            state: y.data.0[0],
+            commands: self.steering.saturated(),
         }
-        p
-    });
-    (watched.reached, watched.stats, watched.fired)
+    }
+}
+
+/// A manoeuvre as the one loop runs it: cut where the commands change, watching the trial's
+/// events and the fins' rate limits, the trial's course from every accepted step.
+impl<'a> Problem<15> for Runner<'a> {
+    type System = Driven<'a, VehicleModel, Steering<'a>, 2>;
+    type Watch = Kink;
+    type Sample = Sample;
+
+    fn start(&mut self) -> (f64, VehicleState) {
+        (0.0, self.start)
+    }
+
+    fn end(&self) -> f64 {
+        self.manoeuvre.duration
+    }
+
+    fn next_change(&self) -> Option<f64> {
+        self.changes.get(self.next).copied()
+    }
+
+    fn system(&self, _t: f64, _until: f64) -> Self::System {
+        self.model.driven_by(self.steering)
+    }
+
+    fn watches(&self, _system: &Self::System, _t: f64, y: &VehicleState) -> Vec<Kink> {
+        let progress = self.command.progress.as_ref();
+        let mut watches: Vec<Kink> = (progress.map_or_else(Vec::new, Progress::watches))
+            .into_iter()
+            .map(Kink::Trial)
+            .collect();
+        watches.extend(
+            (0..2)
+                .filter(|&fin| self.steering.rate_margin(fin, &y.data.0[0]).is_some())
+                .map(Kink::RateLimit),
+        );
+        watches
+    }
+
+    fn g(&self, _system: &Self::System, watch: Kink, _t: f64, y: &VehicleState) -> f64 {
+        match watch {
+            Kink::Trial(watch) => {
+                (self.command.progress.as_ref()).map_or(0.0, |p| p.g(watch, &y.data.0[0]))
+            }
+            Kink::RateLimit(fin) => self.steering.rate_margin(fin, &y.data.0[0]).unwrap_or(0.0),
+        }
+    }
+
+    fn accepted(&mut self, t: f64, y: &VehicleState) -> bool {
+        if let Some(progress) = self.command.progress.as_mut() {
+            progress.record(t, &y.data.0[0]);
+        }
+        true
+    }
+
+    /// The trial takes its event (a zig-zag reverses its fin); at a rate limit's kink only
+    /// the form of δ̇ changes.
+    fn event(&mut self, kink: Kink, t: f64, y: &mut VehicleState) -> Flow {
+        if let (Kink::Trial(watch), Some(progress)) = (kink, self.command.progress.as_mut()) {
+            progress.fire(watch, t, &y.data.0[0]);
+            self.steering = self.command.at(self.steering.fins, t, y, false);
+        }
+        Flow::Go
+    }
+
+    /// A step's end is recorded where the steps or the setpoints change, then the commands
+    /// (the autopilots sampled anew) change.
+    fn change(&mut self, t: f64, y: &mut VehicleState) -> Flow {
+        self.next += 1;
+        if self.schedule.contains(&t) {
+            self.ends.push(self.step_end(t, y));
+        }
+        self.steering = self.command.at(self.steering.fins, t, y, true);
+        Flow::Go
+    }
+
+    fn finish(&mut self, t: f64, y: &VehicleState) {
+        self.ends.push(self.step_end(t, y));
+        self.command.track(t, &y.data.0[0]);
+    }
+
+    fn sample(&self, t: f64, y: &VehicleState) -> Sample {
+        Sample {
+            t,
+            state: y.data.0[0],
+            commands: self.steering.saturated(),
+        }
+    }
 }
 
 /// The instants within the run where the steps or the setpoints change.
