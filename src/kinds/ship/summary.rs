@@ -539,11 +539,8 @@ impl ManoeuvreSummary {
         (figures, refined): (&Figures, &Figures),
         steps: u64,
     ) -> Self {
-        let differences: BTreeMap<&'static str, Option<f64>> = (figures.values.iter())
-            .map(|(key, value)| {
-                let other = refined.get(key);
-                (*key, value.zip(other).map(|(a, b)| (a - b).abs()))
-            })
+        let differences: BTreeMap<&'static str, Option<f64>> = differences(figures, refined)
+            .map(|(key, _, difference)| (key, difference))
             .collect();
         let adaptive = stepper.method.is_adaptive();
         ManoeuvreSummary {
@@ -599,6 +596,19 @@ impl CriterionSummary {
     }
 }
 
+/// Each figure of a run by its key, with its value and |value − the refined run's| (`None`
+/// where either run did not give it): what summary.json's `half_step_difference` and
+/// [`RunFigures`] both say.
+fn differences<'a>(
+    figures: &'a Figures,
+    refined: &'a Figures,
+) -> impl Iterator<Item = (&'static str, Option<f64>, Option<f64>)> + 'a {
+    (figures.values.iter()).map(|&(key, value)| {
+        let difference = value.zip(refined.get(key)).map(|(a, b)| (a - b).abs());
+        (key, value, difference)
+    })
+}
+
 /// A manoeuvre's run (`path`: `turning_circle_35/port`) as every kind gives its figures:
 /// each with how far it moved in the run refined by `stepper`'s [`Stepper::refined`].
 pub fn run_figures(
@@ -606,11 +616,11 @@ pub fn run_figures(
     stepper: &Stepper,
     (figures, refined): (&Figures, &Figures),
 ) -> RunFigures {
-    let figures_out = (figures.values.iter())
-        .map(|(key, value)| Figure {
-            key: (*key).to_owned(),
-            value: *value,
-            difference: value.zip(refined.get(key)).map(|(a, b)| (a - b).abs()),
+    let figures_out = differences(figures, refined)
+        .map(|(key, value, difference)| Figure {
+            key: key.to_owned(),
+            value,
+            difference,
         })
         .collect();
     RunFigures {
