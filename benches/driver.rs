@@ -8,10 +8,9 @@
 
 use eom::Integrator;
 use eom::integrate::Rk4;
+use eom::kinds::body::{BodyScene, run};
 use eom::models::{AnyModel, Model, Visitor};
 use eom::output::trajectory::TrajectoryWriter;
-use eom::run::run;
-use eom::scene::Scene;
 use nalgebra::SVector;
 use std::hint::black_box;
 use std::path::Path;
@@ -21,7 +20,7 @@ const STEPS: usize = 1_000_000;
 const ROWS_EVERY: usize = 1000;
 
 /// The default scene with RK4 over 10⁶ steps and a row every 1000 steps.
-fn scene() -> Scene {
+fn scene() -> BodyScene {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(root.join("scenes/tennis_racket.toml")).expect("the scene");
     let step = 20.0 / STEPS as f64;
@@ -33,11 +32,11 @@ fn scene() -> Scene {
             "every = 0.01 ",
             &format!("every = {:e} ", step * ROWS_EVERY as f64),
         );
-    Scene::parse(&text, "tennis_racket.toml", root).expect("a valid scene")
+    BodyScene::parse(&text, "tennis_racket.toml", root).expect("a valid scene")
 }
 
 /// The scene through the driver, rows into a CSV file.
-fn driver(scene: &Scene, out: &Path) -> f64 {
+fn driver(scene: &BodyScene, out: &Path) -> f64 {
     let names = scene.state_names();
     let mut writer =
         TrajectoryWriter::create(out, &names, false, STEPS / ROWS_EVERY + 1).expect("a CSV file");
@@ -49,7 +48,7 @@ fn driver(scene: &Scene, out: &Path) -> f64 {
 }
 
 /// The same RK4 integration of the same model under the same loads, no rows.
-struct Bare<'a>(&'a Scene);
+struct Bare<'a>(&'a BodyScene);
 
 impl Visitor for Bare<'_> {
     type Output = (f64, f64);

@@ -1,15 +1,16 @@
 //! Inputs that `app/tests/fuzz_inputs.rs` found, each once a panic, an abort or an untyped
 //! failure, kept as they were found.
 
-use eom::scene::{Problem, Scene, SceneError, sweep};
+use eom::kinds::body::BodyScene;
+use eom::scene::{Problem, SceneError, sweep};
 use std::path::PathBuf;
 
 fn scenes() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("scenes")
 }
 
-fn parse_scene(text: &str) -> Result<Scene, SceneError> {
-    Scene::parse(text, "found.toml", &scenes())
+fn parse_scene(text: &str) -> Result<BodyScene, SceneError> {
+    BodyScene::parse(text, "found.toml", &scenes())
 }
 
 /// A tensor of 1e-303 kg m² is a valid tensor, but its determinant underflows: the scene was
@@ -116,7 +117,7 @@ fn a_trajectory_of_more_rows_than_the_limit_is_refused() {
     )
     .unwrap()
     .replace("every = 0.01", "every = 1e-300");
-    let error = eom::scene::Scene::parse(&text, "looping.toml", std::path::Path::new("scenes"))
-        .unwrap_err();
+    let error =
+        BodyScene::parse(&text, "looping.toml", std::path::Path::new("scenes")).unwrap_err();
     assert_eq!(error.key, "output.every", "{error}");
 }

@@ -10,12 +10,13 @@
 //! bound leaves six digits of room and still tells a wrong term (a relative change of order
 //! one) from a right one.
 
-use eom::linear::{Linearisation, Stability, linearise_scene};
+use eom::kinds::body::BodyScene;
+use eom::kinds::body::linear::linearise_scene;
+use eom::linear::{Linearisation, Stability};
 use eom::nalgebra::Complex;
-use eom::scene::Scene;
 
 fn linearise(text: &str) -> Linearisation {
-    let scene = Scene::parse(text, "test.toml", std::path::Path::new(".")).unwrap();
+    let scene = BodyScene::parse(text, "test.toml", std::path::Path::new(".")).unwrap();
     linearise_scene(&scene).unwrap()
 }
 
@@ -83,7 +84,7 @@ fn a_pendulum_held_at_thirty_degrees_is_trimmed_by_its_moment() {
 #[test]
 fn a_trim_that_cannot_hold_the_point_says_it_did_not_converge() {
     // θ cannot make θ̇ = 1 rad/s an equilibrium: θ's own rate is θ̇.
-    let scene = Scene::parse(
+    let scene = BodyScene::parse(
         &pendulum("[initial]\ntheta_dot = 1.0\n[linear]\ntrim = [\"theta\"]\n"),
         "t.toml",
         std::path::Path::new("."),
@@ -233,7 +234,7 @@ fn a_planar_body_at_speed_sets_aside_its_track_and_heading() {
 /// quaternion is in the reduced state.
 #[test]
 fn a_free_body_at_rest_is_marginal_not_unstable() {
-    let scene = Scene::load(std::path::Path::new("scenes/thruster_burn.toml")).unwrap();
+    let scene = BodyScene::load(std::path::Path::new("scenes/thruster_burn.toml")).unwrap();
     let linear = linearise_scene(&scene).unwrap();
     assert!(linear.equilibrium);
     assert_eq!(linear.stability, Some(Stability::Marginal));

@@ -3,14 +3,15 @@
 //! under the geometric integrator. Each is held to its closed form: v = Rᵀ V for the
 //! velocity, r_P × F for the moment, torque-free rotation and ½ g t² for the fall.
 
-use eom::run::{Row, Sink, run};
-use eom::scene::{Scene, SceneError};
+use eom::kinds::body::{BodyScene, run};
+use eom::run::{Row, Sink};
+use eom::scene::SceneError;
 use nalgebra::{Rotation3, UnitQuaternion, Vector3};
 use std::path::Path;
 
 /// A scene from its text, read as `eom run` reads a file.
-fn parse(text: &str) -> Result<Scene, SceneError> {
-    Scene::parse(text, "scene.toml", Path::new("."))
+fn parse(text: &str) -> Result<BodyScene, SceneError> {
+    BodyScene::parse(text, "scene.toml", Path::new("."))
 }
 
 /// The error a scene gives, as `eom run` prints it.
@@ -58,7 +59,7 @@ impl Sink for Rows {
     }
 }
 
-fn rows_of(scene: &Scene) -> Vec<(f64, Vec<f64>)> {
+fn rows_of(scene: &BodyScene) -> Vec<(f64, Vec<f64>)> {
     let mut rows = Rows::default();
     run(scene, &mut rows).unwrap();
     rows.0
@@ -150,7 +151,7 @@ fn a_velocity_given_in_both_axes_is_refused_naming_both_keys() {
 }
 
 /// The scene's inputs (forces, then moments) at `state`.
-fn inputs(scene: &Scene, state: &[f64]) -> Vec<f64> {
+fn inputs(scene: &BodyScene, state: &[f64]) -> Vec<f64> {
     let mut out = vec![0.0; 6];
     scene.loads.inputs(state, &mut out);
     out
@@ -313,7 +314,7 @@ fn lie_midpoint_under_uniform_gravity_turns_free_and_falls_as_half_g_t_squared()
 }
 
 /// The report and the rows of a run.
-fn run_rows(scene: &Scene) -> (eom::run::Report, Vec<(f64, Vec<f64>)>) {
+fn run_rows(scene: &BodyScene) -> (eom::kinds::body::Report, Vec<(f64, Vec<f64>)>) {
     let mut rows = Rows::default();
     let report = run(scene, &mut rows).unwrap();
     (report, rows.0)
@@ -405,7 +406,7 @@ fn a_bad_stop_condition_is_refused_naming_the_key() {
 
 /// A spinning body's scene under `moment_body` given as `table`, with `integrator` lines,
 /// rows every 0.3 s (so that t = 1 is not a row time).
-fn torqued(table: &str, integrator: &str, end: f64) -> Scene {
+fn torqued(table: &str, integrator: &str, end: f64) -> BodyScene {
     let text = format!(
         "title = \"t\"\n[body]\nmass = 2.0\n\
          inertia = [[2.0, 0.0, 0.0], [0.0, 3.0, 0.0], [0.0, 0.0, 4.5]]\n\
@@ -484,7 +485,7 @@ fn a_step_integrated_across_without_the_cut_errs_where_the_cut_run_does_not() {
     );
 
     struct Uncut<'a> {
-        loads: &'a eom::scene::SceneLoads,
+        loads: &'a eom::kinds::body::SceneLoads,
         initial: &'a [f64],
         out: &'a mut Option<(f64, usize)>,
     }
@@ -589,7 +590,7 @@ fn a_bad_time_table_is_refused_naming_its_entry() {
 fn an_unknown_key_lists_only_its_familys_keys() {
     let text = "title = \"x\"\n[body]\nmass = 1.0\nizz = 2.0\nfoo = 1\n[model]\nfamily = \
                 \"planar-g\"\n[integrator]\nmethod = \"rk4\"\nstep = 0.1\nend_time = 1.0\n";
-    let error = eom::scene::Scene::parse(text, "x.toml", std::path::Path::new("."))
+    let error = BodyScene::parse(text, "x.toml", std::path::Path::new("."))
         .unwrap_err()
         .to_string();
     assert!(

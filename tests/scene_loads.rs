@@ -3,13 +3,13 @@
 //! states and times, for every family and for each kind of load alone, all together and
 //! none, forces at points and loads given as time tables included.
 
+use eom::kinds::body::{BodyScene, SceneLoads};
 use eom::models::Loads;
-use eom::scene::{Scene, SceneLoads};
 use proptest::prelude::*;
 use std::path::Path;
 
 /// The scene file `scenes/{name}.toml` with its `[loads]` table replaced by `loads`.
-fn with_loads(name: &str, loads: &str) -> Scene {
+fn with_loads(name: &str, loads: &str) -> BodyScene {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
     let text = std::fs::read_to_string(root.join(format!("{name}.toml"))).expect("the scene");
     let mut kept = String::new();
@@ -24,12 +24,12 @@ fn with_loads(name: &str, loads: &str) -> Scene {
         }
     }
     let text = format!("{kept}\n[loads]\n{loads}\n");
-    Scene::parse(&text, &format!("{name}.toml"), &root)
+    BodyScene::parse(&text, &format!("{name}.toml"), &root)
         .unwrap_or_else(|e| panic!("{name} with {loads:?}: {e}"))
 }
 
 /// Each family's scene, and its loads one kind at a time, all at once, and none.
-fn scenes() -> Vec<(String, Scene)> {
+fn scenes() -> Vec<(String, BodyScene)> {
     let families: [(&str, &[&str]); 5] = [
         (
             "pendulum",

@@ -645,7 +645,7 @@ fn a_vehicle_is_trimmed_for_the_variables_its_linear_table_names() {
     let scene = remus();
     let start = scene.start().unwrap();
     let cruise_roll =
-        eom::scene::euler_angles(eom::models::Kinematics::Quaternion, &start[9..13])[0];
+        eom::models::euler_angles(eom::models::Kinematics::Quaternion, &start[9..13])[0];
     // From 1 m/s level, the speed and roll the propeller holds: the cruise again.
     let trimmed = linearise_vehicle(&with_linear(
         "at = { u = 1.0, phi = 0.0 }\ntrim = [\"u\", \"phi\"]",

@@ -19,8 +19,9 @@
 //! mesh path read 271 110 wrong, 66 195 of them refused as beyond f32. TOML (scenes, body
 //! files) and the command line were right already.
 
+use eom::kinds::body::BodyScene;
 use eom::mass::{BodyFile, Mesh};
-use eom::scene::{Scene, sweep};
+use eom::scene::sweep;
 use eom_cli::eval::{SpatialInput, parse};
 use std::collections::BTreeMap;
 use std::f64::consts::FRAC_PI_2;
@@ -491,9 +492,10 @@ fn scene_text(nine: &[&str]) -> String {
 fn scene_files_read_every_number_exactly() {
     // A whole scene per nine numbers, checked as `eom run` checks it; the state starts
     // [u, v, w, p, q, r, x, y, z] as written.
-    check_path("scene (Scene::parse)", &toml_numbers(), 9, |chunk| {
+    check_path("scene (BodyScene::parse)", &toml_numbers(), 9, |chunk| {
         let text = scene_text(&texts(chunk, 9, "0.0"));
-        let scene = Scene::parse(&text, "exact.toml", Path::new(".")).map_err(|e| e.to_string())?;
+        let scene =
+            BodyScene::parse(&text, "exact.toml", Path::new(".")).map_err(|e| e.to_string())?;
         Ok(scene.initial[..chunk.len()]
             .iter()
             .copied()
@@ -522,7 +524,7 @@ fn scene_sweeps_read_every_number_exactly() {
             text.push_str("]\n");
             let mut read = Vec::new();
             for case in sweep::cases(&text, "exact.toml").map_err(|e| e.to_string())? {
-                let scene = Scene::from_file(&case.file, "exact.toml", Path::new("."))
+                let scene = BodyScene::from_table(case.table, "exact.toml", Path::new("."))
                     .map_err(|e| e.to_string())?;
                 read.extend(scene.initial[6..9].iter().copied().map(Some));
             }

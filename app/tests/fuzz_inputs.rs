@@ -17,6 +17,7 @@
 //! others and `PROPTEST_CASES=<n>` sets the number of inputs per parser. Longer runs:
 //! `cargo fuzz` in `fuzz/` (docs/fuzzing.md).
 
+use eom::kinds::body::BodyScene;
 use eom::kinds::ship::linear::LinearModel;
 use eom::kinds::ship::manoeuvre::{Manoeuvre, run as run_manoeuvre};
 use eom::kinds::ship::{ShipModel, ShipScene};
@@ -25,7 +26,7 @@ use eom::kinds::vehicle::manoeuvre::{VehicleManoeuvre, run as run_vehicle};
 use eom::mass::{BodyFile, BodyFileError, Mesh, MeshMass};
 use eom::models::{Family, Kinematics, Symmetry};
 use eom::run::{Row, Sink};
-use eom::scene::{AnyScene, Problem, Scene, SceneError, sweep};
+use eom::scene::{AnyScene, Problem, SceneError, sweep};
 use eom_cli::eval::evaluate;
 use eom_test_support::cli::root;
 use nalgebra::Vector3;
@@ -1177,7 +1178,7 @@ impl Sink for Rows {
 }
 
 /// The scene cut to a short run: at most 0.05 s, 20 rows and 2000 steps.
-fn shortened(scene: &Scene) -> Scene {
+fn shortened(scene: &BodyScene) -> BodyScene {
     let mut short = scene.clone();
     let spec = &mut short.integrator;
     spec.end_time = spec.end_time.min(0.05);
@@ -1194,7 +1195,7 @@ fn shortened(scene: &Scene) -> Scene {
 
 /// An accepted scene: its values are in range, its model builds, and (when asked) it runs.
 fn check_scene(
-    scene: &Scene,
+    scene: &BodyScene,
     text: &str,
     run: bool,
     tally: &mut Tally,
@@ -1221,7 +1222,9 @@ fn check_scene(
     if run {
         let short = shortened(scene);
         let mut rows = Rows(0);
-        match guarded("eom::run::run", text, || eom::run::run(&short, &mut rows))? {
+        match guarded("eom::kinds::body::run", text, || {
+            eom::kinds::body::run(&short, &mut rows)
+        })? {
             Ok(report) => {
                 tally.count("ran");
                 if report.final_state.len() != scene.initial.len() || rows.0 == 0 {
@@ -1239,13 +1242,13 @@ fn check_scene(
     Ok(())
 }
 
-/// One scene text through `Scene::parse` and through the sweep's cases.
+/// One scene text through `BodyScene::parse` and through the sweep's cases.
 fn scene_text(text: &str, run: bool, tally: &mut Tally) -> Result<(), TestCaseError> {
     tally.count("input");
     remember(text.as_bytes());
     let base = root().join("scenes");
-    match guarded("Scene::parse", text, || {
-        Scene::parse(text, "fuzz.toml", &base)
+    match guarded("BodyScene::parse", text, || {
+        BodyScene::parse(text, "fuzz.toml", &base)
     })? {
         Ok(scene) => check_scene(&scene, text, run, tally)?,
         Err(error) => check_scene_error(&error, text, tally)?,
@@ -1253,8 +1256,8 @@ fn scene_text(text: &str, run: bool, tally: &mut Tally) -> Result<(), TestCaseEr
     match guarded("sweep::cases", text, || sweep::cases(text, "fuzz.toml"))? {
         Ok(cases) => {
             for case in cases.iter().take(4) {
-                let scene = guarded("Scene::from_file", text, || {
-                    Scene::from_file(&case.file, "fuzz.toml", &base)
+                let scene = guarded("BodyScene::from_file", text, || {
+                    BodyScene::from_table(case.table.clone(), "fuzz.toml", &base)
                 })?;
                 match scene {
                     Ok(scene) => check_scene(&scene, text, false, tally)?,

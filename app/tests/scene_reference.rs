@@ -6,9 +6,9 @@
 //! the table (found by walking the schema itself, so a key added to a table struct and not
 //! to the reference fails here).
 
+use eom::kinds::body::file::SceneFile;
 use eom::kinds::ship::scene::ShipSceneFile;
 use eom::kinds::vehicle::scene::VehicleSceneFile;
-use eom::scene::file::SceneFile;
 use eom::scene::reference::{Key, REGENERATE, Required, SceneFamily, keys_of, markdown, template};
 use eom_test_support::cli::{eom, folder, root};
 use eom_test_support::schema;
@@ -211,7 +211,7 @@ fn every_key_the_reader_accepts_is_in_the_reference() {
 #[test]
 fn a_key_of_another_family_is_refused_naming_what_the_family_takes() {
     let text = template(SceneFamily::all()[0]).replace("[body]\n", "[body]\nizz = 3.0\n");
-    let error = eom::scene::Scene::parse(&text, "<scene>", Path::new(".")).unwrap_err();
+    let error = eom::scene::AnyScene::parse(&text, "<scene>", Path::new(".")).unwrap_err();
     assert_eq!(error.key, "body.izz");
     let message = error.to_string();
     for key in keys_of(SceneFamily::all()[0]).filter(|k| k.table() == "body") {

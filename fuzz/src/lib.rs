@@ -5,7 +5,8 @@ use eom_cli::eval::evaluate;
 use eom::mass::{BodyFile, Mesh, MeshMass};
 use eom::models::{Family, Kinematics, Symmetry};
 use eom::run::{Row, Sink};
-use eom::scene::{AnyScene, Problem, Scene, SceneError, sweep};
+use eom::kinds::body::BodyScene;
+use eom::scene::{AnyScene, Problem, SceneError, sweep};
 use eom::kinds::ship::ShipScene;
 use eom::kinds::vehicle::VehicleScene;
 use eom::kinds::vehicle::manoeuvre::VehicleManoeuvre;
@@ -52,7 +53,7 @@ impl Sink for Rows {
     }
 }
 
-fn accepted(scene: &Scene) {
+fn accepted(scene: &BodyScene) {
     let spec = &scene.integrator;
     assert!(scene.initial.iter().all(|x| x.is_finite()), "{scene:?}");
     assert!(
@@ -73,7 +74,7 @@ fn accepted(scene: &Scene) {
     }
     short.every = short.every.clamp(spec.end_time / 10.0, spec.end_time);
     let mut rows = Rows(0);
-    match eom::run::run(&short, &mut rows) {
+    match eom::kinds::body::run(&short, &mut rows) {
         Ok(report) => assert_eq!(report.final_state.len(), scene.initial.len()),
         Err(error) => assert!(!error.to_string().trim().is_empty()),
     }
@@ -120,8 +121,11 @@ pub fn scene_text(text: &str) {
     }
     let base = scenes();
     match AnyScene::parse(text, "fuzz.toml", &base) {
-        Ok(AnyScene::Catalog(scene)) => accepted(&scene),
-        Ok(AnyScene::Kind(scene)) => {
+        Ok(scene) => {
+            let scene = scene.as_kind();
+            if let Some(body) = scene.as_any().downcast_ref() {
+                accepted(body);
+            }
             if let Some(ship) = scene.as_any().downcast_ref() {
                 ship_accepted(ship);
             }
@@ -134,7 +138,7 @@ pub fn scene_text(text: &str) {
     match sweep::cases(text, "fuzz.toml") {
         Ok(cases) => {
             for case in cases.iter().take(4) {
-                match Scene::from_file(&case.file, "fuzz.toml", &base) {
+                match BodyScene::from_table(case.table.clone(), "fuzz.toml", &base) {
                     Ok(scene) => accepted(&scene),
                     Err(error) => scene_error(&error),
                 }

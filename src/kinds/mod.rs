@@ -1,15 +1,16 @@
 //! The kinds of scene: what a scene is, beyond the envelope every scene shares.
 //!
-//! A catalog body's scene selects a variant the build generated (`crate::scene`); a ship's
-//! and a vehicle's define their model by their own table, derived and proved when the scene is
-//! read. Each of these lives in its folder here, with its tables, keys, manoeuvres and
-//! figures, implements [`Kind`] (what the command and a library user need of any scene: its
-//! runs, its rows, its summary, its report, its drawings, its linear plant), and has one line
-//! in [`REGISTRY`], the only list of them. None imports another: what two kinds share is in the
-//! layers below them ([`crate::manoeuvring`]: the steering gear, the course;
-//! [`crate::scene::envelope`]: the tables every scene with manoeuvres writes;
-//! [`crate::output::summary`]: the one summary every kind builds; [`crate::output::drawing`]: what a run
-//! draws; [`crate::run::record`]: where its rows go). A test below holds that.
+//! A catalog body's scene selects a variant the build generated; a ship's and a vehicle's
+//! define their model by their own table, derived and proved when the scene is read. Each of
+//! these lives in its folder here, with its tables, keys, manoeuvres and figures, implements
+//! [`Kind`] (what the command and a library user need of any scene: its runs, its rows, its
+//! summary, its report, its drawings, its linear plant), and has one line in [`REGISTRY`], the
+//! only list of them. None imports another: what two kinds share is in the layers below them
+//! ([`crate::models`]: the catalog, an attitude's Euler angles; [`crate::manoeuvring`]: the
+//! steering gear, the course; [`crate::scene::envelope`]: the tables every scene with
+//! manoeuvres writes; [`crate::output::summary`]: the one summary every kind builds;
+//! [`crate::output::drawing`]: what a run draws; [`crate::run::record`]: where its rows go).
+//! A test below holds that.
 //!
 //! A scene of any kind is loaded through one entry, says which kind it is, and runs to its
 //! summary without the command; here the Mariner's manoeuvres, with a recorder that counts
@@ -45,9 +46,7 @@
 //!     }
 //! }
 //!
-//! let AnyScene::Kind(mariner) = AnyScene::load("scenes/mariner.toml".as_ref())? else {
-//!     panic!("the Mariner's table defines its model");
-//! };
+//! let mariner = AnyScene::load("scenes/mariner.toml".as_ref())?.into_kind();
 //! assert_eq!(mariner.kind(), "ship");
 //! let mut counted = Counted::default();
 //! let finished = mariner.run("mariner.toml", &mut counted)?;
@@ -75,8 +74,9 @@ pub mod vehicle;
 use crate::linear::Linearisation;
 use crate::output::summary::Summary;
 use crate::run::record::Recorder;
+use crate::run::tradeoff::Tradeoff;
 use crate::scene::SceneError;
-use crate::scene::reference::Key;
+use crate::scene::reference::{Key, SceneFamily};
 use crate::scene::sweep::TableCase;
 use std::any::Any;
 use std::path::Path;
@@ -111,6 +111,13 @@ pub trait Kind: Send + Sync + std::fmt::Debug {
     /// The scene linearised at its operating point (`[linear]`, or its own: a ship's straight
     /// course, a vehicle's cruise), with what the kind adds to the report.
     fn linear(&self) -> Result<Linearised, KindError>;
+
+    /// Its integrators compared over its run (`eom tradeoff`: every method over its steps or
+    /// tolerances, each end state against a reference), for a kind whose scene is one run
+    /// it can repeat; `None` for a kind that does not compare them.
+    fn tradeoff(&self) -> Option<Result<Tradeoff, KindError>> {
+        None
+    }
 
     /// The scene as its own type, for a library user who knows the kind
     /// (`scene.as_any().downcast_ref::<ShipScene>()`).
@@ -244,16 +251,33 @@ pub type Reader = fn(Source, &str, &Path) -> Result<Box<dyn Kind>, SceneError>;
 pub struct Reference {
     /// What a scene of it is, in one line (`eom new`'s help, the template's first lines).
     pub doc: &'static str,
+    /// Its section's title in docs/scenes.md (`Ship scenes`).
+    pub heading: &'static str,
     /// Its section's first paragraph in docs/scenes.md.
     pub intro: &'static str,
+    /// The families `eom new` makes a template of (a ship's one; a catalog body's six), in
+    /// order; its keys say which of them reads each.
+    pub families: &'static [SceneFamily],
     /// Every key it reads, in the order a template writes them.
     pub keys: &'static [Key],
     /// What its section says after the keys (its table's conventions); empty for nothing.
     pub notes: &'static str,
-    /// What its trajectory.csv is, the sentence its columns end (`A ship writes one …`).
-    pub columns_said: &'static str,
-    /// Its trajectory.csv's columns.
-    pub columns: fn() -> Vec<String>,
+    /// What its trajectory.csv holds.
+    pub columns: Columns,
+}
+
+/// What a kind's trajectory.csv holds, as the reference page says it.
+pub enum Columns {
+    /// One list of columns for every scene of the kind: the sentence that says what the file
+    /// is (`A ship writes one …`), which the columns end.
+    Listed {
+        /// The sentence, without its end.
+        said: &'static str,
+        /// The columns.
+        columns: fn() -> Vec<String>,
+    },
+    /// Columns that differ by the scene's model, written by the kind (a table of layouts).
+    Written(fn() -> String),
 }
 
 /// A kind of scene as the registry lists it: its name, how its tables are recognised, how
@@ -270,8 +294,10 @@ pub struct Registered {
     pub read: Reader,
 }
 
-/// The kinds of scene whose tables define their model: the only list of them.
+/// The kinds of scene: the only list of them. A scene is the first kind's that recognises its
+/// tables.
 pub const REGISTRY: &[Registered] = &[
+    body::KIND,
     #[cfg(feature = "ship")]
     ship::KIND,
     #[cfg(feature = "ship")]

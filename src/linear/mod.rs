@@ -28,11 +28,9 @@ pub mod state_space;
 pub mod trim;
 
 pub use modes::{Mode, Naming, Stability, modes};
-pub use plant::{Evaluation, LinearPlant, Plant};
+pub use plant::{Evaluation, LinearPlant};
 pub use reduce::{SetAsideReason, set_aside, set_aside_why};
-pub use scene::{
-    LinearSpec, Linearisation, linearise, linearise_scene, resolve, resolve_aliased, set_at,
-};
+pub use scene::{LinearSpec, Linearisation, linearise, resolve, resolve_aliased, set_at};
 pub use state_space::StateSpace;
 
 use thiserror::Error;

@@ -2,12 +2,11 @@
 //! its initial state), the states set aside, the trim, A, B and the modes.
 
 use super::modes::{Mode, Stability, growth_tolerance, modes};
-use super::plant::{LinearPlant, Plant};
+use super::plant::LinearPlant;
 use super::reduce::{SetAsideReason, set_aside_why};
 use super::trim::{Free, trim};
-use super::{EQUILIBRIUM_TOLERANCE, EULER_PITCH_LIMIT, LinearError, rate_scale};
-use crate::models::{AnyModel, Family, Kinematics};
-use crate::scene::{Body, Scene, SceneLoads, euler_angles};
+use super::{EQUILIBRIUM_TOLERANCE, LinearError, rate_scale};
+use crate::models::Family;
 use nalgebra::{Complex, DMatrix};
 
 /// What a `[linear]` table says, its names checked against the model's layout.
@@ -145,98 +144,6 @@ impl Linearisation {
     pub fn d(&self) -> DMatrix<f64> {
         DMatrix::zeros(self.outputs.len(), self.input_names.len())
     }
-}
-
-/// The model to linearise, its state and the loads on it: a quaternion model becomes the
-/// Euler-angle model of the same body. A quaternion's four components hold three angles, so
-/// its norm would be a mode that means nothing (a zero eigenvalue that makes every verdict
-/// marginal), and a top spinning about its axis turns every component steadily while the
-/// gravity moment reads them all, so no part of the quaternion could be set aside; in Euler
-/// angles the spin is the heading ψ alone. A point within 1° of θ = ±90°, where Euler angles
-/// do not hold, is refused.
-fn model_and_state(scene: &Scene, state: Vec<f64>) -> Result<Linearised, LinearError> {
-    let info = scene.selection.info;
-    let as_it_is = |state| Linearised {
-        model: scene.model(),
-        state,
-        loads: None,
-        note: None,
-    };
-    if info.kinematics != Some(Kinematics::Quaternion) {
-        return Ok(as_it_is(state));
-    }
-    let (model, velocities) = match &scene.body {
-        Body::Top {
-            mass,
-            inertia,
-            h,
-            g,
-        } => (AnyModel::top(Kinematics::Euler, *mass, inertia, *h, *g), 3),
-        Body::Spatial { mass, inertia } => (
-            AnyModel::spatial(
-                info.symmetry.expect("a spatial model has a symmetry class"),
-                Kinematics::Euler,
-                *mass,
-                inertia,
-            ),
-            9,
-        ),
-        _ => return Ok(as_it_is(state)),
-    };
-    let model = model.expect("checked when the scene was read");
-    let angles = euler_angles(Kinematics::Quaternion, &state[velocities..]);
-    if angles[1].abs() > EULER_PITCH_LIMIT {
-        return Err(LinearError::NotFinite(format!(
-            "the pitch θ = {}° is within 1° of ±90°, where the Euler angles a quaternion scene \
-             is linearised in do not hold; linearise at another attitude (linear.at)",
-            angles[1].to_degrees()
-        )));
-    }
-    let mut euler = state[..velocities].to_vec();
-    euler.extend(angles);
-    let mut loads = scene.loads.clone();
-    if let SceneLoads::Spatial(spatial) = &mut loads {
-        spatial.kinematics = Kinematics::Euler;
-    }
-    let note = "a quaternion scene is linearised in the Euler angles of the same body (a \
-                quaternion's four components hold three angles: its norm would be a mode of \
-                no meaning)";
-    Ok(Linearised {
-        model,
-        state: euler,
-        loads: Some(loads),
-        note: Some(note.into()),
-    })
-}
-
-/// What a scene is linearised as: its model or the Euler-angle twin of a quaternion model.
-struct Linearised {
-    model: AnyModel,
-    state: Vec<f64>,
-    /// The loads read in the twin's layout, where they differ from the scene's.
-    loads: Option<SceneLoads>,
-    note: Option<String>,
-}
-
-/// Linearises a catalog scene about the point its `[linear]` table names: the initial state
-/// with the table's `at` entries, trimmed for its `trim` variables.
-pub fn linearise_scene(scene: &Scene) -> Result<Linearisation, LinearError> {
-    let info = scene.selection.info;
-    let mut state = scene.initial.clone();
-    let mut extra = vec![0.0; info.inputs.len()];
-    set_at(
-        &scene.linear,
-        (info.state, info.inputs, &[]),
-        (&mut state, &mut extra),
-    )?;
-    let twin = model_and_state(scene, state)?;
-    let plant = Plant {
-        model: twin.model,
-        loads: twin.loads.as_ref().unwrap_or(&scene.loads),
-    };
-    let mut linearisation = linearise(&plant, (twin.state, extra), &scene.linear)?;
-    linearisation.note = twin.note;
-    Ok(linearisation)
 }
 
 /// Sets the `at` entries of `spec` in the state and the inputs added to what acts, by the

@@ -141,8 +141,8 @@ fn rows<S: Serializer>(matrix: &DMatrix<f64>, serializer: S) -> Result<S::Ok, S:
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::linear::{LinearError, LinearSpec, linearise_scene};
-    use crate::scene::Scene;
+    use crate::linear::LinearError;
+    use crate::scene::AnyScene;
 
     /// A planar body pushed against its damping at 2 m/s, with the outputs `outputs`: its
     /// track and heading are set aside.
@@ -151,12 +151,19 @@ mod tests {
                     family = \"planar-g\"\n[initial]\nu = 2.0\n[loads]\n\
                     force_body = [200.0, 0.0]\nlinear_damping = [100.0, 400.0, 8.0e4]\n\
                     [integrator]\nmethod = \"dop853\"\nend_time = 1.0\n";
-        let mut scene = Scene::parse(text, "hull.toml", std::path::Path::new(".")).unwrap();
-        scene.linear = LinearSpec {
-            outputs: outputs.iter().map(|s| (*s).to_owned()).collect(),
-            ..LinearSpec::default()
+        let outputs: Vec<String> = outputs.iter().map(|s| format!("\"{s}\"")).collect();
+        let text = match outputs.is_empty() {
+            true => text.to_owned(),
+            false => format!("{text}[linear]\noutputs = [{}]\n", outputs.join(", ")),
         };
-        linearise_scene(&scene)
+        let scene = AnyScene::parse(&text, "hull.toml", std::path::Path::new(".")).unwrap();
+        let linearised = scene.into_kind().linear().map_err(|error| match error {
+            crate::kinds::KindError::Scene(e) | crate::kinds::KindError::Run(e) => *e
+                .downcast::<LinearError>()
+                .expect("a linearisation's error"),
+            other => panic!("{other}"),
+        });
+        linearised.map(|linearised| linearised.linearisation)
     }
 
     fn space(outputs: &[&str]) -> StateSpace {

@@ -31,12 +31,14 @@
 //! their potential energy in the weight's field ([`Model::potential_energy`]): Mg times the
 //! height of G above the pivot.
 
+mod attitude;
 mod info;
 mod model;
 mod pendulum;
 mod planar;
 mod units;
 
+pub use attitude::{attitude, euler_angles};
 pub use eom_kernel::Operations;
 pub use info::ModelInfo;
 pub use model::{Constant, Driven, Loads, Model};

@@ -1,6 +1,6 @@
 //! The envelope every scene whose own table defines its model shares, whatever its kind: the
 //! `[model]` that names the family, the `[integrator]` and `[output]` of its manoeuvres, and a
-//! steering gear's table. Each is read and checked here, once, so that a ship's rudder and a
+//! steering gear's table; and the `[linear]` table every scene may give. Each is read and checked here, once, so that a ship's rudder and a
 //! vehicle's fins are checked by one function and every kind's method by the checker of every
 //! scene's `[integrator]`.
 
@@ -55,6 +55,19 @@ pub struct IntegratorTable {
 pub struct OutputTable {
     /// A trajectory row every this many seconds (every step where absent).
     pub every: Option<f64>,
+}
+
+/// `[linear]`: the operating point of `eom linear`, by default the initial state.
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LinearTable {
+    /// State entries and inputs at the point, by the model's names, SI and radians.
+    pub at: Option<std::collections::BTreeMap<String, f64>>,
+    /// The free variables solved for so that the reduced state is in equilibrium.
+    pub trim: Option<Vec<String>>,
+    /// The outputs y = C x of the linear model, state entries by name (by default every entry
+    /// of the reduced state).
+    pub outputs: Option<Vec<String>>,
 }
 
 impl Checker<'_> {

@@ -15,7 +15,6 @@
 //! per-case summaries concatenate. Each machine makes only its own shard's cases, and the
 //! limit of [`MAX_CASES`] applies to them, not to the whole sweep.
 
-use super::file::SceneFile;
 use super::{Problem, SceneError};
 use toml::{Table, Value};
 
@@ -23,24 +22,6 @@ use toml::{Table, Value};
 /// (`--shard K/N`), so that a sweep too large for one machine can be spread over many. The
 /// cases are made before the first runs, so a count beyond this is refused rather than tried.
 pub const MAX_CASES: usize = 100_000;
-
-/// One case of a sweep: the values it sets and the scene file it makes.
-#[derive(Debug, Clone)]
-pub struct Case {
-    /// The case's number, from 0.
-    pub index: usize,
-    /// The swept keys and the values this case gives them.
-    pub values: Vec<(String, Value)>,
-    /// The scene with those values set.
-    pub file: SceneFile,
-}
-
-impl Case {
-    /// The case's values as `key = value, …`, for its title and messages.
-    pub fn label(&self) -> String {
-        label(&self.values)
-    }
-}
 
 /// `key = value, …`.
 fn label(values: &[(String, Value)]) -> String {
@@ -58,32 +39,13 @@ pub fn is_swept(text: &str) -> bool {
         .is_ok_and(|table| table.contains_key("sweep"))
 }
 
-/// The cases of scene text: one case (the scene as written) when it has no `[sweep]`.
-pub fn cases(text: &str, name: &str) -> Result<Vec<Case>, SceneError> {
-    shard_cases(text, name, None)
+/// The cases of scene text, as tables: one case (the scene as written) when it has no
+/// `[sweep]`. Each is read as a scene of its kind by [`super::AnyScene::from_table`].
+pub fn cases(text: &str, name: &str) -> Result<Vec<TableCase>, SceneError> {
+    shard_tables(text, name, None)
 }
 
-/// The cases of one shard `(K, N)` of scene text, the cases k ≡ K (mod N), or every case
-/// with `None`; at most [`MAX_CASES`] of them, whatever the whole sweep's count.
-pub fn shard_cases(
-    text: &str,
-    name: &str,
-    shard: Option<(usize, usize)>,
-) -> Result<Vec<Case>, SceneError> {
-    shard_tables(text, name, shard)?
-        .into_iter()
-        .map(|case| {
-            Ok(Case {
-                file: read_table(case.table, name)?,
-                index: case.index,
-                values: case.values,
-            })
-        })
-        .collect()
-}
-
-/// One case of a sweep as a TOML table, before it is read as a scene of its kind (a catalog
-/// scene, a ship scene).
+/// One case of a sweep as a TOML table, before it is read as a scene of its kind.
 #[derive(Debug, Clone)]
 pub struct TableCase {
     /// The case's number, from 0.
@@ -117,7 +79,9 @@ impl TableCase {
     }
 }
 
-/// The cases of one shard (see [`shard_cases`]) as tables, for a scene of any kind. A key may
+/// The cases of one shard `(K, N)` of scene text, the cases k ≡ K (mod N), or every case
+/// with `None`, as tables, for a scene of any kind; at most [`MAX_CASES`] of them, whatever
+/// the whole sweep's count. A key may
 /// name an entry of an array of tables by its index: `"manoeuvre[0].rudder_deg"`.
 pub fn shard_tables(
     text: &str,
@@ -410,13 +374,18 @@ end_time = 1.0
 "initial.theta_deg" = { from = 10.0, to = 30.0, count = 3 }
 "#;
 
+    /// The number a case sets at `table.key`.
+    fn number(case: &TableCase, table: &str, key: &str) -> f64 {
+        case.table[table][key].as_float().unwrap()
+    }
+
     #[test]
     fn a_sweep_gives_every_combination_in_a_fixed_order() {
         let cases = cases(SCENE, "s.toml").unwrap();
         assert_eq!(cases.len(), 6);
         let pairs: Vec<(f64, f64)> = cases
             .iter()
-            .map(|c| (c.file.body.mass.unwrap(), c.file.initial.theta_deg.unwrap()))
+            .map(|c| (number(c, "body", "mass"), number(c, "initial", "theta_deg")))
             .collect();
         assert_eq!(
             pairs,
@@ -458,7 +427,7 @@ end_time = 1.0
             "from = 0.0, to = 1.0, count = 11",
         );
         let cases = cases(&text, "s.toml").unwrap();
-        assert_eq!(cases[3].file.initial.theta_deg, Some(0.3));
+        assert_eq!(number(&cases[3], "initial", "theta_deg"), 0.3);
         assert_eq!(cases[3].label(), "body.mass = 1.0, initial.theta_deg = 0.3");
     }
 
@@ -476,7 +445,7 @@ end_time = 1.0
 
     #[test]
     fn a_shard_makes_only_its_cases_and_the_cap_is_per_shard() {
-        let shard: Vec<usize> = shard_cases(SCENE, "s.toml", Some((1, 4)))
+        let shard: Vec<usize> = shard_tables(SCENE, "s.toml", Some((1, 4)))
             .unwrap()
             .iter()
             .map(|c| c.index)
@@ -485,7 +454,7 @@ end_time = 1.0
         let big = SCENE.replace("count = 3", &format!("count = {}", 3 * MAX_CASES));
         // 6·10⁵ cases: too many for one run, and for each of five shards; not for eight.
         let refusal = |shard| {
-            shard_cases(&big, "s.toml", shard)
+            shard_tables(&big, "s.toml", shard)
                 .err()
                 .map(|e| e.to_string())
         };
@@ -494,7 +463,7 @@ end_time = 1.0
         let spread = refusal(Some((4, 5))).unwrap_or_default();
         assert!(spread.contains("the shard has more than"), "{spread}");
         assert_eq!(
-            shard_cases(&big, "s.toml", Some((7, 8))).unwrap().len(),
+            shard_tables(&big, "s.toml", Some((7, 8))).unwrap().len(),
             75_000
         );
     }

@@ -51,7 +51,7 @@ const MAT: &str = "linear.mat";
 
 /// Runs `eom linear`.
 pub fn run(args: Args) -> Result<()> {
-    let scene = super::serves::linearised(&args.scene)?.into_kind();
+    let scene = super::serves::single(&args.scene, "eom linear linearises")?;
     let linearised = scene.linear()?;
     let (title, linear) = (scene.title().to_owned(), linearised.linearisation);
     let (extra_text, extra_json) = (linearised.text, linearised.json);

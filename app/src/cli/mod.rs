@@ -105,9 +105,6 @@ pub fn exit_code(error: &anyhow::Error) -> u8 {
         if cause.downcast_ref::<std::io::Error>().is_some() {
             return 4;
         }
-        if cause.downcast_ref::<eom::run::RunError>().is_some() {
-            return 5;
-        }
         if let Some(linear) = cause.downcast_ref::<eom::linear::LinearError>() {
             return if linear.is_scene_error() { 3 } else { 5 };
         }

@@ -3,11 +3,11 @@
 use super::record::Kept;
 use anyhow::{Context, Result};
 use eom::InertiaTensor;
+use eom::models::euler_angles;
 use eom::models::{Family, Kinematics};
 use eom::nalgebra::Matrix3;
 use eom::output::drawing::{BodyShape, RigidBody};
 use eom::output::trajectory::Columns;
-use eom::scene::euler_angles;
 use eom_cli::plots::{PlotInput, Polhode, in_principal_axes, not_drawn, write_plots};
 use std::path::{Path, PathBuf};
 

@@ -3,34 +3,9 @@
 
 use super::run::Usage;
 use anyhow::Result;
+use eom::kinds::Kind;
 use eom::scene::{AnyScene, Problem, SceneError};
 use std::path::Path;
-
-/// The kinds of scene the commands tell apart.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Kind {
-    /// A scene of a registered kind (its name): its own table defines its model.
-    Registered(&'static str),
-    /// A catalog scene, with or without a `[sweep]`.
-    Catalog { swept: bool },
-}
-
-/// The scene's text, read, and its kind: a swept scene is many; one scene is read and
-/// checked by the one reader of every scene ([`AnyScene`]), which says its kind.
-fn read(path: &Path) -> Result<(String, Kind)> {
-    let name = path.display().to_string();
-    let text =
-        std::fs::read_to_string(path).map_err(|e| SceneError::new(&name, "", Problem::Read(e)))?;
-    if eom::scene::sweep::is_swept(&text) {
-        return Ok((text, Kind::Catalog { swept: true }));
-    }
-    let base = path.parent().unwrap_or(Path::new("."));
-    let kind = match AnyScene::parse(&text, &name, base)? {
-        AnyScene::Kind(scene) => Kind::Registered(scene.kind()),
-        AnyScene::Catalog(_) => Kind::Catalog { swept: false },
-    };
-    Ok((text, kind))
-}
 
 /// The `[model] family` the scene names, for messages.
 fn family(text: &str) -> String {
@@ -40,40 +15,32 @@ fn family(text: &str) -> String {
         .unwrap_or_else(|| "catalog".into())
 }
 
-/// The one scene `eom linear` linearises, read; a swept scene is refused, since it is many.
-pub fn linearised(path: &Path) -> Result<AnyScene> {
+/// The one scene a command of one scene (`eom linear`, `eom tradeoff`) reads, of any kind; a
+/// swept scene is refused, since it is many (`doing` says what the command does to one).
+pub fn single(path: &Path, doing: &str) -> Result<Box<dyn Kind>> {
     let name = path.display().to_string();
     let text =
         std::fs::read_to_string(path).map_err(|e| SceneError::new(&name, "", Problem::Read(e)))?;
     if eom::scene::sweep::is_swept(&text) {
         return Err(Usage(format!(
-            "eom linear linearises one scene; {} (a {} scene) has a [sweep]: run it without \
-             the [sweep], with one case's values",
+            "{doing} one scene; {} (a {} scene) has a [sweep]: run it without the [sweep], \
+             with one case's values",
             path.display(),
             family(&text)
         ))
         .into());
     }
     let base = path.parent().unwrap_or(Path::new("."));
-    Ok(AnyScene::parse(&text, &name, base)?)
+    Ok(AnyScene::parse(&text, &name, base)?.into_kind())
 }
 
-/// Refuses anything but a single catalog scene, for `eom tradeoff`.
-pub fn require_single_catalog(path: &Path) -> Result<()> {
-    match read(path)?.1 {
-        Kind::Catalog { swept: false } => Ok(()),
-        Kind::Catalog { swept: true } => Err(Usage(format!(
-            "eom tradeoff compares the integrators on one scene; {} has a [sweep]: run it \
-             without the [sweep], with one case's values",
-            path.display()
-        ))
-        .into()),
-        Kind::Registered(kind) => Err(Usage(format!(
-            "eom tradeoff serves catalog scenes (pendulum, planar, spatial, top), whose \
-             integrators it compares over one run; {} is a {kind} scene, whose manoeuvres \
-             name their method in [integrator]",
-            path.display()
-        ))
-        .into()),
-    }
+/// Why `eom tradeoff` does not serve a scene of `kind`, whose kind does not compare its
+/// integrators ([`Kind::tradeoff`]).
+pub fn not_compared(path: &Path, kind: &str) -> Usage {
+    Usage(format!(
+        "eom tradeoff serves catalog scenes (pendulum, planar, spatial, top), whose \
+         integrators it compares over one run; {} is a {kind} scene, whose kind does not \
+         compare its integrators",
+        path.display()
+    ))
 }

@@ -1,9 +1,9 @@
 //! `eom tradeoff SCENE`: what each integrator costs on this scene, and the cheapest setting
-//! that meets a target error (see [`eom::run::tradeoff`]).
+//! that meets a target error (see [`eom::run::tradeoff`]), for a scene whose kind compares
+//! its integrators ([`eom::kinds::Kind::tradeoff`]).
 
 use anyhow::{Context, Result, bail};
-use eom::run::tradeoff::{REPEATS, Recommendation, Tradeoff, TradeoffRow, tradeoff};
-use eom::scene::Scene;
+use eom::run::tradeoff::{REPEATS, Recommendation, Tradeoff, TradeoffRow};
 use serde_json::json;
 use std::path::PathBuf;
 
@@ -22,9 +22,11 @@ pub struct Args {
 
 /// Runs `eom tradeoff`.
 pub fn run(args: Args) -> Result<()> {
-    super::serves::require_single_catalog(&args.scene)?;
-    let scene = Scene::load(&args.scene)?;
-    let result = tradeoff(&scene).context("running the reference")?;
+    let scene = super::serves::single(&args.scene, "eom tradeoff compares the integrators on")?;
+    let Some(result) = scene.tradeoff() else {
+        return Err(super::serves::not_compared(&args.scene, scene.kind()).into());
+    };
+    let result = result.context("running the reference")?;
     let recommendation = result.recommend(args.target);
     if args.json {
         let value = json!({
@@ -38,7 +40,7 @@ pub fn run(args: Args) -> Result<()> {
         });
         println!("{}", serde_json::to_string_pretty(&value)?);
     } else {
-        print_table(&scene, &result, args.target, &recommendation);
+        print_table(scene.title(), &result, args.target, &recommendation);
     }
     match why_not(&recommendation, args.target) {
         Some(why) => bail!("{why}"),
@@ -66,11 +68,8 @@ fn row_json(row: &TradeoffRow) -> serde_json::Value {
     })
 }
 
-fn print_table(scene: &Scene, result: &Tradeoff, target: f64, recommendation: &Recommendation) {
-    println!(
-        "{}: {} to t = {} s",
-        scene.title, scene.selection.info.name, scene.integrator.end_time
-    );
+fn print_table(title: &str, result: &Tradeoff, target: f64, recommendation: &Recommendation) {
+    println!("{title}: {}", result.run);
     println!(
         "the error is the largest end-state difference from {}, over max(1, the largest reference entry); the time is the best of {REPEATS}",
         result.reference

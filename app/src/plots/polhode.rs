@@ -377,32 +377,61 @@ fn draw_projection(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use eom::run::{Row, Sink, run};
-    use eom::scene::{Body, Scene};
+    use eom::output::drawing::{BodyShape, Drawing, RunDrawings};
+    use eom::run::Row;
+    use eom::run::record::{RecordError, Recorder, RunStart};
+    use eom::scene::AnyScene;
 
-    /// Keeps p, q and r of every row.
-    struct Rates([Vec<f64>; 3]);
+    /// Keeps p, q and r of every row, and the body's tensor from its drawing.
+    #[derive(Default)]
+    struct Rates {
+        rates: [Vec<f64>; 3],
+        inertia: Option<[[f64; 3]; 3]>,
+    }
 
-    impl Sink for Rates {
+    impl Recorder for Rates {
+        fn begin(&mut self, _: RunStart) -> Result<(), RecordError> {
+            Ok(())
+        }
         fn row(&mut self, row: &Row) -> bool {
-            for (column, value) in self.0.iter_mut().zip(&row.state[3..6]) {
+            for (column, value) in self.rates.iter_mut().zip(&row.state[3..6]) {
                 column.push(*value);
             }
             true
+        }
+        fn end(&mut self) -> Result<(), RecordError> {
+            Ok(())
+        }
+        fn drawn(&mut self, drawn: RunDrawings) -> Result<(), RecordError> {
+            for drawing in drawn.drawings {
+                if let Drawing::RigidBody(body) = drawing
+                    && let BodyShape::Spatial { inertia, .. } = body.shape
+                {
+                    self.inertia = Some(inertia);
+                }
+            }
+            Ok(())
+        }
+        fn stop_asked(&self) -> bool {
+            false
         }
     }
 
     /// The tennis racket's moments and its ω in principal axes, row by row.
     fn tennis_racket() -> ([f64; 3], [Vec<f64>; 3]) {
         let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../scenes/tennis_racket.toml");
-        let scene = Scene::load(std::path::Path::new(path)).unwrap();
-        let mut rates = Rates(Default::default());
-        run(&scene, &mut rates).unwrap();
-        let Body::Spatial { inertia, .. } = &scene.body else {
-            panic!("the tennis racket is a spatial body");
-        };
-        let [p, q, r] = &rates.0;
-        in_principal_axes(inertia, [p, q, r])
+        let scene = AnyScene::load(std::path::Path::new(path)).unwrap();
+        let mut rates = Rates::default();
+        scene
+            .into_kind()
+            .run("tennis_racket.toml", &mut rates)
+            .unwrap();
+        let inertia = rates
+            .inertia
+            .expect("the tennis racket is drawn as a spatial body");
+        let [p, q, r] = &rates.rates;
+        let tensor = nalgebra::Matrix3::from_fn(|r, c| inertia[r][c]);
+        in_principal_axes(&InertiaTensor::from_matrix(tensor).unwrap(), [p, q, r])
     }
 
     #[test]

@@ -1,18 +1,54 @@
 //! The catalog body as a [`Kind`]: one run at the top of the output, linearised at its
 //! initial state (or its `[linear]` point).
 
+use super::BodyScene;
+use super::keys::{self, ALL};
 use super::run::{BodyRun, run_body, trajectory_numbers};
-use crate::kinds::{Finished, Kind, KindError, Linearised};
+use crate::kinds::{Columns, Finished, Kind, KindError, Linearised, Reference, Registered, Source};
 use crate::output::summary::Summary;
 use crate::run::record::Recorder;
-use crate::scene::Scene;
+use crate::run::tradeoff::Tradeoff;
+use crate::scene::SceneError;
 use crate::scene::sweep::TableCase;
 use std::any::Any;
+use std::path::Path;
 
 /// The kind's name.
 pub const NAME: &str = "body";
 
-impl Kind for Scene {
+/// The registry's entry.
+pub const KIND: Registered = Registered {
+    name: NAME,
+    reference: Reference {
+        doc: "A body of the catalog's families (the pendulum, a planar body, a spatial body, \
+              the heavy top) under its loads, its model a variant the build generated and \
+              proved.",
+        heading: "Catalog scenes",
+        intro: keys::INTRO,
+        families: ALL,
+        keys: keys::KEYS,
+        notes: keys::NOTES,
+        columns: Columns::Written(keys::columns),
+    },
+    recognises,
+    read,
+};
+
+/// A catalog body's scene is every scene whose own table does not define its model: its
+/// checker says what a scene that is no kind's lacks (`model.family`, its body, …).
+fn recognises(table: &toml::Table) -> bool {
+    !table.contains_key(crate::scene::DEFINED_MODEL_TABLE)
+}
+
+fn read(source: Source, name: &str, base: &Path) -> Result<Box<dyn Kind>, SceneError> {
+    let scene = match source {
+        Source::Text(text) => BodyScene::parse(text, name, base)?,
+        Source::Table(table) => BodyScene::from_table(table, name, base)?,
+    };
+    Ok(Box::new(scene))
+}
+
+impl Kind for BodyScene {
     fn kind(&self) -> &'static str {
         NAME
     }
@@ -39,7 +75,12 @@ impl Kind for Scene {
     }
 
     fn linear(&self) -> Result<Linearised, KindError> {
-        Ok(Linearised::alone(crate::linear::linearise_scene(self)?))
+        Ok(Linearised::alone(super::linear::linearise_scene(self)?))
+    }
+
+    fn tradeoff(&self) -> Option<Result<Tradeoff, KindError>> {
+        let compared = super::tradeoff::tradeoff(self);
+        Some(compared.map_err(|error| KindError::Run(Box::new(error))))
     }
 
     fn as_any(&self) -> &dyn Any {

@@ -1,9 +1,16 @@
 //! The catalog body as a kind of scene: a body of one of the catalog's families (the
 //! pendulum, a planar body, a spatial body, the heavy top) under its loads, whose model is a
-//! variant the build generated and proved ([`crate::scene`] reads and checks it, and selects
-//! the variant). It runs once, from its initial state to its end time or its stop condition,
-//! through the one runner ([`crate::run`]); its rows go to the caller's recorder, its summary
-//! is [`crate::output::summary::Summary`] with a [`summary::BodySection`], and its drawing a [`RigidBody`].
+//! variant the build generated and proved.
+//!
+//! Its folder holds the whole path: its tables ([`file`]) read by the one reader and checked
+//! here ([`BodyScene::from_file`]: the family's keys, the body, the variant it selects
+//! ([`select_spatial`]), the loads as the model's inputs ([`SceneLoads`], with their time
+//! tables, [`table`]), the initial state, the integrator); its run ([`run`]: from its initial
+//! state to its end time or its stop condition, a problem solved by the one loop, every step
+//! watched by the [`guard`]); its linear plant ([`linear`]); its integrators compared
+//! ([`tradeoff`]); Its rows go to the caller's recorder,
+//! its summary is [`crate::output::summary::Summary`] with a [`summary::BodySection`], and
+//! its drawing a [`RigidBody`].
 //!
 //! A body's run that fails (gimbal lock, a step too long, a value that is not finite) keeps
 //! what it ran: its rows, its drawings and a summary that gives the error; the failure is
@@ -30,8 +37,26 @@
 //!
 //! [`RigidBody`]: crate::output::drawing::RigidBody
 
+mod check;
+pub mod file;
+pub mod guard;
+mod keys;
 mod kind;
+pub mod linear;
+mod loads;
 mod run;
+mod scene;
+mod select;
+mod solve;
 pub mod summary;
+pub mod table;
+pub mod tradeoff;
 
+pub use keys::KEYS;
+pub use kind::{KIND, NAME};
+pub use linear::Plant;
+pub use loads::{PendulumLoads, PlanarLoads, PreparedLoads, SceneLoads, SpatialLoads, TopLoads};
 pub use run::BodyRun;
+pub use scene::{Body, BodyScene, IntegratorSpec, LOOSE_TOLERANCE, read};
+pub use select::{Selection, select_spatial};
+pub use solve::{Outcome, Report, RunError, run, run_reporting};

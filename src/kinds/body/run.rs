@@ -2,6 +2,7 @@
 //! summary, its report, its line in a sweep's table and its drawing.
 
 use super::summary::{BodySection, Extra};
+use super::{Body, BodyScene, Report, RunError, SceneLoads, run_reporting};
 use crate::Short;
 use crate::kinds::KindError;
 use crate::output::drawing::{BodyShape, Drawing, RigidBody, RunDrawings};
@@ -9,8 +10,7 @@ use crate::output::summary::{Figure, IntegratorSummary, RunFigures, Summary};
 use crate::output::text::printable;
 use crate::output::trajectory::number_text;
 use crate::run::record::{Recorder, RunStart};
-use crate::run::{Report, Row, RunError, Sink, run_reporting};
-use crate::scene::{Body, Scene, SceneLoads};
+use crate::run::{Row, Sink};
 use std::fmt::Write;
 
 /// The pendulum's period, measured from its rows ([`crate::swing::measure_period`]).
@@ -20,7 +20,7 @@ const PERIOD: &str = "period_s";
 /// or failed where it failed.
 #[derive(Debug)]
 pub struct BodyRun<'a> {
-    scene: &'a Scene,
+    scene: &'a BodyScene,
     /// What the run did, up to where it ended.
     pub report: Report,
     /// Why it ended before its end time, where it failed.
@@ -67,7 +67,7 @@ fn keep((time, first): &mut (Vec<f64>, Vec<f64>), row: &Row) {
 }
 
 /// The figures a family measures from its rows, by key.
-fn measure_keys(scene: &Scene) -> &'static [&'static str] {
+fn measure_keys(scene: &BodyScene) -> &'static [&'static str] {
     match scene.body {
         Body::Pendulum(_) => &[PERIOD],
         _ => &[],
@@ -76,12 +76,12 @@ fn measure_keys(scene: &Scene) -> &'static [&'static str] {
 
 /// Whether the trajectory has the potential and total energy: the model's own field or the
 /// loads have a potential.
-fn has_potential(scene: &Scene) -> bool {
+fn has_potential(scene: &BodyScene) -> bool {
     scene.selection.info.potential_energy || scene.loads.has_potential()
 }
 
 /// About how many numbers the trajectory holds: each row's time, state and energies.
-pub(super) fn trajectory_numbers(scene: &Scene) -> f64 {
+pub(super) fn trajectory_numbers(scene: &BodyScene) -> f64 {
     let rows = scene.integrator.end_time / scene.every + 1.0;
     let energies = if has_potential(scene) { 3.0 } else { 1.0 };
     rows * (1.0 + scene.state_names().len() as f64 + energies)
@@ -91,7 +91,7 @@ pub(super) fn trajectory_numbers(scene: &Scene) -> f64 {
 /// top of the output, then its drawing where it gave two rows or more. A failure of the run
 /// is kept in what it returns; an error is the recorder's alone.
 pub(super) fn run_body<'a>(
-    scene: &'a Scene,
+    scene: &'a BodyScene,
     name: &str,
     recorder: &mut dyn Recorder,
 ) -> Result<BodyRun<'a>, KindError> {
@@ -175,7 +175,7 @@ pub(super) fn run_body<'a>(
 /// The summary of a run of `scene` (`name`, its file) that reported `report`, before its
 /// figures: the settings and statistics, the model and where the run ended.
 fn summary_of(
-    scene: &Scene,
+    scene: &BodyScene,
     name: &str,
     report: &Report,
     names: &[String],
@@ -207,7 +207,7 @@ fn summary_of(
 /// The run's figures as every kind gives them: the family's measures, each with how far it
 /// moved when the run was refined, and why a measure is not given.
 fn run_figures(
-    scene: &Scene,
+    scene: &BodyScene,
     measures: &[(&'static str, Result<f64, String>)],
     refined: &[(&'static str, Option<f64>)],
 ) -> RunFigures {
@@ -255,9 +255,9 @@ struct Refined {
 }
 
 /// How far each figure given moves when the scene runs again refined
-/// ([`crate::scene::IntegratorSpec::refined`]). Nothing where the run gave no figure.
+/// ([`super::IntegratorSpec::refined`]). Nothing where the run gave no figure.
 fn refined_differences(
-    scene: &Scene,
+    scene: &BodyScene,
     measures: &[(&'static str, Result<f64, String>)],
     stop_asked: &dyn Fn() -> bool,
 ) -> Refined {
@@ -307,7 +307,7 @@ fn refined_differences(
 /// The family's figures from the rows kept for them; where the run gives none (a pendulum
 /// that swung less than twice), why.
 fn measures(
-    scene: &Scene,
+    scene: &BodyScene,
     measured: Option<&(Vec<f64>, Vec<f64>)>,
 ) -> Vec<(&'static str, Result<f64, String>)> {
     let (time, first) = measured.map_or((&[][..], &[][..]), |(t, x)| (&t[..], &x[..]));
@@ -323,7 +323,7 @@ fn measures(
 }
 
 /// What the plots and the view draw of the body.
-fn drawing(scene: &Scene) -> RigidBody {
+fn drawing(scene: &BodyScene) -> RigidBody {
     let rows = |m: nalgebra::Matrix3<f64>| [0, 1, 2].map(|r| [m[(r, 0)], m[(r, 1)], m[(r, 2)]]);
     let shape = match &scene.body {
         Body::Spatial { mass, inertia } => BodyShape::Spatial {

@@ -2,9 +2,9 @@
 //! drift, where the run ended, and what the family and the scene add (the pendulum's measured
 //! period and how far it moved when the run was refined; a stop condition and when it held).
 
+use super::Report;
 use crate::models::{ModelInfo, Operations};
 use crate::output::summary::Named;
-use crate::run::Report;
 use serde::Serialize;
 use std::collections::BTreeMap;
 

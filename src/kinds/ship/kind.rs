@@ -9,10 +9,11 @@ use super::manoeuvre::trajectory_columns;
 use super::run::{Finished, run_scene};
 use super::summary::LinearSummary;
 use super::{ShipError, ShipModel, ShipScene};
-use crate::kinds::{self, KindError, Linearised, Reference, Registered, Source};
+use crate::kinds::{self, Columns, KindError, Linearised, Reference, Registered, Source};
 use crate::output::summary::Summary;
 use crate::run::record::Recorder;
 use crate::scene::SceneError;
+use crate::scene::reference::SceneFamily;
 use crate::scene::sweep::TableCase;
 use std::any::Any;
 use std::path::Path;
@@ -21,6 +22,8 @@ use std::path::Path;
 pub const KIND: Registered = Registered {
     name: "ship",
     reference: Reference {
+        heading: "Ship scenes",
+        families: &[SceneFamily::Kind("ship")],
         doc: "A ship on its hydrodynamic table: planar-midship (4.46) with [hydrodynamics], \
               a rudder and the standard manoeuvres.",
         intro: "A scene with a `[hydrodynamics]` table is a ship scene: 4.46 at midship with \
@@ -29,9 +32,11 @@ pub const KIND: Registered = Registered {
                 (`scenes/mariner.toml`, `scenes/esso_osaka.toml`; `eom new ship`).",
         keys: keys::KEYS,
         notes: keys::NOTES,
-        columns_said: "A ship writes one `trajectory.csv` per manoeuvre, with the rudder command \
-                      after saturation and the distance run by midship",
-        columns: trajectory_columns,
+        columns: Columns::Listed {
+            said: "A ship writes one `trajectory.csv` per manoeuvre, with the rudder command \
+                  after saturation and the distance run by midship",
+            columns: trajectory_columns,
+        },
     },
     recognises,
     read,

@@ -121,7 +121,7 @@ pub struct ShipSceneFile {
     /// Values to sweep over (read by [`crate::scene::sweep`], which runs each case).
     pub sweep: Option<toml::Table>,
     /// The operating point of `eom linear`.
-    pub linear: Option<crate::scene::file::LinearTable>,
+    pub linear: Option<crate::scene::envelope::LinearTable>,
 }
 
 /// `[body]`: the keys of the table's units (`_prime` in the prime system), one of each.

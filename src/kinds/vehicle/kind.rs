@@ -8,10 +8,11 @@ use super::manoeuvre::ROW;
 use super::manoeuvre::trajectory_columns;
 use super::run::{Finished, run_scene};
 use super::{VehicleError, VehicleScene};
-use crate::kinds::{self, KindError, Linearised, Reference, Registered, Source};
+use crate::kinds::{self, Columns, KindError, Linearised, Reference, Registered, Source};
 use crate::output::summary::Summary;
 use crate::run::record::Recorder;
 use crate::scene::SceneError;
+use crate::scene::reference::SceneFamily;
 use crate::scene::sweep::TableCase;
 use std::any::Any;
 use std::path::Path;
@@ -20,6 +21,8 @@ use std::path::Path;
 pub const KIND: Registered = Registered {
     name: "vehicle",
     reference: Reference {
+        heading: "Vehicle scenes",
+        families: &[SceneFamily::Kind("vehicle")],
         doc: "An underwater vehicle on its hydrodynamic table: six degrees of freedom about \
               the table's origin with [hydrodynamics], a propeller, fins and their steps.",
         intro: "A scene with `[model] family = \"vehicle\"` and a `[hydrodynamics]` table is a \
@@ -30,9 +33,11 @@ pub const KIND: Registered = Registered {
                 (`scenes/remus100.toml`; `eom new vehicle`; docs/vehicles.md).",
         keys: keys::KEYS,
         notes: "",
-        columns_said: "A vehicle writes one per manoeuvre, with the fins' commands after saturation and \
-                      the Euler angles of its quaternion",
-        columns: trajectory_columns,
+        columns: Columns::Listed {
+            said: "A vehicle writes one per manoeuvre, with the fins' commands after saturation and \
+                  the Euler angles of its quaternion",
+            columns: trajectory_columns,
+        },
     },
     recognises,
     read,

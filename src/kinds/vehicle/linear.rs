@@ -122,7 +122,7 @@ pub fn linearise_vehicle(scene: &VehicleScene) -> Result<Linearisation, VehicleE
     let plant = VehiclePlant::new(&scene.table)?;
     let start = scene.start()?;
     let mut state = start[..9].to_vec();
-    state.extend(crate::scene::euler_angles(
+    state.extend(crate::models::euler_angles(
         crate::models::Kinematics::Quaternion,
         &start[9..13],
     ));

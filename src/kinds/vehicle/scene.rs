@@ -154,7 +154,7 @@ pub struct VehicleSceneFile {
     #[serde(default)]
     pub output: OutputTable,
     /// The operating point of `eom linear`.
-    pub linear: Option<crate::scene::file::LinearTable>,
+    pub linear: Option<crate::scene::envelope::LinearTable>,
     /// Values to sweep over (read by [`crate::scene::sweep`], which runs each case).
     pub sweep: Option<toml::Table>,
     /// The autopilots.

@@ -3,8 +3,7 @@
 //! a test compares the committed page with it.
 
 use super::{Key, SceneFamily, keys_of, shared_keys};
-use crate::kinds::{REGISTRY, Registered};
-use crate::models::{ENERGY_UNIT, Family, ModelInfo, TIME_UNIT, state_with_unit, with_unit};
+use crate::kinds::{Columns, REGISTRY, Registered};
 
 /// The command that writes the page.
 pub const REGENERATE: &str = "cargo run -- new --reference > docs/scenes.md";
@@ -16,8 +15,6 @@ pub fn markdown() -> String {
         CONVENTIONS.to_owned(),
         families(),
         every_scene_keys(),
-        catalog_keys(),
-        RUNNING.to_owned(),
     ]
     .into_iter()
     .chain(REGISTRY.iter().flat_map(kind_sections))
@@ -80,9 +77,9 @@ fn cell(text: &str) -> String {
     text.replace('|', "\\|").replace('\n', " ")
 }
 
-/// The families of a catalog key: `all` when every catalog family reads it.
-fn family_names(key: &Key) -> String {
-    if key.families.len() == Family::ALL.len() {
+/// The families of a kind's key: `all` when every family of the kind (`of`) reads it.
+fn family_names(key: &Key, of: &[SceneFamily]) -> String {
+    if key.families.len() == of.len() {
         return "all".into();
     }
     let names: Vec<String> = key
@@ -106,12 +103,11 @@ fn table_header(with_families: bool) -> String {
     format!("| key |{families} {COLUMNS}\n|---|{rule}---|---|---|---|---|---|\n")
 }
 
-/// One row of a key table.
-fn row(key: &Key, with_families: bool) -> String {
-    let families = if with_families {
-        format!(" {} |", family_names(key))
-    } else {
-        String::new()
+/// One row of a key table; with the families that read it, of a kind's `families`.
+fn row(key: &Key, families: Option<&[SceneFamily]>) -> String {
+    let families = match families {
+        Some(of) => format!(" {} |", family_names(key, of)),
+        None => String::new(),
     };
     let unit = match key.unit {
         "-" => "dimensionless",
@@ -139,21 +135,26 @@ fn every_scene_keys() -> String {
     );
     out.push_str(&table_header(false));
     for key in shared_keys() {
-        out.push_str(&row(key, false));
+        out.push_str(&row(key, None));
     }
     out
 }
 
-/// The keys of every catalog family, table by table, but those every scene takes.
-fn catalog_keys() -> String {
-    let mut out = String::from(
-        "## Catalog scenes\n\n\
-         The keys of the six catalog families, table by table: each key's type, its unit, \
-         the axes a vector is in, its default, and whether it is required. A key that \
-         families read differently has a row for each. Beside them, a catalog scene takes \
-         the keys every scene takes.\n",
-    );
-    let own = super::catalog::KEYS.iter().filter(|key| !key.shared);
+/// A kind's keys, but those every scene takes: in one table where it has one family, table
+/// by table with the families that read each key where it has several (a key that families
+/// read differently has a row for each).
+fn kind_keys(kind: &Registered) -> String {
+    let reference = &kind.reference;
+    let own = (reference.keys.iter()).filter(|key| !key.shared);
+    if reference.families.len() == 1 {
+        let mut out = format!("## {}\n\n{}\n\n", reference.heading, reference.intro);
+        out.push_str(&table_header(false));
+        for key in keys_of(reference.families[0]).filter(|key| !key.shared) {
+            out.push_str(&row(&key, None));
+        }
+        return out;
+    }
+    let mut out = format!("## {}\n\n{}\n", reference.heading, reference.intro);
     let mut table = None;
     for key in own {
         if table != Some(key.table()) {
@@ -164,45 +165,7 @@ fn catalog_keys() -> String {
             };
             out.push_str(&format!("\n### {title}\n\n{}", table_header(true)));
         }
-        out.push_str(&row(key, true));
-    }
-    out
-}
-
-const RUNNING: &str = "## How a catalog scene runs\n\n\
-- **Model selection.** `model.symmetry = \"auto\"` runs the most pruned class the tensor \
-allows; the summary says which variant ran, why, and its operations per call against the \
-full variant's.\n\
-- **Integrators.** `lie-midpoint` applies to a spatial body with quaternion kinematics that is \
-free or under uniform gravity alone, which acts at G and leaves the rotation torque-free (the \
-rotation by the geometric integrator, the translation exactly). A fixed-step method \
-integrates each interval between rows and a load table's times in equal steps of at most \
-`step`, so that rows land on their times and no step straddles a change of load; an adaptive \
-one places rows by dense output, and is cut at a table's times likewise.\n\
-- **Stop conditions.** `integrator.stop_when` ends a run where its condition first holds, \
-found on the step (dense output, or the step retaken) to adjacent doubles; the last row is \
-at that time.\n\
-- **Energy.** Where every load has a potential (gravity, buoyancy, constant space forces, the \
-constant planar and pendulum moments), the trajectory has potential and total energy and the \
-summary an energy drift.\n\
-- **Stopping early.** A state or a load input that turns NaN or infinite stops the run, named \
-with its time. Ctrl-C (or SIGTERM) ends a run at its next row; a second one ends the process \
-at once. A run that stops early keeps what it ran: every row, a summary with `\"interrupted\": \
-true` or the `\"error\"`, and the plots. Gimbal lock and a fixed step too long for the rate of \
-turn stop a run as `model.kinematics` and `integrator.step` say.\n";
-
-/// A registered kind's section: what its scenes are, its keys, and what its table's
-/// conventions are.
-fn kind_keys(kind: &Registered) -> String {
-    let reference = &kind.reference;
-    let mut out = format!(
-        "## {} scenes\n\n{}\n\n",
-        capitalised(kind.name),
-        reference.intro
-    );
-    out.push_str(&table_header(false));
-    for key in keys_of(SceneFamily::Kind(kind.name)).filter(|key| !key.shared) {
-        out.push_str(&row(&key, false));
+        out.push_str(&row(key, Some(reference.families)));
     }
     out
 }
@@ -216,62 +179,17 @@ fn kind_sections(kind: &Registered) -> Vec<String> {
         .collect()
 }
 
-/// A kind's name as a title says it, its first letter capital.
-fn capitalised(name: &str) -> String {
-    let mut chars = name.chars();
-    chars.next().map_or_else(String::new, |first| {
-        first.to_uppercase().chain(chars).collect()
-    })
-}
-
+/// What each kind's trajectory.csv holds: its list of columns, or what it writes of them.
 fn trajectory_columns() -> String {
-    let mut out = format!(
-        "## trajectory.csv\n\n\
-         One row per output time. Every column is labelled `name[unit]`: `{}`, the model's \
-         state in its layout, `{}`, and `{}`, `{}` where the loads have a potential. Angles \
-         are in radians, `-` marks a dimensionless column. The state columns by model:\n\n\
-         | family | kinematics | state columns |\n|---|---|---|\n",
-        with_unit("t", TIME_UNIT),
-        with_unit("kinetic_energy", ENERGY_UNIT),
-        with_unit("potential_energy", ENERGY_UNIT),
-        with_unit("total_energy", ENERGY_UNIT),
-    );
-    for family in Family::ALL {
-        let mut layouts: Vec<(&str, &[&str])> = Vec::new();
-        for info in ModelInfo::of_family(family) {
-            if !layouts.iter().any(|(_, state)| *state == info.state) {
-                let kinematics = info.kinematics.map_or("—", |k| k.name());
-                layouts.push((kinematics, info.state));
+    let mut out = String::from("## trajectory.csv\n\n");
+    for kind in REGISTRY {
+        match &kind.reference.columns {
+            Columns::Written(columns) => out.push_str(&columns()),
+            Columns::Listed { said, columns } => {
+                let columns: Vec<String> = (columns().iter()).map(|c| format!("`{c}`")).collect();
+                out.push_str(&format!("\n{said}: {}.\n", columns.join(", ")));
             }
         }
-        for (variant, state) in layouts {
-            let columns: Vec<String> = state
-                .iter()
-                .map(|name| format!("`{}`", state_with_unit(&name.to_lowercase())))
-                .collect();
-            out.push_str(&format!(
-                "| `{}` | {variant} | {} |\n",
-                family.name(),
-                columns.join(", ")
-            ));
-        }
-    }
-    out.push_str(&kinds_columns());
-    out
-}
-
-/// What each registered kind's trajectory.csv holds, from its own list of columns.
-fn kinds_columns() -> String {
-    let mut out = String::new();
-    for kind in REGISTRY {
-        let columns: Vec<String> = ((kind.reference.columns)().iter())
-            .map(|c| format!("`{c}`"))
-            .collect();
-        out.push_str(&format!(
-            "\n{}: {}.\n",
-            kind.reference.columns_said,
-            columns.join(", ")
-        ));
     }
     out
 }

@@ -1,15 +1,14 @@
 //! The scene reference: every key a scene file takes, defined once.
 //!
 //! A key's path, the families that read it, its type, unit, axes, default, whether it is
-//! required and what it means stand in one static table (the `KEYS` of `catalog` and of each
-//! kind of the registry, in its folder, chained). Three things are made from it, so that they cannot disagree: the
-//! family check of a scene file (a key another family reads is refused, [`table_keys`]), the
-//! commented TOML template `eom new FAMILY` prints ([`template`]), and the reference page
-//! `docs/scenes.md` ([`markdown`], printed by `eom new --reference`). The tests keep the
-//! table and the serde schema of [`file`](super::file) and the ship scene in step, both ways,
-//! and run every template.
+//! required and what it means stand in one static table (the `KEYS` of each kind of the
+//! registry, in its folder, chained; those every scene takes defined once, here). Three things
+//! are made from it, so that they cannot disagree: the family check of a scene file (a key
+//! another family reads is refused, [`table_keys`]), the commented TOML template `eom new
+//! FAMILY` prints ([`template`]), and the reference page `docs/scenes.md` ([`markdown`],
+//! printed by `eom new --reference`). The tests keep the table and each kind's serde schema
+//! in step, both ways, and run every template.
 
-mod catalog;
 mod markdown;
 mod shared;
 mod template;
@@ -31,13 +30,11 @@ pub enum SceneFamily {
 }
 
 impl SceneFamily {
-    /// Every family, the catalog's in its order, then the registry's kinds in its.
+    /// Every family, each kind's in the registry's order.
     pub fn all() -> Vec<SceneFamily> {
-        let catalog = Family::ALL.into_iter().map(SceneFamily::Catalog);
-        let kinds = crate::kinds::REGISTRY
-            .iter()
-            .map(|kind| SceneFamily::Kind(kind.name));
-        catalog.chain(kinds).collect()
+        (crate::kinds::REGISTRY.iter())
+            .flat_map(|kind| kind.reference.families.iter().copied())
+            .collect()
     }
 
     /// Its name on the command line: the catalog family's own, or the kind's (`ship`).
@@ -299,13 +296,13 @@ pub enum Shown {
     Commented,
 }
 
-/// Every key of every scene file, the catalog's, then each registered kind's, in the order a
-/// template writes them; a key every scene takes is given with each family's entry of it.
+/// Every key of every scene file, kind by kind in the registry's order, each kind's in the
+/// order a template writes them; a key every scene takes is given with each family's entry
+/// of it.
 pub fn keys() -> impl Iterator<Item = Key> {
-    let kinds = crate::kinds::REGISTRY
-        .iter()
-        .flat_map(|kind| kind.reference.keys);
-    catalog::KEYS.iter().chain(kinds).map(Key::resolved)
+    (crate::kinds::REGISTRY.iter())
+        .flat_map(|kind| kind.reference.keys)
+        .map(Key::resolved)
 }
 
 /// The keys `family` reads, in template order.
@@ -370,9 +367,7 @@ mod tests {
     /// definition, and no family defines it on its own.
     #[test]
     fn every_family_takes_every_shared_key_as_it_is_defined_once() {
-        let raw = catalog::KEYS
-            .iter()
-            .chain(crate::kinds::REGISTRY.iter().flat_map(|k| k.reference.keys));
+        let raw = crate::kinds::REGISTRY.iter().flat_map(|k| k.reference.keys);
         for key in raw {
             let definition = shared::definition(key.path);
             assert_eq!(

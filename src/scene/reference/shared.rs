@@ -48,7 +48,7 @@ pub(super) static KEYS: &[Key] = &[
                       Explicit Euler is unstable there for every step, and so is symplectic \
                       Euler on a body's rates, which it kicks together: they only warn, as any \
                       fixed step does past the h·|ω| at which one turn errs by 10 % (0.0318 \
-                      Euler, 1.18 rk4). The bounds and their derivations: src/run/guard.rs.",
+                      Euler, 1.18 rk4). The bounds and their derivations: src/kinds/body/guard.rs.",
         ..Key::BLANK
     },
     Key {

@@ -82,7 +82,7 @@ impl<'a> Walker<'a> {
 impl<'de> Deserializer<'de> for Walker<'_> {
     type Error = Stop;
 
-    /// A value read by its own visitor, as a constant or a time table (`eom::scene::file::
+    /// A value read by its own visitor, as a constant or a time table (`eom::kinds::body::file::
     /// Timed`): the key itself is recorded, and the table's fields are walked unrecorded (the
     /// reference describes the table form under the key).
     fn deserialize_any<V: de::Visitor<'de>>(self, visitor: V) -> Result<V::Value, Stop> {

@@ -1,8 +1,9 @@
 //! The scene file as written: TOML tables read by serde, every table closed to unknown keys.
 //!
-//! Nothing here is checked beyond types; [`super::Scene::from_file`] checks values, per
+//! Nothing here is checked beyond types; [`super::BodyScene::from_file`] checks values, per
 //! family, and names each offending key by its path in the file (`integrator.step`).
 
+use crate::scene::envelope::LinearTable;
 use serde::Deserialize;
 
 /// A whole scene file.
@@ -26,25 +27,12 @@ pub struct SceneFile {
     /// What to write.
     #[serde(default)]
     pub output: OutputTable,
-    /// Values to vary, one run per combination (see [`super::sweep`]).
+    /// Values to vary, one run per combination (see [`crate::scene::sweep`]).
     #[serde(default)]
     pub sweep: Option<toml::Table>,
     /// Where `eom linear` linearises (see [`crate::linear`]).
     #[serde(default)]
     pub linear: Option<LinearTable>,
-}
-
-/// `[linear]`: the operating point of `eom linear`, by default the initial state.
-#[derive(Debug, Clone, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct LinearTable {
-    /// State entries and inputs at the point, by the model's names, SI and radians.
-    pub at: Option<std::collections::BTreeMap<String, f64>>,
-    /// The free variables solved for so that the reduced state is in equilibrium.
-    pub trim: Option<Vec<String>>,
-    /// The outputs y = C x of the linear model, state entries by name (by default every entry
-    /// of the reduced state).
-    pub outputs: Option<Vec<String>>,
 }
 
 /// `[body]`: each family reads its own keys and refuses the others.
@@ -231,7 +219,7 @@ pub struct IntegratorTable {
     /// The most steps (accepted and rejected) a run may take.
     pub max_steps: Option<u64>,
     /// A condition that ends the run where it first holds, `"z > 10"` (see
-    /// [`super::stop`]).
+    /// [`crate::scene::stop`]).
     pub stop_when: Option<String>,
 }
 

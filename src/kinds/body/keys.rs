@@ -1,10 +1,10 @@
-//! The keys of a catalog scene ([`SceneFile`](crate::scene::file::SceneFile)), in the order a
+//! The keys of a catalog scene ([`SceneFile`](super::file::SceneFile)), in the order a
 //! template writes them. Each family's keys in `[body]`, `[initial]`, `[loads]` and `[model]`
 //! are what the scene checker allows there; a key that two families read differently (a force
 //! of three entries or of two) has an entry for each.
 
-use super::{Choices, Frame, Key, Kind, Required, SceneFamily, Shown};
-use crate::models::Family;
+use crate::models::{ENERGY_UNIT, Family, ModelInfo, TIME_UNIT, state_with_unit, with_unit};
+use crate::scene::reference::{Choices, Frame, Key, Kind, Required, SceneFamily, Shown};
 
 const PENDULUM: SceneFamily = SceneFamily::Catalog(Family::Pendulum);
 const PLANAR_G: SceneFamily = SceneFamily::Catalog(Family::PlanarAtG);
@@ -13,7 +13,8 @@ const PLANAR_SPACE: SceneFamily = SceneFamily::Catalog(Family::PlanarSpaceFixed)
 const SPATIAL: SceneFamily = SceneFamily::Catalog(Family::Spatial);
 const TOP: SceneFamily = SceneFamily::Catalog(Family::Top);
 
-const ALL: &[SceneFamily] = &[
+/// The six catalog families, in the catalog's order: the body's templates.
+pub(super) const ALL: &[SceneFamily] = &[
     PENDULUM,
     PLANAR_G,
     PLANAR_MIDSHIP,
@@ -25,8 +26,73 @@ const PLANAR: &[SceneFamily] = &[PLANAR_G, PLANAR_MIDSHIP, PLANAR_SPACE];
 const PLANAR_AND_PENDULUM: &[SceneFamily] = &[PENDULUM, PLANAR_G, PLANAR_MIDSHIP, PLANAR_SPACE];
 const ATTITUDE: &[SceneFamily] = &[SPATIAL, TOP];
 
+/// What a catalog scene's keys are, before them.
+pub(super) const INTRO: &str = "The keys of the six catalog families, table by table: each key's \
+type, its unit, the axes a vector is in, its default, and whether it is required. A key that \
+families read differently has a row for each. Beside them, a catalog scene takes the keys \
+every scene takes.";
+
+/// How a catalog scene runs: the notes after its keys.
+pub(super) const NOTES: &str = "## How a catalog scene runs\n\n\
+- **Model selection.** `model.symmetry = \"auto\"` runs the most pruned class the tensor \
+allows; the summary says which variant ran, why, and its operations per call against the \
+full variant's.\n\
+- **Integrators.** `lie-midpoint` applies to a spatial body with quaternion kinematics that is \
+free or under uniform gravity alone, which acts at G and leaves the rotation torque-free (the \
+rotation by the geometric integrator, the translation exactly). A fixed-step method \
+integrates each interval between rows and a load table's times in equal steps of at most \
+`step`, so that rows land on their times and no step straddles a change of load; an adaptive \
+one places rows by dense output, and is cut at a table's times likewise.\n\
+- **Stop conditions.** `integrator.stop_when` ends a run where its condition first holds, \
+found on the step (dense output, or the step retaken) to adjacent doubles; the last row is \
+at that time.\n\
+- **Energy.** Where every load has a potential (gravity, buoyancy, constant space forces, the \
+constant planar and pendulum moments), the trajectory has potential and total energy and the \
+summary an energy drift.\n\
+- **Stopping early.** A state or a load input that turns NaN or infinite stops the run, named \
+with its time. Ctrl-C (or SIGTERM) ends a run at its next row; a second one ends the process \
+at once. A run that stops early keeps what it ran: every row, a summary with `\"interrupted\": \
+true` or the `\"error\"`, and the plots. Gimbal lock and a fixed step too long for the rate of \
+turn stop a run as `model.kinematics` and `integrator.step` say.\n";
+
+/// A catalog scene's trajectory.csv: the columns every one writes, then the state columns of
+/// each family's layouts, as the reference page says it.
+pub(super) fn columns() -> String {
+    let mut out = format!(
+        "One row per output time. Every column is labelled `name[unit]`: `{}`, the model's \
+         state in its layout, `{}`, and `{}`, `{}` where the loads have a potential. Angles \
+         are in radians, `-` marks a dimensionless column. The state columns by model:\n\n\
+         | family | kinematics | state columns |\n|---|---|---|\n",
+        with_unit("t", TIME_UNIT),
+        with_unit("kinetic_energy", ENERGY_UNIT),
+        with_unit("potential_energy", ENERGY_UNIT),
+        with_unit("total_energy", ENERGY_UNIT),
+    );
+    for family in Family::ALL {
+        let mut layouts: Vec<(&str, &[&str])> = Vec::new();
+        for info in ModelInfo::of_family(family) {
+            if !layouts.iter().any(|(_, state)| *state == info.state) {
+                let kinematics = info.kinematics.map_or("—", |k| k.name());
+                layouts.push((kinematics, info.state));
+            }
+        }
+        for (variant, state) in layouts {
+            let columns: Vec<String> = state
+                .iter()
+                .map(|name| format!("`{}`", state_with_unit(&name.to_lowercase())))
+                .collect();
+            out.push_str(&format!(
+                "| `{}` | {variant} | {} |\n",
+                family.name(),
+                columns.join(", ")
+            ));
+        }
+    }
+    out
+}
+
 /// Every key of a catalog scene.
-pub(super) static KEYS: &[Key] = &[
+pub static KEYS: &[Key] = &[
     Key::shared(
         "title",
         ALL,

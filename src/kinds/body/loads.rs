@@ -22,10 +22,11 @@
 
 use super::file::{LoadsTable, Timed};
 use super::table::{Target, TimeTable, TimedLoad};
-use super::{Body, Problem, Selection};
-use crate::models::{Family, Kinematics, Loads};
+use super::{Body, Selection};
+use crate::models::{Family, Kinematics, Loads, attitude};
+use crate::scene::Problem;
 use crate::validate::Requirement;
-use nalgebra::{Quaternion, Rotation3, UnitQuaternion, Vector3};
+use nalgebra::Vector3;
 
 /// A scene's loads, by family.
 #[derive(Debug, Clone, PartialEq)]
@@ -743,34 +744,6 @@ impl SpatialLoads {
             -self.weight * position.z + self.buoyancy * centre.z
                 - Vector3::from(self.force_space).dot(&pushed)
         })
-    }
-}
-
-/// The rotation from body to space axes of an attitude, `[φ, θ, ψ]` (E of 4.57) or
-/// `[q0, q1, q2, q3]` (normalised).
-pub(crate) fn attitude(kinematics: Kinematics, a: &[f64]) -> Rotation3<f64> {
-    match kinematics {
-        Kinematics::Euler => Rotation3::from_euler_angles(a[0], a[1], a[2]),
-        Kinematics::Quaternion => {
-            let q = Quaternion::new(a[0], a[1], a[2], a[3]);
-            UnitQuaternion::from_quaternion(q).to_rotation_matrix()
-        }
-    }
-}
-
-/// Roll, pitch and yaw, radians, of an attitude as the model carries it (the state from its
-/// attitude entries on: index 9 of a spatial state, 3 of a top's).
-pub fn euler_angles(kinematics: Kinematics, attitude_entries: &[f64]) -> [f64; 3] {
-    match kinematics {
-        Kinematics::Euler => [
-            attitude_entries[0],
-            attitude_entries[1],
-            attitude_entries[2],
-        ],
-        Kinematics::Quaternion => {
-            let (r, p, y) = attitude(kinematics, attitude_entries).euler_angles();
-            [r, p, y]
-        }
     }
 }
 

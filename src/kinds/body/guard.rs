@@ -61,9 +61,9 @@
 //! run stops there naming the state component or the load input that stopped being finite.
 //! The check compares squares, so it costs a few multiplications per step.
 
-use super::RunError;
+use super::{Body, BodyScene, RunError};
 use crate::models::{Family, Kinematics};
-use crate::scene::{Body, Method, Scene};
+use crate::scene::Method;
 use std::f64::consts::PI;
 use std::ops::Range;
 
@@ -106,7 +106,7 @@ impl Scheme {
     /// turn times how far one step leaves a unit rotation from where it should be.
     ///
     /// ```
-    /// use eom::run::guard::Scheme;
+    /// use eom::kinds::body::guard::Scheme;
     /// // Explicit Euler's one-step error is about y²/2, so a turn's is about πy.
     /// assert!((Scheme::Euler.turn_error(1e-3) - std::f64::consts::PI * 1e-3).abs() < 1e-8);
     /// ```
@@ -147,7 +147,7 @@ impl Scheme {
 /// tolerance (`None` for a fixed step): ε|θ|/η, η = min(rtol, [`RATE_ERROR`]).
 ///
 /// ```
-/// let bound = eom::run::guard::gimbal_bound(std::f64::consts::FRAC_PI_2, None);
+/// let bound = eom::kinds::body::guard::gimbal_bound(std::f64::consts::FRAC_PI_2, None);
 /// assert!((bound - 3.49e-8).abs() < 1e-10);
 /// ```
 pub fn gimbal_bound(theta: f64, rtol: Option<f64>) -> f64 {
@@ -195,7 +195,7 @@ struct Rate {
 impl Guard {
     /// The checks `scene` needs: gimbal lock for Euler-angle kinematics, the rate of turn for
     /// a fixed-step method.
-    pub(crate) fn new(scene: &Scene) -> Self {
+    pub(crate) fn new(scene: &BodyScene) -> Self {
         let info = scene.selection.info;
         let spec = &scene.integrator;
         // The pitch θ of an Euler-angle attitude, where the catalog's layout has one.
@@ -368,7 +368,7 @@ impl Rate {
              a rotation at {name} is off by {:.0} % per turn{why}; a step ≤ {:.3e} s keeps it \
              within {:.0} % (h·{name} ≤ {:.4})",
             self.method,
-            super::seconds(t),
+            super::solve::seconds(t),
             self.step,
             100.0 * self.scheme.turn_error(y),
             self.scheme.accuracy_bound() / turn,
