@@ -289,13 +289,17 @@ pub struct Registered {
     pub reference: Reference,
     /// Whether a scene's tables are this kind's.
     pub recognises: fn(&toml::Table) -> bool,
+    /// Whether it reads the scenes no other kind recognises (the catalog body's, whose
+    /// checker says what such a scene lacks): it is asked after every other kind, so that a
+    /// kind added to the registry is recognised wherever it stands in it.
+    pub reads_the_rest: bool,
     /// Reads and checks the scene (`name` is how errors name the file, `base` where a file
     /// it names is found).
     pub read: Reader,
 }
 
-/// The kinds of scene: the only list of them. A scene is the first kind's that recognises its
-/// tables.
+/// The kinds of scene: the only list of them, in the order the reference lists them. A scene
+/// is the first kind's that recognises its tables, the kind that reads the rest asked last.
 pub const REGISTRY: &[Registered] = &[
     body::KIND,
     #[cfg(feature = "ship")]
@@ -313,9 +317,13 @@ pub(crate) fn manoeuvres_kept(count: usize) -> String {
     )
 }
 
-/// The registered kind whose tables `table` are, if one is.
+/// The registered kind whose tables `table` are, if one is: the first kind's that recognises
+/// them, the kind that reads the rest asked last.
 pub fn recognise(table: &toml::Table) -> Option<&'static Registered> {
-    REGISTRY.iter().find(|kind| (kind.recognises)(table))
+    let asked = |rest: bool| {
+        (REGISTRY.iter()).find(move |kind| kind.reads_the_rest == rest && (kind.recognises)(table))
+    };
+    asked(false).or_else(|| asked(true))
 }
 
 /// The registered kind of this name.
@@ -326,6 +334,41 @@ pub fn named(name: &str) -> Option<&'static Registered> {
 /// The family a scene's `[model]` names, if it names one.
 pub fn family_of(table: &toml::Table) -> Option<&str> {
     table.get("model")?.get("family")?.as_str()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn table(text: &str) -> toml::Table {
+        text.parse().unwrap()
+    }
+
+    /// One kind reads what no other recognises, and it is asked last: a kind listed before
+    /// it in the registry is still recognised.
+    #[test]
+    fn each_scene_is_its_own_kind_s_and_the_rest_the_reader_of_the_rest_s() {
+        let rest: Vec<&str> = (REGISTRY.iter())
+            .filter(|kind| kind.reads_the_rest)
+            .map(|kind| kind.name)
+            .collect();
+        assert_eq!(rest, ["body"]);
+        let name = |text: &str| recognise(&table(text)).map(|kind| kind.name);
+        assert_eq!(name("[model]\nfamily = \"pendulum\""), Some("body"));
+        assert_eq!(name("[model]\nfamily = \"aircraft\""), Some("body"));
+        assert_eq!(name(""), Some("body"));
+        let hull = "[model]\nfamily = \"planar-midship\"\n[hydrodynamics]";
+        let vehicle = "[model]\nfamily = \"vehicle\"\n[hydrodynamics]";
+        match cfg!(feature = "ship") {
+            true => {
+                assert_eq!(name(hull), Some("ship"));
+                assert_eq!(name(vehicle), Some("vehicle"));
+            }
+            // Without the kinds that build such models, none reads them: `AnyScene` says
+            // which feature would.
+            false => assert_eq!((name(hull), name(vehicle)), (None, None)),
+        }
+    }
 }
 
 #[cfg(test)]

@@ -31,11 +31,13 @@ pub const KIND: Registered = Registered {
         columns: Columns::Written(keys::columns),
     },
     recognises,
+    reads_the_rest: true,
     read,
 };
 
-/// A catalog body's scene is every scene whose own table does not define its model: its
-/// checker says what a scene that is no kind's lacks (`model.family`, its body, …).
+/// A catalog body's scene is every scene that no other kind recognises and whose own table does
+/// not define its model: its checker says what a scene that is no kind's lacks
+/// (`model.family`, its body, …).
 fn recognises(table: &toml::Table) -> bool {
     !table.contains_key(crate::scene::DEFINED_MODEL_TABLE)
 }

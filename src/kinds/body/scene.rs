@@ -18,7 +18,7 @@ use crate::scene::{Method, Problem, SceneError, StopCondition, read_as};
 use crate::{InertiaTensor, PendulumParameters};
 use std::path::Path;
 
-/// A scene, checked, ready to run.
+/// A catalog body's scene, checked, ready to run.
 #[derive(Debug, Clone)]
 pub struct BodyScene {
     /// The title from the file.

@@ -40,6 +40,7 @@ pub const KIND: Registered = Registered {
         },
     },
     recognises,
+    reads_the_rest: false,
     read,
 };
 
