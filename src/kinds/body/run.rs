@@ -127,7 +127,7 @@ pub(super) fn run_body<'a>(
             Ok(value) => {
                 (summary.section.extra).insert((*key).into(), Extra::Number(*value));
             }
-            Err(why) => summary.warnings.push(format!("{key} is not given: {why}")),
+            Err(why) => summary.warnings.push(not_given(key, why)),
         }
     }
     let refined = match (&error, stopped) {
@@ -204,6 +204,11 @@ fn summary_of(
     }
 }
 
+/// Why the measure `key` is not given, as the summary's warnings and the run's notes say it.
+fn not_given(key: &str, why: &str) -> String {
+    format!("{key} is not given: {why}")
+}
+
 /// The run's figures as every kind gives them: the family's measures, each with how far it
 /// moved when the run was refined, and why a measure is not given.
 fn run_figures(
@@ -220,7 +225,7 @@ fn run_figures(
         })
         .collect();
     let notes = (measures.iter())
-        .filter_map(|(key, value)| Some(format!("{key} is not given: {}", value.as_ref().err()?)))
+        .filter_map(|(key, value)| Some(not_given(key, value.as_ref().err()?)))
         .collect();
     RunFigures {
         run: String::new(),
