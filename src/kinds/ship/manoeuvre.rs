@@ -1097,6 +1097,9 @@ impl<'a> Driver<'a> {
     }
 }
 
+/// An instant of a run: its time and state.
+type Instant<'a> = (f64, &'a DriveState);
+
 /// A pull-out released at `release` (s): the yaw rate when the rudder is released,
 /// `at_release` (t, state), and at the end, `at_end` (t, state; `None` where the run was
 /// stopped before it); a course-stable ship's dies out, an unstable one's settles to a
@@ -1104,7 +1107,7 @@ impl<'a> Driver<'a> {
 /// ([`Course::broken_by`]).
 fn pull_out_figures(
     release: f64,
-    (at_release, at_end): (Option<(f64, &DriveState)>, Option<(f64, &DriveState)>),
+    (at_release, at_end): (Option<Instant<'_>>, Option<Instant<'_>>),
     course: &Course,
 ) -> Figures {
     let mut notes = Vec::new();
