@@ -7,7 +7,7 @@ use eom::Model;
 use eom::integrate::Stepper;
 use eom::kinds::ship::imo::criteria;
 use eom::kinds::ship::linear::{LinearModel, Nomoto, linearise};
-use eom::kinds::ship::manoeuvre::{Figures, Manoeuvre, ManoeuvreKind, Sample, run};
+use eom::kinds::ship::manoeuvre::{Figures, Manoeuvre, ManoeuvreKind, Sample, run, run_until};
 use eom::kinds::ship::spiral::{Branch, SpiralPoint, Verdict};
 use eom::kinds::ship::steady::{Held, steady_turn};
 use eom::kinds::ship::table::ShipTable;
@@ -1691,4 +1691,183 @@ fn short_zigzag_notes_and_angles_read_as_written() {
     let json = serde_json::to_value(summary).unwrap();
     assert_eq!(json["rudder_deg"].as_f64(), Some(7.5), "{json}");
     assert_eq!(json["heading_deg"].as_f64(), Some(7.5), "{json}");
+}
+
+/// The Mariner's approach with one turning circle at 35° to both sides, its rows every 0.1 s,
+/// and `integrator.stop_when = stop` where it is given.
+fn mariner_turn(stop: Option<&str>) -> Result<ShipScene, String> {
+    let text = std::fs::read_to_string("scenes/mariner.toml").unwrap();
+    let mut text =
+        text[..text.find("[[manoeuvre]]").unwrap()].replace("every = 1.0", "every = 0.1");
+    if let Some(stop) = stop {
+        text = text.replace(
+            "[integrator]\n",
+            &format!("[integrator]\nstop_when = \"{stop}\"\n"),
+        );
+    }
+    text.push_str(
+        "[[manoeuvre]]\nname = \"turn\"\nkind = \"turning_circle\"\nrudder_deg = 35.0\n\
+         duration_s = 1500.0\n",
+    );
+    ShipScene::parse(&text, "turn").map_err(|e| e.to_string())
+}
+
+/// Runs one side of a scene's manoeuvre to its end or to the scene's stop condition: its rows,
+/// and the run.
+fn run_side(
+    scene: &ShipScene,
+    model: &ShipModel,
+    manoeuvre: &Manoeuvre,
+) -> (Vec<Sample>, eom::kinds::ship::ManoeuvreRun) {
+    let mut samples = Vec::new();
+    let start = (scene.start(), scene.stop.as_ref());
+    let done = run_until(
+        model,
+        &scene.rudder,
+        manoeuvre,
+        start,
+        (&scene.stepper, scene.every),
+        |s| {
+            samples.push(*s);
+            true
+        },
+    )
+    .unwrap();
+    (samples, done)
+}
+
+/// `integrator.stop_when = "psi > 2.5"` ends the turn to starboard where the heading first
+/// passes 2.5 rad (143°, between the 90° and the 180° events) and leaves the turn to port,
+/// whose heading falls, to its end: the stopped side's rows are the whole run's up to the stop,
+/// the last one where ψ first exceeds 2.5; the figures of 90° are the whole run's, those of
+/// 180° and of the steady turn are not given, and a note says why; the other side is the whole
+/// run, figures and all.
+#[test]
+fn a_stop_condition_ends_a_ships_turn_where_it_first_holds() {
+    let whole = mariner_turn(None).unwrap();
+    let stopped = mariner_turn(Some("psi > 2.5")).unwrap();
+    let model = ShipModel::new(&whole.table).unwrap();
+    let mut sides_stopped = 0;
+    let runs = whole.manoeuvres[0].runs().into_iter();
+    for ((side, manoeuvre), (_, same)) in runs.zip(stopped.manoeuvres[0].runs()) {
+        assert_eq!(manoeuvre, same);
+        let (all_rows, all) = run_side(&whole, &model, &manoeuvre);
+        let (rows, cut) = run_side(&stopped, &model, &manoeuvre);
+        assert_eq!(all.stopped_at, None);
+        let Some(first) = all_rows.iter().position(|s| s.state[5] > 2.5) else {
+            // The turn to port: the condition never holds, and nothing changes.
+            assert_eq!((cut.stopped_at, &rows), (None, &all_rows), "{side:?}");
+            assert_eq!(cut.figures, all.figures, "{side:?}");
+            continue;
+        };
+        sides_stopped += 1;
+        let last = rows.last().unwrap();
+        assert_eq!(cut.stopped_at, Some(last.t));
+        // Where the condition first holds: at the last row, and not at the one before it.
+        assert!(last.state[5] > 2.5 && rows[rows.len() - 2].state[5] <= 2.5);
+        // Every row before the stop is the whole run's, bit for bit.
+        assert_eq!(rows[..rows.len() - 1], all_rows[..rows.len() - 1]);
+        // The crossing interpolated linearly between the whole run's rows 0.1 s apart: its
+        // error is ψ̈h²/8 over ψ̇, with ψ̇ = r near 0.0095 rad/s and ṙ near −3.6e-6 rad/s² at
+        // ψ = 2.5 in this turn, 5e-7 s; the located time is on the same RK4 solution.
+        let (a, b) = (&all_rows[first - 1], &all_rows[first]);
+        let crossing = a.t + (2.5 - a.state[5]) / (b.state[5] - a.state[5]) * (b.t - a.t);
+        assert!(
+            (last.t - crossing).abs() < 1e-6,
+            "stopped at {} against {crossing}",
+            last.t
+        );
+        // Read before the stop: the whole run's figures exactly; read after it or at the end:
+        // not given, and the note says where the run stopped and what it did not give.
+        for key in ["advance_90_m", "transfer_90_m", "t_90_s"] {
+            assert_eq!(cut.figures.get(key), all.figures.get(key), "{key}");
+            assert!(cut.figures.get(key).is_some(), "{key}");
+        }
+        let note = &cut.figures.notes[0];
+        assert!(
+            note.starts_with(&format!(
+                "stopped at t = {:.1} s where `psi > 2.5` first held",
+                last.t
+            )),
+            "{note}"
+        );
+        for key in [
+            "tactical_diameter_m",
+            "steady_turning_radius_m",
+            "steady_speed_m_s",
+            "t_180_s",
+        ] {
+            assert!(all.figures.get(key).is_some(), "{key}");
+            assert_eq!(cut.figures.get(key), None, "{key}");
+            assert!(note.contains(key), "{key}: {note}");
+        }
+    }
+    assert_eq!(sides_stopped, 1);
+}
+
+/// The scene's run says the condition once and where each side stopped (`null` where it did
+/// not), and the shared figures carry the note.
+#[test]
+fn a_ships_summary_says_its_stop_condition_and_where_each_side_stopped() {
+    use eom::kinds::ship::run::run_scene;
+    use eom::run::record::Discard;
+    let scene = mariner_turn(Some("psi > 2.5")).unwrap();
+    let finished = run_scene(&scene, "turn", &mut Discard).unwrap();
+    let summary = &finished.summary;
+    assert_eq!(summary.section.stop_when.as_deref(), Some("psi > 2.5"));
+    let turn = &summary.section.manoeuvre.runs["turn"];
+    let sides = turn.sides.as_ref().unwrap();
+    let at = |side: &str| sides[side].stopped_at.unwrap();
+    let (port, starboard) = (at("port"), at("starboard"));
+    assert!(
+        port.is_none() != starboard.is_none(),
+        "{port:?} {starboard:?}"
+    );
+    let json = serde_json::to_value(summary).unwrap();
+    assert_eq!(json["stop_when"], "psi > 2.5");
+    for (side, at) in [("port", port), ("starboard", starboard)] {
+        let written = &json["manoeuvre"]["turn"]["sides"][side]["stopped_at"];
+        assert_eq!(written.as_f64(), at, "{side}");
+        let figures = (summary.runs.iter())
+            .find(|r| r.run == format!("turn/{side}"))
+            .unwrap();
+        let noted = figures
+            .notes
+            .iter()
+            .any(|n| n.contains("`psi > 2.5` first held"));
+        assert_eq!(noted, at.is_some(), "{side}: {:?}", figures.notes);
+    }
+    // Without the condition, neither key is written.
+    let whole = mariner_turn(None).unwrap();
+    let whole = run_scene(&whole, "turn", &mut Discard).unwrap();
+    let json = serde_json::to_value(&whole.summary).unwrap();
+    assert!(json.get("stop_when").is_none());
+    assert!(
+        json["manoeuvre"]["turn"]["sides"]["port"]
+            .get("stopped_at")
+            .is_none()
+    );
+}
+
+/// A stop condition is read against a manoeuvre's row, and refused naming the key where it
+/// names something else, holds on the approach or is not a comparison.
+#[test]
+fn a_ships_bad_stop_condition_is_refused_naming_the_key() {
+    let cases = [
+        (
+            "speed < 1",
+            "unknown name `speed`; one of t, u, v, r, x, y, psi, delta, command, distance",
+        ),
+        (
+            "u > 7",
+            "`u > 7` holds at the start (7.7175), so the run would end before it begins",
+        ),
+        ("u = 1", "no comparison in `u = 1`"),
+        ("u < one", "`one` is not a number"),
+    ];
+    for (stop, expected) in cases {
+        let error = mariner_turn(Some(stop)).unwrap_err();
+        assert!(error.contains("integrator.stop_when"), "{stop}: {error}");
+        assert!(error.contains(expected), "{stop}: {error}");
+    }
 }

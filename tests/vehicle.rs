@@ -894,7 +894,10 @@ fn a_turning_circle_s_figures_are_read_at_its_events_and_once_it_has_settled() {
         "{tactical} against {steady}"
     );
     assert!(figures.advance_m.unwrap() > 0.5 * tactical);
-    assert!(figures.depth_change_m.abs() < 0.1, "the depth is held");
+    assert!(
+        figures.depth_change_m.is_some_and(|z| z.abs() < 0.1),
+        "the depth is held"
+    );
     // Half the step: the figures move by the integrator's error (below 1e-6 m and °).
     let refined = manoeuvre::run(
         &scene.model,
@@ -1276,4 +1279,162 @@ fn a_vertical_zigzag_switches_about_the_trim_s_pitch() {
         }
     }
     assert!(switches >= 4, "{switches}");
+}
+
+/// REMUS with its turning circle alone (10° of rudder from 5 s, its depth held), its rows every
+/// 0.01 s, and `integrator.stop_when = stop` where it is given.
+fn remus_turn(stop: Option<&str>) -> Result<VehicleScene, String> {
+    let text = scene_text();
+    let mut text =
+        text[..text.find("[[manoeuvre]]").unwrap()].replace("every = 0.1", "every = 0.01");
+    if let Some(stop) = stop {
+        text = text.replace(
+            "[integrator]\n",
+            &format!("[integrator]\nstop_when = \"{stop}\"\n"),
+        );
+    }
+    text.push_str(
+        "[[manoeuvre]]\nname = \"turn\"\nkind = \"turning_circle\"\ntimes_s = [5.0]\n\
+         rudder_deg = [10.0]\ndepth_m = [0.0]\nduration_s = 150.0\n",
+    );
+    parse(&text)
+}
+
+/// Runs a scene's one manoeuvre to its end or to the scene's stop condition: its rows (t, then
+/// the trajectory's columns) and the run.
+fn run_rows(scene: &VehicleScene) -> (Vec<(f64, [f64; 20])>, VehicleRun) {
+    let m = &scene.manoeuvres[0];
+    let mut rows = Vec::new();
+    let done = manoeuvre::run_until(
+        &scene.model,
+        &scene.fins,
+        m,
+        (m.trim.state, scene.stop.as_ref()),
+        (&scene.stepper, scene.every),
+        |s| {
+            rows.push((s.t, s.row()));
+            true
+        },
+    )
+    .unwrap();
+    (rows, done)
+}
+
+/// `integrator.stop_when` on the heading ends REMUS's turning circle where ψ first passes 2.5
+/// rad (143°, after the 90° event and before the 180° one): the rows are the whole run's up to
+/// there, the last where the condition first holds; the advance and transfer, read at 90°, and
+/// the step before the execute are the whole run's; the tactical diameter and every figure
+/// read at the end are not given, the step the stop cut short neither, and a note says so.
+#[test]
+fn a_stop_condition_ends_a_vehicles_turn_where_it_first_holds() {
+    use eom::kinds::vehicle::summary::trial_figures;
+    use eom::kinds::vehicle::trial::TrialFigures;
+    let whole = remus_turn(None).unwrap();
+    let (all_rows, all) = run_rows(&whole);
+    // ψ is column 19 of a row after t; the turn's side decides the condition's sign.
+    let sign = all_rows.iter().map(|(_, r)| r[19]).sum::<f64>().signum();
+    let stop = if sign > 0.0 {
+        "psi > 2.5"
+    } else {
+        "psi < -2.5"
+    };
+    let holds = |psi: f64| sign * psi > 2.5;
+    let stopped = remus_turn(Some(stop)).unwrap();
+    let (rows, cut) = run_rows(&stopped);
+    let (last, before) = (&rows[rows.len() - 1], &rows[rows.len() - 2]);
+    assert_eq!((all.stopped_at, cut.stopped_at), (None, Some(last.0)));
+    assert!(holds(last.1[19]) && !holds(before.1[19]), "{stop}");
+    assert_eq!(rows[..rows.len() - 1], all_rows[..rows.len() - 1]);
+    // The crossing interpolated between the whole run's rows 0.01 s apart: ψ̈h²/8 over ψ̇ (ψ̈
+    // below 1e-2 rad/s², ψ̇ near 0.2 rad/s at ψ = ±2.5 in this turn) is below 1e-6 s; the
+    // located time is on the same RK4 solution.
+    let first = all_rows.iter().position(|(_, r)| holds(r[19])).unwrap();
+    let ((ta, a), (tb, b)) = (&all_rows[first - 1], &all_rows[first]);
+    let crossing = ta + (sign * 2.5 - a[19]) / (b[19] - a[19]) * (tb - ta);
+    assert!(
+        (last.0 - crossing).abs() < 1e-6,
+        "stopped at {} against {crossing}",
+        last.0
+    );
+    // The step before the execute ended at 5 s, before the stop: the whole run's exactly; the
+    // turn's step did not end.
+    let (steps, all_steps) = (StepFigures::of(&cut), StepFigures::of(&all));
+    assert_eq!((steps.len(), all_steps.len()), (1, 2));
+    assert_eq!(largest_difference(&steps, &all_steps[..1]), 0.0);
+    let m = &whole.manoeuvres[0];
+    let (Some(TrialFigures::TurningCircle(f)), Some(TrialFigures::TurningCircle(g))) =
+        (trial_figures(&cut, m), trial_figures(&all, m))
+    else {
+        panic!("a turning circle's figures");
+    };
+    assert!(f.advance_m.is_some() && f.transfer_m.is_some());
+    assert_eq!((f.advance_m, f.transfer_m), (g.advance_m, g.transfer_m));
+    let at_end = [
+        f.tactical_diameter_m,
+        f.steady_diameter_m,
+        f.speed_m_s,
+        f.heading_rate_deg_s,
+        f.roll_deg,
+        f.pitch_deg,
+        f.depth_change_m,
+    ];
+    assert_eq!(at_end, [None; 7]);
+    assert!(g.tactical_diameter_m.is_some() && g.speed_m_s.is_some());
+    let why = f.not_steady_because.unwrap();
+    assert!(why.contains("integrator.stop_when"), "{why}");
+}
+
+/// The scene's run says the condition and where the manoeuvre stopped, every digit, and its
+/// note (in summary.json and in the shared figures) names what the stop left out.
+#[test]
+fn a_vehicles_summary_says_where_the_stop_condition_ended_a_manoeuvre() {
+    use eom::kinds::vehicle::run::run_scene;
+    use eom::run::record::Discard;
+    let scene = remus_turn(Some("t > 60")).unwrap();
+    let finished = run_scene(&scene, "turn", &mut Discard).unwrap();
+    let summary = &finished.summary;
+    let turn = &summary.section.manoeuvre["turn"];
+    // The first time above 60 s, located to adjacent doubles or at an autopilot's sample
+    // k·T_s, whose product rounds a few ulps of 60 away from it.
+    let at = turn.stopped_at.flatten().unwrap();
+    assert!(at > 60.0 && at - 60.0 < 1e-12, "{at}");
+    let json = serde_json::to_value(summary).unwrap();
+    assert_eq!(json["stop_when"], "t > 60");
+    assert_eq!(json["manoeuvre"]["turn"]["stopped_at"], at);
+    let note = &turn.notes[0];
+    for expected in [
+        "stopped at t = 60.0 s where `t > 60` first held",
+        "before: the step of the commands from 5 s ended",
+        "the turning circle gave steady_diameter_m, speed_m_s",
+    ] {
+        assert!(note.contains(expected), "{expected}: {note}");
+    }
+    // The tactical diameter was read at 180°, before the stop.
+    assert!(!note.contains("tactical_diameter_m"), "{note}");
+    assert!(json["manoeuvre"]["turn"]["trial"]["tactical_diameter_m"].is_number());
+    assert_eq!(summary.runs[0].notes, turn.notes);
+    assert!(json["manoeuvre"]["turn"]["trial"]["speed_m_s"].is_null());
+}
+
+/// A stop condition is read against a vehicle's row, and refused naming the key where it names
+/// something else, holds where a manoeuvre starts or is not a comparison.
+#[test]
+fn a_vehicles_bad_stop_condition_is_refused_naming_the_key() {
+    let cases = [
+        (
+            "depth > 1",
+            "unknown name `depth`; one of t, u, v, w, p, q, r, x, y, z, q0",
+        ),
+        (
+            "t >= 0",
+            "`t >= 0` holds at the start of manoeuvre `turn` (0), so the run would end before \
+             it begins",
+        ),
+        ("z >", "`` is not one number"),
+    ];
+    for (stop, expected) in cases {
+        let error = remus_turn(Some(stop)).unwrap_err();
+        assert!(error.contains("integrator.stop_when"), "{stop}: {error}");
+        assert!(error.contains(expected), "{stop}: {error}");
+    }
 }

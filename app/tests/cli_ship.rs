@@ -653,3 +653,80 @@ fn the_ship_template_runs_as_printed_and_gives_its_figures() {
         assert!(line.contains(&format!("on {name}")), "{line}");
     }
 }
+
+/// `integrator.stop_when` through the binary: the Mariner's turn and a zig-zag under `psi >
+/// 2.5`. The turn to starboard stops where its heading passes 2.5 rad (its trajectory's last
+/// row there), the one to port runs to its end (`stopped_at` null), and the zig-zag, whose
+/// heading stays within 20°, is not stopped; summary.json says the condition, each side's
+/// `stopped_at` with every digit, and the note; the stopped side gives no tactical diameter.
+/// A condition on a name the ship's row does not have exits 3 naming the key.
+#[test]
+fn a_stop_condition_ends_a_ships_manoeuvre_and_summary_json_says_where() {
+    let dir = folder("stop_when");
+    let mariner = std::fs::read_to_string(scene_arg("mariner.toml")).unwrap();
+    let approach = &mariner[..mariner.find("[[manoeuvre]]").unwrap()];
+    let scene = |stop: &str| {
+        approach.replace(
+            "[integrator]\n",
+            &format!("[integrator]\nstop_when = \"{stop}\"\n"),
+        ) + "[[manoeuvre]]\nname = \"turn\"\nkind = \"turning_circle\"\nrudder_deg = 35.0\n\
+               duration_s = 1500.0\n\n[[manoeuvre]]\nname = \"zigzag\"\nkind = \"zigzag\"\n\
+               rudder_deg = 20.0\nheading_deg = 20.0\nduration_s = 300.0\n"
+    };
+    let path = dir.join("stop.toml");
+    std::fs::write(&path, scene("psi > 2.5")).unwrap();
+    let out = dir.join("out");
+    let stdout = succeeded(&eom(&[
+        "run",
+        path.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]));
+    assert!(stdout.contains("where `psi > 2.5` first held"), "{stdout}");
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(summary["stop_when"], "psi > 2.5");
+    let sides = &summary["manoeuvre"]["turn"]["sides"];
+    let (port, starboard) = (&sides["port"], &sides["starboard"]);
+    assert!(port["stopped_at"].is_null(), "{port}");
+    assert!(port["tactical_diameter_m"].as_f64().is_some(), "{port}");
+    let at = starboard["stopped_at"].as_f64().unwrap();
+    assert!(starboard["tactical_diameter_m"].is_null(), "{starboard}");
+    assert!(starboard["advance_90_m"].as_f64().is_some(), "{starboard}");
+    let note = starboard["notes"][0].as_str().unwrap();
+    assert!(
+        note.contains("before the run gave tactical_diameter_m"),
+        "{note}"
+    );
+    let zigzag = &summary["manoeuvre"]["zigzag"];
+    for side in ["port", "starboard"] {
+        let run = &zigzag["sides"][side];
+        assert!(
+            run["stopped_at"].is_null() && run.get("stopped_at").is_some(),
+            "{run}"
+        );
+    }
+    // The stopped side's trajectory ends at the stop, every digit of it as written there.
+    let csv = std::fs::read_to_string(out.join("turn/starboard/trajectory.csv")).unwrap();
+    let last: Vec<f64> = (csv.lines().last().unwrap().split(','))
+        .map(|x| x.parse().unwrap())
+        .collect();
+    let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+    let psi = header.iter().position(|c| *c == "psi[rad]").unwrap();
+    assert_eq!(last[0], at);
+    assert!(last[psi] > 2.5, "ψ = {} at the last row", last[psi]);
+
+    std::fs::write(&path, scene("heading > 1")).unwrap();
+    let output = eom(&[
+        "run",
+        path.to_str().unwrap(),
+        "--out",
+        dir.join("refused").to_str().unwrap(),
+    ]);
+    assert_eq!(output.status.code(), Some(3));
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains("integrator.stop_when") && stderr.contains("unknown name `heading`"),
+        "{stderr}"
+    );
+}

@@ -18,7 +18,9 @@
 //! `reason`, `operations`), its energy drift, final state and measured figures (the
 //! pendulum's `period_s`, with `half_step_difference` or `tolerance_difference`), its
 //! `stop_when` and `stopped_at`; a ship's `model`, `linear` and `manoeuvre` (each manoeuvre's
-//! figures and the IMO criteria); a vehicle's `model`, `kirchhoff`, `cruise` and `manoeuvre`.
+//! figures and the IMO criteria); a vehicle's `model`, `kirchhoff`, `cruise` and `manoeuvre`;
+//! with a stop condition, a ship's and a vehicle's `stop_when` and each manoeuvre's
+//! `stopped_at`.
 //! [`Summary::runs`] and [`Summary::verdicts`] give the same figures and verdicts in one shape
 //! for every kind, for a library user (a sweep, a Monte Carlo) who should not parse each
 //! kind's section; the file gives them once, in the section.

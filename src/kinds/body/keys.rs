@@ -717,19 +717,7 @@ pub static KEYS: &[Key] = &[
         example: "1.0",
         ..Key::BLANK
     },
-    Key {
-        path: "integrator.stop_when",
-        families: ALL,
-        kind: Kind::Text(Choices::Free),
-        default: "none: the run ends at end_time",
-        description: "A condition that ends the run where it first holds: t or a state name, \
-                      then <, >, <= or >=, then a number (`z > 10`: the ground). The crossing \
-                      is found on the step to adjacent doubles; summary.json says stop_when and \
-                      stopped_at.",
-        example: "\"t > 1e9\"",
-        shown: Shown::Commented,
-        ..Key::BLANK
-    },
+    Key::shared("integrator.stop_when", ALL, "\"t > 1e9\"", Shown::Commented),
     Key::shared("integrator.max_steps", ALL, "1_000_000", Shown::Set),
     // [output]
     Key {

@@ -325,6 +325,7 @@ pub const KEYS: &[Key] = &[
     Key::shared("integrator.rtol", SHIP, "1e-9", Shown::Commented),
     Key::shared("integrator.atol", SHIP, "1e-9", Shown::Commented),
     Key::shared("integrator.max_steps", SHIP, "1_000_000", Shown::Commented),
+    Key::shared("integrator.stop_when", SHIP, "\"u < 1\"", Shown::Commented),
     // [[manoeuvre]]: at least one; each kind reads its own keys and refuses the others.
     Key {
         path: "manoeuvre[].name",

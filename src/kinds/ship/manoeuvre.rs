@@ -21,6 +21,13 @@
 //! engine's rate limit from the execute ([`RateCommand`]: the instants where n passes zero and
 //! reaches full astern are the schedule's), the rudder amidships, until the event where the
 //! ship stops (u = 0).
+//!
+//! A scene's stop condition (`integrator.stop_when`, on a row's names: `u < 1`, `t > 200`)
+//! ends each run where it first holds, located as an event is. A figure the run had not read
+//! by then is not given, and a note says where the run stopped and what it had not read: a
+//! figure read where an event fell before the stop is the unstopped run's, while one read at
+//! the end of the run (a steady turn, a pull-out's final yaw rate) would be read at the stop
+//! instead, and is not given either.
 
 use super::ShipError;
 use super::model::ShipModel;
@@ -33,6 +40,7 @@ use crate::integrate::{IntegrateError, OdeSystem, Stepper};
 use crate::manoeuvring::course::Course;
 use crate::manoeuvring::steering::{Rudder, Series};
 use crate::models::{Driven, Loads, Model};
+use crate::scene::stop::StopCondition;
 use nalgebra::SVector;
 use std::f64::consts::PI;
 
@@ -334,6 +342,8 @@ pub struct ManoeuvreRun {
     pub figures: Figures,
     /// Steps taken.
     pub steps: u64,
+    /// Where the stop condition ended the run, s; `None` where it did not.
+    pub stopped_at: Option<f64>,
 }
 
 /// The record the driver keeps of a manoeuvre's events.
@@ -349,6 +359,9 @@ struct Log {
     course: Option<Course>,
 }
 
+/// The key that names the stop condition, for the notes.
+const STOP_KEY: &str = "integrator.stop_when";
+
 /// The names of a [`DriveState`]'s entries, for messages.
 const DRIVE_STATE: [&str; 8] = ["u", "v", "r", "X", "Y", "psi", "delta", "distance"];
 
@@ -360,6 +373,21 @@ pub fn run(
     rudder: &Rudder,
     manoeuvre: &Manoeuvre,
     start: [f64; 7],
+    (stepper, every): (&Stepper, f64),
+    observe: impl FnMut(&Sample) -> bool,
+) -> Result<ManoeuvreRun, ShipError> {
+    let settings = (stepper, every);
+    run_until(model, rudder, manoeuvre, (start, None), settings, observe)
+}
+
+/// [`run`], ended where `stop` first holds on a row (t and [`ROW`]'s names), if it is given:
+/// the last row is there, [`ManoeuvreRun::stopped_at`] says when, and the figures the run had
+/// not read by then are not given (a note says so).
+pub fn run_until(
+    model: &ShipModel,
+    rudder: &Rudder,
+    manoeuvre: &Manoeuvre,
+    (start, stop): ([f64; 7], Option<&StopCondition>),
     (stepper, every): (&Stepper, f64),
     observe: impl FnMut(&Sample) -> bool,
 ) -> Result<ManoeuvreRun, ShipError> {
@@ -394,13 +422,22 @@ pub fn run(
         start: y,
         times: Vec::new(),
         pending: None,
+        stop,
+        stopped: None,
     };
     driver.times = driver.command_times();
     let (reached, stats) = problem::solve(&mut driver, (stepper, every), observe);
     let end = reached.map_err(|error| run_error(error, stepper))?;
+    if end.stopped {
+        // The course ends where the run does, as it does at the end of a whole run.
+        driver.catch_up(end.t);
+        driver.record(end.t, &end.state);
+        driver.stopped = Some(end.t);
+    }
     Ok(ManoeuvreRun {
         figures: driver.figures((end.t, &end.state)),
         steps: stats.steps as u64,
+        stopped_at: driver.stopped,
     })
 }
 
@@ -443,6 +480,15 @@ impl<'a> Problem<8> for Driver<'a> {
             Watch::RateLimit => (system.driven.loads().rate_margin(t, y[2], y[6])).unwrap_or(0.0),
             other => other.g(y, self.heading0(), self.heading_a()),
         }
+    }
+
+    fn has_stop(&self) -> bool {
+        self.stop.is_some()
+    }
+
+    /// The scene's condition on the row at `(t, y)`, as trajectory.csv writes it.
+    fn stop_holds(&self, t: f64, y: &DriveState) -> bool {
+        (self.stop).is_some_and(|stop| stop.holds(t, &self.sample(t, y).row()))
     }
 
     fn accepted(&mut self, t: f64, y: &DriveState) -> bool {
@@ -535,6 +581,10 @@ struct Driver<'a> {
     /// The last accepted step, not yet recorded: the steps past where a stretch ends are
     /// its trial, not the ship's course.
     pending: Option<(f64, DriveState)>,
+    /// The scene's stop condition, if it has one.
+    stop: Option<&'a StopCondition>,
+    /// Where it ended the run, s.
+    stopped: Option<f64>,
 }
 
 impl<'a> Driver<'a> {
@@ -761,10 +811,10 @@ impl<'a> Driver<'a> {
 
     fn figures(&self, (t, end): (f64, &DriveState)) -> Figures {
         let Some(execute) = self.log.execute else {
-            return Figures {
+            return self.with_stop_note(Figures {
                 notes: vec!["the run ended before the execute".into()],
                 ..Figures::default()
-            };
+            });
         };
         let course = self.log.course.clone().unwrap_or_default();
         let mut figures = match self.manoeuvre.kind {
@@ -774,7 +824,9 @@ impl<'a> Driver<'a> {
             }
             ManoeuvreKind::PullOut { release, .. } => {
                 let at_release = self.log.release.as_ref().map(|y| (release, y));
-                pull_out_figures(release, at_release, (t, end), &course)
+                // The final yaw rate is the run's end's, which a stopped run did not reach.
+                let at_end = self.stopped.is_none().then_some((t, end));
+                pull_out_figures(release, (at_release, at_end), &course)
             }
             ManoeuvreKind::Series(_) => Figures::default(),
             ManoeuvreKind::Spiral(Spiral { settle, length, .. })
@@ -783,9 +835,32 @@ impl<'a> Driver<'a> {
             }
             // Read where the ship stops, which is what the course's conditions rule out
             // elsewhere.
-            ManoeuvreKind::CrashStop { .. } => return self.crash_stop_figures(&execute, end),
+            ManoeuvreKind::CrashStop { .. } => {
+                return self.with_stop_note(self.crash_stop_figures(&execute, end));
+            }
         };
         figures.notes.extend(course.notes());
+        self.with_stop_note(figures)
+    }
+
+    /// `figures` with, first among its notes, where the stop condition ended the run and
+    /// which figures it had not given by then, if it did.
+    fn with_stop_note(&self, mut figures: Figures) -> Figures {
+        let (Some(t), Some(stop)) = (self.stopped, self.stop) else {
+            return figures;
+        };
+        let absent: Vec<&str> = (figures.values.iter())
+            .filter(|(_, value)| value.is_none())
+            .map(|(key, _)| *key)
+            .collect();
+        let what = match (absent.is_empty(), self.log.execute.is_some()) {
+            (_, false) => "before the execute".to_owned(),
+            (true, true) => "after every figure had been read".to_owned(),
+            (false, true) => format!("before the run gave {}", absent.join(", ")),
+        };
+        let note =
+            format!("stopped at t = {t:.1} s where `{stop}` first held ({STOP_KEY}), {what}");
+        figures.notes.insert(0, note);
         figures
     }
 
@@ -804,12 +879,16 @@ impl<'a> Driver<'a> {
             .map_or_else(Vec::new, |p| p.points.clone());
         let measured = points.len();
         points.retain(|p| course.broken_by(p.at).is_none());
-        let incomplete = match (points.len() < measured, self.spiral_done()) {
-            (true, _) => course
+        let incomplete = match (points.len() < measured, self.spiral_done(), self.stopped) {
+            (true, _, _) => course
                 .broken_by(f64::INFINITY)
                 .map(|why| format!("{why}: no point taken from then on is given")),
-            (false, true) => None,
-            (false, false) => Some(
+            (false, true, _) => None,
+            (false, false, Some(t)) => Some(format!(
+                "the run was stopped at t = {t:.1} s ({STOP_KEY}) before every setpoint was \
+                 measured"
+            )),
+            (false, false, None) => Some(
                 "the run ended before every setpoint was measured: lengthen duration_s or \
                  max_hold_s"
                     .to_owned(),
@@ -851,6 +930,8 @@ impl<'a> Driver<'a> {
                 let label = format!("stopped: head reach {head:.1} m, lateral {lateral:.1} m");
                 marks.push((label, [y[3], y[4]]));
             }
+            // A run the stop condition ended says so once, in the note of every figure.
+            None if self.stopped.is_some() => {}
             // What it was doing then says whether a longer run would stop it: still slowing
             // down, or settled into a turn ahead.
             None => notes.push(format!(
@@ -915,7 +996,11 @@ impl<'a> Driver<'a> {
         };
         let at_90 = holding(PI / 2.0, "advance and transfer");
         let at_180 = holding(PI, "the tactical diameter");
-        let steady = course.steady().map_err(|why| notes.push(why)).ok();
+        // The steady turn is read at the end of the run, which a stopped run did not reach.
+        let steady = match self.stopped {
+            Some(_) => None,
+            None => course.steady().map_err(|why| notes.push(why)).ok(),
+        };
         let mut marks = vec![("execute".to_owned(), [execute[3], execute[4]])];
         if let Some((_, y)) = at_90 {
             let (advance, transfer) = offset(&y);
@@ -987,7 +1072,7 @@ impl<'a> Driver<'a> {
         };
         let t_exec = self.manoeuvre.execute;
         let mut notes = Vec::new();
-        if switches.len() < 3 {
+        if switches.len() < 3 && self.stopped.is_none() {
             let reversals = crate::counted(switches.len(), "reversal", "reversals");
             notes.push(format!(
                 "{reversals} by the end: the period needs three; lengthen duration_s"
@@ -1012,14 +1097,17 @@ impl<'a> Driver<'a> {
     }
 }
 
+/// An instant of a run: its time and state.
+type Instant<'a> = (f64, &'a DriveState);
+
 /// A pull-out released at `release` (s): the yaw rate when the rudder is released,
-/// `at_release` (t, state), and at the end (t, state); a course-stable ship's dies out, an
-/// unstable one's settles to a residual turn. Neither is read after the ship went astern or
-/// stopped ([`Course::broken_by`]).
+/// `at_release` (t, state), and at the end, `at_end` (t, state; `None` where the run was
+/// stopped before it); a course-stable ship's dies out, an unstable one's settles to a
+/// residual turn. Neither is read after the ship went astern or stopped
+/// ([`Course::broken_by`]).
 fn pull_out_figures(
     release: f64,
-    at_release: Option<(f64, &DriveState)>,
-    (end, last): (f64, &DriveState),
+    (at_release, at_end): (Option<Instant<'_>>, Option<Instant<'_>>),
     course: &Course,
 ) -> Figures {
     let mut notes = Vec::new();
@@ -1031,7 +1119,7 @@ fn pull_out_figures(
         None => Some(y[2].to_degrees()),
     };
     let at_release = at_release.and_then(|at| read(at, "the yaw rate at the release"));
-    let at_end = read((end, last), "the final yaw rate");
+    let at_end = at_end.and_then(|at| read(at, "the final yaw rate"));
     Figures {
         values: vec![
             ("release_s", Some(release)),

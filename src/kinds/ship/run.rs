@@ -8,7 +8,7 @@ use super::ShipError;
 use super::Side;
 use super::imo::{Criterion, Trial, criteria, possible};
 use super::linear::LinearModel;
-use super::manoeuvre::{Figures, ManoeuvreKind, ROW, run};
+use super::manoeuvre::{Figures, ManoeuvreKind, ROW, run_until};
 use super::scene::NAMED_FROM;
 use super::side::{deciding_figure, worse};
 use super::spiral::{Branch, Loop, SpiralCurve, SpiralPoint, Verdict};
@@ -38,6 +38,8 @@ pub struct Outcome {
     pub refined: Figures,
     /// The steps the run took.
     pub steps: u64,
+    /// Where the scene's stop condition ended the run with the scene's method, s.
+    pub stopped_at: Option<f64>,
 }
 
 /// A manoeuvre's runs: one per side (`turning_circle_35/port/`, `…/starboard/`), or one of no
@@ -192,6 +194,7 @@ pub fn run_scene<'a>(
                 let mut summary =
                     ManoeuvreSummary::new(manoeuvre, &scene.stepper, figures, outcome.steps);
                 summary.side = side.map(Side::name).or(summary.side);
+                summary.stopped_at = scene.stop.as_ref().map(|_| outcome.stopped_at);
                 summary
             };
             let summary = match (worse_side(manoeuvre, runs), runs.as_slice()) {
@@ -215,6 +218,7 @@ pub fn run_scene<'a>(
             runs,
             imo: judged.iter().map(CriterionSummary::new).collect(),
         },
+        stop_when: scene.stop.as_ref().map(|stop| stop.text.clone()),
     };
     let summary = Summary {
         kind: super::KIND.name,
@@ -356,38 +360,28 @@ fn run_manoeuvre(
     };
     recorder.begin(start).map_err(not_recorded)?;
     let settings = (&scene.stepper, scene.every);
-    let done = run(
-        model,
-        &scene.rudder,
-        manoeuvre,
-        scene.start(),
-        settings,
-        |sample| {
-            let row = Row {
-                t: sample.t,
-                state: &sample.row(),
-                kinetic_energy: model.kinetic_energy(&sample.model_state()),
-                potential_energy: None,
-            };
-            recorder.row(&row)
-        },
-    );
+    let start = (scene.start(), scene.stop.as_ref());
+    let done = run_until(model, &scene.rudder, manoeuvre, start, settings, |sample| {
+        let row = Row {
+            t: sample.t,
+            state: &sample.row(),
+            kinetic_energy: model.kinetic_energy(&sample.model_state()),
+            potential_energy: None,
+        };
+        recorder.row(&row)
+    });
     // What the recorder could not keep comes first: the run stopped because of it.
     recorder.end().map_err(not_recorded)?;
     let done = done?;
     let refined = (&scene.stepper.refined(scene.every), scene.every);
-    let refined = run(
-        model,
-        &scene.rudder,
-        manoeuvre,
-        scene.start(),
-        refined,
-        |_| !recorder.stop_asked(),
-    )?;
+    let refined = run_until(model, &scene.rudder, manoeuvre, start, refined, |_| {
+        !recorder.stop_asked()
+    })?;
     Ok(Outcome {
         figures: done.figures,
         refined: refined.figures,
         steps: done.steps,
+        stopped_at: done.stopped_at,
     })
 }
 

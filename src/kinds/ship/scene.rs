@@ -44,6 +44,7 @@
 //! [integrator]
 //! method = "rk4"               # any method but lie-midpoint; events located on its solution
 //! step = 0.1                   # s
+//! # stop_when = "u < 1"        # ends each manoeuvre where it first holds (t, a row's names)
 //!
 //! [[manoeuvre]]
 //! kind = "turning_circle"      # turning_circle, zigzag, pull_out, rudder_series, spiral, …
@@ -88,6 +89,7 @@ use crate::integrate::Stepper;
 use crate::manoeuvring::steering::{Rudder, Series};
 use crate::scene::check::Checker;
 use crate::scene::envelope::{FamilyTable, IntegratorTable, OutputTable, SteeringGearTable};
+use crate::scene::stop::StopCondition;
 use crate::scene::{Problem, SceneError};
 use serde::Deserialize;
 use std::collections::BTreeMap;
@@ -353,6 +355,9 @@ pub struct ShipScene {
     pub manoeuvres: Vec<Manoeuvre>,
     /// The operating point of `eom linear` (`[linear]`), by default the approach.
     pub linear: crate::linear::LinearSpec,
+    /// `integrator.stop_when`: the condition on a manoeuvre's row (t and
+    /// [`ROW`](super::manoeuvre::ROW)'s names) that ends each run where it first holds.
+    pub stop: Option<StopCondition>,
 }
 
 /// A ship's own tables, checked by the checker of every scene ([`Checker`]: its errors, its
@@ -993,6 +998,11 @@ impl ShipScene {
         // u, v, r: symplectic Euler kicks the velocities first.
         let (stepper, every) =
             check.stepping((&file.integrator, &file.output), longest, ("a ship", 0..3))?;
+        // Every manoeuvre starts from the approach, its rudder and command amidships, midship
+        // at the origin, no distance run.
+        let approach = ShipScene::approach_row(table.design_speed);
+        let starts = [(String::new(), approach)];
+        let stop = check.stop_when(&file.integrator, &super::manoeuvre::ROW, starts)?;
         let state = &super::model::STATE;
         let linear = check.linear(
             file.linear.as_ref(),
@@ -1008,7 +1018,14 @@ impl ShipScene {
             every,
             manoeuvres,
             linear,
+            stop,
         })
+    }
+
+    /// The row (in [`ROW`](super::manoeuvre::ROW)'s order) of the approach at `speed`, where
+    /// every manoeuvre starts.
+    fn approach_row(speed: f64) -> [f64; 9] {
+        [speed, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]
     }
 
     /// The approach: straight ahead at U₀, at the origin, heading north, rudder amidships.

@@ -31,6 +31,9 @@ pub struct ShipSection {
     pub linear: LinearSummary,
     /// Each manoeuvre's figures by its name, and the IMO criteria under `imo`.
     pub manoeuvre: Manoeuvres,
+    /// `integrator.stop_when` as the scene wrote it, where it has one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub stop_when: Option<String>,
 }
 
 /// The model: 4.46 with the table's terms.
@@ -158,6 +161,10 @@ pub struct ManoeuvreSummary {
     pub steps: u64,
     /// What the run could not measure, and why.
     pub notes: Vec<String>,
+    /// With `integrator.stop_when`: where it ended the run, s, every digit (`null` where it
+    /// never held); absent without one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub stopped_at: Option<Option<f64>>,
 }
 
 /// A spiral's curve as measured, what it says, and the steady turns it measures.
@@ -555,6 +562,7 @@ impl ManoeuvreSummary {
             tolerance_difference: adaptive.then_some(differences),
             steps,
             notes: figures.notes.clone(),
+            stopped_at: None,
         }
     }
 }

@@ -544,6 +544,12 @@ pub const KEYS: &[Key] = &[
         "1_000_000",
         Shown::Commented,
     ),
+    Key::shared(
+        "integrator.stop_when",
+        VEHICLE,
+        "\"z > 20\"",
+        Shown::Commented,
+    ),
     Key {
         path: "manoeuvre[].name",
         families: VEHICLE,

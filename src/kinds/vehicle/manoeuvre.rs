@@ -8,6 +8,11 @@
 //! speed, the roll and pitch, the depth reached when it ends) are those of the integrated
 //! solution at that instant, not at the nearest step. The trajectory's rows are at
 //! t = k·every, as every scene's are, and at each change of the commands.
+//!
+//! A scene's stop condition (`integrator.stop_when`, on a row's names: `z > 20`, `t > 30`)
+//! ends the run where it first holds, located as an event is, with its last row there. The
+//! step of the commands it cut short has no end to read its figures at, so the run keeps
+//! only the steps that ended before it ([`VehicleRun::stopped_at`] says where it stopped).
 
 use super::VehicleError;
 use super::autopilot::{Autopilots, Controller, Feedforward, Setpoints};
@@ -18,6 +23,7 @@ use super::trim::{Held, Trim};
 use crate::integrate::problem::{self, Flow, Problem};
 use crate::integrate::{IntegrateError, Stepper};
 use crate::models::{Driven, Model};
+use crate::scene::stop::StopCondition;
 use nalgebra::SVector;
 
 /// One manoeuvre of a scene: the fins' steps, from its trim, and the autopilots with what
@@ -172,6 +178,9 @@ pub struct VehicleRun {
     pub trial: Option<Progress>,
     /// Steps taken.
     pub steps: u64,
+    /// Where the stop condition ended the run, s; `None` where it did not. A stopped run's
+    /// `ends` and `tracked` stop before it: the step it cut short did not end.
+    pub stopped_at: Option<f64>,
 }
 
 /// Runs a manoeuvre from `start` with `stepper`'s method, handing each row (at t = k·`every`
@@ -182,6 +191,33 @@ pub fn run(
     fins: &Fins,
     manoeuvre: &VehicleManoeuvre,
     start: [f64; 15],
+    (stepper, every): (&Stepper, f64),
+    observe: impl FnMut(&Sample) -> bool,
+) -> Result<VehicleRun, VehicleError> {
+    let settings = (stepper, every);
+    run_until(model, fins, manoeuvre, (start, None), settings, observe)
+}
+
+/// The first row of `manoeuvre` from `start`: the state with the fins without a lag at their
+/// first commands, and those commands (the autopilots' first sample).
+pub fn first_row(fins: &Fins, manoeuvre: &VehicleManoeuvre, start: [f64; 15]) -> Sample {
+    let mut y = VehicleState::from(start);
+    let mut command = Command::new(manoeuvre, &start);
+    let steering = command.at(fins, 0.0, &mut y, true);
+    Sample {
+        t: 0.0,
+        state: y.data.0[0],
+        commands: steering.saturated(),
+    }
+}
+
+/// [`run`], ended where `stop` first holds on a row (t and [`ROW`]'s names), if it is given:
+/// the last row is there, and [`VehicleRun::stopped_at`] says when.
+pub fn run_until(
+    model: &VehicleModel,
+    fins: &Fins,
+    manoeuvre: &VehicleManoeuvre,
+    (start, stop): ([f64; 15], Option<&StopCondition>),
     (stepper, every): (&Stepper, f64),
     observe: impl FnMut(&Sample) -> bool,
 ) -> Result<VehicleRun, VehicleError> {
@@ -200,14 +236,16 @@ pub fn run(
         command,
         steering,
         ends: Vec::new(),
+        stop,
     };
     let (reached, stats) = problem::solve(&mut runner, (stepper, every), observe);
-    reached.map_err(|error| run_error(error, stepper))?;
+    let end = reached.map_err(|error| run_error(error, stepper))?;
     Ok(VehicleRun {
         ends: runner.ends,
         tracked: runner.command.tracked,
         trial: runner.command.progress,
         steps: stats.steps as u64,
+        stopped_at: end.stopped.then_some(end.t),
     })
 }
 
@@ -237,6 +275,8 @@ struct Runner<'a> {
     /// The fins' loads as they stand.
     steering: Steering<'a>,
     ends: Vec<StepEnd>,
+    /// The scene's stop condition, if it has one.
+    stop: Option<&'a StopCondition>,
 }
 
 impl Runner<'_> {
@@ -294,6 +334,15 @@ impl<'a> Problem<15> for Runner<'a> {
             }
             Kink::RateLimit(fin) => self.steering.rate_margin(fin, &y.data.0[0]).unwrap_or(0.0),
         }
+    }
+
+    fn has_stop(&self) -> bool {
+        self.stop.is_some()
+    }
+
+    /// The scene's condition on the row at `(t, y)`, as trajectory.csv writes it.
+    fn stop_holds(&self, t: f64, y: &VehicleState) -> bool {
+        (self.stop).is_some_and(|stop| stop.holds(t, &self.sample(t, y).row()))
     }
 
     fn accepted(&mut self, t: f64, y: &VehicleState) -> bool {

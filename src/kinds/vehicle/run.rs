@@ -4,7 +4,7 @@
 //! What is written where, and whether a run may go on, is the recorder's: this module opens no
 //! file.
 
-use super::manoeuvre::{ROW, VehicleManoeuvre, run};
+use super::manoeuvre::{ROW, VehicleManoeuvre, VehicleRun, run_until};
 use super::scene::NAMED_FROM;
 use super::summary::{
     CruiseSummary, KirchhoffRow, ManoeuvreSummary, ModelSummary, SetpointFigures, StepFigures,
@@ -18,6 +18,7 @@ use crate::output::text::printable;
 use crate::output::trajectory::number_text;
 use crate::run::Row;
 use crate::run::record::{RecordError, Recorder, RunStart};
+use crate::scene::stop::StopCondition;
 use crate::scene::sweep::{TableCase, manoeuvre_columns};
 use crate::{Model, Short, counted, fixed};
 use std::collections::BTreeMap;
@@ -97,6 +98,7 @@ pub fn run_scene<'a>(
             kirchhoff: scene.model.folded().iter().map(KirchhoffRow::new).collect(),
             cruise: CruiseSummary::new(scene),
             manoeuvre: manoeuvres,
+            stop_when: scene.stop.as_ref().map(|stop| stop.text.clone()),
         },
     };
     Ok(Finished {
@@ -138,11 +140,12 @@ fn run_manoeuvre(
         .begin(start)
         .map_err(|e| not_recorded(manoeuvre, e))?;
     let model = &scene.model;
-    let done = run(
+    let start = (manoeuvre.trim.state, scene.stop.as_ref());
+    let done = run_until(
         model,
         &scene.fins,
         manoeuvre,
-        manoeuvre.trim.state,
+        start,
         (&scene.stepper, scene.every),
         |sample| {
             let row = Row {
@@ -157,11 +160,11 @@ fn run_manoeuvre(
     // What the recorder could not keep comes first: the run stopped because of it.
     recorder.end().map_err(|e| not_recorded(manoeuvre, e))?;
     let done = done?;
-    let refined = run(
+    let refined = run_until(
         model,
         &scene.fins,
         manoeuvre,
-        manoeuvre.trim.state,
+        start,
         (&scene.stepper.refined(scene.every), scene.every),
         |_| !recorder.stop_asked(),
     )?;
@@ -191,6 +194,7 @@ fn run_manoeuvre(
         })],
     };
     (recorder.drawn(drawings)).map_err(|e| not_recorded(manoeuvre, e))?;
+    let notes = stop_notes(scene.stop.as_ref(), &done, trial.as_ref());
     let summary = ManoeuvreSummary {
         steps: steps.clone(),
         autopilot,
@@ -198,12 +202,66 @@ fn run_manoeuvre(
         refined_difference,
         refinement: scene.stepper.refinement(),
         steps_taken: done.steps,
+        stopped_at: scene.stop.as_ref().map(|_| done.stopped_at),
+        notes,
     };
     Ok(Outcome {
         steps,
         summary,
         marks,
     })
+}
+
+/// Where the stop condition ended `done`, and what it had not read by then: the figures of
+/// the step of the commands it cut short (read at its end), an autopilot's answer to a change
+/// within it, a trial's figures not given; none for a run it did not end.
+fn stop_notes(
+    stop: Option<&StopCondition>,
+    done: &VehicleRun,
+    trial: Option<&TrialFigures>,
+) -> Vec<String> {
+    let (Some(stop), Some(t)) = (stop, done.stopped_at) else {
+        return Vec::new();
+    };
+    let from = done.ends.last().map_or(0.0, |end| end.t);
+    let mut absent = vec![format!(
+        "the step of the commands from {} s ended (its figures are read at its end)",
+        Short(from)
+    )];
+    for (what, at) in SetpointFigures::cut_short(done) {
+        absent.push(format!(
+            "the {what} autopilot's answer to the change at {} s",
+            Short(at)
+        ));
+    }
+    match trial {
+        Some(TrialFigures::TurningCircle(f)) => {
+            let figures = [
+                ("advance_m", f.advance_m),
+                ("transfer_m", f.transfer_m),
+                ("tactical_diameter_m", f.tactical_diameter_m),
+                ("steady_diameter_m", f.steady_diameter_m),
+                ("speed_m_s", f.speed_m_s),
+                ("heading_rate_deg_s", f.heading_rate_deg_s),
+                ("roll_deg", f.roll_deg),
+                ("pitch_deg", f.pitch_deg),
+                ("depth_change_m", f.depth_change_m),
+            ];
+            let keys: Vec<&str> = (figures.iter())
+                .filter(|(_, value)| value.is_none())
+                .map(|(key, _)| *key)
+                .collect();
+            absent.push(format!("the turning circle gave {}", keys.join(", ")));
+        }
+        Some(TrialFigures::ZigZag(_)) => {
+            absent.push("a later switch or overshoot of the zig-zag".to_owned());
+        }
+        None => {}
+    }
+    vec![format!(
+        "stopped at t = {t:.1} s where `{stop}` first held (integrator.stop_when), before: {}",
+        absent.join("; ")
+    )]
 }
 
 impl Finished<'_> {
@@ -291,7 +349,7 @@ fn run_figures(name: &str, summary: &ManoeuvreSummary) -> RunFigures {
         figures,
         refinement: Some(summary.refinement),
         largest_difference: Some(summary.refined_difference),
-        notes: Vec::new(),
+        notes: summary.notes.clone(),
     }
 }
 
@@ -372,6 +430,9 @@ fn report(
         if let Some(trial) = &outcome.summary.trial {
             trial_report(out, trial)?;
         }
+        for note in &outcome.summary.notes {
+            writeln!(out, "    note: {note}")?;
+        }
     }
     if !scene.model.folded().is_empty() {
         writeln!(out, "  the folded table against its added mass:")?;
@@ -415,6 +476,8 @@ fn autopilot_report(out: &mut String, figures: &[SetpointFigures]) -> std::fmt::
 fn trial_report(out: &mut String, trial: &TrialFigures) -> std::fmt::Result {
     let metres =
         |x: Option<f64>| x.map_or_else(|| "—".to_owned(), |x| format!("{} m", fixed(x, 2)));
+    let number =
+        |x: Option<f64>, digits: usize| x.map_or_else(|| "—".to_owned(), |x| fixed(x, digits));
     match trial {
         TrialFigures::TurningCircle(f) => {
             writeln!(
@@ -430,11 +493,11 @@ fn trial_report(out: &mut String, trial: &TrialFigures) -> std::fmt::Result {
             writeln!(
                 out,
                 "      at the end: U = {} m/s, ψ̇ = {} °/s, φ = {}°, θ = {}°, depth change {} m",
-                fixed(f.speed_m_s, 4),
-                fixed(f.heading_rate_deg_s, 4),
-                fixed(f.roll_deg, 3),
-                fixed(f.pitch_deg, 3),
-                fixed(f.depth_change_m, 3)
+                number(f.speed_m_s, 4),
+                number(f.heading_rate_deg_s, 4),
+                number(f.roll_deg, 3),
+                number(f.pitch_deg, 3),
+                number(f.depth_change_m, 3)
             )?;
             if let Some(why) = &f.not_steady_because {
                 writeln!(out, "      no steady figures: {why}")?;

@@ -52,6 +52,7 @@
 //! [integrator]
 //! method = "rk4"
 //! step = 0.01
+//! # stop_when = "z > 20"             # ends each manoeuvre where it first holds (t, a row's names)
 //!
 //! [autopilot]                        # optional: the autopilots, sampled every sample_s
 //! sample_s = 0.1
@@ -92,7 +93,7 @@
 use super::autopilot::{Autopilots, DepthGains, HeadingGains, Setpoints};
 use super::cross_flow::CrossFlow;
 use super::fins::{FinSteps, Fins};
-use super::manoeuvre::VehicleManoeuvre;
+use super::manoeuvre::{ROW, VehicleManoeuvre, first_row};
 use super::model::VehicleModel;
 use super::propeller::PropellerLaw;
 use super::table::{PrimeScales, PropellerSetting, VehicleTable};
@@ -102,6 +103,7 @@ use super::{AddedMassCoriolis, Convention, InertiaAbout, VehicleError};
 use crate::integrate::Stepper;
 use crate::scene::check::Checker;
 use crate::scene::envelope::{FamilyTable, IntegratorTable, OutputTable, SteeringGearTable};
+use crate::scene::stop::StopCondition;
 use crate::scene::{Problem, SceneError};
 use crate::{InertiaTensor, Short, counted};
 use nalgebra::Matrix3;
@@ -342,6 +344,9 @@ pub struct VehicleScene {
     pub linear: crate::linear::LinearSpec,
     /// The steady motion every manoeuvre starts from.
     pub trim: Trim,
+    /// `integrator.stop_when`: the condition on a manoeuvre's row (t and [`ROW`]'s names)
+    /// that ends each run where it first holds.
+    pub stop: Option<StopCondition>,
 }
 
 impl Checker<'_> {
@@ -1189,6 +1194,12 @@ impl VehicleScene {
             longest,
             ("a vehicle", 0..6),
         )?;
+        // Each manoeuvre's first row, from its own trim (made only for a condition to check).
+        let starts = manoeuvres.iter().map(|m| {
+            let row = first_row(&fins, m, m.trim.state).row();
+            (format!(" of manoeuvre `{}`", m.name), row)
+        });
+        let stop = check.stop_when(&file.integrator, &ROW, starts)?;
         let (names, body) = (&super::model::EULER_STATE, super::linear::BODY);
         let linear = check.linear(
             file.linear.as_ref(),
@@ -1205,6 +1216,7 @@ impl VehicleScene {
             manoeuvres,
             linear,
             trim,
+            stop,
         })
     }
 

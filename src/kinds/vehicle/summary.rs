@@ -5,7 +5,7 @@ use super::FoldedComparison;
 use super::VehicleScene;
 use super::autopilot::wrapped;
 use super::manoeuvre::{Tracked, VehicleManoeuvre, VehicleRun, euler_angles};
-use super::trial::TrialFigures;
+use super::trial::{Ended, TrialFigures};
 use serde::Serialize;
 use std::collections::BTreeMap;
 
@@ -21,6 +21,9 @@ pub struct VehicleSection {
     pub cruise: CruiseSummary,
     /// Each manoeuvre by name.
     pub manoeuvre: BTreeMap<String, ManoeuvreSummary>,
+    /// `integrator.stop_when` as the scene wrote it, where it has one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub stop_when: Option<String>,
 }
 
 /// The model: the six equations about O with the table's terms.
@@ -171,8 +174,26 @@ fn sampled(t: f64) -> f64 {
 }
 
 impl SetpointFigures {
-    /// The answer to every change of a setpoint in a run under the autopilots.
+    /// The answer to every change of a setpoint in a run under the autopilots; in a run the
+    /// stop condition ended, not the answer to a change whose step it cut short (its
+    /// settling and steady error are read at the step's end).
     pub fn of(run: &VehicleRun) -> Vec<Self> {
+        (Self::answers(run).into_iter())
+            .filter_map(|(figures, cut)| (!cut).then_some(figures))
+            .collect()
+    }
+
+    /// The changes (what, when) whose step the stop condition cut short, so that their
+    /// answers are not given ([`SetpointFigures::of`]).
+    pub fn cut_short(run: &VehicleRun) -> Vec<(&'static str, f64)> {
+        (Self::answers(run).into_iter())
+            .filter_map(|(figures, cut)| cut.then_some((figures.what, figures.at_s)))
+            .collect()
+    }
+
+    /// Every change's answer as its samples give it, each with whether the stop condition cut
+    /// its step short (its last, in a run it ended).
+    fn answers(run: &VehicleRun) -> Vec<(Self, bool)> {
         let mut figures = Vec::new();
         for what in ["heading", "depth"] {
             let pick = |tracked: &Tracked| match what {
@@ -200,6 +221,7 @@ impl SetpointFigures {
                     0 => None,
                     _ => pick(&tracked[start - 1]).0,
                 };
+                let cut = i == tracked.len() && run.stopped_at.is_some();
                 if let Some(from) = from.filter(|&f| f != to) {
                     let change = error(to, from);
                     let errors: Vec<(f64, f64)> = (tracked[start..i].iter())
@@ -211,7 +233,7 @@ impl SetpointFigures {
                         .rposition(|(_, e)| e.abs() > band)
                         .map_or(Some(0), |k| (k + 1 < errors.len()).then_some(k + 1));
                     let end = i.min(tracked.len() - 1);
-                    figures.push(SetpointFigures {
+                    let answer = SetpointFigures {
                         what,
                         at_s: sampled(tracked[start].t),
                         from,
@@ -224,7 +246,8 @@ impl SetpointFigures {
                             .map(|k| sampled(errors[k].0 - tracked[start].t)),
                         steady_error: errors.last().map_or(0.0, |(_, e)| *e),
                         until_s: sampled(tracked[end].t),
-                    });
+                    };
+                    figures.push((answer, cut));
                 }
                 start = i;
             }
@@ -267,12 +290,16 @@ pub fn degrees(radians: f64) -> f64 {
     best.0 + 0.0
 }
 
-/// A trial's figures from its run, if the manoeuvre is a trial.
+/// A trial's figures from its run, if the manoeuvre is a trial: none read at the end of a run
+/// the stop condition ended.
 pub fn trial_figures(run: &VehicleRun, manoeuvre: &VehicleManoeuvre) -> Option<TrialFigures> {
     let progress = run.trial.as_ref()?;
     let rudder = manoeuvre.steps.angles(progress.execute_time())[0];
-    let end = run.ends.last()?;
-    Some(TrialFigures::of(progress, (rudder, &end.state)))
+    let end = match run.stopped_at {
+        Some(t) => Ended::Stopped(t),
+        None => Ended::AtEnd(&run.ends.last()?.state),
+    };
+    Some(TrialFigures::of(progress, (rudder, end)))
 }
 
 /// The largest difference between two runs' autopilot figures (infinite where they differ in
@@ -305,6 +332,13 @@ pub struct ManoeuvreSummary {
     pub refinement: &'static str,
     /// Steps taken.
     pub steps_taken: u64,
+    /// With `integrator.stop_when`: where it ended the run, s, every digit (`null` where it
+    /// never held); absent without one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub stopped_at: Option<Option<f64>>,
+    /// What the run could not measure, and why (a run the stop condition ended).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub notes: Vec<String>,
 }
 
 impl StepFigures {

@@ -15,6 +15,11 @@
 //! by 540° and over the last 360° the horizontal speed and the heading rate stay within 1 % of
 //! their final values; else the summary says why not. The steady diameter is then
 //! 2 V_h / |ψ̇| at the end, V_h the horizontal speed of O from 4.57.
+//!
+//! A run the scene's stop condition ended ([`Ended::Stopped`]) gives the figures of the events
+//! that fell before the stop, and none of those read at the end of the run (the steady
+//! diameter, the speed, rates and attitude at the end): they are not given, rather than read
+//! at the stop.
 
 use super::autopilot::wrapped;
 use super::manoeuvre::euler_angles;
@@ -300,6 +305,15 @@ fn horizontal_speed_at(state: &[f64; 15], [phi, theta, psi]: [f64; 3]) -> f64 {
     north.hypot(east)
 }
 
+/// Where a run ended, for the figures read there.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Ended<'a> {
+    /// At the end of the manoeuvre, in this state.
+    AtEnd(&'a [f64; 15]),
+    /// Where the scene's stop condition first held, at this time (s): no figure is read there.
+    Stopped(f64),
+}
+
 /// The turning circle's figures.
 #[derive(Debug, Clone, Serialize)]
 pub struct TurningCircleFigures {
@@ -313,16 +327,17 @@ pub struct TurningCircleFigures {
     pub tactical_diameter_m: Option<f64>,
     /// The steady turn's diameter 2 V_h/|ψ̇|, m: given once the turn has settled.
     pub steady_diameter_m: Option<f64>,
-    /// √(u² + v² + w²) at the end, m/s.
-    pub speed_m_s: f64,
+    /// √(u² + v² + w²) at the end, m/s; `None` where the stop condition ended the run (so
+    /// for each figure at the end).
+    pub speed_m_s: Option<f64>,
     /// ψ̇ at the end, degrees per second.
-    pub heading_rate_deg_s: f64,
+    pub heading_rate_deg_s: Option<f64>,
     /// φ and θ at the end, degrees.
-    pub roll_deg: f64,
+    pub roll_deg: Option<f64>,
     /// θ at the end, degrees.
-    pub pitch_deg: f64,
+    pub pitch_deg: Option<f64>,
     /// z at the end less z at the execute, m (down positive).
-    pub depth_change_m: f64,
+    pub depth_change_m: Option<f64>,
     /// Why the steady figures are not given, where they are not.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub not_steady_because: Option<String>,
@@ -363,8 +378,8 @@ pub enum TrialFigures {
 }
 
 impl TrialFigures {
-    /// The figures of `progress` at the end of the run, `end` its last state.
-    pub fn of(progress: &Progress, (rudder, end): (f64, &[f64; 15])) -> Self {
+    /// The figures of `progress` where the run ended (`end`).
+    pub fn of(progress: &Progress, (rudder, end): (f64, Ended<'_>)) -> Self {
         match progress.trial {
             Trial::TurningCircle { .. } => {
                 TrialFigures::TurningCircle(turning_circle(progress, rudder, end))
@@ -383,11 +398,11 @@ impl TrialFigures {
                 f.transfer_m,
                 f.tactical_diameter_m,
                 f.steady_diameter_m,
-                Some(f.speed_m_s),
-                Some(f.heading_rate_deg_s),
-                Some(f.roll_deg),
-                Some(f.pitch_deg),
-                Some(f.depth_change_m),
+                f.speed_m_s,
+                f.heading_rate_deg_s,
+                f.roll_deg,
+                f.pitch_deg,
+                f.depth_change_m,
             ]
             .iter()
             .map(|v| v.unwrap_or(f64::INFINITY))
@@ -418,7 +433,7 @@ pub fn largest_trial_difference(a: &TrialFigures, b: &TrialFigures) -> f64 {
 fn zig_zag(
     progress: &Progress,
     (plane, fin, switch): (Plane, f64, f64),
-    end: &[f64; 15],
+    end: Ended<'_>,
 ) -> ZigZagFigures {
     let switches: Vec<f64> = (progress.events.iter())
         .filter(|e| matches!(e.watch, Watch::Switch(_)))
@@ -445,13 +460,18 @@ fn zig_zag(
             Plane::Horizontal => "the heading change",
             Plane::Vertical => "the pitch from the trim's",
         };
-        format!(
-            "{angle} did not reach ±{}° between the execute at {} s and the end of the run: it \
-             was {}° at the end, so the fin was never reversed",
-            Short(degrees(switch)),
-            Short(progress.execute_time()),
-            Short(progress.angle(end).to_degrees())
-        )
+        let (switch, execute) = (Short(degrees(switch)), Short(progress.execute_time()));
+        match end {
+            Ended::AtEnd(end) => format!(
+                "{angle} did not reach ±{switch}° between the execute at {execute} s and the end \
+                 of the run: it was {}° at the end, so the fin was never reversed",
+                Short(progress.angle(end).to_degrees())
+            ),
+            Ended::Stopped(t) => format!(
+                "{angle} did not reach ±{switch}° between the execute at {execute} s and t = \
+                 {t:.1} s, where integrator.stop_when stopped the run"
+            ),
+        }
     });
     ZigZagFigures {
         plane,
@@ -464,7 +484,7 @@ fn zig_zag(
     }
 }
 
-fn turning_circle(progress: &Progress, rudder: f64, end: &[f64; 15]) -> TurningCircleFigures {
+fn turning_circle(progress: &Progress, rudder: f64, end: Ended<'_>) -> TurningCircleFigures {
     let at = |target: f64| {
         (progress.events.iter()).find_map(|e| match e.watch {
             Watch::Turned(x) if x.abs() == target => Some(e.state),
@@ -492,12 +512,25 @@ fn turning_circle(progress: &Progress, rudder: f64, end: &[f64; 15]) -> TurningC
         let label = format!("180°: tactical diameter {:.1} m", across.abs());
         marks.push((label, [state[6], state[7]]));
     }
-    let steady = progress
-        .course
-        .as_ref()
-        .map_or(Err("the execute did not come".to_owned()), Course::steady);
-    let [phi, theta, _] = euler_angles(end);
-    let (psi_dot, _) = heading_and_pitch_rates(end);
+    let end = match end {
+        Ended::AtEnd(end) => Ok(end),
+        Ended::Stopped(t) => Err(format!(
+            "the run was stopped at t = {t:.1} s (integrator.stop_when): the steady turn is read \
+             at the end"
+        )),
+    };
+    let steady = match (&end, progress.course.as_ref()) {
+        (Err(why), _) => Err(why.clone()),
+        (Ok(_), None) => Err("the execute did not come".to_owned()),
+        (Ok(_), Some(course)) => course.steady(),
+    };
+    let at_end = end.ok().map(|end| {
+        let [phi, theta, _] = euler_angles(end);
+        let (psi_dot, _) = heading_and_pitch_rates(end);
+        let speed = (end[0] * end[0] + end[1] * end[1] + end[2] * end[2]).sqrt();
+        let depth_change = end[8] - progress.execute_depth();
+        (speed, psi_dot, phi, theta, depth_change)
+    });
     TurningCircleFigures {
         rudder_deg: degrees(rudder),
         advance_m: ninety.map(|(along, _)| along),
@@ -507,11 +540,11 @@ fn turning_circle(progress: &Progress, rudder: f64, end: &[f64; 15]) -> TurningC
             .as_ref()
             .ok()
             .map(|(speed, rate)| 2.0 * speed / rate.abs()),
-        speed_m_s: (end[0] * end[0] + end[1] * end[1] + end[2] * end[2]).sqrt(),
-        heading_rate_deg_s: psi_dot.to_degrees(),
-        roll_deg: phi.to_degrees(),
-        pitch_deg: theta.to_degrees(),
-        depth_change_m: end[8] - progress.execute_depth(),
+        speed_m_s: at_end.map(|(speed, ..)| speed),
+        heading_rate_deg_s: at_end.map(|(_, psi_dot, ..)| psi_dot.to_degrees()),
+        roll_deg: at_end.map(|(_, _, phi, ..)| phi.to_degrees()),
+        pitch_deg: at_end.map(|(.., theta, _)| theta.to_degrees()),
+        depth_change_m: at_end.map(|(.., depth_change)| depth_change),
         not_steady_because: steady.err(),
         marks,
     }

@@ -79,6 +79,23 @@ pub(super) static KEYS: &[Key] = &[
         ..Key::BLANK
     },
     Key {
+        path: "integrator.stop_when",
+        kind: Kind::Text(Choices::Free),
+        default: "none: the run ends at its end",
+        description: "A condition that ends a run where it first holds: t or a column of \
+                      its trajectory.csv by its name before the unit (a state entry; a ship's \
+                      and a vehicle's commands and a ship's distance too, not the energies), \
+                      then <, >, <= or >=, then a number (`z > 10`: the ground). A catalog \
+                      scene's run is one; a \
+                      ship's or a vehicle's manoeuvre (each side) is each one, t its own time \
+                      from 0, a condition that holds where one starts is refused. The crossing \
+                      is found on the step to adjacent doubles, with the last row there; \
+                      summary.json says stop_when and stopped_at (each manoeuvre's, each \
+                      side's). A manoeuvre's figure it had not read by then is not given, one \
+                      read at the end (a steady turn) neither, and a note says why.",
+        ..Key::BLANK
+    },
+    Key {
         path: "sweep.*",
         kind: Kind::Table("key paths and values"),
         description: "Values to vary, one run of the scene per combination, in parallel, each \
