@@ -1,10 +1,11 @@
 //! The envelope every scene whose own table defines its model shares, whatever its kind: the
 //! `[model]` that names the family, the `[integrator]` and `[output]` of its manoeuvres, and a
-//! steering gear's table; and the `[linear]` table every scene may give. Each is read and checked here, once, so that a ship's rudder and a
-//! vehicle's fins are checked by one function and every kind's method by the checker of every
-//! scene's `[integrator]`. A kind's stop condition (`integrator.stop_when`) is read here too,
-//! against the names its trajectory.csv gives its columns, so that a condition means on a
-//! manoeuvre what it means on a catalog body's run: the first instant its row satisfies it.
+//! steering gear's table; and the `[linear]` table every scene may give. Each is read and
+//! checked here, once, so that a ship's rudder and a vehicle's fins are checked by one
+//! function and every kind's method by the checker of every scene's `[integrator]`. A kind's
+//! stop condition (`integrator.stop_when`) is read here too, against the names its
+//! trajectory.csv gives its columns, so that a condition means on a manoeuvre what it means on
+//! a catalog body's run: the first instant its row satisfies it.
 
 use super::check::{Checker, MethodKeys};
 use super::stop::StopCondition;
