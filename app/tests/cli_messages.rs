@@ -25,12 +25,6 @@ fn pendulum(dir: &Path, file: &str, edit: impl Fn(String) -> String) -> String {
 #[test]
 fn a_command_on_a_scene_it_does_not_serve_says_what_it_serves() {
     let dir = folder("serves");
-    let (code, stderr) = failing(&["tradeoff", &scene_arg("mariner.toml")]);
-    assert_eq!(code, 2, "{stderr}");
-    assert!(
-        stderr.contains("eom tradeoff serves catalog scenes"),
-        "{stderr}"
-    );
     let swept = pendulum(&dir, "swept.toml", |t| {
         t + "\n[sweep]\n\"body.mass\" = [1.0, 2.0]\n"
     });

@@ -730,3 +730,83 @@ fn a_stop_condition_ends_a_ships_manoeuvre_and_summary_json_says_where() {
         "{stderr}"
     );
 }
+
+/// `eom tradeoff` on a ship compares every setting on the figures of its manoeuvres against
+/// DOP853 at 1e-12: RK4's errors fall as h⁴ where they stand above round-off, and the setting
+/// it recommends meets every figure's target, as do the tighter settings of its method.
+#[test]
+fn eom_tradeoff_compares_a_ships_settings_on_its_figures() {
+    let dir = folder("tradeoff");
+    let mariner = std::fs::read_to_string(scene_arg("mariner.toml")).unwrap();
+    let approach = &mariner[..mariner.find("[[manoeuvre]]").unwrap()];
+    // One turn, rows 5 s apart: RK4 from a step of 5 s down to 0.05 s.
+    let scene = approach.replace("every = 1.0 ", "every = 5.0 ")
+        + "[[manoeuvre]]\nname = \"turn\"\nkind = \"turning_circle\"\nrudder_deg = 35.0\n\
+           duration_s = 400.0\n";
+    let path = dir.join("turn.toml");
+    std::fs::write(&path, scene).unwrap();
+    let stdout = succeeded(&eom(&["tradeoff", path.to_str().unwrap(), "--json"]));
+    let value: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    assert_eq!(value["reference"], "DOP853 at rtol = atol = 1e-12");
+    let rows = value["rows"].as_array().unwrap();
+    let rk4: Vec<&serde_json::Value> = rows.iter().filter(|r| r["method"] == "rk4").collect();
+    assert_eq!(rk4.len(), 7);
+    // The tactical diameter's error, step by step (5, 2.5, 1, 0.5, 0.25, 0.1, 0.05 s): from 1 s
+    // to 0.5 s and to 0.25 s, each a halving, a fourth-order method's error falls about 16-fold
+    // (at least 8-fold is asked: the events' location adds its own small part); below 1e-6 m
+    // the reference's own error and the round-off of a 1 km figure take over.
+    let diameter = |row: &serde_json::Value| row["errors"]["tactical_diameter_m"].as_f64();
+    let errors: Vec<f64> = rk4.iter().map(|r| diameter(r).unwrap()).collect();
+    for pair in [(2, 3), (3, 4)] {
+        let (coarse, fine) = (errors[pair.0], errors[pair.1]);
+        assert!(coarse > 1e-6 && coarse / fine >= 8.0, "{errors:?}");
+    }
+    // Every figure the turn gives is compared, per side.
+    for key in ["advance_90_m", "transfer_90_m", "t_90_s", "t_180_s"] {
+        assert!(
+            rk4[3]["errors"][key].as_f64().is_some(),
+            "{key}: {}",
+            rk4[3]
+        );
+    }
+    // The recommendation meets every target, and so does each tighter setting of its method.
+    let targets = &value["targets"];
+    let target = |key: &str| {
+        let unit = ["deg_s", "m_s", "m", "deg", "s"]
+            .into_iter()
+            .find(|unit| key.ends_with(&format!("_{unit}")))?;
+        targets[unit].as_f64()
+    };
+    let meets = |row: &serde_json::Value| {
+        (row["errors"].as_object().unwrap().iter())
+            .all(|(key, error)| target(key).is_none_or(|t| error.as_f64().is_some_and(|e| e <= t)))
+    };
+    let recommended = &value["recommended"];
+    assert!(meets(recommended), "{recommended}");
+    let at = rows.iter().position(|r| r == recommended).unwrap();
+    let method = &recommended["method"];
+    assert!(
+        rows[at..]
+            .iter()
+            .filter(|r| r["method"] == *method)
+            .all(meets)
+    );
+    // A figure's target is set by its unit: a tighter one on lengths recommends no cheaper a
+    // setting.
+    let tight = succeeded(&eom(&[
+        "tradeoff",
+        path.to_str().unwrap(),
+        "--json",
+        "--figure-target",
+        "m=1e-5",
+    ]));
+    let tight: serde_json::Value = serde_json::from_str(&tight).unwrap();
+    assert_eq!(tight["targets"]["m"].as_f64(), Some(1e-5));
+    let evals = |v: &serde_json::Value| v["recommended"]["rhs_evals"].as_u64().unwrap();
+    assert!(
+        evals(&tight) >= evals(&value),
+        "{} < {}",
+        evals(&tight),
+        evals(&value)
+    );
+}

@@ -6,6 +6,7 @@
 //! loop ([`crate::integrate::problem`]), and a kind that compares its integrators fills the
 //! one [`tradeoff::Tradeoff`].
 
+pub mod figure_tradeoff;
 pub mod record;
 pub mod tradeoff;
 

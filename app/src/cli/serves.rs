@@ -33,14 +33,3 @@ pub fn single(path: &Path, doing: &str) -> Result<Box<dyn Kind>> {
     let base = path.parent().unwrap_or(Path::new("."));
     Ok(AnyScene::parse(&text, &name, base)?.into_kind())
 }
-
-/// Why `eom tradeoff` does not serve a scene of `kind`, whose kind does not compare its
-/// integrators ([`Kind::tradeoff`]).
-pub fn not_compared(path: &Path, kind: &str) -> Usage {
-    Usage(format!(
-        "eom tradeoff serves catalog scenes (pendulum, planar, spatial, top), whose \
-         integrators it compares over one run; {} is a {kind} scene, whose kind does not \
-         compare its integrators",
-        path.display()
-    ))
-}

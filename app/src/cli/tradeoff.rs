@@ -1,11 +1,15 @@
 //! `eom tradeoff SCENE`: what each integrator costs on this scene, and the cheapest setting
-//! that meets a target error (see [`eom::run::tradeoff`]), for a scene whose kind compares
-//! its integrators ([`eom::kinds::Kind::tradeoff`]).
+//! that meets a target error: on the end state for a scene whose kind compares its
+//! integrators so (a catalog body's, [`eom::kinds::Kind::tradeoff`], [`eom::run::tradeoff`]),
+//! on each run's figures for every other (a ship's, a vehicle's manoeuvres,
+//! [`eom::run::figure_tradeoff`]).
 
 use anyhow::{Context, Result, bail};
+use eom::run::figure_tradeoff::{self, FigureRecommendation, FigureRow, FigureTradeoff, Targets};
 use eom::run::tradeoff::{REPEATS, Recommendation, Tradeoff, TradeoffRow};
+use eom::scene::{Problem, SceneError};
 use serde_json::json;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Options of `eom tradeoff`.
 #[derive(clap::Args)]
@@ -15,16 +19,34 @@ pub struct Args {
     /// The largest acceptable end-state error (relative; see the table's note).
     #[arg(long, default_value_t = 1e-6, value_parser = super::values::positive)]
     target: f64,
+    /// A figure's target error by its unit, `UNIT=VALUE` (`m=0.05`, `deg=0.01`), for a scene
+    /// compared on its figures; repeat for each unit (defaults: m=0.01, deg=0.001, s=0.01,
+    /// deg_s=1e-4, m_s=1e-4).
+    #[arg(long = "figure-target", value_parser = unit_target)]
+    figure_targets: Vec<(String, f64)>,
     /// Print JSON: {"target", "reference", "rows": [...], "recommended": {...}}.
     #[arg(long)]
     json: bool,
+}
+
+/// `UNIT=VALUE`, the value positive and finite.
+fn unit_target(text: &str) -> Result<(String, f64), String> {
+    let (unit, value) =
+        (text.split_once('=')).ok_or_else(|| format!("write UNIT=VALUE (m=0.01), not `{text}`"))?;
+    let unit = unit.trim();
+    if unit.is_empty() || !unit.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') {
+        return Err(format!(
+            "`{unit}` is not a unit as a figure's key ends in (m, deg_s)"
+        ));
+    }
+    Ok((unit.to_owned(), super::values::positive(value)?))
 }
 
 /// Runs `eom tradeoff`.
 pub fn run(args: Args) -> Result<()> {
     let scene = super::serves::single(&args.scene, "eom tradeoff compares the integrators on")?;
     let Some(result) = scene.tradeoff() else {
-        return Err(super::serves::not_compared(&args.scene, scene.kind()).into());
+        return figures(&args, scene.title());
     };
     let result = result.context("running the reference")?;
     let recommendation = result.recommend(args.target);
@@ -106,4 +128,139 @@ fn print_table(title: &str, result: &Tradeoff, target: f64, recommendation: &Rec
         }
         Recommendation::NoneMeets => println!("no setting meets an error of {target:e}"),
     }
+}
+
+/// A scene compared on its runs' figures.
+fn figures(args: &Args, title: &str) -> Result<()> {
+    let name = args.scene.display().to_string();
+    let text = std::fs::read_to_string(&args.scene)
+        .map_err(|e| SceneError::new(&name, "", Problem::Read(e)))?;
+    let table: toml::Table = text
+        .parse()
+        .map_err(|e: toml::de::Error| SceneError::new(&name, "", Problem::Syntax(e.to_string())))?;
+    let base = args.scene.parent().unwrap_or(Path::new("."));
+    let every = figure_tradeoff::rows_interval(&table).ok_or_else(|| {
+        SceneError::new(
+            &name,
+            "output.every",
+            Problem::Missing("the rows' interval, s".into()),
+        )
+    })?;
+    let compared = figure_tradeoff::compare(&table, (&name, base), every)?;
+    let mut targets = Targets::default();
+    for (unit, target) in &args.figure_targets {
+        targets.set(unit, *target);
+    }
+    let recommendation = compared.recommend(&targets);
+    if args.json {
+        let by_unit: serde_json::Map<String, serde_json::Value> = (targets.0.iter())
+            .map(|(unit, target)| (unit.clone(), json!(target)))
+            .collect();
+        let value = json!({
+            "targets": by_unit,
+            "reference": compared.reference,
+            "reference_steps": compared.reference_cost.0,
+            "reference_rhs_evals": compared.reference_cost.1,
+            "reference_seconds": compared.reference_cost.2,
+            "rows": compared.rows.iter().map(figure_row_json).collect::<Vec<_>>(),
+            "recommended": match &recommendation {
+                FigureRecommendation::Setting(row) => figure_row_json(row),
+                FigureRecommendation::None(_) => serde_json::Value::Null,
+            },
+            "why_not": match &recommendation {
+                FigureRecommendation::Setting(_) => None,
+                FigureRecommendation::None(why) => Some(why),
+            },
+        });
+        println!("{}", serde_json::to_string_pretty(&value)?);
+    } else {
+        print_figures(title, &compared, &targets, &recommendation);
+    }
+    match recommendation {
+        FigureRecommendation::Setting(_) => Ok(()),
+        FigureRecommendation::None(why) => bail!("no setting is recommended: {why}"),
+    }
+}
+
+fn figure_row_json(row: &FigureRow) -> serde_json::Value {
+    let errors: serde_json::Map<String, serde_json::Value> = (row.errors.iter())
+        .map(|figure| (figure.key.clone(), json!(figure.error)))
+        .collect();
+    json!({
+        "method": row.setting.method.name(),
+        "setting": row.setting.describe(),
+        "steps": row.steps,
+        "rhs_evals": row.rhs_evals,
+        "seconds": if row.seconds.is_finite() { json!(row.seconds) } else { json!(null) },
+        "errors": errors,
+        "failure": row.failure,
+    })
+}
+
+fn print_figures(
+    title: &str,
+    compared: &FigureTradeoff,
+    targets: &Targets,
+    recommendation: &FigureRecommendation,
+) {
+    let (steps, evals, seconds) = compared.reference_cost;
+    println!(
+        "{title}: every run's figures against {} ({steps} steps, {} rhs evals, {seconds:.2e} s)",
+        compared.reference,
+        counted(evals)
+    );
+    let said: Vec<String> = (targets.0.iter())
+        .map(|(unit, t)| format!("{t:e} {unit}"))
+        .collect();
+    println!(
+        "each figure's error is its largest difference from the reference over the runs; the \
+         targets, by unit: {}; the cost is the rhs evals of the runs, the time the scene's \
+         whole run, its refined runs included",
+        said.join(", ")
+    );
+    println!();
+    println!(
+        "| method | setting | steps | rhs evals | seconds | furthest from its target | error | \
+         of target |"
+    );
+    println!("|---|---|---|---|---|---|---|---|");
+    for row in &compared.rows {
+        let (method, setting) = (row.setting.method.name(), row.setting.describe());
+        match (&row.failure, row.worst(targets)) {
+            (Some(failure), _) => {
+                println!("| {method} | {setting} | failed: {failure} | | | | | |")
+            }
+            (None, Some((key, error, ratio))) => println!(
+                "| {method} | {setting} | {} | {} | {:.2e} | {key} | {} | {ratio:.2} |",
+                row.steps,
+                counted(row.rhs_evals),
+                row.seconds,
+                error.map_or("not given".into(), |e| format!("{e:.2e}"))
+            ),
+            (None, None) => println!(
+                "| {method} | {setting} | {} | {} | {:.2e} | | | |",
+                row.steps,
+                counted(row.rhs_evals),
+                row.seconds
+            ),
+        }
+    }
+    println!();
+    match recommendation {
+        FigureRecommendation::Setting(row) => println!(
+            "recommended: {} with {} ({} steps, {} rhs evals, {:.2e} s), every figure within \
+             its target",
+            row.setting.method.name(),
+            row.setting.describe(),
+            row.steps,
+            counted(row.rhs_evals),
+            row.seconds
+        ),
+        FigureRecommendation::None(why) => println!("no setting is recommended: {why}"),
+    }
+}
+
+/// A count the kind may not give, as the table writes it.
+fn counted(count: Option<u64>) -> String {
+    count.map_or("—".into(), |count| count.to_string())
 }

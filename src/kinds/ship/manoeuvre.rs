@@ -342,6 +342,8 @@ pub struct ManoeuvreRun {
     pub figures: Figures,
     /// Steps taken.
     pub steps: u64,
+    /// Evaluations of the right-hand side.
+    pub rhs_evals: u64,
     /// Where the stop condition ended the run, s; `None` where it did not.
     pub stopped_at: Option<f64>,
 }
@@ -437,6 +439,7 @@ pub fn run_until(
     Ok(ManoeuvreRun {
         figures: driver.figures((end.t, &end.state)),
         steps: stats.steps as u64,
+        rhs_evals: stats.rhs_evals as u64,
         stopped_at: driver.stopped,
     })
 }

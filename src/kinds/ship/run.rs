@@ -38,6 +38,8 @@ pub struct Outcome {
     pub refined: Figures,
     /// The steps the run took.
     pub steps: u64,
+    /// Its evaluations of the right-hand side.
+    pub rhs_evals: u64,
     /// Where the scene's stop condition ended the run with the scene's method, s.
     pub stopped_at: Option<f64>,
 }
@@ -209,6 +211,7 @@ pub fn run_scene<'a>(
     let stepper = &scene.stepper;
     let integrator = IntegratorSummary {
         steps: (outcomes.iter().flatten()).map(|(_, o)| o.steps).sum(),
+        rhs_evals: Some((outcomes.iter().flatten()).map(|(_, o)| o.rhs_evals).sum()),
         ..IntegratorSummary::settings(stepper.method, stepper.step, stepper.adaptive)
     };
     let section = ShipSection {
@@ -381,6 +384,7 @@ fn run_manoeuvre(
         figures: done.figures,
         refined: refined.figures,
         steps: done.steps,
+        rhs_evals: done.rhs_evals,
         stopped_at: done.stopped_at,
     })
 }

@@ -178,6 +178,8 @@ pub struct VehicleRun {
     pub trial: Option<Progress>,
     /// Steps taken.
     pub steps: u64,
+    /// Evaluations of the right-hand side.
+    pub rhs_evals: u64,
     /// Where the stop condition ended the run, s; `None` where it did not. A stopped run's
     /// `ends` and `tracked` stop before it: the step it cut short did not end.
     pub stopped_at: Option<f64>,
@@ -245,6 +247,7 @@ pub fn run_until(
         tracked: runner.command.tracked,
         trial: runner.command.progress,
         steps: stats.steps as u64,
+        rhs_evals: stats.rhs_evals as u64,
         stopped_at: end.stopped.then_some(end.t),
     })
 }

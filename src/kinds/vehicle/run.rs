@@ -34,6 +34,8 @@ pub struct Outcome {
     pub summary: ManoeuvreSummary,
     /// Points to mark on its track: a turning circle's, (what, [x, y]).
     pub marks: Vec<(String, [f64; 2])>,
+    /// Its evaluations of the right-hand side.
+    pub rhs_evals: u64,
 }
 
 /// What a vehicle scene's run gave: its summary, each manoeuvre's outcome (those finished
@@ -76,6 +78,7 @@ pub fn run_scene<'a>(
     let stepper = &scene.stepper;
     let integrator = IntegratorSummary {
         steps: outcomes.iter().map(|o| o.summary.steps_taken).sum(),
+        rhs_evals: Some(outcomes.iter().map(|o| o.rhs_evals).sum()),
         ..IntegratorSummary::settings(stepper.method, stepper.step, stepper.adaptive)
     };
     let runs = (scene.manoeuvres.iter().zip(&outcomes))
@@ -209,6 +212,7 @@ fn run_manoeuvre(
         steps,
         summary,
         marks,
+        rhs_evals: done.rhs_evals,
     })
 }
 
