@@ -809,4 +809,14 @@ fn eom_tradeoff_compares_a_ships_settings_on_its_figures() {
         evals(&tight),
         evals(&value)
     );
+    // A scene whose manoeuvres measure nothing has nothing to compare: a usage error.
+    let series = approach.to_owned()
+        + "[[manoeuvre]]\nname = \"series\"\nkind = \"rudder_series\"\n\
+           times_s = [0.0, 10.0]\nseries_deg = [0.0, 5.0]\nduration_s = 30.0\n";
+    let path = dir.join("series.toml");
+    std::fs::write(&path, series).unwrap();
+    let output = eom(&["tradeoff", path.to_str().unwrap()]);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("gives none"), "{stderr}");
 }

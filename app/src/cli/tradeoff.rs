@@ -5,7 +5,9 @@
 //! [`eom::run::figure_tradeoff`]).
 
 use anyhow::{Context, Result, bail};
-use eom::run::figure_tradeoff::{self, FigureRecommendation, FigureRow, FigureTradeoff, Targets};
+use eom::run::figure_tradeoff::{
+    self, FigureRecommendation, FigureRow, FigureTradeoff, FigureTradeoffError, Targets,
+};
 use eom::run::tradeoff::{REPEATS, Recommendation, Tradeoff, TradeoffRow};
 use eom::scene::{Problem, SceneError};
 use serde_json::json;
@@ -146,7 +148,22 @@ fn figures(args: &Args, title: &str) -> Result<()> {
             Problem::Missing("the rows' interval, s".into()),
         )
     })?;
-    let compared = figure_tradeoff::compare(&table, (&name, base), every)?;
+    let compared = match figure_tradeoff::compare(&table, (&name, base), every) {
+        Ok(compared) => compared,
+        // Each cause keeps its exit code: the scene's key (3), the reference run's failure (5).
+        Err(FigureTradeoffError::Scene(error)) => return Err(error.into()),
+        Err(FigureTradeoffError::Reference(error)) => {
+            return Err(anyhow::Error::new(error).context("the reference run (DOP853 at 1e-12)"));
+        }
+        Err(FigureTradeoffError::NoFigures) => {
+            return Err(super::run::Usage(format!(
+                "eom tradeoff compares a scene's figures; {} gives none (its manoeuvres measure \
+                 nothing)",
+                args.scene.display()
+            ))
+            .into());
+        }
+    };
     let mut targets = Targets::default();
     for (unit, target) in &args.figure_targets {
         targets.set(unit, *target);
