@@ -3,8 +3,9 @@
 //! [`record::Recorder`] told where each run begins and ends.
 //!
 //! How each kind runs is its own ([`crate::kinds`]); every run is a problem solved by the one
-//! loop ([`crate::integrate::problem`]), and a kind that compares its integrators fills the
-//! one [`tradeoff::Tradeoff`].
+//! loop (`integrate::problem`). A kind that compares its integrators on its end state fills
+//! the one [`tradeoff::Tradeoff`]; any kind whose runs give figures is compared on them by
+//! [`figure_tradeoff`].
 
 pub mod figure_tradeoff;
 pub mod record;

@@ -6,14 +6,14 @@
 //! naming the key by its path in the file (`integrator.step`) with what is wrong with it.
 //! [`AnyScene`] is the one entry: it asks the registry ([`crate::kinds::REGISTRY`]) which
 //! kind the scene's tables are, and that kind reads and checks them in its folder, its values
-//! through the one set of checks ([`check`]: each value against its
+//! through the one set of checks (`check`: each value against its
 //! [`Requirement`](crate::validate::Requirement), the method and its settings, the `[linear]`
 //! table), the tables every scene with manoeuvres shares through [`envelope`].
 //!
 //! What every kind shares is here: a `[sweep]` of any scene ([`sweep`]), a condition that
 //! ends a run where it first holds ([`stop`]: `integrator.stop_when = "z > 10"`), the errors
 //! ([`SceneError`]), and the key reference that docs/scenes.md and `eom new` are made from
-//! ([`reference`]).
+//! ([`reference`](mod@reference)).
 //!
 //! Space axes are X north, Y east, Z down and body axes x forward, y to starboard, z down, as
 //! in the chapter's ship dynamics; angles in a scene file are in degrees, rates in rad/s.

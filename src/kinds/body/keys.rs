@@ -1,7 +1,9 @@
 //! The keys of a catalog scene ([`SceneFile`](super::file::SceneFile)), in the order a
 //! template writes them. Each family's keys in `[body]`, `[initial]`, `[loads]` and `[model]`
 //! are what the scene checker allows there; a key that two families read differently (a force
-//! of three entries or of two) has an entry for each.
+//! of three entries or of two) has an entry for each. Beside them, what the reference page
+//! says of catalog scenes: its section's first paragraph, how such a scene runs, and the
+//! state columns of each family's layouts.
 
 use crate::models::{ENERGY_UNIT, Family, ModelInfo, TIME_UNIT, state_with_unit, with_unit};
 use crate::scene::reference::{Choices, Frame, Key, Kind, Required, SceneFamily, Shown};

@@ -2,15 +2,15 @@
 //! pendulum, a planar body, a spatial body, the heavy top) under its loads, whose model is a
 //! variant the build generated and proved.
 //!
-//! Its folder holds the whole path: its tables ([`file`]) read by the one reader and checked
+//! Its folder holds the whole path: its tables ([`file`](mod@file)) read by the one reader and checked
 //! here ([`BodyScene::from_file`]: the family's keys, the body, the variant it selects
 //! ([`select_spatial`]), the loads as the model's inputs ([`SceneLoads`], with their time
 //! tables, [`table`]), the initial state, the integrator); its run ([`run`]: from its initial
 //! state to its end time or its stop condition, a problem solved by the one loop, every step
-//! watched by the [`guard`]); its linear plant ([`linear`]); its integrators compared
-//! ([`tradeoff`]); Its rows go to the caller's recorder,
-//! its summary is [`crate::output::summary::Summary`] with a [`summary::BodySection`], and
-//! its drawing a [`RigidBody`].
+//! watched by the [`guard`]); its linear plant ([`linear`]); its integrators compared on its
+//! end state ([`tradeoff`]); its keys for the scene reference ([`KEYS`]). Its rows go to the
+//! caller's recorder, its summary is [`crate::output::summary::Summary`] with a
+//! [`summary::BodySection`], and its drawing a [`RigidBody`].
 //!
 //! A body's run that fails (gimbal lock, a step too long, a value that is not finite) keeps
 //! what it ran: its rows, its drawings and a summary that gives the error; the failure is

@@ -90,7 +90,7 @@ pub struct Report {
     /// may be 0), where every load has a potential (else `None`).
     pub energy_drift: Option<f64>,
     /// What the run did not stop for but a reader should know: a fixed step past its
-    /// accuracy bound for the rate of turn (see [`guard`]).
+    /// accuracy bound for the rate of turn (see [`guard`](super::guard)).
     pub warnings: Vec<String>,
     /// The time at which the scene's stop condition first held and ended the run, if it did.
     pub stopped_at: Option<f64>,
@@ -114,7 +114,7 @@ pub enum RunError {
         /// The time reached.
         t: f64,
     },
-    /// The pitch of an Euler-angle attitude came within [`guard::gimbal_bound`] of ±90°, or
+    /// The pitch of an Euler-angle attitude came within [`guard::gimbal_bound`](super::guard::gimbal_bound) of ±90°, or
     /// crossed it within one step: the Euler-angle rates (4.60) divide by cos θ.
     #[error("{}", gimbal_message(*t, *pitch_deg, *cos_pitch, *bound, *crossed_since))]
     GimbalLock {
@@ -124,7 +124,7 @@ pub enum RunError {
         pitch_deg: f64,
         /// cos θ there.
         cos_pitch: f64,
-        /// The least |cos θ| allowed ([`guard::gimbal_bound`]).
+        /// The least |cos θ| allowed ([`guard::gimbal_bound`](super::guard::gimbal_bound)).
         bound: f64,
         /// Where the pitch went past ±90° within the step that ended at `t`, the step's
         /// start (a fixed step, or a pure pitch, can jump the bound's narrow band).
@@ -132,7 +132,7 @@ pub enum RunError {
     },
     /// A fixed step too long for how fast the state turns: h·|ω| beyond the method's stability
     /// limit on the imaginary axis, where the eigenvalues ±i|ω| of a rotation lie (see
-    /// [`guard`]).
+    /// [`guard`](super::guard)).
     #[error(
         "the step is too long for the rotation at t = {} s: h·{rate_name} = {step} s × \
          {rate:.3} rad/s = {:.3}, beyond {method}'s stability limit {limit:.4} on the \
@@ -153,11 +153,11 @@ pub enum RunError {
         rate_name: &'static str,
         /// The step, s.
         step: f64,
-        /// The largest h·rate the method is stable at ([`guard::RK4_LIMIT`],
-        /// [`guard::SYMPLECTIC_EULER_LIMIT`]).
+        /// The largest h·rate the method is stable at ([`guard::RK4_LIMIT`](super::guard::RK4_LIMIT),
+        /// [`guard::SYMPLECTIC_EULER_LIMIT`](super::guard::SYMPLECTIC_EULER_LIMIT)).
         limit: f64,
         /// The step at which one turn at this rate errs by 10 %
-        /// ([`guard::Scheme::accuracy_bound`]), s.
+        /// ([`guard::Scheme::accuracy_bound`](super::guard::Scheme::accuracy_bound)), s.
         accurate_step: f64,
     },
 }

@@ -110,7 +110,7 @@ impl Key {
         shared: false,
     };
 
-    /// A key every scene takes ([`shared`]), where `families` write it: its place in their
+    /// A key every scene takes (`shared.rs`, [`shared_keys`]), where `families` write it: its place in their
     /// list, the example their template sets, and whether it shows it commented out. Its
     /// meaning is the shared definition's.
     pub const fn shared(
