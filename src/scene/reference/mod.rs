@@ -110,9 +110,9 @@ impl Key {
         shared: false,
     };
 
-    /// A key every scene takes (`shared.rs`, [`shared_keys`]), where `families` write it: its place in their
-    /// list, the example their template sets, and whether it shows it commented out. Its
-    /// meaning is the shared definition's.
+    /// A key every scene takes (`shared.rs`, [`shared_keys`]), where `families` write it: its
+    /// place in their list, the example their template sets, and whether it shows it
+    /// commented out. Its meaning is the shared definition's.
     pub const fn shared(
         path: &'static str,
         families: &'static [SceneFamily],
