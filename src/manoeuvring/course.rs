@@ -65,8 +65,15 @@ impl Course {
         }
     }
 
-    /// Records the instant `t` with u, v, r and the heading change since the execute.
+    /// Records the instant `t` with u, v, r and the heading change since the execute. The
+    /// instants come in the run's order: a step taken past where a stretch ended (an event)
+    /// is the stretch's trial, not the course, and is not recorded (a test build checks it).
     pub fn record(&mut self, t: f64, u: f64, v: f64, r: f64, turned: f64) {
+        debug_assert!(
+            self.points.last().is_none_or(|last| last.t <= t),
+            "the course went back from t = {} to {t}",
+            self.points.last().map_or(f64::NAN, |last| last.t)
+        );
         let speed = u.hypot(v);
         if u < 0.0 && self.astern.is_none() {
             self.astern = Some(t);

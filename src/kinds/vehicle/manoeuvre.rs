@@ -239,6 +239,7 @@ pub fn run_until(
         steering,
         ends: Vec::new(),
         stop,
+        pending: None,
     };
     let (reached, stats) = problem::solve(&mut runner, (stepper, every), observe);
     let end = reached.map_err(|error| run_error(error, stepper))?;
@@ -280,9 +281,28 @@ struct Runner<'a> {
     ends: Vec<StepEnd>,
     /// The scene's stop condition, if it has one.
     stop: Option<&'a StopCondition>,
+    /// The last accepted step, not yet recorded in the trial's course: a step past where a
+    /// stretch ends (an event, a change) is its trial, run with the commands before it, not
+    /// the vehicle's course.
+    pending: Option<(f64, VehicleState)>,
 }
 
 impl Runner<'_> {
+    /// Records `(t, y)` in the trial's course, if the manoeuvre is a trial.
+    fn record(&mut self, t: f64, y: &VehicleState) {
+        if let Some(progress) = self.command.progress.as_mut() {
+            progress.record(t, &y.data.0[0]);
+        }
+    }
+
+    /// Records the pending step where it lies before `t`, the instant the run goes on from;
+    /// one at or past it is dropped.
+    fn catch_up(&mut self, t: f64) {
+        if let Some((time, state)) = self.pending.take().filter(|(time, _)| *time < t) {
+            self.record(time, &state);
+        }
+    }
+
     /// Where a step of the commands ended at `(t, y)`.
     fn step_end(&self, t: f64, y: &VehicleState) -> StepEnd {
         StepEnd {
@@ -348,9 +368,10 @@ impl<'a> Problem<15> for Runner<'a> {
         (self.stop).is_some_and(|stop| stop.holds(t, &self.sample(t, y).row()))
     }
 
+    /// The step before it, which the run went on from, joins the trial's course.
     fn accepted(&mut self, t: f64, y: &VehicleState) -> bool {
-        if let Some(progress) = self.command.progress.as_mut() {
-            progress.record(t, &y.data.0[0]);
+        if let Some((time, state)) = self.pending.replace((t, *y)) {
+            self.record(time, &state);
         }
         true
     }
@@ -358,25 +379,37 @@ impl<'a> Problem<15> for Runner<'a> {
     /// The trial takes its event (a zig-zag reverses its fin); at a rate limit's kink only
     /// the form of δ̇ changes.
     fn event(&mut self, kink: Kink, t: f64, y: &mut VehicleState) -> Flow {
+        self.catch_up(t);
         if let (Kink::Trial(watch), Some(progress)) = (kink, self.command.progress.as_mut()) {
             progress.fire(watch, t, &y.data.0[0]);
             self.steering = self.command.at(self.steering.fins, t, y, false);
         }
+        self.record(t, y);
         Flow::Go
     }
 
     /// A step's end is recorded where the steps or the setpoints change, then the commands
     /// (the autopilots sampled anew) change.
     fn change(&mut self, t: f64, y: &mut VehicleState) -> Flow {
+        self.catch_up(t);
         self.next += 1;
         if self.schedule.contains(&t) {
             self.ends.push(self.step_end(t, y));
         }
         self.steering = self.command.at(self.steering.fins, t, y, true);
+        self.record(t, y);
         Flow::Go
     }
 
+    /// The instant is recorded, as one the run goes on from.
+    fn resumed(&mut self, t: f64, y: &VehicleState) {
+        self.catch_up(t);
+        self.record(t, y);
+    }
+
     fn finish(&mut self, t: f64, y: &VehicleState) {
+        self.catch_up(t);
+        self.record(t, y);
         self.ends.push(self.step_end(t, y));
         self.command.track(t, &y.data.0[0]);
     }
