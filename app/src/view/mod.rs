@@ -260,7 +260,7 @@ fn render_view(input: &ViewInput) -> Result<String, Problem> {
         shape: &input.shape,
         axes: input.axes,
         rows: rows.len(),
-        readout: columns[8..].iter().map(|(n, _)| n.as_str()).collect(),
+        readout: columns[POSED..].iter().map(|(n, _)| n.as_str()).collect(),
         data: base64(&pack(&columns, &rows)),
         vectors: input.vectors.as_ref().map(|v| VectorsJson {
             omega: v.omega,
@@ -290,10 +290,15 @@ fn render_view(input: &ViewInput) -> Result<String, Problem> {
     Ok(TEMPLATE.replace("/*EOM-DATA*/", &json))
 }
 
+/// The columns every frame is posed from, before the readout: t, the position (x, y, z) and
+/// the attitude (q0…q3).
+const POSED: usize = 1 + 3 + 4;
+
 /// Every column in the order the page reads them: t, position, quaternion, then the readout
 /// as the panel shows it ([`shown`]).
 fn all_columns<'a>(input: &'a ViewInput) -> Vec<(String, Cow<'a, [f64]>)> {
-    let mut columns = vec![("t".to_string(), Cow::Borrowed(input.time))];
+    let mut columns = Vec::with_capacity(POSED + input.readout.len());
+    columns.push(("t".to_string(), Cow::Borrowed(input.time)));
     for (name, column) in ["x", "y", "z"].iter().zip(&input.position) {
         columns.push((format!("position {name}"), Cow::Borrowed(column.as_slice())));
     }
