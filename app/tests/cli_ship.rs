@@ -809,6 +809,25 @@ fn eom_tradeoff_compares_a_ships_settings_on_its_figures() {
         evals(&tight),
         evals(&value)
     );
+    // `--figure` adds a column of one figure's errors; a figure the runs do not give is a
+    // usage error that names those they give.
+    let text = succeeded(&eom(&[
+        "tradeoff",
+        path.to_str().unwrap(),
+        "--figure",
+        "tactical_diameter_m",
+    ]));
+    assert!(
+        text.contains("| of target | tactical_diameter_m |"),
+        "{text}"
+    );
+    let output = eom(&["tradeoff", path.to_str().unwrap(), "--figure", "nope_m"]);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("the scene's runs give advance_90_m"),
+        "{stderr}"
+    );
     // A scene whose manoeuvres measure nothing has nothing to compare: a usage error.
     let series = approach.to_owned()
         + "[[manoeuvre]]\nname = \"series\"\nkind = \"rudder_series\"\n\

@@ -216,6 +216,8 @@ pub struct FigureTradeoff {
     pub reference: String,
     /// The reference run's accepted steps, right-hand-side evaluations and wall time, s.
     pub reference_cost: (u64, Option<u64>, f64),
+    /// The figures compared, by key, in the order the reference gives them.
+    pub keys: Vec<String>,
     /// Every setting, method by method, coarsest first.
     pub rows: Vec<FigureRow>,
 }
@@ -329,7 +331,14 @@ pub fn compare(
             },
         });
     }
+    let mut keys: Vec<String> = Vec::new();
+    for (_, key, _) in &wanted {
+        if !keys.contains(key) {
+            keys.push(key.clone());
+        }
+    }
     Ok(FigureTradeoff {
+        keys,
         reference: format!("DOP853 at rtol = atol = {REFERENCE:e}"),
         reference_cost: (
             summary.integrator.steps,
@@ -462,6 +471,7 @@ mod tests {
         let compared = FigureTradeoff {
             reference: String::new(),
             reference_cost: (0, None, 0.0),
+            keys: vec!["tactical_diameter_m".into()],
             rows,
         };
         let FigureRecommendation::Setting(best) = compared.recommend(&targets) else {

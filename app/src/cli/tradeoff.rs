@@ -26,6 +26,11 @@ pub struct Args {
     /// deg_s=1e-4, m_s=1e-4).
     #[arg(long = "figure-target", value_parser = unit_target)]
     figure_targets: Vec<(String, f64)>,
+    /// A figure whose error at each setting the table shows in a column of its own
+    /// (`tactical_diameter_m`, or a vehicle's `turning_circle.tactical_diameter_m`); repeat
+    /// for each, for a scene compared on its figures.
+    #[arg(long = "figure")]
+    figures: Vec<String>,
     /// Print JSON: {"target", "reference", "rows": [...], "recommended": {...}}.
     #[arg(long)]
     json: bool,
@@ -168,6 +173,13 @@ fn figures(args: &Args, title: &str) -> Result<()> {
     for (unit, target) in &args.figure_targets {
         targets.set(unit, *target);
     }
+    if let Some(unknown) = (args.figures.iter()).find(|key| !compared.keys.contains(key)) {
+        return Err(super::run::Usage(format!(
+            "--figure {unknown}: the scene's runs give {}",
+            compared.keys.join(", ")
+        ))
+        .into());
+    }
     let recommendation = compared.recommend(&targets);
     if args.json {
         let by_unit: serde_json::Map<String, serde_json::Value> = (targets.0.iter())
@@ -191,7 +203,8 @@ fn figures(args: &Args, title: &str) -> Result<()> {
         });
         println!("{}", serde_json::to_string_pretty(&value)?);
     } else {
-        print_figures(title, &compared, &targets, &recommendation);
+        let shown = (&targets, args.figures.as_slice());
+        print_figures(title, &compared, shown, &recommendation);
     }
     match recommendation {
         FigureRecommendation::Setting(_) => Ok(()),
@@ -214,10 +227,12 @@ fn figure_row_json(row: &FigureRow) -> serde_json::Value {
     })
 }
 
+/// The table of a scene compared on its figures: per setting its cost, the figure furthest
+/// from its target, and each of `shown`'s figures' errors.
 fn print_figures(
     title: &str,
     compared: &FigureTradeoff,
-    targets: &Targets,
+    (targets, shown): (&Targets, &[String]),
     recommendation: &FigureRecommendation,
 ) {
     let (steps, evals, seconds) = compared.reference_cost;
@@ -236,26 +251,39 @@ fn print_figures(
         said.join(", ")
     );
     println!();
+    let extra: String = shown.iter().map(|key| format!(" {key} |")).collect();
     println!(
         "| method | setting | steps | rhs evals | seconds | furthest from its target | error | \
-         of target |"
+         of target |{extra}"
     );
-    println!("|---|---|---|---|---|---|---|---|");
+    println!(
+        "|---|---|---|---|---|---|---|---|{}",
+        "---|".repeat(shown.len())
+    );
     for row in &compared.rows {
         let (method, setting) = (row.setting.method.name(), row.setting.describe());
+        let error_of = |key: &str| {
+            let figure = row.errors.iter().find(|figure| figure.key == key);
+            figure.map_or(String::new(), |figure| error_text(figure.error))
+        };
+        let columns: String = shown
+            .iter()
+            .map(|key| format!(" {} |", error_of(key)))
+            .collect();
         match (&row.failure, row.worst(targets)) {
-            (Some(failure), _) => {
-                println!("| {method} | {setting} | failed: {failure} | | | | | |")
-            }
+            (Some(failure), _) => println!(
+                "| {method} | {setting} | failed: {failure} | | | | | |{}",
+                " |".repeat(shown.len())
+            ),
             (None, Some((key, error, ratio))) => println!(
-                "| {method} | {setting} | {} | {} | {:.2e} | {key} | {} | {ratio:.2} |",
+                "| {method} | {setting} | {} | {} | {:.2e} | {key} | {} | {ratio:.2} |{columns}",
                 row.steps,
                 counted(row.rhs_evals),
                 row.seconds,
-                error.map_or("not given".into(), |e| format!("{e:.2e}"))
+                error_text(error)
             ),
             (None, None) => println!(
-                "| {method} | {setting} | {} | {} | {:.2e} | | | |",
+                "| {method} | {setting} | {} | {} | {:.2e} | | | |{columns}",
                 row.steps,
                 counted(row.rhs_evals),
                 row.seconds
@@ -275,6 +303,11 @@ fn print_figures(
         ),
         FigureRecommendation::None(why) => println!("no setting is recommended: {why}"),
     }
+}
+
+/// A figure's error as the table writes it: `not given` where the run did not give the figure.
+fn error_text(error: Option<f64>) -> String {
+    error.map_or("not given".into(), |error| format!("{error:.2e}"))
 }
 
 /// A count the kind may not give, as the table writes it.
