@@ -500,7 +500,11 @@ impl RigidRotation<f64> for FreeRotation {
 }
 
 /// A spatial body free of moments about G with the Lie midpoint method: the rotation by the
-/// geometric integrator, the translation exactly. Uniform gravity at G, the one load such a
+/// geometric integrator, the translation exactly. The one run not solved by the one loop: the
+/// geometric integrator steps a rotation ([`RigidRotation`]), not the model's right-hand side,
+/// so it is driven over the one stretch driver (`segment::fixed_steps`) directly; a free body
+/// has no schedule and no watches for the loop to add, only the stop condition the stretch
+/// locates. Uniform gravity at G, the one load such a
 /// scene may have, exerts no moment about G and accelerates G by g along +Z whatever the
 /// attitude; so the velocity of G in space is V(t) = V₀ + g t Z, its position
 /// x(t) = x₀ + V₀ t + ½ g t² Z, and its body components v(t) = R(t)ᵀ V(t).
