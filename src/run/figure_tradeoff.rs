@@ -286,15 +286,25 @@ pub enum FigureTradeoffError {
     /// The scene's runs give no figures to compare.
     #[error("the scene's runs give no figures to compare")]
     NoFigures,
+    /// A figure asked for by key that the scene's runs do not give.
+    #[error("the scene's runs give no figure {key}; they give {}", known.join(", "))]
+    UnknownFigure {
+        /// The key asked for.
+        key: String,
+        /// The keys the runs give, in their order.
+        known: Vec<String>,
+    },
 }
 
 /// Compares every setting of [`settings`] on the figures of the scene whose tables are
 /// `table` (`name` how errors name it, `base` where a file it names is found), its rows
-/// `every` apart.
+/// `every` apart. Each of `asked`, figures a caller will show, must be one the reference run
+/// gives: one that is not is refused before any setting runs.
 pub fn compare(
     table: &Table,
     (name, base): (&str, &Path),
     every: f64,
+    asked: &[String],
 ) -> Result<FigureTradeoff, FigureTradeoffError> {
     let reference = Setting {
         method: Method::Dop853,
@@ -308,6 +318,16 @@ pub fn compare(
     let wanted = figures(&summary);
     if wanted.is_empty() {
         return Err(FigureTradeoffError::NoFigures);
+    }
+    let mut keys: Vec<String> = Vec::new();
+    for (_, key, _) in &wanted {
+        if !keys.contains(key) {
+            keys.push(key.clone());
+        }
+    }
+    if let Some(key) = asked.iter().find(|key| !keys.contains(key)) {
+        let key = key.clone();
+        return Err(FigureTradeoffError::UnknownFigure { key, known: keys });
     }
     let mut rows = Vec::new();
     for setting in settings(every) {
@@ -330,12 +350,6 @@ pub fn compare(
                 failure: Some(error.to_string()),
             },
         });
-    }
-    let mut keys: Vec<String> = Vec::new();
-    for (_, key, _) in &wanted {
-        if !keys.contains(key) {
-            keys.push(key.clone());
-        }
     }
     Ok(FigureTradeoff {
         keys,

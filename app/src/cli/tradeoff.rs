@@ -153,12 +153,17 @@ fn figures(args: &Args, title: &str) -> Result<()> {
             Problem::Missing("the rows' interval, s".into()),
         )
     })?;
-    let compared = match figure_tradeoff::compare(&table, (&name, base), every) {
+    let compared = match figure_tradeoff::compare(&table, (&name, base), every, &args.figures) {
         Ok(compared) => compared,
         // Each cause keeps its exit code: the scene's key (3), the reference run's failure (5).
         Err(FigureTradeoffError::Scene(error)) => return Err(error.into()),
         Err(FigureTradeoffError::Reference(error)) => {
             return Err(anyhow::Error::new(error).context("the reference run (DOP853 at 1e-12)"));
+        }
+        Err(FigureTradeoffError::UnknownFigure { key, known }) => {
+            let given = known.join(", ");
+            let message = format!("--figure {key}: the scene's runs give {given}");
+            return Err(super::run::Usage(message).into());
         }
         Err(FigureTradeoffError::NoFigures) => {
             return Err(super::run::Usage(format!(
@@ -172,13 +177,6 @@ fn figures(args: &Args, title: &str) -> Result<()> {
     let mut targets = Targets::default();
     for (unit, target) in &args.figure_targets {
         targets.set(unit, *target);
-    }
-    if let Some(unknown) = (args.figures.iter()).find(|key| !compared.keys.contains(key)) {
-        return Err(super::run::Usage(format!(
-            "--figure {unknown}: the scene's runs give {}",
-            compared.keys.join(", ")
-        ))
-        .into());
     }
     let recommendation = compared.recommend(&targets);
     if args.json {
