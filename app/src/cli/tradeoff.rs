@@ -18,7 +18,8 @@ use std::path::{Path, PathBuf};
 pub struct Args {
     /// The scene file (TOML).
     scene: PathBuf,
-    /// The largest acceptable end-state error (relative; see the table's note).
+    /// The largest acceptable end-state error (relative; see the table's note), for a scene
+    /// compared on its end state (a catalog body's).
     #[arg(long, default_value_t = 1e-6, value_parser = super::values::positive)]
     target: f64,
     /// A figure's target error by its unit, `UNIT=VALUE` (`m=0.05`, `deg=0.01`), for a scene
@@ -27,11 +28,13 @@ pub struct Args {
     #[arg(long = "figure-target", value_parser = unit_target)]
     figure_targets: Vec<(String, f64)>,
     /// A figure whose error at each setting the table shows in a column of its own
-    /// (`tactical_diameter_m`, or a vehicle's `turning_circle.tactical_diameter_m`); repeat
-    /// for each, for a scene compared on its figures.
+    /// (`tactical_diameter_m`, or a vehicle's fin step's `step_2.roll_deg`); repeat for each,
+    /// for a scene compared on its figures.
     #[arg(long = "figure")]
     figures: Vec<String>,
-    /// Print JSON: {"target", "reference", "rows": [...], "recommended": {...}}.
+    /// Print JSON: {"target", "reference", "rows": [...], "recommended": {...}}, or for a
+    /// scene compared on its figures {"targets", "reference", "rows": [... "errors": {...}],
+    /// "recommended": {...}} (docs/tradeoff.md).
     #[arg(long)]
     json: bool,
 }
