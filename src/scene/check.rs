@@ -5,7 +5,7 @@
 //! methods of the same [`Checker`].
 
 use super::envelope::LinearTable;
-use super::{DEFAULT_MAX_STEPS, DEFAULT_TOLERANCE, Method, Problem, SceneError};
+use super::{DEFAULT_MAX_STEPS, DEFAULT_TOLERANCE, Method, Problem, SceneError, StopCondition};
 use crate::ParameterError;
 use crate::Short;
 use crate::integrate::AdaptiveOptions;
@@ -355,5 +355,40 @@ impl Checker<'_> {
             resolved.push(index);
         }
         Ok(names.to_vec())
+    }
+
+    /// `integrator.stop_when`, as any kind gives it (`text`), read against `names`, what its
+    /// trajectory.csv calls the columns of a row after `t` (before their units); refused where
+    /// it holds at one of `starts`, the rows its runs start from at t = 0 (each with where it
+    /// is, for the message: `""` for the one start of every run), since that run would end
+    /// before it begins.
+    pub(crate) fn stop_when<Name: AsRef<str>, Row: AsRef<[f64]>>(
+        &self,
+        text: Option<&str>,
+        names: &[Name],
+        starts: impl IntoIterator<Item = (String, Row)>,
+    ) -> Result<Option<StopCondition>, SceneError> {
+        let Some(text) = text else {
+            return Ok(None);
+        };
+        let key = "integrator.stop_when";
+        let names: Vec<String> = names.iter().map(|name| name.as_ref().to_owned()).collect();
+        let condition =
+            StopCondition::parse(text, &names).map_err(|message| self.invalid(key, message))?;
+        for (place, row) in starts {
+            let row = row.as_ref();
+            if condition.holds(0.0, row) {
+                let x = condition.index.map_or(0.0, |i| row[i]);
+                return Err(self.invalid(
+                    key,
+                    format!(
+                        "`{condition}` holds at the start{place} ({}), so the run would end \
+                         before it begins",
+                        Short(x)
+                    ),
+                ));
+            }
+        }
+        Ok(Some(condition))
     }
 }

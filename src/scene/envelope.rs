@@ -2,15 +2,13 @@
 //! `[model]` that names the family, the `[integrator]` and `[output]` of its manoeuvres, and a
 //! steering gear's table; and the `[linear]` table every scene may give. Each is read and
 //! checked here, once, so that a ship's rudder and a vehicle's fins are checked by one
-//! function and every kind's method by the checker of every scene's `[integrator]`. A kind's
-//! stop condition (`integrator.stop_when`) is read here too, against the names its
-//! trajectory.csv gives its columns, so that a condition means on a manoeuvre what it means on
-//! a catalog body's run: the first instant its row satisfies it.
+//! function and every kind's method by the checker of every scene's `[integrator]`. Its
+//! `stop_when` is read by the checker every kind reads it with (`check.rs`), against the names
+//! its trajectory.csv gives its columns, so that a condition means on a manoeuvre what it
+//! means on a catalog body's run: the first instant its row satisfies it.
 
 use super::check::{Checker, MethodKeys};
-use super::stop::StopCondition;
 use super::{Problem, SceneError};
-use crate::Short;
 use crate::integrate::{Method, Stepper};
 use crate::manoeuvring::Rudder;
 use serde::Deserialize;
@@ -157,40 +155,5 @@ impl Checker<'_> {
             kicked,
         };
         Ok((stepper, every))
-    }
-
-    /// `integrator.stop_when` of a kind's manoeuvres, read against `names`, what its
-    /// trajectory.csv calls the columns of a row after `t` (before their units); refused where
-    /// it holds at one of `starts`, the rows a manoeuvre starts from at t = 0 (each with where
-    /// it is, for the message: `""` for the one start of every manoeuvre), since that run
-    /// would end before it begins.
-    pub(crate) fn stop_when<Row: AsRef<[f64]>>(
-        &self,
-        integrator: &IntegratorTable,
-        names: &[&str],
-        starts: impl IntoIterator<Item = (String, Row)>,
-    ) -> Result<Option<StopCondition>, SceneError> {
-        let Some(text) = &integrator.stop_when else {
-            return Ok(None);
-        };
-        let key = "integrator.stop_when";
-        let names: Vec<String> = names.iter().map(|name| (*name).to_owned()).collect();
-        let condition =
-            StopCondition::parse(text, &names).map_err(|message| self.invalid(key, message))?;
-        for (place, row) in starts {
-            let row = row.as_ref();
-            if condition.holds(0.0, row) {
-                let x = condition.index.map_or(0.0, |i| row[i]);
-                return Err(self.invalid(
-                    key,
-                    format!(
-                        "`{condition}` holds at the start{place} ({}), so the run would end \
-                         before it begins",
-                        Short(x)
-                    ),
-                ));
-            }
-        }
-        Ok(Some(condition))
     }
 }

@@ -409,29 +409,11 @@ impl Checker<'_> {
         selection: &Selection,
         initial: &[f64],
     ) -> Result<Option<StopCondition>, SceneError> {
-        let Some(text) = &file.integrator.stop_when else {
-            return Ok(None);
-        };
-        let key = "integrator.stop_when";
-        let names: Vec<String> = selection
-            .info
-            .state
-            .iter()
-            .map(|s| s.to_lowercase())
+        let names: Vec<String> = (selection.info.state.iter())
+            .map(|name| name.to_lowercase())
             .collect();
-        let condition =
-            StopCondition::parse(text, &names).map_err(|message| self.invalid(key, message))?;
-        if condition.holds(0.0, initial) {
-            let x = condition.index.map_or(0.0, |i| initial[i]);
-            return Err(self.invalid(
-                key,
-                format!(
-                    "`{condition}` holds at the start ({}), so the run would end before it begins",
-                    Short(x)
-                ),
-            ));
-        }
-        Ok(Some(condition))
+        let starts = [(String::new(), initial)];
+        self.stop_when(file.integrator.stop_when.as_deref(), &names, starts)
     }
 
     pub(super) fn every(&self, file: &SceneFile, end_time: f64) -> Result<f64, SceneError> {

@@ -1002,7 +1002,11 @@ impl ShipScene {
         // at the origin, no distance run.
         let approach = ShipScene::approach_row(table.design_speed);
         let starts = [(String::new(), approach)];
-        let stop = check.stop_when(&file.integrator, &super::manoeuvre::ROW, starts)?;
+        let stop = check.stop_when(
+            file.integrator.stop_when.as_deref(),
+            &super::manoeuvre::ROW,
+            starts,
+        )?;
         let state = &super::model::STATE;
         let linear = check.linear(
             file.linear.as_ref(),

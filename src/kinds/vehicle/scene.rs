@@ -1199,7 +1199,7 @@ impl VehicleScene {
             let row = first_row(&fins, m, m.trim.state).row();
             (format!(" of manoeuvre `{}`", m.name), row)
         });
-        let stop = check.stop_when(&file.integrator, &ROW, starts)?;
+        let stop = check.stop_when(file.integrator.stop_when.as_deref(), &ROW, starts)?;
         let (names, body) = (&super::model::EULER_STATE, super::linear::BODY);
         let linear = check.linear(
             file.linear.as_ref(),
