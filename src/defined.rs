@@ -54,6 +54,8 @@ pub(crate) mod engine {
     pub use eom_codegen::derivation::vehicle::LOADS as VEHICLE_LOADS;
     pub use eom_codegen::emit::program::{Function, Node, Program};
     pub use eom_codegen::emit::{EmitError, F64Formula, Operations, prove_with_jacobians};
+    pub use eom_codegen::model::BuildError;
+    pub use eom_codegen::model::aircraft::{STATE as AIRCRAFT_STATE, aircraft};
     pub use eom_codegen::model::ship::{
         ADDED_MASS, Force, PRIME_SCALES, PROPULSION, ShipSpec, Term, Units, VARIABLES, YawInertia,
         ship,

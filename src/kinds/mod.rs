@@ -65,6 +65,8 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+#[cfg(feature = "ship")]
+pub mod aircraft;
 pub mod body;
 #[cfg(feature = "ship")]
 pub mod ship;

@@ -5,6 +5,7 @@
 //! makes zero are gone before emission, and every staged intermediate is checked to compose
 //! back to the proved form.
 
+pub mod aircraft;
 mod families;
 pub mod jacobian;
 pub mod ship;

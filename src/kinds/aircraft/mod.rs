@@ -1,0 +1,18 @@
+//! Aircraft on their aerodynamic tables: the other half of the chapter's 4.6, whose six
+//! equations are written "for aircraft and underwater robots".
+//!
+//! An aircraft's loads are coefficient tables in the angle of attack, the sideslip and the
+//! controls times the dynamic pressure, an engine with its own lag and rotor, in an
+//! atmosphere that changes with altitude. The model ([`model`]) is the proved program of
+//! `eom_codegen::model::aircraft`; what is not a polynomial (the lookups, the air, the
+//! engine's piecewise laws) is computed beside it and read as its inputs, with its slopes in
+//! the Jacobians.
+
+pub mod aero;
+pub mod atmosphere;
+pub mod engine;
+pub mod model;
+pub mod tables;
+pub mod trim;
+
+pub use model::{AircraftError, AircraftModel, Airframe, CONTROLS, STATE};

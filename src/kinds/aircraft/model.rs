@@ -1,0 +1,425 @@
+//! The aircraft model: the proved program of `eom_codegen::model::aircraft` (the rigid body
+//! about G with I_xz and the rotor, the wind-axis state, the aerodynamic build-up, the
+//! navigation and the power lag), evaluated by the one interpreter of proved programs
+//! (`crate::defined`), with its inputs computed beside it at every call: the coefficients
+//! from the tables ([`super::aero`]), the air ([`super::atmosphere`]), the thrust and the
+//! power lag ([`super::engine`]).
+//!
+//! The Jacobians are the proved ∂f/∂x and ∂f/∂(input) composed by the chain rule with the
+//! inputs' derivatives in the state (V, α, β, altitude, power) and the controls: the tables'
+//! segment slopes, the atmosphere's slopes, the thrust tables' and the lag's.
+
+use super::aero::{Flow, StevensLewisTables};
+use super::atmosphere::Atmosphere;
+use super::engine::{Engine, power_lag};
+use crate::defined::engine::{
+    AIRCRAFT_STATE, BuildError, Operations, aircraft, prove_with_jacobians,
+};
+use crate::defined::{Functions, Interpreter, Source, Variables, coefficient_values};
+use crate::inertia::InertiaTensor;
+use crate::models::Model;
+use std::collections::BTreeMap;
+use std::sync::OnceLock;
+use thiserror::Error;
+
+/// The state: airspeed (the source's length unit per second), angle of attack, sideslip,
+/// roll, pitch, heading (rad), body rates p, q, r (rad/s), north, east, altitude (length),
+/// the engine's power (percent).
+pub const STATE: [&str; 13] = AIRCRAFT_STATE;
+
+/// The controls: throttle (0 to 1), elevator, aileron, rudder (deg).
+pub const CONTROLS: [&str; 4] = ["throttle", "elevator", "aileron", "rudder"];
+
+/// What the inputs computed beside the program depend on, in this order.
+const DEPENDENCIES: usize = 9;
+/// Their places: V, α, β, altitude, power in the state; the four controls.
+const STATE_DEPENDENCIES: [(usize, usize); 5] = [(0, 0), (1, 1), (2, 2), (3, 11), (4, 12)];
+const INPUTS: usize = 19;
+
+/// Why an aircraft model cannot be built.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum AircraftError {
+    /// The symbolic engine could not build or prove the model.
+    #[error(transparent)]
+    Build(#[from] BuildError),
+    /// A number of the body that cannot be used.
+    #[error("`{field}`: {why}")]
+    Invalid {
+        /// The key.
+        field: String,
+        /// Why.
+        why: String,
+    },
+}
+
+/// The aircraft's body and geometry, in one consistent set of units.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Airframe {
+    /// The mass.
+    pub mass: f64,
+    /// The inertia tensor about G in body axes (the chapter's sign: the products are the
+    /// tensor's off-diagonal entries), symmetric about the xz-plane.
+    pub inertia: InertiaTensor,
+    /// Gravity.
+    pub gravity: f64,
+    /// Wing reference area S.
+    pub area: f64,
+    /// Span b.
+    pub span: f64,
+    /// Mean aerodynamic chord c̄.
+    pub chord: f64,
+    /// The aerodynamic reference point (where the moment tables are given) from G, in body
+    /// axes (x forward).
+    pub reference_point: [f64; 3],
+    /// The engine rotor's angular momentum along body x.
+    pub rotor_momentum: f64,
+}
+
+impl Airframe {
+    /// The aerodynamic reference point from G when G and the reference lie along the chord
+    /// at fractions `xcg` and `xcg_reference` of c̄ aft of its leading edge (Stevens &
+    /// Lewis's x_cg): (x_cg − x_cg,ref)·c̄ forward of G.
+    pub fn reference_from_chord(chord: f64, xcg: f64, xcg_reference: f64) -> [f64; 3] {
+        [(xcg - xcg_reference) * chord, 0.0, 0.0]
+    }
+
+    fn parameters(&self) -> Result<BTreeMap<String, f64>, AircraftError> {
+        let tensor = self.inertia.matrix();
+        if tensor[(0, 1)] != 0.0 || tensor[(1, 2)] != 0.0 {
+            return Err(AircraftError::Invalid {
+                field: "body.products_of_inertia".into(),
+                why: "an aircraft is symmetric about its xz-plane: I_xy and I_yz must be 0".into(),
+            });
+        }
+        let values = [
+            ("M", self.mass, "body.mass"),
+            ("Ixx", tensor[(0, 0)], "body.inertia"),
+            ("Iyy", tensor[(1, 1)], "body.inertia"),
+            ("Izz", tensor[(2, 2)], "body.inertia"),
+            ("Ixz", tensor[(0, 2)], "body.products_of_inertia"),
+            ("g", self.gravity, "body.gravity"),
+            ("S", self.area, "geometry.area"),
+            ("b", self.span, "geometry.span"),
+            ("cbar", self.chord, "geometry.chord"),
+            ("x_ref", self.reference_point[0], "geometry.reference_point"),
+            ("y_ref", self.reference_point[1], "geometry.reference_point"),
+            ("z_ref", self.reference_point[2], "geometry.reference_point"),
+            ("h_E", self.rotor_momentum, "engine.rotor_momentum"),
+        ];
+        for (_, value, field) in values {
+            if !value.is_finite() {
+                return Err(AircraftError::Invalid {
+                    field: field.into(),
+                    why: format!("{value} is not finite"),
+                });
+            }
+        }
+        for (value, field) in [
+            (self.mass, "body.mass"),
+            (self.gravity, "body.gravity"),
+            (self.area, "geometry.area"),
+            (self.span, "geometry.span"),
+            (self.chord, "geometry.chord"),
+        ] {
+            if value <= 0.0 {
+                return Err(AircraftError::Invalid {
+                    field: field.into(),
+                    why: format!("must be positive, not {value}"),
+                });
+            }
+        }
+        Ok(values
+            .iter()
+            .map(|(symbol, value, _)| (symbol.to_string(), *value))
+            .collect())
+    }
+}
+
+/// The aircraft's proved program, built and proved once per process (it does not depend on
+/// the numbers).
+struct Proved {
+    system: crate::defined::engine::System,
+    program: crate::defined::engine::Program,
+}
+
+fn proved() -> Result<&'static Proved, AircraftError> {
+    static PROVED: OnceLock<Result<Proved, AircraftError>> = OnceLock::new();
+    PROVED
+        .get_or_init(|| {
+            let system = aircraft("aircraft")?;
+            let program = prove_with_jacobians(&system).map_err(|e| AircraftError::Invalid {
+                field: "model".into(),
+                why: e.to_string(),
+            })?;
+            Ok(Proved { system, program })
+        })
+        .as_ref()
+        .map_err(Clone::clone)
+}
+
+/// An aircraft on the Stevens & Lewis form of tables, ready to evaluate.
+#[derive(Debug, Clone)]
+pub struct AircraftModel {
+    program: Interpreter,
+    functions: Functions,
+    tables: StevensLewisTables,
+    engine: Engine,
+    atmosphere: Atmosphere,
+    gravity: f64,
+    operations: Operations,
+}
+
+/// The inputs the program reads, computed beside it, with their derivatives in
+/// (V, α, β, altitude, power, throttle, elevator, aileron, rudder).
+struct Beside {
+    values: [f64; INPUTS],
+    by: [[f64; DEPENDENCIES]; INPUTS],
+}
+
+impl AircraftModel {
+    /// The model of `airframe` on `tables`, with its `engine` in `atmosphere`: the proved
+    /// program with the airframe's numbers hoisted.
+    pub fn new(
+        airframe: &Airframe,
+        tables: StevensLewisTables,
+        engine: Engine,
+        atmosphere: Atmosphere,
+    ) -> Result<Self, AircraftError> {
+        let proved = proved()?;
+        let values = airframe.parameters()?;
+        let coefficients = coefficient_values(&proved.system, &proved.program, &values);
+        if let Some((c, _)) = (proved.program.coefficients.iter())
+            .zip(&coefficients)
+            .find(|(_, v)| !v.is_finite())
+        {
+            return Err(AircraftError::Invalid {
+                field: "body".into(),
+                why: format!("the coefficient `{}` is not finite", c.value),
+            });
+        }
+        let inputs = &proved.system.inputs;
+        let place = |name: &str| {
+            if let Some(i) = STATE.iter().position(|s| *s == name) {
+                return Some(Source::State(i));
+            }
+            inputs.iter().position(|s| *s == name).map(Source::Computed)
+        };
+        let program = Interpreter::new(&proved.program, &coefficients, place).map_err(|name| {
+            AircraftError::Invalid {
+                field: "model".into(),
+                why: format!("the program reads `{name}`, which nothing sets"),
+            }
+        })?;
+        let functions = Functions::of(&proved.program)
+            .map_err(|what| AircraftError::Invalid {
+                field: "model".into(),
+                why: format!("the program has no {what}"),
+            })?
+            .compile(&program);
+        Ok(AircraftModel {
+            operations: proved.program.operations(&proved.program.rhs),
+            program,
+            functions,
+            tables,
+            engine,
+            atmosphere,
+            gravity: airframe.gravity,
+        })
+    }
+
+    /// What one call of the proved right-hand side costs, as the emitter counts it.
+    pub fn operations(&self) -> Operations {
+        self.operations
+    }
+
+    /// Gravity, as the airframe gives it.
+    pub fn gravity(&self) -> f64 {
+        self.gravity
+    }
+
+    /// The atmosphere the model flies in.
+    pub fn atmosphere(&self) -> Atmosphere {
+        self.atmosphere
+    }
+
+    /// The program's inputs at `state` under `controls`, with their derivatives. Outside the
+    /// atmosphere the air is NaN, and so are the rates: a run's guard says where.
+    fn beside(&self, state: &[f64; 13], controls: &[f64; 4]) -> Beside {
+        let mut values = [0.0; INPUTS];
+        let mut by = [[0.0; DEPENDENCIES]; INPUTS];
+        let flow = Flow {
+            alpha: state[1],
+            beta: state[2],
+            elevator: controls[1],
+            aileron: controls[2],
+            rudder: controls[3],
+        };
+        // The coefficients depend on α, β (dependencies 1, 2) and the surfaces (6, 7, 8).
+        for (k, c) in self.tables.coefficients(&flow).iter().enumerate() {
+            values[k] = c.value;
+            for (slot, derivative) in [1, 2, 6, 7, 8].into_iter().zip(c.by) {
+                by[k][slot] = derivative;
+            }
+        }
+        let (speed, altitude, power) = (state[0], state[11], state[12]);
+        let nan = super::atmosphere::Air {
+            density: f64::NAN,
+            density_by_altitude: f64::NAN,
+            speed_of_sound: f64::NAN,
+            sound_by_altitude: f64::NAN,
+        };
+        let air = self.atmosphere.at(altitude).unwrap_or(nan);
+        values[15] = air.density;
+        by[15][3] = air.density_by_altitude;
+        let mach = speed / air.speed_of_sound;
+        let mach_by_speed = 1.0 / air.speed_of_sound;
+        let mach_by_altitude = -mach / air.speed_of_sound * air.sound_by_altitude;
+        let thrust = self.engine.thrust(power, altitude, mach);
+        values[16] = thrust.value;
+        by[16][0] = thrust.by_mach * mach_by_speed;
+        by[16][3] = thrust.by_altitude + thrust.by_mach * mach_by_altitude;
+        by[16][4] = thrust.by_power;
+        let lag = power_lag(power, controls[0]);
+        values[17] = lag.command;
+        by[17][4] = lag.command_by_power;
+        by[17][5] = lag.command_by_throttle;
+        values[18] = lag.gain;
+        by[18][4] = lag.gain_by_power;
+        by[18][5] = lag.gain_by_throttle;
+        Beside { values, by }
+    }
+
+    /// The rates of `state` under `controls`.
+    pub fn rates(&self, state: &[f64; 13], controls: &[f64; 4]) -> [f64; 13] {
+        let beside = self.beside(state, controls);
+        let mut rates = [0.0; 13];
+        let variables = Variables {
+            state,
+            computed: &beside.values,
+        };
+        (self.program).evaluate_into(&self.functions.rhs, variables, &mut rates);
+        rates
+    }
+
+    /// ∂f/∂x and ∂f/∂(controls): the proved Jacobians composed with the inputs' slopes.
+    pub fn jacobians(
+        &self,
+        state: &[f64; 13],
+        controls: &[f64; 4],
+    ) -> ([[f64; 13]; 13], [[f64; 4]; 13]) {
+        let beside = self.beside(state, controls);
+        let variables = Variables {
+            state,
+            computed: &beside.values,
+        };
+        let mut by_state = [[0.0; 13]; 13];
+        let entries = self
+            .program
+            .evaluate(&self.functions.state_jacobian, variables);
+        for (&(row, column), value) in self.functions.state_pattern.iter().zip(entries) {
+            by_state[row][column] += value;
+        }
+        let mut by_controls = [[0.0; 4]; 13];
+        let entries = self
+            .program
+            .evaluate(&self.functions.input_jacobian, variables);
+        for (&(row, input), value) in self.functions.input_pattern.iter().zip(entries) {
+            let slopes = &beside.by[input];
+            for (dependency, column) in STATE_DEPENDENCIES {
+                by_state[row][column] += value * slopes[dependency];
+            }
+            for (control, slot) in by_controls[row].iter_mut().enumerate() {
+                *slot += value * slopes[5 + control];
+            }
+        }
+        (by_state, by_controls)
+    }
+
+    /// The kinetic energy ½MV² + ½ωᵀ[I]ω of `state`, from the proved form.
+    pub fn kinetic_energy(&self, state: &[f64; 13]) -> f64 {
+        let beside = [0.0; INPUTS];
+        let variables = Variables {
+            state,
+            computed: &beside,
+        };
+        let plan = &self.functions.kinetic_energy;
+        self.program.evaluate(plan, variables).next().unwrap_or(0.0)
+    }
+}
+
+/// Where the rates can depend on the state: the dynamics and the attitude on all but the
+/// position north and east; the track on V, α, β and the attitude; the power on itself.
+const STATE_JACOBIAN: [(usize, usize); 9 * 11 + 3 * 6 + 1] = state_pattern();
+
+const fn state_pattern() -> [(usize, usize); 118] {
+    let mut entries = [(0, 0); 118];
+    let mut k = 0;
+    let mut row = 0;
+    while row < 13 {
+        let mut column = 0;
+        while column < 13 {
+            let depends = if row < 9 {
+                column != 9 && column != 10
+            } else if row < 12 {
+                column < 6
+            } else {
+                column == 12
+            };
+            if depends {
+                entries[k] = (row, column);
+                k += 1;
+            }
+            column += 1;
+        }
+        row += 1;
+    }
+    entries
+}
+
+/// The surfaces act on the forces and moments; the throttle on the power's rate.
+const INPUT_JACOBIAN: [(usize, usize); 19] = [
+    (0, 1),
+    (0, 2),
+    (0, 3),
+    (1, 1),
+    (1, 2),
+    (1, 3),
+    (2, 1),
+    (2, 2),
+    (2, 3),
+    (6, 1),
+    (6, 2),
+    (6, 3),
+    (7, 1),
+    (7, 2),
+    (7, 3),
+    (8, 1),
+    (8, 2),
+    (8, 3),
+    (12, 0),
+];
+
+/// The aircraft as a model like the catalog's, in f64 (the tables are looked up per call).
+impl Model<f64, 13, 4> for AircraftModel {
+    const NAME: &'static str = "aircraft";
+    const STATE: [&'static str; 13] = STATE;
+    const INPUTS: [&'static str; 4] = CONTROLS;
+    const STATE_JACOBIAN: &'static [(usize, usize)] = &STATE_JACOBIAN;
+    const INPUT_JACOBIAN: &'static [(usize, usize)] = &INPUT_JACOBIAN;
+
+    fn rhs(&self, state: &[f64; 13], input: &[f64; 4]) -> [f64; 13] {
+        self.rates(state, input)
+    }
+
+    fn kinetic_energy(&self, state: &[f64; 13]) -> f64 {
+        AircraftModel::kinetic_energy(self, state)
+    }
+
+    fn state_jacobian(&self, state: &[f64; 13], input: &[f64; 4]) -> [[f64; 13]; 13] {
+        self.jacobians(state, input).0
+    }
+
+    fn input_jacobian(&self, state: &[f64; 13], input: &[f64; 4]) -> [[f64; 4]; 13] {
+        self.jacobians(state, input).1
+    }
+}
