@@ -38,8 +38,8 @@ fn scene() -> BodyScene {
 /// The scene through the driver, rows into a CSV file.
 fn driver(scene: &BodyScene, out: &Path) -> f64 {
     let names = scene.state_names();
-    let mut writer =
-        TrajectoryWriter::create(out, &names, false, STEPS / ROWS_EVERY + 1).expect("a CSV file");
+    let mut writer = TrajectoryWriter::create(out, &names, (false, "J"), STEPS / ROWS_EVERY + 1)
+        .expect("a CSV file");
     let clock = Instant::now();
     let report = run(scene, &mut writer).expect("the run completes");
     writer.finish().expect("the CSV is written");

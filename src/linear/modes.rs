@@ -125,6 +125,11 @@ pub enum Naming {
     Family(Family),
     /// The planes of motion of a body moving in six degrees of freedom.
     Planes,
+    /// The modes as flight-dynamics texts name them, for a state in wind axes (`vt`,
+    /// `alpha`, `beta`, the Euler angles, `p`, `q`, `r`, `altitude`, `power`): the short
+    /// period and the phugoid, the Dutch roll, the roll subsidence and the spiral, the power
+    /// lag and the height mode.
+    Flight,
 }
 
 /// The eigenvalues of `a`, sorted (largest real part first, then by imaginary part), its
@@ -153,6 +158,7 @@ pub fn modes(
                 mode.name = plane_of_motion(mode);
             }
         }
+        Naming::Flight => name_flight_modes(&mut modes, a, names, radius),
     }
     let stability = if eigenvalues.iter().any(|l| l.re > tolerance) {
         Stability::Unstable
@@ -299,6 +305,66 @@ fn plane_of_motion(mode: &Mode) -> Option<&'static str> {
         .find(|(_, states)| (mode.dominant.iter()).all(|d| states.contains(&d.as_str())))
         .filter(|_| moving && !mode.dominant.is_empty())
         .map(|(name, _)| *name)
+}
+
+/// The modes of a state in wind axes, as flight-dynamics texts name them, each classed by its
+/// eigenvector: a mode of the engine's power (the only one with a power component, the power's
+/// rate reading nothing else) is its lag; the others are lateral-directional where their
+/// share of β, φ, p, r (rad, rad/s) exceeds their share of α, θ, q, longitudinal otherwise.
+/// A lateral oscillation is the Dutch roll; of the real lateral modes the fastest is the roll
+/// subsidence, the slowest the spiral. A longitudinal oscillation in which α moves as much as
+/// θ (|α| ≥ 0.3 |θ|) is the short period; one at nearly constant α, trading speed and height,
+/// the phugoid; a real longitudinal mode with α moving so is the short period split into two
+/// real roots (an aircraft that is statically unstable, or nearly); a slow one (|λ| below
+/// 0.01/s, hundreds of seconds) mostly of the altitude is the height mode (the air's density
+/// changing with it), and another, at nearly constant α, the phugoid become real (at an
+/// aft centre of gravity the phugoid's pair splits and one root may grow).
+fn name_flight_modes(modes: &mut [Mode], a: &DMatrix<f64>, names: &[String], radius: f64) {
+    let index = |name: &str| names.iter().position(|n| n == name);
+    let share = |v: &DVector<Complex<f64>>, set: &[&str]| -> f64 {
+        set.iter()
+            .filter_map(|n| index(n))
+            .map(|i| v[i].norm())
+            .sum()
+    };
+    let entry = |v: &DVector<Complex<f64>>, name: &str| index(name).map_or(0.0, |i| v[i].norm());
+    let mut lateral_real: Vec<usize> = Vec::new();
+    for (i, mode) in modes.iter_mut().enumerate() {
+        if mode.damping_ratio.is_none() {
+            continue;
+        }
+        let v = eigenvector(a, mode.eigenvalue, radius);
+        let oscillates = mode.eigenvalue.im > 0.0;
+        let lateral = share(&v, &["beta", "phi", "p", "r"]);
+        let longitudinal = share(&v, &["alpha", "theta", "q"]);
+        let pitching = entry(&v, "alpha") >= 0.3 * entry(&v, "theta");
+        let largest = v.iter().fold(0.0f64, |m, x| m.max(x.norm()));
+        mode.name = if entry(&v, "power") > 1e-6 * largest {
+            Some("power lag")
+        } else if lateral > longitudinal {
+            if oscillates {
+                Some("Dutch roll")
+            } else {
+                lateral_real.push(i);
+                None
+            }
+        } else if oscillates {
+            Some(if pitching { "short period" } else { "phugoid" })
+        } else if pitching {
+            Some("short period, aperiodic")
+        } else if entry(&v, "altitude") == largest && mode.eigenvalue.norm() < 0.01 {
+            Some("height")
+        } else {
+            Some("phugoid, aperiodic")
+        };
+    }
+    lateral_real.sort_by(|&i, &j| modes[i].eigenvalue.re.total_cmp(&modes[j].eigenvalue.re));
+    if let (Some(&fastest), Some(&slowest)) = (lateral_real.first(), lateral_real.last()) {
+        modes[fastest].name = Some("roll subsidence");
+        if slowest != fastest {
+            modes[slowest].name = Some("spiral");
+        }
+    }
 }
 
 /// Names the modes where the family knows them.

@@ -37,6 +37,12 @@ pub trait LinearPlant {
     fn pattern(&self) -> Vec<(usize, usize)>;
     /// How A and B are obtained, in words, as the outputs say it.
     fn jacobians(&self) -> &'static str;
+    /// The units of its state entries and inputs where they are not the SI units their names
+    /// have everywhere else ([`crate::models::state_unit`]): a model in a scene's own units
+    /// (an aircraft in feet) says them here, by name.
+    fn units(&self) -> Vec<(&'static str, &'static str)> {
+        Vec::new()
+    }
 }
 
 /// The rates, A = ∂f/∂x (loads included) and B = ∂f/∂u at one point.

@@ -102,9 +102,22 @@ pub struct Linearisation {
     pub growth_tolerance: f64,
     /// What was done that the scene did not say (a quaternion top linearised in Euler angles).
     pub note: Option<String>,
+    /// The units of the state entries and inputs, by name, where the plant gives its own
+    /// ([`LinearPlant::units`]); the others have their names' SI units.
+    pub units: Vec<(&'static str, &'static str)>,
 }
 
 impl Linearisation {
+    /// The unit of the state entry or input `name`: the plant's own, else its name's SI unit
+    /// (`input` for an input).
+    pub fn unit(&self, name: &str, input: bool) -> Option<&'static str> {
+        match self.units.iter().find(|(n, _)| *n == name) {
+            Some((_, unit)) => Some(unit),
+            None if input => crate::models::input_unit(name),
+            None => crate::models::state_unit(name),
+        }
+    }
+
     /// The names of the reduced state.
     pub fn reduced_names(&self) -> Vec<&'static str> {
         self.reduced.iter().map(|&i| self.state_names[i]).collect()
@@ -251,6 +264,7 @@ pub fn linearise(
         set_aside_why,
         outputs,
         jacobians: plant.jacobians(),
+        units: plant.units(),
         residual,
         trimmed,
         a,

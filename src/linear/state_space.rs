@@ -12,7 +12,6 @@
 //! (ryu), the MAT-file the eight bytes themselves.
 
 use super::Linearisation;
-use crate::models::{input_unit, state_unit};
 use crate::output::mat::MatValue;
 use nalgebra::DMatrix;
 use serde::{Serialize, Serializer};
@@ -68,8 +67,11 @@ impl StateSpace {
     pub fn new(scene: &str, title: &str, linear: &Linearisation) -> Self {
         let x_names = linear.reduced_names();
         let y_names = linear.output_names();
-        let units = |names: &[&str], unit: fn(&str) -> Option<&'static str>| {
-            names.iter().map(|name| unit(name)).collect::<Vec<_>>()
+        let units = |names: &[&str], input: bool| {
+            names
+                .iter()
+                .map(|name| linear.unit(name, input))
+                .collect::<Vec<_>>()
         };
         StateSpace {
             scene: scene.to_owned(),
@@ -78,9 +80,9 @@ impl StateSpace {
             b: linear.b.clone(),
             c: linear.c(),
             d: linear.d(),
-            x_units: units(&x_names, state_unit),
-            u_units: units(&linear.input_names, input_unit),
-            y_units: units(&y_names, state_unit),
+            x_units: units(&x_names, false),
+            u_units: units(&linear.input_names, true),
+            y_units: units(&y_names, false),
             x_names,
             u_names: linear.input_names.clone(),
             y_names,

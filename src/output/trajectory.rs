@@ -72,11 +72,11 @@ impl TrajectoryWriter {
     pub fn create(
         path: &Path,
         state_names: &[String],
-        with_potential: bool,
+        (with_potential, energy_unit): (bool, &str),
         expected_rows: usize,
     ) -> std::io::Result<Self> {
         let mut file = File::create(path)?;
-        let header = header(state_names, with_potential);
+        let header = header_in(state_names, with_potential, energy_unit);
         file.write_all(format!("{}\n", header.join(",")).as_bytes())?;
         Ok(Self {
             path: path.to_owned(),
@@ -205,15 +205,27 @@ impl Sink for TrajectoryWriter {
 /// entry by its name, `kinetic_energy`, and `potential_energy`, `total_energy` where
 /// `with_potential`, each with its unit.
 pub fn header(state_names: &[impl AsRef<str>], with_potential: bool) -> Vec<String> {
+    header_in(state_names, with_potential, ENERGY_UNIT)
+}
+
+/// [`header`] with the energies in `energy_unit`; a state name that already says its unit
+/// (`vt[ft/s]`, a model in a scene's own units) is written as given.
+pub fn header_in(
+    state_names: &[impl AsRef<str>],
+    with_potential: bool,
+    energy_unit: &str,
+) -> Vec<String> {
     let mut header = vec![with_unit("t", TIME_UNIT)];
-    header.extend(
-        state_names
-            .iter()
-            .map(|name| state_with_unit(name.as_ref())),
-    );
-    header.push(with_unit("kinetic_energy", ENERGY_UNIT));
+    header.extend(state_names.iter().map(|name| {
+        let name = name.as_ref();
+        match name.contains('[') {
+            true => name.to_owned(),
+            false => state_with_unit(name),
+        }
+    }));
+    header.push(with_unit("kinetic_energy", energy_unit));
     if with_potential {
-        header.extend(["potential_energy", "total_energy"].map(|n| with_unit(n, ENERGY_UNIT)));
+        header.extend(["potential_energy", "total_energy"].map(|n| with_unit(n, energy_unit)));
     }
     header
 }
@@ -246,7 +258,8 @@ mod tests {
     fn the_kept_columns_end_at_the_last_row_written() {
         let path = std::env::temp_dir().join(format!("eom-kept-{}.csv", std::process::id()));
         let names = ["theta".to_owned(), "theta_dot".to_owned()];
-        let mut writer = TrajectoryWriter::create(&path, &names, false, 100_000_000).unwrap();
+        let mut writer =
+            TrajectoryWriter::create(&path, &names, (false, "J"), 100_000_000).unwrap();
         assert_eq!(writer.stride, 500);
         for k in 0..300 {
             let state = [k as f64, 0.0];

@@ -27,6 +27,8 @@ pub struct RunStart<'a> {
     /// Whether its rows carry a potential energy ([`Row::potential_energy`]): the trajectory
     /// then has the potential and total energy columns after the kinetic.
     pub potential: bool,
+    /// The energies' unit: `J`, or the scene's own (an aircraft in feet: `ft lbf`).
+    pub energy_unit: &'a str,
 }
 
 /// What a scene's runs hand their rows to, run after run.

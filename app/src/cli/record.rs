@@ -97,9 +97,13 @@ impl Recorder for FolderRecorder<'_> {
         if run.path.is_empty() {
             self.written.push(file.clone());
         }
-        let mut writer =
-            TrajectoryWriter::create(&file, run.columns, run.potential, run.expected_rows)
-                .with_context(|| format!("creating {}", file.display()))?;
+        let mut writer = TrajectoryWriter::create(
+            &file,
+            run.columns,
+            (run.potential, run.energy_unit),
+            run.expected_rows,
+        )
+        .with_context(|| format!("creating {}", file.display()))?;
         if self.progress {
             writer.on_row(progress_bar(run.end_time));
         }

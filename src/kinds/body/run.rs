@@ -102,6 +102,7 @@ pub(super) fn run_body<'a>(
         expected_rows: (scene.integrator.end_time / scene.every) as usize + 1,
         end_time: scene.integrator.end_time,
         potential: has_potential(scene),
+        energy_unit: crate::models::ENERGY_UNIT,
     };
     recorder.begin(start).map_err(KindError::Output)?;
     let mut recording = Recording {

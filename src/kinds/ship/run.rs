@@ -360,6 +360,7 @@ fn run_manoeuvre(
         expected_rows,
         end_time: manoeuvre.duration,
         potential: false,
+        energy_unit: crate::models::ENERGY_UNIT,
     };
     recorder.begin(start).map_err(not_recorded)?;
     let settings = (&scene.stepper, scene.every);

@@ -138,6 +138,7 @@ fn run_manoeuvre(
         expected_rows,
         end_time: manoeuvre.duration,
         potential: false,
+        energy_unit: crate::models::ENERGY_UNIT,
     };
     recorder
         .begin(start)

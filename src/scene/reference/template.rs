@@ -32,10 +32,18 @@ pub fn template(family: SceneFamily) -> String {
     out
 }
 
+/// The article before `name`: `An` before a vowel (an aircraft), `A` otherwise.
+fn article(name: &str) -> &'static str {
+    match name.chars().next() {
+        Some('a' | 'e' | 'i' | 'o' | 'u') => "An",
+        _ => "A",
+    }
+}
+
 /// What the file is, and the conventions every key follows.
 fn preamble(family: SceneFamily) -> String {
     let text = format!(
-        "A {name} scene, as `eom new {name}` writes it. {doc} Every key a {name} scene takes \
+        "{a} {name} scene, as `eom new {name}` writes it. {doc} Every key {a_lower} {name} scene takes \
          is here, each with what it means, its unit, its axes where it is a vector, its \
          default and whether it is required; a key shown commented out is an alternative or \
          an option this run does not use, and a key left out takes its default. Angles are in \
@@ -44,6 +52,8 @@ fn preamble(family: SceneFamily) -> String {
          (`eom new --reference`).",
         name = family.name(),
         doc = family.doc(),
+        a = article(family.name()),
+        a_lower = article(family.name()).to_lowercase(),
     );
     comment(&text)
 }
