@@ -353,3 +353,195 @@ fn the_f16_modes_at_502_ft_s_are_the_books() {
     close(lateral[2], Complex::new(-0.4399, 3.220), 1e-3);
     close(lateral[3], Complex::new(-0.0128, 0.0), 5e-3);
 }
+
+/// `scenes/f16.toml` holds the data file's numbers bit for bit: every table, the engine, the
+/// mass properties and the geometry (the 3rd edition's rolling moment; the products of
+/// inertia in the chapter's sign, −J_xz).
+#[test]
+fn the_f16_scene_holds_the_published_data_bit_for_bit() {
+    let d = data();
+    let scene: toml::Table = toml::from_str(
+        &std::fs::read_to_string(
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/f16.toml"),
+        )
+        .unwrap(),
+    )
+    .unwrap();
+    let s = serde_json::to_value(&scene).unwrap();
+    let same = |path: &str, got: &Value, want: &Value| {
+        let (got, want) = (flatten(got), flatten(want));
+        assert_eq!(got.len(), want.len(), "{path}");
+        for (g, w) in got.iter().zip(&want) {
+            assert_eq!(g.to_bits(), w.to_bits(), "{path}: {g} vs {w}");
+        }
+    };
+    let t = &d["aerodynamics"]["tables"];
+    let a = &s["aerodynamics"];
+    for (ours, theirs, second) in [
+        ("cx", "Cx", "elevator_deg"),
+        ("cm", "Cm", "elevator_deg"),
+        ("cl", "Cl_3rd_edition", "beta_abs_deg"),
+        ("cn", "Cn", "beta_abs_deg"),
+        ("dlda", "dlda", "beta_deg"),
+        ("dldr", "dldr", "beta_deg"),
+        ("dnda", "dnda", "beta_deg"),
+        ("dndr", "dndr", "beta_deg"),
+    ] {
+        for key in ["alpha_deg", second, "values"] {
+            same(&format!("{ours}.{key}"), &a[ours][key], &t[theirs][key]);
+        }
+    }
+    same("cz.alpha_deg", &a["cz"]["alpha_deg"], &t["Cz"]["alpha_deg"]);
+    same("cz.values", &a["cz"]["values"], &t["Cz"]["values"]);
+    for key in [
+        "alpha_deg",
+        "CXq",
+        "CYr",
+        "CYp",
+        "CZq",
+        "Clr",
+        "Clp",
+        "Cmq",
+        "Cnr",
+        "Cnp",
+    ] {
+        same(key, &a["damping"][key], &t["damping"][key]);
+    }
+    let e = &d["engine"]["thrust"];
+    same(
+        "engine.altitude",
+        &s["engine"]["altitude"],
+        &e["altitude_ft"],
+    );
+    same("engine.mach", &s["engine"]["mach"], &e["mach"]);
+    for level in ["idle", "military", "maximum"] {
+        same(level, &s["engine"][level], &e[level]["values"]);
+    }
+    let m = &d["mass_properties"];
+    let g = &d["geometry"];
+    let pairs = [
+        (&s["body"]["mass"], &m["mass"]["value"]),
+        (&s["body"]["gravity"], &m["g"]["value"]),
+        (&s["body"]["inertia"][0], &m["Ixx"]["value"]),
+        (&s["body"]["inertia"][1], &m["Iyy"]["value"]),
+        (&s["body"]["inertia"][2], &m["Izz"]["value"]),
+        (&s["geometry"]["area"], &g["S"]["value"]),
+        (&s["geometry"]["span"], &g["b"]["value"]),
+        (&s["geometry"]["chord"], &g["cbar"]["value"]),
+        (&s["geometry"]["xcg_reference"], &g["xcg_ref"]["value"]),
+        (
+            &s["engine"]["rotor_momentum"],
+            &g["engine_angular_momentum"]["he"],
+        ),
+    ];
+    for (ours, theirs) in pairs {
+        same("body and geometry", ours, theirs);
+    }
+    let ixz = number(&s["body"]["products_of_inertia"][2]);
+    assert_eq!(ixz.to_bits(), (-number(&m["Ixz"]["value"])).to_bits());
+    // The mass is the code's 1/m = 1.57e-3 slug⁻¹, to the last bit.
+    assert_eq!(
+        1.0 / number(&s["body"]["mass"]),
+        number(&m["inverse_mass"]["value"])
+    );
+}
+
+fn number(v: &Value) -> f64 {
+    v.as_f64().unwrap()
+}
+
+/// Every number of a value, in order (an array of arrays flattened).
+fn flatten(v: &Value) -> Vec<f64> {
+    match v {
+        Value::Array(items) => items.iter().flat_map(flatten).collect(),
+        other => vec![other.as_f64().unwrap_or_else(|| panic!("{other}"))],
+    }
+}
+
+/// A steady climb and a steady pull-up trim to their conditions: in the climb θ − α is the
+/// flight-path angle (wings level, no sideslip), in the pull-up q is the rate asked and θ = α
+/// at the instant; each with its accelerations below 1e-10.
+#[test]
+fn the_f16_trims_a_climb_and_a_pull_up() {
+    let model = f16(0.35);
+    let climb = Condition {
+        climb_angle: 0.1,
+        ..Condition::level(502.0, 10_000.0)
+    };
+    let trimmed = trim(&model, &climb, &limits()).unwrap();
+    assert!(trimmed.residual < 1e-10);
+    assert!((trimmed.state[4] - trimmed.state[1] - 0.1).abs() < 1e-12);
+    let rates = model.rates(&trimmed.state, &trimmed.controls);
+    // The altitude rises at V sin γ.
+    assert!(
+        (rates[11] - 502.0 * 0.1f64.sin()).abs() < 1e-9,
+        "{}",
+        rates[11]
+    );
+    let pull_up = Condition {
+        pull_up_rate: 0.1,
+        ..Condition::level(502.0, 0.0)
+    };
+    let trimmed = trim(&model, &pull_up, &limits()).unwrap();
+    assert!(trimmed.residual < 1e-10);
+    assert_eq!(trimmed.state[7], 0.1);
+    assert_eq!(trimmed.state[4], trimmed.state[1]);
+    // Pulling up at 0.1 rad/s at 502 ft/s: the specific force normal to the path is
+    // g + qV (the path turns at q), along it zero (V̇ = 0, γ = 0), so the body's load factor
+    // is (1 + qV/g) cos α, 2.54 g here: to within what the trim leaves of α̇ (its residual,
+    // which moves it by V·residual/g) and the sideslip's second order: the rotor's gyroscopic
+    // moment h_E q is trimmed with the aileron, the rudder and β = 1.6e-5 rad, n·β² = 6e-10.
+    let n = eom::kinds::aircraft::manoeuvre::load_factor(
+        &model,
+        &trimmed.state,
+        &model.rates(&trimmed.state, &trimmed.controls),
+    );
+    let expected = (1.0 + 0.1 * 502.0 / 32.17) * trimmed.state[1].cos();
+    let beta = trimmed.state[2];
+    assert!(beta.abs() < 1e-4, "{beta}");
+    let allowed = 502.0 * trimmed.residual / 32.17 + expected * beta * beta;
+    assert!(
+        (n - expected).abs() < allowed,
+        "{n} vs {expected}, β {beta}"
+    );
+}
+
+/// A condition the F-16 cannot fly is refused, naming what it would take: a 0.5 rad climb at
+/// 502 ft/s at 30 000 ft needs throttle 1.153, level flight at 120 ft/s an α of 51.2°, past
+/// the tables' 45°. (At 150 ft/s it trims at α = 34.56° and throttle 0.6188, Table 3.6-2's
+/// 34.6° and 0.619.)
+#[test]
+fn a_trim_the_f16_cannot_meet_names_what_it_would_take() {
+    use eom::kinds::aircraft::trim::TrimError;
+    let model = f16(0.35);
+    let climb = Condition {
+        climb_angle: 0.5,
+        ..Condition::level(502.0, 30_000.0)
+    };
+    match trim(&model, &climb, &limits()) {
+        Err(TrimError::Throttle { throttle }) => {
+            assert!((throttle - 1.1527).abs() < 1e-4, "{throttle}")
+        }
+        other => panic!("{other:?}"),
+    }
+    match trim(&model, &Condition::level(120.0, 0.0), &limits()) {
+        Err(refused @ TrimError::Alpha { alpha_deg, .. }) => {
+            assert!((alpha_deg - 51.23).abs() < 0.01, "{alpha_deg}");
+            assert!(
+                refused
+                    .to_string()
+                    .contains("beyond the tables' -10° to 45°"),
+                "{refused}"
+            );
+        }
+        other => panic!("{other:?}"),
+    }
+    let slow = trim(&model, &Condition::level(150.0, 0.0), &limits()).unwrap();
+    assert!((slow.state[1].to_degrees() - 34.6).abs() < 0.05);
+    assert!((slow.controls[0] - 0.619).abs() < 0.0005);
+    let refused = trim(&model, &Condition::level(0.0, 0.0), &limits()).unwrap_err();
+    assert!(
+        refused.to_string().contains("speed must be positive"),
+        "{refused}"
+    );
+}

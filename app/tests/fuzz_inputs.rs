@@ -1,4 +1,5 @@
-//! Bad input never panics: scene files, `eom eval` inputs, body files and STL meshes, mutated
+//! Bad input never panics: scene files (catalog bodies, ships, vehicles, aircraft), `eom eval`
+//! inputs, body files and STL meshes, mutated
 //! from the shipped examples or made at random, through every parser and validator.
 //!
 //! Each input is fed with its panics caught (`catch_unwind`), so that a panic fails the test
@@ -17,6 +18,8 @@
 //! others and `PROPTEST_CASES=<n>` sets the number of inputs per parser. Longer runs:
 //! `cargo fuzz` in `fuzz/` (docs/fuzzing.md).
 
+use eom::kinds::aircraft::AircraftScene;
+use eom::kinds::aircraft::manoeuvre::{AircraftManoeuvre, run as run_aircraft};
 use eom::kinds::body::BodyScene;
 use eom::kinds::ship::linear::LinearModel;
 use eom::kinds::ship::manoeuvre::{Manoeuvre, run as run_manoeuvre};
@@ -51,6 +54,8 @@ const BYTES_CASES: u32 = 1000;
 /// Fewer: a vehicle scene that reads has its model derived and proved (a few tenths of a
 /// second each).
 const VEHICLE_CASES: u32 = 120;
+/// An aircraft scene that reads is trimmed (its model is proved once per process).
+const AIRCRAFT_CASES: u32 = 600;
 
 fn config(cases: u32) -> Config {
     let mut config = Config::with_cases(
@@ -1546,6 +1551,78 @@ fn mutated_vehicle_scenes_never_panic() {
         VEHICLE_CASES,
         strategy,
         |(m, run), tally| vehicle_scene_text(&m.apply(&seeds, Format::Toml), run, tally),
+    );
+}
+
+/// An aircraft scene's text through the one reader: where it reads, its model was built and
+/// trimmed; for `run`, two seconds of its first manoeuvre from the trim.
+fn aircraft_scene_text(text: &str, run: bool, tally: &mut Tally) -> Result<(), TestCaseError> {
+    tally.count("input");
+    remember(text.as_bytes());
+    let base = root().join("scenes");
+    let read = guarded("AnyScene::parse", text, || {
+        AnyScene::parse(text, "fuzz.toml", &base)
+    })?;
+    let scene = match read {
+        Ok(scene) => match scene.downcast::<AircraftScene>() {
+            Some(scene) => *scene,
+            None => return Ok(()),
+        },
+        Err(error) => return check_scene_error(&error, text, tally),
+    };
+    tally.count("aircraft scene read");
+    if !scene
+        .trim
+        .state
+        .iter()
+        .chain(&scene.trim.controls)
+        .all(|x| x.is_finite())
+    {
+        return Err(failure(
+            "an aircraft's trim",
+            text,
+            "a trim that is not finite",
+        ));
+    }
+    if run {
+        let first = &scene.manoeuvres[0];
+        let short = AircraftManoeuvre {
+            duration: first.duration.min(2.0),
+            ..first.clone()
+        };
+        // At most 10⁴ steps and rows: the run is for panics, not for figures.
+        let mut stepper = scene.stepper.clone();
+        stepper.step = stepper.step.map(|step| step.max(short.duration / 1e4));
+        let every = scene.every.max(short.duration / 1e4);
+        let result = guarded("aircraft run", text, || {
+            let trim = (&scene.trim.state, &scene.trim.controls);
+            run_aircraft(&scene.model, &short, trim, (&stepper, every), None, |_| {
+                true
+            })
+        })?;
+        match result {
+            Ok(_) => tally.count("aircraft run ok"),
+            Err(error) if !error.to_string().trim().is_empty() => {
+                tally.count("aircraft run stopped")
+            }
+            Err(_) => return Err(failure("an aircraft run", text, "an empty error")),
+        }
+    }
+    Ok(())
+}
+
+#[test]
+fn mutated_aircraft_scenes_never_panic() {
+    let seeds: Vec<Seed> = ["f16.toml"]
+        .iter()
+        .map(|name| toml_seed(std::fs::read_to_string(root().join("scenes").join(name)).unwrap()))
+        .collect();
+    let strategy = (mutation(), prop::bool::weighted(0.3));
+    fuzz(
+        "aircraft scenes",
+        AIRCRAFT_CASES,
+        strategy,
+        |(m, run), tally| aircraft_scene_text(&m.apply(&seeds, Format::Toml), run, tally),
     );
 }
 

@@ -308,6 +308,8 @@ pub const REGISTRY: &[Registered] = &[
     ship::KIND,
     #[cfg(feature = "ship")]
     vehicle::KIND,
+    #[cfg(feature = "ship")]
+    aircraft::KIND,
 ];
 
 /// What a scene of manoeuvres kept when it stopped early: the `count` it finished, or began

@@ -11,8 +11,16 @@
 pub mod aero;
 pub mod atmosphere;
 pub mod engine;
+mod keys;
+mod kind;
+pub mod linear;
+pub mod manoeuvre;
 pub mod model;
+pub mod run;
+pub mod scene;
 pub mod tables;
 pub mod trim;
 
+pub use kind::KIND;
 pub use model::{AircraftError, AircraftModel, Airframe, CONTROLS, STATE};
+pub use scene::AircraftScene;

@@ -347,23 +347,29 @@ impl AircraftModel {
     }
 }
 
-/// Where the rates can depend on the state: the dynamics and the attitude on all but the
-/// position north and east; the track on V, α, β and the attitude; the power on itself.
-const STATE_JACOBIAN: [(usize, usize); 9 * 11 + 3 * 6 + 1] = state_pattern();
+/// Where the rates can depend on the state: V̇, α̇, β̇ on the wind axes, the attitude but the
+/// heading, the rates, the altitude (the air) and the power (the thrust); the Euler angles'
+/// rates on φ, θ and the rates; ṗ, q̇, ṙ on the wind axes, the rates and the altitude; the
+/// track on the wind axes and the attitude (the altitude not on the heading); the power on
+/// itself.
+const STATE_JACOBIAN: [(usize, usize); 3 * 10 + 3 * 5 + 3 * 7 + 2 * 6 + 5 + 1] = state_pattern();
 
-const fn state_pattern() -> [(usize, usize); 118] {
-    let mut entries = [(0, 0); 118];
+const fn state_pattern() -> [(usize, usize); 84] {
+    let mut entries = [(0, 0); 84];
     let mut k = 0;
     let mut row = 0;
     while row < 13 {
         let mut column = 0;
         while column < 13 {
-            let depends = if row < 9 {
-                column != 9 && column != 10
-            } else if row < 12 {
-                column < 6
-            } else {
-                column == 12
+            let wind = column < 3;
+            let rates = column >= 6 && column < 9;
+            let depends = match row {
+                0..=2 => wind || column == 3 || column == 4 || rates || column >= 11,
+                3..=5 => column == 3 || column == 4 || rates,
+                6..=8 => wind || rates || column == 11,
+                9 | 10 => column < 6,
+                11 => column < 5,
+                _ => column == 12,
             };
             if depends {
                 entries[k] = (row, column);

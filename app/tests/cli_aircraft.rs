@@ -1,0 +1,237 @@
+//! `eom run` and `eom linear` on an aircraft scene, end to end through the binary: the F-16
+//! of `scenes/f16.toml` trimmed at 502 ft/s and its manoeuvres into a folder, its linear model
+//! at the trim, a sweep over its centre of gravity, `eom new aircraft`, and bad input refused
+//! by key.
+
+use eom_test_support::cli::{eom, folder, scene, scene_arg, succeeded};
+use serde_json::Value;
+use std::path::Path;
+
+fn json(path: &Path) -> Value {
+    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+}
+
+fn number(v: &Value) -> f64 {
+    v.as_f64().unwrap_or_else(|| panic!("{v}"))
+}
+
+/// The F-16 runs its five manoeuvres from the level trim at 502 ft/s, x_cg = 0.35 c̄: the trim
+/// is Table 3.6-3's first column to its printed digits, every manoeuvre writes its rows, and
+/// the rudder kick's Dutch roll, read from the yaw rate, has the linear model's period to 1 %.
+#[test]
+fn the_f16_runs_its_manoeuvres_from_its_trim() {
+    let out = folder("f16");
+    let stdout = succeeded(&eom(&[
+        "run",
+        &scene_arg("f16.toml"),
+        "--out",
+        out.to_str().unwrap(),
+    ]));
+    assert!(stdout.contains("trim: V = 502 ft/s"), "{stdout}");
+    let summary = json(&out.join("summary.json"));
+    assert_eq!(summary["kind"], "aircraft");
+    assert_eq!(summary["units"]["vt"], "ft/s");
+    assert_eq!(summary["units"]["elevator"], "deg");
+    let trim = &summary["trim"];
+    assert!(
+        (number(&trim["state"]["alpha"]) - 0.03691).abs() <= 0.5e-5,
+        "{trim}"
+    );
+    assert!((number(&trim["controls"]["throttle"]) - 0.1385).abs() <= 0.5e-4);
+    assert!((number(&trim["controls"]["elevator"]) + 0.7588).abs() <= 0.5e-4);
+    assert!(number(&trim["residual"]) < 1e-10);
+    for name in [
+        "elevator_doublet",
+        "aileron_step",
+        "rudder_kick",
+        "throttle_step",
+        "pull_up",
+    ] {
+        let csv = std::fs::read_to_string(out.join(name).join("trajectory.csv")).unwrap();
+        let header = csv.lines().next().unwrap();
+        assert!(
+            header.starts_with("t[s],vt[ft/s],alpha[rad],beta[rad],"),
+            "{header}"
+        );
+        assert!(header.contains(",elevator[deg],"), "{header}");
+        assert!(
+            header.ends_with(",load_factor[g],kinetic_energy[ft lbf]"),
+            "{header}"
+        );
+        assert!(csv.lines().count() > 50, "{name}");
+        assert!(summary["manoeuvre"][name]["figures"]["peak_load_factor_g"].is_number());
+    }
+    // A 3° pull-up pulls more than 1 g; the aileron step rolls.
+    let pull_up = &summary["manoeuvre"]["pull_up"]["figures"];
+    assert!(number(&pull_up["peak_load_factor_g"]) > 2.0, "{pull_up}");
+    let roll = &summary["manoeuvre"]["aileron_step"]["figures"];
+    assert!(number(&roll["roll_rate_peak_deg_s"]) > 5.0, "{roll}");
+    let kick = &summary["manoeuvre"]["rudder_kick"]["figures"];
+    let (period, linear) = (
+        number(&kick["dutch_roll_period_s"]),
+        number(&kick["dutch_roll_period_linear_s"]),
+    );
+    assert!((period / linear - 1.0).abs() < 0.01, "{kick}");
+}
+
+/// `eom linear` at the shipped trim: the operating point under the state's and controls'
+/// names (α in rad, the elevator in degrees), each unit said, the eigenvalues, and the modes
+/// named as flight people name them. At x_cg = 0.35 c̄ the unaugmented F-16 is unstable in
+/// pitch: a real root grows (time to double about 7 s), as the doublet's departure shows.
+#[test]
+fn the_f16_linearises_at_its_trim_and_names_its_modes() {
+    let stdout = succeeded(&eom(&["linear", &scene_arg("f16.toml"), "--json"]));
+    let linear: Value = serde_json::from_str(&stdout).unwrap();
+    let point = &linear["operating_point"];
+    assert!(
+        (number(&point["alpha"]) - 0.03691).abs() <= 0.5e-5,
+        "{point}"
+    );
+    assert!(
+        (number(&point["elevator"]) + 0.7588).abs() <= 0.5e-4,
+        "{point}"
+    );
+    assert!(
+        (number(&point["throttle"]) - 0.1385).abs() <= 0.5e-4,
+        "{point}"
+    );
+    let names: Vec<&str> = linear["x_names"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|n| n.as_str().unwrap())
+        .collect();
+    let units: Vec<&str> = linear["x_units"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|n| n.as_str().unwrap())
+        .collect();
+    assert_eq!(names[0], "vt");
+    assert_eq!(units[0], "ft/s");
+    assert!(
+        !names.contains(&"north") && !names.contains(&"psi"),
+        "{names:?}"
+    );
+    assert_eq!(
+        linear["u_names"],
+        serde_json::json!(["throttle", "elevator", "aileron", "rudder"])
+    );
+    let modes = linear["modes"].as_array().unwrap();
+    let named: Vec<&str> = modes.iter().filter_map(|m| m["name"].as_str()).collect();
+    for name in ["Dutch roll", "roll subsidence", "spiral", "power lag"] {
+        assert!(named.contains(&name), "{name} in {named:?}");
+    }
+    let dutch = modes.iter().find(|m| m["name"] == "Dutch roll").unwrap();
+    assert!((number(&dutch["period_s"]) - 2.05).abs() < 0.01, "{dutch}");
+    assert_eq!(linear["verdict"], "unstable");
+    let growing = modes.iter().find(|m| number(&m["re"]) > 0.0).unwrap();
+    assert!(
+        (number(&growing["time_to_double_s"]) - 6.76).abs() < 0.01,
+        "{growing}"
+    );
+}
+
+/// A sweep over the centre of gravity runs each case into its table; at x_cg = 0.30 c̄ the
+/// F-16 is stable and its modes carry the book's names: the short period at −1.20 ± 1.49i.
+#[test]
+fn a_sweep_over_the_centre_of_gravity_runs_each_case() {
+    let out = folder("f16_sweep");
+    let text = std::fs::read_to_string(scene("f16.toml")).unwrap();
+    let text = text.replace(
+        "# eom linear: at the trim",
+        "[sweep]\n\"geometry.xcg\" = [0.30, 0.35]\n\n# eom linear: at the trim",
+    );
+    let file = out.with_extension("toml");
+    std::fs::create_dir_all(out.parent().unwrap()).unwrap();
+    std::fs::write(&file, text).unwrap();
+    succeeded(&eom(&[
+        "run",
+        file.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]));
+    let table = std::fs::read_to_string(out.join("sweep.csv")).unwrap();
+    let mut lines = table.lines();
+    let header = lines.next().unwrap();
+    assert!(header.contains("geometry.xcg"), "{header}");
+    assert!(
+        header.contains("rudder_kick.dutch_roll_period_s"),
+        "{header}"
+    );
+    assert_eq!(lines.count(), 2, "{table}");
+    let stable = text_with_xcg(&std::fs::read_to_string(scene("f16.toml")).unwrap(), "0.30");
+    let file = out.with_file_name("f16_030.toml");
+    std::fs::write(&file, stable).unwrap();
+    let stdout = succeeded(&eom(&["linear", file.to_str().unwrap(), "--json"]));
+    let linear: Value = serde_json::from_str(&stdout).unwrap();
+    let modes = linear["modes"].as_array().unwrap();
+    let short = modes.iter().find(|m| m["name"] == "short period").unwrap();
+    assert!((number(&short["re"]) + 1.2038).abs() < 1e-3, "{short}");
+    assert!((number(&short["im"]) - 1.4920).abs() < 1e-3, "{short}");
+    assert_eq!(
+        linear["verdict"], "stable",
+        "every mode decays (the heading set aside)"
+    );
+}
+
+fn text_with_xcg(text: &str, xcg: &str) -> String {
+    text.replace("xcg = 0.35 # fraction", &format!("xcg = {xcg} # fraction"))
+}
+
+/// The template `eom new aircraft` writes runs: it trims and flies its doublet.
+#[test]
+fn eom_new_aircraft_writes_a_scene_that_runs() {
+    let template = succeeded(&eom(&["new", "aircraft"]));
+    let out = folder("new_aircraft");
+    let file = out.with_extension("toml");
+    std::fs::create_dir_all(out.parent().unwrap()).unwrap();
+    std::fs::write(&file, template).unwrap();
+    let stdout = succeeded(&eom(&[
+        "run",
+        file.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]));
+    assert!(stdout.contains("elevator_doublet"), "{stdout}");
+}
+
+/// Bad input is refused naming its key (exit 3), never run.
+#[test]
+fn bad_aircraft_input_is_refused_by_key() {
+    let text = std::fs::read_to_string(scene("f16.toml")).unwrap();
+    let cases: [(&str, &str, &str); 6] = [
+        (
+            "[aerodynamics.cz]\nalpha_deg = [-10.0, -5.0, 0.0,",
+            "[aerodynamics.cz]\nalpha_deg = [-10.0, -5.0, -5.0,",
+            "aerodynamics.cz.alpha_deg",
+        ),
+        (
+            "inertia = [9496.0, 55814.0, 63100.0]",
+            "inertia = [9496.0, 55814.0, 80000.0]",
+            "body.inertia",
+        ),
+        ("speed = 502.0", "speed = 0.0", "trim.speed"),
+        ("amount = 3.0", "amount = 30.0", "manoeuvre[4].amount"),
+        ("mass = ", "mass = -", "body.mass"),
+        ("speed = 502.0", "speed = 2502.0", "trim"),
+    ];
+    for (from, to, key) in cases {
+        assert!(text.contains(from), "{from}");
+        let bad = text.replacen(from, to, 1);
+        let out = folder("f16_bad");
+        let file = out.with_extension("toml");
+        std::fs::create_dir_all(out.parent().unwrap()).unwrap();
+        std::fs::write(&file, bad).unwrap();
+        let output = eom(&[
+            "run",
+            file.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert_eq!(output.status.code(), Some(3), "{key}: {stderr}");
+        assert!(stderr.contains(key), "{key}: {stderr}");
+        assert!(!out.join("summary.json").exists(), "{key}");
+    }
+}

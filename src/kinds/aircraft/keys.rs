@@ -1,0 +1,765 @@
+//! The keys of an aircraft scene (`AircraftSceneFile`), in the order a template writes them.
+//! The template's aircraft is the Stevens & Lewis F-16 of `scenes/f16.toml` with its tables
+//! cut to the breakpoints around its trim at 502 ft/s (α 0 to 10°, the elevator ±12°, |β| to
+//! 10°, the thrust at Mach 0.4 to 0.6 up to 10 000 ft), each value the book's: it trims and
+//! runs a short doublet like the full F-16 (its lookups past the cut extend the end segments
+//! where the full tables have more breakpoints), and a real scene gives the whole tables.
+
+use crate::scene::reference::{Choices, Key, Kind, Required, SceneFamily, Shown};
+
+const AIRCRAFT: &[SceneFamily] = &[SceneFamily::Kind("aircraft")];
+
+/// What the reference says after the keys.
+pub const NOTES: &str = "The state is in wind axes: `vt` (the airspeed), `alpha`, `beta` \
+                         (rad), the Euler angles `phi`, `theta`, `psi` (rad), the body rates \
+                         `p`, `q`, `r` (rad/s), `north`, `east`, `altitude` and the engine's \
+                         `power` (percent); the controls are `throttle` (0 to 1), `elevator`, \
+                         `aileron`, `rudder` (deg). Lengths and speeds are in the scene's units \
+                         (`aircraft.units`). The tables are looked up linearly (bilinearly in \
+                         two arguments) with the end segments extended past the ends, as the \
+                         F-16's code does; their angles are in degrees.";
+
+/// Every key of an aircraft scene.
+pub const KEYS: &[Key] = &[
+    Key::shared(
+        "title",
+        AIRCRAFT,
+        "\"An aircraft from eom new: the F-16 near its trim at 502 ft/s\"",
+        Shown::Set,
+    ),
+    Key {
+        path: "aircraft.units",
+        families: AIRCRAFT,
+        kind: Kind::Text(Choices::These(&["us", "si"])),
+        required: Required::Yes,
+        description: "The units of every length, mass and force of the scene: us (ft, slug, lbf) or si (m, kg, N); seconds, and degrees for the tables' angles and the surfaces, in both. Every output says its unit (summary.json's `units`).",
+        example: "\"us\"",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aircraft.atmosphere",
+        families: AIRCRAFT,
+        kind: Kind::Text(Choices::These(&["stevens-lewis", "standard-1976"])),
+        required: Required::Yes,
+        description: "The air: stevens-lewis, the air-data function the F-16's tables were published with (feet only), or standard-1976, the 1976 U.S. Standard Atmosphere to 20 km (geometric altitude).",
+        example: "\"stevens-lewis\"",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aircraft.aerodynamics",
+        families: AIRCRAFT,
+        kind: Kind::Text(Choices::These(&["stevens-lewis"])),
+        required: Required::Yes,
+        description: "The form of the aerodynamic tables: stevens-lewis, the F-16's build-up (C_x(α, δe) and C_m(α, δe), C_z(α) with its sideslip and elevator terms, C_y in β and the surfaces, C_l and C_n odd in β with the aileron's and rudder's increments, nine damping derivatives in α).",
+        example: "\"stevens-lewis\"",
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.mass",
+        families: AIRCRAFT,
+        unit: "slug or kg",
+        required: Required::Yes,
+        description: "The mass.",
+        example: "636.9426751592357",
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.inertia",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("3: I_xx, I_yy, I_zz"),
+        unit: "slug ft² or kg m²",
+        required: Required::Yes,
+        description: "I_xx, I_yy, I_zz about G in body axes (x forward, z down).",
+        example: "[9496.0, 55814.0, 63100.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.products_of_inertia",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("3: I_xy, I_yz, I_xz"),
+        unit: "slug ft² or kg m²",
+        default: "0, 0, 0",
+        description: "I_xy, I_yz, I_xz: the tensor's off-diagonal entries in the chapter's sign (−∫xz dm; a text's J_xz = +982 is −982 here). An aircraft is symmetric about its xz-plane: I_xy and I_yz must be 0. The tensor must be one a rigid body can have.",
+        example: "[0.0, 0.0, -982.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.gravity",
+        families: AIRCRAFT,
+        unit: "ft/s² or m/s²",
+        required: Required::Yes,
+        description: "Gravity, constant (flat Earth).",
+        example: "32.17",
+        ..Key::BLANK
+    },
+    Key {
+        path: "geometry.area",
+        families: AIRCRAFT,
+        unit: "ft² or m²",
+        required: Required::Yes,
+        description: "The wing's reference area S.",
+        example: "300.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "geometry.span",
+        families: AIRCRAFT,
+        unit: "ft or m",
+        required: Required::Yes,
+        description: "The span b (the rolling and yawing moments' length, and b/2V for the rates).",
+        example: "30.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "geometry.chord",
+        families: AIRCRAFT,
+        unit: "ft or m",
+        required: Required::Yes,
+        description: "The mean aerodynamic chord c̄ (the pitching moment's length, and c̄/2V).",
+        example: "11.32",
+        ..Key::BLANK
+    },
+    Key {
+        path: "geometry.xcg",
+        families: AIRCRAFT,
+        unit: "-",
+        required: Required::Yes,
+        description: "G, as a fraction of c̄ aft of its leading edge; the moments are carried from the tables' reference to G.",
+        example: "0.30",
+        ..Key::BLANK
+    },
+    Key {
+        path: "geometry.xcg_reference",
+        families: AIRCRAFT,
+        unit: "-",
+        required: Required::Yes,
+        description: "Where the moment tables are given, likewise.",
+        example: "0.35",
+        ..Key::BLANK
+    },
+    Key {
+        path: "engine.rotor_momentum",
+        families: AIRCRAFT,
+        unit: "slug ft²/s or kg m²/s",
+        required: Required::Yes,
+        description: "The engine rotor's angular momentum along body x (a constant gyroscopic moment −ω × h_E).",
+        example: "160.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "engine.altitude",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("breakpoints"),
+        unit: "ft or m",
+        required: Required::Yes,
+        description: "The thrust tables' altitudes, strictly increasing.",
+        example: "[0.0, 10000.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "engine.mach",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("breakpoints"),
+        unit: "-",
+        required: Required::Yes,
+        description: "Their Mach numbers, strictly increasing.",
+        example: "[0.4, 0.6]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "engine.idle",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("rows, one per altitude"),
+        unit: "lbf or N",
+        required: Required::Yes,
+        description: "Thrust at idle power, [altitude][mach]; from 0 to 50 % power the thrust goes from idle to military.",
+        example: "[[60.0, -1020.0], [25.0, -710.0]]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "engine.military",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("rows, one per altitude"),
+        unit: "lbf or N",
+        required: Required::Yes,
+        description: "Thrust at military power (100 % dry, power 50 %).",
+        example: "[[12610.0, 12640.0], [9312.0, 9839.0]]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "engine.maximum",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("rows, one per altitude"),
+        unit: "lbf or N",
+        required: Required::Yes,
+        description: "Thrust at maximum power (full afterburner, power 100 %); the throttle's gearing and the power's lag are the F-16's (commanded power 64.94 δt to δt = 0.77, 217.38 δt − 117.38 above; a first-order lag whose time constant depends on the change, crossing the afterburner's threshold at 50 %).",
+        example: "[[22700.0, 24240.0], [16860.0, 18910.0]]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.cx.alpha_deg",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("breakpoints"),
+        unit: "deg",
+        required: Required::Yes,
+        description: "C_x(α, δe), the body-x force coefficient: its α breakpoints, strictly increasing.",
+        example: "[0.0, 5.0, 10.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.cx.elevator_deg",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("breakpoints"),
+        unit: "deg",
+        required: Required::Yes,
+        description: "Its elevator breakpoints, strictly increasing.",
+        example: "[-12.0, 0.0, 12.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.cx.values",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("rows, one per α"),
+        unit: "-",
+        required: Required::Yes,
+        description: "Its values, [α][the second argument].",
+        example: "[[-0.04, -0.021, -0.039], [-0.021, -0.004, -0.025], [0.016, 0.032, 0.006]]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.cz.alpha_deg",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("breakpoints"),
+        unit: "deg",
+        required: Required::Yes,
+        description: "C_z(α), the body-z force coefficient at zero sideslip and elevator (times 1 − (β/57.3°)², less 0.19 δe/25°): its α breakpoints, strictly increasing.",
+        example: "[0.0, 5.0, 10.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.cz.values",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("one per α"),
+        unit: "-",
+        required: Required::Yes,
+        description: "Its values, one per α.",
+        example: "[-0.1, -0.416, -0.731]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.cm.alpha_deg",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("breakpoints"),
+        unit: "deg",
+        required: Required::Yes,
+        description: "C_m(α, δe), the pitching moment about the reference: its α breakpoints, strictly increasing.",
+        example: "[0.0, 5.0, 10.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.cm.elevator_deg",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("breakpoints"),
+        unit: "deg",
+        required: Required::Yes,
+        description: "Its elevator breakpoints, strictly increasing.",
+        example: "[-12.0, 0.0, 12.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.cm.values",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("rows, one per α"),
+        unit: "-",
+        required: Required::Yes,
+        description: "Its values, [α][the second argument].",
+        example: "[[0.107, -0.009, -0.121], [0.11, -0.005, -0.127], [0.11, -0.006, -0.129]]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.cl.alpha_deg",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("breakpoints"),
+        unit: "deg",
+        required: Required::Yes,
+        description: "C_l(α, |β|), the rolling moment, odd in β: its α breakpoints, strictly increasing.",
+        example: "[0.0, 5.0, 10.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.cl.beta_abs_deg",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("breakpoints"),
+        unit: "deg",
+        required: Required::Yes,
+        description: "Its beta (absolute) breakpoints, strictly increasing.",
+        example: "[0.0, 5.0, 10.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.cl.values",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("rows, one per α"),
+        unit: "-",
+        required: Required::Yes,
+        description: "Its values, [α][the second argument].",
+        example: "[[0.0, -0.008, -0.017], [0.0, -0.012, -0.024], [0.0, -0.016, -0.03]]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.cn.alpha_deg",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("breakpoints"),
+        unit: "deg",
+        required: Required::Yes,
+        description: "C_n(α, |β|), the yawing moment about the reference, odd in β: its α breakpoints, strictly increasing.",
+        example: "[0.0, 5.0, 10.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.cn.beta_abs_deg",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("breakpoints"),
+        unit: "deg",
+        required: Required::Yes,
+        description: "Its beta (absolute) breakpoints, strictly increasing.",
+        example: "[0.0, 5.0, 10.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.cn.values",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("rows, one per α"),
+        unit: "-",
+        required: Required::Yes,
+        description: "Its values, [α][the second argument].",
+        example: "[[0.0, 0.018, 0.042], [0.0, 0.019, 0.042], [0.0, 0.019, 0.043]]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.dlda.alpha_deg",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("breakpoints"),
+        unit: "deg",
+        required: Required::Yes,
+        description: "ΔC_l per unit aileron (δa/20°), in α and β: its α breakpoints, strictly increasing.",
+        example: "[0.0, 5.0, 10.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.dlda.beta_deg",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("breakpoints"),
+        unit: "deg",
+        required: Required::Yes,
+        description: "Its beta breakpoints, strictly increasing.",
+        example: "[-10.0, 0.0, 10.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.dlda.values",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("rows, one per α"),
+        unit: "-",
+        required: Required::Yes,
+        description: "Its values, [α][the second argument].",
+        example: "[[-0.052, -0.051, -0.048], [-0.051, -0.052, -0.049], [-0.049, -0.048, -0.043]]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.dldr.alpha_deg",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("breakpoints"),
+        unit: "deg",
+        required: Required::Yes,
+        description: "ΔC_l per unit rudder (δr/30°), in α and β: its α breakpoints, strictly increasing.",
+        example: "[0.0, 5.0, 10.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.dldr.beta_deg",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("breakpoints"),
+        unit: "deg",
+        required: Required::Yes,
+        description: "Its beta breakpoints, strictly increasing.",
+        example: "[-10.0, 0.0, 10.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.dldr.values",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("rows, one per α"),
+        unit: "-",
+        required: Required::Yes,
+        description: "Its values, [α][the second argument].",
+        example: "[[0.011, 0.015, 0.013], [0.012, 0.014, 0.013], [0.011, 0.014, 0.012]]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.dnda.alpha_deg",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("breakpoints"),
+        unit: "deg",
+        required: Required::Yes,
+        description: "ΔC_n per unit aileron, in α and β: its α breakpoints, strictly increasing.",
+        example: "[0.0, 5.0, 10.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.dnda.beta_deg",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("breakpoints"),
+        unit: "deg",
+        required: Required::Yes,
+        description: "Its beta breakpoints, strictly increasing.",
+        example: "[-10.0, 0.0, 10.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.dnda.values",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("rows, one per α"),
+        unit: "-",
+        required: Required::Yes,
+        description: "Its values, [α][the second argument].",
+        example: "[[-0.006, -0.01, -0.014], [-0.006, -0.009, -0.012], [-0.005, -0.008, -0.011]]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.dndr.alpha_deg",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("breakpoints"),
+        unit: "deg",
+        required: Required::Yes,
+        description: "ΔC_n per unit rudder, in α and β: its α breakpoints, strictly increasing.",
+        example: "[0.0, 5.0, 10.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.dndr.beta_deg",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("breakpoints"),
+        unit: "deg",
+        required: Required::Yes,
+        description: "Its beta breakpoints, strictly increasing.",
+        example: "[-10.0, 0.0, 10.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.dndr.values",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("rows, one per α"),
+        unit: "-",
+        required: Required::Yes,
+        description: "Its values, [α][the second argument].",
+        example: "[[-0.038, -0.045, -0.041], [-0.04, -0.045, -0.041], [-0.04, -0.044, -0.04]]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.damping.alpha_deg",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("breakpoints"),
+        unit: "deg",
+        required: Required::Yes,
+        description: "The damping derivatives' α breakpoints, strictly increasing; each derivative below is per radian of its non-dimensional rate (q c̄/2V for CXq, CZq, Cmq; p b/2V and r b/2V for the others), one value per α.",
+        example: "[0.0, 5.0, 10.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.damping.CXq",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("one per α"),
+        unit: "1/rad",
+        required: Required::Yes,
+        description: "∂C_x/∂(q c̄/2V), one per α.",
+        example: "[0.308, 1.34, 2.08]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.damping.CYr",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("one per α"),
+        unit: "1/rad",
+        required: Required::Yes,
+        description: "∂C_y/∂(r b/2V), one per α.",
+        example: "[0.876, 0.958, 0.962]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.damping.CYp",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("one per α"),
+        unit: "1/rad",
+        required: Required::Yes,
+        description: "∂C_y/∂(p b/2V), one per α.",
+        example: "[-0.188, 0.11, 0.258]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.damping.CZq",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("one per α"),
+        unit: "1/rad",
+        required: Required::Yes,
+        description: "∂C_z/∂(q c̄/2V), one per α.",
+        example: "[-28.9, -31.4, -31.2]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.damping.Clr",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("one per α"),
+        unit: "1/rad",
+        required: Required::Yes,
+        description: "∂C_l/∂(r b/2V), one per α.",
+        example: "[0.063, 0.113, 0.208]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.damping.Clp",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("one per α"),
+        unit: "1/rad",
+        required: Required::Yes,
+        description: "∂C_l/∂(p b/2V), one per α.",
+        example: "[-0.443, -0.42, -0.383]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.damping.Cmq",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("one per α"),
+        unit: "1/rad",
+        required: Required::Yes,
+        description: "∂C_m/∂(q c̄/2V), one per α.",
+        example: "[-5.23, -5.26, -6.11]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.damping.Cnr",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("one per α"),
+        unit: "1/rad",
+        required: Required::Yes,
+        description: "∂C_n/∂(r b/2V), one per α.",
+        example: "[-0.378, -0.386, -0.37]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.damping.Cnp",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("one per α"),
+        unit: "1/rad",
+        required: Required::Yes,
+        description: "∂C_n/∂(p b/2V), one per α.",
+        example: "[0.052, -0.012, -0.013]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "limits.alpha_deg",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("2: lowest, highest"),
+        unit: "deg",
+        required: Required::Yes,
+        description: "α's range where the tables hold data: a trim outside it is refused (the lookups past it extend the end segments).",
+        example: "[-10.0, 45.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "limits.elevator_deg",
+        families: AIRCRAFT,
+        unit: "deg",
+        required: Required::Yes,
+        description: "The elevator's deflection limit, ±: a trim or a manoeuvre beyond it is refused.",
+        example: "25.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "limits.aileron_deg",
+        families: AIRCRAFT,
+        unit: "deg",
+        required: Required::Yes,
+        description: "The aileron's.",
+        example: "21.5",
+        ..Key::BLANK
+    },
+    Key {
+        path: "limits.rudder_deg",
+        families: AIRCRAFT,
+        unit: "deg",
+        required: Required::Yes,
+        description: "The rudder's.",
+        example: "30.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "trim.speed",
+        families: AIRCRAFT,
+        unit: "ft/s or m/s",
+        required: Required::Yes,
+        description: "The true airspeed of the steady flight every manoeuvre starts from (and `eom linear` linearises at): throttle, elevator, α, aileron, rudder and β are solved for so that V̇, α̇, β̇, ṗ, q̇, ṙ vanish, the rest following from the condition (Stevens & Lewis §3.6); a condition that needs a throttle beyond 0 to 1, an α beyond the tables or a surface beyond its limit is refused, naming it.",
+        example: "502.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "trim.altitude",
+        families: AIRCRAFT,
+        unit: "ft or m",
+        required: Required::Yes,
+        description: "Its altitude.",
+        example: "0.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "trim.climb_angle_rad",
+        families: AIRCRAFT,
+        unit: "rad",
+        default: "0: level",
+        description: "The flight-path angle γ, positive climbing (θ from the rate-of-climb constraint).",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "trim.turn_rate_rad_s",
+        families: AIRCRAFT,
+        unit: "rad/s",
+        default: "0: straight",
+        description: "The turn rate ψ̇ of a coordinated turn (φ from the coordination constraint, p, q, r from ψ̇).",
+        example: "0.3",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "trim.pull_up_rate_rad_s",
+        families: AIRCRAFT,
+        unit: "rad/s",
+        default: "0",
+        description: "The pitch rate q of a steady pull-up (no turn with it).",
+        example: "0.1",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].name",
+        families: AIRCRAFT,
+        kind: Kind::Text(Choices::Free),
+        default: "its kind",
+        description: "The manoeuvre's output folder: letters, digits, _ - ., each name once.",
+        example: "\"doublet\"",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].kind",
+        families: AIRCRAFT,
+        kind: Kind::Text(Choices::These(&[
+            "elevator_doublet",
+            "aileron_step",
+            "rudder_kick",
+            "throttle_step",
+            "pull_up",
+        ])),
+        required: Required::Yes,
+        description: "From the trim: elevator_doublet, the elevator +amount for width_s then −amount for width_s, then back; aileron_step and throttle_step, +amount from start_s on; rudder_kick, +amount for width_s (the Dutch roll's period and damping are read from the yaw rate after it, beside the linear model's); pull_up, the elevator −amount (nose up) from start_s on. Each gives its peak and least load factor, α, β and roll-rate excursions, and its end speed and altitude change.",
+        example: "\"elevator_doublet\"",
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].amount",
+        families: AIRCRAFT,
+        unit: "deg or -",
+        required: Required::Yes,
+        description: "The change from the trim: degrees of a surface, or of throttle (0 to 1). A command beyond a limit, or a throttle beyond 0 to 1, is refused.",
+        example: "1.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].start_s",
+        families: AIRCRAFT,
+        unit: "s",
+        default: "1",
+        description: "When the controls first move.",
+        example: "1.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].width_s",
+        families: AIRCRAFT,
+        unit: "s",
+        default: "1",
+        required: Required::When("for elevator_doublet and rudder_kick"),
+        description: "A doublet's half and a kick's pulse.",
+        example: "1.0",
+        ..Key::BLANK
+    },
+    Key {
+        path: "manoeuvre[].duration_s",
+        families: AIRCRAFT,
+        unit: "s",
+        required: Required::Yes,
+        description: "How long the run lasts.",
+        example: "5.0",
+        ..Key::BLANK
+    },
+    Key::shared("integrator.method", AIRCRAFT, "\"rk4\"", Shown::Set),
+    Key::shared("integrator.step", AIRCRAFT, "0.01", Shown::Set),
+    Key::shared("integrator.rtol", AIRCRAFT, "1e-9", Shown::Commented),
+    Key::shared("integrator.atol", AIRCRAFT, "1e-9", Shown::Commented),
+    Key::shared(
+        "integrator.max_steps",
+        AIRCRAFT,
+        "1_000_000",
+        Shown::Commented,
+    ),
+    Key::shared(
+        "integrator.stop_when",
+        AIRCRAFT,
+        "\"altitude < -500\"",
+        Shown::Commented,
+    ),
+    Key {
+        path: "output.every",
+        families: AIRCRAFT,
+        unit: "s",
+        default: "the step",
+        required: Required::When("for an adaptive method"),
+        description: "Trajectory rows at exactly t = k·every, and a row at each change of the controls.",
+        example: "0.05",
+        ..Key::BLANK
+    },
+    Key {
+        path: "linear.at.*",
+        families: AIRCRAFT,
+        kind: Kind::Table("state entries and controls by name, and values"),
+        description: "The operating point of `eom linear`, where it differs from the trim: state entries (vt, alpha, …, power) and controls (throttle, elevator, aileron, rudder) by name, in the scene's units and radians (the surfaces in degrees).",
+        example: "alpha = 0.04",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "linear.trim",
+        families: AIRCRAFT,
+        kind: Kind::Names("state entries or controls"),
+        description: "Free variables of `eom linear`, solved for by Newton's method so that the reduced state is in equilibrium.",
+        example: "[\"alpha\", \"elevator\"]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "linear.outputs",
+        families: AIRCRAFT,
+        kind: Kind::Names("state entries"),
+        description: "Outputs of the linear model (y = C x in linear.json and linear.mat): state entries by name, each in the reduced state; by default every entry of it.",
+        example: "[\"alpha\", \"q\"]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key::shared(
+        "sweep.*",
+        AIRCRAFT,
+        "\"geometry.xcg\" = [0.25, 0.30, 0.35]",
+        Shown::Commented,
+    ),
+];

@@ -1,0 +1,118 @@
+//! The aircraft as a kind of scene: recognised by its `[aircraft]` table, run through
+//! [`super::run`], linearised at its trim.
+
+use super::keys;
+use super::linear::linearise_aircraft;
+use super::manoeuvre::trajectory_columns;
+use super::run::{Finished, run_scene};
+use super::scene::AircraftScene;
+use crate::kinds::{self, Columns, KindError, Linearised, Reference, Registered, Source};
+use crate::output::summary::Summary;
+use crate::run::record::Recorder;
+use crate::scene::SceneError;
+use crate::scene::reference::SceneFamily;
+use crate::scene::sweep::TableCase;
+use std::any::Any;
+use std::path::Path;
+
+/// The registry's entry.
+pub const KIND: Registered = Registered {
+    name: "aircraft",
+    reference: Reference {
+        heading: "Aircraft scenes",
+        families: &[SceneFamily::Kind("aircraft")],
+        doc: "An aircraft on its aerodynamic tables: six degrees of freedom about G in wind \
+              axes, an engine with its lag, trimmed, then its manoeuvres.",
+        intro: "A scene with an `[aircraft]` table is an aircraft scene: the rigid body about G \
+                with I_xz and the engine's rotor, the wind-axis state (V, α, β), the \
+                aerodynamic build-up from coefficient tables in α, β and the controls times \
+                the dynamic pressure, flat-Earth navigation and the power lag, derived and \
+                proved when the scene is read; trimmed at `[trim]`, then each `[[manoeuvre]]` \
+                from the trim (`scenes/f16.toml`; `eom new aircraft`; docs/aircraft.md).",
+        keys: keys::KEYS,
+        notes: keys::NOTES,
+        columns: Columns::Listed {
+            said: "An aircraft writes one per manoeuvre, the state in its scene's units \
+                   (`summary.json` gives each column's under `units`), then the controls and \
+                   the load factor",
+            columns: trajectory_columns,
+        },
+    },
+    recognises,
+    reads_the_rest: false,
+    read,
+};
+
+/// An aircraft's scene has `[aircraft]`.
+fn recognises(table: &toml::Table) -> bool {
+    table.contains_key("aircraft")
+}
+
+fn read(source: Source, name: &str, _base: &Path) -> Result<Box<dyn kinds::Kind>, SceneError> {
+    let file = source.read(name)?;
+    Ok(Box::new(AircraftScene::from_file(&file, name)?))
+}
+
+impl kinds::Kind for AircraftScene {
+    fn kind(&self) -> &'static str {
+        KIND.name
+    }
+
+    fn title(&self) -> &str {
+        &self.title
+    }
+
+    fn folders(&self) -> Vec<String> {
+        self.manoeuvres.iter().map(|m| m.name.clone()).collect()
+    }
+
+    /// Each manoeuvre's rows, t, the row and the kinetic energy.
+    fn trajectory_numbers(&self) -> f64 {
+        let rows: f64 = (self.manoeuvres.iter())
+            .map(|m| m.duration / self.every)
+            .sum();
+        rows * (super::manoeuvre::ROW.len() + 2) as f64
+    }
+
+    fn run(
+        &self,
+        name: &str,
+        recorder: &mut dyn Recorder,
+    ) -> Result<Box<dyn kinds::Finished + '_>, KindError> {
+        Ok(Box::new(run_scene(self, name, recorder)?))
+    }
+
+    fn linear(&self) -> Result<Linearised, KindError> {
+        Ok(Linearised::alone(linearise_aircraft(self)?))
+    }
+
+    fn as_any(&self) -> &dyn Any {
+        self
+    }
+
+    fn into_any(self: Box<Self>) -> Box<dyn Any> {
+        self
+    }
+}
+
+impl kinds::Finished for Finished<'_> {
+    fn summary(&self) -> Summary {
+        self.summary.clone().into_json()
+    }
+
+    fn report(&self) -> String {
+        Finished::report(self)
+    }
+
+    fn cells(&self, case: &TableCase) -> Vec<(String, String)> {
+        Finished::cells(self, case)
+    }
+
+    fn stopped(&self) -> bool {
+        self.stopped
+    }
+
+    fn kept(&self) -> String {
+        kinds::manoeuvres_kept(self.ran)
+    }
+}

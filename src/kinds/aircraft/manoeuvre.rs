@@ -1,0 +1,371 @@
+//! An aircraft's manoeuvres from its trim: the controls moved from their trimmed values on a
+//! schedule (a doublet, a step, a pulse), the run a problem of the one loop, cut at each
+//! change of the controls, and what a flight-test engineer reads from it.
+//!
+//! Figures: the peak and least load factor n_z (the normal specific force over g, positive
+//! pulling up: −a_z/g in body axes), the largest |α| and |β| excursions and roll rate, the
+//! speed and altitude at the end; after a rudder kick, the Dutch roll's period and damping
+//! ratio read from the yaw rate's swings once the pulse is over (successive maxima: the
+//! period their spacing, the damping from their logarithmic decrement).
+
+use super::model::{AircraftModel, STATE};
+use crate::integrate::problem::{self, Flow, Problem};
+use crate::integrate::{IntegrateError, Stepper};
+use crate::models::Model;
+use crate::scene::stop::StopCondition;
+use eom_kernel::{Constant, Driven};
+use nalgebra::SVector;
+
+/// The kinds of manoeuvre.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Manoeuvre {
+    /// The elevator +amount for `width`, −amount for `width`, then back.
+    ElevatorDoublet,
+    /// The aileron +amount from the start on.
+    AileronStep,
+    /// The rudder +amount for `width`, then back.
+    RudderKick,
+    /// The throttle +amount from the start on.
+    ThrottleStep,
+    /// The elevator −amount (trailing edge up: nose up) from the start on.
+    PullUp,
+}
+
+impl Manoeuvre {
+    /// Whether it takes a width.
+    pub fn has_width(self) -> bool {
+        matches!(self, Manoeuvre::ElevatorDoublet | Manoeuvre::RudderKick)
+    }
+
+    /// Which control it moves (index into [`CONTROLS`]).
+    fn control(self) -> usize {
+        match self {
+            Manoeuvre::ThrottleStep => 0,
+            Manoeuvre::ElevatorDoublet | Manoeuvre::PullUp => 1,
+            Manoeuvre::AileronStep => 2,
+            Manoeuvre::RudderKick => 3,
+        }
+    }
+}
+
+/// A manoeuvre, checked.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AircraftManoeuvre {
+    /// Its folder's name.
+    pub name: String,
+    /// What it does.
+    pub kind: Manoeuvre,
+    /// The change from the trim (deg; throttle 0 to 1).
+    pub amount: f64,
+    /// When it starts, s.
+    pub start: f64,
+    /// A doublet's half and a kick's pulse, s.
+    pub width: f64,
+    /// How long the run lasts, s.
+    pub duration: f64,
+}
+
+impl AircraftManoeuvre {
+    /// The instants the controls change, and the offset from the trim after each.
+    fn schedule(&self) -> Vec<(f64, f64)> {
+        let (a, s, w) = (self.amount, self.start, self.width);
+        let changes = match self.kind {
+            Manoeuvre::ElevatorDoublet => vec![(s, a), (s + w, -a), (s + 2.0 * w, 0.0)],
+            Manoeuvre::RudderKick => vec![(s, a), (s + w, 0.0)],
+            Manoeuvre::AileronStep | Manoeuvre::ThrottleStep => vec![(s, a)],
+            Manoeuvre::PullUp => vec![(s, -a.abs())],
+        };
+        changes
+            .into_iter()
+            .filter(|(t, _)| *t < self.duration)
+            .collect()
+    }
+
+    /// Every setting of the controls the manoeuvre gives, from `trim`'s.
+    pub fn commands(&self, trim: &[f64; 4]) -> Vec<[f64; 4]> {
+        let mut all = vec![*trim];
+        for (_, offset) in self.schedule() {
+            let mut controls = *trim;
+            controls[self.kind.control()] += offset;
+            all.push(controls);
+        }
+        all
+    }
+}
+
+/// What a row holds after t: the state, the controls, the load factor.
+pub const ROW: [&str; 18] = [
+    "vt",
+    "alpha",
+    "beta",
+    "phi",
+    "theta",
+    "psi",
+    "p",
+    "q",
+    "r",
+    "north",
+    "east",
+    "altitude",
+    "power",
+    "throttle",
+    "elevator",
+    "aileron",
+    "rudder",
+    "load_factor",
+];
+
+/// The columns of trajectory.csv after t.
+pub fn trajectory_columns() -> Vec<String> {
+    ROW.iter().map(|s| s.to_string()).collect()
+}
+
+/// n_z = −a_z/g: the body-z specific force, from the rates of V, α, β and the weight.
+pub fn load_factor(model: &AircraftModel, state: &[f64; 13], rates: &[f64; 13]) -> f64 {
+    let (vt, alpha, beta) = (state[0], state[1], state[2]);
+    let (p, q) = (state[6], state[7]);
+    let (sa, ca, sb, cb) = (alpha.sin(), alpha.cos(), beta.sin(), beta.cos());
+    let (u, v) = (vt * ca * cb, vt * sb);
+    let w_dot = rates[0] * sa * cb + vt * ca * cb * rates[1] - vt * sa * sb * rates[2];
+    let g = model.gravity();
+    let weight_z = g * state[4].cos() * state[3].cos();
+    // ẇ = a_z + g cos θ cos φ + q u − p v, a_z the specific force.
+    let a_z = w_dot - weight_z - q * u + p * v;
+    -a_z / g
+}
+
+/// The row at `state` under `controls`.
+pub fn row_at(model: &AircraftModel, state: &[f64; 13], controls: &[f64; 4]) -> [f64; 18] {
+    let rates = model.rates(state, controls);
+    let mut row = [0.0; 18];
+    row[..13].copy_from_slice(state);
+    row[13..17].copy_from_slice(controls);
+    row[17] = load_factor(model, state, &rates);
+    row
+}
+
+/// A row as the loop hands it.
+#[derive(Debug, Clone, Copy)]
+pub struct Sample {
+    /// The time.
+    pub t: f64,
+    /// [`ROW`]'s values.
+    pub row: [f64; 18],
+    /// The kinetic energy.
+    pub kinetic: f64,
+}
+
+/// What a run measured, step by step.
+#[derive(Debug, Clone, Default)]
+pub struct Measured {
+    /// The largest n_z and the least.
+    pub load_factor: (f64, f64),
+    /// The largest |α − α_trim|, |β|, |p|.
+    pub excursions: [f64; 3],
+    /// The yaw rate's local maxima after the last change, (t, r − r_trim).
+    pub yaw_peaks: Vec<(f64, f64)>,
+    /// The last three (t, r) accepted, for the peaks.
+    recent: Vec<(f64, f64)>,
+}
+
+/// A manoeuvre run: what it cost and measured.
+#[derive(Debug, Clone)]
+pub struct AircraftRun {
+    /// Accepted steps.
+    pub steps: u64,
+    /// Right-hand-side evaluations.
+    pub rhs_evals: u64,
+    /// Where it ended.
+    pub end: [f64; 13],
+    /// What it measured.
+    pub measured: Measured,
+    /// Where the stop condition ended it.
+    pub stopped_at: Option<f64>,
+}
+
+/// Why a run could not go on.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum RunError {
+    /// The state left the model's domain.
+    #[error("at t = {time} s: {reason}")]
+    Failed {
+        /// When.
+        time: f64,
+        /// Why.
+        reason: String,
+    },
+    /// The recorder stopped it.
+    #[error("stopped at t = {time} s")]
+    Stopped {
+        /// When.
+        time: f64,
+    },
+}
+
+struct Runner<'a> {
+    model: &'a AircraftModel,
+    trim: [f64; 13],
+    controls: [f64; 4],
+    control: usize,
+    changes: Vec<(f64, f64)>,
+    next: usize,
+    duration: f64,
+    trim_controls: [f64; 4],
+    measured: Measured,
+    stop: Option<&'a StopCondition>,
+}
+
+impl Runner<'_> {
+    fn measure(&mut self, t: f64, y: &[f64; 13]) {
+        let rates = self.model.rates(y, &self.controls);
+        let n = load_factor(self.model, y, &rates);
+        let m = &mut self.measured;
+        m.load_factor = (m.load_factor.0.max(n), m.load_factor.1.min(n));
+        let excursions = [(y[1] - self.trim[1]).abs(), y[2].abs(), y[6].abs()];
+        for (e, x) in m.excursions.iter_mut().zip(excursions) {
+            *e = e.max(x);
+        }
+        let after_changes = self.next >= self.changes.len();
+        if after_changes {
+            m.recent.push((t, y[8] - self.trim[8]));
+            if m.recent.len() > 3 {
+                m.recent.remove(0);
+            }
+            if let [(_, a), (tb, b), (_, c)] = m.recent[..]
+                && b > a
+                && b >= c
+            {
+                m.yaw_peaks.push((tb, b));
+            }
+        }
+    }
+}
+
+impl<'a> Problem<13> for Runner<'a> {
+    type System = Driven<'a, AircraftModel, Constant<f64, 4>, 4>;
+    type Watch = ();
+    type Sample = Sample;
+
+    fn start(&mut self) -> (f64, SVector<f64, 13>) {
+        (0.0, SVector::from(self.trim))
+    }
+
+    fn end(&self) -> f64 {
+        self.duration
+    }
+
+    fn next_change(&self) -> Option<f64> {
+        self.changes.get(self.next).map(|(t, _)| *t)
+    }
+
+    fn system(&self, _t: f64, _until: f64) -> Self::System {
+        self.model.driven_by(Constant(self.controls))
+    }
+
+    fn watches(&self, _: &Self::System, _: f64, _: &SVector<f64, 13>) -> Vec<()> {
+        Vec::new()
+    }
+
+    fn g(&self, _: &Self::System, _: (), _: f64, _: &SVector<f64, 13>) -> f64 {
+        0.0
+    }
+
+    fn has_stop(&self) -> bool {
+        self.stop.is_some()
+    }
+
+    fn stop_holds(&self, t: f64, y: &SVector<f64, 13>) -> bool {
+        (self.stop).is_some_and(|stop| stop.holds(t, &self.sample(t, y).row))
+    }
+
+    fn accepted(&mut self, t: f64, y: &SVector<f64, 13>) -> bool {
+        self.measure(t, &y.data.0[0]);
+        true
+    }
+
+    fn change(&mut self, _t: f64, _y: &mut SVector<f64, 13>) -> Flow {
+        let (_, offset) = self.changes[self.next];
+        self.next += 1;
+        self.controls = self.trim_controls;
+        self.controls[self.control] += offset;
+        self.measured.recent.clear();
+        Flow::Go
+    }
+
+    fn event(&mut self, _: (), _: f64, _: &mut SVector<f64, 13>) -> Flow {
+        Flow::Go
+    }
+
+    fn sample(&self, t: f64, y: &SVector<f64, 13>) -> Sample {
+        let state = y.data.0[0];
+        Sample {
+            t,
+            row: row_at(self.model, &state, &self.controls),
+            kinetic: self.model.kinetic_energy(&state),
+        }
+    }
+}
+
+/// Runs `manoeuvre` from the trim (`state`, `controls`), each row to `observe`.
+#[allow(clippy::too_many_arguments)]
+pub fn run(
+    model: &AircraftModel,
+    manoeuvre: &AircraftManoeuvre,
+    (state, controls): (&[f64; 13], &[f64; 4]),
+    (stepper, every): (&Stepper, f64),
+    stop: Option<&StopCondition>,
+    observe: impl FnMut(&Sample) -> bool,
+) -> Result<AircraftRun, RunError> {
+    let mut runner = Runner {
+        model,
+        trim: *state,
+        controls: *controls,
+        control: manoeuvre.kind.control(),
+        changes: manoeuvre.schedule(),
+        next: 0,
+        duration: manoeuvre.duration,
+        trim_controls: *controls,
+        measured: Measured {
+            load_factor: (f64::NEG_INFINITY, f64::INFINITY),
+            ..Measured::default()
+        },
+        stop,
+    };
+    runner.measure(0.0, state);
+    let (reached, stats) = problem::solve(&mut runner, (stepper, every), observe);
+    let end = reached.map_err(|error| match error {
+        IntegrateError::Stopped { t } => RunError::Stopped { time: t },
+        IntegrateError::NonFiniteState { component, t } => RunError::Failed {
+            time: t,
+            reason: format!(
+                "{} is not finite (the aircraft left its atmosphere, or the step is too coarse)",
+                STATE.get(component).unwrap_or(&"?")
+            ),
+        },
+        other => RunError::Failed {
+            time: f64::NAN,
+            reason: other.to_string(),
+        },
+    })?;
+    Ok(AircraftRun {
+        steps: stats.steps as u64,
+        rhs_evals: stats.rhs_evals as u64,
+        end: end.state.data.0[0],
+        measured: runner.measured,
+        stopped_at: end.stopped.then_some(end.t),
+    })
+}
+
+/// The Dutch roll's period (s) and damping ratio read from the yaw rate's successive maxima
+/// (at least three), where the response gives them.
+pub fn dutch_roll(peaks: &[(f64, f64)]) -> Option<(f64, f64)> {
+    let positive: Vec<(f64, f64)> = peaks.iter().copied().filter(|(_, r)| *r > 0.0).collect();
+    if positive.len() < 3 {
+        return None;
+    }
+    let cycles = (positive.len() - 1).min(3);
+    let period = (positive[cycles].0 - positive[0].0) / cycles as f64;
+    let decrement = (positive[0].1 / positive[cycles].1).ln() / cycles as f64;
+    let damping = decrement / (4.0 * std::f64::consts::PI.powi(2) + decrement * decrement).sqrt();
+    Some((period, damping))
+}
