@@ -155,17 +155,73 @@ pub struct Sample {
     pub kinetic: f64,
 }
 
-/// What a run measured, step by step.
-#[derive(Debug, Clone, Default)]
+/// What a run measured on its rows (at t = k·every and at each change of the controls, each
+/// the integrator's own solution there, so every figure converges as the method does): the
+/// extremes over the rows, and the yaw rate's maxima, each placed by the parabola through it
+/// and its neighbours.
+#[derive(Debug, Clone)]
 pub struct Measured {
     /// The largest n_z and the least.
     pub load_factor: (f64, f64),
     /// The largest |α − α_trim|, |β|, |p|.
     pub excursions: [f64; 3],
-    /// The yaw rate's local maxima after the last change, (t, r − r_trim).
+    /// The yaw rate's local maxima after the last change of the controls, (t, r − r_trim).
     pub yaw_peaks: Vec<(f64, f64)>,
-    /// The last three (t, r) accepted, for the peaks.
+    /// The trim's α and r.
+    trim: (f64, f64),
+    /// When the controls last change.
+    settled_from: f64,
+    /// The last three rows' (t, r − r_trim) after it.
     recent: Vec<(f64, f64)>,
+}
+
+impl Measured {
+    fn new(trim: &[f64; 13], settled_from: f64) -> Self {
+        Measured {
+            load_factor: (f64::NEG_INFINITY, f64::INFINITY),
+            excursions: [0.0; 3],
+            yaw_peaks: Vec::new(),
+            trim: (trim[1], trim[8]),
+            settled_from,
+            recent: Vec::new(),
+        }
+    }
+
+    /// Takes the row at `t`.
+    fn row(&mut self, t: f64, row: &[f64; 18]) {
+        let n = row[17];
+        self.load_factor = (self.load_factor.0.max(n), self.load_factor.1.min(n));
+        let excursions = [(row[1] - self.trim.0).abs(), row[2].abs(), row[6].abs()];
+        for (e, x) in self.excursions.iter_mut().zip(excursions) {
+            *e = e.max(x);
+        }
+        if t <= self.settled_from {
+            return;
+        }
+        self.recent.push((t, row[8] - self.trim.1));
+        if self.recent.len() > 3 {
+            self.recent.remove(0);
+        }
+        if let [(ta, a), (tb, b), (tc, c)] = self.recent[..]
+            && b > a
+            && b >= c
+        {
+            self.yaw_peaks.push(vertex((ta, a), (tb, b), (tc, c)));
+        }
+    }
+}
+
+/// The vertex of the parabola through three points, the middle one the highest.
+fn vertex((ta, a): (f64, f64), (tb, b): (f64, f64), (tc, c): (f64, f64)) -> (f64, f64) {
+    // Divided differences: p(t) = b + d1 (t − tb) + d2 (t − tb)(t − ta).
+    let d1 = (b - a) / (tb - ta);
+    let d2 = ((c - b) / (tc - tb) - d1) / (tc - ta);
+    if d2 >= 0.0 {
+        return (tb, b);
+    }
+    // p'(t) = d1 + d2 (2t − ta − tb) = 0.
+    let t = (ta + tb - d1 / d2) / 2.0;
+    (t, b + d1 * (t - tb) + d2 * (t - tb) * (t - ta))
 }
 
 /// A manoeuvre run: what it cost and measured.
@@ -211,34 +267,7 @@ struct Runner<'a> {
     next: usize,
     duration: f64,
     trim_controls: [f64; 4],
-    measured: Measured,
     stop: Option<&'a StopCondition>,
-}
-
-impl Runner<'_> {
-    fn measure(&mut self, t: f64, y: &[f64; 13]) {
-        let rates = self.model.rates(y, &self.controls);
-        let n = load_factor(self.model, y, &rates);
-        let m = &mut self.measured;
-        m.load_factor = (m.load_factor.0.max(n), m.load_factor.1.min(n));
-        let excursions = [(y[1] - self.trim[1]).abs(), y[2].abs(), y[6].abs()];
-        for (e, x) in m.excursions.iter_mut().zip(excursions) {
-            *e = e.max(x);
-        }
-        let after_changes = self.next >= self.changes.len();
-        if after_changes {
-            m.recent.push((t, y[8] - self.trim[8]));
-            if m.recent.len() > 3 {
-                m.recent.remove(0);
-            }
-            if let [(_, a), (tb, b), (_, c)] = m.recent[..]
-                && b > a
-                && b >= c
-            {
-                m.yaw_peaks.push((tb, b));
-            }
-        }
-    }
 }
 
 impl<'a> Problem<13> for Runner<'a> {
@@ -278,17 +307,11 @@ impl<'a> Problem<13> for Runner<'a> {
         (self.stop).is_some_and(|stop| stop.holds(t, &self.sample(t, y).row))
     }
 
-    fn accepted(&mut self, t: f64, y: &SVector<f64, 13>) -> bool {
-        self.measure(t, &y.data.0[0]);
-        true
-    }
-
     fn change(&mut self, _t: f64, _y: &mut SVector<f64, 13>) -> Flow {
         let (_, offset) = self.changes[self.next];
         self.next += 1;
         self.controls = self.trim_controls;
         self.controls[self.control] += offset;
-        self.measured.recent.clear();
         Flow::Go
     }
 
@@ -314,25 +337,27 @@ pub fn run(
     (state, controls): (&[f64; 13], &[f64; 4]),
     (stepper, every): (&Stepper, f64),
     stop: Option<&StopCondition>,
-    observe: impl FnMut(&Sample) -> bool,
+    mut observe: impl FnMut(&Sample) -> bool,
 ) -> Result<AircraftRun, RunError> {
+    let changes = manoeuvre.schedule();
+    let settled_from = changes.last().map_or(0.0, |(t, _)| *t);
+    let mut measured = Measured::new(state, settled_from);
     let mut runner = Runner {
         model,
         trim: *state,
         controls: *controls,
         control: manoeuvre.kind.control(),
-        changes: manoeuvre.schedule(),
+        changes,
         next: 0,
         duration: manoeuvre.duration,
         trim_controls: *controls,
-        measured: Measured {
-            load_factor: (f64::NEG_INFINITY, f64::INFINITY),
-            ..Measured::default()
-        },
         stop,
     };
-    runner.measure(0.0, state);
-    let (reached, stats) = problem::solve(&mut runner, (stepper, every), observe);
+    let observed = |sample: &Sample| {
+        measured.row(sample.t, &sample.row);
+        observe(sample)
+    };
+    let (reached, stats) = problem::solve(&mut runner, (stepper, every), observed);
     let end = reached.map_err(|error| match error {
         IntegrateError::Stopped { t } => RunError::Stopped { time: t },
         IntegrateError::NonFiniteState { component, t } => RunError::Failed {
@@ -351,7 +376,7 @@ pub fn run(
         steps: stats.steps as u64,
         rhs_evals: stats.rhs_evals as u64,
         end: end.state.data.0[0],
-        measured: runner.measured,
+        measured,
         stopped_at: end.stopped.then_some(end.t),
     })
 }
