@@ -545,3 +545,93 @@ fn a_trim_the_f16_cannot_meet_names_what_it_would_take() {
         "{refused}"
     );
 }
+
+/// The model's Jacobians — the proved ∂f/∂x and ∂f/∂(input) composed by the chain rule with
+/// the slopes of what is computed beside the program (the tables' segments, the air, the
+/// thrust, the power lag) — against central differences of its rates, at points inside the
+/// tables' cells (a difference across a breakpoint would average two segments): every entry
+/// within 1e-6 of the largest in its row, relative (the differences' truncation error, with
+/// steps of 1e-6 of each entry's scale, is about 1e-10 of it). Entries outside the declared
+/// patterns are zero.
+#[test]
+fn the_f16_jacobians_are_its_rates_slopes() {
+    use eom::models::Model;
+    let model = f16(0.35);
+    let points: [([f64; 13], [f64; 4]); 3] = [
+        (
+            [
+                502.0, 0.0371, 0.0123, 0.1, 0.0371, 0.3, 0.01, 0.02, -0.03, 0.0, 0.0, 1234.0, 9.0,
+            ],
+            [0.1385, -0.7588, 1.3, -2.1],
+        ),
+        (
+            [
+                430.0, 0.31, -0.07, -0.6, 0.4, -1.0, 0.3, -0.2, 0.25, 100.0, -50.0, 12_345.0, 71.0,
+            ],
+            [0.83, -6.3, 3.7, 7.9],
+        ),
+        (
+            [
+                700.0, -0.06, 0.11, 1.2, -0.3, 2.0, -0.7, 0.4, 0.1, 0.0, 0.0, 36_123.0, 37.0,
+            ],
+            [0.4, 3.3, -11.0, 13.0],
+        ),
+    ];
+    for (x, u) in points {
+        let (a, b) = model.jacobians(&x, &u);
+        let scale = |v: f64| 1e-6 * v.abs().max(1e-2);
+        let mut numeric_a = [[0.0; 13]; 13];
+        for j in 0..13 {
+            let h = scale(x[j]);
+            let (mut up, mut down) = (x, x);
+            up[j] += h;
+            down[j] -= h;
+            let (fu, fd) = (model.rates(&up, &u), model.rates(&down, &u));
+            for i in 0..13 {
+                numeric_a[i][j] = (fu[i] - fd[i]) / (2.0 * h);
+            }
+        }
+        let mut numeric_b = [[0.0; 4]; 13];
+        for j in 0..4 {
+            let h = scale(u[j]);
+            let (mut up, mut down) = (u, u);
+            up[j] += h;
+            down[j] -= h;
+            let (fu, fd) = (model.rates(&x, &up), model.rates(&x, &down));
+            for i in 0..13 {
+                numeric_b[i][j] = (fu[i] - fd[i]) / (2.0 * h);
+            }
+        }
+        let pattern = <eom::kinds::aircraft::AircraftModel as Model<f64, 13, 4>>::STATE_JACOBIAN;
+        let inputs = <eom::kinds::aircraft::AircraftModel as Model<f64, 13, 4>>::INPUT_JACOBIAN;
+        for i in 0..13 {
+            let largest = (numeric_a[i].iter().chain(&numeric_b[i]))
+                .fold(0.0f64, |m, v| m.max(v.abs()))
+                .max(1e-12);
+            for j in 0..13 {
+                let error = (a[i][j] - numeric_a[i][j]).abs() / largest;
+                assert!(
+                    error < 1e-6,
+                    "∂f{i}/∂x{j}: {} vs {} at {x:?}",
+                    a[i][j],
+                    numeric_a[i][j]
+                );
+                if !pattern.contains(&(i, j)) {
+                    assert_eq!(a[i][j], 0.0, "({i}, {j}) outside the pattern");
+                }
+            }
+            for j in 0..4 {
+                let error = (b[i][j] - numeric_b[i][j]).abs() / largest;
+                assert!(
+                    error < 1e-6,
+                    "∂f{i}/∂u{j}: {} vs {} at {x:?}",
+                    b[i][j],
+                    numeric_b[i][j]
+                );
+                if !inputs.contains(&(i, j)) {
+                    assert_eq!(b[i][j], 0.0, "({i}, {j}) outside the input pattern");
+                }
+            }
+        }
+    }
+}
