@@ -635,7 +635,7 @@ fn f64_tokens(e: &Expr) -> TokenStream {
     }
 }
 
-/// The value of a parameter expression computed as the code [`f64_tokens`] writes for it
+/// The value of a parameter expression computed as the code `f64_tokens` writes for it
 /// computes it, operation for operation in the same order (the common factor taken out, the
 /// terms summed left to right, each product and quotient as written), so that a program run
 /// from these values (the interpreter of scene-defined models) has the emitted
@@ -653,7 +653,7 @@ pub fn f64_value(e: &Expr, value: &dyn Fn(&str) -> f64) -> f64 {
     formula.value(&values)
 }
 
-/// A parameter expression as the f64 operations [`f64_tokens`] writes for it, the symbolic
+/// A parameter expression as the f64 operations `f64_tokens` writes for it, the symbolic
 /// work (the common factor, the rationals' values) done once: a Monte Carlo over a table's
 /// values evaluates each coefficient's formula per case, with the bits of the emitted
 /// `Coefficients::new`.

@@ -335,7 +335,7 @@ impl AircraftModel {
         (by_state, by_controls)
     }
 
-    /// The kinetic energy ½MV² + ½ωᵀ[I]ω of `state`, from the proved form.
+    /// The kinetic energy ½MV² + ½ωᵀ\[I\]ω of `state`, from the proved form.
     pub fn kinetic_energy(&self, state: &[f64; 13]) -> f64 {
         let beside = [0.0; INPUTS];
         let variables = Variables {
