@@ -59,6 +59,9 @@ fn the_f16_runs_its_manoeuvres_from_its_trim() {
             "{header}"
         );
         assert!(csv.lines().count() > 50, "{name}");
+        for drawn in ["angles.svg", "rates.svg", "load_factor.svg", "view.html"] {
+            assert!(out.join(name).join(drawn).exists(), "{name}/{drawn}");
+        }
         assert!(summary["manoeuvre"][name]["figures"]["peak_load_factor_g"].is_number());
     }
     // A 3° pull-up pulls more than 1 g; the aileron step rolls.

@@ -7,7 +7,7 @@
 use super::run::{progress_bar, signal_received};
 use anyhow::{Context, Result};
 use eom::output::drawing::{
-    Curves, Drawing, Mark, PlaneManoeuvre, RigidBody, RunDrawings, SpaceManoeuvre,
+    Curves, Drawing, Flight, Mark, PlaneManoeuvre, RigidBody, RunDrawings, SpaceManoeuvre,
 };
 use eom::output::trajectory::{Columns, TrajectoryWriter};
 use eom::run::record::{RecordError, Recorder, RunStart};
@@ -165,7 +165,8 @@ fn retitled(drawing: &Drawing, titled: impl Fn(&str) -> String) -> Drawing {
     match &mut drawing {
         Drawing::RigidBody(RigidBody { title, .. })
         | Drawing::PlaneManoeuvre(PlaneManoeuvre { title, .. })
-        | Drawing::SpaceManoeuvre(SpaceManoeuvre { title, .. }) => *title = titled(title),
+        | Drawing::SpaceManoeuvre(SpaceManoeuvre { title, .. })
+        | Drawing::Flight(Flight { title, .. }) => *title = titled(title),
         Drawing::Curves(Curves { caption, .. }) => *caption = titled(caption),
     }
     drawing
@@ -192,6 +193,7 @@ fn draw(folder: &Path, drawing: &Drawing, kept: &Kept) -> Result<(Vec<PathBuf>, 
             files.push(super::view::write_space(folder, space, kept)?);
         }
         Drawing::Curves(curves) => files.push(draw_curves(folder, curves)?),
+        Drawing::Flight(flight) => files.push(super::view::write_flight(folder, flight, kept)?),
     }
     Ok((files, not_drawn))
 }

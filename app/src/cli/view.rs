@@ -22,7 +22,7 @@ use eom::Short;
 use eom::models::state_with_unit;
 use eom::models::{Family, Kinematics, state_unit};
 use eom::nalgebra::{Matrix3, UnitQuaternion, Vector3};
-use eom::output::drawing::{BodyShape, Hull, PlaneManoeuvre, RigidBody, SpaceManoeuvre};
+use eom::output::drawing::{BodyShape, Flight, Hull, PlaneManoeuvre, RigidBody, SpaceManoeuvre};
 use eom::output::trajectory::Columns;
 use eom_cli::view::{
     CameraTarget, Shape, SpaceAxes, Vectors, ViewInput, box_sides, cylinder_size, write_view,
@@ -468,6 +468,89 @@ pub fn write_space(out: &Path, drawing: &SpaceManoeuvre, kept: &Kept) -> Result<
         notes: vec![note],
     };
     write_view(out, &input).with_context(|| format!("writing the view into {}", out.display()))
+}
+
+/// The view of a flight (`view.html`): the fuselage, the solid cylinder of the body's mass and
+/// moments along body x, with wings of its span and chord and a fin, over the ground (z = 0 at
+/// altitude 0, Z down), the attitude from the rows' Euler angles.
+pub fn write_flight(out: &Path, drawing: &Flight, kept: &Kept) -> Result<PathBuf> {
+    let solid = drawing.solid;
+    let inertia = Matrix3::from_fn(|r, c| solid.inertia_about_g[r][c]);
+    let (moments, axes) = principal(inertia);
+    let along = (0..3)
+        .max_by(|&a, &b| axes[(0, a)].abs().total_cmp(&axes[(0, b)].abs()))
+        .unwrap_or(0);
+    let others: Vec<usize> = (0..3).filter(|&k| k != along).collect();
+    let transverse = (moments[others[0]] + moments[others[1]]) / 2.0;
+    let Some((length, diameter)) = cylinder_size(solid.mass, moments[along], transverse) else {
+        anyhow::bail!(
+            "no solid cylinder has the body's mass {} and principal moments {:?}",
+            Short(solid.mass),
+            moments
+        );
+    };
+    let unit = drawing.length_unit;
+    let column = |name: &str, unit: &str| kept.column(&format!("{name}[{unit}]"));
+    let angles = [
+        column("phi", "rad")?,
+        column("theta", "rad")?,
+        column("psi", "rad")?,
+    ];
+    let mut attitude: [Vec<f64>; 4] = Default::default();
+    for row in 0..angles[0].len() {
+        let q = UnitQuaternion::from_euler_angles(angles[0][row], angles[1][row], angles[2][row]);
+        for (column, v) in attitude.iter_mut().zip([q.w, q.i, q.j, q.k]) {
+            column.push(v);
+        }
+    }
+    let readout = (kept.names.iter().zip(&kept.columns.state))
+        .map(|(name, values)| (spaced(name), values.as_slice()))
+        .collect();
+    let note = format!(
+        "the fuselage is the solid cylinder of mass {} with the moments {} about its axis and {}          across it: length {} {unit}, diameter {} {unit}; the wings' span {} {unit} and chord {}          {unit} are the scene's",
+        Short(solid.mass),
+        Short(moments[along]),
+        Short(transverse),
+        Short(length),
+        Short(diameter),
+        Short(drawing.span),
+        Short(drawing.chord),
+    );
+    let input = ViewInput {
+        title: &drawing.title,
+        shape: Shape::Aircraft {
+            length,
+            diameter,
+            span: drawing.span,
+            chord: drawing.chord,
+            unit,
+        },
+        axes: SpaceAxes::ZDown,
+        time: &kept.columns.time,
+        position: [
+            column("north", unit)?.to_vec(),
+            column("east", unit)?.to_vec(),
+            column("altitude", unit)?.iter().map(|h| -h).collect(),
+        ],
+        attitude,
+        readout,
+        vectors: None,
+        trail: ([0.0; 3], "G".into()),
+        camera: CameraTarget::Follow,
+        floor: 0.0,
+        water: false,
+        notes: vec![note],
+    };
+    write_view(out, &input).with_context(|| format!("writing the view into {}", out.display()))
+}
+
+/// A column's label as the readout writes it: `alpha[rad]` as `alpha [rad]`, so that an angle
+/// shows in degrees.
+fn spaced(name: &str) -> String {
+    match name.split_once('[') {
+        Some((base, unit)) => format!("{base} [{unit}"),
+        None => name.to_owned(),
+    }
 }
 
 /// Quaternion columns divided by their length, row by row (a run's quaternion drifts from

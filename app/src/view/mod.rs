@@ -82,6 +82,20 @@ pub enum Shape {
         /// B, m.
         beam: f64,
     },
+    /// An aircraft: a solid cylinder along body x (its fuselage, the body's mass and moments)
+    /// with flat wings of `span` and `chord` through G and a fin on top.
+    Aircraft {
+        /// The fuselage's length.
+        length: f64,
+        /// Its diameter.
+        diameter: f64,
+        /// The wings' span.
+        span: f64,
+        /// Their chord.
+        chord: f64,
+        /// The length unit of these and of the positions (`ft`, `m`).
+        unit: &'static str,
+    },
     /// A pendulum: a rod from the pivot (the body origin) to a bob at G, `length` along body z.
     Pendulum {
         /// Pivot to G, m.
@@ -191,6 +205,8 @@ struct Data<'a> {
     floor: f64,
     water: bool,
     notes: Vec<String>,
+    /// The unit of every length the page shows (the grid's step).
+    length_unit: &'static str,
 }
 
 #[derive(Serialize)]
@@ -266,6 +282,10 @@ fn render_view(input: &ViewInput) -> Result<String, Problem> {
             omega: v.omega,
             inertia: v.inertia,
         }),
+        length_unit: match input.shape {
+            Shape::Aircraft { unit, .. } => unit,
+            _ => "m",
+        },
         trail: input.trail.0,
         trail_name: &input.trail.1,
         camera,

@@ -6,7 +6,7 @@ use super::linear::linearise_aircraft;
 use super::manoeuvre::{self, AircraftRun, ROW, RunError, dutch_roll};
 use super::scene::{AircraftScene, units};
 use crate::kinds::KindError;
-use crate::output::drawing::{Curves, Drawing, RunDrawings};
+use crate::output::drawing::{Curves, Drawing, Flight, RunDrawings};
 use crate::output::summary::{Figure, IntegratorSummary, Named, RunFigures, Summary};
 use crate::output::trajectory::number_text;
 use crate::run::Row;
@@ -298,6 +298,13 @@ fn drawings(scene: &AircraftScene, path: &str, rows: &[(f64, [f64; 18])]) -> Run
                     .iter()
                     .map(|n| curve(n, column(n), degrees))
                     .collect(),
+            }),
+            Drawing::Flight(Flight {
+                title: format!("{}: {path}", scene.title),
+                solid: scene.solid(),
+                span: scene.span,
+                chord: scene.chord,
+                length_unit: units(scene.units)[9].1,
             }),
             Drawing::Curves(Curves {
                 file: "load_factor.svg".into(),

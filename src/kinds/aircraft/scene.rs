@@ -302,6 +302,12 @@ pub struct AircraftScene {
     pub stop: Option<StopCondition>,
     /// `[linear]`.
     pub linear: crate::linear::LinearSpec,
+    /// The mass and the tensor about G, for the view.
+    pub mass_properties: (f64, [[f64; 3]; 3]),
+    /// The wing's span and chord, for the view.
+    pub span: f64,
+    /// The mean aerodynamic chord.
+    pub chord: f64,
 }
 
 /// The units of each state entry and control, by the unit system.
@@ -388,6 +394,12 @@ impl AircraftScene {
             [((), "stevens-lewis")],
         )?;
         let airframe = check.aircraft_airframe(file)?;
+        let tensor = airframe.inertia.matrix();
+        let mass_properties = (
+            airframe.mass,
+            std::array::from_fn(|r| std::array::from_fn(|c| tensor[(r, c)])),
+        );
+        let (span, chord) = (airframe.span, airframe.chord);
         let tables = check.aircraft_aerodynamics(&file.aerodynamics)?;
         let engine = check.aircraft_engine(&file.engine)?;
         let model = AircraftModel::new(&airframe, tables, engine, atmosphere)
@@ -443,7 +455,18 @@ impl AircraftScene {
             every,
             stop,
             linear,
+            mass_properties,
+            span,
+            chord,
         })
+    }
+
+    /// The body as the view draws it: its mass and its tensor about G.
+    pub fn solid(&self) -> crate::output::drawing::Solid {
+        crate::output::drawing::Solid {
+            mass: self.mass_properties.0,
+            inertia_about_g: self.mass_properties.1,
+        }
     }
 }
 
