@@ -497,8 +497,8 @@ pub fn write_flight(out: &Path, drawing: &Flight, kept: &Kept) -> Result<PathBuf
         column("psi", "rad")?,
     ];
     let mut attitude: [Vec<f64>; 4] = Default::default();
-    for row in 0..angles[0].len() {
-        let q = UnitQuaternion::from_euler_angles(angles[0][row], angles[1][row], angles[2][row]);
+    for ((phi, theta), psi) in angles[0].iter().zip(angles[1]).zip(angles[2]) {
+        let q = UnitQuaternion::from_euler_angles(*phi, *theta, *psi);
         for (column, v) in attitude.iter_mut().zip([q.w, q.i, q.j, q.k]) {
             column.push(v);
         }
