@@ -199,6 +199,33 @@ fn eom_new_aircraft_writes_a_scene_that_runs() {
     assert!(stdout.contains("elevator_doublet"), "{stdout}");
 }
 
+/// A pull-up held into a loop stops where the pitch comes within 1° of 90° (the Euler angles'
+/// singularity), saying so (exit 5), rather than writing rates that are not the aircraft's.
+#[test]
+fn a_loop_stops_at_the_euler_angles_singularity_saying_so() {
+    let text = std::fs::read_to_string(scene("f16.toml")).unwrap();
+    let looping = text.replacen(
+        "amount = 3.0\nstart_s = 1.0\nduration_s = 4.0",
+        "amount = 10.0\nstart_s = 1.0\nduration_s = 20.0",
+        1,
+    );
+    assert_ne!(looping, text);
+    let out = folder("f16_loop");
+    let file = out.with_extension("toml");
+    std::fs::create_dir_all(out.parent().unwrap()).unwrap();
+    std::fs::write(&file, looping).unwrap();
+    let output = eom(&[
+        "run",
+        file.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(5), "{stderr}");
+    assert!(stderr.contains("manoeuvre pull_up"), "{stderr}");
+    assert!(stderr.contains("within 1° of ±90°"), "{stderr}");
+}
+
 /// Bad input is refused naming its key (exit 3), never run.
 #[test]
 fn bad_aircraft_input_is_refused_by_key() {

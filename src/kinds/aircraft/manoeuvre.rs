@@ -268,6 +268,8 @@ struct Runner<'a> {
     duration: f64,
     trim_controls: [f64; 4],
     stop: Option<&'a StopCondition>,
+    /// Why the run cannot go on, where it cannot (the pitch at ±90°).
+    failure: Option<(f64, String)>,
 }
 
 impl<'a> Problem<13> for Runner<'a> {
@@ -305,6 +307,26 @@ impl<'a> Problem<13> for Runner<'a> {
 
     fn stop_holds(&self, t: f64, y: &SVector<f64, 13>) -> bool {
         (self.stop).is_some_and(|stop| stop.holds(t, &self.sample(t, y).row))
+    }
+
+    /// The attitude is in Euler angles, whose rates are singular at θ = ±90°: a run that
+    /// comes within 1° of it stops there, saying so, rather than writing rates that are not
+    /// the aircraft's.
+    fn accepted(&mut self, t: f64, y: &SVector<f64, 13>) -> bool {
+        let theta = y[4];
+        if theta.abs() > crate::linear::EULER_PITCH_LIMIT {
+            self.failure = Some((
+                t,
+                format!(
+                    "the pitch θ = {:.2}° is within 1° of ±90°, where the Euler angles the \
+                     aircraft is flown in do not hold (a loop or a vertical climb needs \
+                     quaternion kinematics, which an aircraft scene does not have yet)",
+                    theta.to_degrees()
+                ),
+            ));
+            return false;
+        }
+        true
     }
 
     fn change(&mut self, _t: f64, _y: &mut SVector<f64, 13>) -> Flow {
@@ -352,12 +374,16 @@ pub fn run(
         duration: manoeuvre.duration,
         trim_controls: *controls,
         stop,
+        failure: None,
     };
     let observed = |sample: &Sample| {
         measured.row(sample.t, &sample.row);
         observe(sample)
     };
     let (reached, stats) = problem::solve(&mut runner, (stepper, every), observed);
+    if let Some((time, reason)) = runner.failure {
+        return Err(RunError::Failed { time, reason });
+    }
     let end = reached.map_err(|error| match error {
         IntegrateError::Stopped { t } => RunError::Stopped { time: t },
         IntegrateError::NonFiniteState { component, t } => RunError::Failed {
