@@ -433,6 +433,12 @@ impl Recorder for Memory<'_> {
     }
 }
 
+/// A shape as Python writes it: `(7, 3)`.
+fn tuple(shape: &[usize]) -> String {
+    let sizes: Vec<String> = shape.iter().map(usize::to_string).collect();
+    format!("({})", sizes.join(", "))
+}
+
 /// A scene's model: its names, and its rates and proved Jacobians over many states at once.
 #[pyclass(module = "eom._eom", frozen)]
 struct Model {
@@ -457,7 +463,8 @@ impl Model {
         let name = self.model.name();
         let shape = |what: &str, got: &[usize], rows: usize| {
             let why = format!(
-                "{what} has shape {got:?}; the model {name} takes ({rows}, N): one column per state"
+                "{what} has shape {}; the model {name} takes ({rows}, N): one column per state",
+                tuple(got)
             );
             exception(py, "ShapeError", why, None, None)
         };
@@ -466,8 +473,8 @@ impl Model {
         }
         if u.nrows() != m || u.ncols() != x.ncols() {
             let why = format!(
-                "u has shape {:?}; the model {name} takes ({m}, {}): one column of inputs per state",
-                u.shape(),
+                "u has shape {}; the model {name} takes ({m}, {}): one column of inputs per state",
+                tuple(u.shape()),
                 x.ncols()
             );
             return Err(exception(py, "ShapeError", why, None, None));
