@@ -12,7 +12,8 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
 SCENES = ROOT / "scenes"
-EOM = Path(os.environ.get("EOM_BIN", ROOT / "target" / "debug" / "eom"))
+# Resolved now, against the folder pytest was started in: a test may change folders.
+EOM = Path(os.environ.get("EOM_BIN", ROOT / "target" / "debug" / "eom")).resolve()
 
 
 def eom_cli(*args: str, cwd: Path | None = None) -> subprocess.CompletedProcess:
