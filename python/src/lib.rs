@@ -510,21 +510,36 @@ impl Model {
             Function::StateJacobian => n,
             Function::InputJacobian => m,
         };
+        // Row-major slices: entry (i, k) of x at i·N + k, entry (i, w, k) of the result at
+        // (i·width + w)·N + k.
+        let (x, u) = (x.as_standard_layout(), u.as_standard_layout());
+        let internal = |what: &str| {
+            exception(
+                py,
+                "InternalError",
+                format!("{what} is not contiguous"),
+                None,
+                None,
+            )
+        };
+        let xs = x.as_slice().ok_or_else(|| internal("x"))?;
+        let us = u.as_slice().ok_or_else(|| internal("u"))?;
         let mut out = Array3::<f64>::zeros((n, width, count));
+        let results = out.as_slice_mut().ok_or_else(|| internal("the result"))?;
         let model = self.model.as_ref();
         let mut start = 0;
         while start < count {
             let end = (start + STATES_PER_STRETCH).min(count);
-            let out = &mut out;
+            let results = &mut *results;
             let done = py.detach(|| -> Result<(), SizeError> {
                 let (mut state, mut input) = (vec![0.0; n], vec![0.0; m]);
                 let mut values = vec![0.0; n * width];
                 for k in start..end {
                     for (i, entry) in state.iter_mut().enumerate() {
-                        *entry = x[(i, k)];
+                        *entry = xs[i * count + k];
                     }
                     for (j, entry) in input.iter_mut().enumerate() {
-                        *entry = u[(j, k)];
+                        *entry = us[j * count + k];
                     }
                     match function {
                         Function::Rates => model.rhs(&state, &input, &mut values)?,
@@ -536,7 +551,7 @@ impl Model {
                         }
                     }
                     for (index, value) in values.iter().enumerate() {
-                        out[(index / width, index % width, k)] = *value;
+                        results[index * count + k] = *value;
                     }
                 }
                 Ok(())
@@ -584,28 +599,20 @@ impl Model {
         Ok(out.into_pyarray(py))
     }
 
-    /// ∂f/∂x at each column: an (n, n, N) array.
-    fn state_jacobian<'py>(
+    /// ∂f/∂x at each column, an (n, n, N) array; with `by_inputs`, ∂f/∂u, (n, m, N).
+    #[pyo3(signature = (x, u, by_inputs = false))]
+    fn jacobian<'py>(
         &self,
         py: Python<'py>,
         x: PyReadonlyArray2<'py, f64>,
         u: PyReadonlyArray2<'py, f64>,
+        by_inputs: bool,
     ) -> PyResult<Bound<'py, PyArray3<f64>>> {
-        Ok(self
-            .evaluate(py, (x, u), Function::StateJacobian)?
-            .into_pyarray(py))
-    }
-
-    /// ∂f/∂u at each column: an (n, m, N) array.
-    fn input_jacobian<'py>(
-        &self,
-        py: Python<'py>,
-        x: PyReadonlyArray2<'py, f64>,
-        u: PyReadonlyArray2<'py, f64>,
-    ) -> PyResult<Bound<'py, PyArray3<f64>>> {
-        Ok(self
-            .evaluate(py, (x, u), Function::InputJacobian)?
-            .into_pyarray(py))
+        let function = match by_inputs {
+            false => Function::StateJacobian,
+            true => Function::InputJacobian,
+        };
+        Ok(self.evaluate(py, (x, u), function)?.into_pyarray(py))
     }
 
     fn __repr__(&self) -> String {

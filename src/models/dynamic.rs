@@ -88,97 +88,29 @@ fn room(
     }
 }
 
-/// The typed calls behind both [`Erased`] and [`AnyModel`]'s implementation, checked once.
-fn rhs<Mo: Model<f64, N, M>, const N: usize, const M: usize>(
-    model: &Mo,
-    (state, input, rates): (&[f64], &[f64], &mut [f64]),
-) -> Result<(), SizeError> {
+/// `state`, `input` as the model's arrays, `out` checked to hold `width` entries per state
+/// entry (1 for the rates, N for ∂f/∂x, M for ∂f/∂u).
+fn arguments<'a, Mo: Model<f64, N, M>, const N: usize, const M: usize>(
+    (state, input, out): (&'a [f64], &'a [f64], &[f64]),
+    width: usize,
+    what: &'static str,
+) -> Result<(&'a [f64; N], &'a [f64; M]), SizeError> {
     let x = sized::<N>(state, "state", Mo::NAME)?;
     let u = sized::<M>(input, "input", Mo::NAME)?;
-    room(rates, N, "rates", Mo::NAME)?;
-    rates.copy_from_slice(&model.rhs(x, u));
-    Ok(())
+    room(out, N * width, what, Mo::NAME)?;
+    Ok((x, u))
 }
 
-fn state_jacobian<Mo: Model<f64, N, M>, const N: usize, const M: usize>(
-    model: &Mo,
-    (state, input, out): (&[f64], &[f64], &mut [f64]),
-) -> Result<(), SizeError> {
-    let x = sized::<N>(state, "state", Mo::NAME)?;
-    let u = sized::<M>(input, "input", Mo::NAME)?;
-    room(out, N * N, "state Jacobian", Mo::NAME)?;
-    for (row, values) in out.chunks_exact_mut(N).zip(model.state_jacobian(x, u)) {
-        row.copy_from_slice(&values);
-    }
-    Ok(())
-}
-
-fn input_jacobian<Mo: Model<f64, N, M>, const N: usize, const M: usize>(
-    model: &Mo,
-    (state, input, out): (&[f64], &[f64], &mut [f64]),
-) -> Result<(), SizeError> {
-    let x = sized::<N>(state, "state", Mo::NAME)?;
-    let u = sized::<M>(input, "input", Mo::NAME)?;
-    room(out, N * M, "input Jacobian", Mo::NAME)?;
-    if M > 0 {
-        for (row, values) in out.chunks_exact_mut(M).zip(model.input_jacobian(x, u)) {
+/// `rows` written one after another into `out` (row-major).
+fn write_rows<const W: usize>(out: &mut [f64], rows: impl IntoIterator<Item = [f64; W]>) {
+    if W > 0 {
+        for (row, values) in out.chunks_exact_mut(W).zip(rows) {
             row.copy_from_slice(&values);
         }
     }
-    Ok(())
 }
 
-fn kinetic_energy<Mo: Model<f64, N, M>, const N: usize, const M: usize>(
-    model: &Mo,
-    state: &[f64],
-) -> Result<f64, SizeError> {
-    Ok(model.kinetic_energy(sized::<N>(state, "state", Mo::NAME)?))
-}
-
-impl<Mo, const N: usize, const M: usize> DynModel for Erased<Mo, N, M>
-where
-    Mo: Model<f64, N, M> + Send + Sync + std::fmt::Debug,
-{
-    fn name(&self) -> &'static str {
-        Mo::NAME
-    }
-
-    fn state_names(&self) -> Vec<&'static str> {
-        Mo::STATE.to_vec()
-    }
-
-    fn input_names(&self) -> Vec<&'static str> {
-        Mo::INPUTS.to_vec()
-    }
-
-    fn rhs(&self, state: &[f64], input: &[f64], rates: &mut [f64]) -> Result<(), SizeError> {
-        rhs(&self.0, (state, input, rates))
-    }
-
-    fn state_jacobian(
-        &self,
-        state: &[f64],
-        input: &[f64],
-        out: &mut [f64],
-    ) -> Result<(), SizeError> {
-        state_jacobian(&self.0, (state, input, out))
-    }
-
-    fn input_jacobian(
-        &self,
-        state: &[f64],
-        input: &[f64],
-        out: &mut [f64],
-    ) -> Result<(), SizeError> {
-        input_jacobian(&self.0, (state, input, out))
-    }
-
-    fn kinetic_energy(&self, state: &[f64]) -> Result<f64, SizeError> {
-        kinetic_energy(&self.0, state)
-    }
-}
-
-/// One call of a [`DynModel`] method on whichever model an [`AnyModel`] holds.
+/// One call of a [`DynModel`] method, with its arguments.
 enum Call<'a> {
     Rhs(&'a [f64], &'a [f64], &'a mut [f64]),
     StateJacobian(&'a [f64], &'a [f64], &'a mut [f64]),
@@ -194,53 +126,88 @@ enum Given {
     Names(&'static str, Vec<&'static str>, Vec<&'static str>),
 }
 
-impl Visitor for Call<'_> {
-    type Output = Given;
-
-    fn visit<Mo: Model<f64, N, M>, const N: usize, const M: usize>(self, model: &Mo) -> Given {
-        let done = |r: Result<(), SizeError>| Given::Done(r.map(|()| 0.0));
+impl Call<'_> {
+    /// The call on a typed model: every length checked, then the typed call.
+    fn on<Mo: Model<f64, N, M>, const N: usize, const M: usize>(self, model: &Mo) -> Given {
+        let done = |result: Result<(), SizeError>| Given::Done(result.map(|()| 0.0));
         match self {
-            Call::Rhs(x, u, out) => done(rhs(model, (x, u, out))),
-            Call::StateJacobian(x, u, out) => done(state_jacobian(model, (x, u, out))),
-            Call::InputJacobian(x, u, out) => done(input_jacobian(model, (x, u, out))),
-            Call::KineticEnergy(x) => Given::Done(kinetic_energy(model, x)),
+            Call::Rhs(state, input, out) => done(
+                arguments::<Mo, N, M>((state, input, out), 1, "rates")
+                    .map(|(x, u)| out.copy_from_slice(&model.rhs(x, u))),
+            ),
+            Call::StateJacobian(state, input, out) => done(
+                arguments::<Mo, N, M>((state, input, out), N, "state Jacobian")
+                    .map(|(x, u)| write_rows(out, model.state_jacobian(x, u))),
+            ),
+            Call::InputJacobian(state, input, out) => done(
+                arguments::<Mo, N, M>((state, input, out), M, "input Jacobian")
+                    .map(|(x, u)| write_rows(out, model.input_jacobian(x, u))),
+            ),
+            Call::KineticEnergy(state) => {
+                Given::Done(sized::<N>(state, "state", Mo::NAME).map(|x| model.kinetic_energy(x)))
+            }
             Call::Names => Given::Names(Mo::NAME, Mo::STATE.to_vec(), Mo::INPUTS.to_vec()),
         }
     }
 }
 
-impl AnyModel {
-    fn call(&self, call: Call) -> Result<f64, SizeError> {
-        match self.visit(call) {
-            Given::Done(result) => result,
-            Given::Names(..) => Ok(0.0),
-        }
-    }
+impl Visitor for Call<'_> {
+    type Output = Given;
 
-    fn names(&self) -> (&'static str, Vec<&'static str>, Vec<&'static str>) {
-        match self.visit(Call::Names) {
-            Given::Names(name, state, inputs) => (name, state, inputs),
-            Given::Done(_) => ("", Vec::new(), Vec::new()),
-        }
+    fn visit<Mo: Model<f64, N, M>, const N: usize, const M: usize>(self, model: &Mo) -> Given {
+        self.on(model)
+    }
+}
+
+/// What answers a [`Call`]: a typed model directly, an [`AnyModel`] by visiting the model it
+/// holds. Every such type is a [`DynModel`].
+trait Answers {
+    fn answer(&self, call: Call) -> Given;
+}
+
+impl<Mo: Model<f64, N, M>, const N: usize, const M: usize> Answers for Erased<Mo, N, M> {
+    fn answer(&self, call: Call) -> Given {
+        call.on(&self.0)
     }
 }
 
 /// A catalog model, whichever it is, visited at each call (a match, then the typed call).
-impl DynModel for AnyModel {
+impl Answers for AnyModel {
+    fn answer(&self, call: Call) -> Given {
+        self.visit(call)
+    }
+}
+
+/// The kinetic energy, or 0 for a call that wrote into its slice.
+fn done(given: Given) -> Result<f64, SizeError> {
+    match given {
+        Given::Done(result) => result,
+        Given::Names(..) => Ok(0.0),
+    }
+}
+
+fn names(given: Given) -> (&'static str, Vec<&'static str>, Vec<&'static str>) {
+    match given {
+        Given::Names(name, state, inputs) => (name, state, inputs),
+        Given::Done(_) => ("", Vec::new(), Vec::new()),
+    }
+}
+
+impl<T: Answers + Send + Sync + std::fmt::Debug> DynModel for T {
     fn name(&self) -> &'static str {
-        self.names().0
+        names(self.answer(Call::Names)).0
     }
 
     fn state_names(&self) -> Vec<&'static str> {
-        self.names().1
+        names(self.answer(Call::Names)).1
     }
 
     fn input_names(&self) -> Vec<&'static str> {
-        self.names().2
+        names(self.answer(Call::Names)).2
     }
 
     fn rhs(&self, state: &[f64], input: &[f64], rates: &mut [f64]) -> Result<(), SizeError> {
-        self.call(Call::Rhs(state, input, rates)).map(drop)
+        done(self.answer(Call::Rhs(state, input, rates))).map(drop)
     }
 
     fn state_jacobian(
@@ -249,7 +216,7 @@ impl DynModel for AnyModel {
         input: &[f64],
         out: &mut [f64],
     ) -> Result<(), SizeError> {
-        self.call(Call::StateJacobian(state, input, out)).map(drop)
+        done(self.answer(Call::StateJacobian(state, input, out))).map(drop)
     }
 
     fn input_jacobian(
@@ -258,11 +225,11 @@ impl DynModel for AnyModel {
         input: &[f64],
         out: &mut [f64],
     ) -> Result<(), SizeError> {
-        self.call(Call::InputJacobian(state, input, out)).map(drop)
+        done(self.answer(Call::InputJacobian(state, input, out))).map(drop)
     }
 
     fn kinetic_energy(&self, state: &[f64]) -> Result<f64, SizeError> {
-        self.call(Call::KineticEnergy(state))
+        done(self.answer(Call::KineticEnergy(state)))
     }
 }
 

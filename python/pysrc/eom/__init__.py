@@ -386,13 +386,13 @@ class Model:
         """∂f/∂x, the proved Jacobian: (n, n, N), entry [i, j, k] the derivative of the rate
         of state i by state j at column k; (n, n) for a single state."""
         x, u, single = self._arrays(x, u)
-        a = self._native.state_jacobian(x, u)
+        a = self._native.jacobian(x, u)
         return a[:, :, 0] if single else a
 
     def input_jacobian(self, x: Any, u: Any = None) -> np.ndarray:
         """∂f/∂u, the proved Jacobian: (n, m, N); (n, m) for a single state."""
         x, u, single = self._arrays(x, u)
-        b = self._native.input_jacobian(x, u)
+        b = self._native.jacobian(x, u, by_inputs=True)
         return b[:, :, 0] if single else b
 
     def __repr__(self) -> str:

@@ -71,14 +71,13 @@ class Model:
         self, x: npt.NDArray[np.float64], u: npt.NDArray[np.float64]
     ) -> npt.NDArray[np.float64]:
         """f(x, u) at each column: x (n, N), u (m, N) → (n, N)."""
-    def state_jacobian(
-        self, x: npt.NDArray[np.float64], u: npt.NDArray[np.float64]
+    def jacobian(
+        self,
+        x: npt.NDArray[np.float64],
+        u: npt.NDArray[np.float64],
+        by_inputs: bool = False,
     ) -> npt.NDArray[np.float64]:
-        """∂f/∂x at each column: (n, n, N)."""
-    def input_jacobian(
-        self, x: npt.NDArray[np.float64], u: npt.NDArray[np.float64]
-    ) -> npt.NDArray[np.float64]:
-        """∂f/∂u at each column: (n, m, N)."""
+        """∂f/∂x at each column, (n, n, N); with ``by_inputs``, ∂f/∂u, (n, m, N)."""
 
 def derive() -> tuple[str, list[tuple[str, str, int, str | None]]]:
     """``eom derive``: (the Markdown report, each equation's (number, description,
