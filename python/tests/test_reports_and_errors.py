@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import json
 import signal
+import subprocess
 import threading
 import time
 
@@ -14,7 +15,7 @@ import pytest
 
 import eom
 
-from conftest import ROOT, SCENES, eom_cli
+from conftest import EOM, ROOT, SCENES, eom_cli
 
 
 def bits(array) -> np.ndarray:
@@ -173,3 +174,38 @@ def test_ctrl_c_stops_a_run_with_keyboard_interrupt():
     timer.join()
     # The module is usable after it.
     assert eom.Scene.load(SCENES / "pendulum.toml").run().trajectory.t[-1] == 20.0
+
+
+GIMBAL_LOCK = """
+title = "Pitching through 90 degrees on Euler angles"
+[body]
+mass = 1.0
+inertia = [[2.0, 0.0, 0.0], [0.0, 3.0, 0.0], [0.0, 0.0, 4.0]]
+[model]
+family = "spatial"
+kinematics = "euler"
+[initial]
+rates = [0.0, 1.0, 0.0]
+[integrator]
+method = "rk4"
+step = 0.01
+end_time = 3.0
+"""
+
+
+def test_a_run_that_fails_raises_run_error_with_what_it_kept(binary, tmp_path):
+    """Gimbal lock: `eom run` exits 5 keeping its rows and a summary with the error; Python
+    raises RunError with the same rows and summary in `error.result`."""
+    path = tmp_path / "gimbal.toml"
+    path.write_text(GIMBAL_LOCK)
+    out = tmp_path / "out"
+    done = subprocess.run([str(EOM), "run", str(path), "--out", str(out)], capture_output=True)
+    assert done.returncode == 5
+    with pytest.raises(eom.RunError) as error:
+        eom.Scene.load(path).run()
+    assert "gimbal lock" in error.value.message
+    kept = error.value.result
+    written = np.genfromtxt(out / "trajectory.csv", delimiter=",", skip_header=1)
+    assert np.array_equal(bits(kept.trajectory.data), bits(written))
+    summary = json.loads((out / "summary.json").read_text())
+    assert kept.summary["error"] == summary["error"] == error.value.message
