@@ -255,6 +255,9 @@ class Scene:
         returns its rows and summary: the numbers ``eom run`` writes into trajectory.csv and
         summary.json, bit for bit (the summary's ``wall_seconds`` aside).
 
+        A scene with a ``[sweep]`` runs as written, its sweep aside: its cases are
+        :meth:`cases`, each a scene to run.
+
         The GIL is released while it runs; Ctrl-C stops it at its next row and raises
         :class:`KeyboardInterrupt`. A run that fails where it fails (gimbal lock) raises
         :class:`RunError` with what it kept in ``error.result``.
