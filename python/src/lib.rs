@@ -481,6 +481,10 @@ impl Model {
         }
         let names = [self.model.state_names(), self.model.input_names()];
         for ((what, array), names) in [("x", x), ("u", u)].into_iter().zip(names) {
+            // One pass over the values; their places are looked for only where one is not finite.
+            if array.iter().all(|value| value.is_finite()) {
+                continue;
+            }
             if let Some(((row, column), value)) =
                 array.indexed_iter().find(|(_, value)| !value.is_finite())
             {
