@@ -74,6 +74,7 @@ pub mod ship;
 pub mod vehicle;
 
 use crate::linear::Linearisation;
+use crate::models::DynModel;
 use crate::output::summary::Summary;
 use crate::run::record::Recorder;
 use crate::run::tradeoff::Tradeoff;
@@ -118,6 +119,13 @@ pub trait Kind: Send + Sync + std::fmt::Debug {
     /// tolerances, each end state against a reference), for a kind whose scene is one run
     /// it can repeat; `None` for a kind that does not compare them.
     fn tradeoff(&self) -> Option<Result<Tradeoff, KindError>> {
+        None
+    }
+
+    /// The model the scene runs, as it stands (no loads, schedules or steering gear): its
+    /// names, `rhs` and proved Jacobians for any caller, sizes known at run time (a binding
+    /// evaluating it over many states). `None` for a kind that does not give it.
+    fn model(&self) -> Option<Result<Box<dyn DynModel>, KindError>> {
         None
     }
 

@@ -19,10 +19,13 @@
 //!   halving time, dominant states and a name where the family knows one.
 //! - [`state_space`]: the result as control tools read it (A, B, C, D with the names and units
 //!   of x, u and y, the point and what was set aside), for `linear.json` and `linear.mat`.
+//! - [`report`]: the text and JSON reports of `eom linear` (report.txt, linear.json), for the
+//!   command and the Python binding alike.
 
 pub mod modes;
 pub mod plant;
 pub mod reduce;
+pub mod report;
 mod scene;
 pub mod state_space;
 pub mod trim;

@@ -47,10 +47,12 @@ pub use units::{ENERGY_UNIT, TIME_UNIT, input_unit, state_unit, state_with_unit,
 include!(concat!(env!("OUT_DIR"), "/catalog.rs"));
 
 mod any;
+mod dynamic;
 mod spatial;
 mod top;
 mod typed;
 
 pub use any::{AnyModel, LayoutError, Visitor};
+pub use dynamic::{DynModel, Erased, SizeError};
 pub use spatial::{FromBody, PRODUCT_TOLERANCE};
 pub use typed::*;

@@ -241,8 +241,8 @@ fn combination(axes: &[(String, Axis)], mut index: usize) -> Vec<(String, Value)
 
 /// Sets a dotted key (`body.mass`) of a scene table; the tables on the way must exist or are
 /// made. A part `name[i]` is the `i`-th table of the array of tables `name`, which must exist
-/// (`manoeuvre[0].rudder_deg`).
-fn set(table: &mut Table, key: &str, value: Value) -> Result<(), Problem> {
+/// (`manoeuvre[0].rudder_deg`). A sweep sets its cases' values by it; a binding, a user's.
+pub fn set(table: &mut Table, key: &str, value: Value) -> Result<(), Problem> {
     let mut parts: Vec<&str> = key.split('.').collect();
     let last = parts
         .pop()

@@ -1,9 +1,7 @@
 //! `eom mass`: the mass properties of a body described in a TOML file.
 
 use anyhow::Context;
-use eom::mass::{BodyFile, MassProperties};
-use nalgebra::{Matrix3, Vector3};
-use serde::Serialize;
+use eom::mass::{BodyFile, MassReport};
 use std::path::PathBuf;
 
 /// Options of `eom mass`.
@@ -21,52 +19,12 @@ pub struct Args {
     json: bool,
 }
 
-#[derive(Serialize)]
-struct PartReport {
-    index: usize,
-    name: Option<String>,
-    kind: &'static str,
-    mass: f64,
-    centre_of_gravity: [f64; 3],
-}
-
-#[derive(Serialize)]
-struct Report {
-    mass: f64,
-    centre_of_gravity: [f64; 3],
-    inertia_about_g: [[f64; 3]; 3],
-    radii_of_gyration: [f64; 3],
-    principal_moments: [f64; 3],
-    principal_axes: [[f64; 3]; 3],
-    principal_radii_of_gyration: [f64; 3],
-    about: Option<AboutReport>,
-    parts: Vec<PartReport>,
-}
-
-#[derive(Serialize)]
-struct AboutReport {
-    point: [f64; 3],
-    inertia: [[f64; 3]; 3],
-}
-
 /// Computes and prints the mass properties of the body file.
 pub fn run(args: Args) -> anyhow::Result<()> {
     let body = BodyFile::load(&args.file)?;
     let properties = body.mass_properties()?;
-    let about = match &args.about {
-        Some(point) => {
-            let point = Vector3::from(*point);
-            let inertia = properties
-                .inertia_about(&point)
-                .context("--about: the tensor about that point")?;
-            Some(AboutReport {
-                point: point.into(),
-                inertia: rows(&inertia.matrix()),
-            })
-        }
-        None => None,
-    };
-    let report = report(&body, &properties, about);
+    let report = MassReport::new(&body, &properties, args.about)
+        .context("--about: the tensor about that point")?;
     if args.json {
         println!("{}", serde_json::to_string_pretty(&report)?);
     } else {
@@ -75,39 +33,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     Ok(())
 }
 
-fn report(body: &BodyFile, properties: &MassProperties, about: Option<AboutReport>) -> Report {
-    let principal = properties.principal();
-    let parts = body
-        .parts()
-        .iter()
-        .enumerate()
-        .map(|(i, part)| PartReport {
-            index: i + 1,
-            name: part.name.clone(),
-            kind: part.kind,
-            mass: part.mass,
-            centre_of_gravity: part.centre_of_gravity.into(),
-        })
-        .collect();
-    Report {
-        mass: properties.mass(),
-        centre_of_gravity: properties.centre_of_gravity().into(),
-        inertia_about_g: rows(&properties.inertia().matrix()),
-        radii_of_gyration: properties.radii_of_gyration().into(),
-        principal_moments: principal.moments.into(),
-        principal_axes: rows(&principal.axes.transpose()),
-        principal_radii_of_gyration: principal.radii.into(),
-        about,
-        parts,
-    }
-}
-
-/// The rows of a matrix (for the principal axes, given the transpose: one axis per row).
-fn rows(m: &Matrix3<f64>) -> [[f64; 3]; 3] {
-    [0, 1, 2].map(|r| [0, 1, 2].map(|c| m[(r, c)]))
-}
-
-fn print_text(file: &std::path::Path, r: &Report) {
+fn print_text(file: &std::path::Path, r: &MassReport) {
     println!("Body {} ({} parts)", file.display(), r.parts.len());
     println!("  part  kind             mass          G (x, y, z)");
     for p in &r.parts {

@@ -86,6 +86,12 @@ impl kinds::Kind for AircraftScene {
         Ok(Linearised::alone(linearise_aircraft(self)?))
     }
 
+    /// The proved model with the scene's tables, engine and atmosphere, in the scene's units
+    /// (controls: throttle 0–1, surfaces in degrees).
+    fn model(&self) -> Option<Result<Box<dyn crate::models::DynModel>, KindError>> {
+        Some(Ok(Box::new(crate::models::Erased(self.model.clone()))))
+    }
+
     fn as_any(&self) -> &dyn Any {
         self
     }

@@ -80,6 +80,11 @@ impl Kind for BodyScene {
         Ok(Linearised::alone(super::linear::linearise_scene(self)?))
     }
 
+    /// The catalog variant the scene selected, under its parameters.
+    fn model(&self) -> Option<Result<Box<dyn crate::models::DynModel>, KindError>> {
+        Some(Ok(Box::new(BodyScene::model(self))))
+    }
+
     fn tradeoff(&self) -> Option<Result<Tradeoff, KindError>> {
         let compared = super::tradeoff::tradeoff(self);
         Some(compared.map_err(|error| KindError::Run(Box::new(error))))

@@ -110,6 +110,12 @@ impl kinds::Kind for ShipScene {
         })
     }
 
+    /// The table's model, derived and proved again (as each run builds it).
+    fn model(&self) -> Option<Result<Box<dyn crate::models::DynModel>, KindError>> {
+        let model = ShipModel::new(&self.table).map_err(KindError::from);
+        Some(model.map(|model| Box::new(crate::models::Erased(model)) as Box<_>))
+    }
+
     fn as_any(&self) -> &dyn Any {
         self
     }

@@ -101,6 +101,11 @@ impl kinds::Kind for VehicleScene {
         Ok(Linearised::alone(linearise_vehicle(self)?))
     }
 
+    /// The table's proved model, as the scene built it.
+    fn model(&self) -> Option<Result<Box<dyn crate::models::DynModel>, KindError>> {
+        Some(Ok(Box::new(crate::models::Erased(self.model.clone()))))
+    }
+
     fn as_any(&self) -> &dyn Any {
         self
     }
