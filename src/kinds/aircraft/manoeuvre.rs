@@ -167,6 +167,8 @@ pub struct Measured {
     pub excursions: [f64; 3],
     /// The yaw rate's local maxima after the last change of the controls, (t, r − r_trim).
     pub yaw_peaks: Vec<(f64, f64)>,
+    /// Its local minima after it, likewise.
+    pub yaw_troughs: Vec<(f64, f64)>,
     /// The trim's α and r.
     trim: (f64, f64),
     /// When the controls last change.
@@ -181,6 +183,7 @@ impl Measured {
             load_factor: (f64::NEG_INFINITY, f64::INFINITY),
             excursions: [0.0; 3],
             yaw_peaks: Vec::new(),
+            yaw_troughs: Vec::new(),
             trim: (trim[1], trim[8]),
             settled_from,
             recent: Vec::new(),
@@ -202,11 +205,13 @@ impl Measured {
         if self.recent.len() > 3 {
             self.recent.remove(0);
         }
-        if let [(ta, a), (tb, b), (tc, c)] = self.recent[..]
-            && b > a
-            && b >= c
-        {
-            self.yaw_peaks.push(vertex((ta, a), (tb, b), (tc, c)));
+        if let [(ta, a), (tb, b), (tc, c)] = self.recent[..] {
+            if b > a && b >= c {
+                self.yaw_peaks.push(vertex((ta, a), (tb, b), (tc, c)));
+            } else if b < a && b <= c {
+                let (t, low) = vertex((ta, -a), (tb, -b), (tc, -c));
+                self.yaw_troughs.push((t, -low));
+            }
         }
     }
 }
@@ -407,10 +412,20 @@ pub fn run(
     })
 }
 
-/// The Dutch roll's period (s) and damping ratio read from the yaw rate's successive maxima
-/// (at least three), where the response gives them.
-pub fn dutch_roll(peaks: &[(f64, f64)]) -> Option<(f64, f64)> {
-    let positive: Vec<(f64, f64)> = peaks.iter().copied().filter(|(_, r)| *r > 0.0).collect();
+/// The Dutch roll's period (s) and damping ratio read from the yaw rate's successive swings
+/// (at least three), where the response gives them: each maximum's height over the mean of
+/// the minima either side of it, so that a slow drift of the yaw rate (a spiral, a turn the
+/// kick left) is taken out to first order rather than read as damping.
+pub fn dutch_roll(peaks: &[(f64, f64)], troughs: &[(f64, f64)]) -> Option<(f64, f64)> {
+    let swing = |&(t, r): &(f64, f64)| {
+        let before = troughs.iter().rev().find(|(tt, _)| *tt < t)?;
+        let after = troughs.iter().find(|(tt, _)| *tt > t)?;
+        Some((t, r - (before.1 + after.1) / 2.0))
+    };
+    let positive: Vec<(f64, f64)> = (peaks.iter())
+        .filter_map(swing)
+        .take_while(|(_, height)| *height > 0.0)
+        .collect();
     if positive.len() < 3 {
         return None;
     }

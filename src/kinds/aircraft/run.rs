@@ -100,7 +100,7 @@ fn figures(scene: &AircraftScene, run: &AircraftRun, kick: bool) -> (Named, Vec<
     ];
     let mut notes = Vec::new();
     if kick {
-        match dutch_roll(&m.yaw_peaks) {
+        match dutch_roll(&m.yaw_peaks, &m.yaw_troughs) {
             Some((period, damping)) => {
                 figures.push(("dutch_roll_period_s".into(), period));
                 figures.push(("dutch_roll_damping".into(), damping));
