@@ -273,6 +273,7 @@ fn the_f16_trims_the_coordinated_turn_of_table_3_6_3() {
     let book = trim_rates(
         &with_rounded_constants(&model),
         model.gravity(),
+        &|throttle| model.engine().steady_power(throttle),
         &turn,
         &limits(),
     );

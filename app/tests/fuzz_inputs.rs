@@ -1613,7 +1613,7 @@ fn aircraft_scene_text(text: &str, run: bool, tally: &mut Tally) -> Result<(), T
 
 #[test]
 fn mutated_aircraft_scenes_never_panic() {
-    let seeds: Vec<Seed> = ["f16.toml"]
+    let seeds: Vec<Seed> = ["f16.toml", "navion.toml"]
         .iter()
         .map(|name| toml_seed(std::fs::read_to_string(root().join("scenes").join(name)).unwrap()))
         .collect();

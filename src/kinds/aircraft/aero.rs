@@ -9,6 +9,7 @@
 //! radian) and the three surfaces (per degree); the program forms the totals with the
 //! non-dimensional rates, the dynamic pressure and the moment transfer.
 
+use super::derivatives::Derivatives;
 use super::tables::{Lookup2, Table1, Table2};
 
 /// Degrees per radian as the source's code converts α and β before its lookups.
@@ -42,6 +43,46 @@ pub struct StevensLewisTables {
     /// The damping derivatives in α, in the program's order (`C_Xq`, `C_Yr`, `C_Yp`, `C_Zq`,
     /// `C_lr`, `C_lp`, `C_mq`, `C_nr`, `C_np`).
     pub damping: [Table1; 9],
+}
+
+/// How an aircraft's aerodynamics is described: the tables of the Stevens & Lewis form, or a
+/// textbook's stability derivatives.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Aerodynamics {
+    /// Tables in α, β and the controls (boxed: a kilobyte of tables).
+    StevensLewis(Box<StevensLewisTables>),
+    /// Terms linear in α, β, the rates and the surfaces.
+    Derivatives(Derivatives),
+}
+
+impl From<StevensLewisTables> for Aerodynamics {
+    fn from(tables: StevensLewisTables) -> Self {
+        Aerodynamics::StevensLewis(Box::new(tables))
+    }
+}
+
+impl From<Derivatives> for Aerodynamics {
+    fn from(derivatives: Derivatives) -> Self {
+        Aerodynamics::Derivatives(derivatives)
+    }
+}
+
+impl Aerodynamics {
+    /// The six static coefficients and the nine damping derivatives at `flow`.
+    pub fn coefficients(&self, flow: &Flow) -> [Coefficient; 15] {
+        match self {
+            Aerodynamics::StevensLewis(tables) => tables.coefficients(flow),
+            Aerodynamics::Derivatives(derivatives) => derivatives.coefficients(flow),
+        }
+    }
+
+    /// C_mα̇, the pitching moment per α̇ c̄/(2V) (0 for the tables, which have none).
+    pub fn pitch_by_alpha_rate(&self) -> f64 {
+        match self {
+            Aerodynamics::StevensLewis(_) => 0.0,
+            Aerodynamics::Derivatives(derivatives) => derivatives.Cm_alpha_dot,
+        }
+    }
 }
 
 /// A coefficient and its derivatives in [`ARGUMENTS`].

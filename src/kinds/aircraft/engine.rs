@@ -1,6 +1,8 @@
 //! The engine: thrust from tables in altitude and Mach at idle, military and maximum power,
 //! the throttle's gearing to a commanded power, and the power's first-order lag as a state,
-//! as Stevens & Lewis give the F-16's (`tgear`, `pdot`, `rtau`, `thrust`).
+//! as Stevens & Lewis give the F-16's (`tgear`, `pdot`, `rtau`, `thrust`); or, for an
+//! aircraft described by its stability derivatives, a thrust that does not change with speed
+//! or altitude, with a first-order lag ([`ConstantThrust`]).
 //!
 //! The lag is piecewise (an afterburner threshold at 50 %, a time constant that depends on
 //! how far the power has to go), so it is computed here, beside the proved program, as the
@@ -68,6 +70,77 @@ impl Engine {
             by_power: (other.value - military.value) * by_power,
             by_altitude: blend(military.by_x, other.by_x),
             by_mach: blend(military.by_y, other.by_y),
+        }
+    }
+}
+
+/// An engine whose thrust does not change with speed or altitude, as textbooks' small-
+/// perturbation models of a light aircraft take it (C_Tu = 0): T = T_max · power/100, the
+/// power lagging 100 · throttle with one time constant.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ConstantThrust {
+    /// The thrust at full power (throttle 1).
+    pub maximum: f64,
+    /// The power's time constant, s.
+    pub time_constant: f64,
+}
+
+/// What drives the aircraft: the thrust tables of the Stevens & Lewis form, or a constant
+/// thrust.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Propulsion {
+    /// Thrust tables in altitude and Mach, the F-16's gearing and lag.
+    Tables(Engine),
+    /// Thrust proportional to the power, the same at every speed and altitude.
+    Constant(ConstantThrust),
+}
+
+impl From<Engine> for Propulsion {
+    fn from(engine: Engine) -> Self {
+        Propulsion::Tables(engine)
+    }
+}
+
+impl From<ConstantThrust> for Propulsion {
+    fn from(engine: ConstantThrust) -> Self {
+        Propulsion::Constant(engine)
+    }
+}
+
+impl Propulsion {
+    /// The thrust at `power` (percent), `altitude` and `mach`.
+    pub fn thrust(&self, power: f64, altitude: f64, mach: f64) -> Thrust {
+        match self {
+            Propulsion::Tables(engine) => engine.thrust(power, altitude, mach),
+            Propulsion::Constant(engine) => Thrust {
+                value: engine.maximum * power / 100.0,
+                by_power: engine.maximum / 100.0,
+                by_altitude: 0.0,
+                by_mach: 0.0,
+            },
+        }
+    }
+
+    /// The power's lag at `power` under `throttle`.
+    pub fn lag(&self, power: f64, throttle: f64) -> PowerLag {
+        match self {
+            Propulsion::Tables(_) => power_lag(power, throttle),
+            Propulsion::Constant(engine) => PowerLag {
+                command: 100.0 * throttle,
+                command_by_throttle: 100.0,
+                command_by_power: 0.0,
+                gain: 1.0 / engine.time_constant,
+                gain_by_throttle: 0.0,
+                gain_by_power: 0.0,
+            },
+        }
+    }
+
+    /// The power (percent) the lag settles at under `throttle`.
+    pub fn steady_power(&self, throttle: f64) -> f64 {
+        match self {
+            Propulsion::Tables(_) => throttle_gearing(throttle).0,
+            Propulsion::Constant(_) => 100.0 * throttle,
         }
     }
 }

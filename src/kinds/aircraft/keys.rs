@@ -48,9 +48,9 @@ pub const KEYS: &[Key] = &[
     Key {
         path: "aircraft.aerodynamics",
         families: AIRCRAFT,
-        kind: Kind::Text(Choices::These(&["stevens-lewis"])),
+        kind: Kind::Text(Choices::These(&["stevens-lewis", "derivatives"])),
         required: Required::Yes,
-        description: "The form of the aerodynamic tables: stevens-lewis, the F-16's build-up (C_x(α, δe) and C_m(α, δe), C_z(α) with its sideslip and elevator terms, C_y in β and the surfaces, C_l and C_n odd in β with the aileron's and rudder's increments, nine damping derivatives in α).",
+        description: "The form of the aerodynamics: derivatives, a textbook's stability derivatives in `[aerodynamics.derivatives]` (scenes/navion.toml), or stevens-lewis, the F-16's build-up (C_x(α, δe) and C_m(α, δe), C_z(α) with its sideslip and elevator terms, C_y in β and the surfaces, C_l and C_n odd in β with the aileron's and rudder's increments, nine damping derivatives in α).",
         example: "\"stevens-lewis\"",
         ..Key::BLANK
     },
@@ -151,7 +151,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("breakpoints"),
         unit: "ft or m",
-        required: Required::Yes,
+        required: Required::When("for thrust tables (without engine.thrust)"),
         description: "The thrust tables' altitudes, strictly increasing.",
         example: "[0.0, 10000.0]",
         ..Key::BLANK
@@ -161,7 +161,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("breakpoints"),
         unit: "-",
-        required: Required::Yes,
+        required: Required::When("for thrust tables (without engine.thrust)"),
         description: "Their Mach numbers, strictly increasing.",
         example: "[0.4, 0.6]",
         ..Key::BLANK
@@ -171,7 +171,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("rows, one per altitude"),
         unit: "lbf or N",
-        required: Required::Yes,
+        required: Required::When("for thrust tables (without engine.thrust)"),
         description: "Thrust at idle power, [altitude][mach]; from 0 to 50 % power the thrust goes from idle to military.",
         example: "[[60.0, -1020.0], [25.0, -710.0]]",
         ..Key::BLANK
@@ -181,7 +181,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("rows, one per altitude"),
         unit: "lbf or N",
-        required: Required::Yes,
+        required: Required::When("for thrust tables (without engine.thrust)"),
         description: "Thrust at military power (100 % dry, power 50 %).",
         example: "[[12610.0, 12640.0], [9312.0, 9839.0]]",
         ..Key::BLANK
@@ -191,9 +191,29 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("rows, one per altitude"),
         unit: "lbf or N",
-        required: Required::Yes,
+        required: Required::When("for thrust tables (without engine.thrust)"),
         description: "Thrust at maximum power (full afterburner, power 100 %); the throttle's gearing and the power's lag are the F-16's (commanded power 64.94 δt to δt = 0.77, 217.38 δt − 117.38 above; a first-order lag whose time constant depends on the change, crossing the afterburner's threshold at 50 %).",
         example: "[[22700.0, 24240.0], [16860.0, 18910.0]]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "engine.thrust",
+        families: AIRCRAFT,
+        unit: "lbf or N",
+        required: Required::When("for a constant thrust (instead of the tables)"),
+        description: "A thrust that does not change with speed or altitude, as textbooks' small-perturbation models take a light aircraft's: T = thrust · power/100, the power lagging 100 · throttle (percent).",
+        example: "400.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "engine.time_constant_s",
+        families: AIRCRAFT,
+        unit: "s",
+        required: Required::When("with engine.thrust"),
+        description: "The constant thrust's power lag: ṗ = (100 · throttle − power)/time_constant_s.",
+        example: "1.0",
+        shown: Shown::Commented,
         ..Key::BLANK
     },
     Key {
@@ -201,7 +221,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("breakpoints"),
         unit: "deg",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "C_x(α, δe), the body-x force coefficient: its α breakpoints, strictly increasing.",
         example: "[0.0, 5.0, 10.0]",
         ..Key::BLANK
@@ -211,7 +231,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("breakpoints"),
         unit: "deg",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "Its elevator breakpoints, strictly increasing.",
         example: "[-12.0, 0.0, 12.0]",
         ..Key::BLANK
@@ -221,7 +241,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("rows, one per α"),
         unit: "-",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "Its values, [α][the second argument].",
         example: "[[-0.04, -0.021, -0.039], [-0.021, -0.004, -0.025], [0.016, 0.032, 0.006]]",
         ..Key::BLANK
@@ -231,7 +251,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("breakpoints"),
         unit: "deg",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "C_z(α), the body-z force coefficient at zero sideslip and elevator (times 1 − (β/57.3°)², less 0.19 δe/25°): its α breakpoints, strictly increasing.",
         example: "[0.0, 5.0, 10.0]",
         ..Key::BLANK
@@ -241,7 +261,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("one per α"),
         unit: "-",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "Its values, one per α.",
         example: "[-0.1, -0.416, -0.731]",
         ..Key::BLANK
@@ -251,7 +271,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("breakpoints"),
         unit: "deg",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "C_m(α, δe), the pitching moment about the reference: its α breakpoints, strictly increasing.",
         example: "[0.0, 5.0, 10.0]",
         ..Key::BLANK
@@ -261,7 +281,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("breakpoints"),
         unit: "deg",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "Its elevator breakpoints, strictly increasing.",
         example: "[-12.0, 0.0, 12.0]",
         ..Key::BLANK
@@ -271,7 +291,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("rows, one per α"),
         unit: "-",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "Its values, [α][the second argument].",
         example: "[[0.107, -0.009, -0.121], [0.11, -0.005, -0.127], [0.11, -0.006, -0.129]]",
         ..Key::BLANK
@@ -281,7 +301,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("breakpoints"),
         unit: "deg",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "C_l(α, |β|), the rolling moment, odd in β: its α breakpoints, strictly increasing.",
         example: "[0.0, 5.0, 10.0]",
         ..Key::BLANK
@@ -291,7 +311,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("breakpoints"),
         unit: "deg",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "Its beta (absolute) breakpoints, strictly increasing.",
         example: "[0.0, 5.0, 10.0]",
         ..Key::BLANK
@@ -301,7 +321,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("rows, one per α"),
         unit: "-",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "Its values, [α][the second argument].",
         example: "[[0.0, -0.008, -0.017], [0.0, -0.012, -0.024], [0.0, -0.016, -0.03]]",
         ..Key::BLANK
@@ -311,7 +331,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("breakpoints"),
         unit: "deg",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "C_n(α, |β|), the yawing moment about the reference, odd in β: its α breakpoints, strictly increasing.",
         example: "[0.0, 5.0, 10.0]",
         ..Key::BLANK
@@ -321,7 +341,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("breakpoints"),
         unit: "deg",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "Its beta (absolute) breakpoints, strictly increasing.",
         example: "[0.0, 5.0, 10.0]",
         ..Key::BLANK
@@ -331,7 +351,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("rows, one per α"),
         unit: "-",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "Its values, [α][the second argument].",
         example: "[[0.0, 0.018, 0.042], [0.0, 0.019, 0.042], [0.0, 0.019, 0.043]]",
         ..Key::BLANK
@@ -341,7 +361,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("breakpoints"),
         unit: "deg",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "ΔC_l per unit aileron (δa/20°), in α and β: its α breakpoints, strictly increasing.",
         example: "[0.0, 5.0, 10.0]",
         ..Key::BLANK
@@ -351,7 +371,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("breakpoints"),
         unit: "deg",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "Its beta breakpoints, strictly increasing.",
         example: "[-10.0, 0.0, 10.0]",
         ..Key::BLANK
@@ -361,7 +381,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("rows, one per α"),
         unit: "-",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "Its values, [α][the second argument].",
         example: "[[-0.052, -0.051, -0.048], [-0.051, -0.052, -0.049], [-0.049, -0.048, -0.043]]",
         ..Key::BLANK
@@ -371,7 +391,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("breakpoints"),
         unit: "deg",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "ΔC_l per unit rudder (δr/30°), in α and β: its α breakpoints, strictly increasing.",
         example: "[0.0, 5.0, 10.0]",
         ..Key::BLANK
@@ -381,7 +401,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("breakpoints"),
         unit: "deg",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "Its beta breakpoints, strictly increasing.",
         example: "[-10.0, 0.0, 10.0]",
         ..Key::BLANK
@@ -391,7 +411,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("rows, one per α"),
         unit: "-",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "Its values, [α][the second argument].",
         example: "[[0.011, 0.015, 0.013], [0.012, 0.014, 0.013], [0.011, 0.014, 0.012]]",
         ..Key::BLANK
@@ -401,7 +421,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("breakpoints"),
         unit: "deg",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "ΔC_n per unit aileron, in α and β: its α breakpoints, strictly increasing.",
         example: "[0.0, 5.0, 10.0]",
         ..Key::BLANK
@@ -411,7 +431,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("breakpoints"),
         unit: "deg",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "Its beta breakpoints, strictly increasing.",
         example: "[-10.0, 0.0, 10.0]",
         ..Key::BLANK
@@ -421,7 +441,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("rows, one per α"),
         unit: "-",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "Its values, [α][the second argument].",
         example: "[[-0.006, -0.01, -0.014], [-0.006, -0.009, -0.012], [-0.005, -0.008, -0.011]]",
         ..Key::BLANK
@@ -431,7 +451,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("breakpoints"),
         unit: "deg",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "ΔC_n per unit rudder, in α and β: its α breakpoints, strictly increasing.",
         example: "[0.0, 5.0, 10.0]",
         ..Key::BLANK
@@ -441,7 +461,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("breakpoints"),
         unit: "deg",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "Its beta breakpoints, strictly increasing.",
         example: "[-10.0, 0.0, 10.0]",
         ..Key::BLANK
@@ -451,7 +471,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("rows, one per α"),
         unit: "-",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "Its values, [α][the second argument].",
         example: "[[-0.038, -0.045, -0.041], [-0.04, -0.045, -0.041], [-0.04, -0.044, -0.04]]",
         ..Key::BLANK
@@ -461,7 +481,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("breakpoints"),
         unit: "deg",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "The damping derivatives' α breakpoints, strictly increasing; each derivative below is per radian of its non-dimensional rate (q c̄/2V for CXq, CZq, Cmq; p b/2V and r b/2V for the others), one value per α.",
         example: "[0.0, 5.0, 10.0]",
         ..Key::BLANK
@@ -471,7 +491,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("one per α"),
         unit: "1/rad",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "∂C_x/∂(q c̄/2V), one per α.",
         example: "[0.308, 1.34, 2.08]",
         ..Key::BLANK
@@ -481,7 +501,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("one per α"),
         unit: "1/rad",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "∂C_y/∂(r b/2V), one per α.",
         example: "[0.876, 0.958, 0.962]",
         ..Key::BLANK
@@ -491,7 +511,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("one per α"),
         unit: "1/rad",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "∂C_y/∂(p b/2V), one per α.",
         example: "[-0.188, 0.11, 0.258]",
         ..Key::BLANK
@@ -501,7 +521,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("one per α"),
         unit: "1/rad",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "∂C_z/∂(q c̄/2V), one per α.",
         example: "[-28.9, -31.4, -31.2]",
         ..Key::BLANK
@@ -511,7 +531,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("one per α"),
         unit: "1/rad",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "∂C_l/∂(r b/2V), one per α.",
         example: "[0.063, 0.113, 0.208]",
         ..Key::BLANK
@@ -521,7 +541,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("one per α"),
         unit: "1/rad",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "∂C_l/∂(p b/2V), one per α.",
         example: "[-0.443, -0.42, -0.383]",
         ..Key::BLANK
@@ -531,7 +551,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("one per α"),
         unit: "1/rad",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "∂C_m/∂(q c̄/2V), one per α.",
         example: "[-5.23, -5.26, -6.11]",
         ..Key::BLANK
@@ -541,7 +561,7 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("one per α"),
         unit: "1/rad",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "∂C_n/∂(r b/2V), one per α.",
         example: "[-0.378, -0.386, -0.37]",
         ..Key::BLANK
@@ -551,9 +571,295 @@ pub const KEYS: &[Key] = &[
         families: AIRCRAFT,
         kind: Kind::Numbers("one per α"),
         unit: "1/rad",
-        required: Required::Yes,
+        required: Required::When("with aerodynamics = stevens-lewis"),
         description: "∂C_n/∂(p b/2V), one per α.",
         example: "[0.052, -0.012, -0.013]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.CL_0",
+        families: AIRCRAFT,
+        unit: "per rad",
+        default: "0",
+        required: Required::No,
+        description: "Lift coefficient at α = 0 with the elevator at 0 (the wind axes' C_L; C_X = C_L sin α − C_D cos α, C_Z = −C_L cos α − C_D sin α). Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "0.41",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.CL_alpha",
+        families: AIRCRAFT,
+        unit: "per rad",
+        default: "0",
+        required: Required::No,
+        description: "Lift per radian of α. Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "4.44",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.CL_q",
+        families: AIRCRAFT,
+        unit: "per rad",
+        default: "0",
+        required: Required::No,
+        description: "Lift per unit q c̄/(2V). Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.CL_elevator",
+        families: AIRCRAFT,
+        unit: "per rad",
+        default: "0",
+        required: Required::No,
+        description: "Lift per radian of elevator. Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.CD_0",
+        families: AIRCRAFT,
+        unit: "per rad",
+        default: "0",
+        required: Required::No,
+        description: "Drag coefficient at α = 0. Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "0.05",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.CD_alpha",
+        families: AIRCRAFT,
+        unit: "per rad",
+        default: "0",
+        required: Required::No,
+        description: "Drag per radian of α. Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.Cm_0",
+        families: AIRCRAFT,
+        unit: "per rad",
+        default: "0",
+        required: Required::No,
+        description: "Pitching moment at α = 0 with the elevator at 0, about G. Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.Cm_alpha",
+        families: AIRCRAFT,
+        unit: "per rad",
+        default: "0",
+        required: Required::No,
+        description: "Pitching moment per radian of α. Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "-0.683",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.Cm_alpha_dot",
+        families: AIRCRAFT,
+        unit: "per rad",
+        default: "0",
+        required: Required::No,
+        description: "Pitching moment per unit α̇ c̄/(2V) (the downwash's lag at the tail): added once α̇ is known, since α̇ does not depend on it. Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.Cm_q",
+        families: AIRCRAFT,
+        unit: "per rad",
+        default: "0",
+        required: Required::No,
+        description: "Pitching moment per unit q c̄/(2V). Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "-9.96",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.Cm_elevator",
+        families: AIRCRAFT,
+        unit: "per rad",
+        default: "0",
+        required: Required::No,
+        description: "Pitching moment per radian of elevator. Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.CY_beta",
+        families: AIRCRAFT,
+        unit: "per rad",
+        default: "0",
+        required: Required::No,
+        description: "Side force per radian of β. Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.CY_p",
+        families: AIRCRAFT,
+        unit: "per rad",
+        default: "0",
+        required: Required::No,
+        description: "Side force per unit p b/(2V). Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.CY_r",
+        families: AIRCRAFT,
+        unit: "per rad",
+        default: "0",
+        required: Required::No,
+        description: "Side force per unit r b/(2V). Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.CY_aileron",
+        families: AIRCRAFT,
+        unit: "per rad",
+        default: "0",
+        required: Required::No,
+        description: "Side force per radian of aileron. Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.CY_rudder",
+        families: AIRCRAFT,
+        unit: "per rad",
+        default: "0",
+        required: Required::No,
+        description: "Side force per radian of rudder. Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.Cl_beta",
+        families: AIRCRAFT,
+        unit: "per rad",
+        default: "0",
+        required: Required::No,
+        description: "Rolling moment per radian of β. Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.Cl_p",
+        families: AIRCRAFT,
+        unit: "per rad",
+        default: "0",
+        required: Required::No,
+        description: "Rolling moment per unit p b/(2V). Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.Cl_r",
+        families: AIRCRAFT,
+        unit: "per rad",
+        default: "0",
+        required: Required::No,
+        description: "Rolling moment per unit r b/(2V). Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.Cl_aileron",
+        families: AIRCRAFT,
+        unit: "per rad",
+        default: "0",
+        required: Required::No,
+        description: "Rolling moment per radian of aileron. Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.Cl_rudder",
+        families: AIRCRAFT,
+        unit: "per rad",
+        default: "0",
+        required: Required::No,
+        description: "Rolling moment per radian of rudder. Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.Cn_beta",
+        families: AIRCRAFT,
+        unit: "per rad",
+        default: "0",
+        required: Required::No,
+        description: "Yawing moment per radian of β. Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.Cn_p",
+        families: AIRCRAFT,
+        unit: "per rad",
+        default: "0",
+        required: Required::No,
+        description: "Yawing moment per unit p b/(2V). Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.Cn_r",
+        families: AIRCRAFT,
+        unit: "per rad",
+        default: "0",
+        required: Required::No,
+        description: "Yawing moment per unit r b/(2V). Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.Cn_aileron",
+        families: AIRCRAFT,
+        unit: "per rad",
+        default: "0",
+        required: Required::No,
+        description: "Yawing moment per radian of aileron. Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.Cn_rudder",
+        families: AIRCRAFT,
+        unit: "per rad",
+        default: "0",
+        required: Required::No,
+        description: "Yawing moment per radian of rudder. Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "0.0",
+        shown: Shown::Commented,
         ..Key::BLANK
     },
     Key {

@@ -25,10 +25,12 @@ pub const KIND: Registered = Registered {
               axes, an engine with its lag, trimmed, then its manoeuvres.",
         intro: "A scene with an `[aircraft]` table is an aircraft scene: the rigid body about G \
                 with I_xz and the engine's rotor, the wind-axis state (V, α, β), the \
-                aerodynamic build-up from coefficient tables in α, β and the controls times \
-                the dynamic pressure, flat-Earth navigation and the power lag, derived and \
-                proved when the scene is read; trimmed at `[trim]`, then each `[[manoeuvre]]` \
-                from the trim (`scenes/f16.toml`; `eom new aircraft`; docs/aircraft.md).",
+                aerodynamic build-up from coefficient tables in α, β and the controls (or a \
+                textbook's stability derivatives) times the dynamic pressure, flat-Earth \
+                navigation and the power lag, derived and proved when the scene is read; \
+                trimmed at `[trim]`, then each `[[manoeuvre]]` from the trim \
+                (`scenes/f16.toml`, `scenes/navion.toml`; `eom new aircraft`; \
+                docs/aircraft.md).",
         keys: keys::KEYS,
         notes: keys::NOTES,
         columns: Columns::Listed {

@@ -10,6 +10,7 @@
 
 pub mod aero;
 pub mod atmosphere;
+pub mod derivatives;
 pub mod engine;
 mod keys;
 mod kind;

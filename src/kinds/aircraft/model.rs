@@ -9,9 +9,9 @@
 //! inputs' derivatives in the state (V, α, β, altitude, power) and the controls: the tables'
 //! segment slopes, the atmosphere's slopes, the thrust tables' and the lag's.
 
-use super::aero::{Flow, StevensLewisTables};
+use super::aero::{Aerodynamics, Flow};
 use super::atmosphere::Atmosphere;
-use super::engine::{Engine, power_lag};
+use super::engine::Propulsion;
 use crate::defined::engine::{
     AIRCRAFT_STATE, BuildError, Operations, aircraft, prove_with_jacobians,
 };
@@ -35,6 +35,8 @@ const DEPENDENCIES: usize = 9;
 /// Their places: V, α, β, altitude, power in the state; the four controls.
 const STATE_DEPENDENCIES: [(usize, usize); 5] = [(0, 0), (1, 1), (2, 2), (3, 11), (4, 12)];
 const INPUTS: usize = 19;
+/// Where C_m is among the inputs.
+const PITCH_MOMENT: usize = 4;
 
 /// Why an aircraft model cannot be built.
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -157,15 +159,16 @@ fn proved() -> Result<&'static Proved, AircraftError> {
         .map_err(Clone::clone)
 }
 
-/// An aircraft on the Stevens & Lewis form of tables, ready to evaluate.
+/// An aircraft on its tables or derivatives, ready to evaluate.
 #[derive(Debug, Clone)]
 pub struct AircraftModel {
     program: Interpreter,
     functions: Functions,
-    tables: StevensLewisTables,
-    engine: Engine,
+    aerodynamics: Aerodynamics,
+    engine: Propulsion,
     atmosphere: Atmosphere,
     gravity: f64,
+    chord: f64,
     operations: Operations,
 }
 
@@ -177,12 +180,13 @@ struct Beside {
 }
 
 impl AircraftModel {
-    /// The model of `airframe` on `tables`, with its `engine` in `atmosphere`: the proved
-    /// program with the airframe's numbers hoisted.
+    /// The model of `airframe` on `aerodynamics` (the Stevens & Lewis tables or a table of
+    /// derivatives), with its `engine` in `atmosphere`: the proved program with the
+    /// airframe's numbers hoisted.
     pub fn new(
         airframe: &Airframe,
-        tables: StevensLewisTables,
-        engine: Engine,
+        aerodynamics: impl Into<Aerodynamics>,
+        engine: impl Into<Propulsion>,
         atmosphere: Atmosphere,
     ) -> Result<Self, AircraftError> {
         let proved = proved()?;
@@ -220,10 +224,11 @@ impl AircraftModel {
             operations: proved.program.operations(&proved.program.rhs),
             program,
             functions,
-            tables,
-            engine,
+            aerodynamics: aerodynamics.into(),
+            engine: engine.into(),
             atmosphere,
             gravity: airframe.gravity,
+            chord: airframe.chord,
         })
     }
 
@@ -242,6 +247,42 @@ impl AircraftModel {
         self.atmosphere
     }
 
+    /// What drives it.
+    pub fn engine(&self) -> &Propulsion {
+        &self.engine
+    }
+
+    /// How its aerodynamics is described.
+    pub fn aerodynamics(&self) -> &Aerodynamics {
+        &self.aerodynamics
+    }
+
+    /// C_mα̇ c̄/(2V): the pitching-moment coefficient per unit α̇ at airspeed `speed`.
+    fn pitch_by_alpha_rate(&self, speed: f64) -> f64 {
+        self.aerodynamics.pitch_by_alpha_rate() * self.chord / (2.0 * speed)
+    }
+
+    /// The proved right-hand side with its inputs at `computed`.
+    fn evaluate(&self, state: &[f64; 13], computed: &[f64; INPUTS]) -> [f64; 13] {
+        let mut rates = [0.0; 13];
+        let variables = Variables { state, computed };
+        (self.program).evaluate_into(&self.functions.rhs, variables, &mut rates);
+        rates
+    }
+
+    /// The inputs at `state` with C_m's α̇ term added, and α̇: the program's α̇ does not read
+    /// C_m, so one evaluation without the term gives it.
+    fn beside_with_alpha_rate(&self, state: &[f64; 13], controls: &[f64; 4]) -> (Beside, f64) {
+        let mut beside = self.beside(state, controls);
+        let per_alpha_rate = self.pitch_by_alpha_rate(state[0]);
+        if per_alpha_rate == 0.0 {
+            return (beside, 0.0);
+        }
+        let alpha_rate = self.evaluate(state, &beside.values)[1];
+        beside.values[PITCH_MOMENT] += per_alpha_rate * alpha_rate;
+        (beside, alpha_rate)
+    }
+
     /// The program's inputs at `state` under `controls`, with their derivatives. Outside the
     /// atmosphere the air is NaN, and so are the rates: a run's guard says where.
     fn beside(&self, state: &[f64; 13], controls: &[f64; 4]) -> Beside {
@@ -255,7 +296,7 @@ impl AircraftModel {
             rudder: controls[3],
         };
         // The coefficients depend on α, β (dependencies 1, 2) and the surfaces (6, 7, 8).
-        for (k, c) in self.tables.coefficients(&flow).iter().enumerate() {
+        for (k, c) in self.aerodynamics.coefficients(&flow).iter().enumerate() {
             values[k] = c.value;
             for (slot, derivative) in [1, 2, 6, 7, 8].into_iter().zip(c.by) {
                 by[k][slot] = derivative;
@@ -279,7 +320,7 @@ impl AircraftModel {
         by[16][0] = thrust.by_mach * mach_by_speed;
         by[16][3] = thrust.by_altitude + thrust.by_mach * mach_by_altitude;
         by[16][4] = thrust.by_power;
-        let lag = power_lag(power, controls[0]);
+        let lag = self.engine.lag(power, controls[0]);
         values[17] = lag.command;
         by[17][4] = lag.command_by_power;
         by[17][5] = lag.command_by_throttle;
@@ -291,23 +332,18 @@ impl AircraftModel {
 
     /// The rates of `state` under `controls`.
     pub fn rates(&self, state: &[f64; 13], controls: &[f64; 4]) -> [f64; 13] {
-        let beside = self.beside(state, controls);
-        let mut rates = [0.0; 13];
-        let variables = Variables {
-            state,
-            computed: &beside.values,
-        };
-        (self.program).evaluate_into(&self.functions.rhs, variables, &mut rates);
-        rates
+        let (beside, _) = self.beside_with_alpha_rate(state, controls);
+        self.evaluate(state, &beside.values)
     }
 
-    /// ∂f/∂x and ∂f/∂(controls): the proved Jacobians composed with the inputs' slopes.
+    /// ∂f/∂x and ∂f/∂(controls): the proved Jacobians composed with the inputs' slopes, and
+    /// with C_mα̇'s term, C_m + C_mα̇ α̇ c̄/(2V), through α̇'s own row.
     pub fn jacobians(
         &self,
         state: &[f64; 13],
         controls: &[f64; 4],
     ) -> ([[f64; 13]; 13], [[f64; 4]; 13]) {
-        let beside = self.beside(state, controls);
+        let (beside, alpha_rate) = self.beside_with_alpha_rate(state, controls);
         let variables = Variables {
             state,
             computed: &beside.values,
@@ -320,16 +356,38 @@ impl AircraftModel {
             by_state[row][column] += value;
         }
         let mut by_controls = [[0.0; 4]; 13];
+        let mut by_pitch_moment = [0.0; 13];
         let entries = self
             .program
             .evaluate(&self.functions.input_jacobian, variables);
         for (&(row, input), value) in self.functions.input_pattern.iter().zip(entries) {
+            if input == PITCH_MOMENT {
+                by_pitch_moment[row] += value;
+            }
             let slopes = &beside.by[input];
             for (dependency, column) in STATE_DEPENDENCIES {
                 by_state[row][column] += value * slopes[dependency];
             }
             for (control, slot) in by_controls[row].iter_mut().enumerate() {
                 *slot += value * slopes[5 + control];
+            }
+        }
+        let per_alpha_rate = self.pitch_by_alpha_rate(state[0]);
+        if per_alpha_rate != 0.0 {
+            // d(k α̇) = k dα̇ + α̇ dk, with k = C_mα̇ c̄/(2V) and dk/dV = −k/V; α̇'s row does
+            // not read C_m, so it is whole before the others take it.
+            let (alpha_by_state, alpha_by_controls) = (by_state[1], by_controls[1]);
+            for (row, &by_moment) in by_pitch_moment.iter().enumerate() {
+                if by_moment == 0.0 {
+                    continue;
+                }
+                for (column, slot) in by_state[row].iter_mut().enumerate() {
+                    *slot += by_moment * per_alpha_rate * alpha_by_state[column];
+                }
+                by_state[row][0] -= by_moment * per_alpha_rate * alpha_rate / state[0];
+                for (control, slot) in by_controls[row].iter_mut().enumerate() {
+                    *slot += by_moment * per_alpha_rate * alpha_by_controls[control];
+                }
             }
         }
         (by_state, by_controls)
@@ -349,13 +407,13 @@ impl AircraftModel {
 
 /// Where the rates can depend on the state: V̇, α̇, β̇ on the wind axes, the attitude but the
 /// heading, the rates, the altitude (the air) and the power (the thrust); the Euler angles'
-/// rates on φ, θ and the rates; ṗ, q̇, ṙ on the wind axes, the rates and the altitude; the
-/// track on the wind axes and the attitude (the altitude not on the heading); the power on
-/// itself.
-const STATE_JACOBIAN: [(usize, usize); 3 * 10 + 3 * 5 + 3 * 7 + 2 * 6 + 5 + 1] = state_pattern();
+/// rates on φ, θ and the rates; ṗ, q̇, ṙ on the wind axes, the rates and the altitude, and,
+/// through C_mα̇'s α̇, on what α̇ depends on; the track on the wind axes and the attitude (the
+/// altitude not on the heading); the power on itself.
+const STATE_JACOBIAN: [(usize, usize); 3 * 10 + 3 * 5 + 3 * 10 + 2 * 6 + 5 + 1] = state_pattern();
 
-const fn state_pattern() -> [(usize, usize); 84] {
-    let mut entries = [(0, 0); 84];
+const fn state_pattern() -> [(usize, usize); 93] {
+    let mut entries = [(0, 0); 93];
     let mut k = 0;
     let mut row = 0;
     while row < 13 {
@@ -364,9 +422,8 @@ const fn state_pattern() -> [(usize, usize); 84] {
             let wind = column < 3;
             let rates = column >= 6 && column < 9;
             let depends = match row {
-                0..=2 => wind || column == 3 || column == 4 || rates || column >= 11,
+                0..=2 | 6..=8 => wind || column == 3 || column == 4 || rates || column >= 11,
                 3..=5 => column == 3 || column == 4 || rates,
-                6..=8 => wind || rates || column == 11,
                 9 | 10 => column < 6,
                 11 => column < 5,
                 _ => column == 12,

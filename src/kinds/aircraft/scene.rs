@@ -13,15 +13,31 @@
 //! [geometry]                   # area, span, chord, xcg, xcg_reference (fractions of c̄)
 //! [engine]                     # rotor_momentum, thrust tables in altitude and Mach
 //! [aerodynamics.cx]            # … every table of the form, with its breakpoints
+//! ```
+//!
+//! or, for an aircraft described by a textbook's stability derivatives
+//! (`scenes/navion.toml`):
+//!
+//! ```toml
+//! [aircraft]
+//! aerodynamics = "derivatives"
+//! [engine]                     # rotor_momentum, thrust (at full throttle), time_constant_s
+//! [aerodynamics.derivatives]   # CL_0, CL_alpha, …, Cn_rudder, per radian
+//! ```
+//!
+//! and in both:
+//!
+//! ```toml
 //! [limits]                     # α over the tables, each surface's deflection
 //! [trim]                       # speed, altitude, climb, turn or pull-up
 //! [[manoeuvre]]                # kind, amount, start_s, width_s, duration_s
 //! [integrator]
 //! ```
 
-use super::aero::StevensLewisTables;
+use super::aero::{Aerodynamics, StevensLewisTables};
 use super::atmosphere::Atmosphere;
-use super::engine::Engine;
+use super::derivatives::Derivatives;
+use super::engine::{ConstantThrust, Engine, Propulsion};
 use super::manoeuvre::{AircraftManoeuvre, Manoeuvre, ROW};
 use super::model::{AircraftModel, Airframe, CONTROLS, STATE};
 use super::tables::{Breakpoints, Table1, Table2, TableError};
@@ -77,7 +93,7 @@ pub struct AircraftTable {
     pub units: String,
     /// `stevens-lewis` (its `adc`, in `us` units) or `standard-1976`.
     pub atmosphere: String,
-    /// The form of the tables: `stevens-lewis`.
+    /// The form of the aerodynamics: `stevens-lewis` (tables) or `derivatives`.
     pub aerodynamics: String,
 }
 
@@ -112,22 +128,27 @@ pub struct GeometryTable {
     pub xcg_reference: f64,
 }
 
-/// `[engine]`.
+/// `[engine]`: thrust tables (`altitude`, `mach`, `idle`, `military`, `maximum`), or a
+/// constant thrust (`thrust`, `time_constant_s`).
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct EngineTable {
     /// The rotor's angular momentum along body x.
     pub rotor_momentum: f64,
     /// The thrust tables' altitudes.
-    pub altitude: Vec<f64>,
+    pub altitude: Option<Vec<f64>>,
     /// Their Mach numbers.
-    pub mach: Vec<f64>,
+    pub mach: Option<Vec<f64>>,
     /// Thrust at idle, `[altitude][mach]`.
-    pub idle: Vec<Vec<f64>>,
+    pub idle: Option<Vec<Vec<f64>>>,
     /// At military power.
-    pub military: Vec<Vec<f64>>,
+    pub military: Option<Vec<Vec<f64>>>,
     /// At maximum power.
-    pub maximum: Vec<Vec<f64>>,
+    pub maximum: Option<Vec<Vec<f64>>>,
+    /// A constant thrust's value at full throttle.
+    pub thrust: Option<f64>,
+    /// A constant thrust's power lag, s.
+    pub time_constant_s: Option<f64>,
 }
 
 /// A table in α and the elevator.
@@ -203,30 +224,32 @@ pub struct DampingTable {
     pub Cnp: Vec<f64>,
 }
 
-/// `[aerodynamics]`: the tables of the Stevens & Lewis form.
+/// `[aerodynamics]`: the tables of the Stevens & Lewis form, or the stability derivatives.
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct AerodynamicsTable {
     /// C_x(α, δ_e).
-    pub cx: AlphaElevator,
+    pub cx: Option<AlphaElevator>,
     /// C_z(α).
-    pub cz: Alpha,
+    pub cz: Option<Alpha>,
     /// C_m(α, δ_e).
-    pub cm: AlphaElevator,
+    pub cm: Option<AlphaElevator>,
     /// C_l(α, |β|).
-    pub cl: AlphaBetaAbs,
+    pub cl: Option<AlphaBetaAbs>,
     /// C_n(α, |β|).
-    pub cn: AlphaBetaAbs,
+    pub cn: Option<AlphaBetaAbs>,
     /// ΔC_l per δ_a/20.
-    pub dlda: AlphaBeta,
+    pub dlda: Option<AlphaBeta>,
     /// ΔC_l per δ_r/30.
-    pub dldr: AlphaBeta,
+    pub dldr: Option<AlphaBeta>,
     /// ΔC_n per δ_a/20.
-    pub dnda: AlphaBeta,
+    pub dnda: Option<AlphaBeta>,
     /// ΔC_n per δ_r/30.
-    pub dndr: AlphaBeta,
+    pub dndr: Option<AlphaBeta>,
     /// The damping derivatives.
-    pub damping: DampingTable,
+    pub damping: Option<DampingTable>,
+    /// The stability derivatives (`aerodynamics = "derivatives"`), each per radian.
+    pub derivatives: Option<Derivatives>,
 }
 
 /// `[limits]`.
@@ -275,6 +298,13 @@ pub struct ManoeuvreTable {
     pub width_s: Option<f64>,
     /// How long the run lasts, s.
     pub duration_s: f64,
+}
+
+/// The form of an aircraft's aerodynamics, as `aircraft.aerodynamics` names it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Form {
+    StevensLewis,
+    Derivatives,
 }
 
 /// A checked aircraft scene, ready to run.
@@ -388,10 +418,13 @@ impl AircraftScene {
                 ));
             }
         };
-        check.word(
+        let form = check.word(
             "aircraft.aerodynamics",
             &file.aircraft.aerodynamics,
-            [((), "stevens-lewis")],
+            [
+                (Form::StevensLewis, "stevens-lewis"),
+                (Form::Derivatives, "derivatives"),
+            ],
         )?;
         let airframe = check.aircraft_airframe(file)?;
         let tensor = airframe.inertia.matrix();
@@ -400,9 +433,12 @@ impl AircraftScene {
             std::array::from_fn(|r| std::array::from_fn(|c| tensor[(r, c)])),
         );
         let (span, chord) = (airframe.span, airframe.chord);
-        let tables = check.aircraft_aerodynamics(&file.aerodynamics)?;
+        let aerodynamics: Aerodynamics = match form {
+            Form::StevensLewis => check.aircraft_aerodynamics(&file.aerodynamics)?.into(),
+            Form::Derivatives => check.aircraft_derivatives(&file.aerodynamics)?.into(),
+        };
         let engine = check.aircraft_engine(&file.engine)?;
-        let model = AircraftModel::new(&airframe, tables, engine, atmosphere)
+        let model = AircraftModel::new(&airframe, aerodynamics, engine, atmosphere)
             .map_err(|e| check.invalid("body", e.to_string()))?;
         let limits = check.aircraft_limits(&file.limits)?;
         let condition = check.aircraft_condition(&file.trim)?;
@@ -537,6 +573,13 @@ impl Checker<'_> {
         &self,
         a: &AerodynamicsTable,
     ) -> Result<StevensLewisTables, SceneError> {
+        if a.derivatives.is_some() {
+            return Err(self.invalid(
+                "aerodynamics.derivatives",
+                "the derivatives' form is `aircraft.aerodynamics = \"derivatives\"`; this \
+                 scene's tables are of the stevens-lewis form",
+            ));
+        }
         let in_elevator = |key: &str, t: &AlphaElevator| {
             self.aircraft_grid(
                 key,
@@ -565,7 +608,7 @@ impl Checker<'_> {
             let xs = self.aircraft_points(key, "alpha_deg", alpha)?;
             Table1::new(key, xs, values.to_vec()).map_err(|e| self.aircraft_table_error(key, e))
         };
-        let d = &a.damping;
+        let d = self.aircraft_table("aerodynamics.damping", a.damping.as_ref())?;
         let damping = [
             ("CXq", &d.CXq),
             ("CYr", &d.CYr),
@@ -586,33 +629,150 @@ impl Checker<'_> {
             )?);
         }
         Ok(StevensLewisTables {
-            cx: in_elevator("aerodynamics.cx", &a.cx)?,
-            cz: one("aerodynamics.cz", &a.cz.alpha_deg, &a.cz.values)?,
-            cm: in_elevator("aerodynamics.cm", &a.cm)?,
-            cl: in_beta_abs("aerodynamics.cl", &a.cl)?,
-            cn: in_beta_abs("aerodynamics.cn", &a.cn)?,
-            dlda: in_beta("aerodynamics.dlda", &a.dlda)?,
-            dldr: in_beta("aerodynamics.dldr", &a.dldr)?,
-            dnda: in_beta("aerodynamics.dnda", &a.dnda)?,
-            dndr: in_beta("aerodynamics.dndr", &a.dndr)?,
+            cx: in_elevator(
+                "aerodynamics.cx",
+                self.aircraft_table("aerodynamics.cx", a.cx.as_ref())?,
+            )?,
+            cz: {
+                let cz = self.aircraft_table("aerodynamics.cz", a.cz.as_ref())?;
+                one("aerodynamics.cz", &cz.alpha_deg, &cz.values)?
+            },
+            cm: in_elevator(
+                "aerodynamics.cm",
+                self.aircraft_table("aerodynamics.cm", a.cm.as_ref())?,
+            )?,
+            cl: in_beta_abs(
+                "aerodynamics.cl",
+                self.aircraft_table("aerodynamics.cl", a.cl.as_ref())?,
+            )?,
+            cn: in_beta_abs(
+                "aerodynamics.cn",
+                self.aircraft_table("aerodynamics.cn", a.cn.as_ref())?,
+            )?,
+            dlda: in_beta(
+                "aerodynamics.dlda",
+                self.aircraft_table("aerodynamics.dlda", a.dlda.as_ref())?,
+            )?,
+            dldr: in_beta(
+                "aerodynamics.dldr",
+                self.aircraft_table("aerodynamics.dldr", a.dldr.as_ref())?,
+            )?,
+            dnda: in_beta(
+                "aerodynamics.dnda",
+                self.aircraft_table("aerodynamics.dnda", a.dnda.as_ref())?,
+            )?,
+            dndr: in_beta(
+                "aerodynamics.dndr",
+                self.aircraft_table("aerodynamics.dndr", a.dndr.as_ref())?,
+            )?,
             damping: tables.try_into().expect("nine damping tables"),
         })
     }
 
-    fn aircraft_engine(&self, e: &EngineTable) -> Result<Engine, SceneError> {
-        let table = |level: &str, values: &[Vec<f64>]| {
+    /// A table of the stevens-lewis form, which that form requires.
+    fn aircraft_table<'a, T>(&self, key: &str, table: Option<&'a T>) -> Result<&'a T, SceneError> {
+        table.ok_or_else(|| self.missing(key, "a table of the stevens-lewis form"))
+    }
+
+    /// The stability derivatives of `aircraft.aerodynamics = "derivatives"`, every term
+    /// finite, and no table of the other form beside them.
+    fn aircraft_derivatives(&self, a: &AerodynamicsTable) -> Result<Derivatives, SceneError> {
+        let tables = [
+            ("cx", a.cx.is_some()),
+            ("cz", a.cz.is_some()),
+            ("cm", a.cm.is_some()),
+            ("cl", a.cl.is_some()),
+            ("cn", a.cn.is_some()),
+            ("dlda", a.dlda.is_some()),
+            ("dldr", a.dldr.is_some()),
+            ("dnda", a.dnda.is_some()),
+            ("dndr", a.dndr.is_some()),
+            ("damping", a.damping.is_some()),
+        ];
+        if let Some((name, _)) = tables.iter().find(|(_, given)| *given) {
+            return Err(self.invalid(
+                &format!("aerodynamics.{name}"),
+                "a table of the stevens-lewis form, in a scene whose `aircraft.aerodynamics` \
+                 is derivatives",
+            ));
+        }
+        let derivatives = a.derivatives.ok_or_else(|| {
+            self.missing(
+                "aerodynamics.derivatives",
+                "the stability derivatives of `aircraft.aerodynamics = \"derivatives\"`",
+            )
+        })?;
+        for (name, value) in derivatives.terms() {
+            self.finite(&format!("aerodynamics.derivatives.{name}"), value)?;
+        }
+        Ok(derivatives)
+    }
+
+    /// Thrust tables, or a constant thrust: one of the two, whole.
+    fn aircraft_engine(&self, e: &EngineTable) -> Result<Propulsion, SceneError> {
+        let tables = [
+            ("altitude", e.altitude.is_some()),
+            ("mach", e.mach.is_some()),
+            ("idle", e.idle.is_some()),
+            ("military", e.military.is_some()),
+            ("maximum", e.maximum.is_some()),
+        ];
+        if let Some(thrust) = e.thrust {
+            if let Some((name, _)) = tables.iter().find(|(_, given)| *given) {
+                return Err(self.invalid(
+                    &format!("engine.{name}"),
+                    "a thrust table beside `engine.thrust`: give the tables or a constant \
+                     thrust, not both",
+                ));
+            }
+            let time_constant = e.time_constant_s.ok_or_else(|| {
+                self.missing(
+                    "engine.time_constant_s",
+                    "the power's lag of a constant thrust",
+                )
+            })?;
+            return Ok(ConstantThrust {
+                maximum: self.positive("engine.thrust", thrust)?,
+                time_constant: self.positive("engine.time_constant_s", time_constant)?,
+            }
+            .into());
+        }
+        if e.time_constant_s.is_some() {
+            return Err(self.invalid(
+                "engine.time_constant_s",
+                "the lag of a constant thrust, without `engine.thrust`",
+            ));
+        }
+        let need = |key: &str, given: bool| {
+            if given {
+                Ok(())
+            } else {
+                Err(self.missing(
+                    key,
+                    "the thrust tables (altitude, mach, idle, military, maximum), or \
+                     `engine.thrust` and `engine.time_constant_s`",
+                ))
+            }
+        };
+        for (name, given) in tables {
+            need(&format!("engine.{name}"), given)?;
+        }
+        let (altitude, mach) = (e.altitude.as_deref(), e.mach.as_deref());
+        let (altitude, mach) = (altitude.unwrap_or_default(), mach.unwrap_or_default());
+        let table = |level: &str, values: &Option<Vec<Vec<f64>>>| {
             self.aircraft_grid(
                 &format!("engine.{level}"),
-                ("altitude", &e.altitude),
-                ("mach", &e.mach),
-                values,
+                ("altitude", altitude),
+                ("mach", mach),
+                values.as_deref().unwrap_or_default(),
             )
         };
         Ok(Engine {
             idle: table("idle", &e.idle)?,
             military: table("military", &e.military)?,
             maximum: table("maximum", &e.maximum)?,
-        })
+        }
+        .into())
     }
 
     fn aircraft_limits(&self, l: &LimitsTable) -> Result<Limits, SceneError> {

@@ -14,7 +14,6 @@
 //! and the climb angle. A trim is given with its residual; a condition the aircraft cannot
 //! meet inside its tables and limits is an error naming what is exceeded.
 
-use super::engine::throttle_gearing;
 use super::model::AircraftModel;
 use thiserror::Error;
 
@@ -121,7 +120,8 @@ pub enum TrimError {
 type Unknowns = [f64; 6];
 
 /// The state and controls of `unknowns` at `condition`.
-fn flight(condition: &Condition, gravity: f64, unknowns: &Unknowns) -> ([f64; 13], [f64; 4]) {
+fn flight(model: &Rates, condition: &Condition, unknowns: &Unknowns) -> ([f64; 13], [f64; 4]) {
+    let gravity = model.gravity;
     let [throttle, elevator, alpha, aileron, rudder, beta] = *unknowns;
     let gamma = condition.climb_angle;
     let turn = condition.turn_rate;
@@ -140,7 +140,7 @@ fn flight(condition: &Condition, gravity: f64, unknowns: &Unknowns) -> ([f64; 13
             turn * phi.cos() * theta.cos(),
         )
     };
-    let power = throttle_gearing(throttle).0;
+    let power = (model.steady_power)(throttle);
     let state = [
         condition.speed,
         alpha,
@@ -188,16 +188,20 @@ fn coordinated_roll(condition: &Condition, gravity: f64, alpha: f64, beta: f64) 
 /// The rates of an aircraft's state under its controls.
 pub type RatesOf<'a> = dyn Fn(&[f64; 13], &[f64; 4]) -> [f64; 13] + 'a;
 
-/// What is trimmed: the rates of a state under controls, and gravity (for the turn's
-/// coordination).
+/// The power (percent) the engine settles at under a throttle.
+pub type SteadyPower<'a> = dyn Fn(f64) -> f64 + 'a;
+
+/// What is trimmed: the rates of a state under controls, gravity (for the turn's
+/// coordination) and the engine's steady power.
 struct Rates<'a> {
     rates: &'a RatesOf<'a>,
     gravity: f64,
+    steady_power: &'a SteadyPower<'a>,
 }
 
 /// The six accelerations at `unknowns`.
 fn accelerations(model: &Rates, condition: &Condition, unknowns: &Unknowns) -> [f64; 6] {
-    let (state, controls) = flight(condition, model.gravity, unknowns);
+    let (state, controls) = flight(model, condition, unknowns);
     let rates = (model.rates)(&state, &controls);
     [rates[0], rates[1], rates[2], rates[6], rates[7], rates[8]]
 }
@@ -262,21 +266,28 @@ pub fn trim(
     trim_rates(
         &|x, u| model.rates(x, u),
         model.gravity(),
+        &|throttle| model.engine().steady_power(throttle),
         condition,
         limits,
     )
 }
 
 /// Trims the aircraft whose rates `rates` gives (of the state of [`super::STATE`] under the
-/// controls of [`super::CONTROLS`]) at `condition` under `gravity`, within `limits`: for a
-/// variant of a model (the same model with a source's rounded constants, say).
+/// controls of [`super::CONTROLS`]) at `condition` under `gravity`, its engine settling at
+/// `steady_power(throttle)`, within `limits`: for a variant of a model (the same model with a
+/// source's rounded constants, say).
 pub fn trim_rates(
     rates: &RatesOf,
     gravity: f64,
+    steady_power: &SteadyPower,
     condition: &Condition,
     limits: &Limits,
 ) -> Result<Trim, TrimError> {
-    let model = &Rates { rates, gravity };
+    let model = &Rates {
+        rates,
+        gravity,
+        steady_power,
+    };
     let numbers = [
         condition.speed,
         condition.altitude,
@@ -317,7 +328,7 @@ pub fn trim_rates(
             iterations += taken;
         }
     }
-    let (state, controls) = flight(condition, gravity, &z);
+    let (state, controls) = flight(model, condition, &z);
     if residual.is_nan() || residual > 1e-9 {
         return Err(TrimError::NoConvergence {
             residual,
