@@ -10,8 +10,8 @@ mod mutants;
 
 use eom_codegen::emit::fold::verify;
 use eom_codegen::emit::{Program, prove_with_jacobians, system_source};
-use eom_codegen::model::System;
-use eom_codegen::model::aircraft::{STATE, aircraft, inputs};
+use eom_codegen::model::aircraft::{QUATERNION_STATE, STATE, aircraft, aircraft_with, inputs};
+use eom_codegen::model::{Kinematics, System};
 use mutants::{jacobian_mutants, mutants};
 use std::collections::BTreeMap;
 
@@ -118,38 +118,55 @@ fn the_derived_inertia_constants_are_stevens_and_lewis_c1_to_c9() {
     }
 }
 
-/// Every single-operation mutant of the aircraft's program fails the fold-back check.
+/// Every single-operation mutant of the aircraft's program fails the fold-back check, in
+/// Euler angles and in a quaternion.
 #[test]
 fn every_single_operation_mutant_of_the_aircraft_fails_the_check() {
-    let system = aircraft("aircraft").unwrap();
-    let program = Program::build(&system);
-    verify(&system, &program).expect("the unmutated program verifies");
-    let reached = program.reached(&program.rhs);
-    let mut tried = 0;
-    for index in (0..program.nodes.len()).filter(|&i| reached[i]) {
-        for mutant in mutants(&program, index) {
-            let mut mutated = program.clone();
-            mutated.nodes[index] = mutant.clone();
-            tried += 1;
-            assert!(
-                verify(&system, &mutated).is_err(),
-                "replacing node {index} ({:?}) by {mutant:?} passed the check",
-                program.nodes[index]
-            );
+    for kinematics in Kinematics::ALL {
+        let system = aircraft_with("aircraft", kinematics).unwrap();
+        let program = Program::build(&system);
+        verify(&system, &program).expect("the unmutated program verifies");
+        let reached = program.reached(&program.rhs);
+        let mut tried = 0;
+        for index in (0..program.nodes.len()).filter(|&i| reached[i]) {
+            for mutant in mutants(&program, index) {
+                let mut mutated = program.clone();
+                mutated.nodes[index] = mutant.clone();
+                tried += 1;
+                assert!(
+                    verify(&system, &mutated).is_err(),
+                    "{kinematics:?}: replacing node {index} ({:?}) by {mutant:?} passed the check",
+                    program.nodes[index]
+                );
+            }
         }
+        println!("aircraft ({kinematics:?}) program mutants: {tried} caught of {tried} tried");
+        assert!(tried >= 250, "only {tried} mutants");
     }
-    println!("aircraft program mutants: {tried} caught of {tried} tried");
-    assert!(tried >= 250, "only {tried} mutants");
 }
 
-/// And of its Jacobians ∂f/∂x and ∂f/∂(inputs), every third node they read.
+/// And of its Jacobians ∂f/∂x and ∂f/∂(inputs), every third node they read, in both.
 #[test]
 fn every_single_operation_mutant_of_the_aircraft_jacobians_fails_their_check() {
-    let system = aircraft("aircraft").unwrap();
-    let caught = jacobian_mutants(&system, 3);
-    println!(
-        "aircraft Jacobian mutants: {} caught of {} tried, over {} proved entries",
-        caught.tried, caught.tried, caught.entries
-    );
-    assert!(caught.tried >= 350, "only {} mutants", caught.tried);
+    for kinematics in Kinematics::ALL {
+        let system = aircraft_with("aircraft", kinematics).unwrap();
+        let caught = jacobian_mutants(&system, 3);
+        println!(
+            "aircraft ({kinematics:?}) Jacobian mutants: {} caught of {} tried, over {} proved \
+             entries",
+            caught.tried, caught.tried, caught.entries
+        );
+        assert!(caught.tried >= 350, "only {} mutants", caught.tried);
+    }
+}
+
+/// The quaternion form builds, proves and emits, with the attitude in q0 … q3.
+#[test]
+fn the_quaternion_aircraft_builds_proves_and_emits() {
+    let system = aircraft_with("aircraft", Kinematics::Quaternion).unwrap();
+    prove_with_jacobians(&system).unwrap();
+    let source = system_source(&system).unwrap();
+    syn::parse_file(&source).unwrap();
+    assert_eq!(system.state, QUATERNION_STATE);
+    assert!(source.contains("eom_kernel::Model<T, 14, 19> for Coefficients<T>"));
 }

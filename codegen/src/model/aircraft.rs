@@ -21,8 +21,9 @@
 //!   rates are V̇ = e_V·ν̇, α̇ = (cos α ẇ − sin α u̇)/(V cos β) and
 //!   β̇ = (cos β v̇ − sin β (cos α u̇ + sin α ẇ))/V, and the proof is the chain rule: the time
 //!   derivative of (u, v, w) through (V, α, β) at these rates equals the solved 4.49, exactly;
-//! - flat-Earth navigation (4.57: north, east, and altitude = −z) and the Euler-angle rates
-//!   (4.60), as the catalog derives them;
+//! - flat-Earth navigation (4.57: north, east, and altitude = −z) and the attitude's rates,
+//!   as the catalog derives them: the Euler angles' (4.60), singular at θ = ±90°, or a unit
+//!   quaternion's, q̇ = ½ q ⊗ (0, ω) ([`aircraft_with`]), for a loop or a vertical climb;
 //! - the engine's power as a first-order lag, ṗ = k (p_c − p), its target p_c and gain k
 //!   inputs (a source's piecewise law computes them beside the program).
 //!
@@ -30,10 +31,17 @@
 //! derivatives in the state and the controls are the caller's (a table's segment slope), so
 //! the model's Jacobians are the proved ∂f/∂x and ∂f/∂(input) composed by the chain rule.
 
-use super::families::{euler_kinematics, euler_kinematics_expected, verify_outputs};
+use super::Kinematics;
+use super::families::{
+    euler_kinematics, euler_kinematics_expected, quaternion_kinematics, verify_outputs,
+};
 use super::solve::{Solution, solve_linear};
 use super::system::{BuildError, CoefficientName, Group, Parameter, Stage, System};
 use crate::derivation::kinematics::body_to_space;
+use crate::derivation::quaternion::{
+    Quaternion, body_to_space_half_angles, quaternion_of_euler_angles, quaternion_rates,
+    rotation_matrix,
+};
 use crate::derivation::spatial::{euler_equations, translation, without_products};
 use crate::symbolic::{Expr, SymbolicError, Vec3, parse};
 use std::borrow::Cow;
@@ -42,6 +50,13 @@ use std::borrow::Cow;
 /// north, east, altitude and the engine's power.
 pub const STATE: [&str; 13] = [
     "vt", "alpha", "beta", "phi", "theta", "psi", "p", "q", "r", "north", "east", "altitude",
+    "power",
+];
+
+/// The state of [`Kinematics::Quaternion`]: the attitude a unit quaternion (scalar first) in
+/// the Euler angles' place.
+pub const QUATERNION_STATE: [&str; 14] = [
+    "vt", "alpha", "beta", "q0", "q1", "q2", "q3", "p", "q", "r", "north", "east", "altitude",
     "power",
 ];
 
@@ -115,10 +130,15 @@ pub fn body_velocity() -> Vec3 {
     Vec3([&(&vt * &ca) * &cb, &vt * &sb, &(&vt * &sa) * &cb])
 }
 
-/// k_b = Rᵀ(0, 0, 1): the space-fixed downward unit vector in body axes (4.57's R).
-fn down_in_body() -> Vec3 {
+/// k_b = Rᵀ(0, 0, 1): the space-fixed downward unit vector in body axes (4.57's R, of the
+/// Euler angles or of the quaternion, q ⊗ v ⊗ q*).
+fn down_in_body(kinematics: Kinematics) -> Vec3 {
     let down = Vec3([Expr::zero(), Expr::zero(), Expr::int(1)]);
-    body_to_space().transpose().mul_vec(&down)
+    let rotation = match kinematics {
+        Kinematics::Euler => body_to_space(),
+        Kinematics::Quaternion => rotation_matrix(&Quaternion::symbols()),
+    };
+    rotation.transpose().mul_vec(&down)
 }
 
 /// The aerodynamic build-up: the stages of q̄S, the rate factors and the six total
@@ -171,9 +191,9 @@ fn staged(names: &[&str; 3], values: &Vec3) -> (Vec<Stage>, Vec3) {
     (stages, Vec3::symbols(*names))
 }
 
-/// The aircraft's system (see the module docs), proved: the rotation against 4.51 solved,
-/// the wind-axis rates by the chain rule against 4.49 solved, the navigation and the Euler
-/// angles against 4.57 and 4.60.
+/// The aircraft's system in Euler angles (see the module docs), proved: the rotation against
+/// 4.51 solved, the wind-axis rates by the chain rule against 4.49 solved, the navigation and
+/// the Euler angles against 4.57 and 4.60.
 ///
 /// ```
 /// let system = eom_codegen::model::aircraft::aircraft("f16").unwrap();
@@ -181,9 +201,22 @@ fn staged(names: &[&str; 3], values: &Vec3) -> (Vec<Stage>, Vec3) {
 /// assert_eq!(system.inputs.len(), 19);
 /// ```
 pub fn aircraft(name: &str) -> Result<System, BuildError> {
+    aircraft_with(name, Kinematics::Euler)
+}
+
+/// The aircraft's system with its attitude in `kinematics`: in Euler angles as [`aircraft`],
+/// or a quaternion ([`QUATERNION_STATE`]), whose rates are proved against q̇ = ½ q ⊗ (0, ω),
+/// and whose track and weight equal 4.57's at every unit quaternion (checked at q(φ, θ, ψ)).
+///
+/// ```
+/// use eom_codegen::model::{Kinematics, aircraft::aircraft_with};
+/// let system = aircraft_with("f16", Kinematics::Quaternion).unwrap();
+/// assert_eq!(system.state.len(), 14);
+/// ```
+pub fn aircraft_with(name: &str, kinematics: Kinematics) -> Result<System, BuildError> {
     let err = symbolic(name);
     let (mut stages, aero_force, aero_moment) = aerodynamics(name)?;
-    let weight = down_in_body().scale(&(&sym("M") * &sym("g")));
+    let weight = down_in_body(kinematics).scale(&(&sym("M") * &sym("g")));
     let thrust = Vec3([sym("thrust"), Expr::zero(), Expr::zero()]);
     let force = aero_force.add(&thrust).add(&weight);
     let (force_stages, force) = staged(&["f_x", "f_y", "f_z"], &force);
@@ -209,7 +242,10 @@ pub fn aircraft(name: &str) -> Result<System, BuildError> {
     let (wind_stages, mut outputs) = wind_axis_rates(name)?;
     stages.extend(wind_stages);
 
-    let (kinematic_stages, kinematic_outputs) = euler_kinematics();
+    let (kinematic_stages, kinematic_outputs) = match kinematics {
+        Kinematics::Euler => euler_kinematics(),
+        Kinematics::Quaternion => quaternion_kinematics(name)?,
+    };
     stages.extend(kinematic_stages);
     outputs.extend(kinematic_outputs[3..].iter().cloned());
 
@@ -231,10 +267,16 @@ pub fn aircraft(name: &str) -> Result<System, BuildError> {
     let tensor = without_products_tensor();
     let kinetic_energy = &(&half * &(&sym("M") * &(&sym("vt") * &sym("vt"))))
         + &(&half * &omega.dot(&tensor.mul_vec(&omega)));
+    let (state, kinematic_equations): (Vec<&'static str>, [&'static str; 2]) = match kinematics {
+        Kinematics::Euler => (STATE.to_vec(), ["4.57", "4.60"]),
+        Kinematics::Quaternion => (QUATERNION_STATE.to_vec(), ["4.57 q", "4.60 q"]),
+    };
+    let mut equations = vec!["4.49", "4.50", "4.51"];
+    equations.extend(kinematic_equations);
     let system = System {
         name: name.into(),
         title: "Aircraft in six degrees of freedom about G on its aerodynamic coefficients".into(),
-        equations: vec!["4.49", "4.50", "4.51", "4.57", "4.60"],
+        equations,
         parameters: PARAMETERS
             .iter()
             .map(|(symbol, doc)| Parameter {
@@ -243,11 +285,11 @@ pub fn aircraft(name: &str) -> Result<System, BuildError> {
             })
             .collect(),
         reciprocals: rotation_solution.reciprocals.clone(),
-        state: STATE.to_vec(),
+        state,
         inputs: inputs(),
         stages,
         outputs,
-        groups: groups(),
+        groups: groups(kinematics),
         kinetic_energy: Some(kinetic_energy),
         energy_formula: Some("T = ½MV² + ½ωᵀ[I]ω"),
         potential_energy: Some(&(&sym("M") * &sym("g")) * &sym("altitude")),
@@ -255,6 +297,9 @@ pub fn aircraft(name: &str) -> Result<System, BuildError> {
         coefficient_names: inverse_names(&rotation_solution),
     };
     verify(&system, &translation_solution, &rotation_solution)?;
+    if kinematics == Kinematics::Quaternion {
+        verify_quaternion_attitude(&system)?;
+    }
     Ok(system)
 }
 
@@ -310,7 +355,12 @@ fn wind_axis_rates(name: &str) -> Result<(Vec<Stage>, Vec<Expr>), BuildError> {
 fn verify(system: &System, translation: &Solution, rotation: &Solution) -> Result<(), BuildError> {
     let name = system.name.as_str();
     let err = symbolic(name);
-    let expanded = system.expanded_outputs().map_err(&err)?;
+    // The wind-axis rates only: a quaternion form's track divides by |q|², which the proof
+    // of its own takes at unit quaternions.
+    let expanded: Vec<Expr> = (0..3)
+        .map(|i| system.expanded_output(i))
+        .collect::<Result<_, _>>()
+        .map_err(&err)?;
     let stage = |symbol: &str| {
         system
             .stages
@@ -348,40 +398,110 @@ fn verify(system: &System, translation: &Solution, rotation: &Solution) -> Resul
             });
         }
     }
-    let kinematics = euler_kinematics_expected(name)?;
     let rotated: Vec<Expr> = rotation
         .accelerations(&rotation.rest)
         .iter()
         .map(expand)
         .collect::<Result<_, _>>()?;
-    let mut checks: Vec<(usize, Expr)> = vec![
-        (3, kinematics[3].clone()),
-        (4, kinematics[4].clone()),
-        (5, kinematics[5].clone()),
-        (6, rotated[0].clone()),
-        (7, rotated[1].clone()),
-        (8, rotated[2].clone()),
-    ];
-    let track: Vec<Expr> = kinematics[..3]
-        .iter()
-        .map(|e| e.subs_all(&[("u", stage("u")), ("v", stage("v")), ("w", stage("w"))]))
-        .collect::<Result<_, _>>()
-        .map_err(&err)?;
-    checks.push((9, track[0].clone()));
-    checks.push((10, track[1].clone()));
-    checks.push((11, -&track[2]));
+    // The attitude's rates from 3 on, then the body rates, the track and the power.
+    let quaternion = system.state.len() == QUATERNION_STATE.len();
+    let mut checks: Vec<(usize, Expr)> = Vec::new();
+    let attitude: Vec<Expr> = if quaternion {
+        quaternion_rates().map_err(&err)?.0.to_vec()
+    } else {
+        euler_kinematics_expected(name)?[3..].to_vec()
+    };
+    let rates_at = 3 + attitude.len();
+    checks.extend((3..).zip(attitude));
+    checks.extend((rates_at..).zip(rotated));
+    if !quaternion {
+        let kinematics = euler_kinematics_expected(name)?;
+        let track: Vec<Expr> = kinematics[..3]
+            .iter()
+            .map(|e| e.subs_all(&[("u", stage("u")), ("v", stage("v")), ("w", stage("w"))]))
+            .collect::<Result<_, _>>()
+            .map_err(&err)?;
+        checks.push((9, track[0].clone()));
+        checks.push((10, track[1].clone()));
+        checks.push((11, -&track[2]));
+    }
     checks.push((
-        12,
+        rates_at + 6,
         &sym("power_gain") * &(&sym("power_command") - &sym("power")),
     ));
     verify_outputs(system, &checks)
+}
+
+/// The quaternion form's track and weight equal 4.57's at every unit quaternion: at
+/// q(φ, θ, ψ) in half angles, where |q| = 1 holds identically, north, east and −altitude are
+/// E·(u, v, w) and the weight's direction is Eᵀ(0, 0, 1).
+fn verify_quaternion_attitude(system: &System) -> Result<(), BuildError> {
+    let err = symbolic(&system.name);
+    let at_euler: Vec<(&str, Expr)> = ["q0", "q1", "q2", "q3"]
+        .into_iter()
+        .zip(quaternion_of_euler_angles().0)
+        .collect();
+    let expanded = system
+        .substituted(&at_euler)
+        .map_err(&err)?
+        .expanded_outputs()
+        .map_err(&err)?;
+    let velocity = body_velocity();
+    let e = body_to_space_half_angles();
+    let track = e.mul_vec(&velocity);
+    let navigation = [
+        (10, track.0[0].clone()),
+        (11, track.0[1].clone()),
+        (12, -&track.0[2]),
+    ];
+    for (index, wanted) in navigation {
+        let residual = &expanded[index] - &wanted;
+        if !residual.is_zero() {
+            return Err(BuildError::Verification {
+                model: system.name.clone(),
+                what: format!(
+                    "the quaternion form's {} differs from 4.57's",
+                    system.state[index]
+                ),
+                residual: residual.to_string(),
+            });
+        }
+    }
+    check_weight(&system.name, &down_in_body(Kinematics::Quaternion))
+}
+
+/// `k_b`, a quaternion form's downward vertical in body axes, equals Eᵀ(0, 0, 1) at
+/// q(φ, θ, ψ).
+fn check_weight(name: &str, k_b: &Vec3) -> Result<(), BuildError> {
+    let err = symbolic(name);
+    let at_euler: Vec<(&str, Expr)> = ["q0", "q1", "q2", "q3"]
+        .into_iter()
+        .zip(quaternion_of_euler_angles().0)
+        .collect();
+    let down = Vec3([Expr::zero(), Expr::zero(), Expr::int(1)]);
+    let wanted = body_to_space_half_angles().transpose().mul_vec(&down);
+    for (k, (got, want)) in k_b.0.iter().zip(&wanted.0).enumerate() {
+        let residual = &got.subs_all(&at_euler).map_err(&err)? - want;
+        if !residual.is_zero() {
+            return Err(BuildError::Verification {
+                model: name.into(),
+                what: format!("the quaternion form's weight differs from 4.57's in axis {k}"),
+                residual: residual.to_string(),
+            });
+        }
+    }
+    Ok(())
 }
 
 fn inverse_names(solution: &Solution) -> Vec<CoefficientName> {
     super::families::inverse_names(solution, "inv_inertia", "I", &["x", "y", "z"])
 }
 
-fn groups() -> Vec<Group> {
+fn groups(kinematics: Kinematics) -> Vec<Group> {
+    let (attitude, after) = match kinematics {
+        Kinematics::Euler => ("4.60: the Euler-angle rates", 6),
+        Kinematics::Quaternion => ("4.60 q: the attitude quaternion's rates, ½ q ⊗ (0, ω)", 7),
+    };
     vec![
         Group {
             first: 0,
@@ -391,20 +511,20 @@ fn groups() -> Vec<Group> {
         },
         Group {
             first: 3,
-            comment: "4.60: the Euler-angle rates".into(),
+            comment: attitude.into(),
         },
         Group {
-            first: 6,
+            first: after,
             comment: "4.51 with I_xz and the rotor: [I]ω̇ = M − ω × ([I]ω + h_E e_x), M the \
                       aerodynamic moment carried to G"
                 .into(),
         },
         Group {
-            first: 9,
+            first: after + 3,
             comment: "4.57: north, east and altitude (−z), flat Earth".into(),
         },
         Group {
-            first: 12,
+            first: after + 6,
             comment: "the engine's power, a first-order lag toward its command".into(),
         },
     ]
@@ -419,6 +539,27 @@ mod tests {
         let system = aircraft("aircraft").unwrap();
         let program = crate::emit::prove_with_jacobians(&system).unwrap();
         assert_eq!(program.rhs.outputs.len(), 13);
+    }
+
+    #[test]
+    fn the_quaternion_aircraft_is_proved_and_its_program_folds_back() {
+        let system = aircraft_with("aircraft", Kinematics::Quaternion).unwrap();
+        let program = crate::emit::prove_with_jacobians(&system).unwrap();
+        assert_eq!(program.rhs.outputs.len(), 14);
+    }
+
+    /// A weight turned the wrong way (R(q)·e_z for R(q)ᵀ·e_z) is caught by the check at
+    /// q(φ, θ, ψ).
+    #[test]
+    fn a_wrong_quaternion_weight_is_refused() {
+        let wrong = rotation_matrix(&Quaternion::symbols()).mul_vec(&Vec3([
+            Expr::zero(),
+            Expr::zero(),
+            Expr::int(1),
+        ]));
+        let refused = check_weight("aircraft", &wrong).unwrap_err();
+        assert!(refused.to_string().contains("weight"), "{refused}");
+        check_weight("aircraft", &down_in_body(Kinematics::Quaternion)).unwrap();
     }
 
     /// A wrong wind-axis rate (α̇ without its 1/cos β) is caught by the chain-rule proof.
