@@ -55,7 +55,9 @@ pub(crate) mod engine {
     pub use eom_codegen::emit::program::{Function, Node, Program};
     pub use eom_codegen::emit::{EmitError, F64Formula, Operations, prove_with_jacobians};
     pub use eom_codegen::model::BuildError;
-    pub use eom_codegen::model::aircraft::{STATE as AIRCRAFT_STATE, aircraft};
+    pub use eom_codegen::model::aircraft::{
+        QUATERNION_STATE as AIRCRAFT_QUATERNION_STATE, STATE as AIRCRAFT_STATE, aircraft_with,
+    };
     pub use eom_codegen::model::ship::{
         ADDED_MASS, Force, PRIME_SCALES, PROPULSION, ShipSpec, Term, Units, VARIABLES, YawInertia,
         ship,

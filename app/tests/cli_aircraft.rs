@@ -279,6 +279,62 @@ fn a_loop_stops_at_the_euler_angles_singularity_saying_so() {
     assert_eq!(output.status.code(), Some(5), "{stderr}");
     assert!(stderr.contains("manoeuvre pull_up"), "{stderr}");
     assert!(stderr.contains("within 1° of ±90°"), "{stderr}");
+    assert!(stderr.contains("kinematics = \"quaternion\""), "{stderr}");
+}
+
+/// With `aircraft.kinematics = "quaternion"` a loop flies through the vertical: the F-16 at
+/// x_cg = 0.30 c̄ (stable in pitch) trimmed at 800 ft/s pulls 3° of elevator for 30 s, over
+/// the top, its pitch past ±89° on rows, and on to the end, every row finite.
+#[test]
+fn a_loop_flies_through_the_vertical_in_a_quaternion() {
+    let text = std::fs::read_to_string(scene("f16.toml")).unwrap();
+    let looping = text
+        .replacen(
+            "amount = 3.0\nstart_s = 1.0\nduration_s = 4.0",
+            "amount = 3.0\nstart_s = 1.0\nduration_s = 30.0",
+            1,
+        )
+        .replacen(
+            "aerodynamics = \"stevens-lewis\"\n",
+            "aerodynamics = \"stevens-lewis\"\nkinematics = \"quaternion\"\n",
+            1,
+        )
+        .replacen("xcg = 0.35 #", "xcg = 0.30 #", 1)
+        .replacen("speed = 502.0", "speed = 800.0", 1);
+    let out = folder("f16_loop_quaternion");
+    let file = out.with_extension("toml");
+    std::fs::create_dir_all(out.parent().unwrap()).unwrap();
+    std::fs::write(&file, looping).unwrap();
+    succeeded(&eom(&[
+        "run",
+        file.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]));
+    let csv = std::fs::read_to_string(out.join("pull_up").join("trajectory.csv")).unwrap();
+    let theta = csv
+        .lines()
+        .next()
+        .unwrap()
+        .split(',')
+        .position(|c| c == "theta[rad]");
+    let theta = theta.expect("a theta column");
+    let rows: Vec<Vec<f64>> = (csv.lines().skip(1))
+        .map(|line| line.split(',').map(|c| c.parse().unwrap()).collect())
+        .collect();
+    assert!(rows.iter().all(|row| row.iter().all(|x| x.is_finite())));
+    let vertical = rows
+        .iter()
+        .position(|row| row[theta].abs() > 89f64.to_radians());
+    let vertical = vertical.expect("a row past 89° of pitch");
+    assert!(
+        rows.len() > vertical + 100,
+        "the run went on past the vertical"
+    );
+    assert!(
+        (rows.last().unwrap()[0] - 30.0).abs() < 1e-9,
+        "it ran to its end"
+    );
 }
 
 /// Bad input is refused naming its key (exit 3), never run.

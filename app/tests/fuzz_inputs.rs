@@ -1596,9 +1596,15 @@ fn aircraft_scene_text(text: &str, run: bool, tally: &mut Tally) -> Result<(), T
         let every = scene.every.max(short.duration / 1e4);
         let result = guarded("aircraft run", text, || {
             let trim = (&scene.trim.state, &scene.trim.controls);
-            run_aircraft(&scene.model, &short, trim, (&stepper, every), None, |_| {
-                true
-            })
+            run_aircraft(
+                &scene.model,
+                scene.kinematics,
+                &short,
+                trim,
+                (&stepper, every),
+                None,
+                |_| true,
+            )
         })?;
         match result {
             Ok(_) => tally.count("aircraft run ok"),

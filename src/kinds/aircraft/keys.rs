@@ -55,6 +55,16 @@ pub const KEYS: &[Key] = &[
         ..Key::BLANK
     },
     Key {
+        path: "aircraft.kinematics",
+        families: AIRCRAFT,
+        kind: Kind::Text(Choices::These(&["euler", "quaternion"])),
+        default: "\"euler\"",
+        description: "How a run carries the attitude: euler, the Euler angles (singular at θ = ±90°: a run that comes within 1° of it stops, saying so), or quaternion, a unit quaternion (q̇ = ½ q ⊗ (0, ω), its own proved program), for a loop or a vertical climb. The trim, the linear model and every row are in Euler angles either way (the rows' from the quaternion).",
+        example: "\"quaternion\"",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
         path: "body.mass",
         families: AIRCRAFT,
         unit: "slug or kg",

@@ -8,10 +8,10 @@
 //! ratio read from the yaw rate's swings once the pulse is over (successive maxima: the
 //! period their spacing, the damping from their logarithmic decrement).
 
-use super::model::{AircraftModel, STATE};
+use super::model::{AircraftModel, InQuaternion, QUATERNION_STATE, STATE, euler_of, quaternion_of};
 use crate::integrate::problem::{self, Flow, Problem};
 use crate::integrate::{IntegrateError, Stepper};
-use crate::models::Model;
+use crate::models::{Kinematics, Model};
 use crate::scene::stop::StopCondition;
 use eom_kernel::{Constant, Driven};
 use nalgebra::SVector;
@@ -263,9 +263,75 @@ pub enum RunError {
     },
 }
 
-struct Runner<'a> {
-    model: &'a AircraftModel,
-    trim: [f64; 13],
+/// A form of the aircraft a manoeuvre integrates, of `N` states: its attitude in Euler angles
+/// (the state rows are written in) or in a quaternion.
+pub trait Flight<const N: usize>: Model<f64, N, 4> {
+    /// The aircraft in its Euler-angle form, whose rows and figures the run writes.
+    fn aircraft(&self) -> &AircraftModel;
+    /// This form's state of an Euler-angle state.
+    fn state_of_euler(&self, state: &[f64; 13]) -> [f64; N];
+    /// The Euler-angle state of this form's state.
+    fn euler_state(&self, state: &[f64; N]) -> [f64; 13];
+    /// Why a run cannot go on at `state`, where it cannot.
+    fn cannot_go_on(&self, state: &[f64; N]) -> Option<String>;
+}
+
+impl Flight<13> for AircraftModel {
+    fn aircraft(&self) -> &AircraftModel {
+        self
+    }
+
+    fn state_of_euler(&self, state: &[f64; 13]) -> [f64; 13] {
+        *state
+    }
+
+    fn euler_state(&self, state: &[f64; 13]) -> [f64; 13] {
+        *state
+    }
+
+    /// The Euler angles' rates are singular at θ = ±90°: a run that comes within 1° of it
+    /// stops there, saying so, rather than writing rates that are not the aircraft's.
+    fn cannot_go_on(&self, state: &[f64; 13]) -> Option<String> {
+        let theta = state[4];
+        (theta.abs() > crate::linear::EULER_PITCH_LIMIT).then(|| {
+            format!(
+                "the pitch θ = {:.2}° is within 1° of ±90°, where the Euler angles the \
+                 aircraft is flown in do not hold (a loop or a vertical climb needs \
+                 `aircraft.kinematics = \"quaternion\"`)",
+                theta.to_degrees()
+            )
+        })
+    }
+}
+
+impl Flight<14> for InQuaternion<'_> {
+    fn aircraft(&self) -> &AircraftModel {
+        InQuaternion::aircraft(self)
+    }
+
+    fn state_of_euler(&self, state: &[f64; 13]) -> [f64; 14] {
+        quaternion_of(state)
+    }
+
+    fn euler_state(&self, state: &[f64; 14]) -> [f64; 13] {
+        euler_of(state)
+    }
+
+    /// A quaternion has no singular attitude; one that has lost its length cannot say one.
+    fn cannot_go_on(&self, state: &[f64; 14]) -> Option<String> {
+        let norm = state[3..7].iter().map(|q| q * q).sum::<f64>().sqrt();
+        ((norm - 1.0).abs() > 1e-3).then(|| {
+            format!(
+                "the attitude quaternion's length is {norm}, not 1 to within 1e-3: the \
+                 integrator's tolerance or step is too coarse for the run"
+            )
+        })
+    }
+}
+
+struct Runner<'a, F, const N: usize> {
+    model: &'a F,
+    trim: [f64; N],
     controls: [f64; 4],
     control: usize,
     changes: Vec<(f64, f64)>,
@@ -277,12 +343,12 @@ struct Runner<'a> {
     failure: Option<(f64, String)>,
 }
 
-impl<'a> Problem<13> for Runner<'a> {
-    type System = Driven<'a, AircraftModel, Constant<f64, 4>, 4>;
+impl<'a, F: Flight<N>, const N: usize> Problem<N> for Runner<'a, F, N> {
+    type System = Driven<'a, F, Constant<f64, 4>, 4>;
     type Watch = ();
     type Sample = Sample;
 
-    fn start(&mut self) -> (f64, SVector<f64, 13>) {
+    fn start(&mut self) -> (f64, SVector<f64, N>) {
         (0.0, SVector::from(self.trim))
     }
 
@@ -298,11 +364,11 @@ impl<'a> Problem<13> for Runner<'a> {
         self.model.driven_by(Constant(self.controls))
     }
 
-    fn watches(&self, _: &Self::System, _: f64, _: &SVector<f64, 13>) -> Vec<()> {
+    fn watches(&self, _: &Self::System, _: f64, _: &SVector<f64, N>) -> Vec<()> {
         Vec::new()
     }
 
-    fn g(&self, _: &Self::System, _: (), _: f64, _: &SVector<f64, 13>) -> f64 {
+    fn g(&self, _: &Self::System, _: (), _: f64, _: &SVector<f64, N>) -> f64 {
         0.0
     }
 
@@ -310,31 +376,23 @@ impl<'a> Problem<13> for Runner<'a> {
         self.stop.is_some()
     }
 
-    fn stop_holds(&self, t: f64, y: &SVector<f64, 13>) -> bool {
+    fn stop_holds(&self, t: f64, y: &SVector<f64, N>) -> bool {
         (self.stop).is_some_and(|stop| stop.holds(t, &self.sample(t, y).row))
     }
 
-    /// The attitude is in Euler angles, whose rates are singular at θ = ±90°: a run that
-    /// comes within 1° of it stops there, saying so, rather than writing rates that are not
-    /// the aircraft's.
-    fn accepted(&mut self, t: f64, y: &SVector<f64, 13>) -> bool {
-        let theta = y[4];
-        if theta.abs() > crate::linear::EULER_PITCH_LIMIT {
-            self.failure = Some((
-                t,
-                format!(
-                    "the pitch θ = {:.2}° is within 1° of ±90°, where the Euler angles the \
-                     aircraft is flown in do not hold (a loop or a vertical climb needs \
-                     quaternion kinematics, which an aircraft scene does not have yet)",
-                    theta.to_degrees()
-                ),
-            ));
-            return false;
+    /// Where the form cannot go on (the Euler angles' singularity), the run stops, saying
+    /// why.
+    fn accepted(&mut self, t: f64, y: &SVector<f64, N>) -> bool {
+        match self.model.cannot_go_on(&y.data.0[0]) {
+            Some(reason) => {
+                self.failure = Some((t, reason));
+                false
+            }
+            None => true,
         }
-        true
     }
 
-    fn change(&mut self, _t: f64, _y: &mut SVector<f64, 13>) -> Flow {
+    fn change(&mut self, _t: f64, _y: &mut SVector<f64, N>) -> Flow {
         let (_, offset) = self.changes[self.next];
         self.next += 1;
         self.controls = self.trim_controls;
@@ -342,24 +400,57 @@ impl<'a> Problem<13> for Runner<'a> {
         Flow::Go
     }
 
-    fn event(&mut self, _: (), _: f64, _: &mut SVector<f64, 13>) -> Flow {
+    fn event(&mut self, _: (), _: f64, _: &mut SVector<f64, N>) -> Flow {
         Flow::Go
     }
 
-    fn sample(&self, t: f64, y: &SVector<f64, 13>) -> Sample {
-        let state = y.data.0[0];
+    fn sample(&self, t: f64, y: &SVector<f64, N>) -> Sample {
+        let state = self.model.euler_state(&y.data.0[0]);
+        let aircraft = self.model.aircraft();
         Sample {
             t,
-            row: row_at(self.model, &state, &self.controls),
-            kinetic: self.model.kinetic_energy(&state),
+            row: row_at(aircraft, &state, &self.controls),
+            kinetic: aircraft.kinetic_energy(&state),
         }
     }
 }
 
-/// Runs `manoeuvre` from the trim (`state`, `controls`), each row to `observe`.
-#[allow(clippy::too_many_arguments)]
+/// Runs `manoeuvre` from the trim (`state`, `controls`), each row to `observe`, the attitude
+/// integrated in `kinematics` (the rows in Euler angles either way).
 pub fn run(
     model: &AircraftModel,
+    kinematics: Kinematics,
+    manoeuvre: &AircraftManoeuvre,
+    trim: (&[f64; 13], &[f64; 4]),
+    method: (&Stepper, f64),
+    stop: Option<&StopCondition>,
+    observe: impl FnMut(&Sample) -> bool,
+) -> Result<AircraftRun, RunError> {
+    match kinematics {
+        Kinematics::Euler => run_in(model, &STATE, manoeuvre, trim, method, stop, observe),
+        Kinematics::Quaternion => {
+            let flight = model.in_quaternion().map_err(|e| RunError::Failed {
+                time: 0.0,
+                reason: e.to_string(),
+            })?;
+            run_in(
+                &flight,
+                &QUATERNION_STATE,
+                manoeuvre,
+                trim,
+                method,
+                stop,
+                observe,
+            )
+        }
+    }
+}
+
+/// [`run`] in the form `model`, whose states `names` are.
+#[allow(clippy::too_many_arguments)]
+fn run_in<F: Flight<N>, const N: usize>(
+    model: &F,
+    names: &[&str; N],
     manoeuvre: &AircraftManoeuvre,
     (state, controls): (&[f64; 13], &[f64; 4]),
     (stepper, every): (&Stepper, f64),
@@ -371,7 +462,7 @@ pub fn run(
     let mut measured = Measured::new(state, settled_from);
     let mut runner = Runner {
         model,
-        trim: *state,
+        trim: model.state_of_euler(state),
         controls: *controls,
         control: manoeuvre.kind.control(),
         changes,
@@ -395,7 +486,7 @@ pub fn run(
             time: t,
             reason: format!(
                 "{} is not finite (the aircraft left its atmosphere, or the step is too coarse)",
-                STATE.get(component).unwrap_or(&"?")
+                names.get(component).unwrap_or(&"?")
             ),
         },
         other => RunError::Failed {
@@ -406,7 +497,7 @@ pub fn run(
     Ok(AircraftRun {
         steps: stats.steps as u64,
         rhs_evals: stats.rhs_evals as u64,
-        end: end.state.data.0[0],
+        end: model.euler_state(&end.state.data.0[0]),
         measured,
         stopped_at: end.stopped.then_some(end.t),
     })

@@ -23,5 +23,7 @@ pub mod tables;
 pub mod trim;
 
 pub use kind::KIND;
-pub use model::{AircraftError, AircraftModel, Airframe, CONTROLS, STATE};
+pub use model::{
+    AircraftError, AircraftModel, Airframe, CONTROLS, InQuaternion, QUATERNION_STATE, STATE,
+};
 pub use scene::AircraftScene;

@@ -13,7 +13,8 @@ use super::aero::{Aerodynamics, Flow};
 use super::atmosphere::Atmosphere;
 use super::engine::Propulsion;
 use crate::defined::engine::{
-    AIRCRAFT_STATE, BuildError, Operations, aircraft, prove_with_jacobians,
+    AIRCRAFT_QUATERNION_STATE, AIRCRAFT_STATE, BuildError, Kinematics, Operations, aircraft_with,
+    prove_with_jacobians,
 };
 use crate::defined::{Functions, Interpreter, Source, Variables, coefficient_values};
 use crate::inertia::InertiaTensor;
@@ -30,10 +31,36 @@ pub const STATE: [&str; 13] = AIRCRAFT_STATE;
 /// The controls: throttle (0 to 1), elevator, aileron, rudder (deg).
 pub const CONTROLS: [&str; 4] = ["throttle", "elevator", "aileron", "rudder"];
 
+/// The state of the quaternion form: the attitude q0 … q3 (scalar first) in the Euler angles'
+/// place.
+pub const QUATERNION_STATE: [&str; 14] = AIRCRAFT_QUATERNION_STATE;
+
 /// What the inputs computed beside the program depend on, in this order.
 const DEPENDENCIES: usize = 9;
-/// Their places: V, α, β, altitude, power in the state; the four controls.
-const STATE_DEPENDENCIES: [(usize, usize); 5] = [(0, 0), (1, 1), (2, 2), (3, 11), (4, 12)];
+
+/// Where a form of the state keeps what the inputs depend on: V, α, β first in both, the
+/// altitude and the power after the attitude and the track.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct Layout {
+    altitude: usize,
+    power: usize,
+}
+
+impl Layout {
+    const EULER: Layout = Layout {
+        altitude: 11,
+        power: 12,
+    };
+    const QUATERNION: Layout = Layout {
+        altitude: 12,
+        power: 13,
+    };
+
+    /// The dependencies' places in the state: V, α, β, altitude, power.
+    fn dependencies(self) -> [(usize, usize); 5] {
+        [(0, 0), (1, 1), (2, 2), (3, self.altitude), (4, self.power)]
+    }
+}
 const INPUTS: usize = 19;
 /// Where C_m is among the inputs.
 const PITCH_MOMENT: usize = 4;
@@ -137,39 +164,102 @@ impl Airframe {
     }
 }
 
-/// The aircraft's proved program, built and proved once per process (it does not depend on
-/// the numbers).
+/// The aircraft's proved program in one form of its attitude, built and proved once per
+/// process (it does not depend on the numbers).
 struct Proved {
     system: crate::defined::engine::System,
     program: crate::defined::engine::Program,
 }
 
-fn proved() -> Result<&'static Proved, AircraftError> {
-    static PROVED: OnceLock<Result<Proved, AircraftError>> = OnceLock::new();
-    PROVED
-        .get_or_init(|| {
-            let system = aircraft("aircraft")?;
-            let program = prove_with_jacobians(&system).map_err(|e| AircraftError::Invalid {
-                field: "model".into(),
-                why: e.to_string(),
-            })?;
-            Ok(Proved { system, program })
-        })
-        .as_ref()
-        .map_err(Clone::clone)
+fn proved(kinematics: Kinematics) -> Result<&'static Proved, AircraftError> {
+    static EULER: OnceLock<Result<Proved, AircraftError>> = OnceLock::new();
+    static QUATERNION: OnceLock<Result<Proved, AircraftError>> = OnceLock::new();
+    let cell = match kinematics {
+        Kinematics::Euler => &EULER,
+        Kinematics::Quaternion => &QUATERNION,
+    };
+    cell.get_or_init(|| {
+        let system = aircraft_with("aircraft", kinematics)?;
+        let program = prove_with_jacobians(&system).map_err(|e| AircraftError::Invalid {
+            field: "model".into(),
+            why: e.to_string(),
+        })?;
+        Ok(Proved { system, program })
+    })
+    .as_ref()
+    .map_err(Clone::clone)
 }
 
-/// An aircraft on its tables or derivatives, ready to evaluate.
+/// A proved program with an airframe's numbers hoisted, ready to call.
 #[derive(Debug, Clone)]
-pub struct AircraftModel {
+struct Flown {
     program: Interpreter,
     functions: Functions,
+    operations: Operations,
+}
+
+impl Flown {
+    /// The program of `kinematics` with the airframe's `values`.
+    fn new(kinematics: Kinematics, values: &BTreeMap<String, f64>) -> Result<Self, AircraftError> {
+        let proved = proved(kinematics)?;
+        let coefficients = coefficient_values(&proved.system, &proved.program, values);
+        if let Some((c, _)) = (proved.program.coefficients.iter())
+            .zip(&coefficients)
+            .find(|(_, v)| !v.is_finite())
+        {
+            return Err(AircraftError::Invalid {
+                field: "body".into(),
+                why: format!("the coefficient `{}` is not finite", c.value),
+            });
+        }
+        let (state, inputs) = (&proved.system.state, &proved.system.inputs);
+        let place = |name: &str| {
+            if let Some(i) = state.iter().position(|s| *s == name) {
+                return Some(Source::State(i));
+            }
+            inputs.iter().position(|s| *s == name).map(Source::Computed)
+        };
+        let program = Interpreter::new(&proved.program, &coefficients, place).map_err(|name| {
+            AircraftError::Invalid {
+                field: "model".into(),
+                why: format!("the program reads `{name}`, which nothing sets"),
+            }
+        })?;
+        let functions = Functions::of(&proved.program)
+            .map_err(|what| AircraftError::Invalid {
+                field: "model".into(),
+                why: format!("the program has no {what}"),
+            })?
+            .compile(&program);
+        Ok(Flown {
+            operations: proved.program.operations(&proved.program.rhs),
+            program,
+            functions,
+        })
+    }
+
+    /// The rates of `state` with the inputs at `computed`.
+    fn rates<const N: usize>(&self, state: &[f64; N], computed: &[f64; INPUTS]) -> [f64; N] {
+        let mut rates = [0.0; N];
+        let variables = Variables { state, computed };
+        (self.program).evaluate_into(&self.functions.rhs, variables, &mut rates);
+        rates
+    }
+}
+
+/// An aircraft on its tables or derivatives, ready to evaluate: its attitude in Euler angles
+/// (the state of trims, linear models and rows), and on demand in a quaternion
+/// ([`AircraftModel::in_quaternion`]) for runs through the vertical.
+#[derive(Debug, Clone)]
+pub struct AircraftModel {
+    euler: Flown,
+    quaternion: OnceLock<Result<Flown, AircraftError>>,
+    parameters: BTreeMap<String, f64>,
     aerodynamics: Aerodynamics,
     engine: Propulsion,
     atmosphere: Atmosphere,
     gravity: f64,
     chord: f64,
-    operations: Operations,
 }
 
 /// The inputs the program reads, computed beside it, with their derivatives in
@@ -189,41 +279,11 @@ impl AircraftModel {
         engine: impl Into<Propulsion>,
         atmosphere: Atmosphere,
     ) -> Result<Self, AircraftError> {
-        let proved = proved()?;
-        let values = airframe.parameters()?;
-        let coefficients = coefficient_values(&proved.system, &proved.program, &values);
-        if let Some((c, _)) = (proved.program.coefficients.iter())
-            .zip(&coefficients)
-            .find(|(_, v)| !v.is_finite())
-        {
-            return Err(AircraftError::Invalid {
-                field: "body".into(),
-                why: format!("the coefficient `{}` is not finite", c.value),
-            });
-        }
-        let inputs = &proved.system.inputs;
-        let place = |name: &str| {
-            if let Some(i) = STATE.iter().position(|s| *s == name) {
-                return Some(Source::State(i));
-            }
-            inputs.iter().position(|s| *s == name).map(Source::Computed)
-        };
-        let program = Interpreter::new(&proved.program, &coefficients, place).map_err(|name| {
-            AircraftError::Invalid {
-                field: "model".into(),
-                why: format!("the program reads `{name}`, which nothing sets"),
-            }
-        })?;
-        let functions = Functions::of(&proved.program)
-            .map_err(|what| AircraftError::Invalid {
-                field: "model".into(),
-                why: format!("the program has no {what}"),
-            })?
-            .compile(&program);
+        let parameters = airframe.parameters()?;
         Ok(AircraftModel {
-            operations: proved.program.operations(&proved.program.rhs),
-            program,
-            functions,
+            euler: Flown::new(Kinematics::Euler, &parameters)?,
+            quaternion: OnceLock::new(),
+            parameters,
             aerodynamics: aerodynamics.into(),
             engine: engine.into(),
             atmosphere,
@@ -234,7 +294,21 @@ impl AircraftModel {
 
     /// What one call of the proved right-hand side costs, as the emitter counts it.
     pub fn operations(&self) -> Operations {
-        self.operations
+        self.euler.operations
+    }
+
+    /// The model with its attitude in a quaternion (q̇ = ½ q ⊗ (0, ω)), for runs that pass
+    /// through the vertical; its program is built and proved the first time it is asked for.
+    pub fn in_quaternion(&self) -> Result<InQuaternion<'_>, AircraftError> {
+        let flown = self
+            .quaternion
+            .get_or_init(|| Flown::new(Kinematics::Quaternion, &self.parameters))
+            .as_ref()
+            .map_err(Clone::clone)?;
+        Ok(InQuaternion {
+            aircraft: self,
+            flown,
+        })
     }
 
     /// Gravity, as the airframe gives it.
@@ -262,30 +336,27 @@ impl AircraftModel {
         self.aerodynamics.pitch_by_alpha_rate() * self.chord / (2.0 * speed)
     }
 
-    /// The proved right-hand side with its inputs at `computed`.
-    fn evaluate(&self, state: &[f64; 13], computed: &[f64; INPUTS]) -> [f64; 13] {
-        let mut rates = [0.0; 13];
-        let variables = Variables { state, computed };
-        (self.program).evaluate_into(&self.functions.rhs, variables, &mut rates);
-        rates
-    }
-
     /// The inputs at `state` with C_m's α̇ term added, and α̇: the program's α̇ does not read
     /// C_m, so one evaluation without the term gives it.
-    fn beside_with_alpha_rate(&self, state: &[f64; 13], controls: &[f64; 4]) -> (Beside, f64) {
-        let mut beside = self.beside(state, controls);
+    fn beside_with_alpha_rate<const N: usize>(
+        &self,
+        (flown, layout): (&Flown, Layout),
+        state: &[f64; N],
+        controls: &[f64; 4],
+    ) -> (Beside, f64) {
+        let mut beside = self.beside(layout, state, controls);
         let per_alpha_rate = self.pitch_by_alpha_rate(state[0]);
         if per_alpha_rate == 0.0 {
             return (beside, 0.0);
         }
-        let alpha_rate = self.evaluate(state, &beside.values)[1];
+        let alpha_rate = flown.rates(state, &beside.values)[1];
         beside.values[PITCH_MOMENT] += per_alpha_rate * alpha_rate;
         (beside, alpha_rate)
     }
 
     /// The program's inputs at `state` under `controls`, with their derivatives. Outside the
     /// atmosphere the air is NaN, and so are the rates: a run's guard says where.
-    fn beside(&self, state: &[f64; 13], controls: &[f64; 4]) -> Beside {
+    fn beside(&self, layout: Layout, state: &[f64], controls: &[f64; 4]) -> Beside {
         let mut values = [0.0; INPUTS];
         let mut by = [[0.0; DEPENDENCIES]; INPUTS];
         let flow = Flow {
@@ -302,7 +373,7 @@ impl AircraftModel {
                 by[k][slot] = derivative;
             }
         }
-        let (speed, altitude, power) = (state[0], state[11], state[12]);
+        let (speed, altitude, power) = (state[0], state[layout.altitude], state[layout.power]);
         let nan = super::atmosphere::Air {
             density: f64::NAN,
             density_by_altitude: f64::NAN,
@@ -332,8 +403,18 @@ impl AircraftModel {
 
     /// The rates of `state` under `controls`.
     pub fn rates(&self, state: &[f64; 13], controls: &[f64; 4]) -> [f64; 13] {
-        let (beside, _) = self.beside_with_alpha_rate(state, controls);
-        self.evaluate(state, &beside.values)
+        self.rates_in((&self.euler, Layout::EULER), state, controls)
+    }
+
+    /// The rates of `state`, in the form of `flown`, under `controls`.
+    fn rates_in<const N: usize>(
+        &self,
+        (flown, layout): (&Flown, Layout),
+        state: &[f64; N],
+        controls: &[f64; 4],
+    ) -> [f64; N] {
+        let (beside, _) = self.beside_with_alpha_rate((flown, layout), state, controls);
+        flown.rates(state, &beside.values)
     }
 
     /// ∂f/∂x and ∂f/∂(controls): the proved Jacobians composed with the inputs' slopes, and
@@ -343,29 +424,36 @@ impl AircraftModel {
         state: &[f64; 13],
         controls: &[f64; 4],
     ) -> ([[f64; 13]; 13], [[f64; 4]; 13]) {
-        let (beside, alpha_rate) = self.beside_with_alpha_rate(state, controls);
+        self.jacobians_in((&self.euler, Layout::EULER), state, controls)
+    }
+
+    /// The Jacobians of the form of `flown`.
+    fn jacobians_in<const N: usize>(
+        &self,
+        (flown, layout): (&Flown, Layout),
+        state: &[f64; N],
+        controls: &[f64; 4],
+    ) -> ([[f64; N]; N], [[f64; 4]; N]) {
+        let (beside, alpha_rate) = self.beside_with_alpha_rate((flown, layout), state, controls);
         let variables = Variables {
             state,
             computed: &beside.values,
         };
-        let mut by_state = [[0.0; 13]; 13];
-        let entries = self
-            .program
-            .evaluate(&self.functions.state_jacobian, variables);
-        for (&(row, column), value) in self.functions.state_pattern.iter().zip(entries) {
+        let (program, functions) = (&flown.program, &flown.functions);
+        let mut by_state = [[0.0; N]; N];
+        let entries = program.evaluate(&functions.state_jacobian, variables);
+        for (&(row, column), value) in functions.state_pattern.iter().zip(entries) {
             by_state[row][column] += value;
         }
-        let mut by_controls = [[0.0; 4]; 13];
-        let mut by_pitch_moment = [0.0; 13];
-        let entries = self
-            .program
-            .evaluate(&self.functions.input_jacobian, variables);
-        for (&(row, input), value) in self.functions.input_pattern.iter().zip(entries) {
+        let mut by_controls = [[0.0; 4]; N];
+        let mut by_pitch_moment = [0.0; N];
+        let entries = program.evaluate(&functions.input_jacobian, variables);
+        for (&(row, input), value) in functions.input_pattern.iter().zip(entries) {
             if input == PITCH_MOMENT {
                 by_pitch_moment[row] += value;
             }
             let slopes = &beside.by[input];
-            for (dependency, column) in STATE_DEPENDENCIES {
+            for (dependency, column) in layout.dependencies() {
                 by_state[row][column] += value * slopes[dependency];
             }
             for (control, slot) in by_controls[row].iter_mut().enumerate() {
@@ -395,14 +483,115 @@ impl AircraftModel {
 
     /// The kinetic energy ½MV² + ½ωᵀ\[I\]ω of `state`, from the proved form.
     pub fn kinetic_energy(&self, state: &[f64; 13]) -> f64 {
-        let beside = [0.0; INPUTS];
-        let variables = Variables {
-            state,
-            computed: &beside,
-        };
-        let plan = &self.functions.kinetic_energy;
-        self.program.evaluate(plan, variables).next().unwrap_or(0.0)
+        kinetic_energy_in(&self.euler, state)
     }
+}
+
+/// The kinetic energy of `state` in the form of `flown` (it reads V and the body rates only).
+fn kinetic_energy_in<const N: usize>(flown: &Flown, state: &[f64; N]) -> f64 {
+    let beside = [0.0; INPUTS];
+    let variables = Variables {
+        state,
+        computed: &beside,
+    };
+    let plan = &flown.functions.kinetic_energy;
+    flown
+        .program
+        .evaluate(plan, variables)
+        .next()
+        .unwrap_or(0.0)
+}
+
+/// The aircraft with its attitude in a quaternion, scalar first ([`QUATERNION_STATE`]): the
+/// same loads, air and engine as its Euler-angle form, through the proved program of
+/// `aircraft_with(…, Kinematics::Quaternion)`. A run through the vertical integrates this;
+/// its rows give the Euler angles of the quaternion ([`euler_of`]).
+#[derive(Debug, Clone, Copy)]
+pub struct InQuaternion<'a> {
+    aircraft: &'a AircraftModel,
+    flown: &'a Flown,
+}
+
+impl InQuaternion<'_> {
+    /// The aircraft in its Euler-angle form.
+    pub fn aircraft(&self) -> &AircraftModel {
+        self.aircraft
+    }
+}
+
+/// Every entry: the quaternion form's pattern is not refined.
+const QUATERNION_JACOBIAN: [(usize, usize); 14 * 14] = {
+    let mut entries = [(0, 0); 196];
+    let mut k = 0;
+    while k < 196 {
+        entries[k] = (k / 14, k % 14);
+        k += 1;
+    }
+    entries
+};
+
+/// Every control on every rate.
+const QUATERNION_INPUT_JACOBIAN: [(usize, usize); 14 * 4] = {
+    let mut entries = [(0, 0); 56];
+    let mut k = 0;
+    while k < 56 {
+        entries[k] = (k / 4, k % 4);
+        k += 1;
+    }
+    entries
+};
+
+impl Model<f64, 14, 4> for InQuaternion<'_> {
+    const NAME: &'static str = "aircraft_quaternion";
+    const STATE: [&'static str; 14] = QUATERNION_STATE;
+    const INPUTS: [&'static str; 4] = CONTROLS;
+    const STATE_JACOBIAN: &'static [(usize, usize)] = &QUATERNION_JACOBIAN;
+    const INPUT_JACOBIAN: &'static [(usize, usize)] = &QUATERNION_INPUT_JACOBIAN;
+
+    fn rhs(&self, state: &[f64; 14], input: &[f64; 4]) -> [f64; 14] {
+        (self.aircraft).rates_in((self.flown, Layout::QUATERNION), state, input)
+    }
+
+    fn kinetic_energy(&self, state: &[f64; 14]) -> f64 {
+        kinetic_energy_in(self.flown, state)
+    }
+
+    fn state_jacobian(&self, state: &[f64; 14], input: &[f64; 4]) -> [[f64; 14]; 14] {
+        (self.aircraft)
+            .jacobians_in((self.flown, Layout::QUATERNION), state, input)
+            .0
+    }
+
+    fn input_jacobian(&self, state: &[f64; 14], input: &[f64; 4]) -> [[f64; 4]; 14] {
+        (self.aircraft)
+            .jacobians_in((self.flown, Layout::QUATERNION), state, input)
+            .1
+    }
+}
+
+/// The quaternion form's state of an Euler-angle state: q = q_z(ψ) ⊗ q_y(θ) ⊗ q_x(φ), the
+/// rest as it is.
+pub fn quaternion_of(state: &[f64; 13]) -> [f64; 14] {
+    let q = nalgebra::UnitQuaternion::from_euler_angles(state[3], state[4], state[5]);
+    let mut out = [0.0; 14];
+    out[..3].copy_from_slice(&state[..3]);
+    out[3..7].copy_from_slice(&[q.w, q.i, q.j, q.k]);
+    out[7..].copy_from_slice(&state[6..]);
+    out
+}
+
+/// The Euler-angle state of a quaternion form's state, the quaternion normalised first (φ and
+/// ψ are then one of the pairs that give it at θ = ±90°).
+pub fn euler_of(state: &[f64; 14]) -> [f64; 13] {
+    let q = nalgebra::UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(
+        state[3], state[4], state[5], state[6],
+    ));
+    let (phi, theta, psi) = q.euler_angles();
+    let mut out = [0.0; 13];
+    out[..3].copy_from_slice(&state[..3]);
+    out[3..6].copy_from_slice(&[phi, theta, psi]);
+    out[6..].copy_from_slice(&state[7..]);
+    out
 }
 
 /// Where the rates can depend on the state: V̇, α̇, β̇ on the wind axes, the attitude but the

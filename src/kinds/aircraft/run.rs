@@ -154,6 +154,7 @@ pub fn run_scene<'a>(
         let mut count = 0usize;
         let done = manoeuvre::run(
             &scene.model,
+            scene.kinematics,
             manoeuvre,
             (&scene.trim.state, &scene.trim.controls),
             (&scene.stepper, scene.every),

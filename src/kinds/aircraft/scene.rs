@@ -44,6 +44,7 @@ use super::tables::{Breakpoints, Table1, Table2, TableError};
 use super::trim::{Condition, Limits, Trim, trim};
 use crate::InertiaTensor;
 use crate::integrate::Stepper;
+use crate::models::Kinematics;
 use crate::scene::check::Checker;
 use crate::scene::envelope::{IntegratorTable, LinearTable, OutputTable};
 use crate::scene::stop::StopCondition;
@@ -95,6 +96,8 @@ pub struct AircraftTable {
     pub atmosphere: String,
     /// The form of the aerodynamics: `stevens-lewis` (tables) or `derivatives`.
     pub aerodynamics: String,
+    /// How a run carries the attitude: `euler` (the default) or `quaternion`.
+    pub kinematics: Option<String>,
 }
 
 /// `[body]`.
@@ -314,6 +317,8 @@ pub struct AircraftScene {
     pub title: String,
     /// The model.
     pub model: AircraftModel,
+    /// How its runs carry the attitude (the rows are in Euler angles either way).
+    pub kinematics: Kinematics,
     /// The unit system's name (`us`, `si`).
     pub units: &'static str,
     /// Where the tables and surfaces end.
@@ -426,6 +431,14 @@ impl AircraftScene {
                 (Form::Derivatives, "derivatives"),
             ],
         )?;
+        let kinematics = check.word(
+            "aircraft.kinematics",
+            file.aircraft.kinematics.as_deref().unwrap_or("euler"),
+            [
+                (Kinematics::Euler, "euler"),
+                (Kinematics::Quaternion, "quaternion"),
+            ],
+        )?;
         let airframe = check.aircraft_airframe(file)?;
         let tensor = airframe.inertia.matrix();
         let mass_properties = (
@@ -479,9 +492,16 @@ impl AircraftScene {
             "the aircraft",
             (&STATE, &CONTROLS, &[]),
         )?;
+        if kinematics == Kinematics::Quaternion {
+            // Derived and proved when the scene is read, as every model.
+            model
+                .in_quaternion()
+                .map_err(|e| check.invalid("aircraft.kinematics", e.to_string()))?;
+        }
         Ok(AircraftScene {
             title: file.title.clone(),
             model,
+            kinematics,
             units,
             limits,
             condition,
