@@ -5,6 +5,7 @@
 //! cargo run --release --example monte_carlo                         # 10⁴ cases, every core
 //! cargo run --release --example monte_carlo -- --turning-only       # the turning circles alone
 //! cargo run --release --example monte_carlo -- --cases 1000 --seed 7 --shard 0/2
+//! cargo run --release --example monte_carlo -- --scene my_mariner.toml   # another method, say
 //! ```
 //!
 //! **The cases.** Case k draws, from its own stream (splitmix64 seeded by the seed and k, so a
@@ -16,7 +17,8 @@
 //! manoeuvres are the scene's.
 //!
 //! **A case** runs the scene's turning circle and its two zig-zags (10°/10°, 20°/20°), each to
-//! port and to starboard, with the scene's method and step (RK4, 0.1 s), and judges the IMO
+//! port and to starboard, with the scene's method (DOPRI5 at 1e-6, what `eom tradeoff`
+//! recommends for it; `--scene` reads another copy of the Mariner), and judges the IMO
 //! criteria (MSC.137(76)) on them as `eom run` does: the worse side decides. The model of a
 //! case is the scene's model with the case's values ([`ShipModel::with_table`]): 4.46 is
 //! derived, proved and compiled once, not per case, since that takes about ten times as long
@@ -47,6 +49,7 @@ const TRUNCATION: f64 = 3.0;
 
 /// The command line.
 struct Args {
+    scene: Option<std::path::PathBuf>,
     cases: usize,
     seed: u64,
     shard: (usize, usize),
@@ -55,6 +58,7 @@ struct Args {
 
 fn parse_args() -> Result<Args, String> {
     let mut args = Args {
+        scene: None,
         cases: 10_000,
         seed: 2026,
         shard: (0, 1),
@@ -74,6 +78,7 @@ fn parse_args() -> Result<Args, String> {
             }
             "--shard" => args.shard = parse_shard(&value("--shard")?)?,
             "--turning-only" => args.turning_only = true,
+            "--scene" => args.scene = Some(value("--scene")?.into()),
             other => return Err(format!("unknown argument `{other}`")),
         }
     }
@@ -158,7 +163,8 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/mariner.toml");
+    let path = (args.scene.clone())
+        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/mariner.toml"));
     let scene = match ShipScene::load(&path) {
         Ok(scene) => scene,
         Err(error) => {

@@ -468,11 +468,11 @@ fn bad_tables_are_refused_naming_the_key() {
             "hydrodynamics.units",
         ),
         (
-            "method = \"rk4\"",
-            "method = \"lie-midpoint\"",
+            "method = \"dopri5\"",
+            "method = \"leapfrog\"",
             "integrator.method",
         ),
-        ("step = 0.1 ", "step = -0.1 ", "integrator.step"),
+        ("rtol = 1e-6", "rtol = -1e-6", "integrator.rtol"),
         ("time_constant_s = 1.0", "", "rudder.max_rate_deg_s"),
         ("kind = \"zigzag\"", "kind = \"spin\"", "manoeuvre[1].kind"),
         (

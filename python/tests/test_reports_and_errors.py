@@ -136,7 +136,7 @@ def test_a_scene_knows_its_kind_runs_and_keys():
     mariner = eom.Scene.load(SCENES / "mariner.toml")
     assert (mariner.kind, mariner.title) == ("ship", "Mariner-class cargo ship")
     assert mariner.runs == ["turning_circle_35", "zigzag_10_10", "zigzag_20_20", "spiral"]
-    assert "integrator.step" in mariner.keys and "manoeuvre[0].rudder_deg" in mariner.keys
+    assert "integrator.rtol" in mariner.keys and "manoeuvre[0].rudder_deg" in mariner.keys
     racket = eom.Scene.load(SCENES / "tennis_racket.toml")
     assert (racket.kind, racket.runs, racket.folders) == ("body", [], ["trajectory.csv"])
 
