@@ -282,6 +282,44 @@ fn a_loop_stops_at_the_euler_angles_singularity_saying_so() {
     assert!(stderr.contains("kinematics = \"quaternion\""), "{stderr}");
 }
 
+/// A departure: the unaugmented F-16 at x_cg = 0.35 c̄ pulling 10° of elevator for 20 s, in a
+/// quaternion so that the pitch does not stop it, tumbles past the tables' 45° of α. The run
+/// goes on (the F-16's code extends its tables linearly, and so does eom), and its summary
+/// says that the rows beyond are that extension, not data.
+#[test]
+fn a_departure_beyond_the_tables_says_so() {
+    let text = std::fs::read_to_string(scene("f16.toml")).unwrap();
+    let departing = text
+        .replacen(
+            "amount = 3.0\nstart_s = 1.0\nduration_s = 4.0",
+            "amount = 10.0\nstart_s = 1.0\nduration_s = 20.0",
+            1,
+        )
+        .replacen(
+            "aerodynamics = \"stevens-lewis\"\n",
+            "aerodynamics = \"stevens-lewis\"\nkinematics = \"quaternion\"\n",
+            1,
+        );
+    let out = folder("f16_departure");
+    let file = out.with_extension("toml");
+    std::fs::create_dir_all(out.parent().unwrap()).unwrap();
+    std::fs::write(&file, departing).unwrap();
+    succeeded(&eom(&[
+        "run",
+        file.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]));
+    let summary = json(&out.join("summary.json"));
+    let notes = summary["manoeuvre"]["pull_up"]["notes"].to_string();
+    assert!(
+        notes.contains("beyond the range the aerodynamics holds"),
+        "{notes}"
+    );
+    let doublet = summary["manoeuvre"]["elevator_doublet"]["notes"].to_string();
+    assert!(!doublet.contains("beyond the range"), "{doublet}");
+}
+
 /// With `aircraft.kinematics = "quaternion"` a loop flies through the vertical: the F-16 at
 /// x_cg = 0.30 c̄ (stable in pitch) trimmed at 800 ft/s pulls 3° of elevator for 30 s, over
 /// the top, its pitch past ±89° on rows, and on to the end, every row finite.

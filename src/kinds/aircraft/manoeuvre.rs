@@ -165,6 +165,8 @@ pub struct Measured {
     pub load_factor: (f64, f64),
     /// The largest |α − α_trim|, |β|, |p|.
     pub excursions: [f64; 3],
+    /// The least and the largest α over the rows.
+    pub alpha_extremes: (f64, f64),
     /// The yaw rate's local maxima after the last change of the controls, (t, r − r_trim).
     pub yaw_peaks: Vec<(f64, f64)>,
     /// Its local minima after it, likewise.
@@ -182,6 +184,7 @@ impl Measured {
         Measured {
             load_factor: (f64::NEG_INFINITY, f64::INFINITY),
             excursions: [0.0; 3],
+            alpha_extremes: (f64::INFINITY, f64::NEG_INFINITY),
             yaw_peaks: Vec::new(),
             yaw_troughs: Vec::new(),
             trim: (trim[1], trim[8]),
@@ -198,6 +201,8 @@ impl Measured {
         for (e, x) in self.excursions.iter_mut().zip(excursions) {
             *e = e.max(x);
         }
+        let (low, high) = self.alpha_extremes;
+        self.alpha_extremes = (low.min(row[1]), high.max(row[1]));
         if t <= self.settled_from {
             return;
         }
@@ -329,6 +334,28 @@ impl Flight<14> for InQuaternion<'_> {
     }
 }
 
+/// The sideslip beyond which a run stops, rad: 1° from ±90°, where sec β passes 57.
+const SIDESLIP_LIMIT: f64 = std::f64::consts::FRAC_PI_2 - std::f64::consts::PI / 180.0;
+
+/// The wind-axis state (V, α, β) holds for an aircraft flying forward of its side: its rates
+/// divide by V and α̇ by cos β. Why a run cannot go on at airspeed `speed` and sideslip
+/// `beta`, where it cannot (V not positive, or |β| within 1° of 90°).
+fn wind_axes_cannot_go_on(speed: f64, beta: f64) -> Option<String> {
+    if speed <= 0.0 {
+        return Some(format!(
+            "the airspeed V = {speed} is not positive: the wind-axis state (V, α, β) holds \
+             only while the aircraft moves through the air"
+        ));
+    }
+    (beta.abs() > SIDESLIP_LIMIT).then(|| {
+        format!(
+            "the sideslip β = {:.2}° is within 1° of ±90°, where the wind-axis state (V, α, β) \
+             is singular (α̇ divides by cos β): the aircraft has departed",
+            beta.to_degrees()
+        )
+    })
+}
+
 struct Runner<'a, F, const N: usize> {
     model: &'a F,
     trim: [f64; N],
@@ -380,10 +407,13 @@ impl<'a, F: Flight<N>, const N: usize> Problem<N> for Runner<'a, F, N> {
         (self.stop).is_some_and(|stop| stop.holds(t, &self.sample(t, y).row))
     }
 
-    /// Where the form cannot go on (the Euler angles' singularity), the run stops, saying
-    /// why.
+    /// Where the wind-axis state or the form cannot go on (β or θ at ±90°), the run stops,
+    /// saying why.
     fn accepted(&mut self, t: f64, y: &SVector<f64, N>) -> bool {
-        match self.model.cannot_go_on(&y.data.0[0]) {
+        let state = &y.data.0[0];
+        let reason =
+            wind_axes_cannot_go_on(state[0], state[2]).or_else(|| self.model.cannot_go_on(state));
+        match reason {
             Some(reason) => {
                 self.failure = Some((t, reason));
                 false
@@ -525,4 +555,22 @@ pub fn dutch_roll(peaks: &[(f64, f64)], troughs: &[(f64, f64)]) -> Option<(f64, 
     let decrement = (positive[0].1 / positive[cycles].1).ln() / cycles as f64;
     let damping = decrement / (4.0 * std::f64::consts::PI.powi(2) + decrement * decrement).sqrt();
     Some((period, damping))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The wind-axis state stops a run where it is singular, saying what: V not positive,
+    /// |β| within 1° of 90° (on either side); 88° of sideslip goes on.
+    #[test]
+    fn the_wind_axes_stop_where_they_do_not_hold() {
+        let stopped = wind_axes_cannot_go_on(0.0, 0.1).unwrap();
+        assert!(stopped.contains("airspeed"), "{stopped}");
+        for beta in [89.5f64, -89.5] {
+            let stopped = wind_axes_cannot_go_on(500.0, beta.to_radians()).unwrap();
+            assert!(stopped.contains("sideslip"), "{stopped}");
+        }
+        assert_eq!(wind_axes_cannot_go_on(500.0, 88f64.to_radians()), None);
+    }
 }

@@ -99,6 +99,19 @@ fn figures(scene: &AircraftScene, run: &AircraftRun, kick: bool) -> (Named, Vec<
         ),
     ];
     let mut notes = Vec::new();
+    let (low, high) = scene.limits.alpha;
+    let (least, largest) = m.alpha_extremes;
+    if least < low || largest > high {
+        notes.push(format!(
+            "α went from {:.2}° to {:.2}°, beyond the range the aerodynamics holds \
+             ({:.1}° to {:.1}°, `limits.alpha_deg`): the rows there are the tables' linear \
+             extension past their ends, not data, and the figures read on them are no better",
+            least.to_degrees(),
+            largest.to_degrees(),
+            low.to_degrees(),
+            high.to_degrees()
+        ));
+    }
     if kick {
         match dutch_roll(&m.yaw_peaks, &m.yaw_troughs) {
             Some((period, damping)) => {
