@@ -15,6 +15,7 @@ use eom::kinds::aircraft::engine::Engine;
 use eom::kinds::aircraft::tables::{Breakpoints, Table1, Table2};
 use eom::kinds::aircraft::trim::{Condition, Limits, trim, trim_rates};
 use eom::kinds::aircraft::{AircraftModel, Airframe};
+use eom_test_support::differences::central_jacobians;
 use serde_json::Value;
 
 fn data() -> Value {
@@ -580,29 +581,11 @@ fn the_f16_jacobians_are_its_rates_slopes() {
     ];
     for (x, u) in points {
         let (a, b) = model.jacobians(&x, &u);
-        let scale = |v: f64| 1e-6 * v.abs().max(1e-2);
-        let mut numeric_a = [[0.0; 13]; 13];
-        for j in 0..13 {
-            let h = scale(x[j]);
-            let (mut up, mut down) = (x, x);
-            up[j] += h;
-            down[j] -= h;
-            let (fu, fd) = (model.rates(&up, &u), model.rates(&down, &u));
-            for i in 0..13 {
-                numeric_a[i][j] = (fu[i] - fd[i]) / (2.0 * h);
-            }
-        }
-        let mut numeric_b = [[0.0; 4]; 13];
-        for j in 0..4 {
-            let h = scale(u[j]);
-            let (mut up, mut down) = (u, u);
-            up[j] += h;
-            down[j] -= h;
-            let (fu, fd) = (model.rates(&x, &up), model.rates(&x, &down));
-            for i in 0..13 {
-                numeric_b[i][j] = (fu[i] - fd[i]) / (2.0 * h);
-            }
-        }
+        let (numeric_a, numeric_b) = central_jacobians(
+            |x, u| model.rates(x, u),
+            (&x, &u),
+            |v| 1e-6 * v.abs().max(1e-2),
+        );
         let pattern = <eom::kinds::aircraft::AircraftModel as Model<f64, 13, 4>>::STATE_JACOBIAN;
         let inputs = <eom::kinds::aircraft::AircraftModel as Model<f64, 13, 4>>::INPUT_JACOBIAN;
         for i in 0..13 {

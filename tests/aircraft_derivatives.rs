@@ -14,6 +14,7 @@
 use eom::kinds::aircraft::AircraftScene;
 use eom::kinds::aircraft::derivatives::Derivatives;
 use eom::linear::modes::eigenvalues;
+use eom_test_support::differences::central_jacobians;
 use nalgebra::{Complex, DMatrix};
 use serde_json::Value;
 use std::path::Path;
@@ -280,32 +281,22 @@ fn the_navions_jacobians_are_its_rates_slopes() {
     state[11] = 1500.0;
     let controls = [0.7, -2.0, 1.5, 3.0];
     let (a, b) = scene.model.jacobians(&state, &controls);
-    let rates = |x: &[f64; 13], u: &[f64; 4]| scene.model.rates(x, u);
-    for column in 0..13 {
-        let h = 1e-6 * state[column].abs().max(1.0);
-        let (mut up, mut down) = (state, state);
-        up[column] += h;
-        down[column] -= h;
-        let (fu, fd) = (rates(&up, &controls), rates(&down, &controls));
-        for row in 0..13 {
-            let scale = a[row].iter().fold(1.0_f64, |m, x| m.max(x.abs()));
-            let difference = (fu[row] - fd[row]) / (2.0 * h);
+    let (numeric_a, numeric_b) = central_jacobians(
+        |x, u| scene.model.rates(x, u),
+        (&state, &controls),
+        |v| 1e-6 * v.abs().max(1.0),
+    );
+    for row in 0..13 {
+        let scale = a[row].iter().fold(1.0_f64, |m, x| m.max(x.abs()));
+        for (column, difference) in numeric_a[row].iter().enumerate() {
             assert!(
                 (difference - a[row][column]).abs() < 1e-6 * scale,
                 "∂f{row}/∂x{column}: {difference} vs {}",
                 a[row][column]
             );
         }
-    }
-    for column in 0..4 {
-        let h = 1e-6 * controls[column].abs().max(1.0);
-        let (mut up, mut down) = (controls, controls);
-        up[column] += h;
-        down[column] -= h;
-        let (fu, fd) = (rates(&state, &up), rates(&state, &down));
-        for row in 0..13 {
-            let scale = b[row].iter().fold(1.0_f64, |m, x| m.max(x.abs()));
-            let difference = (fu[row] - fd[row]) / (2.0 * h);
+        let scale = b[row].iter().fold(1.0_f64, |m, x| m.max(x.abs()));
+        for (column, difference) in numeric_b[row].iter().enumerate() {
             assert!(
                 (difference - b[row][column]).abs() < 1e-6 * scale,
                 "∂f{row}/∂u{column}: {difference} vs {}",

@@ -9,6 +9,7 @@ use eom::kinds::aircraft::AircraftScene;
 use eom::kinds::aircraft::manoeuvre::{Sample, run};
 use eom::kinds::aircraft::model::{euler_of, quaternion_of};
 use eom::models::{Kinematics, Model};
+use eom_test_support::differences::central_jacobians;
 use std::path::Path;
 
 fn f16_text() -> String {
@@ -96,18 +97,14 @@ fn the_quaternion_forms_jacobians_are_its_rates_slopes() {
     let x = quaternion_of(&away());
     let controls = [0.6, -2.0, 3.0, -4.0];
     let a = quaternion.state_jacobian(&x, &controls);
-    for column in 0..14 {
-        let h = 1e-6 * x[column].abs().max(1.0);
-        let (mut up, mut down) = (x, x);
-        up[column] += h;
-        down[column] -= h;
-        let (fu, fd) = (
-            quaternion.rhs(&up, &controls),
-            quaternion.rhs(&down, &controls),
-        );
-        for row in 0..14 {
-            let scale = a[row].iter().fold(1.0_f64, |m, v| m.max(v.abs()));
-            let difference = (fu[row] - fd[row]) / (2.0 * h);
+    let (numeric, _) = central_jacobians(
+        |x, u| quaternion.rhs(x, u),
+        (&x, &controls),
+        |v| 1e-6 * v.abs().max(1.0),
+    );
+    for row in 0..14 {
+        let scale = a[row].iter().fold(1.0_f64, |m, v| m.max(v.abs()));
+        for (column, difference) in numeric[row].iter().enumerate() {
             assert!(
                 (difference - a[row][column]).abs() < 1e-6 * scale,
                 "∂f{row}/∂x{column}: {difference} vs {}",

@@ -8,11 +8,13 @@
 //! | every catalog model over f64 and dual numbers, for the Jacobian bench and its table | [`jacobian`] |
 //! | the bodies, runs and measures of the tests at the extremes | [`extremes`], [`double_double`] |
 //! | a fixed stream of random draws | [`random`] |
+//! | a model's Jacobians by central differences | [`differences`] |
 //! | the keys a serde schema accepts | [`schema`] |
 
 pub mod bodies;
 pub mod child;
 pub mod cli;
+pub mod differences;
 pub mod double_double;
 pub mod eval;
 pub mod extremes;
