@@ -5,7 +5,8 @@
 
 use eom_test_support::cli::{eom, folder, scene, scene_arg, succeeded};
 use serde_json::Value;
-use std::path::Path;
+use std::path::{Path, PathBuf};
+use std::process::Output;
 
 fn json(path: &Path) -> Value {
     serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
@@ -14,6 +15,43 @@ fn json(path: &Path) -> Value {
 fn number(v: &Value) -> f64 {
     v.as_f64().unwrap_or_else(|| panic!("{v}"))
 }
+
+/// `scenes/f16.toml` with each `(from, to)` replaced once; each must be in it.
+fn f16_with(edits: &[(&str, &str)]) -> String {
+    let mut text = std::fs::read_to_string(scene("f16.toml")).unwrap();
+    for (from, to) in edits {
+        assert!(text.contains(from), "{from}");
+        text = text.replacen(from, to, 1);
+    }
+    text
+}
+
+/// `eom run` of scene `text`, written beside the fresh output folder of `test`, into that
+/// folder: what the command did, and the folder.
+fn run_text(test: &str, text: &str) -> (Output, PathBuf) {
+    let out = folder(test);
+    let file = out.with_extension("toml");
+    std::fs::write(&file, text).unwrap();
+    let output = eom(&[
+        "run",
+        file.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    (output, out)
+}
+
+/// The pull-up held for 20 s at 10°, into a loop or a departure.
+const PULLED: (&str, &str) = (
+    "amount = 3.0\nstart_s = 1.0\nduration_s = 4.0",
+    "amount = 10.0\nstart_s = 1.0\nduration_s = 20.0",
+);
+
+/// The attitude in a quaternion.
+const QUATERNION: (&str, &str) = (
+    "aerodynamics = \"stevens-lewis\"\n",
+    "aerodynamics = \"stevens-lewis\"\nkinematics = \"quaternion\"\n",
+);
 
 /// The F-16 runs its five manoeuvres from the level trim at 502 ft/s, x_cg = 0.35 c̄: the trim
 /// is Table 3.6-3's first column to its printed digits, every manoeuvre writes its rows, and
@@ -194,21 +232,12 @@ fn the_f16_linearises_at_its_trim_and_names_its_modes() {
 /// F-16 is stable and its modes carry the book's names: the short period at −1.20 ± 1.49i.
 #[test]
 fn a_sweep_over_the_centre_of_gravity_runs_each_case() {
-    let out = folder("f16_sweep");
-    let text = std::fs::read_to_string(scene("f16.toml")).unwrap();
-    let text = text.replace(
+    let text = f16_with(&[(
         "# eom linear: at the trim",
         "[sweep]\n\"geometry.xcg\" = [0.30, 0.35]\n\n# eom linear: at the trim",
-    );
-    let file = out.with_extension("toml");
-    std::fs::create_dir_all(out.parent().unwrap()).unwrap();
-    std::fs::write(&file, text).unwrap();
-    succeeded(&eom(&[
-        "run",
-        file.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]));
+    )]);
+    let (output, out) = run_text("f16_sweep", &text);
+    succeeded(&output);
     let table = std::fs::read_to_string(out.join("sweep.csv")).unwrap();
     let mut lines = table.lines();
     let header = lines.next().unwrap();
@@ -241,16 +270,7 @@ fn text_with_xcg(text: &str, xcg: &str) -> String {
 #[test]
 fn eom_new_aircraft_writes_a_scene_that_runs() {
     let template = succeeded(&eom(&["new", "aircraft"]));
-    let out = folder("new_aircraft");
-    let file = out.with_extension("toml");
-    std::fs::create_dir_all(out.parent().unwrap()).unwrap();
-    std::fs::write(&file, template).unwrap();
-    let stdout = succeeded(&eom(&[
-        "run",
-        file.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]));
+    let stdout = succeeded(&run_text("new_aircraft", &template).0);
     assert!(stdout.contains("elevator_doublet"), "{stdout}");
 }
 
@@ -258,23 +278,7 @@ fn eom_new_aircraft_writes_a_scene_that_runs() {
 /// singularity), saying so (exit 5), rather than writing rates that are not the aircraft's.
 #[test]
 fn a_loop_stops_at_the_euler_angles_singularity_saying_so() {
-    let text = std::fs::read_to_string(scene("f16.toml")).unwrap();
-    let looping = text.replacen(
-        "amount = 3.0\nstart_s = 1.0\nduration_s = 4.0",
-        "amount = 10.0\nstart_s = 1.0\nduration_s = 20.0",
-        1,
-    );
-    assert_ne!(looping, text);
-    let out = folder("f16_loop");
-    let file = out.with_extension("toml");
-    std::fs::create_dir_all(out.parent().unwrap()).unwrap();
-    std::fs::write(&file, looping).unwrap();
-    let output = eom(&[
-        "run",
-        file.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let (output, _) = run_text("f16_loop", &f16_with(&[PULLED]));
     let stderr = String::from_utf8_lossy(&output.stderr);
     assert_eq!(output.status.code(), Some(5), "{stderr}");
     assert!(stderr.contains("manoeuvre pull_up"), "{stderr}");
@@ -288,28 +292,8 @@ fn a_loop_stops_at_the_euler_angles_singularity_saying_so() {
 /// says that the rows beyond are that extension, not data.
 #[test]
 fn a_departure_beyond_the_tables_says_so() {
-    let text = std::fs::read_to_string(scene("f16.toml")).unwrap();
-    let departing = text
-        .replacen(
-            "amount = 3.0\nstart_s = 1.0\nduration_s = 4.0",
-            "amount = 10.0\nstart_s = 1.0\nduration_s = 20.0",
-            1,
-        )
-        .replacen(
-            "aerodynamics = \"stevens-lewis\"\n",
-            "aerodynamics = \"stevens-lewis\"\nkinematics = \"quaternion\"\n",
-            1,
-        );
-    let out = folder("f16_departure");
-    let file = out.with_extension("toml");
-    std::fs::create_dir_all(out.parent().unwrap()).unwrap();
-    std::fs::write(&file, departing).unwrap();
-    succeeded(&eom(&[
-        "run",
-        file.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]));
+    let (output, out) = run_text("f16_departure", &f16_with(&[PULLED, QUATERNION]));
+    succeeded(&output);
     let summary = json(&out.join("summary.json"));
     let notes = summary["manoeuvre"]["pull_up"]["notes"].to_string();
     assert!(
@@ -325,30 +309,17 @@ fn a_departure_beyond_the_tables_says_so() {
 /// the top, its pitch past ±89° on rows, and on to the end, every row finite.
 #[test]
 fn a_loop_flies_through_the_vertical_in_a_quaternion() {
-    let text = std::fs::read_to_string(scene("f16.toml")).unwrap();
-    let looping = text
-        .replacen(
+    let looping = f16_with(&[
+        (
             "amount = 3.0\nstart_s = 1.0\nduration_s = 4.0",
             "amount = 3.0\nstart_s = 1.0\nduration_s = 30.0",
-            1,
-        )
-        .replacen(
-            "aerodynamics = \"stevens-lewis\"\n",
-            "aerodynamics = \"stevens-lewis\"\nkinematics = \"quaternion\"\n",
-            1,
-        )
-        .replacen("xcg = 0.35 #", "xcg = 0.30 #", 1)
-        .replacen("speed = 502.0", "speed = 800.0", 1);
-    let out = folder("f16_loop_quaternion");
-    let file = out.with_extension("toml");
-    std::fs::create_dir_all(out.parent().unwrap()).unwrap();
-    std::fs::write(&file, looping).unwrap();
-    succeeded(&eom(&[
-        "run",
-        file.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]));
+        ),
+        QUATERNION,
+        ("xcg = 0.35 #", "xcg = 0.30 #"),
+        ("speed = 502.0", "speed = 800.0"),
+    ]);
+    let (output, out) = run_text("f16_loop_quaternion", &looping);
+    succeeded(&output);
     let csv = std::fs::read_to_string(out.join("pull_up").join("trajectory.csv")).unwrap();
     let theta = csv
         .lines()
@@ -378,7 +349,6 @@ fn a_loop_flies_through_the_vertical_in_a_quaternion() {
 /// Bad input is refused naming its key (exit 3), never run.
 #[test]
 fn bad_aircraft_input_is_refused_by_key() {
-    let text = std::fs::read_to_string(scene("f16.toml")).unwrap();
     let cases: [(&str, &str, &str); 6] = [
         (
             "[aerodynamics.cz]\nalpha_deg = [-10.0, -5.0, 0.0,",
@@ -396,18 +366,7 @@ fn bad_aircraft_input_is_refused_by_key() {
         ("speed = 502.0", "speed = 2502.0", "trim"),
     ];
     for (from, to, key) in cases {
-        assert!(text.contains(from), "{from}");
-        let bad = text.replacen(from, to, 1);
-        let out = folder("f16_bad");
-        let file = out.with_extension("toml");
-        std::fs::create_dir_all(out.parent().unwrap()).unwrap();
-        std::fs::write(&file, bad).unwrap();
-        let output = eom(&[
-            "run",
-            file.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ]);
+        let (output, out) = run_text("f16_bad", &f16_with(&[(from, to)]));
         let stderr = String::from_utf8_lossy(&output.stderr);
         assert_eq!(output.status.code(), Some(3), "{key}: {stderr}");
         assert!(stderr.contains(key), "{key}: {stderr}");
