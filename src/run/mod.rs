@@ -5,11 +5,13 @@
 //! How each kind runs is its own ([`crate::kinds`]); every run is a problem solved by the one
 //! loop (`integrate::problem`). A kind that compares its integrators on its end state fills
 //! the one [`tradeoff::Tradeoff`]; any kind whose runs give figures is compared on them by
-//! [`figure_tradeoff`].
+//! [`figure_tradeoff`]. A Monte Carlo of any scene runs its cases and counts what they give in
+//! [`uncertainty`].
 
 pub mod figure_tradeoff;
 pub mod record;
 pub mod tradeoff;
+pub mod uncertainty;
 
 /// One trajectory row.
 #[derive(Debug, Clone, Copy)]

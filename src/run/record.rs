@@ -50,6 +50,13 @@ pub trait Recorder {
     /// Whether the caller asked the runs to stop (Ctrl-C): a run checks it between rows it
     /// does not record (a refined run) and before it begins.
     fn stop_asked(&self) -> bool;
+
+    /// Whether each run is run again refined, for how far its figures move (the summary's
+    /// differences). A Monte Carlo's cases are not: what it reads is their spread, and the
+    /// refined run would cost more than the case; their figures then give no difference.
+    fn refines(&self) -> bool {
+        true
+    }
 }
 
 /// A recorder that keeps nothing and never asks to stop: for a library user who wants a

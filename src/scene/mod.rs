@@ -10,7 +10,8 @@
 //! [`Requirement`](crate::validate::Requirement), the method and its settings, the `[linear]`
 //! table), the tables every scene with manoeuvres shares through [`envelope`].
 //!
-//! What every kind shares is here: a `[sweep]` of any scene ([`sweep`]), a condition that
+//! What every kind shares is here: a `[sweep]` of any scene ([`sweep`]), a Monte Carlo over
+//! its values ([`uncertainty`]), a condition that
 //! ends a run where it first holds ([`stop`]: `integrator.stop_when = "z > 10"`), the errors
 //! ([`SceneError`]), and the key reference that docs/scenes.md and `eom new` are made from
 //! ([`reference`](mod@reference)).
@@ -25,6 +26,7 @@ mod error;
 pub mod reference;
 pub mod stop;
 pub mod sweep;
+pub mod uncertainty;
 
 pub use any::AnyScene;
 pub(crate) use error::display_name;

@@ -25,7 +25,7 @@ use crate::defined::{CoefficientFormulas, Functions, Interpreter, Plan, Source, 
 use crate::models::Model;
 use simba::simd::SimdRealField;
 use std::collections::BTreeMap;
-use std::sync::Arc;
+use std::sync::{Arc, Mutex};
 
 /// The state: u, v, r (m/s, m/s, rad/s, body axes at midship), X, Y (m, midship in space
 /// axes), ψ (rad), δ (rad, the rudder angle).
@@ -111,9 +111,41 @@ fn spec_of(table: &ShipTable) -> ShipSpec {
     }
 }
 
+/// The models derived in this process, one per set of terms, units, yaw-inertia convention
+/// and propulsion: what [`ShipModel::new`] takes another table's values into. The last
+/// [`PROVED_KEPT`] are kept.
+static PROVED_MODELS: Mutex<Vec<ShipModel>> = Mutex::new(Vec::new());
+
+/// How many derived models [`PROVED_MODELS`] keeps (a sweep over tables of many term sets
+/// derives each again once it falls out).
+const PROVED_KEPT: usize = 16;
+
 impl ShipModel {
-    /// Derives, solves and proves 4.46 with the table's terms, then resolves the program.
+    /// The model of the table: 4.46 with its terms derived, solved and proved (with its
+    /// Jacobians) and compiled once per process for each set of terms, units, yaw-inertia
+    /// convention and propulsion, the table's values then taken in as
+    /// [`ShipModel::with_table`] takes them. A scene read again with other values (each case
+    /// of a sweep or of a Monte Carlo) reuses the proof; [`ShipModel::derive`] derives anew.
     pub fn new(table: &ShipTable) -> Result<Self, ShipError> {
+        let spec = spec_of(table);
+        let derived = (PROVED_MODELS.lock().ok())
+            .and_then(|models| models.iter().find(|m| m.proved.spec == spec).cloned());
+        if let Some(model) = derived {
+            return model.with_table(table);
+        }
+        let model = Self::derive(table)?;
+        if let Ok(mut models) = PROVED_MODELS.lock() {
+            if models.len() == PROVED_KEPT {
+                models.remove(0);
+            }
+            models.push(model.clone());
+        }
+        Ok(model)
+    }
+
+    /// Derives, solves and proves 4.46 with the table's terms, then resolves the program,
+    /// whatever was derived before (see [`ShipModel::new`]).
+    pub fn derive(table: &ShipTable) -> Result<Self, ShipError> {
         let spec = spec_of(table);
         let system = ship("ship", &spec).map_err(|e| ShipError::Build(EmitError::Model(e)))?;
         let program = prove_with_jacobians(&system)?;
@@ -263,6 +295,12 @@ impl ShipModel {
             }
         }
         (by_state, by_input)
+    }
+
+    /// Whether this model runs the very program `other` runs, derived and proved once for
+    /// both ([`ShipModel::new`] of tables of the same terms, [`ShipModel::with_table`]).
+    pub fn shares_proof_with(&self, other: &ShipModel) -> bool {
+        Arc::ptr_eq(&self.proved, &other.proved)
     }
 
     /// The propulsion model, for a ship that has one.

@@ -377,13 +377,20 @@ fn run_manoeuvre(
     // What the recorder could not keep comes first: the run stopped because of it.
     recorder.end().map_err(not_recorded)?;
     let done = done?;
-    let refined = (&scene.stepper.refined(scene.every), scene.every);
-    let refined = run_until(model, &scene.rudder, manoeuvre, start, refined, |_| {
-        !recorder.stop_asked()
-    })?;
+    let refined = match recorder.refines() {
+        true => {
+            let refined = (&scene.stepper.refined(scene.every), scene.every);
+            let refined = run_until(model, &scene.rudder, manoeuvre, start, refined, |_| {
+                !recorder.stop_asked()
+            })?;
+            refined.figures
+        }
+        // No figure of its own: every difference is `None`.
+        false => Figures::default(),
+    };
     Ok(Outcome {
         figures: done.figures,
-        refined: refined.figures,
+        refined,
         steps: done.steps,
         rhs_evals: done.rhs_evals,
         stopped_at: done.stopped_at,
