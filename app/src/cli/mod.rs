@@ -14,6 +14,7 @@ mod serves;
 mod sweep;
 mod swing;
 mod tradeoff;
+mod uncertainty;
 mod values;
 mod view;
 
@@ -45,7 +46,8 @@ pub enum Command {
     /// pivot point beside; a vehicle at its cruise, through its table's Euler-angle twin.
     Linear(linear::Args),
     /// Merge the tables of a sweep's shards (`eom run --shard K/N`), once all are done, into
-    /// one sweep.csv sorted by case.
+    /// one sweep.csv sorted by case; a Monte Carlo's into uncertainty.csv, with the statistics
+    /// and plots one run writes.
     SweepMerge(merge::Args),
     /// Run a scene with every applicable integrator over steps and tolerances, and recommend
     /// the cheapest setting that meets a target error.

@@ -5,7 +5,8 @@
 //! holds a run is not overwritten without `--force`, and the folder is taken for the run alone
 //! ([`eom::output::folder`]). A scene with a `[sweep]` runs every case
 //! in parallel, each into `case-NNNN/`, and writes `sweep.csv`, one line per case; `--shard
-//! K/N` runs only the cases k ≡ K (mod N). With no scene, `eom` runs its default scene, the
+//! K/N` runs only the cases k ≡ K (mod N). A scene with an `[uncertainty]` is a Monte Carlo
+//! (`uncertainty`): its cases' figures and verdicts, counted. With no scene, `eom` runs its default scene, the
 //! tennis-racket flip.
 //!
 //! A run that stops early loses nothing it computed: on Ctrl-C (SIGINT) or SIGTERM it ends at
@@ -18,12 +19,14 @@
 
 use super::record::FolderRecorder;
 use super::sweep::{SWEEP_PLOT, run_cases, write_sweep_plot};
+use super::uncertainty;
 use anyhow::{Context, Result, bail};
 use eom::Short;
 use eom::kinds::{Finished, Kind};
 use eom::output::folder::{Claim, FolderError, Writer, sweep_identity};
 use eom::output::summary::write_atomically;
 use eom::scene::sweep::{TableCase, is_swept, parse_shard, shard_tables};
+use eom::scene::uncertainty::is_uncertain;
 use eom::scene::{AnyScene, Problem, SceneError};
 use eom_cli::plots::PLOT_FILES;
 use eom_cli::shell_path;
@@ -50,7 +53,7 @@ pub struct Args {
     /// only eom's own), or beside the files of a folder eom did not write.
     #[arg(long)]
     force: bool,
-    /// Run only the sweep cases k ≡ K (mod N), written `K/N`.
+    /// Run only the cases k ≡ K (mod N) of a sweep or a Monte Carlo, written `K/N`.
     #[arg(long, value_parser = parse_shard)]
     shard: Option<(usize, usize)>,
     /// Write a trajectory of more than 100 MB (without it such a run is refused before it
@@ -223,6 +226,9 @@ fn default_folder(scene: &Path) -> PathBuf {
 
 fn execute(text: &str, name: &str, base: &Path, out: &Path, options: Options) -> Result<()> {
     watch_signals();
+    if is_uncertain(text) {
+        return uncertainty::execute(text, name, base, out, (options.force, options.shard));
+    }
     let swept = is_swept(text);
     if options.shard.is_some() && !swept {
         let message =

@@ -53,7 +53,8 @@
 //! Here: the input, the errors, and writing each plot atomically. `scale` decides which
 //! samples are drawn and where the axes run; `series`, `track`, `profile`, `polhode` and
 //! `energy` draw the plots; `plane_manoeuvre` and `space_manoeuvre` draw a manoeuvre's (in the plane, in space), `poles` a linear model's eigenvalues,
-//! `curves` one quantity against another (a spiral's r–δ curve, a rudder sweep's diameters).
+//! `curves` one quantity against another (a spiral's r–δ curve, a rudder sweep's diameters),
+//! `distributions` a Monte Carlo's figures and pass rates.
 
 use std::fs::{self, File};
 use std::io::{self, Write};
@@ -67,6 +68,7 @@ use thiserror::Error;
 use eom::output::text::printable;
 
 pub mod curves;
+pub mod distributions;
 mod energy;
 pub mod plane_manoeuvre;
 pub mod poles;

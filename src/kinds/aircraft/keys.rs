@@ -1078,4 +1078,13 @@ pub const KEYS: &[Key] = &[
         "\"geometry.xcg\" = [0.25, 0.30, 0.35]",
         Shown::Commented,
     ),
+    // [uncertainty]
+    Key::shared("uncertainty.cases", AIRCRAFT, "1000", Shown::Commented),
+    Key::shared("uncertainty.seed", AIRCRAFT, "1", Shown::Commented),
+    Key::shared(
+        "uncertainty.vary.*",
+        AIRCRAFT,
+        "\"geometry.xcg\" = { distribution = \"uniform\", low = 0.25, high = 0.35 }",
+        Shown::Commented,
+    ),
 ];

@@ -83,6 +83,9 @@ pub struct AircraftSceneFile {
     pub linear: Option<LinearTable>,
     /// Values to sweep over (read by [`crate::scene::sweep`]).
     pub sweep: Option<toml::Table>,
+    /// A Monte Carlo's laws (read by [`crate::scene::uncertainty`], which runs each case).
+    #[serde(default)]
+    pub uncertainty: Option<crate::scene::uncertainty::UncertaintyTable>,
 }
 
 /// `[aircraft]`.

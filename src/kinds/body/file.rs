@@ -30,6 +30,9 @@ pub struct SceneFile {
     /// Values to vary, one run per combination (see [`crate::scene::sweep`]).
     #[serde(default)]
     pub sweep: Option<toml::Table>,
+    /// A Monte Carlo's laws (read by [`crate::scene::uncertainty`], which runs each case).
+    #[serde(default)]
+    pub uncertainty: Option<crate::scene::uncertainty::UncertaintyTable>,
     /// Where `eom linear` linearises (see [`crate::linear`]).
     #[serde(default)]
     pub linear: Option<LinearTable>,

@@ -847,4 +847,13 @@ pub static KEYS: &[Key] = &[
         "\"body.mass\" = { from = 1.0, to = 3.0, count = 5 }",
         Shown::Commented,
     ),
+    // [uncertainty]
+    Key::shared("uncertainty.cases", ALL, "1000", Shown::Commented),
+    Key::shared("uncertainty.seed", ALL, "1", Shown::Commented),
+    Key::shared(
+        "uncertainty.vary.*",
+        ALL,
+        "\"body.mass\" = { distribution = \"normal\", sigma_relative = 0.05, truncate = 3.0 }",
+        Shown::Commented,
+    ),
 ];

@@ -649,6 +649,15 @@ pub const KEYS: &[Key] = &[
         "\"manoeuvre[0].rudder_deg\" = [5.0, 10.0, 15.0, 20.0, 25.0, 30.0, 35.0]",
         Shown::Commented,
     ),
+    // [uncertainty]
+    Key::shared("uncertainty.cases", SHIP, "1000", Shown::Commented),
+    Key::shared("uncertainty.seed", SHIP, "1", Shown::Commented),
+    Key::shared(
+        "uncertainty.vary.*",
+        SHIP,
+        "\"hydrodynamics.coefficients.*\" = { distribution = \"normal\", sigma_relative = 0.1, truncate = 3.0 }",
+        Shown::Commented,
+    ),
 ];
 
 /// What docs/scenes.md says after a ship's keys: the conventions of its table.

@@ -122,6 +122,9 @@ pub struct ShipSceneFile {
     pub output: OutputTable,
     /// Values to sweep over (read by [`crate::scene::sweep`], which runs each case).
     pub sweep: Option<toml::Table>,
+    /// A Monte Carlo's laws (read by [`crate::scene::uncertainty`], which runs each case).
+    #[serde(default)]
+    pub uncertainty: Option<crate::scene::uncertainty::UncertaintyTable>,
     /// The operating point of `eom linear`.
     pub linear: Option<crate::scene::envelope::LinearTable>,
 }

@@ -737,4 +737,13 @@ pub const KEYS: &[Key] = &[
         "\"hydrodynamics.coefficients.Nuudr\" = [-4.92, -6.15, -7.38]",
         Shown::Commented,
     ),
+    // [uncertainty]
+    Key::shared("uncertainty.cases", VEHICLE, "1000", Shown::Commented),
+    Key::shared("uncertainty.seed", VEHICLE, "1", Shown::Commented),
+    Key::shared(
+        "uncertainty.vary.*",
+        VEHICLE,
+        "\"hydrodynamics.coefficients.N*\" = { distribution = \"uniform\", relative = 0.2 }",
+        Shown::Commented,
+    ),
 ];

@@ -1,5 +1,5 @@
 //! The keys every scene takes, whatever its kind: its title, its method and the method's
-//! settings, and its sweep. Each is defined here once (its type, unit, default, whether it is
+//! settings, its sweep and its Monte Carlo. Each is defined here once (its type, unit, default, whether it is
 //! required and what it means); a family's list of keys names it where its templates write
 //! it, with the example its template sets ([`Key::shared`]), so that the reference page
 //! writes it once and every template writes it in its place.
@@ -107,6 +107,49 @@ pub(super) static KEYS: &[Key] = &[
                       in a fixed order (keys sorted, the last varying fastest); `eom run \
                       --shard K/N` runs the cases k ≡ K (mod N) and `eom sweep-merge` joins \
                       the shards' tables.",
+        ..Key::BLANK
+    },
+    Key {
+        path: "uncertainty.cases",
+        kind: Kind::Integer,
+        required: Required::When("in a Monte Carlo"),
+        description: "An [uncertainty] table makes the scene a Monte Carlo: this many cases, \
+                      each the scene with the values of [uncertainty.vary] drawn afresh, run \
+                      once in parallel (its rows dropped, not run again refined) into one line \
+                      of uncertainty.csv (the values, each run's figures, each verdict, every \
+                      digit); uncertainty.json gives each figure's mean, standard deviation and \
+                      5th, 50th and 95th percentiles and each verdict's pass rate with its 95 % \
+                      Wilson interval, distributions.svg and pass_rates.svg draw them. At most \
+                      10⁶ cases a run; `eom run --shard K/N` runs the cases k ≡ K (mod N) and \
+                      `eom sweep-merge` joins the shards into what one run writes, the same \
+                      numbers. A scene has a [sweep] or an [uncertainty], not both.",
+        ..Key::BLANK
+    },
+    Key {
+        path: "uncertainty.seed",
+        kind: Kind::Integer,
+        required: Required::When("in a Monte Carlo"),
+        description: "The seed of every case's stream: case k draws its values from ChaCha8 \
+                      seeded by it on stream k, the varied numbers in the order of their paths, \
+                      so that a case is the same in any shard, on any number of threads.",
+        ..Key::BLANK
+    },
+    Key {
+        path: "uncertainty.vary.*",
+        kind: Kind::Table("key paths and laws"),
+        required: Required::When("in a Monte Carlo"),
+        description: "The numbers to vary: a key path in quotes (an entry of an array of \
+                      tables by its index, `manoeuvre[0].rudder_deg`), whose last part may be a \
+                      pattern in which * stands for any run of characters \
+                      (`hydrodynamics.coefficients.*`: every number of that table), and its \
+                      law, each number varied on its own from the value the scene writes: \
+                      { distribution = \"normal\", sigma = σ } (in the key's unit) or \
+                      sigma_relative (a fraction of the scene's value, so a zero stays zero), \
+                      with truncate = t to draw again beyond ±tσ (t ≥ 0.1); or \
+                      { distribution = \"uniform\", low, high } or relative (± a fraction of \
+                      the scene's value). A path that names no number the scene writes, or a \
+                      number two paths name, is refused. A case whose values the scene refuses \
+                      (a mass below zero) fails alone and is counted apart.",
         ..Key::BLANK
     },
 ];

@@ -1,0 +1,146 @@
+//! `eom run` of a scene with an `[uncertainty]`: a Monte Carlo run whole and as shards merged
+//! gives the same table, statistics and plots, byte for byte; a case is the same whatever
+//! else runs; and a table that cannot be used is refused by its key before anything runs.
+
+use eom_test_support::cli::{eom, folder, scene_arg, succeeded};
+use std::path::{Path, PathBuf};
+
+/// The Mariner's turning circle Monte Carlo, shortened to `cases` cases, written into `dir`.
+fn turning_scene(dir: &Path, cases: usize) -> PathBuf {
+    let text = std::fs::read_to_string(scene_arg("mariner_turning_uncertainty.toml")).unwrap();
+    assert!(text.contains("cases = 100000"));
+    let text = text.replace("cases = 100000", &format!("cases = {cases}"));
+    let path = dir.join("turns.toml");
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+/// `eom run SCENE --out OUT [--shard S]`, which must succeed: what it printed.
+fn run(scene: &Path, out: &Path, shard: Option<&str>) -> String {
+    let mut args = vec![
+        "run",
+        scene.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ];
+    args.extend(shard.map(|s| ["--shard", s]).into_iter().flatten());
+    succeeded(&eom(&args))
+}
+
+fn read(path: PathBuf) -> String {
+    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+}
+
+#[test]
+fn a_monte_carlo_run_whole_or_in_shards_gives_the_same_numbers() {
+    let dir = folder("whole_and_shards");
+    let scene = turning_scene(&dir, 30);
+    let whole = dir.join("whole");
+    let report = run(&scene, &whole, None);
+    // Every figure's spread and each verdict's rate with its interval are reported.
+    assert!(report.contains("30 of 30 cases ran"), "{report}");
+    assert!(
+        report.contains("turning_circle_35/tactical_diameter_m"),
+        "{report}"
+    );
+    assert!(report.contains("95% Wilson interval"), "{report}");
+    let sharded = dir.join("sharded");
+    let shards = ["0/3", "1/3", "2/3"].map(|s| run(&scene, &sharded, Some(s)));
+    assert!(shards[1].contains("shard 1/3: 10 of them"), "{}", shards[1]);
+    assert!(!sharded.join("uncertainty.json").exists());
+    let merged = succeeded(&eom(&["sweep-merge", sharded.to_str().unwrap()]));
+    assert!(merged.contains("merged 3 shards, 30 cases"), "{merged}");
+    for file in [
+        "uncertainty.csv",
+        "uncertainty.json",
+        "distributions.svg",
+        "pass_rates.svg",
+    ] {
+        assert!(
+            read(whole.join(file)) == read(sharded.join(file)),
+            "{file} differs"
+        );
+    }
+    // The statistics the report printed are those of uncertainty.json.
+    let json: serde_json::Value =
+        serde_json::from_str(&read(whole.join("uncertainty.json"))).unwrap();
+    assert_eq!(json["cases"], 30);
+    let advance = &json["verdicts"][0];
+    assert_eq!(advance["name"], "advance");
+    let (passed, judged) = (
+        advance["passed"].as_u64().unwrap(),
+        advance["judged"].as_u64().unwrap(),
+    );
+    assert_eq!(judged, 30);
+    let line = report
+        .lines()
+        .find(|l| l.trim_start().starts_with("advance "))
+        .unwrap();
+    assert!(line.contains(&format!(" {passed} ")), "{line}");
+    // A figure read only at a steady turn, which the stop at 200° never reaches, is said to
+    // be missing rather than given as a number.
+    let steady = (json["figures"].as_array().unwrap().iter())
+        .find(|f| f["name"] == "turning_circle_35/steady_turning_radius_m")
+        .unwrap();
+    assert_eq!(
+        (steady["count"].as_u64(), steady["missing"].as_u64()),
+        (Some(0), Some(30))
+    );
+    assert!(steady["mean"].is_null());
+}
+
+/// Case k of a Monte Carlo of 12 cases is case k of one of 30: its stream is its own.
+#[test]
+fn a_case_is_the_same_in_a_smaller_monte_carlo() {
+    let dir = folder("smaller");
+    let (small, large) = (dir.join("small"), dir.join("large"));
+    std::fs::create_dir_all(&small).unwrap();
+    std::fs::create_dir_all(&large).unwrap();
+    run(&turning_scene(&small, 12), &small.join("out"), None);
+    run(&turning_scene(&large, 30), &large.join("out"), None);
+    let lines = |dir: &Path| -> Vec<String> {
+        read(dir.join("out/uncertainty.csv"))
+            .lines()
+            .map(String::from)
+            .collect()
+    };
+    let (small, large) = (lines(&small), lines(&large));
+    assert_eq!(small.len(), 13);
+    assert_eq!(small[..], large[..13]);
+}
+
+#[test]
+fn an_uncertainty_that_cannot_be_used_is_refused_by_its_key() {
+    let dir = folder("refused");
+    let text = read(scene_arg("mariner_turning_uncertainty.toml").into());
+    let cases = [
+        (
+            r#""hydrodynamics.coefficients.*" ="#,
+            r#""hydrodynamics.coefficient.*" ="#,
+            r#"uncertainty.vary."hydrodynamics.coefficient.*""#,
+        ),
+        ("truncate = 3.0", "truncate = 0.0", "truncate = 0"),
+        ("cases = 100000", "cases = 0", "uncertainty.cases"),
+        ("seed = 2026", "seed = -1", "uncertainty.seed"),
+        (
+            "[uncertainty]",
+            "[sweep]\n\"body.length\" = [160.0, 170.0]\n\n[uncertainty]",
+            "not both",
+        ),
+    ];
+    for (from, to, said) in cases {
+        assert!(text.contains(from), "{from}");
+        let path = dir.join("bad.toml");
+        std::fs::write(&path, text.replacen(from, to, 1)).unwrap();
+        let output = eom(&[
+            "run",
+            path.to_str().unwrap(),
+            "--out",
+            dir.join("out").to_str().unwrap(),
+        ]);
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert_eq!(output.status.code(), Some(3), "{to}: {stderr}");
+        assert!(stderr.contains(said), "{to}: {stderr}");
+        assert!(!dir.join("out").exists(), "{to}: nothing is written");
+    }
+}
