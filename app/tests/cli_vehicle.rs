@@ -41,7 +41,9 @@ fn remus_runs_its_rudder_steps_into_a_folder() {
     assert!((speed - number(&cruise["speed_closed_form_m_s"])).abs() < 1e-11);
     assert!((number(&cruise["roll_deg"]) - number(&cruise["roll_closed_form_deg"])).abs() < 1e-9);
     // The +4° turn's yaw rate where the rudder reverses, against the thesis's −9.0 °/s read
-    // off its figure (to 0.5 °/s), converged to 1e-6 at half the step.
+    // off its figure (to 0.5 °/s). The scene's RK4 at 0.05 s is what `eom tradeoff` recommends:
+    // every figure within its target of DOP853 at 1e-12, the largest share the roll's 4.4e-4°
+    // of 0.001°; half the step moves no figure by more than that target (4.2e-4 measured).
     let run = &summary["manoeuvre"]["rudder_4"];
     let turn = &run["steps"][1];
     assert_eq!(number(&turn["rudder_deg"]), 4.0);
@@ -49,7 +51,7 @@ fn remus_runs_its_rudder_steps_into_a_folder() {
         (number(&turn["yaw_rate_deg_s"]) + 9.0).abs() < 0.5,
         "{turn}"
     );
-    assert!(number(&run["refined_difference"]) < 1e-6, "{run}");
+    assert!(number(&run["refined_difference"]) < 1e-3, "{run}");
     assert_eq!(run["refinement"], "half the step");
     // Every folded coefficient of Prestero's table, printed against implied.
     let kirchhoff = summary["kirchhoff"].as_array().unwrap();
