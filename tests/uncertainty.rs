@@ -81,3 +81,31 @@ fn a_case_takes_its_values_into_the_model_proved_once() {
         }
     }
 }
+
+/// REMUS 100 with its yaw moment's terms varied by 20 %: a case's vehicle model takes its
+/// values into the equations derived for the scene and gives what a model derived for the
+/// case's table alone gives, bit for bit.
+#[test]
+fn a_vehicle_case_takes_its_values_into_the_model_derived_once() {
+    use eom::kinds::vehicle::{VehicleModel, VehicleScene};
+    let text = std::fs::read_to_string("scenes/remus100.toml").unwrap()
+        + "\n[uncertainty]\ncases = 4\nseed = 3\n[uncertainty.vary]\n\
+           \"hydrodynamics.coefficients.N*\" = { distribution = \"uniform\", relative = 0.2 }\n";
+    let uncertainty = Uncertainty::parse(&text, "remus100.toml").unwrap();
+    assert!(uncertainty.varied.len() > 3, "{:?}", uncertainty.varied);
+    for index in 0..4 {
+        let case =
+            AnyScene::from_table(uncertainty.case(index).table, "remus", Path::new("scenes"));
+        let case = *case.unwrap().downcast::<VehicleScene>().unwrap();
+        let derived = VehicleModel::derive(&case.table).unwrap();
+        let mut random = Random(index as u64 + 1);
+        let start = case.start().unwrap();
+        for _ in 0..100 {
+            let state: [f64; 15] = std::array::from_fn(|i| start[i] + 0.1 * (random.unit() - 0.5));
+            let input = [0.01, -0.02];
+            let (a, b): ([f64; 15], [f64; 15]) =
+                (case.model.rhs(&state, &input), derived.rhs(&state, &input));
+            assert_eq!(a.map(f64::to_bits), b.map(f64::to_bits), "case {index}");
+        }
+    }
+}

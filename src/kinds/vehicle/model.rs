@@ -20,7 +20,7 @@ use super::cross_flow::{CrossFlow, CrossFlowLoads};
 use super::propeller::PropellerLaw;
 use super::table::{CONTROLS, EPSILON, VehicleTable};
 use crate::defined::engine::{
-    FoldedComparison, InertiaAbout, Kinematics, Operations, Propeller, Units,
+    FoldedComparison, InertiaAbout, Kinematics, Operations, Program, Propeller, System, Units,
     VEHICLE_LOADS as LOADS, VEHICLE_PRIME_SCALES as PRIME_SCALES, VehicleSpec, folded_comparison,
     prove_with_jacobians, vehicle,
 };
@@ -28,6 +28,7 @@ use crate::defined::{Functions, Interpreter, Source, Variables, coefficient_valu
 use crate::models::Model;
 use simba::simd::SimdRealField;
 use std::collections::BTreeMap;
+use std::sync::{Arc, Mutex};
 
 /// The state: the generator's thirteen, then the rudder's and the stern planes' angles (rad).
 pub const STATE: [&str; 15] = [
@@ -234,80 +235,173 @@ fn inertia_values(spec: &VehicleSpec, table: &VehicleTable) -> Vec<(String, f64)
         .collect()
 }
 
+/// What a table's values give a derived program: the program's inputs and where each is read,
+/// the cross-flow drag, and the folded table against its added mass.
+struct Resolved {
+    inputs: Vec<Variable>,
+    computed: Vec<Variable>,
+    cross_flow: Option<CrossFlow>,
+    body: usize,
+    folded: Vec<FoldedComparison>,
+}
+
+impl Resolved {
+    /// The proved model: `program` resolved into `interpreter`, run by `functions`.
+    fn with(
+        self,
+        interpreter: Interpreter,
+        functions: Functions,
+        program: &Program,
+    ) -> (Proved, Vec<FoldedComparison>) {
+        let proved = Proved {
+            functions,
+            inputs: self.inputs,
+            computed: self.computed,
+            cross_flow: self.cross_flow,
+            body: self.body,
+            operations: program.operations(&program.rhs),
+            program: interpreter,
+        };
+        (proved, self.folded)
+    }
+}
+
+/// `program` (of `system`, derived from `spec`) resolved with `table`'s values: the mass matrix inverted (refusing
+/// one that is not positive definite), the coefficients computed (refusing one that is not
+/// finite), each input placed.
+fn resolve(
+    (spec, system, program): (&VehicleSpec, &System, &Program),
+    table: &VehicleTable,
+) -> Result<(Interpreter, Resolved), VehicleError> {
+    let mut values = table_values(spec, table)?;
+    let folded = folded_comparison(spec, &values)?;
+    values.extend(spec.inverse_mass_matrix(&values)?);
+    let coefficients = coefficient_values(system, program, &values);
+    if let Some(c) = program
+        .coefficients
+        .iter()
+        .zip(&coefficients)
+        .find(|(_, v)| !v.is_finite())
+    {
+        return Err(VehicleError::invalid(
+            "hydrodynamics",
+            format!("the coefficient `{}` is not finite", c.0.value),
+        ));
+    }
+    let body = system.state.len();
+    let state: Vec<&str> = (system.state.iter().map(|s| s.as_ref()))
+        .chain(["dr", "ds"])
+        .collect();
+    let law = table.propeller_law();
+    let inputs = (system.inputs.iter())
+        .map(|name| input_variable(name, &state, body, law))
+        .collect::<Result<Vec<_>, _>>()?;
+    let computed: Vec<Variable> = (inputs.iter().copied())
+        .filter(|input| matches!(input, Variable::Epsilon(_) | Variable::Load(_)))
+        .collect();
+    if computed.len() > COMPUTED {
+        return Err(VehicleError::invalid(
+            "hydrodynamics",
+            format!("the program reads {} computed inputs", computed.len()),
+        ));
+    }
+    // The state's variables where they lie (a fin's angle too, and |x| of an entry), the
+    // computed ones as `Proved::computed_values` lays them out.
+    let position = |name: &str| {
+        if let Some(i) = system.state.iter().position(|s| *s == name) {
+            return Some(Source::State(i));
+        }
+        let input = inputs[system.inputs.iter().position(|s| *s == name)?];
+        Some(match input {
+            Variable::Fin(i) => Source::State(i),
+            Variable::Absolute(i) => Source::Magnitude(i),
+            Variable::Epsilon(_) | Variable::Load(_) => {
+                Source::Computed(computed.iter().position(|c| *c == input)?)
+            }
+        })
+    };
+    let interpreter = Interpreter::new(program, &coefficients, position).map_err(|name| {
+        VehicleError::invalid("hydrodynamics", format!("the program reads `{name}`"))
+    })?;
+    let resolved = Resolved {
+        inputs,
+        computed,
+        cross_flow: table.cross_flow.clone(),
+        body,
+        folded,
+    };
+    Ok((interpreter, resolved))
+}
+
+/// A spec's six equations derived and proved, with the program compiled: what a table's values
+/// do not change, kept per process ([`DERIVED`]) so that a table of the same terms (a Monte
+/// Carlo's case, a sweep's) takes its values into it rather than being derived again.
+struct Derived {
+    spec: VehicleSpec,
+    system: System,
+    program: Program,
+    /// Compiled once (the compiled code reads the coefficients at each call).
+    functions: Functions,
+}
+
+/// The specs derived in this process, the last [`DERIVED_KEPT`] of them.
+static DERIVED: Mutex<Vec<Arc<Derived>>> = Mutex::new(Vec::new());
+
+/// How many derived specs [`DERIVED`] keeps.
+const DERIVED_KEPT: usize = 16;
+
+/// The derivation of `spec` made earlier in this process, if it is kept.
+fn derived_before(spec: &VehicleSpec) -> Option<Arc<Derived>> {
+    let derived = DERIVED.lock().ok()?;
+    derived.iter().find(|d| d.spec == *spec).cloned()
+}
+
 impl Proved {
-    /// Derives and proves the six equations with the table's terms in `kinematics`, inverts
-    /// the mass matrix (refusing one that is not positive definite), then resolves the
-    /// program; with the folded table against its added mass.
+    /// The six equations with the table's terms in `kinematics`, derived and proved once per
+    /// process for each spec (terms, units, inertia, symmetry, controls, propeller), the mass
+    /// matrix inverted (refusing one that is not positive definite) and the program resolved
+    /// with the table's values; with the folded table against its added mass.
     pub(crate) fn new(
         table: &VehicleTable,
         kinematics: Kinematics,
     ) -> Result<(Self, Vec<FoldedComparison>), VehicleError> {
         let spec = spec(table, kinematics);
+        if let Some(derived) = derived_before(&spec) {
+            let derivation = (&derived.spec, &derived.system, &derived.program);
+            let (interpreter, resolved) = resolve(derivation, table)?;
+            return Ok(resolved.with(interpreter, derived.functions.clone(), &derived.program));
+        }
+        let (proved, derived) = Self::derive(table, kinematics)?;
+        if let Ok(mut kept) = DERIVED.lock() {
+            if kept.len() == DERIVED_KEPT {
+                kept.remove(0);
+            }
+            kept.push(Arc::new(derived));
+        }
+        Ok(proved)
+    }
+
+    /// The six equations with the table's terms derived, proved and compiled anew, whatever
+    /// was derived before (see [`Proved::new`]), with what the derivation keeps for others.
+    fn derive(
+        table: &VehicleTable,
+        kinematics: Kinematics,
+    ) -> Result<((Self, Vec<FoldedComparison>), Derived), VehicleError> {
+        let spec = spec(table, kinematics);
         let system = vehicle("vehicle", &spec)?;
         let program = prove_with_jacobians(&system)?;
-        let mut values = table_values(&spec, table)?;
-        let folded = folded_comparison(&spec, &values)?;
-        values.extend(spec.inverse_mass_matrix(&values)?);
-        let coefficients = coefficient_values(&system, &program, &values);
-        if let Some(c) = program
-            .coefficients
-            .iter()
-            .zip(&coefficients)
-            .find(|(_, v)| !v.is_finite())
-        {
-            return Err(VehicleError::invalid(
-                "hydrodynamics",
-                format!("the coefficient `{}` is not finite", c.0.value),
-            ));
-        }
-        let body = system.state.len();
-        let state: Vec<&str> = (system.state.iter().map(|s| s.as_ref()))
-            .chain(["dr", "ds"])
-            .collect();
-        let law = table.propeller_law();
-        let inputs = (system.inputs.iter())
-            .map(|name| input_variable(name, &state, body, law))
-            .collect::<Result<Vec<_>, _>>()?;
-        let computed: Vec<Variable> = (inputs.iter().copied())
-            .filter(|input| matches!(input, Variable::Epsilon(_) | Variable::Load(_)))
-            .collect();
-        if computed.len() > COMPUTED {
-            return Err(VehicleError::invalid(
-                "hydrodynamics",
-                format!("the program reads {} computed inputs", computed.len()),
-            ));
-        }
-        // The state's variables where they lie (a fin's angle too, and |x| of an entry), the
-        // computed ones as `Proved::computed_values` lays them out.
-        let position = |name: &str| {
-            if let Some(i) = system.state.iter().position(|s| *s == name) {
-                return Some(Source::State(i));
-            }
-            let input = inputs[system.inputs.iter().position(|s| *s == name)?];
-            Some(match input {
-                Variable::Fin(i) => Source::State(i),
-                Variable::Absolute(i) => Source::Magnitude(i),
-                Variable::Epsilon(_) | Variable::Load(_) => {
-                    Source::Computed(computed.iter().position(|c| *c == input)?)
-                }
-            })
-        };
-        let interpreter = Interpreter::new(&program, &coefficients, position).map_err(|name| {
-            VehicleError::invalid("hydrodynamics", format!("the program reads `{name}`"))
-        })?;
+        let (interpreter, resolved) = resolve((&spec, &system, &program), table)?;
         let functions = Functions::of(&program)
             .map_err(|what| VehicleError::invalid("hydrodynamics", format!("no {what}")))?
             .compile(&interpreter);
-        let proved = Proved {
+        let proved = resolved.with(interpreter, functions.clone(), &program);
+        let derived = Derived {
+            spec,
+            system,
+            program,
             functions,
-            inputs,
-            computed,
-            cross_flow: table.cross_flow.clone(),
-            body,
-            operations: program.operations(&program.rhs),
-            program: interpreter,
         };
-        Ok((proved, folded))
+        Ok((proved, derived))
     }
 
     /// The number of the generator's state entries (before the fins').
@@ -429,10 +523,23 @@ impl Proved {
 }
 
 impl VehicleModel {
-    /// Derives and proves the six equations with the table's terms, inverts the mass matrix
-    /// (refusing one that is not positive definite), then resolves the program.
+    /// The six equations with the table's terms, derived and proved once per process for each
+    /// set of terms (a Monte Carlo's cases take their values into it), the mass matrix inverted
+    /// (refusing one that is not positive definite), the program resolved.
     pub fn new(table: &VehicleTable) -> Result<Self, VehicleError> {
         let (proved, folded) = Proved::new(table, Kinematics::Quaternion)?;
+        Ok(VehicleModel {
+            proved,
+            terms: table.coefficients.len(),
+            folded,
+        })
+    }
+
+    /// The same model derived, proved and compiled anew, whatever this process derived before
+    /// ([`VehicleModel::new`] derives each set of terms once and takes another table's values
+    /// into it): the reference that reuse is checked against.
+    pub fn derive(table: &VehicleTable) -> Result<Self, VehicleError> {
+        let ((proved, folded), _) = Proved::derive(table, Kinematics::Quaternion)?;
         Ok(VehicleModel {
             proved,
             terms: table.coefficients.len(),
