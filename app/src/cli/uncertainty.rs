@@ -174,9 +174,15 @@ pub fn write_report(dir: &Path, keys: &[String], outcomes: &[CaseOutcome]) -> Re
     // Captioned from the table alone, so that a merge of shards draws what one run draws.
     let caption = format!("{} cases: each figure's distribution", statistics.cases);
     write_distributions(dir, &caption, &figures)?;
-    let rates: Vec<PassRate> = (statistics.verdicts.iter())
-        .map(|v| PassRate {
-            name: &v.name,
+    let names: Vec<String> = (statistics.verdicts.iter())
+        .map(|v| match v.judged {
+            0 => format!("{} (not judged)", v.name),
+            _ => v.name.clone(),
+        })
+        .collect();
+    let rates: Vec<PassRate> = (statistics.verdicts.iter().zip(&names))
+        .map(|(v, name)| PassRate {
+            name,
             rate: (v.rate, v.wilson_95.0, v.wilson_95.1),
         })
         .collect();
