@@ -28,7 +28,9 @@ fn esso_osaka_rk4() -> String {
     let text = std::fs::read_to_string("scenes/esso_osaka.toml").unwrap();
     let (before, after) = text.split_once("[integrator]").unwrap();
     let (_, after) = after.split_once("[output]").unwrap();
-    format!("{before}[integrator]\nmethod = \"rk4\"\nstep = 0.2\nmax_steps = 2_000_000\n\n[output]{after}")
+    format!(
+        "{before}[integrator]\nmethod = \"rk4\"\nstep = 0.2\nmax_steps = 2_000_000\n\n[output]{after}"
+    )
 }
 
 /// A scene's text without its `[linear]` table (the last in the file): linearised at the
