@@ -33,7 +33,7 @@
 //! leaves the plans uncompiled, and the interpreter evaluates them.
 
 use super::{Functions, Interpreter, Op, Plan, Variables};
-use cranelift_codegen::ir::condcodes::{FloatCC, IntCC};
+use cranelift_codegen::ir::condcodes::IntCC;
 use cranelift_codegen::ir::{AbiParam, Block, BlockArg, InstBuilder, MemFlags, Value, types};
 use cranelift_codegen::isa::OwnedTargetIsa;
 use cranelift_codegen::settings::{self, Configurable};
@@ -383,8 +383,9 @@ impl<'a, 'b, 'o> Body<'a, 'b, 'o> {
             let mut value = self.operand(outputs[0])?;
             if let Some(&second) = outputs.get(1) {
                 let second = self.operand(second)?;
-                let b = self.builder.ins();
-                let lanes = b.scalar_to_vector(types::F64X2, value);
+                // The first in both lanes, the second over the upper: two instructions on
+                // x86-64 (pshufd, movlhps), where scalar_to_vector's zeroed upper lane takes three.
+                let lanes = self.builder.ins().splat(types::F64X2, value);
                 value = self.builder.ins().insertlane(lanes, second, 1);
             }
             let offset = offset(2 * pair)?;
@@ -453,48 +454,58 @@ impl<'a, 'b, 'o> Body<'a, 'b, 'o> {
 }
 
 /// The kernel of `eom_kernel::sin_cos_f64` for one angle, operation for operation as
-/// `kernel.rs` writes it (so its bits): to `outside` beyond the reduction's limit (and for NaN
-/// and the infinities, whose bits order above it), where the kernel calls the platform; else
-/// an angle within ±π/4 as it is and any other reduced (`in_range`), both polynomials, the
-/// quadrant's swap and signs (`place`); and a tiny angle's pair `(x, 1)`, as the kernel's
-/// cold path gives it (`one_at_a_time`), so that a heading held at exactly zero stays in the
-/// compiled code.
+/// `kernel.rs` writes it (so its bits). One unsigned comparison of |x|'s bits, as the kernel's
+/// own range check, sends both ends to a cold block: a tiny angle's pair `(x, 1)`, as the
+/// kernel's cold path gives it (`one_at_a_time`), so that a heading held at exactly zero stays
+/// in the compiled code; an angle beyond the reduction's limit (NaN and the infinities, whose
+/// bits order above it) to `outside`, where the kernel calls the platform. In between, an
+/// angle within ±π/4 (|x|'s bits at most π/4's) takes both polynomials as it is, any other is
+/// reduced, evaluated and put in its quadrant (`in_range`, `place`): two copies of the
+/// polynomials, so that the one path does not pay for the other's quadrant. The code after the
+/// call continues in the block the three paths join.
 fn kernel(b: &mut FunctionBuilder<'_>, x: Value, outside: Block) -> (Value, Value) {
-    let (warm, reduce, evaluate) = (b.create_block(), b.create_block(), b.create_block());
+    let [cold, warm, near, reduce, join] = std::array::from_fn(|_| b.create_block());
     let bits = b.ins().bitcast(types::I64, MemFlags::new(), x);
     let magnitude = b.ins().band_imm(bits, !recipe::SIGN_BIT as i64);
-    let limit = recipe::LIMIT.to_bits() as i64;
-    let beyond = (b.ins()).icmp_imm(IntCC::UnsignedGreaterThan, magnitude, limit);
-    b.ins().brif(beyond, outside, &[], warm, &[]);
+    let (tiny, limit) = (recipe::TINY.to_bits(), recipe::LIMIT.to_bits());
+    let shifted = b.ins().iadd_imm(magnitude, tiny.wrapping_neg() as i64);
+    let span = (limit - tiny) as i64;
+    let unusual = (b.ins()).icmp_imm(IntCC::UnsignedGreaterThan, shifted, span);
+    b.ins().brif(unusual, cold, &[], warm, &[]);
+
+    b.switch_to_block(cold);
+    b.set_cold_block(cold);
+    b.seal_block(cold);
+    let below = (b.ins()).icmp_imm(IntCC::UnsignedLessThan, magnitude, tiny as i64);
+    let one = b.ins().f64const(1.0);
+    let as_tiny = [BlockArg::Value(x), BlockArg::Value(one)];
+    b.ins().brif(below, join, &as_tiny, outside, &[]);
 
     b.switch_to_block(warm);
     b.seal_block(warm);
-    let absolute = b.ins().fabs(x);
-    let quarter = b.ins().f64const(std::f64::consts::FRAC_PI_4);
-    let small = b.ins().fcmp(FloatCC::LessThanOrEqual, absolute, quarter);
-    let zero = b.ins().iconst(types::I64, 0);
-    let as_it_is = [BlockArg::Value(x), BlockArg::Value(zero)];
-    b.ins().brif(small, evaluate, &as_it_is, reduce, &[]);
+    let quarter = std::f64::consts::FRAC_PI_4.to_bits() as i64;
+    let small = (b.ins()).icmp_imm(IntCC::UnsignedLessThanOrEqual, magnitude, quarter);
+    b.ins().brif(small, near, &[], reduce, &[]);
+
+    b.switch_to_block(near);
+    b.seal_block(near);
+    let (sin, cos) = (sin_reduced(b, x), cos_reduced(b, x));
+    b.ins()
+        .jump(join, &[BlockArg::Value(sin), BlockArg::Value(cos)]);
 
     b.switch_to_block(reduce);
     b.seal_block(reduce);
     let (r, quadrant) = reduced(b, x);
-    b.ins()
-        .jump(evaluate, &[BlockArg::Value(r), BlockArg::Value(quadrant)]);
-
-    let r = b.append_block_param(evaluate, types::F64);
-    let quadrant = b.append_block_param(evaluate, types::I64);
-    b.switch_to_block(evaluate);
-    b.seal_block(evaluate);
     let (sin, cos) = (sin_reduced(b, r), cos_reduced(b, r));
     let (sin, cos) = placed(b, quadrant, sin, cos);
-    let tiny = recipe::TINY.to_bits() as i64;
-    let below = b.ins().icmp_imm(IntCC::UnsignedLessThan, magnitude, tiny);
-    let one = b.ins().f64const(1.0);
-    (
-        b.ins().select(below, x, sin),
-        b.ins().select(below, one, cos),
-    )
+    b.ins()
+        .jump(join, &[BlockArg::Value(sin), BlockArg::Value(cos)]);
+
+    let sin = b.append_block_param(join, types::F64);
+    let cos = b.append_block_param(join, types::F64);
+    b.switch_to_block(join);
+    b.seal_block(join);
+    (sin, cos)
 }
 
 /// `r = x − k·π/2` in three steps, `k = round(2x/π)`, and the bits of the rounding sum, whose

@@ -223,18 +223,26 @@ impl ShipModel {
     #[inline]
     fn computed<T: SimdRealField + Copy>(&self, state: &[T; 7], input: &[T; 2]) -> [T; 6] {
         let mut computed = [T::zero(); 6];
+        self.compute(state, input, &mut computed);
+        computed
+    }
+
+    /// [`ShipModel::computed`] into `computed`, which holds zeros: a call of `rhs` sets its
+    /// values where the compiled code reads them, not in a temporary moved there.
+    #[inline]
+    fn compute<T: SimdRealField + Copy>(
+        &self,
+        state: &[T; 7],
+        input: &[T; 2],
+        computed: &mut [T; 6],
+    ) {
         computed[0] = input[0];
         if self.reads_speed {
             computed[1] = (state[0] * state[0] + state[1] * state[1]).simd_sqrt();
         }
         if let Some(propulsion) = &self.propulsion {
-            let inflow = propulsion.inflow(state[0], input[1]);
-            computed[2] = input[1];
-            computed[3] = input[1].simd_abs();
-            computed[4] = inflow.induced;
-            computed[5] = inflow.speed;
+            propelled(propulsion, state, input, computed);
         }
-        computed
     }
 
     /// The outputs of `plan` at `state` under `input` (δ̇, n).
@@ -349,6 +357,22 @@ impl ShipModel {
     }
 }
 
+/// What `propulsion` sets beside the state (n, |n|, u_A, c, after δ̇ and U): out of line, so
+/// that the call of a ship without one stays small enough to be inlined into its caller.
+#[inline(never)]
+fn propelled<T: SimdRealField + Copy>(
+    propulsion: &Propulsion,
+    state: &[T; 7],
+    input: &[T; 2],
+    computed: &mut [T; 6],
+) {
+    let inflow = propulsion.inflow(state[0], input[1]);
+    computed[2] = input[1];
+    computed[3] = input[1].simd_abs();
+    computed[4] = inflow.induced;
+    computed[5] = inflow.speed;
+}
+
 /// The hoisted coefficients of the proved program with `table`'s values.
 fn coefficients(proved: &Proved, table: &ShipTable) -> Vec<f64> {
     proved
@@ -419,8 +443,10 @@ impl<T: SimdRealField + Copy> Model<T, 7, 2> for ShipModel {
 
     /// The rates of the state with the rudder moving at `input[0]` and the propeller turning
     /// at `input[1]`: the proved program.
+    #[inline]
     fn rhs(&self, state: &[T; 7], input: &[T; 2]) -> [T; 7] {
-        let computed = self.computed(state, input);
+        let mut computed = [T::zero(); 6];
+        self.compute(state, input, &mut computed);
         let variables = Variables {
             state,
             computed: &computed,

@@ -440,13 +440,20 @@ impl Proved {
     /// where it lies and writes `rates` in place, and a call allocates nothing.
     #[inline]
     fn rates_into<T: SimdRealField + Copy>(&self, state: &[T], rates: &mut [T]) {
-        let rhs = &self.functions.rhs;
         if self.computed.is_empty() {
-            (self.program).evaluate_into(rhs, variables(state, &[]), rates);
+            (self.program).evaluate_into(&self.functions.rhs, variables(state, &[]), rates);
         } else {
-            let computed = self.computed_values(state);
-            (self.program).evaluate_into(rhs, variables(state, &computed), rates);
+            self.rates_with_computed(state, rates);
         }
+    }
+
+    /// [`Proved::rates_into`] for a table whose program reads values computed beside the
+    /// state (a propeller law, a cross-flow drag): out of line, so that the call of one that
+    /// reads none (REMUS) stays small enough to be inlined into its caller.
+    #[inline(never)]
+    fn rates_with_computed<T: SimdRealField + Copy>(&self, state: &[T], rates: &mut [T]) {
+        let computed = self.computed_values(state);
+        (self.program).evaluate_into(&self.functions.rhs, variables(state, &computed), rates);
     }
 
     /// The rates of the generator's state entries.
@@ -648,6 +655,7 @@ impl<T: SimdRealField + Copy> Model<T, 15, 2> for VehicleModel {
 
     /// The rates of the state with the fins moving at `input`: the proved program, and the
     /// fins' rates.
+    #[inline]
     fn rhs(&self, state: &[T; 15], input: &[T; 2]) -> [T; 15] {
         let mut rates = [T::zero(); 15];
         self.proved.rates_into(state, &mut rates[..BODY]);
