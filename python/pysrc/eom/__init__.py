@@ -256,7 +256,8 @@ class Scene:
         summary.json, bit for bit (the summary's ``wall_seconds`` aside).
 
         A scene with a ``[sweep]`` runs as written, its sweep aside: its cases are
-        :meth:`cases`, each a scene to run.
+        :meth:`cases`, each a scene to run. A scene with an ``[uncertainty]`` runs as written,
+        its Monte Carlo aside (``eom run`` runs its cases; :meth:`with_values` sets a case's).
 
         The GIL is released while it runs; Ctrl-C stops it at its next row and raises
         :class:`KeyboardInterrupt`. A run that fails where it fails (gimbal lock) raises
