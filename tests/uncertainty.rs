@@ -109,3 +109,72 @@ fn a_vehicle_case_takes_its_values_into_the_model_derived_once() {
         }
     }
 }
+
+/// Counts the rows it is given, keeping them as `eom run` keeps a scene's.
+#[derive(Default)]
+struct Counted(usize);
+
+impl eom::run::record::Recorder for Counted {
+    fn begin(
+        &mut self,
+        _: eom::run::record::RunStart,
+    ) -> Result<(), eom::run::record::RecordError> {
+        Ok(())
+    }
+    fn row(&mut self, _: &eom::run::Row) -> bool {
+        self.0 += 1;
+        true
+    }
+    fn end(&mut self) -> Result<(), eom::run::record::RecordError> {
+        Ok(())
+    }
+    fn drawn(
+        &mut self,
+        _: eom::output::drawing::RunDrawings,
+    ) -> Result<(), eom::run::record::RecordError> {
+        Ok(())
+    }
+    fn stop_asked(&self) -> bool {
+        false
+    }
+}
+
+/// A case builds no rows and is not run again refined, and reads the same figures, bit for
+/// bit, as its scene run whole with its rows kept: the rows and the refined run are not what
+/// the figures are read from.
+#[test]
+fn a_case_reads_the_figures_its_scene_gives_when_run_whole() {
+    use eom::run::uncertainty::run_case;
+    let remus = std::fs::read_to_string("scenes/remus100.toml").unwrap()
+        + "\n[uncertainty]\ncases = 2\nseed = 3\n[uncertainty.vary]\n\
+           \"hydrodynamics.coefficients.N*\" = { distribution = \"uniform\", relative = 0.2 }\n";
+    let mariner = std::fs::read_to_string(SCENE).unwrap();
+    for (text, name) in [(mariner, SCENE), (remus, "remus100.toml")] {
+        let uncertainty = Uncertainty::parse(&text, name).unwrap();
+        for index in [0, 1] {
+            let case = run_case(&uncertainty, index, (name, Path::new("scenes")), &|| false);
+            assert_eq!(case.error, None, "{name} case {index}");
+            let table = uncertainty.case(index).table;
+            let scene = AnyScene::from_table(table, name, Path::new("scenes")).unwrap();
+            let mut rows = Counted::default();
+            let whole = scene.as_kind().run(name, &mut rows).unwrap().summary();
+            assert!(rows.0 > 100, "{name}: {} rows", rows.0);
+            let figures: Vec<(String, Option<u64>)> = (whole.runs.iter())
+                .flat_map(|run| {
+                    (run.figures.iter()).map(move |figure| match run.run.is_empty() {
+                        true => (figure.key.clone(), figure.value.map(f64::to_bits)),
+                        false => (
+                            format!("{}/{}", run.run, figure.key),
+                            figure.value.map(f64::to_bits),
+                        ),
+                    })
+                })
+                .collect();
+            let read: Vec<(String, Option<u64>)> = (case.figures.iter())
+                .map(|(key, value)| (key.clone(), value.map(f64::to_bits)))
+                .collect();
+            assert!(read.len() > 10, "{name}: {read:?}");
+            assert_eq!(read, figures, "{name} case {index}");
+        }
+    }
+}

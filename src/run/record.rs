@@ -57,6 +57,12 @@ pub trait Recorder {
     fn refines(&self) -> bool {
         true
     }
+
+    /// Whether it keeps the rows it is given: a run whose recorder does not (a Monte Carlo's
+    /// case, [`Discard`]) need not build them, and reads its figures alone.
+    fn keeps_rows(&self) -> bool {
+        true
+    }
 }
 
 /// A recorder that keeps nothing and never asks to stop: for a library user who wants a
@@ -82,6 +88,10 @@ impl Recorder for Discard {
     }
 
     fn stop_asked(&self) -> bool {
+        false
+    }
+
+    fn keeps_rows(&self) -> bool {
         false
     }
 }

@@ -89,6 +89,10 @@ impl Recorder for CaseRecorder<'_> {
     fn refines(&self) -> bool {
         false
     }
+
+    fn keeps_rows(&self) -> bool {
+        false
+    }
 }
 
 /// Runs case `index` of `uncertainty` (`name` is the scene's file as errors and summaries

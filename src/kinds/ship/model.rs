@@ -134,12 +134,18 @@ impl ShipModel {
             return model.with_table(table);
         }
         let model = Self::derive(table)?;
-        if let Ok(mut models) = PROVED_MODELS.lock() {
-            if models.len() == PROVED_KEPT {
-                models.remove(0);
-            }
-            models.push(model.clone());
+        let Ok(mut models) = PROVED_MODELS.lock() else {
+            return Ok(model);
+        };
+        // Another thread may have derived the same terms meanwhile (the first cases of a Monte
+        // Carlo on every core): the one kept first is the one every later table shares.
+        if let Some(kept) = models.iter().find(|m| m.proved.spec == spec) {
+            return kept.with_table(table);
         }
+        if models.len() == PROVED_KEPT {
+            models.remove(0);
+        }
+        models.push(model.clone());
         Ok(model)
     }
 

@@ -365,7 +365,11 @@ fn run_manoeuvre(
     recorder.begin(start).map_err(not_recorded)?;
     let settings = (&scene.stepper, scene.every);
     let start = (scene.start(), scene.stop.as_ref());
+    let keeps_rows = recorder.keeps_rows();
     let done = run_until(model, &scene.rudder, manoeuvre, start, settings, |sample| {
+        if !keeps_rows {
+            return !recorder.stop_asked();
+        }
         let row = Row {
             t: sample.t,
             state: &sample.row(),

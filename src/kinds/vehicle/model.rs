@@ -372,7 +372,10 @@ impl Proved {
             return Ok(resolved.with(interpreter, derived.functions.clone(), &derived.program));
         }
         let (proved, derived) = Self::derive(table, kinematics)?;
-        if let Ok(mut kept) = DERIVED.lock() {
+        // Another thread may have derived the same spec meanwhile: it is kept once.
+        if let Ok(mut kept) = DERIVED.lock()
+            && !kept.iter().any(|d| d.spec == spec)
+        {
             if kept.len() == DERIVED_KEPT {
                 kept.remove(0);
             }

@@ -145,6 +145,7 @@ fn run_manoeuvre(
         .map_err(|e| not_recorded(manoeuvre, e))?;
     let model = &scene.model;
     let start = (manoeuvre.trim.state, scene.stop.as_ref());
+    let keeps_rows = recorder.keeps_rows();
     let done = run_until(
         model,
         &scene.fins,
@@ -152,6 +153,9 @@ fn run_manoeuvre(
         start,
         (&scene.stepper, scene.every),
         |sample| {
+            if !keeps_rows {
+                return !recorder.stop_asked();
+            }
             let row = Row {
                 t: sample.t,
                 state: &sample.row(),
@@ -164,27 +168,26 @@ fn run_manoeuvre(
     // What the recorder could not keep comes first: the run stopped because of it.
     recorder.end().map_err(|e| not_recorded(manoeuvre, e))?;
     let done = done?;
-    let refined = run_until(
-        model,
-        &scene.fins,
-        manoeuvre,
-        start,
-        (&scene.stepper.refined(scene.every), scene.every),
-        |_| !recorder.stop_asked(),
-    )?;
     let steps = StepFigures::of(&done);
     let autopilot = SetpointFigures::of(&done);
     let trial = trial_figures(&done, manoeuvre);
-    let trial_difference = match (&trial, trial_figures(&refined, manoeuvre)) {
-        (Some(a), Some(b)) => largest_trial_difference(a, &b),
-        _ => 0.0,
+    // A Monte Carlo's case is not run again refined: what it reads is the cases' spread.
+    let refined_difference = match recorder.refines() {
+        true => {
+            let settings = (&scene.stepper.refined(scene.every), scene.every);
+            let refined = run_until(model, &scene.fins, manoeuvre, start, settings, |_| {
+                !recorder.stop_asked()
+            })?;
+            Some(moved_when_refined(
+                &refined,
+                manoeuvre,
+                &steps,
+                &autopilot,
+                trial.as_ref(),
+            ))
+        }
+        false => None,
     };
-    let refined_difference = largest_difference(&steps, &StepFigures::of(&refined))
-        .max(largest_setpoint_difference(
-            &autopilot,
-            &SetpointFigures::of(&refined),
-        ))
-        .max(trial_difference);
     let marks = match &trial {
         Some(TrialFigures::TurningCircle(figures)) => figures.marks.clone(),
         _ => Vec::new(),
@@ -215,6 +218,27 @@ fn run_manoeuvre(
         marks,
         rhs_evals: done.rhs_evals,
     })
+}
+
+/// The largest difference between the run's figures (`steps`, `autopilot`, `trial`) and
+/// those of the same manoeuvre run `refined`.
+fn moved_when_refined(
+    refined: &VehicleRun,
+    manoeuvre: &VehicleManoeuvre,
+    steps: &[StepFigures],
+    autopilot: &[SetpointFigures],
+    trial: Option<&TrialFigures>,
+) -> f64 {
+    let trial_difference = match (trial, trial_figures(refined, manoeuvre)) {
+        (Some(a), Some(b)) => largest_trial_difference(a, &b),
+        _ => 0.0,
+    };
+    largest_difference(steps, &StepFigures::of(refined))
+        .max(largest_setpoint_difference(
+            autopilot,
+            &SetpointFigures::of(refined),
+        ))
+        .max(trial_difference)
 }
 
 /// Where the stop condition ended `done`, and what it had not read by then: the figures of
@@ -353,7 +377,7 @@ fn run_figures(name: &str, summary: &ManoeuvreSummary) -> RunFigures {
         run: name.to_owned(),
         figures,
         refinement: Some(summary.refinement),
-        largest_difference: Some(summary.refined_difference),
+        largest_difference: summary.refined_difference,
         notes: summary.notes.clone(),
     }
 }
@@ -406,11 +430,10 @@ fn report(
         )?;
     }
     for (manoeuvre, outcome) in scene.manoeuvres.iter().zip(outcomes) {
-        writeln!(
-            out,
-            "  {}: (refined: {:.1e})",
-            manoeuvre.name, outcome.summary.refined_difference
-        )?;
+        match outcome.summary.refined_difference {
+            Some(moved) => writeln!(out, "  {}: (refined: {moved:.1e})", manoeuvre.name)?,
+            None => writeln!(out, "  {}: (not refined)", manoeuvre.name)?,
+        }
         writeln!(
             out,
             "    {:>6} {:>6} {:>7} {:>7} {:>10} {:>8} {:>8} {:>8} {:>8}",

@@ -326,8 +326,9 @@ pub struct ManoeuvreSummary {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub trial: Option<TrialFigures>,
     /// The largest |figure − figure of the refined run| over every step's figures (degrees,
-    /// degrees per second, m/s and m alike).
-    pub refined_difference: f64,
+    /// degrees per second, m/s and m alike); `null` where the run was not refined (a Monte
+    /// Carlo's case).
+    pub refined_difference: Option<f64>,
     /// How the refined run was refined: `half the step` or `tolerances / 100`.
     pub refinement: &'static str,
     /// Steps taken.
