@@ -75,7 +75,7 @@ pub mod vehicle;
 
 use crate::linear::Linearisation;
 use crate::models::DynModel;
-use crate::output::summary::Summary;
+use crate::output::summary::{RunFigures, Summary, Verdict};
 use crate::run::record::Recorder;
 use crate::run::tradeoff::Tradeoff;
 use crate::scene::SceneError;
@@ -143,6 +143,10 @@ pub trait Finished: std::fmt::Debug {
     /// figures and the verdicts, and the kind's own section as a JSON value (its objects'
     /// keys sorted).
     fn summary(&self) -> Summary;
+
+    /// Each run's figures and the verdicts, as [`Self::summary`] gives them, without building
+    /// its JSON: what a Monte Carlo's case reads.
+    fn figures(&self) -> (&[RunFigures], &[Verdict]);
 
     /// `summary.json` as written: [`Self::summary`], pretty-printed, with a sweep case's
     /// number and values under `"case"`. A kind whose section has an order of its own (a

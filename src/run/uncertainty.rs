@@ -129,8 +129,8 @@ pub fn run_case(
             return outcome;
         }
     };
-    let summary = finished.summary();
-    for run in &summary.runs {
+    let (runs, verdicts) = finished.figures();
+    for run in runs {
         for figure in &run.figures {
             let name = match run.run.is_empty() {
                 true => figure.key.clone(),
@@ -139,7 +139,7 @@ pub fn run_case(
             outcome.figures.push((name, figure.value));
         }
     }
-    outcome.verdicts = (summary.verdicts.iter())
+    outcome.verdicts = (verdicts.iter())
         .map(|verdict| (verdict.name.clone(), verdict.pass))
         .collect();
     outcome.error = match (finished.stopped(), finished.failure()) {

@@ -5,7 +5,7 @@ use super::BodyScene;
 use super::keys::{self, ALL};
 use super::run::{BodyRun, run_body, trajectory_numbers};
 use crate::kinds::{Columns, Finished, Kind, KindError, Linearised, Reference, Registered, Source};
-use crate::output::summary::Summary;
+use crate::output::summary::{RunFigures, Summary, Verdict};
 use crate::run::record::Recorder;
 use crate::run::tradeoff::Tradeoff;
 use crate::scene::SceneError;
@@ -102,6 +102,10 @@ impl Kind for BodyScene {
 impl Finished for BodyRun<'_> {
     fn summary(&self) -> Summary {
         self.summary.clone().into_json()
+    }
+
+    fn figures(&self) -> (&[RunFigures], &[Verdict]) {
+        (&self.summary.runs, &self.summary.verdicts)
     }
 
     /// In the order of its section's fields (the section as a JSON value would sort them).

@@ -10,7 +10,7 @@ use super::run::{Finished, run_scene};
 use super::summary::LinearSummary;
 use super::{ShipError, ShipModel, ShipScene};
 use crate::kinds::{self, Columns, KindError, Linearised, Reference, Registered, Source};
-use crate::output::summary::Summary;
+use crate::output::summary::{RunFigures, Summary, Verdict};
 use crate::run::record::Recorder;
 use crate::scene::SceneError;
 use crate::scene::reference::SceneFamily;
@@ -128,6 +128,10 @@ impl kinds::Kind for ShipScene {
 impl kinds::Finished for Finished<'_> {
     fn summary(&self) -> Summary {
         self.summary.clone().into_json()
+    }
+
+    fn figures(&self) -> (&[RunFigures], &[Verdict]) {
+        (&self.summary.runs, &self.summary.verdicts)
     }
 
     fn report(&self) -> String {

@@ -9,7 +9,7 @@ use super::manoeuvre::trajectory_columns;
 use super::run::{Finished, run_scene};
 use super::{VehicleError, VehicleScene};
 use crate::kinds::{self, Columns, KindError, Linearised, Reference, Registered, Source};
-use crate::output::summary::Summary;
+use crate::output::summary::{RunFigures, Summary, Verdict};
 use crate::run::record::Recorder;
 use crate::scene::SceneError;
 use crate::scene::reference::SceneFamily;
@@ -118,6 +118,10 @@ impl kinds::Kind for VehicleScene {
 impl kinds::Finished for Finished<'_> {
     fn summary(&self) -> Summary {
         self.summary.clone().into_json()
+    }
+
+    fn figures(&self) -> (&[RunFigures], &[Verdict]) {
+        (&self.summary.runs, &self.summary.verdicts)
     }
 
     fn report(&self) -> String {
