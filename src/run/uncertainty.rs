@@ -231,38 +231,12 @@ impl Statistics {
     /// shards of a Monte Carlo, merged, give the numbers of one run), with the `percentiles`
     /// (each in [0, 100]).
     pub fn of(outcomes: &[CaseOutcome], percentiles: &[f64]) -> Self {
-        let mut ordered: Vec<&CaseOutcome> = outcomes.iter().collect();
-        ordered.sort_by_key(|outcome| outcome.index);
-        let (ran, failed): (Vec<&CaseOutcome>, Vec<&CaseOutcome>) =
-            ordered.into_iter().partition(|o| o.error.is_none());
-        let first = ran.first();
-        let figures = (first.into_iter().flat_map(|o| &o.figures))
-            .enumerate()
-            .map(|(at, (name, _))| {
-                let values: Vec<Option<f64>> = (ran.iter())
-                    .map(|o| {
-                        o.figures
-                            .get(at)
-                            .filter(|(n, _)| n == name)
-                            .and_then(|f| f.1)
-                    })
-                    .collect();
-                FigureStatistics::of(name, &values, percentiles)
-            })
+        let (ran, failed) = in_order(outcomes);
+        let figures = (columns(&ran, figures_of).into_iter())
+            .map(|(name, values)| FigureStatistics::of(name, &values, percentiles))
             .collect();
-        let verdicts = (first.into_iter().flat_map(|o| &o.verdicts))
-            .enumerate()
-            .map(|(at, (name, _))| {
-                let verdicts: Vec<Option<bool>> = (ran.iter())
-                    .map(|o| {
-                        o.verdicts
-                            .get(at)
-                            .filter(|(n, _)| n == name)
-                            .and_then(|v| v.1)
-                    })
-                    .collect();
-                VerdictRate::of(name, &verdicts)
-            })
+        let verdicts = (columns(&ran, verdicts_of).into_iter())
+            .map(|(name, verdicts)| VerdictRate::of(name, &verdicts))
             .collect();
         Statistics {
             cases: outcomes.len(),
@@ -351,6 +325,52 @@ impl Statistics {
         }
         out
     }
+}
+
+/// Each figure's values over the cases that ran and gave it, in the order of
+/// [`Statistics::figures`]: what a plot of their distributions draws.
+pub fn figure_values(outcomes: &[CaseOutcome]) -> Vec<(&str, Vec<f64>)> {
+    let (ran, _) = in_order(outcomes);
+    (columns(&ran, figures_of).into_iter())
+        .map(|(name, values)| (name, values.into_iter().flatten().collect()))
+        .collect()
+}
+
+/// The cases that ran and those that failed, each in the order of their case numbers (so that
+/// the shards of a Monte Carlo, merged, give the numbers of one run).
+fn in_order(outcomes: &[CaseOutcome]) -> (Vec<&CaseOutcome>, Vec<&CaseOutcome>) {
+    let mut ordered: Vec<&CaseOutcome> = outcomes.iter().collect();
+    ordered.sort_by_key(|outcome| outcome.index);
+    ordered.into_iter().partition(|o| o.error.is_none())
+}
+
+/// A case's figures or verdicts: each by its name, `None` where the case did not give it.
+type Named<T> = [(String, Option<T>)];
+
+fn figures_of(outcome: &CaseOutcome) -> &Named<f64> {
+    &outcome.figures
+}
+
+fn verdicts_of(outcome: &CaseOutcome) -> &Named<bool> {
+    &outcome.verdicts
+}
+
+/// Each entry of the cases' lists (`list`: their figures or their verdicts) by its name, in
+/// the order the first case lists them, with each case's value: `None` where the case did not
+/// give it, or lists another name at its place (every case of a scene lists them alike).
+fn columns<'a, T: Copy + 'a>(
+    ran: &[&'a CaseOutcome],
+    list: fn(&CaseOutcome) -> &Named<T>,
+) -> Vec<(&'a str, Vec<Option<T>>)> {
+    let first = ran.first().map_or(&[][..], |outcome| list(outcome));
+    (first.iter().enumerate())
+        .map(|(at, (name, _))| {
+            let values = (ran.iter())
+                .map(|o| list(o).get(at).filter(|(n, _)| n == name).and_then(|e| e.1))
+                .collect();
+            (name.as_str(), values)
+        })
+        .collect()
 }
 
 /// A number with six significant digits, as a report prints it.
@@ -443,6 +463,14 @@ pub fn wilson(passed: usize, n: usize, z: f64) -> (f64, f64) {
 /// and what merging shards reads back.
 pub struct CasesTable;
 
+/// The cell of the entry `name` of a case's figures or verdicts: its value every digit kept
+/// (Rust's shortest round trip), empty where the case did not give it.
+fn cell<T: ToString>(list: &Named<T>, name: &str) -> String {
+    (list.iter().find(|(n, _)| n == name))
+        .and_then(|(_, value)| value.as_ref().map(T::to_string))
+        .unwrap_or_default()
+}
+
 /// A cases table that cannot be read back.
 #[derive(Debug, thiserror::Error)]
 #[error("{0}")]
@@ -471,20 +499,8 @@ impl CasesTable {
         for outcome in outcomes {
             let mut row = vec![outcome.index.to_string()];
             row.extend(outcome.values.iter().map(|v| v.to_string()));
-            let figure = |name: &str| {
-                (outcome.figures.iter())
-                    .find(|(n, _)| n == name)
-                    .and_then(|(_, v)| v.map(|v| v.to_string()))
-                    .unwrap_or_default()
-            };
-            row.extend(figures.iter().map(|name| figure(name)));
-            let verdict = |name: &str| {
-                (outcome.verdicts.iter())
-                    .find(|(n, _)| n == name)
-                    .and_then(|(_, v)| v.map(|v| v.to_string()))
-                    .unwrap_or_default()
-            };
-            row.extend(verdicts.iter().map(|name| verdict(name)));
+            row.extend(figures.iter().map(|name| cell(&outcome.figures, name)));
+            row.extend(verdicts.iter().map(|name| cell(&outcome.verdicts, name)));
             row.push(outcome.error.clone().unwrap_or_default());
             let _ = writer.write_record(&row);
         }
@@ -626,6 +642,9 @@ mod tests {
         let rate = &statistics.verdicts[0];
         assert_eq!((rate.judged, rate.passed, rate.not_judged), (3, 2, 1));
         assert!(statistics.report().contains("case 3 failed: diverged"));
+        // What the plot draws: the values given by the cases that ran, in case order.
+        let drawn = figure_values(&outcomes);
+        assert_eq!(drawn, vec![("turn/advance_m", vec![1.0, 3.0, 2.0])]);
     }
 
     #[test]

@@ -13,7 +13,9 @@ use super::run::{Interrupted, signal_received};
 use anyhow::{Context, Result};
 use eom::output::folder::{Claim, Writer, sweep_identity};
 use eom::output::summary::write_atomically;
-use eom::run::uncertainty::{CaseOutcome, CasesTable, PERCENTILES, Statistics, run_cases};
+use eom::run::uncertainty::{
+    CaseOutcome, CasesTable, PERCENTILES, Statistics, figure_values, run_cases,
+};
 use eom::scene::AnyScene;
 use eom::scene::uncertainty::Uncertainty;
 use eom_cli::plots::distributions::{
@@ -154,22 +156,9 @@ pub fn write_report(dir: &Path, keys: &[String], outcomes: &[CaseOutcome]) -> Re
     let mut bytes = serde_json::to_vec_pretty(&report)?;
     bytes.push(b'\n');
     write_atomically(&path, &bytes).with_context(|| format!("writing {}", path.display()))?;
-    let ran: Vec<&CaseOutcome> = outcomes.iter().filter(|o| o.error.is_none()).collect();
-    // Every case of a scene lists its figures alike, as the statistics take them.
-    let values: Vec<Vec<f64>> = (statistics.figures.iter().enumerate())
-        .map(|(at, figure)| {
-            (ran.iter())
-                .filter_map(|o| o.figures.get(at).filter(|(n, _)| *n == figure.name))
-                .filter_map(|(_, v)| *v)
-                .collect()
-        })
-        .collect();
-    let figures: Vec<Distribution> = (statistics.figures.iter())
-        .zip(&values)
-        .map(|(figure, values)| Distribution {
-            name: &figure.name,
-            values,
-        })
+    let values = figure_values(outcomes);
+    let figures: Vec<Distribution> = (values.iter())
+        .map(|(name, values)| Distribution { name, values })
         .collect();
     // Captioned from the table alone, so that a merge of shards draws what one run draws.
     let caption = format!("{} cases: each figure's distribution", statistics.cases);
