@@ -371,3 +371,68 @@ pub(crate) fn coefficient_values(
 ) -> Vec<f64> {
     CoefficientFormulas::new(system, program).values(parameters)
 }
+
+/// How many derivations a [`Derivations`] keeps: a sweep over tables of more term sets than
+/// this derives each again once it falls out.
+const DERIVATIONS_KEPT: usize = 16;
+
+/// What a kind derived, proved and compiled from a table's terms (its spec), kept per process,
+/// so that a table of the same terms (a sweep's case, a Monte Carlo's) takes its values into
+/// it rather than being derived again: the last [`DERIVATIONS_KEPT`] specs, each once.
+pub(crate) struct Derivations<Spec, Derived> {
+    kept: std::sync::Mutex<Vec<(Spec, Derived)>>,
+}
+
+impl<Spec: PartialEq, Derived: Clone> Derivations<Spec, Derived> {
+    /// None kept yet.
+    pub(crate) const fn new() -> Self {
+        Derivations {
+            kept: std::sync::Mutex::new(Vec::new()),
+        }
+    }
+
+    /// The derivation of `spec` kept earlier in this process, if there is one.
+    pub(crate) fn get(&self, spec: &Spec) -> Option<Derived> {
+        let kept = self.kept.lock().ok()?;
+        (kept.iter().find(|(s, _)| s == spec)).map(|(_, derived)| derived.clone())
+    }
+
+    /// Keeps `derived` as `spec`'s and returns it, unless another thread kept one for `spec`
+    /// meanwhile (the first cases of a Monte Carlo on every core): then that one, which every
+    /// later table of the spec shares.
+    pub(crate) fn keep(&self, spec: Spec, derived: Derived) -> Derived {
+        let Ok(mut kept) = self.kept.lock() else {
+            return derived;
+        };
+        if let Some((_, first)) = kept.iter().find(|(s, _)| *s == spec) {
+            return first.clone();
+        }
+        if kept.len() == DERIVATIONS_KEPT {
+            kept.remove(0);
+        }
+        kept.push((spec, derived.clone()));
+        derived
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{DERIVATIONS_KEPT, Derivations};
+
+    #[test]
+    fn a_spec_is_kept_once_and_the_first_kept_is_the_one_shared() {
+        let kept: Derivations<usize, &str> = Derivations::new();
+        assert_eq!(kept.get(&0), None);
+        assert_eq!(kept.keep(0, "first"), "first");
+        // A second thread's derivation of the same spec: the first stays the one shared.
+        assert_eq!(kept.keep(0, "second"), "first");
+        assert_eq!(kept.get(&0), Some("first"));
+        for spec in 1..DERIVATIONS_KEPT {
+            kept.keep(spec, "other");
+        }
+        assert_eq!(kept.get(&0), Some("first"));
+        kept.keep(DERIVATIONS_KEPT, "other");
+        assert_eq!(kept.get(&0), None, "the oldest falls out");
+        assert_eq!(kept.get(&DERIVATIONS_KEPT), Some("other"));
+    }
+}

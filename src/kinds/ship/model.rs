@@ -21,11 +21,13 @@ use crate::defined::engine::{
     ADDED_MASS, EmitError, Operations, PRIME_SCALES, PROPULSION, Program, ShipSpec, Units,
     prove_with_jacobians, ship,
 };
-use crate::defined::{CoefficientFormulas, Functions, Interpreter, Plan, Source, Variables};
+use crate::defined::{
+    CoefficientFormulas, Derivations, Functions, Interpreter, Plan, Source, Variables,
+};
 use crate::models::Model;
 use simba::simd::SimdRealField;
 use std::collections::BTreeMap;
-use std::sync::{Arc, Mutex};
+use std::sync::Arc;
 
 /// The state: u, v, r (m/s, m/s, rad/s, body axes at midship), X, Y (m, midship in space
 /// axes), ψ (rad), δ (rad, the rudder angle).
@@ -112,13 +114,8 @@ fn spec_of(table: &ShipTable) -> ShipSpec {
 }
 
 /// The models derived in this process, one per set of terms, units, yaw-inertia convention
-/// and propulsion: what [`ShipModel::new`] takes another table's values into. The last
-/// [`PROVED_KEPT`] are kept.
-static PROVED_MODELS: Mutex<Vec<ShipModel>> = Mutex::new(Vec::new());
-
-/// How many derived models [`PROVED_MODELS`] keeps (a sweep over tables of many term sets
-/// derives each again once it falls out).
-const PROVED_KEPT: usize = 16;
+/// and propulsion: what [`ShipModel::new`] takes another table's values into.
+static PROVED_MODELS: Derivations<ShipSpec, ShipModel> = Derivations::new();
 
 impl ShipModel {
     /// The model of the table: 4.46 with its terms derived, solved and proved (with its
@@ -128,25 +125,16 @@ impl ShipModel {
     /// of a sweep or of a Monte Carlo) reuses the proof; [`ShipModel::derive`] derives anew.
     pub fn new(table: &ShipTable) -> Result<Self, ShipError> {
         let spec = spec_of(table);
-        let derived = (PROVED_MODELS.lock().ok())
-            .and_then(|models| models.iter().find(|m| m.proved.spec == spec).cloned());
-        if let Some(model) = derived {
+        if let Some(model) = PROVED_MODELS.get(&spec) {
             return model.with_table(table);
         }
         let model = Self::derive(table)?;
-        let Ok(mut models) = PROVED_MODELS.lock() else {
-            return Ok(model);
-        };
-        // Another thread may have derived the same terms meanwhile (the first cases of a Monte
-        // Carlo on every core): the one kept first is the one every later table shares.
-        if let Some(kept) = models.iter().find(|m| m.proved.spec == spec) {
-            return kept.with_table(table);
+        let kept = PROVED_MODELS.keep(spec, model.clone());
+        match kept.shares_proof_with(&model) {
+            true => Ok(model),
+            // Another thread derived the same terms meanwhile: its proof is the one shared.
+            false => kept.with_table(table),
         }
-        if models.len() == PROVED_KEPT {
-            models.remove(0);
-        }
-        models.push(model.clone());
-        Ok(model)
     }
 
     /// Derives, solves and proves 4.46 with the table's terms, then resolves the program,

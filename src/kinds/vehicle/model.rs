@@ -24,11 +24,11 @@ use crate::defined::engine::{
     VEHICLE_LOADS as LOADS, VEHICLE_PRIME_SCALES as PRIME_SCALES, VehicleSpec, folded_comparison,
     prove_with_jacobians, vehicle,
 };
-use crate::defined::{Functions, Interpreter, Source, Variables, coefficient_values};
+use crate::defined::{Derivations, Functions, Interpreter, Source, Variables, coefficient_values};
 use crate::models::Model;
 use simba::simd::SimdRealField;
 use std::collections::BTreeMap;
-use std::sync::{Arc, Mutex};
+use std::sync::Arc;
 
 /// The state: the generator's thirteen, then the rudder's and the stern planes' angles (rad).
 pub const STATE: [&str; 15] = [
@@ -344,17 +344,8 @@ struct Derived {
     functions: Functions,
 }
 
-/// The specs derived in this process, the last [`DERIVED_KEPT`] of them.
-static DERIVED: Mutex<Vec<Arc<Derived>>> = Mutex::new(Vec::new());
-
-/// How many derived specs [`DERIVED`] keeps.
-const DERIVED_KEPT: usize = 16;
-
-/// The derivation of `spec` made earlier in this process, if it is kept.
-fn derived_before(spec: &VehicleSpec) -> Option<Arc<Derived>> {
-    let derived = DERIVED.lock().ok()?;
-    derived.iter().find(|d| d.spec == *spec).cloned()
-}
+/// The specs derived in this process.
+static DERIVED: Derivations<VehicleSpec, Arc<Derived>> = Derivations::new();
 
 impl Proved {
     /// The six equations with the table's terms in `kinematics`, derived and proved once per
@@ -366,21 +357,13 @@ impl Proved {
         kinematics: Kinematics,
     ) -> Result<(Self, Vec<FoldedComparison>), VehicleError> {
         let spec = spec(table, kinematics);
-        if let Some(derived) = derived_before(&spec) {
+        if let Some(derived) = DERIVED.get(&spec) {
             let derivation = (&derived.spec, &derived.system, &derived.program);
             let (interpreter, resolved) = resolve(derivation, table)?;
             return Ok(resolved.with(interpreter, derived.functions.clone(), &derived.program));
         }
         let (proved, derived) = Self::derive(table, kinematics)?;
-        // Another thread may have derived the same spec meanwhile: it is kept once.
-        if let Ok(mut kept) = DERIVED.lock()
-            && !kept.iter().any(|d| d.spec == spec)
-        {
-            if kept.len() == DERIVED_KEPT {
-                kept.remove(0);
-            }
-            kept.push(Arc::new(derived));
-        }
+        DERIVED.keep(spec, Arc::new(derived));
         Ok(proved)
     }
 
