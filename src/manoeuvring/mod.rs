@@ -4,8 +4,8 @@
 //! assumes.
 //!
 //! A ship's rudder and a vehicle's fins are one steering gear, and a turning circle means the
-//! same of either; each kind (`kinds::ship`, `kinds::vehicle`) uses these, and none imports
-//! another kind for them.
+//! same of either; each kind with manoeuvres (the ship, the vehicle) uses these, and none
+//! imports another kind for them.
 
 pub mod course;
 pub mod steering;

@@ -75,6 +75,11 @@ pub struct LinearTable {
     pub outputs: Option<Vec<String>>,
 }
 
+// Read by the kinds with manoeuvres (feature `ship`); a build without them has no reader.
+#[cfg_attr(
+    not(feature = "ship"),
+    expect(dead_code, reason = "the kinds that read them are feature `ship`'s")
+)]
 impl Checker<'_> {
     /// The steering gear `table` (`rudder`, `stern_planes`) describes: its limits in radians
     /// and seconds, each positive; a rate limit needs the lag it acts on.
