@@ -62,10 +62,12 @@ pub(crate) mod engine {
         ADDED_MASS, Force, PRIME_SCALES, PROPULSION, ShipSpec, Term, Units, VARIABLES, YawInertia,
         ship,
     };
+    /// A vehicle's table as the engine reads it (its error type among them).
+    pub use eom_codegen::model::vehicle as vehicle_table;
     pub use eom_codegen::model::vehicle::{
         AddedMassCoriolis, Convention, FoldedComparison, InertiaAbout, NameError,
-        PRIME_SCALES as VEHICLE_PRIME_SCALES, Propeller, VehicleError, VehicleSpec,
-        folded_comparison, format_folded, vehicle,
+        PRIME_SCALES as VEHICLE_PRIME_SCALES, Propeller, VehicleSpec, folded_comparison,
+        format_folded, vehicle,
     };
     pub use eom_codegen::model::{Kinematics, Symmetry, System};
     pub use eom_codegen::symbolic::Expr;

@@ -9,19 +9,20 @@
 //! | stage | where |
 //! |---|---|
 //! | the physical inputs, validated once, and the one set of value checks | [`InertiaTensor`], [`PendulumParameters`], [`ParameterError`], [`validate`], [`mass`] (mass properties of a body) |
-//! | the generated models, one type per catalog entry | [`models`]: [`Model`], [`Loads`], [`Constant`], [`AnyModel`] |
+//! | the generated models, one type per catalog entry, and any model through one object-safe trait | [`models`]: [`Model`], [`Loads`], [`Constant`], [`AnyModel`], `DynModel` |
 //! | the independent nalgebra forms they are checked against | [`generic`] |
 //! | many bodies of one model in SIMD lanes, stepped together | [`batch`] |
-//! | integrators: one trait, tableaux over one adaptive driver, and the one driver of a run's stretches (any method, events located where they first hold) | [`integrate`]: [`Integrator`], [`OdeSystem`], [`Dop853`], [`Dopri5`], [`Rk4`], `Stepper`, … |
-//! | scenes as data: one entry for a scene of either kind, one checker, sweeps and shards | [`scene`]: `AnyScene`, `Scene` |
-//! | a scene run: rows to a sink, the guards, the trade-off | [`run`] |
+//! | integrators: one trait, tableaux over one adaptive driver, and the one driver of a run's stretches (any method, events located where they first hold) | [`integrate`]: [`Integrator`], [`OdeSystem`], [`Dop853`], [`Dopri5`], [`Rk4`], `Stepper`, `Problem`, … |
+//! | scenes as data: one entry for a scene of any kind, one checker, sweeps, shards and Monte Carlo laws | [`scene`]: `AnyScene` |
+//! | what every kind of scene is, and what its run gives | [`kind`]: `Kind`, `Finished`, `KindError` |
+//! | the kinds, each in its folder, and the registry that lists them: a catalog body, a ship on its hydrodynamic table (4.46), an underwater vehicle and an aircraft on theirs (the last three with feature `ship`) | [`kinds`]: `REGISTRY`, one folder a kind |
+//! | what a ship's and a vehicle's manoeuvres share: the steering gear, the course | [`manoeuvring`] |
+//! | a scene's runs: the one runner of every kind's runs, rows to a recorder, the trade-off of its integrators, a Monte Carlo | [`run`]: `run::scene`, `run::record`, `run::tradeoff`, `run::uncertainty` |
 //! | linearisation of any model: the operating point, A and B from the proved Jacobians, the modes | [`linear`] |
 //! | exact solutions and invariants for judging runs | [`reference`](mod@reference), [`energy`], [`elliptic`] |
 //! | the swing test: radius of gyration from a pendulum's period | [`swing`] |
-//! | ship manoeuvring: a hydrodynamic table on 4.46, the rudder, the standard manoeuvres, IMO criteria, Nomoto (feature `ship`) | `ship` |
-//! | underwater vehicles in six degrees of freedom on their own tables: the model, fins, step manoeuvres (feature `ship`) | `vehicle` |
 //! | where the symbolic engine enters for the scene-defined models, and the one interpreter of their proved programs (feature `ship`) | `defined` (private) |
-//! | what a run writes: its output folder, the trajectory (CSV) and the summary (JSON) | [`output`] |
+//! | what a run writes: its output folder, the trajectory (CSV), the summary (JSON), the drawings said in shapes | [`output`] |
 //!
 //! The `eom` command is a crate of its own (`eom-cli`): its plots, its 3-D view and its
 //! terminal output bring crates (clap, plotters, indicatif) that a program using this library
@@ -59,9 +60,9 @@ pub mod energy;
 pub mod generic;
 mod inertia;
 pub mod integrate;
+pub mod kind;
 pub mod kinds;
 pub mod linear;
-#[cfg(feature = "ship")]
 pub mod manoeuvring;
 pub mod mass;
 pub mod models;

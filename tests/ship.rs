@@ -1821,8 +1821,8 @@ fn a_stop_condition_ends_a_ships_turn_where_it_first_holds() {
 /// not), and the shared figures carry the note.
 #[test]
 fn a_ships_summary_says_its_stop_condition_and_where_each_side_stopped() {
-    use eom::kinds::ship::run::run_scene;
     use eom::run::record::Discard;
+    use eom::run::scene::run as run_scene;
     let scene = mariner_turn(Some("psi > 2.5")).unwrap();
     let finished = run_scene(&scene, "turn", &mut Discard).unwrap();
     let summary = &finished.summary;

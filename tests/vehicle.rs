@@ -1395,8 +1395,8 @@ fn a_stop_condition_ends_a_vehicles_turn_where_it_first_holds() {
 /// note (in summary.json and in the shared figures) names what the stop left out.
 #[test]
 fn a_vehicles_summary_says_where_the_stop_condition_ended_a_manoeuvre() {
-    use eom::kinds::vehicle::run::run_scene;
     use eom::run::record::Discard;
+    use eom::run::scene::run as run_scene;
     let scene = remus_turn(Some("t > 60")).unwrap();
     let finished = run_scene(&scene, "turn", &mut Discard).unwrap();
     let summary = &finished.summary;

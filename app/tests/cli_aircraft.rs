@@ -286,6 +286,43 @@ fn a_loop_stops_at_the_euler_angles_singularity_saying_so() {
     assert!(stderr.contains("kinematics = \"quaternion\""), "{stderr}");
 }
 
+/// A failed manoeuvre keeps what finished: the F-16 trimmed at 1500 ft/s with its doublet
+/// moved last. Three manoeuvres dive through θ = −89° (the throttle step, the pull-up and the
+/// doublet); the aileron step and the rudder kick finish. The run still exits 5, and its
+/// summary.json holds the two finished manoeuvres' figures, with each failure in `error`.
+#[test]
+fn a_failed_manoeuvre_keeps_the_finished_figures_and_the_rest_still_run() {
+    let doublet = "[[manoeuvre]]\nkind = \"elevator_doublet\"\namount = 1.0 # deg\nstart_s = 1.0\n\
+                   width_s = 1.0\nduration_s = 5.0\n\n";
+    let text = f16_with(&[
+        ("speed = 502.0 # ft/s", "speed = 1500.0 # ft/s"),
+        (doublet, ""),
+        ("[integrator]", &format!("{doublet}[integrator]")),
+    ]);
+    let (output, out) = run_text("f16_fast_doublet_last", &text);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(5), "{stderr}");
+    let summary = json(&out.join("summary.json"));
+    let finished: Vec<&String> = summary["manoeuvre"].as_object().unwrap().keys().collect();
+    assert_eq!(finished, ["aileron_step", "rudder_kick"], "{stderr}");
+    for name in finished {
+        let figures = &summary["manoeuvre"][name]["figures"];
+        assert!(
+            figures["peak_load_factor_g"].is_number(),
+            "{name}: {figures}"
+        );
+    }
+    let error = summary["error"].as_str().unwrap();
+    for failed in ["throttle_step", "pull_up", "elevator_doublet"] {
+        assert!(error.contains(&format!("manoeuvre {failed}: ")), "{error}");
+    }
+    assert!(error.contains("within 1° of ±90°"), "{error}");
+    assert!(
+        stderr.contains("the 2 runs that finished (aileron_step, rudder_kick)"),
+        "{stderr}"
+    );
+}
+
 /// A departure: the unaugmented F-16 at x_cg = 0.35 c̄ pulling 10° of elevator for 20 s, in a
 /// quaternion so that the pitch does not stop it, tumbles past the tables' 45° of α. The run
 /// goes on (the F-16's code extends its tables linearly, and so does eom), and its summary

@@ -209,3 +209,22 @@ def test_a_run_that_fails_raises_run_error_with_what_it_kept(binary, tmp_path):
     assert np.array_equal(bits(kept.trajectory.data), bits(written))
     summary = json.loads((out / "summary.json").read_text())
     assert kept.summary["error"] == summary["error"] == error.value.message
+
+
+def test_a_failed_manoeuvre_keeps_the_finished_figures_in_run_error_result(tmp_path):
+    """The F-16 trimmed at 1500 ft/s: three of its manoeuvres dive through θ = −89°, two
+    finish. `eom run` exits 5 with a summary holding the two and each failure; Python raises
+    RunError whose result carries the same summary."""
+    text = (SCENES / "f16.toml").read_text()
+    path = tmp_path / "fast.toml"
+    path.write_text(text.replace("speed = 502.0 # ft/s", "speed = 1500.0 # ft/s", 1))
+    out = tmp_path / "out"
+    done = subprocess.run([str(EOM), "run", str(path), "--out", str(out)], capture_output=True)
+    assert done.returncode == 5
+    with pytest.raises(eom.RunError) as error:
+        eom.Scene.load(path).run()
+    kept = error.value.result
+    summary = json.loads((out / "summary.json").read_text())
+    assert kept.summary["error"] == summary["error"] == error.value.message
+    assert sorted(kept.summary["manoeuvre"]) == ["aileron_step", "rudder_kick"]
+    assert kept.summary["manoeuvre"] == summary["manoeuvre"]

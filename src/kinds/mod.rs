@@ -73,171 +73,10 @@ pub mod ship;
 #[cfg(feature = "ship")]
 pub mod vehicle;
 
-use crate::linear::Linearisation;
-use crate::models::DynModel;
-use crate::output::summary::{RunFigures, Summary, Verdict};
-use crate::run::record::Recorder;
-use crate::run::tradeoff::Tradeoff;
+pub use crate::kind::{Finished, Kind, KindError, Linearised, RunScene};
 use crate::scene::SceneError;
 use crate::scene::reference::{Key, SceneFamily};
-use crate::scene::sweep::TableCase;
-use std::any::Any;
 use std::path::Path;
-
-/// What every scene is, whatever its kind: its title, the runs it asks for and what they
-/// write, the run itself (rows to a [`Recorder`], figures into a [`Finished`]), and its linear
-/// plant. The command runs, sweeps, shards, guards and reports a scene through this alone.
-pub trait Kind: Send + Sync + std::fmt::Debug {
-    /// The kind's name, as the registry lists it (`ship`, `vehicle`).
-    fn kind(&self) -> &'static str;
-
-    /// The scene's title.
-    fn title(&self) -> &str;
-
-    /// The entries its run writes at the top of its output folder besides `summary.json`
-    /// (each manoeuvre's folder), for the folder's claim.
-    fn folders(&self) -> Vec<String>;
-
-    /// About how many numbers its trajectories hold (rows × columns, every run), for the
-    /// output-size guard.
-    fn trajectory_numbers(&self) -> f64;
-
-    /// Runs every run the scene asks for, in order, each one's rows to `recorder` (`name` is
-    /// the scene's file, as the summary names it). A run the recorder stops ends the scene's,
-    /// keeping the runs before it: [`Finished::stopped`] says so.
-    fn run(
-        &self,
-        name: &str,
-        recorder: &mut dyn Recorder,
-    ) -> Result<Box<dyn Finished + '_>, KindError>;
-
-    /// The scene linearised at its operating point (`[linear]`, or its own: a ship's straight
-    /// course, a vehicle's cruise), with what the kind adds to the report.
-    fn linear(&self) -> Result<Linearised, KindError>;
-
-    /// Its integrators compared over its run (`eom tradeoff`: every method over its steps or
-    /// tolerances, each end state against a reference), for a kind whose scene is one run
-    /// it can repeat; `None` for a kind that does not compare them.
-    fn tradeoff(&self) -> Option<Result<Tradeoff, KindError>> {
-        None
-    }
-
-    /// The model the scene runs, as it stands (no loads, schedules or steering gear): its
-    /// names, `rhs` and proved Jacobians for any caller, sizes known at run time (a binding
-    /// evaluating it over many states). `None` for a kind that does not give it.
-    fn model(&self) -> Option<Result<Box<dyn DynModel>, KindError>> {
-        None
-    }
-
-    /// The scene as its own type, for a library user who knows the kind
-    /// (`scene.as_any().downcast_ref::<ShipScene>()`).
-    fn as_any(&self) -> &dyn Any;
-
-    /// The scene as its own type, owned ([`crate::scene::AnyScene::downcast`]).
-    fn into_any(self: Box<Self>) -> Box<dyn Any>;
-}
-
-/// What a scene's run gave: the summary, the report, a sweep case's line.
-pub trait Finished: std::fmt::Debug {
-    /// `summary.json` as the library builds it for every kind: the shared keys, each run's
-    /// figures and the verdicts, and the kind's own section as a JSON value (its objects'
-    /// keys sorted).
-    fn summary(&self) -> Summary;
-
-    /// Each run's figures and the verdicts, as [`Self::summary`] gives them, without building
-    /// its JSON: what a Monte Carlo's case reads.
-    fn figures(&self) -> (&[RunFigures], &[Verdict]);
-
-    /// `summary.json` as written: [`Self::summary`], pretty-printed, with a sweep case's
-    /// number and values under `"case"`. A kind whose section has an order of its own (a
-    /// body's: its model, where it ended, then its figures) writes it in that order.
-    fn summary_file(&self, case: Option<&TableCase>) -> Vec<u8> {
-        self.summary().file(case)
-    }
-
-    /// The report as the command prints it (the folder it wrote aside).
-    fn report(&self) -> String;
-
-    /// Each column of a sweep's table after the case and its swept values, with its value
-    /// in this run (empty where it gave none), in the table's order.
-    fn cells(&self, case: &TableCase) -> Vec<(String, String)>;
-
-    /// Whether the recorder stopped the run before every run the scene asks for had run.
-    fn stopped(&self) -> bool;
-
-    /// What a run that stopped early kept, in words (`the 2 manoeuvres finished before it,
-    /// and summary.json`; `every row up to t = 3 s of 10 s in trajectory.csv, …`).
-    fn kept(&self) -> String;
-
-    /// Why the run failed where it failed, having kept what it ran (a body's run that came
-    /// to gimbal lock: its rows, its drawings and a summary that gives the error); `None`
-    /// for a run that did not fail. The command writes what was kept, then exits as for a
-    /// failed run.
-    fn failure(&self) -> Option<KindError> {
-        None
-    }
-
-    /// What the run did not stop for but a reader should know (a fixed step past its
-    /// accuracy bound), for the command to say beside the report; also in the summary.
-    fn warnings(&self) -> Vec<String> {
-        Vec::new()
-    }
-}
-
-/// A scene's linearisation and what its kind adds to the report beside every scene's: text
-/// after the text report, keys in the JSON report.
-#[derive(Debug, Clone)]
-pub struct Linearised {
-    /// A, B, the modes, the verdict.
-    pub linearisation: Linearisation,
-    /// Lines after the text report (a ship's Nomoto models), empty for none.
-    pub text: String,
-    /// Keys added to the JSON report.
-    pub json: serde_json::Map<String, serde_json::Value>,
-}
-
-impl Linearised {
-    /// A linearisation that the kind adds nothing to.
-    pub fn alone(linearisation: Linearisation) -> Self {
-        Linearised {
-            linearisation,
-            text: String::new(),
-            json: serde_json::Map::new(),
-        }
-    }
-}
-
-/// Why a scene of some kind could not be run or linearised, by what the command's exit code
-/// says of it; each carries the kind's own error, whose message it gives.
-#[derive(Debug, thiserror::Error)]
-pub enum KindError {
-    /// A value of the scene that cannot be used (exit 3).
-    #[error(transparent)]
-    Scene(Box<dyn std::error::Error + Send + Sync>),
-    /// A run that cannot go on (exit 5).
-    #[error(transparent)]
-    Run(Box<dyn std::error::Error + Send + Sync>),
-    /// A run its recorder stopped (Ctrl-C).
-    #[error(transparent)]
-    Stopped(Box<dyn std::error::Error + Send + Sync>),
-    /// What a run gave could not be kept: a file not written (exit 4).
-    #[error(transparent)]
-    Output(Box<dyn std::error::Error + Send + Sync>),
-    /// The model could not be built or proved (exit 1).
-    #[error(transparent)]
-    Internal(Box<dyn std::error::Error + Send + Sync>),
-}
-
-impl From<crate::linear::LinearError> for KindError {
-    /// A point the scene names that cannot be used is the scene's; a trim that does not
-    /// converge, the run's.
-    fn from(error: crate::linear::LinearError) -> Self {
-        match error.is_scene_error() {
-            true => KindError::Scene(Box::new(error)),
-            false => KindError::Run(Box::new(error)),
-        }
-    }
-}
 
 /// Where a kind's tables are read from: a scene's text, or one case of a sweep (its tables).
 pub enum Source<'a> {
@@ -310,6 +149,9 @@ pub struct Registered {
     /// Reads and checks the scene (`name` is how errors name the file, `base` where a file
     /// it names is found).
     pub read: Reader,
+    /// Its example scene, under the repository's `scenes/`: what the tests run every kind by
+    /// (each feature, the same way for every kind).
+    pub example: &'static str,
 }
 
 /// The kinds of scene: the only list of them, in the order the reference lists them. A scene
@@ -323,15 +165,6 @@ pub const REGISTRY: &[Registered] = &[
     #[cfg(feature = "ship")]
     aircraft::KIND,
 ];
-
-/// What a scene of manoeuvres kept when it stopped early: the `count` it finished, or began
-/// and kept a part of, and its summary.
-pub(crate) fn manoeuvres_kept(count: usize) -> String {
-    format!(
-        "the {} finished before it, and summary.json",
-        crate::counted(count, "manoeuvre", "manoeuvres")
-    )
-}
 
 /// The registered kind whose tables `table` are, if one is: the first kind's that recognises
 /// them, the kind that reads the rest asked last.
@@ -425,6 +258,47 @@ mod tidy {
         kinds
     }
 
+    /// Whether `line` names the kind `other` by a path: `kinds::other`, `super::other` (a
+    /// sibling kind, from a kind's `mod.rs`), `super::super::other`, or `other` in a group
+    /// `kinds::{…}`.
+    fn names_by_path(line: &str, other: &str) -> bool {
+        let paths = [
+            format!("kinds::{other}"),
+            format!("super::{other}"),
+            format!("super::super::{other}"),
+        ];
+        let word = |text: &str| {
+            (text.split(|c: char| !(c.is_alphanumeric() || c == '_'))).any(|word| word == other)
+        };
+        let grouped = (line.split("kinds::{").skip(1))
+            .any(|group| word(group.split('}').next().unwrap_or_default()));
+        paths.iter().any(|path| {
+            (line.match_indices(path.as_str())).any(|(at, _)| {
+                let after = line[at + path.len()..].chars().next();
+                !after.is_some_and(|c| c.is_alphanumeric() || c == '_')
+            })
+        }) || grouped
+    }
+
+    #[test]
+    fn the_path_check_catches_each_way_of_naming_a_kind() {
+        for line in [
+            "use crate::kinds::ship::Side;",
+            "use crate::kinds::{ship, vehicle};",
+            "use super::ship::ShipScene;",
+            "use super::super::ship;",
+            "use crate::kinds::{body::BodyScene, ship};",
+        ] {
+            assert!(names_by_path(line, "ship"), "{line}");
+        }
+        for line in [
+            "use super::shipping;",
+            "use crate::kinds::{Kind, shipment};",
+        ] {
+            assert!(!names_by_path(line, "ship"), "{line}");
+        }
+    }
+
     #[test]
     fn no_kind_imports_another() {
         let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src/kinds");
@@ -435,9 +309,10 @@ mod tidy {
             for file in sources(&root.join(kind)) {
                 let text = std::fs::read_to_string(&file).unwrap_or_default();
                 for other in kinds.iter().filter(|other| *other != kind) {
-                    let paths = [format!("kinds::{other}"), format!("super::super::{other}")];
+                    let names = names_of(other);
                     for (number, line) in text.lines().enumerate() {
-                        if paths.iter().any(|path| line.contains(path.as_str())) {
+                        let typed = names[1..].iter().any(|name| contains_word(line, name));
+                        if names_by_path(line, other) || typed {
                             found.push(format!("{}:{}: {line}", file.display(), number + 1));
                         }
                     }
@@ -451,29 +326,48 @@ mod tidy {
         );
     }
 
-    /// The names by which a file names a kind of the registry: its module path, and its own
-    /// types (`ShipScene`, `VehicleError`).
+    /// Whether `name` is in `line` as a word of its own (`ShipScene`, not `MyShipScene2`).
+    fn contains_word(line: &str, name: &str) -> bool {
+        (line.match_indices(name)).any(|(at, _)| {
+            let word = |c: char| c.is_alphanumeric() || c == '_';
+            let before = line[..at].chars().next_back();
+            let after = line[at + name.len()..].chars().next();
+            !before.is_some_and(word) && !after.is_some_and(word)
+        })
+    }
+
+    /// The names by which a file names a kind of the registry: its module path, then its own
+    /// types (`ShipScene`, `VehicleError`, `AircraftSection`, `ShipModel`).
     fn names_of(kind: &str) -> Vec<String> {
         let title: String = (kind.chars().next().into_iter())
             .flat_map(char::to_uppercase)
             .chain(kind.chars().skip(1))
             .collect();
-        vec![
-            format!("kinds::{kind}"),
-            format!("{title}Scene"),
-            format!("{title}Error"),
-        ]
+        let mut names = vec![format!("kinds::{kind}")];
+        names.extend(["Scene", "Error", "Section", "Model"].map(|what| format!("{title}{what}")));
+        names
     }
 
-    /// Where each line of the `.rs` files under `dirs` names one of `kinds`.
+    /// Where each line of the `.rs` files under `dirs` (folders or files) names one of
+    /// `kinds`: by a path (`kinds::ship`, a group `kinds::{ship, …}`) or a type of its own.
     fn naming(root: &Path, dirs: &[&str], kinds: &[String]) -> Vec<String> {
         let mut found = Vec::new();
         for dir in dirs {
-            for file in sources(&root.join(dir)) {
-                let text = std::fs::read_to_string(&file).unwrap_or_default();
+            let path = root.join(dir);
+            let files = match path.is_dir() {
+                true => sources(&path),
+                false => vec![path],
+            };
+            for file in files {
+                let text = std::fs::read_to_string(&file)
+                    .unwrap_or_else(|e| panic!("{}: {e}", file.display()));
                 for (number, line) in text.lines().enumerate() {
-                    let names = kinds.iter().flat_map(|kind| names_of(kind));
-                    if names.into_iter().any(|name| line.contains(&name)) {
+                    let named = kinds.iter().any(|kind| {
+                        let names = names_of(kind);
+                        let path = line.contains(&names[0]) || names_by_path_group(line, kind);
+                        path || names[1..].iter().any(|name| contains_word(line, name))
+                    });
+                    if named {
                         found.push(format!("{}:{}: {line}", file.display(), number + 1));
                     }
                 }
@@ -482,16 +376,31 @@ mod tidy {
         found
     }
 
+    /// Whether `line` names `kind` in a group `kinds::{…}`.
+    fn names_by_path_group(line: &str, kind: &str) -> bool {
+        names_by_path(line, kind) && line.contains("kinds::{")
+    }
+
     #[test]
     fn the_shared_layers_and_the_application_name_no_kind() {
         let root = Path::new(env!("CARGO_MANIFEST_DIR"));
         let kinds = kinds(&root.join("src/kinds"));
+        // Every layer below the kinds: what they share, the runner of their runs, and the
+        // table of contents. (The fuzz targets still take each kind's scene by its type.)
         let shared = [
             "src/scene",
             "src/run",
             "src/output",
             "src/linear",
             "src/models",
+            "src/integrate",
+            "src/generic",
+            "src/defined.rs",
+            "src/defined",
+            "src/manoeuvring",
+            "src/kind.rs",
+            "src/lib.rs",
+            "python/src",
         ];
         let found = naming(root, &shared, &kinds);
         assert!(

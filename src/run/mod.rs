@@ -10,6 +10,7 @@
 
 pub mod figure_tradeoff;
 pub mod record;
+pub mod scene;
 pub mod tradeoff;
 pub mod uncertainty;
 

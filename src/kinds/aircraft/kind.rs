@@ -4,14 +4,10 @@
 use super::keys;
 use super::linear::linearise_aircraft;
 use super::manoeuvre::trajectory_columns;
-use super::run::{Finished, run_scene};
 use super::scene::AircraftScene;
 use crate::kinds::{self, Columns, KindError, Linearised, Reference, Registered, Source};
-use crate::output::summary::{RunFigures, Summary, Verdict};
-use crate::run::record::Recorder;
 use crate::scene::SceneError;
 use crate::scene::reference::SceneFamily;
-use crate::scene::sweep::TableCase;
 use std::any::Any;
 use std::path::Path;
 
@@ -43,6 +39,7 @@ pub const KIND: Registered = Registered {
     recognises,
     reads_the_rest: false,
     read,
+    example: "navion.toml",
 };
 
 /// An aircraft's scene has `[aircraft]`.
@@ -76,14 +73,6 @@ impl kinds::Kind for AircraftScene {
         rows * (super::manoeuvre::ROW.len() + 2) as f64
     }
 
-    fn run(
-        &self,
-        name: &str,
-        recorder: &mut dyn Recorder,
-    ) -> Result<Box<dyn kinds::Finished + '_>, KindError> {
-        Ok(Box::new(run_scene(self, name, recorder)?))
-    }
-
     fn linear(&self) -> Result<Linearised, KindError> {
         Ok(Linearised::alone(linearise_aircraft(self)?))
     }
@@ -100,31 +89,5 @@ impl kinds::Kind for AircraftScene {
 
     fn into_any(self: Box<Self>) -> Box<dyn Any> {
         self
-    }
-}
-
-impl kinds::Finished for Finished<'_> {
-    fn summary(&self) -> Summary {
-        self.summary.clone().into_json()
-    }
-
-    fn figures(&self) -> (&[RunFigures], &[Verdict]) {
-        (&self.summary.runs, &self.summary.verdicts)
-    }
-
-    fn report(&self) -> String {
-        Finished::report(self)
-    }
-
-    fn cells(&self, case: &TableCase) -> Vec<(String, String)> {
-        Finished::cells(self, case)
-    }
-
-    fn stopped(&self) -> bool {
-        self.stopped
-    }
-
-    fn kept(&self) -> String {
-        kinds::manoeuvres_kept(self.ran)
     }
 }

@@ -1,16 +1,17 @@
-//! An aircraft scene's run: each manoeuvre from the trim, its rows to the recorder, its
-//! figures, the Dutch roll read from a rudder kick beside the linear model's, and the typed
+//! An aircraft scene's runs as the one runner ([`crate::run::scene`]) runs them: each
+//! manoeuvre from the trim, its figures (each with how far it moved when run refined), the
+//! Dutch roll read from a rudder kick beside the linear model's, and the typed section of the
 //! summary.
 
 use super::linear::linearise_aircraft;
-use super::manoeuvre::{self, AircraftRun, ROW, RunError, dutch_roll};
+use super::manoeuvre::{self, AircraftRun, Manoeuvre, ROW, RunError, dutch_roll};
 use super::scene::{AircraftScene, units};
-use crate::kinds::KindError;
-use crate::output::drawing::{Curves, Drawing, Flight, RunDrawings};
-use crate::output::summary::{Figure, IntegratorSummary, Named, RunFigures, Summary};
+use crate::kind::KindError;
+use crate::output::drawing::{Curves, Drawing, Flight};
+use crate::output::summary::{Figure, IntegratorSummary, Named, RunFigures};
 use crate::output::trajectory::number_text;
 use crate::run::Row;
-use crate::run::record::{Recorder, RunStart};
+use crate::run::scene::{Closing, Counts, Failed, Ran, Rows, RunPlan, SceneRuns, Setting};
 use crate::scene::sweep::TableCase;
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -32,6 +33,14 @@ pub struct TrimSummary {
 pub struct ManoeuvreSummary {
     /// The figures by key (unit as suffix).
     pub figures: Named,
+    /// How far each figure moved when the run was refined with half the step (a fixed-step
+    /// method), `null` where the refined run did not give it; absent where the run was not
+    /// refined (a Monte Carlo's case).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub half_step_difference: Option<BTreeMap<String, Option<f64>>>,
+    /// The same with tolerances a hundred times tighter (an adaptive method).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tolerance_difference: Option<BTreeMap<String, Option<f64>>>,
     /// What could not be read, and why.
     pub notes: Vec<String>,
     /// Accepted steps.
@@ -55,19 +64,6 @@ pub struct AircraftSection {
     pub stop_when: Option<String>,
 }
 
-/// What a run of the scene gave.
-#[derive(Debug)]
-pub struct Finished<'a> {
-    /// The scene.
-    pub scene: &'a AircraftScene,
-    /// The summary.
-    pub summary: Summary<AircraftSection>,
-    /// Whether the recorder stopped it.
-    pub stopped: bool,
-    /// How many manoeuvres ran.
-    pub ran: usize,
-}
-
 /// The Dutch roll of the linear model at the trim: (period s, damping ratio).
 fn linear_dutch_roll(scene: &AircraftScene) -> Option<(f64, f64)> {
     let linear = linearise_aircraft(scene).ok()?;
@@ -75,7 +71,13 @@ fn linear_dutch_roll(scene: &AircraftScene) -> Option<(f64, f64)> {
     Some((mode.period_s?, mode.damping_ratio?))
 }
 
-fn figures(scene: &AircraftScene, run: &AircraftRun, kick: bool) -> (Named, Vec<String>) {
+/// A manoeuvre's figures, and what could not be read; a rudder kick's Dutch roll beside the
+/// linear model's (`linear`).
+fn figures(
+    scene: &AircraftScene,
+    run: &AircraftRun,
+    (kick, linear): (bool, Option<(f64, f64)>),
+) -> (Named, Vec<String>) {
     let m = &run.measured;
     let mut figures = vec![
         ("peak_load_factor_g".to_owned(), m.load_factor.0),
@@ -123,7 +125,7 @@ fn figures(scene: &AircraftScene, run: &AircraftRun, kick: bool) -> (Named, Vec<
                     .into(),
             ),
         }
-        if let Some((period, damping)) = linear_dutch_roll(scene) {
+        if let Some((period, damping)) = linear {
             figures.push(("dutch_roll_period_linear_s".into(), period));
             figures.push(("dutch_roll_damping_linear".into(), damping));
         }
@@ -131,53 +133,88 @@ fn figures(scene: &AircraftScene, run: &AircraftRun, kick: bool) -> (Named, Vec<
     (Named(figures), notes)
 }
 
-/// Runs every manoeuvre of `scene` from its trim, each one's rows to `recorder`.
-pub fn run_scene<'a>(
-    scene: &'a AircraftScene,
-    name: &str,
-    recorder: &mut dyn Recorder,
-) -> Result<Finished<'a>, KindError> {
-    let started = std::time::Instant::now();
-    let columns = scene.labelled_columns();
-    let mut section = AircraftSection {
-        units: units(scene.units).into_iter().collect(),
-        trim: trim_summary(scene),
-        manoeuvre: BTreeMap::new(),
-        stop_when: scene.stop.as_ref().map(|s| s.text.clone()),
-    };
-    let (mut steps, mut evals, mut runs, mut stopped) = (0, 0, Vec::new(), false);
-    for manoeuvre in &scene.manoeuvres {
-        if recorder.stop_asked() {
-            stopped = true;
-            break;
-        }
-        let expected = (manoeuvre.duration / scene.every).ceil() as usize + 1;
-        recorder
-            .begin(RunStart {
-                path: &manoeuvre.name,
-                columns: &columns,
-                expected_rows: expected,
+/// A manoeuvre's run: its summary, and the rows its plots draw (every few, at most about
+/// 2000; none where its rows are not kept).
+#[derive(Debug, Clone)]
+pub struct Outcome {
+    /// What summary.json says of it.
+    pub summary: ManoeuvreSummary,
+    /// Its evaluations of the right-hand side.
+    pub rhs_evals: u64,
+    curves: Vec<(f64, [f64; 18])>,
+}
+
+impl SceneRuns for AircraftScene {
+    /// The linear model's Dutch roll at the trim, where a manoeuvre is a rudder kick.
+    type Shared = Option<(f64, f64)>;
+    type Outcome = Outcome;
+    type Section = AircraftSection;
+
+    fn kind_name(&self) -> &'static str {
+        super::kind::KIND.name
+    }
+
+    fn scene_title(&self) -> &str {
+        &self.title
+    }
+
+    fn integrator(&self) -> IntegratorSummary {
+        let stepper = &self.stepper;
+        IntegratorSummary::settings(stepper.method, stepper.step, stepper.adaptive)
+    }
+
+    fn prepare(&self) -> Result<Option<(f64, f64)>, KindError> {
+        let kicks = (self.manoeuvres.iter()).any(|m| m.kind == Manoeuvre::RudderKick);
+        Ok(kicks.then(|| linear_dutch_roll(self)).flatten())
+    }
+
+    /// Each manoeuvre's run from the trim: t, the row in the scene's units, the kinetic
+    /// energy.
+    fn plans(&self, _: &Option<(f64, f64)>) -> Vec<RunPlan> {
+        let columns = self.labelled_columns();
+        (self.manoeuvres.iter())
+            .map(|manoeuvre| RunPlan {
+                path: manoeuvre.name.clone(),
+                columns: columns.clone(),
+                expected_rows: (manoeuvre.duration / self.every).ceil() as usize + 1,
                 end_time: manoeuvre.duration,
                 potential: false,
-                energy_unit: scene.energy_unit(),
+                energy_unit: self.energy_unit(),
             })
-            .map_err(KindError::Output)?;
+            .collect()
+    }
+
+    fn run_one(
+        &self,
+        linear: &Option<(f64, f64)>,
+        index: usize,
+        setting: Setting,
+        rows: &mut Rows,
+    ) -> Result<Outcome, Failed<Outcome>> {
+        let manoeuvre = &self.manoeuvres[index];
+        let stepper = match setting {
+            Setting::Scene => self.stepper.clone(),
+            Setting::Refined => self.stepper.refined(self.every),
+        };
         let mut curves: Vec<(f64, [f64; 18])> = Vec::new();
-        let stride = (expected / 2000).max(1);
+        let stride = ((manoeuvre.duration / self.every).ceil() as usize / 2000).max(1);
         let mut count = 0usize;
         let done = manoeuvre::run(
-            &scene.model,
-            scene.kinematics,
+            &self.model,
+            self.kinematics,
             manoeuvre,
-            (&scene.trim.state, &scene.trim.controls),
-            (&scene.stepper, scene.every),
-            scene.stop.as_ref(),
+            (&self.trim.state, &self.trim.controls),
+            (&stepper, self.every),
+            self.stop.as_ref(),
             |sample| {
+                if !rows.keeps() {
+                    return !rows.stop_asked();
+                }
                 if count.is_multiple_of(stride) {
                     curves.push((sample.t, sample.row));
                 }
                 count += 1;
-                recorder.row(&Row {
+                rows.take(&Row {
                     t: sample.t,
                     state: &sample.row,
                     kinetic_energy: sample.kinetic,
@@ -185,82 +222,122 @@ pub fn run_scene<'a>(
                 })
             },
         );
-        let done = match done {
-            Ok(done) => done,
-            Err(RunError::Stopped { .. }) => {
-                recorder.end().map_err(KindError::Output)?;
-                stopped = true;
-                break;
+        let done = done.map_err(|error| match error {
+            RunError::Stopped { .. } => KindError::Stopped(Box::new(error)),
+            RunError::Failed { .. } => {
+                KindError::Run(format!("manoeuvre {}: {error}", manoeuvre.name).into())
             }
-            Err(error) => {
-                let message = format!("manoeuvre {}: {error}", manoeuvre.name);
-                return Err(KindError::Run(message.into()));
-            }
-        };
-        recorder.end().map_err(KindError::Output)?;
-        recorder
-            .drawn(drawings(scene, &manoeuvre.name, &curves))
-            .map_err(KindError::Output)?;
-        steps += done.steps;
-        evals += done.rhs_evals;
-        let kick = manoeuvre.kind == manoeuvre::Manoeuvre::RudderKick;
-        let (named, mut notes) = figures(scene, &done, kick);
+        })?;
+        let kick = manoeuvre.kind == Manoeuvre::RudderKick;
+        let (named, mut notes) = figures(self, &done, (kick, *linear));
         if let Some(t) = done.stopped_at {
             notes.push(format!(
                 "stopped at t = {t} s where `{}` first held (integrator.stop_when): the figures \
                  are of the run up to there",
-                section.stop_when.as_deref().unwrap_or_default()
+                self.stop.as_ref().map_or("", |s| s.text.as_str())
             ));
         }
-        runs.push(RunFigures {
-            run: manoeuvre.name.clone(),
-            figures: (named.0.iter())
+        let summary = ManoeuvreSummary {
+            figures: named,
+            half_step_difference: None,
+            tolerance_difference: None,
+            notes,
+            steps_taken: done.steps,
+            stopped_at: done.stopped_at,
+        };
+        Ok(Outcome {
+            summary,
+            rhs_evals: done.rhs_evals,
+            curves,
+        })
+    }
+
+    fn counts(&self, outcome: &Outcome) -> Counts {
+        Counts {
+            steps: outcome.summary.steps_taken,
+            rejected: None,
+            rhs_evals: outcome.rhs_evals,
+        }
+    }
+
+    /// Each figure's difference from the refined run's, by key.
+    fn take_refined(
+        &self,
+        _index: usize,
+        outcome: &mut Outcome,
+        refined: Result<Outcome, KindError>,
+    ) -> Vec<String> {
+        let refined = match refined {
+            Ok(refined) => refined.summary.figures,
+            Err(error) => {
+                let key = match self.stepper.method.is_adaptive() {
+                    true => "tolerance_difference",
+                    false => "half_step_difference",
+                };
+                return vec![format!("{key} is not given: refined, {}", error.message())];
+            }
+        };
+        let differences = (outcome.summary.figures.0.iter())
+            .map(|(key, value)| {
+                let moved = (refined.0.iter()).find(|(k, _)| k == key);
+                (
+                    key.clone(),
+                    moved.map(|(_, refined)| (value - refined).abs()),
+                )
+            })
+            .collect();
+        match self.stepper.method.is_adaptive() {
+            true => outcome.summary.tolerance_difference = Some(differences),
+            false => outcome.summary.half_step_difference = Some(differences),
+        }
+        Vec::new()
+    }
+
+    fn figures(&self, plan: &RunPlan, outcome: &Outcome) -> RunFigures {
+        let m = &outcome.summary;
+        let differences = (m.half_step_difference.as_ref()).or(m.tolerance_difference.as_ref());
+        RunFigures {
+            run: plan.path.clone(),
+            figures: (m.figures.0.iter())
                 .map(|(key, value)| Figure {
                     key: key.clone(),
                     value: Some(*value),
-                    difference: None,
+                    difference: differences.and_then(|d| d.get(key).copied().flatten()),
                 })
                 .collect(),
-            refinement: None,
+            refinement: differences.map(|_| self.stepper.refinement()),
             largest_difference: None,
-            notes: notes.clone(),
-        });
-        section.manoeuvre.insert(
-            manoeuvre.name.clone(),
-            ManoeuvreSummary {
-                figures: named,
-                notes,
-                steps_taken: done.steps,
-                stopped_at: done.stopped_at,
-            },
-        );
+            notes: m.notes.clone(),
+        }
     }
-    let stepper = &scene.stepper;
-    let summary = Summary {
-        kind: super::kind::KIND.name,
-        scene: name.to_owned(),
-        title: scene.title.clone(),
-        integrator: IntegratorSummary {
-            steps,
-            rhs_evals: Some(evals),
-            ..IntegratorSummary::settings(stepper.method, stepper.step, stepper.adaptive)
-        },
-        wall_seconds: started.elapsed().as_secs_f64(),
-        interrupted: stopped,
-        error: None,
-        warnings: Vec::new(),
-        case: None,
-        runs,
-        verdicts: Vec::new(),
-        section,
-    };
-    let ran = summary.runs.len();
-    Ok(Finished {
-        scene,
-        summary,
-        stopped,
-        ran,
-    })
+
+    fn drawings(&self, _: &Option<(f64, f64)>, index: usize, outcome: &Outcome) -> Vec<Drawing> {
+        drawings(self, &self.manoeuvres[index].name, &outcome.curves)
+    }
+
+    fn close(&self, ran: &Ran<'_, Self>) -> Closing<AircraftSection> {
+        let section = AircraftSection {
+            units: units(self.units).into_iter().collect(),
+            trim: trim_summary(self),
+            manoeuvre: (ran.outcomes.iter())
+                .map(|(index, o)| (self.manoeuvres[*index].name.clone(), o.summary.clone()))
+                .collect(),
+            stop_when: self.stop.as_ref().map(|s| s.text.clone()),
+        };
+        Closing {
+            section,
+            verdicts: Vec::new(),
+            warnings: Vec::new(),
+        }
+    }
+
+    fn report(&self, ran: &Ran<'_, Self>) -> String {
+        report(self, ran)
+    }
+
+    fn cells(&self, ran: &Ran<'_, Self>, _case: &TableCase) -> Vec<(String, String)> {
+        cells(self, ran)
+    }
 }
 
 fn trim_summary(scene: &AircraftScene) -> TrimSummary {
@@ -280,7 +357,7 @@ fn trim_summary(scene: &AircraftScene) -> TrimSummary {
 }
 
 /// The run's plots: the angles and the load factor against time.
-fn drawings(scene: &AircraftScene, path: &str, rows: &[(f64, [f64; 18])]) -> RunDrawings {
+fn drawings(scene: &AircraftScene, path: &str, rows: &[(f64, [f64; 18])]) -> Vec<Drawing> {
     let curve = |name: &str, column: usize, scale: f64| {
         let points = rows
             .iter()
@@ -290,96 +367,91 @@ fn drawings(scene: &AircraftScene, path: &str, rows: &[(f64, [f64; 18])]) -> Run
     };
     let degrees = 180.0 / std::f64::consts::PI;
     let column = |name: &str| ROW.iter().position(|c| *c == name).unwrap_or(0);
-    RunDrawings {
-        path: path.to_owned(),
-        drawings: vec![
-            Drawing::Curves(Curves {
-                file: "angles.svg".into(),
-                caption: format!("{}: {path}, angles", scene.title),
-                x_desc: "t (s)".into(),
-                y_desc: "angle (deg)".into(),
-                curves: ["alpha", "beta", "phi", "theta"]
-                    .iter()
-                    .map(|n| curve(n, column(n), degrees))
-                    .collect(),
-            }),
-            Drawing::Curves(Curves {
-                file: "rates.svg".into(),
-                caption: format!("{}: {path}, body rates", scene.title),
-                x_desc: "t (s)".into(),
-                y_desc: "rate (deg/s)".into(),
-                curves: ["p", "q", "r"]
-                    .iter()
-                    .map(|n| curve(n, column(n), degrees))
-                    .collect(),
-            }),
-            Drawing::Flight(Flight {
-                title: format!("{}: {path}", scene.title),
-                solid: scene.solid(),
-                span: scene.span,
-                chord: scene.chord,
-                length_unit: units(scene.units)[9].1,
-            }),
-            Drawing::Curves(Curves {
-                file: "load_factor.svg".into(),
-                caption: format!("{}: {path}, load factor", scene.title),
-                x_desc: "t (s)".into(),
-                y_desc: "n_z (g)".into(),
-                curves: vec![curve("n_z", column("load_factor"), 1.0)],
-            }),
-        ],
-    }
+    vec![
+        Drawing::Curves(Curves {
+            file: "angles.svg".into(),
+            caption: format!("{}: {path}, angles", scene.title),
+            x_desc: "t (s)".into(),
+            y_desc: "angle (deg)".into(),
+            curves: ["alpha", "beta", "phi", "theta"]
+                .iter()
+                .map(|n| curve(n, column(n), degrees))
+                .collect(),
+        }),
+        Drawing::Curves(Curves {
+            file: "rates.svg".into(),
+            caption: format!("{}: {path}, body rates", scene.title),
+            x_desc: "t (s)".into(),
+            y_desc: "rate (deg/s)".into(),
+            curves: ["p", "q", "r"]
+                .iter()
+                .map(|n| curve(n, column(n), degrees))
+                .collect(),
+        }),
+        Drawing::Flight(Flight {
+            title: format!("{}: {path}", scene.title),
+            solid: scene.solid(),
+            span: scene.span,
+            chord: scene.chord,
+            length_unit: units(scene.units)[9].1,
+        }),
+        Drawing::Curves(Curves {
+            file: "load_factor.svg".into(),
+            caption: format!("{}: {path}, load factor", scene.title),
+            x_desc: "t (s)".into(),
+            y_desc: "n_z (g)".into(),
+            curves: vec![curve("n_z", column("load_factor"), 1.0)],
+        }),
+    ]
 }
 
-impl Finished<'_> {
-    /// The report as the command prints it.
-    pub fn report(&self) -> String {
-        let mut out = String::new();
-        let scene = self.scene;
-        let t = &scene.trim;
-        let _ = writeln!(out, "{}", crate::output::text::printable(&scene.title));
-        let _ = writeln!(
-            out,
-            "  trim: V = {} {}, α = {:.4}°, θ = {:.4}°, φ = {:.4}°, throttle {:.4}, elevator \
+/// The report as the command prints it: the trim, then each manoeuvre's figures and notes.
+fn report(scene: &AircraftScene, ran: &Ran<'_, AircraftScene>) -> String {
+    let mut out = String::new();
+    let t = &scene.trim;
+    let _ = writeln!(out, "{}", crate::output::text::printable(&scene.title));
+    let _ = writeln!(
+        out,
+        "  trim: V = {} {}, α = {:.4}°, θ = {:.4}°, φ = {:.4}°, throttle {:.4}, elevator \
              {:.4}°, aileron {:.4}°, rudder {:.4}° (residual {:.1e})",
-            t.state[0],
-            units(scene.units)[0].1,
-            t.state[1].to_degrees(),
-            t.state[4].to_degrees(),
-            t.state[3].to_degrees(),
-            t.controls[0],
-            t.controls[1],
-            t.controls[2],
-            t.controls[3],
-            t.residual
-        );
-        for (name, m) in &self.summary.section.manoeuvre {
-            let figures: Vec<String> = (m.figures.0.iter())
-                .map(|(k, v)| format!("{k} {}", crate::Short(*v)))
-                .collect();
-            let _ = writeln!(out, "  {name}: {}", figures.join(", "));
-            for note in &m.notes {
-                let _ = writeln!(out, "    note: {note}");
-            }
+        t.state[0],
+        units(scene.units)[0].1,
+        t.state[1].to_degrees(),
+        t.state[4].to_degrees(),
+        t.state[3].to_degrees(),
+        t.controls[0],
+        t.controls[1],
+        t.controls[2],
+        t.controls[3],
+        t.residual
+    );
+    for (index, outcome) in &ran.outcomes {
+        let (name, m) = (&scene.manoeuvres[*index].name, &outcome.summary);
+        let figures: Vec<String> = (m.figures.0.iter())
+            .map(|(k, v)| format!("{k} {}", crate::Short(*v)))
+            .collect();
+        let _ = writeln!(out, "  {name}: {}", figures.join(", "));
+        for note in &m.notes {
+            let _ = writeln!(out, "    note: {note}");
         }
-        out
     }
+    out
+}
 
-    /// Each manoeuvre's figures, `<manoeuvre>.<figure>`, then its steps.
-    pub fn cells(&self, _case: &TableCase) -> Vec<(String, String)> {
-        let mut cells = Vec::new();
-        for manoeuvre in &self.scene.manoeuvres {
-            let Some(m) = self.summary.section.manoeuvre.get(&manoeuvre.name) else {
-                continue;
-            };
-            for (key, value) in &m.figures.0 {
-                cells.push((format!("{}.{key}", manoeuvre.name), number_text(*value)));
-            }
-            cells.push((
-                format!("{}.steps_taken", manoeuvre.name),
-                m.steps_taken.to_string(),
-            ));
+/// Each manoeuvre's figures, `<manoeuvre>.<figure>`, then its steps.
+fn cells(scene: &AircraftScene, ran: &Ran<'_, AircraftScene>) -> Vec<(String, String)> {
+    let mut cells = Vec::new();
+    for (index, manoeuvre) in scene.manoeuvres.iter().enumerate() {
+        let Some(m) = ran.outcome(index).map(|outcome| &outcome.summary) else {
+            continue;
+        };
+        for (key, value) in &m.figures.0 {
+            cells.push((format!("{}.{key}", manoeuvre.name), number_text(*value)));
         }
-        cells
+        cells.push((
+            format!("{}.steps_taken", manoeuvre.name),
+            m.steps_taken.to_string(),
+        ));
     }
+    cells
 }

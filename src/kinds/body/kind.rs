@@ -3,13 +3,10 @@
 
 use super::BodyScene;
 use super::keys::{self, ALL};
-use super::run::{BodyRun, run_body, trajectory_numbers};
-use crate::kinds::{Columns, Finished, Kind, KindError, Linearised, Reference, Registered, Source};
-use crate::output::summary::{RunFigures, Summary, Verdict};
-use crate::run::record::Recorder;
+use super::run::trajectory_numbers;
+use crate::kinds::{Columns, Kind, KindError, Linearised, Reference, Registered, Source};
 use crate::run::tradeoff::Tradeoff;
 use crate::scene::SceneError;
-use crate::scene::sweep::TableCase;
 use std::any::Any;
 use std::path::Path;
 
@@ -33,6 +30,7 @@ pub const KIND: Registered = Registered {
     recognises,
     reads_the_rest: true,
     read,
+    example: "pendulum.toml",
 };
 
 /// A catalog body's scene is every scene that no other kind recognises and whose own table does
@@ -68,14 +66,6 @@ impl Kind for BodyScene {
         trajectory_numbers(self)
     }
 
-    fn run(
-        &self,
-        name: &str,
-        recorder: &mut dyn Recorder,
-    ) -> Result<Box<dyn Finished + '_>, KindError> {
-        Ok(Box::new(run_body(self, name, recorder)?))
-    }
-
     fn linear(&self) -> Result<Linearised, KindError> {
         Ok(Linearised::alone(super::linear::linearise_scene(self)?))
     }
@@ -96,44 +86,5 @@ impl Kind for BodyScene {
 
     fn into_any(self: Box<Self>) -> Box<dyn Any> {
         self
-    }
-}
-
-impl Finished for BodyRun<'_> {
-    fn summary(&self) -> Summary {
-        self.summary.clone().into_json()
-    }
-
-    fn figures(&self) -> (&[RunFigures], &[Verdict]) {
-        (&self.summary.runs, &self.summary.verdicts)
-    }
-
-    /// In the order of its section's fields (the section as a JSON value would sort them).
-    fn summary_file(&self, case: Option<&TableCase>) -> Vec<u8> {
-        self.summary.file(case)
-    }
-
-    fn report(&self) -> String {
-        BodyRun::report(self)
-    }
-
-    fn cells(&self, _: &TableCase) -> Vec<(String, String)> {
-        BodyRun::cells(self)
-    }
-
-    fn stopped(&self) -> bool {
-        self.stopped
-    }
-
-    fn kept(&self) -> String {
-        BodyRun::kept(self)
-    }
-
-    fn failure(&self) -> Option<KindError> {
-        (self.error.clone()).map(|error| KindError::Run(Box::new(error)))
-    }
-
-    fn warnings(&self) -> Vec<String> {
-        self.summary.warnings.clone()
     }
 }

@@ -56,7 +56,7 @@ pub use keys::KEYS;
 pub use kind::{KIND, NAME};
 pub use linear::Plant;
 pub use loads::{PendulumLoads, PlanarLoads, PreparedLoads, SceneLoads, SpatialLoads, TopLoads};
-pub use run::BodyRun;
+pub use run::BodyOutcome;
 pub use scene::{Body, BodyScene, IntegratorSpec, LOOSE_TOLERANCE, read};
 pub use select::{Selection, select_spatial};
 pub use solve::{Outcome, Report, RunError, run, run_reporting};

@@ -1,60 +1,51 @@
-//! A body's one run: its rows to the recorder, the figures its family measures from them, its
-//! summary, its report, its line in a sweep's table and its drawing.
+//! A body's one run as the one runner ([`crate::run::scene`]) runs it: the figures its family
+//! measures from its rows, its section of the summary, its report, its line in a sweep's table
+//! and its drawing.
 
 use super::summary::{BodySection, Extra};
 use super::{Body, BodyScene, Report, RunError, SceneLoads, run_reporting};
 use crate::Short;
-use crate::kinds::KindError;
-use crate::output::drawing::{BodyShape, Drawing, RigidBody, RunDrawings};
+use crate::kind::KindError;
+use crate::output::drawing::{BodyShape, Drawing, RigidBody};
 use crate::output::summary::{Figure, IntegratorSummary, RunFigures, Summary};
 use crate::output::text::printable;
 use crate::output::trajectory::number_text;
-use crate::run::record::{Recorder, RunStart};
+use crate::run::scene::{Closing, Counts, Failed, Ran, Rows, RunPlan, SceneRuns, Setting};
 use crate::run::{Row, Sink};
+use crate::scene::sweep::TableCase;
 use std::fmt::Write;
 
 /// The pendulum's period, measured from its rows ([`crate::swing::measure_period`]).
 const PERIOD: &str = "period_s";
 
-/// A body's run as it ended: at its end time, at its stop condition, stopped by the recorder,
-/// or failed where it failed.
-#[derive(Debug)]
-pub struct BodyRun<'a> {
-    scene: &'a BodyScene,
+/// A body's run as it ended: at its end time, at its stop condition, stopped by the caller,
+/// or failed where it failed (the runner keeps why).
+#[derive(Debug, Clone)]
+pub struct BodyOutcome {
     /// What the run did, up to where it ended.
     pub report: Report,
-    /// Why it ended before its end time, where it failed.
-    pub error: Option<RunError>,
-    /// Whether the recorder stopped it (Ctrl-C) before its end time, or while its refined
-    /// run checked its figures.
-    pub stopped: bool,
     /// The rows the recorder took.
     pub rows: usize,
     /// The family's figures (the pendulum's period), each or why it is not given.
     pub measures: Vec<(&'static str, Result<f64, String>)>,
     /// How far each figure moved when the run was refined (`None` where the refined run gave
-    /// none); empty where the run gave no figure, or did not end as it should.
+    /// none); empty where the run gave no figure, was not refined, or did not end as it
+    /// should.
     pub refined: Vec<(&'static str, Option<f64>)>,
-    /// `summary.json`.
-    pub summary: Summary<BodySection>,
 }
 
-/// The rows to the recorder, counted, with what the family's figures are measured from.
-struct Recording<'a> {
-    recorder: &'a mut dyn Recorder,
-    rows: usize,
+/// The rows to the runner's, with what the family's figures are measured from.
+struct Recording<'a, 'r> {
+    rows: &'a mut Rows<'r>,
     /// Each row's time and first state entry, for a family that measures a figure from them.
     measured: Option<(Vec<f64>, Vec<f64>)>,
 }
 
-impl Sink for Recording<'_> {
+impl Sink for Recording<'_, '_> {
     fn row(&mut self, row: &Row) -> bool {
-        let taken = self.recorder.row(row);
-        if taken {
-            self.rows += 1;
-            if let Some(measured) = &mut self.measured {
-                keep(measured, row);
-            }
+        let taken = self.rows.take(row);
+        if taken && let Some(measured) = &mut self.measured {
+            keep(measured, row);
         }
         taken
     }
@@ -87,121 +78,204 @@ pub(super) fn trajectory_numbers(scene: &BodyScene) -> f64 {
     rows * (1.0 + scene.state_names().len() as f64 + energies)
 }
 
-/// Runs `scene` (`name`, its file as the summary names it), its rows to `recorder` under the
-/// top of the output, then its drawing where it gave two rows or more. A failure of the run
-/// is kept in what it returns; an error is the recorder's alone.
-pub(super) fn run_body<'a>(
-    scene: &'a BodyScene,
-    name: &str,
-    recorder: &mut dyn Recorder,
-) -> Result<BodyRun<'a>, KindError> {
-    let names = scene.state_names();
-    let start = RunStart {
-        path: "",
-        columns: &names,
-        expected_rows: (scene.integrator.end_time / scene.every) as usize + 1,
-        end_time: scene.integrator.end_time,
-        potential: has_potential(scene),
-        energy_unit: crate::models::ENERGY_UNIT,
-    };
-    recorder.begin(start).map_err(KindError::Output)?;
-    let mut recording = Recording {
-        recorder,
-        rows: 0,
-        measured: (!measure_keys(scene).is_empty()).then(Default::default),
-    };
-    let ran = run_reporting(scene, &mut recording);
-    let Recording {
-        recorder,
-        rows,
-        measured,
-    } = recording;
-    // A row the recorder could not keep is its error, before anything the run says.
-    recorder.end().map_err(KindError::Output)?;
-    let mut stopped = matches!(ran.error, Some(RunError::Stopped { .. }));
-    let error = ran.error.filter(|_| !stopped);
-    let measures = measures(scene, measured.as_ref());
-    let mut summary = summary_of(scene, name, &ran.report, &names);
-    summary.error = error.as_ref().map(RunError::to_string);
-    for (key, value) in &measures {
-        match value {
-            Ok(value) => {
-                (summary.section.extra).insert((*key).into(), Extra::Number(*value));
+impl SceneRuns for BodyScene {
+    type Shared = ();
+    type Outcome = BodyOutcome;
+    type Section = BodySection;
+
+    fn kind_name(&self) -> &'static str {
+        super::kind::NAME
+    }
+
+    fn scene_title(&self) -> &str {
+        &self.title
+    }
+
+    fn integrator(&self) -> IntegratorSummary {
+        let spec = &self.integrator;
+        IntegratorSummary::settings(spec.method, spec.step, spec.adaptive)
+    }
+
+    fn prepare(&self) -> Result<(), KindError> {
+        Ok(())
+    }
+
+    /// Its one run, at the top of the output.
+    fn plans(&self, _: &()) -> Vec<RunPlan> {
+        vec![RunPlan {
+            path: String::new(),
+            columns: self.state_names(),
+            expected_rows: (self.integrator.end_time / self.every) as usize + 1,
+            end_time: self.integrator.end_time,
+            potential: has_potential(self),
+            energy_unit: crate::models::ENERGY_UNIT,
+        }]
+    }
+
+    /// The run with the scene's method, or refined; a run that fails keeps what it ran.
+    fn run_one(
+        &self,
+        _: &(),
+        _index: usize,
+        setting: Setting,
+        rows: &mut Rows,
+    ) -> Result<BodyOutcome, Failed<BodyOutcome>> {
+        let refined;
+        let scene = match setting {
+            Setting::Scene => self,
+            Setting::Refined => {
+                let mut finer = self.clone();
+                finer.integrator = self.integrator.refined(self.every);
+                refined = finer;
+                &refined
             }
-            Err(why) => summary.warnings.push(not_given(key, why)),
+        };
+        let measuring = !measure_keys(scene).is_empty();
+        let mut recording = Recording {
+            rows,
+            measured: measuring.then(Default::default),
+        };
+        let ran = run_reporting(scene, &mut recording);
+        let measured = recording.measured;
+        let outcome = BodyOutcome {
+            report: ran.report,
+            rows: recording.rows.taken(),
+            measures: measures(scene, measured.as_ref()),
+            refined: Vec::new(),
+        };
+        let error = match ran.error {
+            None => return Ok(outcome),
+            Some(stopped @ RunError::Stopped { .. }) => KindError::Stopped(Box::new(stopped)),
+            Some(error) => KindError::Run(Box::new(error)),
+        };
+        Err(Failed {
+            error,
+            kept: Some(outcome),
+        })
+    }
+
+    fn counts(&self, outcome: &BodyOutcome) -> Counts {
+        let report = &outcome.report;
+        Counts {
+            steps: report.steps as u64,
+            rejected: Some(report.rejected as u64),
+            rhs_evals: report.rhs_evals as u64,
         }
     }
-    let refined = match (&error, stopped) {
-        (None, false) => refined_differences(scene, &measures, &|| recorder.stop_asked()),
-        _ => Refined::default(),
-    };
-    // A stop asked during the refined run stops the scene's run as one during its rows does.
-    stopped |= refined.stopped;
-    summary.interrupted = stopped;
-    summary.warnings.extend(refined.warnings);
-    let refined = refined.differences;
-    if !refined.is_empty() {
-        let differences = (refined.iter())
-            .map(|(k, d)| ((*k).to_owned(), *d))
-            .collect();
-        let key = scene.integrator.refinement_key();
-        (summary.section.extra).insert(key.into(), Extra::Differences(differences));
-    }
-    summary.runs = vec![run_figures(scene, &measures, &refined)];
-    if let Some(condition) = &scene.stop {
-        let extra = &mut summary.section.extra;
-        extra.insert("stop_when".into(), Extra::Text(condition.text.clone()));
-        extra.insert("stopped_at".into(), Extra::Time(ran.report.stopped_at));
-    }
-    // A plot needs two rows; a run stopped at its start has at most one.
-    if rows >= 2 {
-        let drawings = RunDrawings {
-            path: String::new(),
-            drawings: vec![Drawing::RigidBody(drawing(scene))],
-        };
-        recorder.drawn(drawings).map_err(KindError::Output)?;
-    }
-    Ok(BodyRun {
-        scene,
-        report: ran.report,
-        error,
-        stopped,
-        rows,
-        measures,
-        refined,
-        summary,
-    })
-}
 
-/// The summary of a run of `scene` (`name`, its file) that reported `report`, before its
-/// figures: the settings and statistics, the model and where the run ended.
-fn summary_of(
-    scene: &BodyScene,
-    name: &str,
-    report: &Report,
-    names: &[String],
-) -> Summary<BodySection> {
-    let spec = &scene.integrator;
-    let integrator = IntegratorSummary {
-        steps: report.steps as u64,
-        rejected: Some(report.rejected as u64),
-        rhs_evals: Some(report.rhs_evals as u64),
-        ..IntegratorSummary::settings(spec.method, spec.step, spec.adaptive)
-    };
-    let selection = &scene.selection;
-    Summary {
-        kind: super::kind::NAME,
-        scene: name.to_owned(),
-        title: scene.title.clone(),
-        integrator,
-        wall_seconds: report.wall_seconds,
-        interrupted: false,
-        error: None,
-        warnings: report.warnings.clone(),
-        case: None,
-        runs: Vec::new(),
-        verdicts: Vec::new(),
-        section: BodySection::new((selection.info, selection.reason.clone()), report, names),
+    /// A run that gave no figure is not refined.
+    fn worth_refining(&self, outcome: &BodyOutcome) -> bool {
+        outcome.measures.iter().any(|(_, value)| value.is_ok())
+    }
+
+    fn take_refined(
+        &self,
+        _index: usize,
+        outcome: &mut BodyOutcome,
+        refined: Result<BodyOutcome, KindError>,
+    ) -> Vec<String> {
+        let key = self.integrator.refinement_key();
+        let mut warnings = Vec::new();
+        let refined_measures = refined.as_ref().map(|refined| &refined.measures);
+        outcome.refined = (outcome.measures.iter().enumerate())
+            .filter_map(|(k, (name, value))| {
+                let value = value.as_ref().ok()?;
+                let difference = match &refined_measures {
+                    Ok(measures) => match &measures[k].1 {
+                        Ok(refined) => Some((value - refined).abs()),
+                        Err(why) => {
+                            warnings.push(format!("{key} of {name} is not given: {why}"));
+                            None
+                        }
+                    },
+                    Err(error) => {
+                        let error = error.message();
+                        warnings.push(format!("{key} of {name} is not given: refined, {error}"));
+                        None
+                    }
+                };
+                Some((*name, difference))
+            })
+            .collect();
+        warnings
+    }
+
+    fn figures(&self, _: &RunPlan, outcome: &BodyOutcome) -> RunFigures {
+        run_figures(self, &outcome.measures, &outcome.refined)
+    }
+
+    fn drawings(&self, _: &(), _: usize, _: &BodyOutcome) -> Vec<Drawing> {
+        vec![Drawing::RigidBody(drawing(self))]
+    }
+
+    /// The model and where the run ended, its figures, how far they moved refined, and where
+    /// a stop condition ended it.
+    fn close(&self, ran: &Ran<'_, Self>) -> Closing<BodySection> {
+        let selection = &self.selection;
+        let Some(outcome) = ran.outcome(0) else {
+            // Stopped before it began: the model alone.
+            let section = BodySection::new(
+                (selection.info, selection.reason.clone()),
+                &Report::default(),
+                &self.state_names(),
+            );
+            return Closing {
+                section,
+                verdicts: Vec::new(),
+                warnings: Vec::new(),
+            };
+        };
+        let report = &outcome.report;
+        let names = self.state_names();
+        let mut section =
+            BodySection::new((selection.info, selection.reason.clone()), report, &names);
+        let mut warnings = report.warnings.clone();
+        for (key, value) in &outcome.measures {
+            match value {
+                Ok(value) => {
+                    (section.extra).insert((*key).into(), Extra::Number(*value));
+                }
+                Err(why) => warnings.push(not_given(key, why)),
+            }
+        }
+        if !outcome.refined.is_empty() {
+            let differences = (outcome.refined.iter())
+                .map(|(k, d)| ((*k).to_owned(), *d))
+                .collect();
+            let key = self.integrator.refinement_key();
+            (section.extra).insert(key.into(), Extra::Differences(differences));
+        }
+        if let Some(condition) = &self.stop {
+            section
+                .extra
+                .insert("stop_when".into(), Extra::Text(condition.text.clone()));
+            (section.extra).insert("stopped_at".into(), Extra::Time(report.stopped_at));
+        }
+        Closing {
+            section,
+            verdicts: Vec::new(),
+            warnings,
+        }
+    }
+
+    fn report(&self, ran: &Ran<'_, Self>) -> String {
+        (ran.outcome(0))
+            .map(|outcome| report(self, outcome).unwrap_or_default())
+            .unwrap_or_default()
+    }
+
+    fn cells(&self, ran: &Ran<'_, Self>, _: &TableCase) -> Vec<(String, String)> {
+        let whole = ran.failures.is_empty() && !ran.stopped;
+        cells(self, ran.outcome(0), whole)
+    }
+
+    fn kept(&self, ran: &Ran<'_, Self>) -> String {
+        kept(self, ran.outcome(0), ran.stopped)
+    }
+
+    /// In the order of its section's fields (the section as a JSON value would sort them).
+    fn summary_file(&self, summary: &Summary<BodySection>, case: Option<&TableCase>) -> Vec<u8> {
+        summary.file(case)
     }
 }
 
@@ -234,79 +308,6 @@ fn run_figures(
         refinement: (!refined.is_empty()).then(|| scene.integrator.method.refinement()),
         largest_difference: None,
         notes,
-    }
-}
-
-/// The rows of a refined run, kept for the figures alone; the run ends when the caller asks
-/// (Ctrl-C).
-struct Kept<'a> {
-    measured: (Vec<f64>, Vec<f64>),
-    stop_asked: &'a dyn Fn() -> bool,
-}
-
-impl Sink for Kept<'_> {
-    fn row(&mut self, row: &Row) -> bool {
-        keep(&mut self.measured, row);
-        !(self.stop_asked)()
-    }
-}
-
-/// What refining a run gave: how far each figure moved, by key (`None` where the refined run
-/// gave none), a warning for each such, and whether the caller stopped it.
-#[derive(Default)]
-struct Refined {
-    differences: Vec<(&'static str, Option<f64>)>,
-    warnings: Vec<String>,
-    stopped: bool,
-}
-
-/// How far each figure given moves when the scene runs again refined
-/// ([`super::IntegratorSpec::refined`]). Nothing where the run gave no figure.
-fn refined_differences(
-    scene: &BodyScene,
-    measures: &[(&'static str, Result<f64, String>)],
-    stop_asked: &dyn Fn() -> bool,
-) -> Refined {
-    if !measures.iter().any(|(_, value)| value.is_ok()) {
-        return Refined::default();
-    }
-    let mut finer = scene.clone();
-    finer.integrator = scene.integrator.refined(scene.every);
-    let mut kept = Kept {
-        measured: Default::default(),
-        stop_asked,
-    };
-    let ran = run_reporting(&finer, &mut kept);
-    if let Some(RunError::Stopped { .. }) = ran.error {
-        return Refined {
-            stopped: true,
-            ..Refined::default()
-        };
-    }
-    let refined_measures = self::measures(&finer, Some(&kept.measured));
-    let key = scene.integrator.refinement_key();
-    let mut warnings = Vec::new();
-    let differences = (measures.iter().zip(refined_measures))
-        .filter_map(|((name, value), (_, refined))| {
-            let value = value.as_ref().ok()?;
-            let difference = match (&ran.error, refined) {
-                (None, Ok(refined)) => Some((value - refined).abs()),
-                (Some(error), _) => {
-                    warnings.push(format!("{key} of {name} is not given: refined, {error}"));
-                    None
-                }
-                (None, Err(why)) => {
-                    warnings.push(format!("{key} of {name} is not given: {why}"));
-                    None
-                }
-            };
-            Some((*name, difference))
-        })
-        .collect();
-    Refined {
-        differences,
-        warnings,
-        stopped: false,
     }
 }
 
@@ -375,120 +376,115 @@ fn in_water(loads: &SceneLoads) -> bool {
     }
 }
 
-impl BodyRun<'_> {
-    /// The report as `eom run` prints it: the model and why, its cost against the full
-    /// variant's, the integration, the energy drift and where a stop condition ended it.
-    pub fn report(&self) -> String {
-        self.write_report().unwrap_or_default()
-    }
-
-    fn write_report(&self) -> Result<String, std::fmt::Error> {
-        let scene = self.scene;
-        let info = scene.selection.info;
-        let (ops, full) = (info.operations, info.full_variant().operations);
-        let report = &self.report;
-        let mut text = String::new();
-        let out = &mut text;
-        let title = printable(&scene.title);
+/// The report as `eom run` prints it: the model and why, its cost against the full variant's,
+/// the integration, the energy drift and where a stop condition ended it.
+fn report(scene: &BodyScene, outcome: &BodyOutcome) -> Result<String, std::fmt::Error> {
+    let info = scene.selection.info;
+    let (ops, full) = (info.operations, info.full_variant().operations);
+    let report = &outcome.report;
+    let mut text = String::new();
+    let out = &mut text;
+    let title = printable(&scene.title);
+    writeln!(
+        out,
+        "{title}: ran {} ({})",
+        info.name, scene.selection.reason
+    )?;
+    if full.arithmetic() != ops.arithmetic() {
         writeln!(
             out,
-            "{title}: ran {} ({})",
-            info.name, scene.selection.reason
+            "  {} arithmetic operations per call, against {} for {}",
+            ops.arithmetic(),
+            full.arithmetic(),
+            info.full_variant().name
         )?;
-        if full.arithmetic() != ops.arithmetic() {
-            writeln!(
-                out,
-                "  {} arithmetic operations per call, against {} for {}",
-                ops.arithmetic(),
-                full.arithmetic(),
-                info.full_variant().name
-            )?;
-        }
+    }
+    writeln!(
+        out,
+        "  {}: {} steps ({} rejected), {} rhs calls, {:.3} s",
+        scene.integrator.method.name(),
+        report.steps,
+        report.rejected,
+        report.rhs_evals,
+        report.wall_seconds
+    )?;
+    if let Some(drift) = report.energy_drift {
         writeln!(
             out,
-            "  {}: {} steps ({} rejected), {} rhs calls, {:.3} s",
-            scene.integrator.method.name(),
-            report.steps,
-            report.rejected,
-            report.rhs_evals,
-            report.wall_seconds
+            "  energy drift {drift:.2e} (largest |E − E₀| over the rows, relative to max(|E₀|, largest T))"
         )?;
-        if let Some(drift) = report.energy_drift {
+    }
+    for ((key, value), (_, moved)) in outcome.measures.iter().zip(&outcome.refined) {
+        if let (Ok(value), Some(moved)) = (value, moved) {
             writeln!(
                 out,
-                "  energy drift {drift:.2e} (largest |E − E₀| over the rows, relative to max(|E₀|, largest T))"
+                "  {key} = {}, which {} moves by {moved:.1e}",
+                Short(*value),
+                scene.integrator.method.refinement()
             )?;
         }
-        for ((key, value), (_, moved)) in self.measures.iter().zip(&self.refined) {
-            if let (Ok(value), Some(moved)) = (value, moved) {
-                writeln!(
-                    out,
-                    "  {key} = {}, which {} moves by {moved:.1e}",
-                    Short(*value),
-                    scene.integrator.method.refinement()
-                )?;
-            }
-        }
-        if let (Some(t), Some(condition)) = (report.stopped_at, &scene.stop) {
-            writeln!(
-                out,
-                "  stopped at t = {} s, where `{condition}` first held (summary.json: stopped_at, every digit)",
-                Short(t)
-            )?;
-        }
-        Ok(text)
     }
-
-    /// The columns of a body's sweep's table after the case and its swept values, with this
-    /// run's values: `variant, steps, rhs_evals, wall_seconds, energy_drift, <the family's
-    /// figures…>, final_<state…>`; all but the variant empty where the run failed.
-    pub fn cells(&self) -> Vec<(String, String)> {
-        let scene = self.scene;
-        let ran = self.error.is_none() && !self.stopped;
-        let value = |text: String| if ran { text } else { String::new() };
-        let report = &self.report;
-        let mut cells = vec![
-            ("variant".to_owned(), scene.selection.info.name.to_owned()),
-            ("steps".into(), value(report.steps.to_string())),
-            ("rhs_evals".into(), value(report.rhs_evals.to_string())),
-            (
-                "wall_seconds".into(),
-                value(number_text(report.wall_seconds)),
-            ),
-        ];
-        let drift = report.energy_drift.map_or_else(String::new, number_text);
-        cells.push(("energy_drift".into(), value(drift)));
-        for (key, measure) in &self.measures {
-            let text = measure
-                .as_ref()
-                .map_or_else(|_| String::new(), |v| number_text(*v));
-            cells.push(((*key).to_owned(), value(text)));
-        }
-        for (k, name) in scene.state_names().iter().enumerate() {
-            let x = report
-                .final_state
-                .get(k)
-                .map_or_else(String::new, |x| number_text(*x));
-            cells.push((format!("final_{name}"), value(x)));
-        }
-        cells
+    if let (Some(t), Some(condition)) = (report.stopped_at, &scene.stop) {
+        writeln!(
+            out,
+            "  stopped at t = {} s, where `{condition}` first held (summary.json: stopped_at, every digit)",
+            Short(t)
+        )?;
     }
+    Ok(text)
+}
 
-    /// What the run kept when it ended early, in words.
-    pub fn kept(&self) -> String {
-        let (t, end) = (self.report.final_time, self.scene.integrator.end_time);
-        match (self.stopped, self.rows) {
-            (true, _) => format!(
-                "every row up to t = {} s of {} s in trajectory.csv, summary.json \
+/// The columns of a body's sweep's table after the case and its swept values, with this run's
+/// values: `variant, steps, rhs_evals, wall_seconds, energy_drift, <the family's figures…>,
+/// final_<state…>`; all but the variant empty where the run failed (`whole` false).
+fn cells(scene: &BodyScene, outcome: Option<&BodyOutcome>, whole: bool) -> Vec<(String, String)> {
+    let ran = whole && outcome.is_some();
+    let value = |text: String| if ran { text } else { String::new() };
+    let default = Report::default();
+    let report = outcome.map_or(&default, |outcome| &outcome.report);
+    let measures = outcome.map_or(&[][..], |outcome| &outcome.measures[..]);
+    let mut cells = vec![
+        ("variant".to_owned(), scene.selection.info.name.to_owned()),
+        ("steps".into(), value(report.steps.to_string())),
+        ("rhs_evals".into(), value(report.rhs_evals.to_string())),
+        (
+            "wall_seconds".into(),
+            value(number_text(report.wall_seconds)),
+        ),
+    ];
+    let drift = report.energy_drift.map_or_else(String::new, number_text);
+    cells.push(("energy_drift".into(), value(drift)));
+    for (key, measure) in measures {
+        let text = measure
+            .as_ref()
+            .map_or_else(|_| String::new(), |v| number_text(*v));
+        cells.push(((*key).to_owned(), value(text)));
+    }
+    for (k, name) in scene.state_names().iter().enumerate() {
+        let x = report
+            .final_state
+            .get(k)
+            .map_or_else(String::new, |x| number_text(*x));
+        cells.push((format!("final_{name}"), value(x)));
+    }
+    cells
+}
+
+/// What the run kept when it ended early, in words.
+fn kept(scene: &BodyScene, outcome: Option<&BodyOutcome>, stopped: bool) -> String {
+    let (t, rows) = outcome.map_or((0.0, 0), |o| (o.report.final_time, o.rows));
+    let end = scene.integrator.end_time;
+    match (stopped, rows) {
+        (true, _) => format!(
+            "every row up to t = {} s of {} s in trajectory.csv, summary.json \
                  (\"interrupted\": true) and the plots",
-                Short(t),
-                Short(end)
-            ),
-            (false, 0) => "its summary.json (the run stopped at its start)".into(),
-            (false, _) => format!(
-                "its rows up to t = {} s, summary.json and the plots",
-                Short(t)
-            ),
-        }
+            Short(t),
+            Short(end)
+        ),
+        (false, 0) => "its summary.json (the run stopped at its start)".into(),
+        (false, _) => format!(
+            "its rows up to t = {} s, summary.json and the plots",
+            Short(t)
+        ),
     }
 }

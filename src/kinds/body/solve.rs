@@ -71,7 +71,7 @@ use std::time::Instant;
 use thiserror::Error;
 
 /// What a finished run reports.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, Default, PartialEq)]
 pub struct Report {
     /// Accepted steps.
     pub steps: usize,

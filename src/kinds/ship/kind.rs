@@ -6,15 +6,11 @@ use super::keys;
 use super::linear::{LinearModel, linearise_ship, nomoto_report};
 use super::manoeuvre::ROW;
 use super::manoeuvre::trajectory_columns;
-use super::run::{Finished, run_scene};
 use super::summary::LinearSummary;
 use super::{ShipError, ShipModel, ShipScene};
 use crate::kinds::{self, Columns, KindError, Linearised, Reference, Registered, Source};
-use crate::output::summary::{RunFigures, Summary, Verdict};
-use crate::run::record::Recorder;
 use crate::scene::SceneError;
 use crate::scene::reference::SceneFamily;
-use crate::scene::sweep::TableCase;
 use std::any::Any;
 use std::path::Path;
 
@@ -41,6 +37,7 @@ pub const KIND: Registered = Registered {
     recognises,
     reads_the_rest: false,
     read,
+    example: "mariner.toml",
 };
 
 /// A ship's scene has `[hydrodynamics]` and is not a vehicle's.
@@ -87,14 +84,6 @@ impl kinds::Kind for ShipScene {
         rows * (ROW.len() + 2) as f64
     }
 
-    fn run(
-        &self,
-        name: &str,
-        recorder: &mut dyn Recorder,
-    ) -> Result<Box<dyn kinds::Finished + '_>, KindError> {
-        Ok(Box::new(run_scene(self, name, recorder)?))
-    }
-
     fn linear(&self) -> Result<Linearised, KindError> {
         let model = ShipModel::new(&self.table)?;
         let linear = LinearModel::closed_form(&self.table);
@@ -122,31 +111,5 @@ impl kinds::Kind for ShipScene {
 
     fn into_any(self: Box<Self>) -> Box<dyn Any> {
         self
-    }
-}
-
-impl kinds::Finished for Finished<'_> {
-    fn summary(&self) -> Summary {
-        self.summary.clone().into_json()
-    }
-
-    fn figures(&self) -> (&[RunFigures], &[Verdict]) {
-        (&self.summary.runs, &self.summary.verdicts)
-    }
-
-    fn report(&self) -> String {
-        Finished::report(self)
-    }
-
-    fn cells(&self, case: &TableCase) -> Vec<(String, String)> {
-        Finished::cells(self, case)
-    }
-
-    fn stopped(&self) -> bool {
-        self.stopped
-    }
-
-    fn kept(&self) -> String {
-        kinds::manoeuvres_kept(self.outcomes.len())
     }
 }

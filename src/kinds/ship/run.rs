@@ -1,10 +1,9 @@
-//! A ship scene run: every manoeuvre (each side of a two-sided one) with the scene's method,
-//! its rows handed to the caller's [`Recorder`], run again refined for how far each figure
-//! moves; the IMO criteria judged on them; the summary (`summary.json`'s types,
-//! [`super::summary`]), the report as text, and a sweep case's line. What is written where,
-//! and whether a run may go on, is the recorder's: this module opens no file.
+//! A ship scene's runs as the one runner ([`crate::run::scene`]) runs them: every manoeuvre,
+//! each side of a two-sided one, from the same straight approach; the IMO criteria judged on
+//! their figures; the ship's section of the summary (`summary.json`'s types,
+//! [`super::summary`]), the report as text, and a sweep case's line. The runner does the
+//! loop, the rows, the refined run and the summary's shared keys; this module opens no file.
 
-use super::ShipError;
 use super::Side;
 use super::imo::{Criterion, Trial, criteria, possible};
 use super::linear::LinearModel;
@@ -18,15 +17,15 @@ use super::summary::{
     run_figures, verdict,
 };
 use super::{Manoeuvre, ShipModel, ShipScene};
-use crate::output::drawing::{Curves, Drawing, Hull, Mark, PlaneManoeuvre, RunDrawings};
-use crate::output::summary::{IntegratorSummary, RunFigures, Summary};
+use crate::kind::KindError;
+use crate::output::drawing::{Curves, Drawing, Hull, Mark, PlaneManoeuvre};
+use crate::output::summary::{IntegratorSummary, RunFigures};
 use crate::output::text::printable;
 use crate::run::Row;
-use crate::run::record::{Recorder, RunStart};
+use crate::run::scene::{Closing, Counts, Failed, Ran, Rows, RunPlan, SceneRuns, Setting};
 use crate::scene::sweep::{TableCase, manoeuvre_columns};
 use crate::{Model, Short, fixed};
 use std::fmt::Write;
-use std::time::Instant;
 
 /// A manoeuvre run with the scene's method, and the same refined (`Stepper::refined`: half
 /// the step, or tolerances a hundred times tighter).
@@ -34,8 +33,8 @@ use std::time::Instant;
 pub struct Outcome {
     /// The figures of the run with the scene's method.
     pub figures: Figures,
-    /// The same, refined.
-    pub refined: Figures,
+    /// The same, refined; `None` where the run was not refined (a Monte Carlo's case).
+    pub refined: Option<Figures>,
     /// The steps the run took.
     pub steps: u64,
     /// Its evaluations of the right-hand side.
@@ -67,199 +66,298 @@ pub fn shown<'a>(manoeuvre: &Manoeuvre, runs: &'a Runs) -> Option<&'a Outcome> {
     }
 }
 
-/// What a ship scene's run gave: its summary, each manoeuvre's runs (those finished before a
-/// stop was asked), the IMO criteria judged on them, and whether a stop was asked.
-#[derive(Debug, Clone)]
-pub struct Finished<'a> {
-    /// The scene that ran.
-    pub scene: &'a ShipScene,
-    /// `summary.json`.
-    pub summary: Summary<ShipSection>,
-    /// Each manoeuvre's runs, in the scene's order.
-    pub outcomes: Vec<Runs>,
-    /// The IMO criteria the runs allow.
-    pub judged: Vec<Criterion>,
-    /// Whether the recorder asked the run to stop before every manoeuvre had run.
-    pub stopped: bool,
+/// What every run of a ship scene's run shares: the model, derived and proved, the linear
+/// model about the straight course, and each run's manoeuvre (each side of a two-sided one)
+/// in the order run.
+#[derive(Debug)]
+pub struct Shared {
+    /// The table's model.
+    pub model: ShipModel,
+    /// The linear model about the straight course, in closed form.
+    pub linear: LinearModel,
+    /// Each run: its manoeuvre's index in the scene, its side, the manoeuvre as run to it.
+    pub runs: Vec<(usize, Option<Side>, Manoeuvre)>,
 }
 
-impl Finished<'_> {
-    /// The report as the command prints it: each manoeuvre's figures (a column per side), the
-    /// spirals, the IMO criteria.
-    pub fn report(&self) -> String {
-        report(self.scene, &self.outcomes, &self.judged).unwrap_or_default()
+/// Each manoeuvre's runs that finished, in the scene's order (empty for one that gave none).
+fn grouped(ran: &Ran<'_, ShipScene>) -> Vec<Runs> {
+    let mut grouped: Vec<Runs> = vec![Runs::new(); ran.scene.manoeuvres.len()];
+    for (index, outcome) in &ran.outcomes {
+        let (manoeuvre, side, _) = &ran.shared.runs[*index];
+        grouped[*manoeuvre].push((*side, outcome.clone()));
+    }
+    grouped
+}
+
+/// The path of a manoeuvre's run under the output: `manoeuvre/side` for one of two sides.
+fn path(manoeuvre: &Manoeuvre, side: Option<Side>, sides: usize) -> String {
+    match side {
+        Some(side) if sides > 1 => format!("{}/{}", manoeuvre.name, side.name()),
+        _ => manoeuvre.name.clone(),
+    }
+}
+
+impl SceneRuns for ShipScene {
+    type Shared = Shared;
+    type Outcome = Outcome;
+    type Section = ShipSection;
+
+    fn kind_name(&self) -> &'static str {
+        super::KIND.name
     }
 
-    /// Each column of a ship sweep's table with its value in this run, in the table's order: each
-    /// manoeuvre's figures (the worse side's, for one run to both), then each side's
-    /// (`turn.port.tactical_diameter_m`), then each IMO criterion's value, verdict and sides; a
-    /// manoeuvre's columns are named as [`manoeuvre_columns`] says.
-    pub fn cells(&self, case: &TableCase) -> Vec<(String, String)> {
-        let scene = self.scene;
-        let text = |value: Option<f64>| value.map_or_else(String::new, |v| v.to_string());
-        let mut cells = Vec::new();
-        let names = manoeuvre_columns(
-            case,
-            scene.manoeuvres.iter().map(|m| m.name.as_str()),
-            &NAMED_FROM,
+    fn scene_title(&self) -> &str {
+        &self.title
+    }
+
+    fn integrator(&self) -> IntegratorSummary {
+        let stepper = &self.stepper;
+        IntegratorSummary::settings(stepper.method, stepper.step, stepper.adaptive)
+    }
+
+    fn prepare(&self) -> Result<Shared, KindError> {
+        let runs = (self.manoeuvres.iter().enumerate())
+            .flat_map(|(index, manoeuvre)| {
+                (manoeuvre.runs().into_iter()).map(move |(side, one)| (index, side, one))
+            })
+            .collect();
+        Ok(Shared {
+            model: ShipModel::new(&self.table)?,
+            linear: LinearModel::closed_form(&self.table),
+            runs,
+        })
+    }
+
+    /// Each side's run of each manoeuvre: t, [`ROW`] and the rigid body's kinetic energy.
+    fn plans(&self, shared: &Shared) -> Vec<RunPlan> {
+        (shared.runs.iter())
+            .map(|(index, side, one)| {
+                let manoeuvre = &self.manoeuvres[*index];
+                RunPlan {
+                    path: path(manoeuvre, *side, manoeuvre.sides.len()),
+                    columns: ROW.map(str::to_owned).to_vec(),
+                    expected_rows: (one.duration / self.every) as usize + 1,
+                    end_time: one.duration,
+                    potential: false,
+                    energy_unit: crate::models::ENERGY_UNIT,
+                }
+            })
+            .collect()
+    }
+
+    fn run_one(
+        &self,
+        shared: &Shared,
+        index: usize,
+        setting: Setting,
+        rows: &mut Rows,
+    ) -> Result<Outcome, Failed<Outcome>> {
+        let (number, _, one) = &shared.runs[index];
+        let stepper = match setting {
+            Setting::Scene => self.stepper.clone(),
+            Setting::Refined => self.stepper.refined(self.every),
+        };
+        let model = &shared.model;
+        let start = (self.start(), self.stop.as_ref());
+        let done = run_until(
+            model,
+            &self.rudder,
+            one,
+            start,
+            (&stepper, self.every),
+            |sample| {
+                if !rows.keeps() {
+                    return !rows.stop_asked();
+                }
+                rows.take(&Row {
+                    t: sample.t,
+                    state: &sample.row(),
+                    kinetic_energy: model.kinetic_energy(&sample.model_state()),
+                    potential_energy: None,
+                })
+            },
         );
-        for ((manoeuvre, runs), name) in scene.manoeuvres.iter().zip(&self.outcomes).zip(&names) {
-            if let Some(outcome) = shown(manoeuvre, runs) {
-                for (key, value) in &outcome.figures.values {
-                    cells.push((format!("{name}.{key}"), text(*value)));
-                }
-            }
-            for (side, outcome) in runs.iter().filter(|_| runs.len() > 1) {
-                let side = side.map_or("", Side::name);
-                for (key, value) in &outcome.figures.values {
-                    cells.push((format!("{name}.{side}.{key}"), text(*value)));
-                }
-            }
+        let manoeuvre = &self.manoeuvres[*number].name;
+        let done = done.map_err(|e| KindError::from(e.in_manoeuvre(manoeuvre)))?;
+        Ok(Outcome {
+            figures: done.figures,
+            refined: None,
+            steps: done.steps,
+            rhs_evals: done.rhs_evals,
+            stopped_at: done.stopped_at,
+        })
+    }
+
+    fn counts(&self, outcome: &Outcome) -> Counts {
+        Counts {
+            steps: outcome.steps,
+            rejected: None,
+            rhs_evals: outcome.rhs_evals,
         }
-        // Every criterion the scene's kinds may give, judged in this case or not, so that the
-        // columns do not depend on a swept angle (a turn at 20° is not judged; at 35° it is).
-        for (name, sided) in possible(scene) {
-            let criterion = self.judged.iter().find(|c| c.name == name);
-            let value = criterion.and_then(|c| c.value);
-            let pass = criterion.and_then(Criterion::pass);
-            cells.push((format!("imo.{name}"), text(value)));
-            cells.push((
-                format!("imo.{name}.pass"),
-                pass.map_or_else(String::new, |p| p.to_string()),
-            ));
-            for side in Side::BOTH.iter().filter(|_| sided) {
-                let value = (criterion.iter().flat_map(|c| &c.sides))
-                    .find(|(s, _)| s == side)
-                    .and_then(|(_, v)| *v);
-                cells.push((format!("imo.{name}.{}", side.name()), text(value)));
+    }
+
+    fn take_refined(
+        &self,
+        _index: usize,
+        outcome: &mut Outcome,
+        refined: Result<Outcome, KindError>,
+    ) -> Vec<String> {
+        match refined {
+            Ok(refined) => {
+                outcome.refined = Some(refined.figures);
+                Vec::new()
             }
+            Err(error) => vec![format!(
+                "{} of its figures is not given: refined, {}",
+                self.stepper.refinement(),
+                error.message()
+            )],
         }
-        cells
+    }
+
+    fn figures(&self, plan: &RunPlan, outcome: &Outcome) -> RunFigures {
+        let not_refined = Figures::default();
+        let both = (
+            &outcome.figures,
+            outcome.refined.as_ref().unwrap_or(&not_refined),
+        );
+        let mut figures = run_figures(&plan.path, &self.stepper, both);
+        figures.refinement = figures.refinement.filter(|_| outcome.refined.is_some());
+        figures
+    }
+
+    fn drawings(&self, shared: &Shared, index: usize, outcome: &Outcome) -> Vec<Drawing> {
+        let (number, side, _) = &shared.runs[index];
+        let manoeuvre = &self.manoeuvres[*number];
+        let name = match side {
+            Some(side) if manoeuvre.sides.len() > 1 => {
+                format!("{} ({})", manoeuvre.name, side.name())
+            }
+            _ => manoeuvre.name.clone(),
+        };
+        drawings(self, (manoeuvre, &name), &outcome.figures)
+    }
+
+    fn close(&self, ran: &Ran<'_, Self>) -> Closing<ShipSection> {
+        let outcomes = grouped(ran);
+        let judged = judged(self, &outcomes);
+        let runs = (self.manoeuvres.iter().zip(&outcomes))
+            .filter(|(_, runs)| !runs.is_empty())
+            .map(|(manoeuvre, runs)| {
+                (
+                    manoeuvre.name.clone(),
+                    manoeuvre_summary(self, manoeuvre, runs),
+                )
+            })
+            .collect();
+        let model = &ran.shared.model;
+        let section = ShipSection {
+            model: ModelSummary::new(self, model),
+            linear: LinearSummary::new(self, model, &ran.shared.linear),
+            manoeuvre: Manoeuvres {
+                runs,
+                imo: judged.iter().map(CriterionSummary::new).collect(),
+            },
+            stop_when: self.stop.as_ref().map(|stop| stop.text.clone()),
+        };
+        Closing {
+            section,
+            verdicts: judged.iter().map(verdict).collect(),
+            warnings: Vec::new(),
+        }
+    }
+
+    /// Each manoeuvre's figures (a column per side), the spirals, the IMO criteria.
+    fn report(&self, ran: &Ran<'_, Self>) -> String {
+        let outcomes = grouped(ran);
+        report(self, &outcomes, &judged(self, &outcomes)).unwrap_or_default()
+    }
+
+    fn cells(&self, ran: &Ran<'_, Self>, case: &TableCase) -> Vec<(String, String)> {
+        let outcomes = grouped(ran);
+        cells(self, (&outcomes, &judged(self, &outcomes)), case)
     }
 }
 
-/// Runs every manoeuvre of `scene` (`name` is its file, as the summary names it), each side
-/// of a two-sided one, its rows to `recorder` under `manoeuvre` or `manoeuvre/side`; a run the
-/// recorder stops ends the scene's run, keeping the ones before it (a side finished before it
-/// too).
-pub fn run_scene<'a>(
-    scene: &'a ShipScene,
-    name: &str,
-    recorder: &mut dyn Recorder,
-) -> Result<Finished<'a>, ShipError> {
-    let started = Instant::now();
-    let model = ShipModel::new(&scene.table)?;
-    let linear = LinearModel::closed_form(&scene.table);
-    let mut outcomes = Vec::new();
-    let mut stopped = false;
-    'manoeuvres: for manoeuvre in &scene.manoeuvres {
-        let mut runs = Runs::new();
-        let sided = manoeuvre.runs();
-        for (side, one) in &sided {
-            let path = match side {
-                Some(side) if sided.len() > 1 => format!("{}/{}", manoeuvre.name, side.name()),
-                _ => manoeuvre.name.clone(),
-            };
-            let outcome = match run_manoeuvre(scene, &model, one, (&path, recorder)) {
-                Err(ShipError::Stopped { .. }) => {
-                    stopped = true;
-                    // A side finished before the signal is kept, as a manoeuvre is.
-                    if !runs.is_empty() {
-                        outcomes.push(runs);
-                    }
-                    break 'manoeuvres;
-                }
-                outcome => outcome.map_err(|e| e.in_manoeuvre(&manoeuvre.name))?,
-            };
-            let name = match side {
-                Some(side) if sided.len() > 1 => format!("{} ({})", manoeuvre.name, side.name()),
-                _ => manoeuvre.name.clone(),
-            };
-            let drawings = drawings(scene, (manoeuvre, &name), &path, &outcome.figures);
-            (recorder.drawn(drawings)).map_err(|source| ShipError::Record {
-                run: path.clone(),
-                source,
-            })?;
-            runs.push((*side, outcome));
-        }
-        outcomes.push(runs);
-    }
-    let trials: Vec<Trial> = (scene.manoeuvres.iter().zip(&outcomes))
+/// The IMO criteria the finished runs allow.
+fn judged(scene: &ShipScene, outcomes: &[Runs]) -> Vec<Criterion> {
+    let trials: Vec<Trial> = (scene.manoeuvres.iter().zip(outcomes))
+        .filter(|(_, runs)| !runs.is_empty())
         .map(|(m, runs)| (m, runs.iter().map(|(s, o)| (*s, &o.figures)).collect()))
         .collect();
-    let judged = criteria(scene, &trials);
-    let runs = (scene.manoeuvres.iter().zip(&outcomes))
-        .filter(|(_, runs)| !runs.is_empty())
-        .map(|(manoeuvre, runs)| {
-            let summary_of = |(side, outcome): &(Option<Side>, Outcome)| {
-                let figures = (&outcome.figures, &outcome.refined);
-                let mut summary =
-                    ManoeuvreSummary::new(manoeuvre, &scene.stepper, figures, outcome.steps);
-                summary.side = side.map(Side::name).or(summary.side);
-                summary.stopped_at = scene.stop.as_ref().map(|_| outcome.stopped_at);
-                summary
-            };
-            let summary = match (worse_side(manoeuvre, runs), runs.as_slice()) {
-                (Some(side), [port, starboard]) => {
-                    ManoeuvreSummary::both(summary_of(port), summary_of(starboard), side)
-                }
-                (_, runs) => summary_of(&runs[0]),
-            };
-            (manoeuvre.name.clone(), summary)
-        })
-        .collect();
-    let stepper = &scene.stepper;
-    let integrator = IntegratorSummary {
-        steps: (outcomes.iter().flatten()).map(|(_, o)| o.steps).sum(),
-        rhs_evals: Some((outcomes.iter().flatten()).map(|(_, o)| o.rhs_evals).sum()),
-        ..IntegratorSummary::settings(stepper.method, stepper.step, stepper.adaptive)
-    };
-    let section = ShipSection {
-        model: ModelSummary::new(scene, &model),
-        linear: LinearSummary::new(scene, &model, &linear),
-        manoeuvre: Manoeuvres {
-            runs,
-            imo: judged.iter().map(CriterionSummary::new).collect(),
-        },
-        stop_when: scene.stop.as_ref().map(|stop| stop.text.clone()),
-    };
-    let summary = Summary {
-        kind: super::KIND.name,
-        scene: name.to_owned(),
-        title: scene.title.clone(),
-        integrator,
-        wall_seconds: started.elapsed().as_secs_f64(),
-        interrupted: stopped,
-        error: None,
-        warnings: Vec::new(),
-        case: None,
-        runs: every_run_figures(scene, &outcomes),
-        verdicts: judged.iter().map(verdict).collect(),
-        section,
-    };
-    Ok(Finished {
-        scene,
-        summary,
-        outcomes,
-        judged,
-        stopped,
-    })
+    criteria(scene, &trials)
 }
 
-/// Each run's figures as every kind gives them, by its path (`turning_circle_35/port`).
-fn every_run_figures(scene: &ShipScene, outcomes: &[Runs]) -> Vec<RunFigures> {
-    let mut figures = Vec::new();
-    for (manoeuvre, runs) in scene.manoeuvres.iter().zip(outcomes) {
-        for (side, outcome) in runs {
-            let path = match side {
-                Some(side) if runs.len() > 1 => format!("{}/{}", manoeuvre.name, side.name()),
-                _ => manoeuvre.name.clone(),
-            };
-            let both = (&outcome.figures, &outcome.refined);
-            figures.push(run_figures(&path, &scene.stepper, both));
+/// A manoeuvre's summary: its one run's, or the worse side's with each side's beside.
+fn manoeuvre_summary(scene: &ShipScene, manoeuvre: &Manoeuvre, runs: &Runs) -> ManoeuvreSummary {
+    let summary_of = |(side, outcome): &(Option<Side>, Outcome)| {
+        let not_refined = Figures::default();
+        // No figure of its own where it was not refined: every difference `None`.
+        let figures = (
+            &outcome.figures,
+            outcome.refined.as_ref().unwrap_or(&not_refined),
+        );
+        let mut summary = ManoeuvreSummary::new(manoeuvre, &scene.stepper, figures, outcome.steps);
+        summary.side = side.map(Side::name).or(summary.side);
+        summary.stopped_at = scene.stop.as_ref().map(|_| outcome.stopped_at);
+        summary
+    };
+    match (worse_side(manoeuvre, runs), runs.as_slice()) {
+        (Some(side), [port, starboard]) => {
+            ManoeuvreSummary::both(summary_of(port), summary_of(starboard), side)
+        }
+        (_, runs) => summary_of(&runs[0]),
+    }
+}
+
+/// Each column of a ship sweep's table with its value in this run, in the table's order: each
+/// manoeuvre's figures (the worse side's, for one run to both), then each side's
+/// (`turn.port.tactical_diameter_m`), then each IMO criterion's value, verdict and sides; a
+/// manoeuvre's columns are named as [`manoeuvre_columns`] says.
+fn cells(
+    scene: &ShipScene,
+    (outcomes, judged): (&[Runs], &[Criterion]),
+    case: &TableCase,
+) -> Vec<(String, String)> {
+    let text = |value: Option<f64>| value.map_or_else(String::new, |v| v.to_string());
+    let mut cells = Vec::new();
+    let names = manoeuvre_columns(
+        case,
+        scene.manoeuvres.iter().map(|m| m.name.as_str()),
+        &NAMED_FROM,
+    );
+    for ((manoeuvre, runs), name) in scene.manoeuvres.iter().zip(outcomes).zip(&names) {
+        if let Some(outcome) = shown(manoeuvre, runs) {
+            for (key, value) in &outcome.figures.values {
+                cells.push((format!("{name}.{key}"), text(*value)));
+            }
+        }
+        for (side, outcome) in runs.iter().filter(|_| runs.len() > 1) {
+            let side = side.map_or("", Side::name);
+            for (key, value) in &outcome.figures.values {
+                cells.push((format!("{name}.{side}.{key}"), text(*value)));
+            }
         }
     }
-    figures
+    // Every criterion the scene's kinds may give, judged in this case or not, so that the
+    // columns do not depend on a swept angle (a turn at 20° is not judged; at 35° it is).
+    for (name, sided) in possible(scene) {
+        let criterion = judged.iter().find(|c| c.name == name);
+        let value = criterion.and_then(|c| c.value);
+        let pass = criterion.and_then(Criterion::pass);
+        cells.push((format!("imo.{name}"), text(value)));
+        cells.push((
+            format!("imo.{name}.pass"),
+            pass.map_or_else(String::new, |p| p.to_string()),
+        ));
+        for side in Side::BOTH.iter().filter(|_| sided) {
+            let value = (criterion.iter().flat_map(|c| &c.sides))
+                .find(|(s, _)| s == side)
+                .and_then(|(_, v)| *v);
+            cells.push((format!("imo.{name}.{}", side.name()), text(value)));
+        }
+    }
+    cells
 }
 
 /// What a manoeuvre's run draws: the manoeuvre in the plane, the hull of the scene's length
@@ -268,9 +366,8 @@ fn every_run_figures(scene: &ShipScene, outcomes: &[Runs]) -> Vec<RunFigures> {
 fn drawings(
     scene: &ShipScene,
     (manoeuvre, name): (&Manoeuvre, &str),
-    path: &str,
     figures: &Figures,
-) -> RunDrawings {
+) -> Vec<Drawing> {
     let title = format!("{} — {name}", scene.title);
     let mut drawings = Vec::new();
     if let Some(curve) = &figures.spiral {
@@ -283,10 +380,7 @@ fn drawings(
         hull: Hull::of_length(scene.length),
         readout: ROW[..7].iter().map(|c| (*c).to_owned()).collect(),
     }));
-    RunDrawings {
-        path: path.to_owned(),
-        drawings,
-    }
+    drawings
 }
 
 /// A spiral's plot, in its manoeuvre's folder.
@@ -335,70 +429,6 @@ fn spiral_curves(title: &str, curve: &SpiralCurve) -> Curves {
             .map(|(name, points)| (name.to_owned(), points))
             .collect(),
     }
-}
-
-/// Runs `manoeuvre` with the scene's method, its rows (t, [`ROW`], the rigid body's kinetic
-/// energy) to `recorder` under `path`, and again refined, for how far each figure moves.
-fn run_manoeuvre(
-    scene: &ShipScene,
-    model: &ShipModel,
-    manoeuvre: &Manoeuvre,
-    (path, recorder): (&str, &mut dyn Recorder),
-) -> Result<Outcome, ShipError> {
-    if recorder.stop_asked() {
-        return Err(ShipError::Stopped { time: 0.0 });
-    }
-    let not_recorded = |source| ShipError::Record {
-        run: path.to_owned(),
-        source,
-    };
-    let names = ROW.map(str::to_owned);
-    let expected_rows = (manoeuvre.duration / scene.every) as usize + 1;
-    let start = RunStart {
-        path,
-        columns: &names,
-        expected_rows,
-        end_time: manoeuvre.duration,
-        potential: false,
-        energy_unit: crate::models::ENERGY_UNIT,
-    };
-    recorder.begin(start).map_err(not_recorded)?;
-    let settings = (&scene.stepper, scene.every);
-    let start = (scene.start(), scene.stop.as_ref());
-    let keeps_rows = recorder.keeps_rows();
-    let done = run_until(model, &scene.rudder, manoeuvre, start, settings, |sample| {
-        if !keeps_rows {
-            return !recorder.stop_asked();
-        }
-        let row = Row {
-            t: sample.t,
-            state: &sample.row(),
-            kinetic_energy: model.kinetic_energy(&sample.model_state()),
-            potential_energy: None,
-        };
-        recorder.row(&row)
-    });
-    // What the recorder could not keep comes first: the run stopped because of it.
-    recorder.end().map_err(not_recorded)?;
-    let done = done?;
-    let refined = match recorder.refines() {
-        true => {
-            let refined = (&scene.stepper.refined(scene.every), scene.every);
-            let refined = run_until(model, &scene.rudder, manoeuvre, start, refined, |_| {
-                !recorder.stop_asked()
-            })?;
-            refined.figures
-        }
-        // No figure of its own: every difference is `None`.
-        false => Figures::default(),
-    };
-    Ok(Outcome {
-        figures: done.figures,
-        refined,
-        steps: done.steps,
-        rhs_evals: done.rhs_evals,
-        stopped_at: done.stopped_at,
-    })
 }
 
 /// A figure as the report prints it: three decimals (no sign on a zero), or a dash where the

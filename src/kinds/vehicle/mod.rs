@@ -67,7 +67,7 @@ pub enum VehicleError {
     },
     /// The table cannot make a model: a name not read, a mass matrix not positive definite.
     #[error("the vehicle's table: {0}")]
-    Table(#[from] crate::defined::engine::VehicleError),
+    Table(#[from] crate::defined::engine::vehicle_table::VehicleError),
     /// The symbolic engine could not prove the model.
     #[error("the vehicle model cannot be proved: {0}")]
     Prove(#[from] crate::defined::engine::EmitError),
@@ -138,7 +138,8 @@ impl VehicleError {
     /// The scene key a table's error is about: the coefficient or added-mass entry it names,
     /// else the table.
     pub fn key(&self) -> String {
-        use crate::defined::engine::{NameError, VehicleError as Table};
+        use crate::defined::engine::NameError;
+        use crate::defined::engine::vehicle_table::VehicleError as Table;
         let entry = |name: &str| {
             let table = if name.ends_with("dot") {
                 "added_mass"

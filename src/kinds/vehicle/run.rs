@@ -1,8 +1,7 @@
-//! A vehicle scene run: every manoeuvre from its trim with the scene's method, its rows handed
-//! to the caller's [`Recorder`], run again refined for how far each figure moves; the summary
-//! (`summary.json`'s types, [`super::summary`]), the report as text, and a sweep case's line.
-//! What is written where, and whether a run may go on, is the recorder's: this module opens no
-//! file.
+//! A vehicle scene's runs as the one runner ([`crate::run::scene`]) runs them: every
+//! manoeuvre from its trim; the vehicle's section of the summary (`summary.json`'s types,
+//! [`super::summary`]), the report as text, and a sweep case's line. The runner does the loop,
+//! the rows, the refined run and the summary's shared keys; this module opens no file.
 
 use super::manoeuvre::{ROW, VehicleManoeuvre, VehicleRun, run_until};
 use super::scene::NAMED_FROM;
@@ -11,19 +10,18 @@ use super::summary::{
     VehicleSection, largest_difference, largest_setpoint_difference, trial_figures,
 };
 use super::trial::{Plane, TrialFigures, largest_trial_difference};
-use super::{VehicleError, VehicleScene, format_folded};
-use crate::output::drawing::{Drawing, Mark, RunDrawings, SpaceManoeuvre};
-use crate::output::summary::{Figure, IntegratorSummary, RunFigures, Summary};
+use super::{VehicleScene, format_folded};
+use crate::kind::KindError;
+use crate::output::drawing::{Drawing, Mark, SpaceManoeuvre};
+use crate::output::summary::{Figure, IntegratorSummary, RunFigures};
 use crate::output::text::printable;
 use crate::output::trajectory::number_text;
 use crate::run::Row;
-use crate::run::record::{RecordError, Recorder, RunStart};
+use crate::run::scene::{Closing, Counts, Failed, Ran, Rows, RunPlan, SceneRuns, Setting};
 use crate::scene::stop::StopCondition;
 use crate::scene::sweep::{TableCase, manoeuvre_columns};
 use crate::{Model, Short, counted, fixed};
-use std::collections::BTreeMap;
 use std::fmt::Write;
-use std::time::Instant;
 
 /// A manoeuvre run with the scene's method, and its figures refined.
 #[derive(Debug, Clone)]
@@ -38,205 +36,206 @@ pub struct Outcome {
     pub rhs_evals: u64,
 }
 
-/// What a vehicle scene's run gave: its summary, each manoeuvre's outcome (those finished
-/// before a stop was asked), and whether a stop was asked.
-#[derive(Debug, Clone)]
-pub struct Finished<'a> {
-    /// The scene that ran.
-    pub scene: &'a VehicleScene,
-    /// `summary.json`.
-    pub summary: Summary<VehicleSection>,
-    /// Each manoeuvre run, in the scene's order.
-    pub outcomes: Vec<Outcome>,
-    /// Whether the recorder asked the run to stop before every manoeuvre had run.
-    pub stopped: bool,
-}
+impl SceneRuns for VehicleScene {
+    type Shared = ();
+    type Outcome = Outcome;
+    type Section = VehicleSection;
 
-/// Runs every manoeuvre of `scene` (`name` is its file, as the summary names it), each from
-/// its trim, its rows to `recorder` under the manoeuvre's name; a manoeuvre the recorder stops
-/// ends the run, keeping the ones before it.
-pub fn run_scene<'a>(
-    scene: &'a VehicleScene,
-    name: &str,
-    recorder: &mut dyn Recorder,
-) -> Result<Finished<'a>, VehicleError> {
-    let started = Instant::now();
-    let mut manoeuvres = BTreeMap::new();
-    let mut outcomes = Vec::new();
-    let mut stopped = false;
-    for manoeuvre in &scene.manoeuvres {
-        let outcome = match run_manoeuvre(scene, manoeuvre, recorder) {
-            Err(VehicleError::Stopped { .. }) => {
-                stopped = true;
-                break;
-            }
-            outcome => outcome.map_err(|e| e.in_manoeuvre(&manoeuvre.name))?,
+    fn kind_name(&self) -> &'static str {
+        super::KIND.name
+    }
+
+    fn scene_title(&self) -> &str {
+        &self.title
+    }
+
+    fn integrator(&self) -> IntegratorSummary {
+        let stepper = &self.stepper;
+        IntegratorSummary::settings(stepper.method, stepper.step, stepper.adaptive)
+    }
+
+    fn prepare(&self) -> Result<(), KindError> {
+        Ok(())
+    }
+
+    /// Each manoeuvre's run from its trim: t, [`ROW`] and the kinetic energy of the body and
+    /// the fluid.
+    fn plans(&self, _: &()) -> Vec<RunPlan> {
+        (self.manoeuvres.iter())
+            .map(|manoeuvre| RunPlan {
+                path: manoeuvre.name.clone(),
+                columns: ROW.map(str::to_owned).to_vec(),
+                expected_rows: (manoeuvre.duration / self.every) as usize + 1,
+                end_time: manoeuvre.duration,
+                potential: false,
+                energy_unit: crate::models::ENERGY_UNIT,
+            })
+            .collect()
+    }
+
+    fn run_one(
+        &self,
+        _: &(),
+        index: usize,
+        setting: Setting,
+        rows: &mut Rows,
+    ) -> Result<Outcome, Failed<Outcome>> {
+        let manoeuvre = &self.manoeuvres[index];
+        let stepper = match setting {
+            Setting::Scene => self.stepper.clone(),
+            Setting::Refined => self.stepper.refined(self.every),
         };
-        manoeuvres.insert(manoeuvre.name.clone(), outcome.summary.clone());
-        outcomes.push(outcome);
-    }
-    let stepper = &scene.stepper;
-    let integrator = IntegratorSummary {
-        steps: outcomes.iter().map(|o| o.summary.steps_taken).sum(),
-        rhs_evals: Some(outcomes.iter().map(|o| o.rhs_evals).sum()),
-        ..IntegratorSummary::settings(stepper.method, stepper.step, stepper.adaptive)
-    };
-    let runs = (scene.manoeuvres.iter().zip(&outcomes))
-        .map(|(manoeuvre, outcome)| run_figures(&manoeuvre.name, &outcome.summary))
-        .collect();
-    let summary = Summary {
-        kind: super::KIND.name,
-        scene: name.to_owned(),
-        title: scene.title.clone(),
-        integrator,
-        wall_seconds: started.elapsed().as_secs_f64(),
-        interrupted: stopped,
-        error: None,
-        warnings: Vec::new(),
-        case: None,
-        runs,
-        verdicts: Vec::new(),
-        section: VehicleSection {
-            model: ModelSummary::new(scene),
-            kirchhoff: scene.model.folded().iter().map(KirchhoffRow::new).collect(),
-            cruise: CruiseSummary::new(scene),
-            manoeuvre: manoeuvres,
-            stop_when: scene.stop.as_ref().map(|stop| stop.text.clone()),
-        },
-    };
-    Ok(Finished {
-        scene,
-        summary,
-        outcomes,
-        stopped,
-    })
-}
-
-/// The error of a recorder that could not keep what a manoeuvre gave.
-fn not_recorded(manoeuvre: &VehicleManoeuvre, error: RecordError) -> VehicleError {
-    VehicleError::Record {
-        run: manoeuvre.name.clone(),
-        source: error,
-    }
-}
-
-/// Runs `manoeuvre` from its trim with the scene's method, its rows (t, [`ROW`], the kinetic
-/// energy of the body and the fluid) to `recorder`, then refined.
-fn run_manoeuvre(
-    scene: &VehicleScene,
-    manoeuvre: &VehicleManoeuvre,
-    recorder: &mut dyn Recorder,
-) -> Result<Outcome, VehicleError> {
-    if recorder.stop_asked() {
-        return Err(VehicleError::Stopped { time: 0.0 });
-    }
-    let names = ROW.map(str::to_owned);
-    let expected_rows = (manoeuvre.duration / scene.every) as usize + 1;
-    let start = RunStart {
-        path: &manoeuvre.name,
-        columns: &names,
-        expected_rows,
-        end_time: manoeuvre.duration,
-        potential: false,
-        energy_unit: crate::models::ENERGY_UNIT,
-    };
-    recorder
-        .begin(start)
-        .map_err(|e| not_recorded(manoeuvre, e))?;
-    let model = &scene.model;
-    let start = (manoeuvre.trim.state, scene.stop.as_ref());
-    let keeps_rows = recorder.keeps_rows();
-    let done = run_until(
-        model,
-        &scene.fins,
-        manoeuvre,
-        start,
-        (&scene.stepper, scene.every),
-        |sample| {
-            if !keeps_rows {
-                return !recorder.stop_asked();
+        let model = &self.model;
+        let start = (manoeuvre.trim.state, self.stop.as_ref());
+        let settings = (&stepper, self.every);
+        let done = run_until(model, &self.fins, manoeuvre, start, settings, |sample| {
+            if !rows.keeps() {
+                return !rows.stop_asked();
             }
-            let row = Row {
+            rows.take(&Row {
                 t: sample.t,
                 state: &sample.row(),
                 kinetic_energy: model.kinetic_energy(&sample.state),
                 potential_energy: None,
-            };
-            recorder.row(&row)
-        },
-    );
-    // What the recorder could not keep comes first: the run stopped because of it.
-    recorder.end().map_err(|e| not_recorded(manoeuvre, e))?;
-    let done = done?;
-    let steps = StepFigures::of(&done);
-    let autopilot = SetpointFigures::of(&done);
-    let trial = trial_figures(&done, manoeuvre);
-    // A Monte Carlo's case is not run again refined: what it reads is the cases' spread.
-    let refined_difference = match recorder.refines() {
-        true => {
-            let settings = (&scene.stepper.refined(scene.every), scene.every);
-            let refined = run_until(model, &scene.fins, manoeuvre, start, settings, |_| {
-                !recorder.stop_asked()
-            })?;
-            Some(moved_when_refined(
-                &refined,
-                manoeuvre,
-                &steps,
-                &autopilot,
-                trial.as_ref(),
-            ))
+            })
+        });
+        let done = done.map_err(|e| KindError::from(e.in_manoeuvre(&manoeuvre.name)))?;
+        Ok(outcome(self, manoeuvre, &done))
+    }
+
+    fn counts(&self, outcome: &Outcome) -> Counts {
+        Counts {
+            steps: outcome.summary.steps_taken,
+            rejected: None,
+            rhs_evals: outcome.rhs_evals,
         }
-        false => None,
-    };
+    }
+
+    fn take_refined(
+        &self,
+        _index: usize,
+        outcome: &mut Outcome,
+        refined: Result<Outcome, KindError>,
+    ) -> Vec<String> {
+        match refined {
+            Ok(refined) => {
+                let moved = moved_when_refined(&outcome.summary, &refined.summary);
+                outcome.summary.refined_difference = Some(moved);
+                Vec::new()
+            }
+            Err(error) => vec![format!(
+                "refined_difference is not given: refined, {}",
+                error.message()
+            )],
+        }
+    }
+
+    fn figures(&self, plan: &RunPlan, outcome: &Outcome) -> RunFigures {
+        run_figures(&plan.path, &outcome.summary)
+    }
+
+    fn drawings(&self, _: &(), index: usize, outcome: &Outcome) -> Vec<Drawing> {
+        vec![Drawing::SpaceManoeuvre(SpaceManoeuvre {
+            title: format!("{} — {}", self.title, self.manoeuvres[index].name),
+            marks: Mark::all(&outcome.marks),
+            solid: self.solid(),
+        })]
+    }
+
+    fn close(&self, ran: &Ran<'_, Self>) -> Closing<VehicleSection> {
+        let manoeuvre = (ran.outcomes.iter())
+            .map(|(index, o)| (self.manoeuvres[*index].name.clone(), o.summary.clone()))
+            .collect();
+        let section = VehicleSection {
+            model: ModelSummary::new(self),
+            kirchhoff: self.model.folded().iter().map(KirchhoffRow::new).collect(),
+            cruise: CruiseSummary::new(self),
+            manoeuvre,
+            stop_when: self.stop.as_ref().map(|stop| stop.text.clone()),
+        };
+        Closing {
+            section,
+            verdicts: Vec::new(),
+            warnings: Vec::new(),
+        }
+    }
+
+    /// The cruise, each manoeuvre's figures, the folded table against its added mass.
+    fn report(&self, ran: &Ran<'_, Self>) -> String {
+        let outcomes: Vec<(&VehicleManoeuvre, &Outcome)> = (ran.outcomes.iter())
+            .map(|(index, outcome)| (&self.manoeuvres[*index], outcome))
+            .collect();
+        report(self, &CruiseSummary::new(self), &outcomes).unwrap_or_default()
+    }
+
+    /// Each manoeuvre's figures, `<manoeuvre>.<figure>`: a trial's (`turning_circle.
+    /// tactical_diameter_m`), each autopilot's by what it holds (`turn_and_dive.heading.
+    /// overshoot`), or, for fin steps, each step's end (`rudder_4.step_1.heading_deg`); then
+    /// how far they moved when refined and the steps taken. A figure a trial gives as a list
+    /// (a zig-zag's overshoot times) stays in summary.json.
+    fn cells(&self, ran: &Ran<'_, Self>, case: &TableCase) -> Vec<(String, String)> {
+        let names = self.manoeuvres.iter().map(|m| m.name.as_str());
+        let columns = manoeuvre_columns(case, names, &NAMED_FROM);
+        let mut cells = Vec::new();
+        for (index, column) in columns.iter().enumerate() {
+            let Some(outcome) = ran.outcome(index) else {
+                continue;
+            };
+            let json = serde_json::to_value(&outcome.summary).unwrap_or_default();
+            for (key, value) in manoeuvre_figures(&json) {
+                if let Some(text) = scalar_text(value) {
+                    cells.push((format!("{column}.{key}"), text));
+                }
+            }
+            for key in ["refined_difference", "steps_taken"] {
+                if let Some(text) = scalar_text(&json[key]) {
+                    cells.push((format!("{column}.{key}"), text));
+                }
+            }
+        }
+        cells
+    }
+}
+
+/// What a manoeuvre's run gave: its figures and the summary that says them, its marks.
+fn outcome(scene: &VehicleScene, manoeuvre: &VehicleManoeuvre, done: &VehicleRun) -> Outcome {
+    let steps = StepFigures::of(done);
+    let trial = trial_figures(done, manoeuvre);
     let marks = match &trial {
         Some(TrialFigures::TurningCircle(figures)) => figures.marks.clone(),
         _ => Vec::new(),
     };
-    let drawings = RunDrawings {
-        path: manoeuvre.name.clone(),
-        drawings: vec![Drawing::SpaceManoeuvre(SpaceManoeuvre {
-            title: format!("{} — {}", scene.title, manoeuvre.name),
-            marks: Mark::all(&marks),
-            solid: scene.solid(),
-        })],
-    };
-    (recorder.drawn(drawings)).map_err(|e| not_recorded(manoeuvre, e))?;
-    let notes = stop_notes(scene.stop.as_ref(), &done, trial.as_ref());
+    let notes = stop_notes(scene.stop.as_ref(), done, trial.as_ref());
     let summary = ManoeuvreSummary {
         steps: steps.clone(),
-        autopilot,
+        autopilot: SetpointFigures::of(done),
         trial,
-        refined_difference,
+        // Until the refined run gives one; a Monte Carlo's case is not run again refined.
+        refined_difference: None,
         refinement: scene.stepper.refinement(),
         steps_taken: done.steps,
         stopped_at: scene.stop.as_ref().map(|_| done.stopped_at),
         notes,
     };
-    Ok(Outcome {
+    Outcome {
         steps,
         summary,
         marks,
         rhs_evals: done.rhs_evals,
-    })
+    }
 }
 
-/// The largest difference between the run's figures (`steps`, `autopilot`, `trial`) and
-/// those of the same manoeuvre run `refined`.
-fn moved_when_refined(
-    refined: &VehicleRun,
-    manoeuvre: &VehicleManoeuvre,
-    steps: &[StepFigures],
-    autopilot: &[SetpointFigures],
-    trial: Option<&TrialFigures>,
-) -> f64 {
-    let trial_difference = match (trial, trial_figures(refined, manoeuvre)) {
-        (Some(a), Some(b)) => largest_trial_difference(a, &b),
+/// The largest difference between a run's figures (its steps, autopilots and trial) and those
+/// of the same manoeuvre run refined.
+fn moved_when_refined(summary: &ManoeuvreSummary, refined: &ManoeuvreSummary) -> f64 {
+    let trial_difference = match (&summary.trial, &refined.trial) {
+        (Some(a), Some(b)) => largest_trial_difference(a, b),
         _ => 0.0,
     };
-    largest_difference(steps, &StepFigures::of(refined))
+    largest_difference(&summary.steps, &refined.steps)
         .max(largest_setpoint_difference(
-            autopilot,
-            &SetpointFigures::of(refined),
+            &summary.autopilot,
+            &refined.autopilot,
         ))
         .max(trial_difference)
 }
@@ -293,43 +292,6 @@ fn stop_notes(
     )]
 }
 
-impl Finished<'_> {
-    /// The report as the command prints it: the cruise, each manoeuvre's figures, the folded
-    /// table against its added mass.
-    pub fn report(&self) -> String {
-        report(self.scene, &self.summary, &self.outcomes).unwrap_or_default()
-    }
-
-    /// Each manoeuvre's figures, `<manoeuvre>.<figure>`: a trial's (`turning_circle.
-    /// tactical_diameter_m`), each autopilot's by what it holds (`turn_and_dive.heading.
-    /// overshoot`), or, for fin steps, each step's end (`rudder_4.step_1.heading_deg`); then
-    /// how far they moved when refined and the steps taken. A figure a trial gives as a list
-    /// (a zig-zag's overshoot times) stays in summary.json.
-    pub fn cells(&self, case: &TableCase) -> Vec<(String, String)> {
-        let scene = self.scene;
-        let names = scene.manoeuvres.iter().map(|m| m.name.as_str());
-        let columns = manoeuvre_columns(case, names, &NAMED_FROM);
-        let mut cells = Vec::new();
-        for (manoeuvre, column) in scene.manoeuvres.iter().zip(&columns) {
-            let Some(summary) = self.summary.section.manoeuvre.get(&manoeuvre.name) else {
-                continue;
-            };
-            let json = serde_json::to_value(summary).unwrap_or_default();
-            for (key, value) in manoeuvre_figures(&json) {
-                if let Some(text) = scalar_text(value) {
-                    cells.push((format!("{column}.{key}"), text));
-                }
-            }
-            for key in ["refined_difference", "steps_taken"] {
-                if let Some(text) = scalar_text(&json[key]) {
-                    cells.push((format!("{column}.{key}"), text));
-                }
-            }
-        }
-        cells
-    }
-}
-
 /// A manoeuvre's figures from its summary, by key: a trial's (`tactical_diameter_m`), each
 /// autopilot's by what it holds (`heading.overshoot`), or, for fin steps, each step's end
 /// (`step_1.heading_deg`).
@@ -376,7 +338,7 @@ fn run_figures(name: &str, summary: &ManoeuvreSummary) -> RunFigures {
     RunFigures {
         run: name.to_owned(),
         figures,
-        refinement: Some(summary.refinement),
+        refinement: summary.refined_difference.map(|_| summary.refinement),
         largest_difference: summary.refined_difference,
         notes: summary.notes.clone(),
     }
@@ -396,13 +358,12 @@ fn scalar_text(value: &serde_json::Value) -> Option<String> {
 
 fn report(
     scene: &VehicleScene,
-    summary: &Summary<VehicleSection>,
-    outcomes: &[Outcome],
+    cruise: &CruiseSummary,
+    outcomes: &[(&VehicleManoeuvre, &Outcome)],
 ) -> Result<String, std::fmt::Error> {
     let mut text = String::new();
     let out = &mut text;
     writeln!(out, "{}", printable(&scene.title))?;
-    let cruise = &summary.section.cruise;
     let closed = |x: Option<f64>, unit: &str| {
         x.map_or_else(String::new, |x| {
             format!(" (closed form {}{unit})", fixed(x, 4))
@@ -429,7 +390,7 @@ fn report(
             fixed(cruise.depth_rate_m_s, 4)
         )?;
     }
-    for (manoeuvre, outcome) in scene.manoeuvres.iter().zip(outcomes) {
+    for (manoeuvre, outcome) in outcomes {
         match outcome.summary.refined_difference {
             Some(moved) => writeln!(out, "  {}: (refined: {moved:.1e})", manoeuvre.name)?,
             None => writeln!(out, "  {}: (not refined)", manoeuvre.name)?,
