@@ -352,9 +352,22 @@ impl CoefficientFormulas {
     /// The coefficients' values with the `parameters`' values; a parameter without a value
     /// makes NaN.
     pub(crate) fn values(&self, parameters: &BTreeMap<String, f64>) -> Vec<f64> {
-        let mut known: Vec<f64> = (self.symbols.iter())
+        let known: Vec<f64> = (self.symbols.iter())
             .map(|s| parameters.get(s).copied().unwrap_or(f64::NAN))
             .collect();
+        self.values_of(known)
+    }
+
+    /// The parameters the formulas read, by index: [`Self::values_of`] takes their values in
+    /// this order.
+    pub(crate) fn parameters(&self) -> &[String] {
+        &self.symbols
+    }
+
+    /// The coefficients' values with each parameter's value at its index among
+    /// [`Self::parameters`] (and a reciprocal's index after them, its value not read): what
+    /// [`Self::values`] computes, for a caller that found each parameter's place once.
+    pub(crate) fn values_of(&self, mut known: Vec<f64>) -> Vec<f64> {
         for (symbol, of) in &self.reciprocals {
             known[*symbol] = 1.0 / of.value(&known);
         }

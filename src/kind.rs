@@ -9,6 +9,7 @@ use crate::output::summary::{RunFigures, Summary, Verdict};
 use crate::run::record::Recorder;
 use crate::run::scene::SceneRuns;
 use crate::run::tradeoff::Tradeoff;
+use crate::scene::SceneError;
 use crate::scene::sweep::TableCase;
 use std::any::Any;
 
@@ -71,6 +72,18 @@ pub trait Kind: RunScene + Send + Sync + std::fmt::Debug {
     /// names, `rhs` and proved Jacobians for any caller, sizes known at run time (a binding
     /// evaluating it over many states). `None` for a kind that does not give it.
     fn model(&self) -> Option<Result<Box<dyn DynModel>, KindError>> {
+        None
+    }
+
+    /// The scene with each number at its key path (as `[sweep]` and `[uncertainty]` name
+    /// them) set to its value, taken into the scene as read, without reading its tables again
+    /// (a Monte Carlo's case); `None` where the kind does not, and the caller reads the
+    /// tables with the numbers set in them. Either way the scene is the same, bit for bit.
+    fn with_numbers(
+        &self,
+        _name: &str,
+        _numbers: &[(&str, f64)],
+    ) -> Option<Result<Box<dyn Kind>, SceneError>> {
         None
     }
 

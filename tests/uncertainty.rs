@@ -178,3 +178,69 @@ fn a_case_reads_the_figures_its_scene_gives_when_run_whole() {
         }
     }
 }
+
+/// A case's values set into the scene as read (a ship's coefficients into its file,
+/// `Kind::with_numbers`) give the case its scene read again from its tables gives, bit for
+/// bit: every figure, verdict and value, for the Mariner's Monte Carlo; and a key a kind does
+/// not take so (REMUS's coefficients: the vehicle reads its tables again) gives the same too.
+#[test]
+fn a_case_set_into_the_scene_as_read_is_the_case_read_again() {
+    use eom::run::uncertainty::{run_case, run_cases};
+    let remus = std::fs::read_to_string("scenes/remus100.toml").unwrap()
+        + "\n[uncertainty]\ncases = 3\nseed = 3\n[uncertainty.vary]\n\
+           \"hydrodynamics.coefficients.N*\" = { distribution = \"uniform\", relative = 0.2 }\n";
+    let mariner = std::fs::read_to_string(SCENE).unwrap();
+    for (text, name) in [(mariner, SCENE), (remus, "remus100.toml")] {
+        let uncertainty = Uncertainty::parse(&text, name).unwrap();
+        let scene = (name, Path::new("scenes"));
+        let nominal = AnyScene::from_table(uncertainty.nominal().clone(), name, scene.1).unwrap();
+        let numbers: Vec<(&str, f64)> = (uncertainty.varied.iter())
+            .map(|number| (number.key.as_str(), number.nominal))
+            .collect();
+        let taken = nominal.as_kind().with_numbers(name, &numbers).is_some();
+        assert_eq!(
+            taken,
+            name == SCENE,
+            "{name}: whether the kind takes numbers"
+        );
+        let indices = [0, 1, 2];
+        let fast = run_cases(&uncertainty, &indices, scene, &|| false);
+        for (index, fast) in indices.iter().zip(&fast) {
+            let again = run_case(&uncertainty, *index, scene, &|| false);
+            assert_eq!(fast.error, None, "{name} case {index}");
+            let bits = |figures: &[(String, Option<f64>)]| -> Vec<(String, Option<u64>)> {
+                (figures.iter())
+                    .map(|(key, value)| (key.clone(), value.map(f64::to_bits)))
+                    .collect()
+            };
+            assert_eq!(
+                bits(&fast.figures),
+                bits(&again.figures),
+                "{name} case {index}"
+            );
+            assert!(!fast.figures.is_empty(), "{name} case {index}");
+            assert_eq!(fast.verdicts, again.verdicts, "{name} case {index}");
+            let values = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            assert_eq!(values(&fast.values), values(&again.values), "{name}");
+        }
+    }
+}
+
+/// A value that the scene's checks refuse is refused for the case as when its tables are read
+/// again: the Mariner's mass matrix made singular by its added mass, through the scene as read.
+#[test]
+fn a_case_set_into_the_scene_as_read_is_checked_as_the_scene_is() {
+    let uncertainty = Uncertainty::parse(&std::fs::read_to_string(SCENE).unwrap(), SCENE).unwrap();
+    let nominal = AnyScene::from_table(uncertainty.nominal().clone(), SCENE, ".".as_ref()).unwrap();
+    let ship: &ShipScene = nominal.as_kind().as_any().downcast_ref().unwrap();
+    let key = "hydrodynamics.coefficients.Yv";
+    let refused = ship.with_coefficients(SCENE, &[(key, f64::NAN)]).unwrap();
+    let error = refused
+        .expect_err("a NaN coefficient is refused")
+        .to_string();
+    assert!(error.contains("Yv"), "{error}");
+    let unknown = ship.with_coefficients(SCENE, &[("hydrodynamics.coefficients.Yzz", 1.0)]);
+    assert!(unknown.is_none(), "a coefficient the table does not have");
+    let other = ship.with_coefficients(SCENE, &[("body.mass", 1.0)]);
+    assert!(other.is_none(), "a key that is not a coefficient");
+}

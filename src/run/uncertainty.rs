@@ -96,17 +96,26 @@ impl Recorder for CaseRecorder<'_> {
 }
 
 /// Runs case `index` of `uncertainty` (`name` is the scene's file as errors and summaries
-/// name it, `base` the folder a file it names is found in); `stop` says when to stop.
+/// name it, `base` the folder a file it names is found in), its scene read from its tables
+/// with the case's values set; `stop` says when to stop.
 pub fn run_case(
     uncertainty: &Uncertainty,
     index: usize,
-    (name, base): (&str, &Path),
+    scene: (&str, &Path),
     stop: &(dyn Fn() -> bool + Sync),
 ) -> CaseOutcome {
-    let case = uncertainty.case(index);
-    let values = (case.values.iter())
-        .map(|(_, v)| v.as_float().unwrap_or(f64::NAN))
-        .collect();
+    run_case_from(uncertainty, index, (None, scene), stop)
+}
+
+/// Runs case `index`, its values set into `nominal` (the scene as read, where its kind takes
+/// numbers so: [`crate::kinds::Kind::with_numbers`]) or its scene read again from its tables.
+fn run_case_from(
+    uncertainty: &Uncertainty,
+    index: usize,
+    (nominal, (name, base)): (Option<&AnyScene>, (&str, &Path)),
+    stop: &(dyn Fn() -> bool + Sync),
+) -> CaseOutcome {
+    let values = uncertainty.values(index);
     let mut outcome = CaseOutcome {
         index,
         values,
@@ -114,7 +123,19 @@ pub fn run_case(
         verdicts: Vec::new(),
         error: None,
     };
-    let scene = match AnyScene::from_table(case.table, name, base) {
+    let numbers: Vec<(&str, f64)> = (uncertainty.varied.iter())
+        .zip(&outcome.values)
+        .map(|(number, value)| (number.key.as_str(), *value))
+        .collect();
+    let taken = nominal.and_then(|nominal| nominal.as_kind().with_numbers(name, &numbers));
+    let scene = match taken {
+        Some(scene) => scene,
+        None => {
+            let table = uncertainty.case(index).table;
+            AnyScene::from_table(table, name, base).map(AnyScene::into_kind)
+        }
+    };
+    let scene = match scene {
         Ok(scene) => scene,
         Err(error) => {
             outcome.error = Some(error.to_string());
@@ -122,7 +143,7 @@ pub fn run_case(
         }
     };
     let mut recorder = CaseRecorder { stop };
-    let finished = match scene.as_kind().run(name, &mut recorder) {
+    let finished = match scene.run(name, &mut recorder) {
         Ok(finished) => finished,
         Err(error) => {
             outcome.error = Some(error.to_string());
@@ -150,15 +171,18 @@ pub fn run_case(
     outcome
 }
 
-/// Runs the cases `indices` on every core, their outcomes in the order of `indices`. A case
-/// that fails leaves the others running; once `stop` holds, the cases not begun are not run
-/// and say so.
+/// Runs the cases `indices` on every core, their outcomes in the order of `indices`. The
+/// scene is read once, and each case's values set into it where its kind takes numbers so;
+/// a case that fails leaves the others running; once `stop` holds, the cases not begun are
+/// not run and say so.
 pub fn run_cases(
     uncertainty: &Uncertainty,
     indices: &[usize],
     scene: (&str, &Path),
     stop: &(dyn Fn() -> bool + Sync),
 ) -> Vec<CaseOutcome> {
+    let (name, base) = scene;
+    let nominal = AnyScene::from_table(uncertainty.nominal().clone(), name, base).ok();
     indices
         .par_iter()
         .map(|&index| match stop() {
@@ -169,7 +193,7 @@ pub fn run_cases(
                 verdicts: Vec::new(),
                 error: Some("not run: the Monte Carlo was interrupted".to_owned()),
             },
-            false => run_case(uncertainty, index, scene, stop),
+            false => run_case_from(uncertainty, index, (nominal.as_ref(), scene), stop),
         })
         .collect()
 }

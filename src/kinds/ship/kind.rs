@@ -105,6 +105,16 @@ impl kinds::Kind for ShipScene {
         Some(model.map(|model| Box::new(crate::models::Erased(model)) as Box<_>))
     }
 
+    /// Coefficients of the table (`hydrodynamics.coefficients.Yv`) set into the file as read.
+    fn with_numbers(
+        &self,
+        name: &str,
+        numbers: &[(&str, f64)],
+    ) -> Option<Result<Box<dyn kinds::Kind>, SceneError>> {
+        let scene = self.with_coefficients(name, numbers)?;
+        Some(scene.map(|scene| Box::new(scene) as Box<dyn kinds::Kind>))
+    }
+
     fn as_any(&self) -> &dyn Any {
         self
     }

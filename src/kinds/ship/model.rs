@@ -26,7 +26,7 @@ use crate::defined::{
 };
 use crate::models::Model;
 use simba::simd::SimdRealField;
-use std::collections::BTreeMap;
+
 use std::sync::Arc;
 
 /// The state: u, v, r (m/s, m/s, rad/s, body axes at midship), X, Y (m, midship in space
@@ -100,6 +100,11 @@ struct Proved {
     program: Program,
     /// The program's coefficients as formulas of the table's values.
     formulas: CoefficientFormulas,
+    /// Where each of the formulas' parameters is among a table's values as [`parameters`]
+    /// lists them for this spec (the last entry of its symbol), or `None` for one a table of
+    /// the spec does not give (NaN): found once, so that another table's values are taken in
+    /// by position.
+    places: Vec<Option<usize>>,
 }
 
 /// The terms of `table`, its units, where its yaw inertia is taken and whether it has a
@@ -161,8 +166,14 @@ impl ShipModel {
                 )),
             })
             .collect::<Result<_, _>>()?;
+        let formulas = CoefficientFormulas::new(&system, &program);
+        let (names, _) = parameters(&spec, table, true);
+        let places = (formulas.parameters().iter())
+            .map(|symbol| names.iter().rposition(|name| name == symbol))
+            .collect();
         let proved = Proved {
-            formulas: CoefficientFormulas::new(&system, &program),
+            formulas,
+            places,
             spec,
             program,
         };
@@ -369,9 +380,11 @@ fn propelled<T: SimdRealField + Copy>(
 
 /// The hoisted coefficients of the proved program with `table`'s values.
 fn coefficients(proved: &Proved, table: &ShipTable) -> Vec<f64> {
-    proved
-        .formulas
-        .values(&parameter_values(&proved.spec, table))
+    let (_, values) = parameters(&proved.spec, table, false);
+    let known = (proved.places.iter())
+        .map(|place| place.map_or(f64::NAN, |at| values[at]))
+        .collect();
+    proved.formulas.values_of(known)
 }
 
 /// The proved program resolved with the `coefficients`' values.
@@ -385,16 +398,34 @@ fn interpreter(proved: &Proved, coefficients: &[f64]) -> Result<Interpreter, Shi
         .map_err(|name| ShipError::invalid("hydrodynamics", format!("the program reads `{name}`")))
 }
 
-/// Every parameter's value by its symbol, as the table gives it; the symbols are the spec's.
-fn parameter_values(spec: &ShipSpec, table: &ShipTable) -> BTreeMap<String, f64> {
+/// Every parameter's value by its symbol, as the table gives it; the symbols are the spec's:
+/// what [`coefficients`] takes by position, kept as the reference its test holds it to.
+#[cfg(test)]
+fn parameter_values(spec: &ShipSpec, table: &ShipTable) -> std::collections::BTreeMap<String, f64> {
+    let (names, values) = parameters(spec, table, true);
+    // A symbol given twice takes its last value.
+    names.into_iter().zip(values).collect()
+}
+
+/// Every parameter's value as the table gives it, in an order that depends on the spec
+/// alone: the body's, the added mass, the prime system's scales, the propulsion's, then each
+/// term's; with their symbols where `named` (building them costs more than the values).
+fn parameters(spec: &ShipSpec, table: &ShipTable, named: bool) -> (Vec<String>, Vec<f64>) {
+    let mut names: Vec<String> = Vec::new();
+    let mut values: Vec<f64> = Vec::new();
+    let mut give = |symbol: &dyn Fn() -> String, value: f64| {
+        if named {
+            names.push(symbol());
+        }
+        values.push(value);
+    };
     let body = [table.body.mass, table.body.yaw_inertia, table.body.x_g];
-    let mut values: BTreeMap<String, f64> = spec
-        .body_symbols()
-        .into_iter()
-        .zip(body)
-        .chain(ADDED_MASS.into_iter().zip(table.added_mass))
-        .map(|(symbol, value)| (symbol.to_owned(), value))
-        .collect();
+    for (symbol, value) in spec.body_symbols().into_iter().zip(body) {
+        give(&|| symbol.to_owned(), value);
+    }
+    for (symbol, value) in ADDED_MASS.into_iter().zip(table.added_mass) {
+        give(&|| symbol.to_owned(), value);
+    }
     if table.units == Units::Prime {
         let scales = [
             table.density.unwrap_or(f64::NAN),
@@ -402,7 +433,7 @@ fn parameter_values(spec: &ShipSpec, table: &ShipTable) -> BTreeMap<String, f64>
             table.design_speed,
         ];
         for (symbol, value) in PRIME_SCALES.into_iter().zip(scales) {
-            values.insert(symbol.to_owned(), value);
+            give(&|| symbol.to_owned(), value);
         }
     }
     if let Some(p) = &table.propulsion {
@@ -417,13 +448,13 @@ fn parameter_values(spec: &ShipSpec, table: &ShipTable) -> BTreeMap<String, f64>
             p.resistance_prime(length),
         ];
         for (symbol, value) in PROPULSION.into_iter().zip(given) {
-            values.insert(symbol.to_owned(), value);
+            give(&|| symbol.to_owned(), value);
         }
     }
     for (term, value) in &table.terms {
-        values.insert(term.symbol(), *value);
+        give(&|| term.symbol(), *value);
     }
-    values
+    (names, values)
 }
 
 /// The ship as a model like the catalog's: its state and inputs, the proved program as `rhs`,
@@ -475,6 +506,31 @@ impl<T: SimdRealField + Copy> Model<T, 7, 2> for ShipModel {
 mod tests {
     use super::STATE;
     use crate::models::state_unit;
+
+    /// A table's values taken in by the places found once give every coefficient, bit for
+    /// bit, that they give looked up by symbol, for every ship scene shipped (prime and SI,
+    /// with and without propulsion, rigid-body terms folded and separate).
+    #[test]
+    fn coefficients_by_place_are_coefficients_by_symbol() {
+        let scenes = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
+        for file in [
+            "mariner.toml",
+            "esso_osaka.toml",
+            "s175.toml",
+            "mariner_uncertainty.toml",
+        ] {
+            let text = std::fs::read_to_string(scenes.join(file)).unwrap();
+            let scene = super::super::ShipScene::parse(&text, file).unwrap();
+            let model = super::ShipModel::new(&scene.table).unwrap();
+            let proved = &model.proved;
+            let by_symbol =
+                (proved.formulas).values(&super::parameter_values(&proved.spec, &scene.table));
+            let by_place = super::coefficients(proved, &scene.table);
+            let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            assert_eq!(bits(&by_place), bits(&by_symbol), "{file}");
+            assert!(by_place.iter().all(|c| c.is_finite()), "{file}");
+        }
+    }
 
     #[test]
     fn every_ship_state_entry_has_a_unit() {

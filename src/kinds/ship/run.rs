@@ -159,12 +159,19 @@ impl SceneRuns for ShipScene {
         };
         let model = &shared.model;
         let start = (self.start(), self.stop.as_ref());
+        // The figures are read from every accepted step and event, not from the rows: where
+        // no row is kept and the method places its rows by dense output (its steps do not
+        // depend on them), the run asks for none between its ends.
+        let every = match rows.keeps() || !stepper.method.is_adaptive() {
+            true => self.every,
+            false => one.duration,
+        };
         let done = run_until(
             model,
             &self.rudder,
             one,
             start,
-            (&stepper, self.every),
+            (&stepper, every),
             |sample| {
                 if !rows.keeps() {
                     return !rows.stop_asked();

@@ -361,6 +361,9 @@ pub struct ShipScene {
     /// `integrator.stop_when`: the condition on a manoeuvre's row (t and
     /// [`ROW`](super::manoeuvre::ROW)'s names) that ends each run where it first holds.
     pub stop: Option<StopCondition>,
+    /// The file it was read from, without its `[sweep]` and `[uncertainty]`: what another
+    /// case's numbers are set into ([`ShipScene::with_coefficients`]).
+    file: std::sync::Arc<ShipSceneFile>,
 }
 
 /// A ship's own tables, checked by the checker of every scene ([`Checker`]: its errors, its
@@ -959,6 +962,17 @@ impl ShipScene {
 
     /// Checks the tables of a ship scene file.
     pub fn from_file(file: &ShipSceneFile, name: &str) -> Result<Self, SceneError> {
+        let kept = ShipSceneFile {
+            sweep: None,
+            uncertainty: None,
+            ..file.clone()
+        };
+        Self::checked(kept, name)
+    }
+
+    /// Checks the tables of `owned`, a file without `[sweep]` and `[uncertainty]`, and keeps it.
+    fn checked(owned: ShipSceneFile, name: &str) -> Result<Self, SceneError> {
+        let file = &owned;
         let check = Checker { name };
         if file.model.family != "planar-midship" {
             return Err(check.invalid(
@@ -1026,7 +1040,25 @@ impl ShipScene {
             manoeuvres,
             linear,
             stop,
+            file: std::sync::Arc::new(owned),
         })
+    }
+
+    /// The scene with each coefficient its key names (`hydrodynamics.coefficients.Yv`) set to
+    /// its value, read from the file as written with those values in it, as the scene read
+    /// again from its text would be, without reading the text; `None` where a key names
+    /// something else, or a coefficient the table does not have.
+    pub fn with_coefficients(
+        &self,
+        name: &str,
+        numbers: &[(&str, f64)],
+    ) -> Option<Result<ShipScene, SceneError>> {
+        let mut file = (*self.file).clone();
+        for (key, value) in numbers {
+            let term = key.strip_prefix("hydrodynamics.coefficients.")?;
+            *file.hydrodynamics.coefficients.get_mut(term)? = *value;
+        }
+        Some(ShipScene::checked(file, name))
     }
 
     /// The row (in [`ROW`](super::manoeuvre::ROW)'s order) of the approach at `speed`, where
