@@ -111,12 +111,20 @@ pub struct Reference {
     /// The families `eom new` makes a template of (a ship's one; a catalog body's six), in
     /// order; its keys say which of them reads each.
     pub families: &'static [SceneFamily],
-    /// Every key it reads, in the order a template writes them.
-    pub keys: &'static [Key],
+    /// Every key it reads, in the order a template writes them, a list a part of the scene
+    /// (so that a kind of many keys keeps them in files of a readable size).
+    pub keys: &'static [&'static [Key]],
     /// What its section says after the keys (its table's conventions); empty for nothing.
     pub notes: &'static str,
     /// What its trajectory.csv holds.
     pub columns: Columns,
+}
+
+impl Reference {
+    /// Every key it reads, in the order a template writes them.
+    pub fn keys(&self) -> impl Iterator<Item = &'static Key> {
+        self.keys.iter().flat_map(|part| part.iter())
+    }
 }
 
 /// What a kind's trajectory.csv holds, as the reference page says it.

@@ -27,7 +27,7 @@ pub const KIND: Registered = Registered {
                 trimmed at `[trim]`, then each `[[manoeuvre]]` from the trim \
                 (`scenes/f16.toml`, `scenes/navion.toml`; `eom new aircraft`; \
                 docs/aircraft.md).",
-        keys: keys::KEYS,
+        keys: keys::ALL,
         notes: keys::NOTES,
         columns: Columns::Listed {
             said: "An aircraft writes one per manoeuvre, the state in its scene's units \

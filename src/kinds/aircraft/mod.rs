@@ -12,6 +12,7 @@ pub mod aero;
 pub mod atmosphere;
 pub mod derivatives;
 pub mod engine;
+pub mod file;
 mod keys;
 mod kind;
 pub mod linear;

@@ -23,7 +23,7 @@ pub const KIND: Registered = Registered {
         heading: "Catalog scenes",
         intro: keys::INTRO,
         families: ALL,
-        keys: keys::KEYS,
+        keys: keys::EVERY_KEY,
         notes: keys::NOTES,
         columns: Columns::Written(keys::columns),
     },

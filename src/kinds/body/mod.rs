@@ -8,7 +8,7 @@
 //! tables, [`table`]), the initial state, the integrator); its run ([`run`]: from its initial
 //! state to its end time or its stop condition, a problem solved by the one loop, every step
 //! watched by the [`guard`]); its linear plant ([`linear`]); its integrators compared on its
-//! end state ([`tradeoff`]); its keys for the scene reference ([`KEYS`]). Its rows go to the
+//! end state ([`tradeoff`]); its keys for the scene reference ([`EVERY_KEY`]). Its rows go to the
 //! caller's recorder, its summary is [`crate::output::summary::Summary`] with a
 //! [`summary::BodySection`], and its drawing a [`RigidBody`].
 //!
@@ -52,7 +52,7 @@ pub mod summary;
 pub mod table;
 pub mod tradeoff;
 
-pub use keys::KEYS;
+pub use keys::EVERY_KEY;
 pub use kind::{KIND, NAME};
 pub use linear::Plant;
 pub use loads::{PendulumLoads, PlanarLoads, PreparedLoads, SceneLoads, SpatialLoads, TopLoads};

@@ -30,6 +30,8 @@
 //! one seam, `crate::defined`. A user who wants the same model compiled calls the generator's
 //! `emit::system_source` (crate `eom-codegen`) from a `build.rs`.
 
+mod check;
+pub mod file;
 pub mod imo;
 pub mod keys;
 pub mod kind;

@@ -27,7 +27,7 @@ pub const KIND: Registered = Registered {
                 lists, the propeller and the hydrostatics, derived and proved when the scene is \
                 read, run through each `[[manoeuvre]]` from the cruise \
                 (`scenes/remus100.toml`; `eom new vehicle`; docs/vehicles.md).",
-        keys: keys::KEYS,
+        keys: &[keys::KEYS],
         notes: "",
         columns: Columns::Listed {
             said: "A vehicle writes one per manoeuvre, with the fins' commands after saturation and \

@@ -23,7 +23,9 @@
 //! that proved program as a [`Model`](crate::Model), so it runs on every integrator.
 
 pub mod autopilot;
+mod check;
 pub mod cross_flow;
+pub mod file;
 pub mod fins;
 pub mod keys;
 pub mod kind;

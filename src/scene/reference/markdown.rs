@@ -145,7 +145,7 @@ fn every_scene_keys() -> String {
 /// read differently has a row for each).
 fn kind_keys(kind: &Registered) -> String {
     let reference = &kind.reference;
-    let own = (reference.keys.iter()).filter(|key| !key.shared);
+    let own = reference.keys().filter(|key| !key.shared);
     if reference.families.len() == 1 {
         let mut out = format!("## {}\n\n{}\n\n", reference.heading, reference.intro);
         out.push_str(&table_header(false));

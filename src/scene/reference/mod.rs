@@ -301,7 +301,7 @@ pub enum Shown {
 /// of it.
 pub fn keys() -> impl Iterator<Item = Key> {
     (crate::kinds::REGISTRY.iter())
-        .flat_map(|kind| kind.reference.keys)
+        .flat_map(|kind| kind.reference.keys())
         .map(Key::resolved)
 }
 
@@ -367,7 +367,9 @@ mod tests {
     /// definition, and no family defines it on its own.
     #[test]
     fn every_family_takes_every_shared_key_as_it_is_defined_once() {
-        let raw = crate::kinds::REGISTRY.iter().flat_map(|k| k.reference.keys);
+        let raw = crate::kinds::REGISTRY
+            .iter()
+            .flat_map(|k| k.reference.keys());
         for key in raw {
             let definition = shared::definition(key.path);
             assert_eq!(
