@@ -252,8 +252,6 @@ pub struct Ran<'a, K: SceneRuns + ?Sized> {
     pub outcomes: Vec<(usize, K::Outcome)>,
     /// Each run that failed, by index, with why.
     pub failures: Vec<(usize, KindError)>,
-    /// The runs not run, by index: those after a stop.
-    pub not_run: Vec<usize>,
     /// Whether the caller stopped the runs.
     pub stopped: bool,
 }
@@ -307,16 +305,16 @@ pub fn run<'a, K: SceneRuns + ?Sized>(
         plans,
         outcomes: Vec::new(),
         failures: Vec::new(),
-        not_run: Vec::new(),
         stopped: false,
     };
     let mut warnings = Vec::new();
     let mut counts = Counts::default();
     for index in 0..ran.plans.len() {
+        // A stop ends the scene's run: the runs after it are not run (neither among the
+        // outcomes nor the failures).
         if ran.stopped || recorder.stop_asked() {
             ran.stopped = true;
-            ran.not_run.push(index);
-            continue;
+            break;
         }
         let (outcome, failure, taken) = run_recorded(scene, &ran, index, recorder)?;
         let Some(mut outcome) = outcome else {

@@ -131,7 +131,7 @@ fn run_case_from(
     let scene = match taken {
         Some(scene) => scene,
         None => {
-            let table = uncertainty.case(index).table;
+            let table = uncertainty.table_with(&outcome.values);
             AnyScene::from_table(table, name, base).map(AnyScene::into_kind)
         }
     };

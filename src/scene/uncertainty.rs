@@ -236,20 +236,28 @@ impl Uncertainty {
 
     /// Case `index`: its values, and the scene's tables with them set, for its kind to read.
     pub fn case(&self, index: usize) -> UncertaintyCase {
-        let values: Vec<(String, Value)> = (self.varied.iter())
-            .zip(self.values(index))
+        let drawn = self.values(index);
+        let table = self.table_with(&drawn);
+        let values = (self.varied.iter())
+            .zip(drawn)
             .map(|(number, value)| (number.key.clone(), Value::Float(value)))
             .collect();
-        let mut table = self.table.clone();
-        for (key, value) in &values {
-            // Every path was found in this table when it was read.
-            let _ = set(&mut table, key, value.clone());
-        }
         TableCase {
             index,
             values,
             table,
         }
+    }
+
+    /// The scene's tables with each varied number set to its value in `values` (in the order
+    /// of [`Uncertainty::varied`]): a case's tables from values already drawn.
+    pub fn table_with(&self, values: &[f64]) -> Table {
+        let mut table = self.table.clone();
+        for (number, value) in self.varied.iter().zip(values) {
+            // Every path was found in this table when it was read.
+            let _ = set(&mut table, &number.key, Value::Float(*value));
+        }
+        table
     }
 
     /// The scene's tables as written, `[uncertainty]` taken out: the nominal scene.
