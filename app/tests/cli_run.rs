@@ -856,7 +856,7 @@ fn a_sweep_whose_every_case_fails_keeps_its_columns_and_says_each_error() {
     std::fs::write(&path, text).unwrap();
     let out = dir.join("out");
     let (code, stderr) = run_failing(&path, &out);
-    assert_ne!(code, 0, "{stderr}");
+    assert_eq!(code, 5, "{stderr}");
     assert!(stderr.contains("2 of 2 cases failed"), "{stderr}");
     let table = std::fs::read_to_string(out.join("sweep.csv")).unwrap();
     let mut reader = csv::Reader::from_reader(table.as_bytes());

@@ -144,3 +144,69 @@ fn an_uncertainty_that_cannot_be_used_is_refused_by_its_key() {
         assert!(!dir.join("out").exists(), "{to}: nothing is written");
     }
 }
+
+/// `eom run SCENE --out OUT` of `text`, written as `scene.toml` into `dir`.
+fn run_text(dir: &Path, text: &str) -> std::process::Output {
+    let path = dir.join("scene.toml");
+    std::fs::write(&path, text).unwrap();
+    eom(&[
+        "run",
+        path.to_str().unwrap(),
+        "--out",
+        dir.join("out").to_str().unwrap(),
+    ])
+}
+
+#[test]
+fn a_law_that_contradicts_a_fixed_number_is_refused_before_any_case_runs() {
+    // REMUS's mass is checked against its weight (W/M within the Earth's gravity, to the
+    // rounding of the two numbers as written): varied alone by ±2 %, most cases would
+    // contradict it, each for the same reason.
+    let dir = folder("contradicting");
+    let text = read(scene_arg("remus100.toml").into())
+        + "\n[uncertainty]\ncases = 200\nseed = 1\n\n[uncertainty.vary]\n\
+           \"body.mass\" = { distribution = \"uniform\", relative = 0.02 }\n";
+    let output = run_text(&dir, &text);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(3), "{stderr}");
+    for said in [
+        "uncertainty.vary",
+        "`body.mass` varied alone",
+        "`body.weight`",
+    ] {
+        assert!(stderr.contains(said), "{said}: {stderr}");
+    }
+    assert!(!dir.join("out").exists(), "nothing is written: {stderr}");
+}
+
+#[test]
+fn cases_that_fail_are_counted_by_reason_and_the_command_exits_5() {
+    // The pendulum's h drawn on [−0.2, 1] m: a sixth of the draws are below zero, and those
+    // above √(I₀/M) = 0.816 m make I₀ less than Mh² (about the pivot, I₀ = I_G + Mh²); both
+    // quartiles (0.1 and 0.7 m) are a pendulum the scene takes, so the scene is not refused.
+    let dir = folder("failing_cases");
+    let text = read(scene_arg("pendulum.toml").into()).replace("end_time = 20.0", "end_time = 1.0")
+        + "\n[uncertainty]\ncases = 48\nseed = 3\n\n[uncertainty.vary]\n\
+           \"body.h\" = { distribution = \"uniform\", low = -0.2, high = 1.0 }\n";
+    let output = run_text(&dir, &text);
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(5), "{stdout}\n{stderr}");
+    assert!(stderr.contains("cases failed; "), "{stderr}");
+    // Every file is written, the cases that ran counted.
+    let report = read(dir.join("out/uncertainty.json"));
+    let report: serde_json::Value = serde_json::from_str(&report).unwrap();
+    let failed = report["failed"].as_array().unwrap().len();
+    let reasons = report["failure_reasons"].as_array().unwrap();
+    let counted: u64 = reasons.iter().map(|r| r["count"].as_u64().unwrap()).sum();
+    assert_eq!(counted as usize, failed);
+    assert_eq!(reasons.len(), 2, "{reasons:?}");
+    assert!(failed > 0 && failed < 48, "{failed}");
+    // The terminal says each reason once, with its count, not each case.
+    let said = stdout.lines().filter(|l| l.contains("failed")).count();
+    assert!(said <= 2, "{stdout}");
+    assert!(
+        stdout.contains("cases failed so, the first case"),
+        "{stdout}"
+    );
+}

@@ -19,7 +19,11 @@ use eom::output::drawing::RunDrawings;
 use eom::output::trajectory::header_in;
 use eom::run::Row;
 use eom::run::record::{RecordError, Recorder, RunStart};
+use eom::run::uncertainty::{
+    CasesTable, PERCENTILES, Statistics, refuse_contradicting_laws, report_json, run_cases,
+};
 use eom::scene::sweep::{is_swept, shard_tables};
+use eom::scene::uncertainty::{UNCERTAINTY_TABLE, Uncertainty, is_uncertain};
 use eom::scene::{AnyScene, Problem, SceneError};
 use numpy::ndarray::{Array2, Array3, ArrayView2};
 use numpy::{IntoPyArray, PyArray2, PyArray3, PyReadonlyArray2};
@@ -242,38 +246,17 @@ impl Scene {
     /// whether it stopped early, each run's (path, header, rows)) and, for a run that failed
     /// where it failed having kept what it ran, its exception beside.
     fn run<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, pyo3::types::PyTuple>> {
-        let stop = AtomicBool::new(false);
-        let (sender, receiver) = mpsc::channel();
+        if self.table.contains_key(UNCERTAINTY_TABLE) {
+            let message = format!(
+                "{} is a Monte Carlo ([uncertainty]): Scene.monte_carlo() runs its cases, as \
+                 `eom run` does; Scene.run() would run only the scene as written",
+                self.name
+            );
+            let error = SceneError::new(&self.name, UNCERTAINTY_TABLE, Problem::Invalid(message));
+            return Err(scene_exception(py, &error));
+        }
         let (scene, name) = (self.scene.as_ref(), self.name.as_str());
-        let outcome = std::thread::scope(|threads| -> PyResult<Result<Ran, KindError>> {
-            let stop = &stop;
-            threads.spawn(move || {
-                let _ = sender.send(run_scene(scene, name, stop));
-            });
-            let mut receiver = receiver;
-            loop {
-                // The receiver is moved into the wait and back: it is Send, not Sync.
-                let (back, received) = py.detach(move || {
-                    let received = receiver.recv_timeout(SIGNAL_CHECK);
-                    (receiver, received)
-                });
-                receiver = back;
-                match received {
-                    Ok(outcome) => return Ok(outcome),
-                    Err(mpsc::RecvTimeoutError::Disconnected) => {
-                        let why = "the run's thread ended without a result".to_owned();
-                        return Err(exception(py, "InternalError", why, None, None));
-                    }
-                    Err(mpsc::RecvTimeoutError::Timeout) => {}
-                }
-                if let Err(signal) = py.check_signals() {
-                    // Ctrl-C: the run ends at its next row; its thread is joined as the scope
-                    // ends, and what it kept is dropped with the exception.
-                    stop.store(true, Ordering::SeqCst);
-                    return Err(signal);
-                }
-            }
-        })?;
+        let outcome = in_thread(py, move |stop| run_scene(scene, name, stop))?;
         let ran = outcome.map_err(|e| kind_exception(py, &e))?;
         let runs: Vec<Bound<'py, PyAny>> = (ran.runs.into_iter())
             .map(|run| {
@@ -296,6 +279,35 @@ impl Scene {
             failure,
         );
         result.into_pyobject(py)
+    }
+
+    /// Runs the scene's Monte Carlo, every case, as `eom run` does: (uncertainty.json's bytes,
+    /// uncertainty.csv's text). A scene without `[uncertainty]` is refused.
+    fn monte_carlo(&self, py: Python<'_>) -> PyResult<(Py<PyBytes>, String)> {
+        let text = toml::to_string(&self.table)
+            .map_err(|e| exception(py, "InternalError", e.to_string(), None, None))?;
+        if !is_uncertain(&text) {
+            let missing = Problem::Missing("an [uncertainty] table".into());
+            let error = SceneError::new(&self.name, UNCERTAINTY_TABLE, missing);
+            return Err(scene_exception(py, &error));
+        }
+        let uncertainty =
+            Uncertainty::parse(&text, &self.name).map_err(|e| scene_exception(py, &e))?;
+        let (name, base) = (self.name.as_str(), self.base.as_path());
+        let nominal = self.scene.as_ref();
+        let checked = py.detach(|| refuse_contradicting_laws(&uncertainty, nominal, (name, base)));
+        checked.map_err(|e| scene_exception(py, &e))?;
+        let indices: Vec<usize> = (0..uncertainty.cases).collect();
+        let outcomes = in_thread(py, |stop| {
+            run_cases(&uncertainty, &indices, (name, base), &|| {
+                stop.load(Ordering::SeqCst)
+            })
+        })?;
+        let keys: Vec<String> = uncertainty.varied.iter().map(|v| v.key.clone()).collect();
+        let statistics = Statistics::of(&outcomes, &PERCENTILES);
+        let report = report_json(&keys, &PERCENTILES, &statistics);
+        let table = CasesTable::write(&keys, &outcomes);
+        Ok((PyBytes::new(py, &report).unbind(), table))
     }
 
     /// The scene's model (no loads, schedules or steering gear): its names, rates and
@@ -367,6 +379,43 @@ fn run_scene(scene: &dyn Kind, name: &str, stop: &AtomicBool) -> Result<Ran, Kin
         stopped: finished.stopped(),
         runs: recorder.runs,
         failure: finished.failure(),
+    })
+}
+
+/// Runs `work` in a thread of its own, the GIL released, while this one checks for Ctrl-C
+/// (and Python's other signals) every [`SIGNAL_CHECK`]: on one, `work`'s stop flag is set, its
+/// thread joined, and the signal's exception raised.
+fn in_thread<T: Send>(py: Python<'_>, work: impl FnOnce(&AtomicBool) -> T + Send) -> PyResult<T> {
+    let stop = AtomicBool::new(false);
+    let (sender, receiver) = mpsc::channel();
+    std::thread::scope(|threads| {
+        let stop = &stop;
+        threads.spawn(move || {
+            let _ = sender.send(work(stop));
+        });
+        let mut receiver = receiver;
+        loop {
+            // The receiver is moved into the wait and back: it is Send, not Sync.
+            let (back, received) = py.detach(move || {
+                let received = receiver.recv_timeout(SIGNAL_CHECK);
+                (receiver, received)
+            });
+            receiver = back;
+            match received {
+                Ok(outcome) => return Ok(outcome),
+                Err(mpsc::RecvTimeoutError::Disconnected) => {
+                    let why = "the run's thread ended without a result".to_owned();
+                    return Err(exception(py, "InternalError", why, None, None));
+                }
+                Err(mpsc::RecvTimeoutError::Timeout) => {}
+            }
+            if let Err(signal) = py.check_signals() {
+                // Ctrl-C: the work ends at its next row; its thread is joined as the scope
+                // ends, and what it kept is dropped with the exception.
+                stop.store(true, Ordering::SeqCst);
+                return Err(signal);
+            }
+        }
     })
 }
 

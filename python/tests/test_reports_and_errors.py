@@ -228,3 +228,30 @@ def test_a_failed_manoeuvre_keeps_the_finished_figures_in_run_error_result(tmp_p
     assert kept.summary["error"] == summary["error"] == error.value.message
     assert sorted(kept.summary["manoeuvre"]) == ["aileron_step", "rudder_kick"]
     assert kept.summary["manoeuvre"] == summary["manoeuvre"]
+
+
+UNCERTAIN = SWEPT.replace(
+    "[sweep]\n\"body.h\" = [0.4, 0.5]\n",
+    "[uncertainty]\ncases = 12\nseed = 5\n\n[uncertainty.vary]\n"
+    "\"body.h\" = { distribution = \"uniform\", low = 0.4, high = 0.6 }\n",
+)
+
+
+def test_a_monte_carlo_from_python_is_eoms_and_run_refuses_it(binary, tmp_path):
+    """`Scene.run()` on a scene with `[uncertainty]` raises rather than running the scene
+    as written; `Scene.monte_carlo()` gives the bytes `eom run` writes."""
+    assert "[uncertainty]" in UNCERTAIN
+    path = tmp_path / "uncertain.toml"
+    path.write_text(UNCERTAIN)
+    scene = eom.Scene.load(path)
+    with pytest.raises(eom.SceneError) as raised:
+        scene.run()
+    assert raised.value.key == "uncertainty"
+    assert "monte_carlo()" in str(raised.value)
+    out = tmp_path / "out"
+    eom_cli("run", str(path), "--out", str(out))
+    result = scene.monte_carlo()
+    written = json.loads((out / "uncertainty.json").read_text())
+    assert result.report == written
+    assert result.table == (out / "uncertainty.csv").read_text()
+    assert result.report["cases"] == 12 and result.report["failed"] == []

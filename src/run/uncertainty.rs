@@ -29,6 +29,10 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+mod failures;
+
+pub use failures::{FailureGroup, group_failures, refuse_contradicting_laws};
+
 use super::Row;
 use super::record::{RecordError, Recorder, RunStart};
 use crate::output::drawing::RunDrawings;
@@ -198,6 +202,31 @@ pub fn run_cases(
         .collect()
 }
 
+/// `uncertainty.json`'s bytes: the varied keys, the `percentiles` `statistics` was computed
+/// with, and `statistics`; nothing
+/// that differs between one run and its shards merged (no wall time), so that the two files
+/// are the same bytes.
+pub fn report_json(varied: &[String], percentiles: &[f64], statistics: &Statistics) -> Vec<u8> {
+    #[derive(Serialize)]
+    struct Report<'a> {
+        /// The varied keys, in the order each case draws them.
+        varied: &'a [String],
+        /// The percentiles each figure gives.
+        percentiles: &'a [f64],
+        #[serde(flatten)]
+        statistics: &'a Statistics,
+    }
+    let report = Report {
+        varied,
+        percentiles,
+        statistics,
+    };
+    // Plain data: serialising it cannot fail.
+    let mut bytes = serde_json::to_vec_pretty(&report).unwrap_or_default();
+    bytes.push(b'\n');
+    bytes
+}
+
 /// One figure over the cases that gave it.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct FigureStatistics {
@@ -244,6 +273,8 @@ pub struct Statistics {
     pub cases: usize,
     /// The cases that failed, with why (their figures and verdicts are not counted).
     pub failed: Vec<(usize, String)>,
+    /// The same cases by reason, the most frequent first.
+    pub failure_reasons: Vec<FailureGroup>,
     /// Each figure, in the order the first case that gave figures lists them.
     pub figures: Vec<FigureStatistics>,
     /// Each verdict, in the same order.
@@ -262,11 +293,13 @@ impl Statistics {
         let verdicts = (columns(&ran, verdicts_of).into_iter())
             .map(|(name, verdicts)| VerdictRate::of(name, &verdicts))
             .collect();
+        let failed: Vec<(usize, String)> = (failed.iter())
+            .map(|o| (o.index, o.error.clone().unwrap_or_default()))
+            .collect();
         Statistics {
             cases: outcomes.len(),
-            failed: (failed.iter())
-                .map(|o| (o.index, o.error.clone().unwrap_or_default()))
-                .collect(),
+            failure_reasons: group_failures(&failed),
+            failed,
             figures,
             verdicts,
         }
@@ -344,8 +377,15 @@ impl Statistics {
                 );
             }
         }
-        for (index, error) in &self.failed {
-            let _ = writeln!(out, "  case {index} failed: {error}");
+        for group in &self.failure_reasons {
+            let _ = match group.count {
+                1 => writeln!(out, "  case {} failed: {}", group.first_case, group.example),
+                n => writeln!(
+                    out,
+                    "  {n} cases failed so, the first case {}: {}",
+                    group.first_case, group.example
+                ),
+            };
         }
         out
     }

@@ -78,7 +78,8 @@ pub fn run(command: Option<Command>) -> anyhow::Result<()> {
 /// writing files (an output folder that another run holds, that holds a run, that eom did not write, that
 /// is a system folder or that cannot be written included), 5
 /// the run itself (gimbal lock, a step too long for the rate of turn, a state or a load that is
-/// not finite, a step below the minimum, too many steps, a trim that does not converge), 128 + the signal for a run ended by
+/// not finite, a step below the minimum, too many steps, a trim that does not converge; cases
+/// of a sweep or a Monte Carlo that failed, the others run), 128 + the signal for a run ended by
 /// one (130 for Ctrl-C, 143 for SIGTERM), 1 anything else; 2 a usage error, clap's own or a
 /// command used on what it does not serve (`--shard` without a `[sweep]`, a trajectory over
 /// 100 MB without `--large-output`).
@@ -87,6 +88,9 @@ pub fn exit_code(error: &anyhow::Error) -> u8 {
     for cause in error.chain() {
         if cause.downcast_ref::<run::Usage>().is_some() {
             return 2;
+        }
+        if cause.downcast_ref::<run::CasesFailed>().is_some() {
+            return 5;
         }
         if let Some(interrupted) = cause.downcast_ref::<run::Interrupted>() {
             return u8::try_from(128 + interrupted.signal).unwrap_or(1);

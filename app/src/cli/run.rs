@@ -20,7 +20,7 @@
 use super::record::FolderRecorder;
 use super::sweep::{SWEEP_PLOT, run_cases, write_sweep_plot};
 use super::uncertainty;
-use anyhow::{Context, Result, bail};
+use anyhow::{Context, Result};
 use eom::Short;
 use eom::kinds::{Finished, Kind};
 use eom::output::folder::{Claim, FolderError, Writer, sweep_identity};
@@ -87,6 +87,20 @@ pub struct Interrupted {
     pub signal: i32,
     /// What was kept, and where.
     pub kept: String,
+}
+
+/// Cases of a sweep or a Monte Carlo that failed (a scene their values make refused, a run that
+/// failed), after every other case ran and the table, which says why each failed, was written:
+/// the command exits 5, as for a run that fails.
+#[derive(Debug, thiserror::Error)]
+#[error("{failed} of {cases} cases failed; {table} says why each did")]
+pub struct CasesFailed {
+    /// How many failed.
+    pub failed: usize,
+    /// How many there were.
+    pub cases: usize,
+    /// The table that lists them.
+    pub table: String,
 }
 
 fn signal_name(signal: i32) -> String {
@@ -516,7 +530,13 @@ fn finish_sweep(
         return Err(Interrupted { signal, kept }.into());
     }
     if failed > 0 {
-        bail!("{failed} of {cases} cases failed");
+        let table = shell_path(&file);
+        return Err(CasesFailed {
+            failed,
+            cases,
+            table,
+        }
+        .into());
     }
     Ok(())
 }

@@ -9,12 +9,13 @@
 //! writes from them what one run writes, with the same numbers, since both are computed from
 //! the table ([`eom::run::uncertainty`]).
 
-use super::run::{Interrupted, signal_received};
+use super::run::{CasesFailed, Interrupted, signal_received};
 use anyhow::{Context, Result};
 use eom::output::folder::{Claim, Writer, sweep_identity};
 use eom::output::summary::write_atomically;
 use eom::run::uncertainty::{
-    CaseOutcome, CasesTable, PERCENTILES, Statistics, figure_values, run_cases,
+    CaseOutcome, CasesTable, PERCENTILES, Statistics, figure_values, refuse_contradicting_laws,
+    report_json, run_cases,
 };
 use eom::scene::AnyScene;
 use eom::scene::uncertainty::Uncertainty;
@@ -23,7 +24,6 @@ use eom_cli::plots::distributions::{
     write_pass_rates,
 };
 use eom_cli::shell_path;
-use serde::Serialize;
 use std::path::Path;
 use std::time::Instant;
 
@@ -35,18 +35,6 @@ pub const REPORT_FILE: &str = "uncertainty.json";
 /// A shard's table: `uncertainty-shard-K-of-N.csv`.
 pub fn shard_file((k, n): (usize, usize)) -> String {
     format!("uncertainty-shard-{k}-of-{n}.csv")
-}
-
-/// `uncertainty.json`: what the cases' table gives, and nothing that differs between one run
-/// and its shards merged (no wall time), so that the two files are the same bytes.
-#[derive(Serialize)]
-struct Report<'a> {
-    /// The varied keys, in the order each case draws them.
-    varied: &'a [String],
-    /// The percentiles each figure gives.
-    percentiles: &'a [f64],
-    #[serde(flatten)]
-    statistics: &'a Statistics,
 }
 
 /// Runs the Monte Carlo of scene text `text` (`name` its file, `base` its folder) into `out`,
@@ -63,6 +51,7 @@ pub fn execute(
     // The scene as written, read first: a scene that cannot run fails before any case does,
     // and a kind that derives its model from the table derives it here, once.
     let nominal = AnyScene::from_table(uncertainty.nominal().clone(), name, base)?;
+    refuse_contradicting_laws(&uncertainty, nominal.as_kind(), (name, base))?;
     let (planned, writer) = match shard {
         Some((index, count)) => {
             let identity = sweep_identity(name, text, count);
@@ -81,7 +70,7 @@ pub fn execute(
     let _claim = Claim::take(out, force, &writer, &planned)?;
     let keys: Vec<String> = uncertainty.varied.iter().map(|v| v.key.clone()).collect();
     println!(
-        "{}: a Monte Carlo of {} cases{}, seed {}, {} values varied",
+        "{}: a Monte Carlo of {} cases{}, seed {}, {} varied",
         nominal.title(),
         uncertainty.cases,
         match shard {
@@ -89,7 +78,10 @@ pub fn execute(
             None => String::new(),
         },
         uncertainty.seed,
-        keys.len()
+        match keys.len() {
+            1 => "1 value".to_owned(),
+            n => format!("{n} values"),
+        }
     );
     let clock = Instant::now();
     let stop = || signal_received().is_some();
@@ -119,6 +111,17 @@ pub fn execute(
         );
         return Err(Interrupted { signal, kept }.into());
     }
+    let failed = outcomes.iter().filter(|o| o.error.is_some()).count();
+    if failed > 0 {
+        let table = shell_path(&file);
+        let cases = outcomes.len();
+        return Err(CasesFailed {
+            failed,
+            cases,
+            table,
+        }
+        .into());
+    }
     Ok(())
 }
 
@@ -147,14 +150,8 @@ fn throughput(outcomes: &[CaseOutcome], seconds: f64) -> String {
 /// `dir`; returns the statistics.
 pub fn write_report(dir: &Path, keys: &[String], outcomes: &[CaseOutcome]) -> Result<Statistics> {
     let statistics = Statistics::of(outcomes, &PERCENTILES);
-    let report = Report {
-        varied: keys,
-        percentiles: &PERCENTILES,
-        statistics: &statistics,
-    };
+    let bytes = report_json(keys, &PERCENTILES, &statistics);
     let path = dir.join(REPORT_FILE);
-    let mut bytes = serde_json::to_vec_pretty(&report)?;
-    bytes.push(b'\n');
     write_atomically(&path, &bytes).with_context(|| format!("writing {}", path.display()))?;
     let values = figure_values(outcomes);
     let figures: Vec<Distribution> = (values.iter())

@@ -43,6 +43,7 @@ from ._errors import (
 __all__ = [
     "Scene",
     "RunResult",
+    "MonteCarloResult",
     "Trajectory",
     "Model",
     "Linear",
@@ -145,6 +146,21 @@ class RunResult:
     def trajectory(self) -> Trajectory:
         """The one run of a scene that is one run (a body's), or the first run's."""
         return next(iter(self.trajectories.values()))
+
+
+@dataclass
+class MonteCarloResult:
+    """What a scene's Monte Carlo gave: what ``eom run`` writes of it, in memory.
+
+    Attributes:
+        report: uncertainty.json as ``json.load`` reads it: each figure's spread, each
+            verdict's pass rate, the failed cases and their reasons.
+        table: uncertainty.csv's text, a line per case (its values, figures, verdicts and
+            error), the same bytes as the file.
+    """
+
+    report: dict[str, Any]
+    table: str
 
 
 @dataclass
@@ -256,8 +272,8 @@ class Scene:
         summary.json, bit for bit (the summary's ``wall_seconds`` aside).
 
         A scene with a ``[sweep]`` runs as written, its sweep aside: its cases are
-        :meth:`cases`, each a scene to run. A scene with an ``[uncertainty]`` runs as written,
-        its Monte Carlo aside (``eom run`` runs its cases; :meth:`with_values` sets a case's).
+        :meth:`cases`, each a scene to run. A scene with an ``[uncertainty]`` raises
+        :class:`SceneError` (key ``uncertainty``): :meth:`monte_carlo` runs it.
 
         The GIL is released while it runs; Ctrl-C stops it at its next row and raises
         :class:`KeyboardInterrupt`. A run that fails where it fails (gimbal lock) raises
@@ -276,6 +292,19 @@ class Scene:
             failure.result = result
             raise failure
         return result
+
+    def monte_carlo(self) -> MonteCarloResult:
+        """Runs the scene's ``[uncertainty]`` as ``eom run`` does, every case on every core:
+        its report and table are the bytes of the command's uncertainty.json and
+        uncertainty.csv. A scene without one raises :class:`SceneError`, as does a law the
+        scene refuses at one spread from its value (a mass varied against a fixed weight).
+
+        Cases that fail are in the report (``failed``, ``failure_reasons``) and raise
+        nothing. The GIL is released while the cases run; Ctrl-C raises
+        :class:`KeyboardInterrupt`.
+        """
+        report, table = self._native.monte_carlo()
+        return MonteCarloResult(report=json.loads(report), table=table)
 
     def _only(self, manoeuvre: str) -> "Scene":
         """The scene with its one manoeuvre ``manoeuvre``."""

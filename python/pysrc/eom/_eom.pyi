@@ -53,6 +53,9 @@ class Scene:
         """Runs every run: (summary.json's bytes, the report, the warnings, stopped early,
         each run's (path, header, rows), the exception of a run that failed keeping its
         rows). Releases the GIL; Ctrl-C raises KeyboardInterrupt."""
+    def monte_carlo(self) -> tuple[bytes, str]:
+        """Runs the scene's ``[uncertainty]``, every case: (uncertainty.json's bytes,
+        uncertainty.csv's text). Releases the GIL; Ctrl-C raises KeyboardInterrupt."""
     def model(self) -> Model:
         """The scene's model."""
     def linear(self) -> tuple[str, str]:
