@@ -408,5 +408,30 @@ fn bad_aircraft_input_is_refused_by_key() {
         assert_eq!(output.status.code(), Some(3), "{key}: {stderr}");
         assert!(stderr.contains(key), "{key}: {stderr}");
         assert!(!out.join("summary.json").exists(), "{key}");
+        // Numbers as a reader writes them: the elevator the pull-up asks for is the trim's
+        // plus the amount, which was printed with every digit (−30.75877986738379°).
+        let longest = (stderr.split(|c: char| !c.is_ascii_digit() && c != '.'))
+            .map(|number| number.chars().filter(char::is_ascii_digit).count())
+            .max();
+        assert!(longest <= Some(9), "{key}: {stderr}");
+    }
+}
+
+/// A trim beyond the engine's tables (the F-16's thrust is tabled to Mach 1; 1500 ft/s at
+/// sea level is Mach 1.34) is warned of, by `eom linear` and by `eom run`, as a run beyond the
+/// aerodynamic tables' α is; at the shipped 502 ft/s (Mach 0.45) nothing is said.
+#[test]
+fn a_trim_beyond_the_engine_tables_is_warned_of() {
+    let dir = folder("f16_mach");
+    for (speed, warned) in [("502.0", false), ("1500.0", true)] {
+        let text = f16_with(&[("speed = 502.0", &format!("speed = {speed}"))]);
+        let file = dir.join(format!("f16_{speed}.toml"));
+        std::fs::write(&file, text).unwrap();
+        let linear = eom(&["linear", file.to_str().unwrap()]);
+        let printed = succeeded(&linear);
+        let said = printed.contains("warning: the trim is at Mach 1.34")
+            && printed.contains("beyond the thrust tables' 0 to 1");
+        assert_eq!(said, warned, "{speed}: {printed}");
+        assert_eq!(printed.contains("warning"), warned, "{speed}: {printed}");
     }
 }

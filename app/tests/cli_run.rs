@@ -951,8 +951,12 @@ fn a_fixed_step_too_long_for_the_rate_of_turn_stops_the_run_or_warns() {
         "{error}"
     );
     assert_eq!(s["final_time"].as_f64(), Some(1.82));
-    // Symplectic Euler on a pendulum (ω₀ = √(Mgh/I₀) = 2.71 rad/s) beyond h·ω₀ = 2.
-    let text = std::fs::read_to_string(scene("pendulum.toml")).unwrap();
+    // Symplectic Euler on a pendulum (ω₀ = √(Mgh/I₀) = 2.71 rad/s) beyond h·ω₀ = 2, its
+    // rows 0.8 s apart so that the step taken is the 0.8 s written (between rows 0.005 s
+    // apart it would take steps of 0.005 s, well inside the limit).
+    let text = std::fs::read_to_string(scene("pendulum.toml"))
+        .unwrap()
+        .replace("every = 0.005", "every = 0.8");
     let coarse = dir.join("coarse_pendulum.toml");
     let method = text.find("method").unwrap();
     let end = text[method..].find("end_time").unwrap() + method;
@@ -984,6 +988,21 @@ fn a_fixed_step_too_long_for_the_rate_of_turn_stops_the_run_or_warns() {
         "{warning}"
     );
     assert!(stderr.contains(warning), "{stderr}");
+    // A step that does not divide the rows' 0.01 s: each interval in 67 equal steps of
+    // 1.4925e-4 s, not the 1.5e-4 s written, and the warning says the step taken.
+    let uneven = spinning(&dir, "uneven", ("euler", 1.5e-4), 1000.0, "");
+    let output = eom_run(&uneven, &dir.join("uneven"));
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(output.status.success(), "{stderr}");
+    let warnings = summary(&dir.join("uneven"))["warnings"].clone();
+    let warning = warnings[0].as_str().unwrap();
+    assert!(
+        warning.contains("h·|ω| reached 0.1493 ")
+            && warning.contains(
+                "h = 0.000149254 s, the step taken: `integrator.step` = 0.00015 s written"
+            ),
+        "{warning}"
+    );
 }
 
 #[test]
@@ -1383,4 +1402,36 @@ fn printed_paths_paste_into_a_shell() {
         stdout.contains(&format!("wrote into '{}':", out.display())),
         "{stdout}"
     );
+}
+
+/// A run that takes every step `integrator.max_steps` allows fails with its time said once,
+/// finite and short, for a body, a ship and an aircraft.
+#[test]
+fn a_run_out_of_steps_says_when_once() {
+    let dir = folder("out_of_steps");
+    for (name, method) in [
+        ("pendulum.toml", "method = \"dop853\""),
+        ("mariner.toml", "method = \"dopri5\""),
+        ("navion.toml", "method = \"dopri5\""),
+    ] {
+        let text = std::fs::read_to_string(scene(name)).unwrap();
+        assert!(text.contains(method), "{name}");
+        let path = dir.join(name);
+        let limited = text.replacen(method, &format!("{method}\nmax_steps = 40"), 1);
+        std::fs::write(&path, limited).unwrap();
+        let (code, stderr) = run_failing(&path, &dir.join(name.replace(".toml", "")));
+        assert_eq!(code, 5, "{name}: {stderr}");
+        assert!(
+            stderr.contains("`integrator.max_steps`"),
+            "{name}: {stderr}"
+        );
+        // The time once (the integrator's own "exceeded at t = …" repeated it), finite, and
+        // as a reader writes it (the aircraft's had every digit: 8.988855340171176 s).
+        assert!(!stderr.contains("NaN"), "{name}: {stderr}");
+        assert!(!stderr.contains("exceeded at"), "{name}: {stderr}");
+        let longest = (stderr.split(|c: char| !c.is_ascii_digit() && c != '.'))
+            .map(|number| number.chars().filter(char::is_ascii_digit).count())
+            .max();
+        assert!(longest <= Some(9), "{name}: {stderr}");
+    }
 }

@@ -142,3 +142,45 @@ pub enum IntegrateError {
         iterations: usize,
     },
 }
+
+impl IntegrateError {
+    /// The time the integration reached, for the errors that happen on the way.
+    pub fn time(&self) -> Option<f64> {
+        match self {
+            IntegrateError::StepSizeTooSmall { t, .. }
+            | IntegrateError::MaxStepsExceeded { t, .. }
+            | IntegrateError::NonFiniteState { t, .. }
+            | IntegrateError::NonFiniteInput { t, .. }
+            | IntegrateError::Stopped { t }
+            | IntegrateError::NotConverged { t, .. } => Some(*t),
+            _ => None,
+        }
+    }
+
+    /// What went wrong, without the time: for a run's error that says the time itself
+    /// ([`IntegrateError::time`]) once.
+    pub fn without_time(&self) -> String {
+        match self {
+            IntegrateError::StepSizeTooSmall { h, h_min, .. } => format!(
+                "the step size {} fell below the minimum {}",
+                Short(*h),
+                Short(*h_min)
+            ),
+            IntegrateError::MaxStepsExceeded { max_steps, .. } => format!(
+                "{max_steps} steps taken (accepted and rejected), the most \
+                 `integrator.max_steps` allows, before the end"
+            ),
+            IntegrateError::NonFiniteState { component, .. } => {
+                format!("state component {component} is not finite")
+            }
+            IntegrateError::NonFiniteInput { name, value, .. } => {
+                format!("load input {name} is {value}, at a finite state")
+            }
+            IntegrateError::Stopped { .. } => "the run was stopped by its observer".to_owned(),
+            IntegrateError::NotConverged { iterations, .. } => {
+                format!("the implicit step did not converge in {iterations} iterations")
+            }
+            other => other.to_string(),
+        }
+    }
+}

@@ -71,8 +71,15 @@ impl Stepper {
 /// shorter than `h`, halving `h` alone would change nothing, and a figure would seem to have
 /// converged. Where `h` divides `every`, this is `h / 2`.
 pub fn half_the_step(h: f64, every: f64) -> f64 {
+    step_taken(h, every) / 2.0
+}
+
+/// The step a fixed-step method takes with step `h` between rows `every` apart: each interval
+/// between rows in equal steps of at most `h`, counted with the same slack as the fixed-step
+/// methods count them. It is `h` where `h` divides `every`, shorter otherwise.
+pub fn step_taken(h: f64, every: f64) -> f64 {
     let steps = ((every / h) * (1.0 - 1e-9)).ceil().max(1.0);
-    every / steps / 2.0
+    every / steps
 }
 
 /// Where a stretch ended, and what it cost.

@@ -74,11 +74,13 @@ pub fn run(command: Option<Command>) -> anyhow::Result<()> {
 }
 
 /// The exit code of a failed command, by what failed (README lists them): 3 the scene file
-/// (syntax, an unknown key, a wrong type, a missing key, a value out of range), 4 reading or
+/// (syntax, an unknown key, a wrong type, a missing key, a value out of range, an aircraft's
+/// `[trim]` that cannot be flown or found: it is solved as the scene is read), 4 reading or
 /// writing files (an output folder that another run holds, that holds a run, that eom did not write, that
 /// is a system folder or that cannot be written included), 5
 /// the run itself (gimbal lock, a step too long for the rate of turn, a state or a load that is
-/// not finite, a step below the minimum, too many steps, a trim that does not converge; cases
+/// not finite, a step below the minimum, too many steps, `eom linear`'s `linear.trim` that does
+/// not converge; cases
 /// of a sweep or a Monte Carlo that failed, the others run), 128 + the signal for a run ended by
 /// one (130 for Ctrl-C, 143 for SIGTERM), 1 anything else; 2 a usage error, clap's own or a
 /// command used on what it does not serve (`--shard` without a `[sweep]`, a trajectory over

@@ -10,6 +10,7 @@
 //! derivatives in the power and the throttle.
 
 use super::tables::Table2;
+use crate::Short;
 
 /// The thrust tables, `values[i][j]` at altitude i and Mach j.
 #[derive(Debug, Clone, PartialEq)]
@@ -119,6 +120,29 @@ impl Propulsion {
                 by_mach: 0.0,
             },
         }
+    }
+
+    /// Where (`altitude`, `mach`) lies beyond the thrust tables' breakpoints, each such
+    /// argument said with the range the tables hold (none for a constant thrust, which has no
+    /// tables): the thrust there is the tables' linear extension past their ends.
+    pub fn beyond_tables(&self, altitude: f64, mach: f64) -> Vec<String> {
+        let Propulsion::Tables(engine) = self else {
+            return Vec::new();
+        };
+        let [altitudes, machs] = engine.military.extent();
+        let mut beyond = Vec::new();
+        for (what, value, (low, high)) in [("altitude", altitude, altitudes), ("Mach", mach, machs)]
+        {
+            if !(low..=high).contains(&value) {
+                beyond.push(format!(
+                    "{what} {}, beyond the thrust tables' {} to {}",
+                    Short(value),
+                    Short(low),
+                    Short(high)
+                ));
+            }
+        }
+        beyond
     }
 
     /// The power's lag at `power` under `throttle`.

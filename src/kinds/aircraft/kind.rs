@@ -73,8 +73,19 @@ impl kinds::Kind for AircraftScene {
         rows * (super::manoeuvre::ROW.len() + 2) as f64
     }
 
+    /// The linearisation at the trim, with what the trim rests on that is not data (a
+    /// condition beyond the engine's tables) as warnings: lines of the text report and the
+    /// JSON report's `warnings`.
     fn linear(&self) -> Result<Linearised, KindError> {
-        Ok(Linearised::alone(linearise_aircraft(self)?))
+        let mut linearised = Linearised::alone(linearise_aircraft(self)?);
+        for warning in &self.trim_warnings {
+            linearised.text.push_str(&format!("warning: {warning}\n"));
+        }
+        if !self.trim_warnings.is_empty() {
+            let warnings = self.trim_warnings.iter().cloned().map(Into::into).collect();
+            (linearised.json).insert("warnings".into(), serde_json::Value::Array(warnings));
+        }
+        Ok(linearised)
     }
 
     /// The proved model with the scene's tables, engine and atmosphere, in the scene's units

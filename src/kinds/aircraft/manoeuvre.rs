@@ -253,7 +253,7 @@ pub struct AircraftRun {
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum RunError {
     /// The state left the model's domain.
-    #[error("at t = {time} s: {reason}")]
+    #[error("the run stopped at t = {} s: {reason}", crate::Short(*time))]
     Failed {
         /// When.
         time: f64,
@@ -261,7 +261,7 @@ pub enum RunError {
         reason: String,
     },
     /// The recorder stopped it.
-    #[error("stopped at t = {time} s")]
+    #[error("stopped at t = {} s", crate::Short(*time))]
     Stopped {
         /// When.
         time: f64,
@@ -520,8 +520,8 @@ fn run_in<F: Flight<N>, const N: usize>(
             ),
         },
         other => RunError::Failed {
-            time: f64::NAN,
-            reason: other.to_string(),
+            time: other.time().unwrap_or(f64::NAN),
+            reason: other.without_time(),
         },
     })?;
     Ok(AircraftRun {

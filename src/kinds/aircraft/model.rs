@@ -292,6 +292,16 @@ impl AircraftModel {
         })
     }
 
+    /// Where flight at `speed` and `altitude` lies beyond the engine's tables (Mach from the
+    /// atmosphere's speed of sound there), each such argument with the range the tables hold;
+    /// none outside the atmosphere, which the model refuses on its own.
+    pub fn beyond_engine_tables(&self, speed: f64, altitude: f64) -> Vec<String> {
+        match self.atmosphere.at(altitude) {
+            Ok(air) => (self.engine).beyond_tables(altitude, speed / air.speed_of_sound),
+            Err(_) => Vec::new(),
+        }
+    }
+
     /// What one call of the proved right-hand side costs, as the emitter counts it.
     pub fn operations(&self) -> Operations {
         self.euler.operations

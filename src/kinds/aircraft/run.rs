@@ -232,8 +232,9 @@ impl SceneRuns for AircraftScene {
         let (named, mut notes) = figures(self, &done, (kick, *linear));
         if let Some(t) = done.stopped_at {
             notes.push(format!(
-                "stopped at t = {t} s where `{}` first held (integrator.stop_when): the figures \
+                "stopped at t = {} s where `{}` first held (integrator.stop_when): the figures \
                  are of the run up to there",
+                crate::Short(t),
                 self.stop.as_ref().map_or("", |s| s.text.as_str())
             ));
         }
@@ -327,7 +328,7 @@ impl SceneRuns for AircraftScene {
         Closing {
             section,
             verdicts: Vec::new(),
-            warnings: Vec::new(),
+            warnings: self.trim_warnings.clone(),
         }
     }
 

@@ -91,6 +91,9 @@ pub struct AircraftScene {
     pub linear: crate::linear::LinearSpec,
     /// The mass and the tensor about G, for the view.
     pub mass_properties: (f64, [[f64; 3]; 3]),
+    /// What the trim rests on that is not data (a condition beyond the engine's tables), said
+    /// with every run and linearisation.
+    pub trim_warnings: Vec<String>,
     /// The wing's span and chord, for the view.
     pub span: f64,
     /// The mean aerodynamic chord.
@@ -209,6 +212,7 @@ impl AircraftScene {
         let condition = check.aircraft_condition(&file.trim)?;
         let trimmed =
             trim(&model, &condition, &limits).map_err(|e| check.invalid("trim", e.to_string()))?;
+        let trim_warnings = trim_beyond_tables(&model, &trimmed);
         if file.manoeuvre.is_empty() {
             return Err(check.error(
                 "manoeuvre",
@@ -264,6 +268,7 @@ impl AircraftScene {
             stop,
             linear,
             mass_properties,
+            trim_warnings,
             span,
             chord,
         })
@@ -650,11 +655,29 @@ impl Checker<'_> {
                 if value.abs() > limit {
                     return Err(self.invalid(
                         &key("amount"),
-                        format!("takes the {surface} to {value}°, beyond its limit ±{limit}°"),
+                        format!(
+                            "takes the {surface} to {}°, beyond its limit ±{}°",
+                            crate::Short(value),
+                            crate::Short(limit)
+                        ),
                     ));
                 }
             }
         }
         Ok(manoeuvre)
+    }
+}
+
+/// The trim's condition where it lies beyond the engine's tables, as a warning.
+fn trim_beyond_tables(model: &AircraftModel, trimmed: &Trim) -> Vec<String> {
+    let (speed, altitude) = (trimmed.state[0], trimmed.state[11]);
+    let beyond = model.beyond_engine_tables(speed, altitude);
+    match beyond.is_empty() {
+        true => Vec::new(),
+        false => vec![format!(
+            "the trim is at {}: its thrust is the tables' linear extension past their ends, \
+             not data, and so is every run and linear model that starts from it",
+            beyond.join(" and ")
+        )],
     }
 }

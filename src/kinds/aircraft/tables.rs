@@ -203,6 +203,12 @@ impl Table2 {
         Ok(Table2 { x, y, values })
     }
 
+    /// The first and last breakpoints of x, then of y: where the table holds data.
+    pub fn extent(&self) -> [(f64, f64); 2] {
+        let ends = |points: &[f64]| (points[0], points[points.len() - 1]);
+        [ends(self.x.points()), ends(self.y.points())]
+    }
+
     /// The value at (`x`, `y`) and its slopes: interpolated in x on the two rows' columns,
     /// then in y, as the source writes it.
     pub fn at(&self, x: f64, y: f64) -> Lookup2 {

@@ -95,7 +95,11 @@ pub enum TrimError {
         throttle: f64,
     },
     /// The trim's α is beyond the tables' range.
-    #[error("trim needs α = {alpha_deg:.3}°, beyond the tables' {low_deg}° to {high_deg}°")]
+    #[error(
+        "trim needs α = {alpha_deg:.3}°, beyond the tables' {}° to {}°",
+        crate::Short(*low_deg),
+        crate::Short(*high_deg)
+    )]
     Alpha {
         /// The angle of attack the equations ask for.
         alpha_deg: f64,
@@ -105,7 +109,7 @@ pub enum TrimError {
         high_deg: f64,
     },
     /// A surface beyond its limit.
-    #[error("trim needs {surface} {value:.3}°, beyond its limit ±{limit}°")]
+    #[error("trim needs {surface} {value:.3}°, beyond its limit ±{}°", crate::Short(*limit))]
     Surface {
         /// Which.
         surface: &'static str,

@@ -179,8 +179,10 @@ struct Rate {
     entries: Range<usize>,
     /// A rate the state turns at whatever its rates (a swing's frequency), rad/s.
     floor: f64,
-    /// The step, s.
+    /// The step taken, s: each interval between rows in equal steps of at most `written`.
     step: f64,
+    /// `integrator.step` as written, s.
+    written: f64,
     /// The method's name in scene files.
     method: &'static str,
     scheme: Scheme,
@@ -233,13 +235,18 @@ impl Guard {
                 Some((0..3, (mass * g * h.abs() / transverse).sqrt()))
             }
         };
-        let step = spec.step.unwrap_or(0.0);
+        let written = spec.step.unwrap_or(0.0);
+        let step = match written > 0.0 {
+            true => crate::integrate::segment::step_taken(written, scene.every),
+            false => written,
+        };
         let rate = scheme.zip(turning).map(|(scheme, (entries, floor))| {
             let per_step = |y: f64| (y / step).powi(2);
             Rate {
                 entries,
                 floor,
                 step,
+                written,
                 method: spec.method.name(),
                 scheme,
                 warn_squared: per_step(scheme.accuracy_bound()),
@@ -363,13 +370,21 @@ impl Rate {
             }
             _ => "",
         };
+        let taken = match self.step == self.written {
+            true => String::new(),
+            false => format!(
+                ", the step taken: `integrator.step` = {} s written, each row's interval run in \
+                 equal steps no longer",
+                crate::Short(self.written)
+            ),
+        };
         Some(format!(
-            "{}: h·{name} reached {y:.4} at t = {} s (h = {} s, {name} = {turn:.3} rad/s), where \
-             a rotation at {name} is off by {:.0} % per turn{why}; a step ≤ {:.3e} s keeps it \
-             within {:.0} % (h·{name} ≤ {:.4})",
+            "{}: h·{name} reached {y:.4} at t = {} s (h = {} s{taken}, {name} = {turn:.3} \
+             rad/s), where a rotation at {name} is off by {:.0} % per turn{why}; a step ≤ \
+             {:.3e} s keeps it within {:.0} % (h·{name} ≤ {:.4})",
             self.method,
             super::solve::seconds(t),
-            self.step,
+            crate::Short(self.step),
             100.0 * self.scheme.turn_error(y),
             self.scheme.accuracy_bound() / turn,
             100.0 * TURN_ERROR,

@@ -483,7 +483,8 @@ fn kept(scene: &BodyScene, outcome: Option<&BodyOutcome>, stopped: bool) -> Stri
         ),
         (false, 0) => "its summary.json (the run stopped at its start)".into(),
         (false, _) => format!(
-            "its rows up to t = {} s, summary.json and the plots",
+            "its rows up to t = {} s (its last row before the failure), summary.json and \
+             the plots",
             Short(t)
         ),
     }

@@ -599,11 +599,12 @@ fn run_error(error: IntegrateError, names: &[String]) -> RunError {
                  model, made the run non-finite"
             ),
         },
+        // The run's error says the time once: these messages leave it out.
         IntegrateError::StepSizeTooSmall { t, .. }
         | IntegrateError::MaxStepsExceeded { t, .. }
         | IntegrateError::NotConverged { t, .. } => RunError::Integration {
             t,
-            message: error.to_string(),
+            message: error.without_time(),
         },
         other => RunError::Integration {
             t: f64::NAN,

@@ -568,8 +568,8 @@ fn run_error(error: IntegrateError, stepper: &Stepper) -> VehicleError {
             ),
         },
         other => VehicleError::Run {
-            time: f64::NAN,
-            reason: other.to_string(),
+            time: other.time().unwrap_or(f64::NAN),
+            reason: other.without_time(),
         },
     }
 }
