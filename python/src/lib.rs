@@ -28,7 +28,7 @@ use eom::scene::{AnyScene, Problem, SceneError};
 use numpy::ndarray::{Array2, Array3, ArrayView2};
 use numpy::{IntoPyArray, PyArray2, PyArray3, PyReadonlyArray2};
 use pyo3::prelude::*;
-use pyo3::types::PyBytes;
+use pyo3::types::{PyBool, PyBytes, PyDict};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc;
@@ -171,17 +171,17 @@ impl Scene {
         Self::from_table(py, table, &name, &base)
     }
 
-    /// The scene with each dotted key of `values` (a JSON object, `{"body.mass": 2.0}`,
-    /// `manoeuvre[0].rudder_deg`) set, read and checked again.
-    fn with_values(&self, py: Python<'_>, values: &str) -> PyResult<Self> {
-        let values: serde_json::Map<String, serde_json::Value> = serde_json::from_str(values)
-            .map_err(|e| exception(py, "SceneError", format!("values: {e}"), None, None))?;
+    /// The scene with each dotted key of `values` (a dict, `{"body.mass": 2.0}`,
+    /// `manoeuvre[0].rudder_deg`) set, read and checked again. Each value is taken as Python
+    /// holds it (a float stays a float, NaN included, for the scene's check to name its key).
+    fn with_values(&self, py: Python<'_>, values: &Bound<'_, PyDict>) -> PyResult<Self> {
         let mut table = self.table.clone();
-        for (key, value) in values {
+        for (key, value) in values.iter() {
+            let key: String = key.extract()?;
             let invalid =
                 |problem: Problem| scene_exception(py, &SceneError::new(&self.name, &key, problem));
-            let value = toml::Value::try_from(&value)
-                .map_err(|e| invalid(Problem::Schema(format!("not a TOML value: {e}"))))?;
+            let value = toml_value(&value)
+                .map_err(|why| invalid(Problem::Schema(format!("not a TOML value: {why}"))))?;
             eom::scene::sweep::set(&mut table, &key, value).map_err(invalid)?;
         }
         Self::from_table(py, table, &self.name, &self.base)
@@ -417,6 +417,46 @@ fn in_thread<T: Send>(py: Python<'_>, work: impl FnOnce(&AtomicBool) -> T + Send
             }
         }
     })
+}
+
+/// A Python value as the TOML value a scene's key takes: a bool, an integer (Python's or
+/// numpy's), a float (NaN and infinities kept), a string, a list or a dict of them.
+fn toml_value(value: &Bound<'_, PyAny>) -> Result<toml::Value, String> {
+    use toml::Value;
+    if let Ok(flag) = value.cast::<PyBool>() {
+        return Ok(Value::Boolean(flag.is_true()));
+    }
+    if let Ok(integer) = value.extract::<i64>() {
+        return Ok(Value::Integer(integer));
+    }
+    if let Ok(number) = value.extract::<f64>() {
+        return Ok(Value::Float(number));
+    }
+    if let Ok(text) = value.extract::<String>() {
+        return Ok(Value::String(text));
+    }
+    if let Ok(table) = value.cast::<PyDict>() {
+        let mut entries = toml::Table::new();
+        for (key, value) in table.iter() {
+            let key: String = key.extract().map_err(|_| "a table's key is not a string")?;
+            entries.insert(key, toml_value(&value)?);
+        }
+        return Ok(Value::Table(entries));
+    }
+    if let Ok(items) = value.try_iter() {
+        let items: Result<Vec<Value>, String> = items
+            .map(|item| {
+                item.map_err(|e| e.to_string())
+                    .and_then(|item| toml_value(&item))
+            })
+            .collect();
+        return items.map(Value::Array);
+    }
+    let kind = value
+        .get_type()
+        .name()
+        .map_or_else(|_| "?".to_owned(), |n| n.to_string());
+    Err(format!("a {kind}"))
 }
 
 /// One run's rows as trajectory.csv holds them: its header (with units) and its numbers,

@@ -255,3 +255,23 @@ def test_a_monte_carlo_from_python_is_eoms_and_run_refuses_it(binary, tmp_path):
     assert result.report == written
     assert result.table == (out / "uncertainty.csv").read_text()
     assert result.report["cases"] == 12 and result.report["failed"] == []
+
+
+def test_a_value_that_is_not_finite_is_refused_naming_its_key():
+    """`with_values` hands each value to the scene's check as Python holds it: NaN is refused
+    by the key it was given for, as the command refuses it in a scene file."""
+    scene = eom.Scene.load(SCENES / "pendulum.toml")
+    for value in (float("nan"), float("inf")):
+        with pytest.raises(eom.SceneError) as raised:
+            scene.with_values({"body.mass": value})
+        assert raised.value.key == "body.mass", str(raised.value)
+    assert scene.with_values({"body.mass": np.float64(4.0)}).table["body"]["mass"] == 4.0
+
+
+def test_complex_states_are_refused_rather_than_cut_to_their_real_parts():
+    model = eom.Scene.load(SCENES / "pendulum.toml").model()
+    with pytest.raises(eom.InvalidValue, match="complex"):
+        model.rhs(np.array([0.1 + 0.2j, 0.0]))
+    with pytest.raises(eom.InvalidValue, match="complex"):
+        model.state_jacobian([0.1, 0.0], u=np.zeros(len(model.input_names), dtype=complex))
+    assert np.array_equal(model.rhs([0.1, 0.0]), model.rhs(np.array([0.1 + 0j, 0.0]).real))

@@ -256,7 +256,7 @@ class Scene:
         """The scene with each key path of ``values`` set (``{"hydrodynamics.Nr": -0.0017}``,
         ``{"manoeuvre[0].rudder_deg": 20.0}``), read and checked again: what one case of a
         ``[sweep]`` is."""
-        return Scene(self._native.with_values(json.dumps(dict(values))))
+        return Scene(self._native.with_values(dict(values)))
 
     def cases(self) -> list[Case]:
         """The cases of the scene's ``[sweep]``, as ``eom run`` runs them (``[]`` without
@@ -358,6 +358,18 @@ def _key_paths(value: Any, prefix: str) -> Iterable[str]:
         yield prefix
 
 
+def _real(name: str, value: Any) -> np.ndarray:
+    """``value`` as an array of doubles; complex numbers are refused rather than cast, which
+    would drop their imaginary parts."""
+    array = np.asarray(value)
+    if np.iscomplexobj(array):
+        raise InvalidValue(
+            f"{name} is complex ({array.dtype}): the model takes real states and inputs "
+            f"(pass {name}.real where the imaginary parts are zero)"
+        )
+    return np.asarray(array, dtype=np.float64)
+
+
 class Model:
     """A scene's model: f(x, u), ∂f/∂x and ∂f/∂u, evaluated by the compiled (proved) program
     over many states in one call, with the GIL released.
@@ -385,7 +397,7 @@ class Model:
         return list(self._native.input_names)
 
     def _arrays(self, x: Any, u: Any) -> tuple[np.ndarray, np.ndarray, bool]:
-        x = np.asarray(x, dtype=np.float64)
+        x = _real("x", x)
         single = x.ndim == 1
         if single:
             x = x[:, None]
@@ -398,7 +410,7 @@ class Model:
         if u is None:
             u = np.zeros((m, count))
         else:
-            u = np.asarray(u, dtype=np.float64)
+            u = _real("u", u)
             if u.ndim == 1:
                 if u.shape[0] != m:
                     raise ShapeError(

@@ -1,6 +1,7 @@
 """The compiled module under ``eom`` (PyO3). Use the package ``eom``; these are its parts."""
 
 from os import PathLike
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
@@ -18,7 +19,7 @@ class Scene:
     @staticmethod
     def from_table_json(table: str, name: str = "<scene>", base: str | PathLike[str] = ".") -> Scene:
         """Reads and checks a scene's tables given as JSON text."""
-    def with_values(self, values: str) -> Scene:
+    def with_values(self, values: dict[str, Any]) -> Scene:
         """The scene with each dotted key of ``values`` (a JSON object) set, checked again."""
     def cases(self) -> list[tuple[int, str, Scene]]:
         """The ``[sweep]``'s cases: (index, the swept values as JSON, the case's scene)."""
