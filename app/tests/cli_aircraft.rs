@@ -435,3 +435,41 @@ fn a_trim_beyond_the_engine_tables_is_warned_of() {
         assert_eq!(printed.contains("warning"), warned, "{speed}: {printed}");
     }
 }
+
+/// `eom tradeoff` judges only the figures that have a target, and says which it did not
+/// judge (an aircraft's load factors, damping ratios, its speed and height in the scene's
+/// units); a target set by a figure's whole key judges it.
+#[test]
+fn tradeoff_says_which_figures_it_did_not_judge() {
+    let navion = scene_arg("navion.toml");
+    let json = succeeded(&eom(&["tradeoff", navion.as_str(), "--json"]));
+    let value: Value = serde_json::from_str(&json).unwrap();
+    let all: Vec<&str> = (value["not_judged"].as_array().unwrap().iter())
+        .map(|key| key.as_str().unwrap())
+        .collect();
+    for key in ["peak_load_factor_g", "dutch_roll_damping", "final_speed"] {
+        assert!(all.contains(&key), "{key}: {all:?}");
+    }
+    let targeted = [
+        "tradeoff",
+        navion.as_str(),
+        "--figure-target",
+        "g=0.01",
+        "--figure-target",
+        "dutch_roll_damping=0.001",
+    ];
+    let text = succeeded(&eom(&targeted));
+    let line = (text.lines())
+        .find(|line| line.starts_with("not judged, no target for their unit"))
+        .unwrap_or_else(|| panic!("{text}"));
+    let rest = line.rsplit_once(": ").unwrap().1;
+    assert!(rest.contains("final_speed"), "{line}");
+    assert!(
+        !rest.contains("_g") && !rest.contains("dutch_roll_damping,"),
+        "{line}"
+    );
+    assert!(
+        text.contains("every figure with a target within it"),
+        "{text}"
+    );
+}

@@ -136,16 +136,18 @@ impl Default for Targets {
 }
 
 impl Targets {
-    /// The target of the figure `key`, by the longest unit its key ends in (`_deg_s` before
-    /// `_s`); `None` for a figure of another unit, which is compared but not judged.
+    /// The target of the figure `key`: its own where one is set under its whole key
+    /// (`dutch_roll_damping`), else by the longest unit its key ends in (`_deg_s` before `_s`);
+    /// `None` for a figure of another unit, which is compared but not judged.
     pub fn of(&self, key: &str) -> Option<f64> {
         (self.0.iter())
-            .filter(|(unit, _)| key.ends_with(&format!("_{unit}")))
+            .filter(|(unit, _)| key == unit || key.ends_with(&format!("_{unit}")))
             .max_by_key(|(unit, _)| unit.len())
             .map(|(_, target)| *target)
     }
 
-    /// Sets the target of `unit` (`m`, `deg`, …), a unit of its own if no default has it.
+    /// Sets the target of `unit` (`m`, `deg`, …, or a figure's whole key), a unit of its own
+    /// if no default has it.
     pub fn set(&mut self, unit: &str, target: f64) {
         match self.0.iter_mut().find(|(u, _)| u == unit) {
             Some(entry) => entry.1 = target,
@@ -233,6 +235,14 @@ pub enum FigureRecommendation<'a> {
 }
 
 impl FigureTradeoff {
+    /// The figures compared whose unit has no target in `targets`: shown, not judged.
+    pub fn not_judged<'a>(&'a self, targets: &Targets) -> Vec<&'a str> {
+        (self.keys.iter())
+            .filter(|key| targets.of(key).is_none())
+            .map(String::as_str)
+            .collect()
+    }
+
     /// The cheapest setting ([`FigureRow::cost`]) meeting `targets` where the errors converge,
     /// or why there is none.
     pub fn recommend(&self, targets: &Targets) -> FigureRecommendation<'_> {

@@ -22,9 +22,10 @@ pub struct Args {
     /// compared on its end state (a catalog body's).
     #[arg(long, default_value_t = 1e-6, value_parser = super::values::positive)]
     target: f64,
-    /// A figure's target error by its unit, `UNIT=VALUE` (`m=0.05`, `deg=0.01`), for a scene
-    /// compared on its figures; repeat for each unit (defaults: m=0.01, deg=0.001, s=0.01,
-    /// deg_s=1e-4, m_s=1e-4).
+    /// A figure's target error by its unit, `UNIT=VALUE` (`m=0.05`, `deg=0.01`, `g=0.001`), or
+    /// by its whole key (`dutch_roll_damping=0.001`), for a scene compared on its figures;
+    /// repeat for each (defaults: m=0.01, deg=0.001, s=0.01, deg_s=1e-4, m_s=1e-4). A figure
+    /// with no target is compared and shown, not judged.
     #[arg(long = "figure-target", value_parser = unit_target)]
     figure_targets: Vec<(String, f64)>,
     /// A figure whose error at each setting the table shows in a column of its own
@@ -63,6 +64,7 @@ pub fn run(args: Args) -> Result<()> {
     if args.json {
         let value = json!({
             "target": args.target,
+            "error_measure": "relative: the largest end-state difference from the reference over max(1, the largest reference entry)",
             "reference": result.reference,
             "reference_spread": result.reference_spread(),
             "rows": result.rows.iter().map(row_json).collect::<Vec<_>>(),
@@ -126,7 +128,7 @@ fn print_table(title: &str, result: &Tradeoff, target: f64, recommendation: &Rec
     println!();
     match recommendation {
         Recommendation::Setting(row) => println!(
-            "recommended for an error of at most {target:e}: {} with {} (error {:.2e}, {:.2e} s, {} rhs evals)",
+            "recommended for a relative error of at most {target:e}: {} with {} (error {:.2e}, {:.2e} s, {} rhs evals)",
             row.method,
             row.setting,
             row.error.unwrap_or(f64::NAN),
@@ -201,6 +203,7 @@ fn figures(args: &Args, title: &str) -> Result<()> {
                 FigureRecommendation::Setting(_) => None,
                 FigureRecommendation::None(why) => Some(why),
             },
+            "not_judged": compared.not_judged(&targets),
         });
         println!("{}", serde_json::to_string_pretty(&value)?);
     } else {
@@ -246,9 +249,10 @@ fn print_figures(
         .map(|(unit, t)| format!("{t:e} {unit}"))
         .collect();
     println!(
-        "each figure's error is its largest difference from the reference over the runs; the \
-         targets, by unit: {}; the cost is the rhs evals of the runs, the time the scene's \
-         whole run, its refined runs included",
+        "each figure's error is its largest difference from the reference over the runs, in \
+         the figure's unit; the targets, by unit: {}; the cost is the rhs evals of the runs; \
+         the time is the scene's whole run, its refined runs included, timed once, so that it \
+         moves with the machine's load: compare settings by their rhs evals",
         said.join(", ")
     );
     println!();
@@ -292,15 +296,27 @@ fn print_figures(
         }
     }
     println!();
+    let not_judged = compared.not_judged(targets);
+    if !not_judged.is_empty() {
+        println!(
+            "not judged, no target for their unit (--figure-target UNIT=VALUE or \
+             FIGURE=VALUE sets one): {}",
+            not_judged.join(", ")
+        );
+    }
     match recommendation {
         FigureRecommendation::Setting(row) => println!(
-            "recommended: {} with {} ({} steps, {} rhs evals, {:.2e} s), every figure within \
-             its target",
+            "recommended: {} with {} ({} steps, {} rhs evals, {:.2e} s), every figure with a \
+             target within it{}",
             row.setting.method.name(),
             row.setting.describe(),
             row.steps,
             counted(row.rhs_evals),
-            row.seconds
+            row.seconds,
+            match not_judged.len() {
+                0 => String::new(),
+                n => format!(" ({n} not judged)"),
+            }
         ),
         FigureRecommendation::None(why) => println!("no setting is recommended: {why}"),
     }
