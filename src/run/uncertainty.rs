@@ -316,19 +316,23 @@ impl Statistics {
             .max(6);
         let ran = self.cases - self.failed.len();
         let _ = writeln!(out, "{ran} of {} cases ran", self.cases);
-        if !self.figures.is_empty() {
+        // A figure the same in every case that gave it (one the varied values do not reach)
+        // has no spread to show: it is said once, after the table.
+        let (varying, constant): (Vec<&FigureStatistics>, Vec<&FigureStatistics>) =
+            (self.figures.iter()).partition(|figure| !figure.is_constant());
+        if !varying.is_empty() {
             let _ = write!(
                 out,
                 "  {:<width$} {:>7} {:>12} {:>11}",
                 "figure", "cases", "mean", "std"
             );
-            if let Some(figure) = self.figures.first() {
+            if let Some(figure) = varying.first() {
                 for (p, _) in &figure.percentiles {
                     let _ = write!(out, " {:>11}", format!("p{p}"));
                 }
             }
             out.push('\n');
-            for figure in &self.figures {
+            for figure in &varying {
                 let shown = |value: f64| match figure.count {
                     0 => "—".to_owned(),
                     _ => significant(value),
@@ -349,6 +353,12 @@ impl Statistics {
                 }
                 out.push('\n');
             }
+        }
+        if !constant.is_empty() {
+            let said: Vec<String> = (constant.iter())
+                .map(|figure| format!("{} = {}", figure.name, crate::Short(figure.min)))
+                .collect();
+            let _ = writeln!(out, "  the same in every case: {}", said.join(", "));
         }
         if !self.verdicts.is_empty() {
             let _ = writeln!(
@@ -450,6 +460,11 @@ fn significant(value: f64) -> String {
 }
 
 impl FigureStatistics {
+    /// Whether every case that gave it gave the same value (and at least one did).
+    pub fn is_constant(&self) -> bool {
+        self.count > 0 && self.min == self.max
+    }
+
     /// The statistics of one figure's `values` over the cases (`None`: not given).
     fn of(name: &str, values: &[Option<f64>], percentiles: &[f64]) -> Self {
         let given: Vec<f64> = values.iter().flatten().copied().collect();
@@ -709,6 +724,26 @@ mod tests {
         // What the plot draws: the values given by the cases that ran, in case order.
         let drawn = figure_values(&outcomes);
         assert_eq!(drawn, vec![("turn/advance_m", vec![1.0, 3.0, 2.0])]);
+    }
+
+    #[test]
+    fn a_figure_the_same_in_every_case_is_said_once_not_tabled() {
+        let outcomes: Vec<CaseOutcome> = (0..4)
+            .map(|index| {
+                let mut case = outcome(index, Some(index as f64), Some(true));
+                case.figures.push(("turn/rudder_deg".into(), Some(35.0)));
+                case
+            })
+            .collect();
+        let report = Statistics::of(&outcomes, &PERCENTILES).report();
+        let tabled: Vec<&str> = report.lines().filter(|l| l.contains("turn/")).collect();
+        assert_eq!(tabled.len(), 2, "{report}");
+        assert!(tabled[0].trim_start().starts_with("turn/advance_m"), "{report}");
+        assert_eq!(
+            tabled[1].trim(),
+            "the same in every case: turn/rudder_deg = 35",
+            "{report}"
+        );
     }
 
     #[test]
