@@ -738,7 +738,10 @@ mod tests {
         let report = Statistics::of(&outcomes, &PERCENTILES).report();
         let tabled: Vec<&str> = report.lines().filter(|l| l.contains("turn/")).collect();
         assert_eq!(tabled.len(), 2, "{report}");
-        assert!(tabled[0].trim_start().starts_with("turn/advance_m"), "{report}");
+        assert!(
+            tabled[0].trim_start().starts_with("turn/advance_m"),
+            "{report}"
+        );
         assert_eq!(
             tabled[1].trim(),
             "the same in every case: turn/rudder_deg = 35",

@@ -17,7 +17,7 @@ use eom::linear::{Linearisation, StateSpace};
 use eom::output::folder::{Claim, Writer};
 use eom::output::mat::mat_file;
 use eom::output::summary::write_atomically;
-use eom_cli::plots::poles::{POLES, write_pole_plot};
+use eom_cli::plots::poles::{POLES, PlottedMode, write_pole_plot};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 
@@ -116,8 +116,7 @@ fn write_files(
         &out.join("B.csv"),
         csv(&linear.input_names, &linear.b).as_bytes(),
     )?;
-    let poles: Vec<(f64, f64)> = linear.eigenvalues.iter().map(|l| (l.re, l.im)).collect();
-    write_pole_plot(out, title, &poles, linear.growth_tolerance)?;
+    write_pole_plot(out, title, &plotted_modes(linear), linear.growth_tolerance)?;
     write_atomically(&out.join(REPORT), text.as_bytes())?;
     let mut json = serde_json::to_string_pretty(report)?;
     json.push('\n');
@@ -137,4 +136,18 @@ fn csv(columns: &[&str], matrix: &eom::nalgebra::DMatrix<f64>) -> String {
         text.push('\n');
     }
     text
+}
+
+/// Each mode as the pole plot draws it: its name (`mode k` where the kind gives none) and its
+/// eigenvalue.
+fn plotted_modes(linear: &Linearisation) -> Vec<PlottedMode> {
+    (linear.modes.iter().enumerate())
+        .map(|(k, mode)| PlottedMode {
+            name: match &mode.name {
+                Some(name) if !name.is_empty() => name.to_string(),
+                _ => format!("mode {}", k + 1),
+            },
+            eigenvalue: (mode.eigenvalue.re, mode.eigenvalue.im),
+        })
+        .collect()
 }

@@ -587,3 +587,35 @@ fn a_missing_folder_names_the_file() {
     assert!(matches!(error, PlotError::Write { .. }));
     assert!(error.to_string().contains("state.svg"), "{error}");
 }
+
+/// The pole plot names each mode with its eigenvalue, and where slow modes crowd the origin
+/// beside a fast one (a phugoid and a spiral at a hundredth of a short period's reach) draws
+/// them again in a panel at their own scale; where none do, one panel.
+#[test]
+fn the_pole_plot_names_its_modes_and_spreads_the_slow_ones() {
+    use super::poles::{PlottedMode, write_pole_plot};
+    let mode = |name: &str, eigenvalue| PlottedMode {
+        name: name.into(),
+        eigenvalue,
+    };
+    let folder = Folder::new("poles");
+    let modes = [
+        mode("short period", (-2.5, 2.6)),
+        mode("phugoid", (-0.0167, 0.0216)),
+        mode("spiral", (-0.0084, 0.0)),
+        mode("height", (0.0, 0.0)),
+    ];
+    let file = write_pole_plot(&folder.0, "a flight", &modes, 1e-9).unwrap();
+    let svg = fs::read_to_string(file).unwrap();
+    for said in [
+        "short period: -2.5 ± 2.6i",
+        "phugoid: -0.0167 ± 0.0216i",
+        "spiral: -0.0084",
+    ] {
+        assert!(svg.contains(said), "{said}");
+    }
+    assert!(svg.contains("the slow modes, near the origin"));
+    let fast = [mode("short period", (-2.5, 2.6)), mode("roll", (-8.4, 0.0))];
+    let file = write_pole_plot(&folder.0, "a flight", &fast, 1e-9).unwrap();
+    assert!(!fs::read_to_string(file).unwrap().contains("the slow modes"));
+}
