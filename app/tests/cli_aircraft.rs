@@ -153,6 +153,17 @@ fn the_navion_runs_on_its_derivatives() {
         assert!(out.join(name).join("trajectory.csv").exists(), "{name}");
     }
     assert_dutch_roll_read_as_linear(&summary["manoeuvre"]["rudder_kick"]["figures"]);
+    // The view draws the aircraft from its geometry: the fuselage its 27.5 ft long and a
+    // tenth of that across (it was the cylinder of the mass and principal moments, which the
+    // wing's inertia swells: 26 m across a 747).
+    let view = std::fs::read_to_string(out.join("rudder_kick/view.html")).unwrap();
+    let shape =
+        r#""shape":{"kind":"aircraft","length":27.5,"diameter":2.75,"span":33.4,"chord":5.7"#;
+    assert!(
+        view.contains(shape),
+        "{}",
+        &view[view.find("\"shape\"").unwrap_or(0)..][..120]
+    );
     let stdout = succeeded(&eom(&["linear", &scene_arg("navion.toml"), "--json"]));
     let linear: Value = serde_json::from_str(&stdout).unwrap();
     let names: Vec<&str> = (linear["modes"].as_array().unwrap().iter())

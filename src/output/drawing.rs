@@ -179,18 +179,18 @@ pub struct RigidBody {
 
 /// A flight in space. Its rows carry `north`, `east`, `altitude` (in the scene's length
 /// unit, altitude up) and `phi`, `theta`, `psi` (rad), each column labelled with its unit
-/// (`north[ft]`). Drawn: the view of the body moving over the ground, a solid of the body's
-/// mass and inertia with wings of its span and chord, every column in its readout.
+/// (`north[ft]`). Drawn: the view of the aircraft moving over the ground, its fuselage, wings
+/// and tail from the scene's geometry, every column in its readout.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Flight {
     /// The captions' title: the scene's and the run's.
     pub title: String,
-    /// The body the view draws.
-    pub solid: Solid,
     /// The wing's span, in the scene's length unit.
     pub span: f64,
     /// Its chord.
     pub chord: f64,
+    /// The fuselage's length, where the scene gives it.
+    pub length: Option<f64>,
     /// The length unit of the rows and of the solid (`ft`, `m`).
     pub length_unit: &'static str,
 }

@@ -470,25 +470,23 @@ pub fn write_space(out: &Path, drawing: &SpaceManoeuvre, kept: &Kept) -> Result<
     write_view(out, &input).with_context(|| format!("writing the view into {}", out.display()))
 }
 
-/// The view of a flight (`view.html`): the fuselage, the solid cylinder of the body's mass and
-/// moments along body x, with wings of its span and chord and a fin, over the ground (z = 0 at
-/// altitude 0, Z down), the attitude from the rows' Euler angles.
+/// The fuselage's length over its diameter, as the view draws an aircraft.
+const FUSELAGE_FINENESS: f64 = 10.0;
+
+/// The view of a flight (`view.html`): the aircraft from the scene's geometry (a fuselage of
+/// its length along body x, wings of its span and chord, a tailplane and a fin), over the
+/// ground (z = 0 at altitude 0, Z down), the attitude from the rows' Euler angles.
 pub fn write_flight(out: &Path, drawing: &Flight, kept: &Kept) -> Result<PathBuf> {
-    let solid = drawing.solid;
-    let inertia = Matrix3::from_fn(|r, c| solid.inertia_about_g[r][c]);
-    let (moments, axes) = principal(inertia);
-    let along = (0..3)
-        .max_by(|&a, &b| axes[(0, a)].abs().total_cmp(&axes[(0, b)].abs()))
-        .unwrap_or(0);
-    let others: Vec<usize> = (0..3).filter(|&k| k != along).collect();
-    let transverse = (moments[others[0]] + moments[others[1]]) / 2.0;
-    let Some((length, diameter)) = cylinder_size(solid.mass, moments[along], transverse) else {
-        anyhow::bail!(
-            "no solid cylinder has the body's mass {} and principal moments {:?}",
-            Short(solid.mass),
-            moments
-        );
+    // The fuselage a tenth as thick as it is long, a transport's and a fighter's fineness
+    // ratio to within a factor of two; without the scene's length, as long as the span.
+    let (length, said) = match drawing.length {
+        Some(length) => (length, "`geometry.length`"),
+        None => (
+            drawing.span,
+            "the span, the scene giving no `geometry.length`",
+        ),
     };
+    let diameter = length / FUSELAGE_FINENESS;
     let unit = drawing.length_unit;
     let column = |name: &str, unit: &str| kept.column(&format!("{name}[{unit}]"));
     let angles = [
@@ -507,12 +505,10 @@ pub fn write_flight(out: &Path, drawing: &Flight, kept: &Kept) -> Result<PathBuf
         .map(|(name, values)| (spaced(name), values.as_slice()))
         .collect();
     let note = format!(
-        "the fuselage is the solid cylinder of mass {} with the moments {} about its axis and {}          across it: length {} {unit}, diameter {} {unit}; the wings' span {} {unit} and chord {}          {unit} are the scene's",
-        Short(solid.mass),
-        Short(moments[along]),
-        Short(transverse),
+        "drawn from the scene's geometry: the fuselage {} {unit} long ({said}) and a tenth of \
+         that across, the wings of span {} {unit} and chord {} {unit}, the tailplane a third \
+         of the span",
         Short(length),
-        Short(diameter),
         Short(drawing.span),
         Short(drawing.chord),
     );

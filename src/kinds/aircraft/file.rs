@@ -84,6 +84,9 @@ pub struct GeometryTable {
     pub chord: f64,
     /// G, as a fraction of c̄ aft of its leading edge.
     pub xcg: f64,
+    /// The fuselage's length, drawn in the view (nothing else reads it).
+    #[serde(default)]
+    pub length: Option<f64>,
     /// Where the moment tables are given, likewise.
     pub xcg_reference: f64,
 }

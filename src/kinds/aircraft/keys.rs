@@ -136,6 +136,15 @@ pub const KEYS: &[Key] = &[
         ..Key::BLANK
     },
     Key {
+        path: "geometry.length",
+        families: AIRCRAFT,
+        unit: "ft or m",
+        required: Required::No,
+        description: "The fuselage's length, for the view alone (view.html draws the fuselage that long and a tenth of it across, the wings of the span and chord, the tail a third of the span); without it the view draws the fuselage as long as the span and says so.",
+        example: "49.0",
+        ..Key::BLANK
+    },
+    Key {
         path: "geometry.xcg",
         families: AIRCRAFT,
         unit: "-",

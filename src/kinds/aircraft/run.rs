@@ -391,9 +391,9 @@ fn drawings(scene: &AircraftScene, path: &str, rows: &[(f64, [f64; 18])]) -> Vec
         }),
         Drawing::Flight(Flight {
             title: format!("{}: {path}", scene.title),
-            solid: scene.solid(),
             span: scene.span,
             chord: scene.chord,
+            length: scene.length,
             length_unit: units(scene.units)[9].1,
         }),
         Drawing::Curves(Curves {

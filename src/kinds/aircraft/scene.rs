@@ -98,6 +98,8 @@ pub struct AircraftScene {
     pub span: f64,
     /// The mean aerodynamic chord.
     pub chord: f64,
+    /// `geometry.length`, the fuselage's, for the view.
+    pub length: Option<f64>,
 }
 
 /// The units of each state entry and control, by the unit system.
@@ -201,6 +203,9 @@ impl AircraftScene {
             std::array::from_fn(|r| std::array::from_fn(|c| tensor[(r, c)])),
         );
         let (span, chord) = (airframe.span, airframe.chord);
+        let length = (file.geometry.length)
+            .map(|length| check.positive("geometry.length", length))
+            .transpose()?;
         let aerodynamics: Aerodynamics = match form {
             Form::StevensLewis => check.aircraft_aerodynamics(&file.aerodynamics)?.into(),
             Form::Derivatives => check.aircraft_derivatives(&file.aerodynamics)?.into(),
@@ -271,6 +276,7 @@ impl AircraftScene {
             trim_warnings,
             span,
             chord,
+            length,
         })
     }
 
