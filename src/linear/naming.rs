@@ -7,7 +7,7 @@
 //! share is at least twice the other's names the mode ([`DISTINCT`]); where neither is, the
 //! mode moves both, and is called coupled, with both named, rather than given the name of one.
 //!
-//! - Flight ([`name_flight_modes`]): lateral (β, φ, p, r) against longitudinal (speed, α,
+//! - Flight (`name_flight_modes`): lateral (β, φ, p, r) against longitudinal (speed, α,
 //!   θ, q, altitude). Longitudinal: α (the short period's) against speed and altitude (the
 //!   phugoid's; θ and q move in both and decide nothing). Of a real root trading speed and
 //!   height, altitude at twice the speed's share is the height mode (at the same share the
@@ -15,9 +15,9 @@
 //!   oscillation is the Dutch roll; a real root the roll subsidence where the roll rate's share
 //!   is twice the yaw rate's, the spiral where the yaw rate's is twice the roll rate's (r/|λ|
 //!   is the heading's swing: the spiral turns the heading, the roll subsidence banks).
-//! - Planes ([`name_planes`]): surge (u), sway and yaw (v, r, ψ), heave and pitch (w, q, θ,
+//! - Planes (`name_planes`): surge (u), sway and yaw (v, r, ψ), heave and pitch (w, q, θ,
 //!   z), roll (p, φ), each plane's share its largest state's.
-//! - A catalog family ([`name_modes`]): the family's own names, as before.
+//! - A catalog family (`name_modes`): the family's own names, as before.
 
 use super::modes::Mode;
 use crate::models::Family;
