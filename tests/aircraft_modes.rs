@@ -12,8 +12,12 @@
 //!   what is not one of these is coupled, and named so.
 //! - Where a short-period and a phugoid oscillation are both named, the short period is the
 //!   faster (what the names mean).
-//! - The lateral modes do not move with the c.g. along x at this symmetric trim: the Dutch
-//!   roll, the roll subsidence and the spiral are there at every x_cg, once each.
+//! - Each root is named once, by a name of its group: the longitudinal motion's five roots
+//!   (short period, phugoid, height, or coupled between the first two), the lateral motion's
+//!   four (Dutch roll, roll subsidence, spiral), the power's one.
+//! - The lateral modes move with the c.g. (the yawing moment carried to G, the trim's α) but
+//!   keep their kind: the Dutch roll, the roll subsidence and the spiral are there at every
+//!   x_cg, once each.
 //!
 //! And at the forward c.g., where the books name the modes, the modes they name: the F-16 at
 //! 0.30 c̄ (Stevens, Lewis & Johnson's short period −1.2039 ± 1.4922i, phugoid near −0.0087 ±
@@ -98,6 +102,21 @@ fn the_names_hold(what: &str, linear: &Linearisation) {
         let named = roots_named(linear, names);
         assert!(named <= most, "{what}: {named} roots named {names:?}");
     }
+    // Each root is counted once, by a name of its group: the longitudinal motion (V, α, θ, q,
+    // altitude) has five roots, the lateral (β, φ, p, r) four, the power one.
+    let longitudinal = [
+        &short[..],
+        &phugoid[..],
+        &["height", "coupled: short period + phugoid"][..],
+    ]
+    .concat();
+    let lateral = ["Dutch roll", "roll subsidence", "spiral"];
+    assert_eq!(
+        roots_named(linear, &longitudinal),
+        5,
+        "{what}: longitudinal"
+    );
+    assert_eq!(roots_named(linear, &lateral), 4, "{what}: lateral");
     for name in ["Dutch roll", "roll subsidence", "spiral", "power lag"] {
         let found = (linear.modes.iter())
             .filter(|m| m.name == Some(name))

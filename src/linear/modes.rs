@@ -142,7 +142,8 @@ pub fn growth_tolerance(a: &DMatrix<f64>) -> f64 {
 pub enum Naming {
     /// The family's names.
     Family(Family),
-    /// The planes of motion of a body moving in six degrees of freedom.
+    /// The planes of motion of a body moving in six degrees of freedom (a vehicle's), or in
+    /// three (a ship's surge, sway and yaw): each mode by the plane it moves, or two coupled.
     Planes,
     /// The modes as flight-dynamics texts name them, for a state in wind axes (`vt`,
     /// `alpha`, `beta`, the Euler angles, `p`, `q`, `r`, `altitude`, `power`): the short
