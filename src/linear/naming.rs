@@ -2,10 +2,11 @@
 //!
 //! Every rule here reads a mode's shares ([`Mode::shares`]: each entry of its eigenvector
 //! read as an angle, a rate by the mode's own time, a velocity over the speed, a length over a
-//! length scale; see [`super::modes`]), never the order of the modes' frequencies alone. Two
-//! groups of states are told apart the way a state is called dominant: a group whose largest
-//! share is at least twice the other's names the mode ([`DISTINCT`]); where neither is, the
-//! mode moves both, and is called coupled, with both named, rather than given the name of one.
+//! length scale; see [`modes`](mod@super::modes)), never the order of the modes' frequencies
+//! alone. Two groups of states are told apart the way a state is called dominant: a group
+//! whose largest share is at least twice the other's names the mode ([`DISTINCT`]); where
+//! neither is, the mode moves both, and is called coupled, with both named, rather than given
+//! the name of one.
 //!
 //! - Flight (`name_flight_modes`): lateral (β, φ, p, r) against longitudinal (speed, α,
 //!   θ, q, altitude). Longitudinal: α (the short period's) against speed and altitude (the
