@@ -18,9 +18,8 @@
 //! that time (q/|λ| is θ's swing wherever θ̇ = q, so a rate never outweighs its angle by its
 //! units alone, in a fast mode or a slow one); a velocity over the speed at the point (u/U, an
 //! angle of attack w/U); a length over the plant's length scale (an aircraft's altitude over
-//! V²/g, the height whose potential energy g h equals V ΔV at ΔV = V: where speed is traded for
-//! height, g Δh = −V ΔV, altitude over V²/g and speed over V are the same size; a ship's or a
-//! vehicle's position over its length); a power over full power. A mode that neither grows
+//! V²/g: where speed is traded for height, g Δh = −V ΔV, so Δh/(V²/g) = −ΔV/V and the two are
+//! the same size; a ship's or a vehicle's position over its length); a power over full power. A mode that neither grows
 //! nor decays has no time of its own: its rates are zero where its angles hold still, and are
 //! read as zero.
 
