@@ -272,7 +272,7 @@ fn round_off_in_the_eigenvalues_is_no_growth() {
         a[(1, 1)] = growth;
         let turned = &q * a * q.transpose();
         let (eigenvalues, _, stability) =
-            modes(&turned, &names, Naming::Family(Family::Spatial), 0.0);
+            modes(&turned, (&names, &[]), Naming::Family(Family::Spatial), 0.0);
         (eigenvalues, stability)
     };
     let (eigenvalues, stability) = verdict(0.0);

@@ -645,6 +645,37 @@ fn remus_at_cruise_is_unstable_open_loop_in_yaw_and_in_pitch() {
     assert!([0, 2, 4].iter().all(|&i| acts(i, 1)) && [1, 3, 5].iter().all(|&i| !acts(i, 1)));
 }
 
+/// Every mode of REMUS at its cruise is named by the plane of motion it moves, its eigenvector
+/// read in comparable units (docs/linear.md): in the roll oscillation φ̇ = p, so p read by the
+/// mode's own time, p/|λ|, is φ's swing, and both are dominant (read raw, p in rad/s
+/// outweighed φ by |λ| = 4.9/s, and φ was not among them); the heave-and-pitch root at
+/// −2.19/s moves w as well as q and θ (w/U is the angle of attack it changes).
+#[test]
+fn remus_modes_are_named_by_the_planes_they_move() {
+    use eom::kinds::vehicle::linear::linearise_vehicle;
+    let linear = linearise_vehicle(&remus()).unwrap();
+    let plane = |name: &str| -> &[&str] {
+        match name {
+            "surge" => &["u"],
+            "sway and yaw" => &["v", "r"],
+            "heave and pitch" => &["w", "q", "theta"],
+            "roll" => &["p", "phi"],
+            _ => &[],
+        }
+    };
+    for m in &linear.modes {
+        println!("{:?} {:?} {:?}", m.eigenvalue, m.dominant, m.name);
+        let name = m.name.expect("every mode is named");
+        for state in &m.dominant {
+            assert!(plane(name).contains(&state.as_str()), "{name}: {state}");
+        }
+    }
+    let roll = (linear.modes.iter())
+        .find(|m| m.name == Some("roll"))
+        .expect("a roll mode");
+    assert_eq!(roll.dominant, ["p", "phi"]);
+}
+
 #[test]
 fn a_vehicle_is_trimmed_for_the_variables_its_linear_table_names() {
     use eom::kinds::vehicle::linear::linearise_vehicle;

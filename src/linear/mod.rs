@@ -16,13 +16,16 @@
 //!   linearised, so that A is constant along the motion.
 //! - [`trim`]: Newton on the reduced state for the free variables a `[linear]` table names.
 //! - [`modes`](mod@modes): eigenvalues and eigenvectors of A, each mode's period, damping, doubling or
-//!   halving time, dominant states and a name where the family knows one.
+//!   halving time, and its dominant states, its eigenvector read in comparable units (angles,
+//!   rates by the mode's own time, velocities over the speed, lengths over a length scale).
+//! - [`naming`]: each mode's name, by what moves in it.
 //! - [`state_space`]: the result as control tools read it (A, B, C, D with the names and units
 //!   of x, u and y, the point and what was set aside), for `linear.json` and `linear.mat`.
 //! - [`report`]: the text and JSON reports of `eom linear` (report.txt, linear.json), for the
 //!   command and the Python binding alike.
 
 pub mod modes;
+pub mod naming;
 pub mod plant;
 pub mod reduce;
 pub mod report;
@@ -30,7 +33,7 @@ mod scene;
 pub mod state_space;
 pub mod trim;
 
-pub use modes::{Mode, Naming, Stability, modes};
+pub use modes::{Mode, Naming, Reading, Stability, modes};
 pub use plant::{Evaluation, LinearPlant};
 pub use reduce::{SetAsideReason, set_aside, set_aside_why};
 pub use scene::{LinearSpec, Linearisation, linearise, resolve, resolve_aliased, set_at};

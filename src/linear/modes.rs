@@ -8,8 +8,22 @@
 //! ones, listed once, with its period 2π/|Im λ| (as seen in space, where the state measures
 //! roll and pitch in axes that turn with the heading), damping ratio −Re λ/|λ|, time to double
 //! ln 2/Re λ or to half ln 2/(−Re λ), the states whose share of the eigenvector is at least
-//! half the largest, and a name where the family knows one.
+//! half the largest, and a name ([`super::naming`]).
+//!
+//! **What moves is read in comparable units.** An eigenvector's entries are in the state's
+//! units, and compared raw a length in feet outweighs an angle in radians whatever moves: every
+//! longitudinal mode of an aircraft would be "altitude". So each entry is read as the plant
+//! says ([`Reading`]) before the shares are compared: an angle as it is, in radians; a rate
+//! (rad/s) times the mode's own time 1/|λ|, so that it counts as the angle it turns through in
+//! that time (q/|λ| is θ's swing wherever θ̇ = q, so a rate never outweighs its angle by its
+//! units alone, in a fast mode or a slow one); a velocity over the speed at the point (u/U, an
+//! angle of attack w/U); a length over the plant's length scale (an aircraft's altitude over
+//! V²/g: where speed is traded for height, g Δh = −V ΔV, so Δh/(V²/g) = −ΔV/V and the two are
+//! the same size; a ship's or a vehicle's position over its length); a power over full power. A mode that neither grows
+//! nor decays has no time of its own: its rates are zero where its angles hold still, and are
+//! read as zero.
 
+use super::naming;
 use crate::models::Family;
 use nalgebra::{Complex, DMatrix, DVector};
 use std::f64::consts::TAU;
@@ -32,7 +46,11 @@ pub struct Mode {
     pub time_to_double_s: Option<f64>,
     /// ln 2/(−Re λ), s, for a mode that decays.
     pub time_to_half_s: Option<f64>,
-    /// The states that dominate its eigenvector.
+    /// Each state entry's share of the eigenvector, read as [`Reading`] says and divided by
+    /// the largest (so the largest is 1), in the order of the state's names.
+    pub shares: Vec<f64>,
+    /// The states that dominate its eigenvector: those whose share is at least half the
+    /// largest.
     pub dominant: Vec<String>,
     /// What the family calls it, where it has a name.
     pub name: Option<&'static str>,
@@ -117,13 +135,14 @@ pub fn growth_tolerance(a: &DMatrix<f64>) -> f64 {
     GROWTH_TOLERANCE * norm
 }
 
-/// Whose names a mode is given: a catalog family's, or the planes of motion a vehicle's
-/// designer reads (surge, sway and yaw, heave and pitch, roll).
+/// Whose names a mode is given: a catalog family's, the planes of motion a vehicle's or a
+/// ship's designer reads (surge, sway and yaw, heave and pitch, roll), or a flight text's.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Naming {
     /// The family's names.
     Family(Family),
-    /// The planes of motion of a body moving in six degrees of freedom.
+    /// The planes of motion of a body moving in six degrees of freedom (a vehicle's), or in
+    /// three (a ship's surge, sway and yaw): each mode by the plane it moves, or two coupled.
     Planes,
     /// The modes as flight-dynamics texts name them, for a state in wind axes (`vt`,
     /// `alpha`, `beta`, the Euler angles, `p`, `q`, `r`, `altitude`, `power`): the short
@@ -132,13 +151,63 @@ pub enum Naming {
     Flight,
 }
 
+/// How one entry of an eigenvector is read when the entries are compared (see the module
+/// docs): what makes a share of the eigenvector the same size in any unit.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Reading {
+    /// As it is: an angle in radians, or an entry of a model that gives no scale (a catalog
+    /// body's).
+    AsIs,
+    /// A rate, rad/s: times the mode's own time 1/|λ|, the angle it turns through in it.
+    Rate,
+    /// Divided by this size of its unit: a velocity by the speed at the point, a length by
+    /// the plant's length scale, a power by full power.
+    Over(f64),
+}
+
+impl Reading {
+    /// An entry in `unit` read against `speed` (a velocity's unit, `m/s` or `ft/s`) and
+    /// `length` (a length's, `m` or `ft`): an angle as it is, a rate by the mode's time, a
+    /// velocity over `speed`, a length over `length`, a percentage over 100; any other unit
+    /// as it is. A speed or a length that is not positive and finite reads its entries as they
+    /// are.
+    pub fn by_unit(unit: &str, speed: f64, length: f64) -> Reading {
+        let over = |size: f64| {
+            if size > 0.0 && size.is_finite() {
+                Reading::Over(size)
+            } else {
+                Reading::AsIs
+            }
+        };
+        match unit {
+            "rad/s" => Reading::Rate,
+            "m/s" | "ft/s" => over(speed),
+            "m" | "ft" => over(length),
+            "percent" => Reading::Over(100.0),
+            _ => Reading::AsIs,
+        }
+    }
+
+    /// The size of `entry` so read, in a mode whose eigenvalue has magnitude `size` (zero for
+    /// a mode that neither grows nor decays, whose rates are read as zero).
+    fn read(self, entry: f64, size: f64) -> f64 {
+        match self {
+            Reading::AsIs => entry,
+            Reading::Rate if size > 0.0 => entry / size,
+            Reading::Rate => 0.0,
+            Reading::Over(scale) => entry / scale,
+        }
+    }
+}
+
 /// The eigenvalues of `a`, sorted (largest real part first, then by imaginary part), its
-/// modes and the verdict; `names` names the states of `a`, `naming` whose names the modes get and
-/// `heading_rate` the rate at which the axes of its roll and pitch turn (zero where they do
-/// not).
+/// modes and the verdict; `names` names the states of `a`, `readings` says how each entry of
+/// an eigenvector is read when they are compared (none: each as it is), `naming` whose names
+/// the modes get and `heading_rate` the rate at which the axes of its roll and pitch turn
+/// (zero where they do not).
 pub fn modes(
     a: &DMatrix<f64>,
-    names: &[String],
+    (names, readings): (&[String], &[Reading]),
     naming: Naming,
     heading_rate: f64,
 ) -> (Vec<Complex<f64>>, Vec<Mode>, Stability) {
@@ -149,16 +218,12 @@ pub fn modes(
     let mut modes: Vec<Mode> = eigenvalues
         .iter()
         .filter(|l| l.im >= 0.0)
-        .map(|&l| mode(a, l, (tolerance, radius), names, heading_rate))
+        .map(|&l| mode(a, l, (tolerance, radius), (names, readings), heading_rate))
         .collect();
     match naming {
-        Naming::Family(family) => name_modes(&mut modes, family),
-        Naming::Planes => {
-            for mode in &mut modes {
-                mode.name = plane_of_motion(mode);
-            }
-        }
-        Naming::Flight => name_flight_modes(&mut modes, a, names, radius),
+        Naming::Family(family) => naming::name_modes(&mut modes, family),
+        Naming::Planes => naming::name_planes(&mut modes, names),
+        Naming::Flight => naming::name_flight_modes(&mut modes, names),
     }
     let stability = if eigenvalues.iter().any(|l| l.re > tolerance) {
         Stability::Unstable
@@ -201,7 +266,7 @@ fn mode(
     a: &DMatrix<f64>,
     eigenvalue: Complex<f64>,
     (tolerance, radius): (f64, f64),
-    names: &[String],
+    (names, readings): (&[String], &[Reading]),
     heading_rate: f64,
 ) -> Mode {
     let im = if eigenvalue.im.abs() <= tolerance {
@@ -217,11 +282,9 @@ fn mode(
     let size = Complex::new(re, im).norm();
     let ln2 = std::f64::consts::LN_2;
     let vector = eigenvector(a, eigenvalue, radius);
-    let largest = vector.iter().fold(0.0f64, |m, v| m.max(v.norm()));
-    let dominant = vector
-        .iter()
-        .zip(names)
-        .filter(|(v, _)| largest > 0.0 && v.norm() >= 0.5 * largest)
+    let shares = shares(&vector, readings, size);
+    let dominant = (shares.iter().zip(names))
+        .filter(|(share, _)| **share >= 0.5)
         .map(|(_, name)| name.clone())
         .collect();
     let in_space = frequency_in_space(&vector, names, im, heading_rate);
@@ -238,8 +301,27 @@ fn mode(
         time_to_double_s: (re > 0.0).then(|| ln2 / re),
         time_to_half_s: (re < 0.0).then(|| ln2 / -re),
         frequency_in_space: in_space,
+        shares,
         dominant,
         name: None,
+    }
+}
+
+/// Each entry's size in `vector` read as `readings` say (each as it is where they are
+/// missing), in a mode whose eigenvalue has magnitude `size`, over the largest: all zero for a
+/// zero vector.
+fn shares(vector: &DVector<Complex<f64>>, readings: &[Reading], size: f64) -> Vec<f64> {
+    let read: Vec<f64> = (vector.iter().enumerate())
+        .map(|(i, v)| {
+            let reading = readings.get(i).copied().unwrap_or(Reading::AsIs);
+            reading.read(v.norm(), size).abs()
+        })
+        .collect();
+    let largest = read.iter().fold(0.0f64, |m, v| m.max(*v));
+    if largest > 0.0 && largest.is_finite() {
+        read.iter().map(|v| v / largest).collect()
+    } else {
+        vec![0.0; read.len()]
     }
 }
 
@@ -289,127 +371,51 @@ pub fn eigenvector(
     vector
 }
 
-/// A vehicle's mode by the plane of motion its dominant states lie in: surge (u), sway and yaw
-/// (v, r, ψ), heave and pitch (w, q, θ), roll (p, φ); none where they span planes, or for a
-/// state that neither grows nor decays.
-fn plane_of_motion(mode: &Mode) -> Option<&'static str> {
-    const PLANES: [(&str, &[&str]); 4] = [
-        ("surge", &["u"]),
-        ("sway and yaw", &["v", "r", "psi"]),
-        ("heave and pitch", &["w", "q", "theta"]),
-        ("roll", &["p", "phi"]),
-    ];
-    let moving = mode.damping_ratio.is_some();
-    PLANES
-        .iter()
-        .find(|(_, states)| (mode.dominant.iter()).all(|d| states.contains(&d.as_str())))
-        .filter(|_| moving && !mode.dominant.is_empty())
-        .map(|(name, _)| *name)
-}
+#[cfg(test)]
+mod tests {
+    use super::*;
 
-/// The modes of a state in wind axes, as flight-dynamics texts name them, each classed by its
-/// eigenvector: a mode of the engine's power (the only one with a power component, the power's
-/// rate reading nothing else) is its lag; the others are lateral-directional where their
-/// share of β, φ, p, r (rad, rad/s) exceeds their share of α, θ, q, longitudinal otherwise.
-/// A lateral oscillation is the Dutch roll; of the real lateral modes the fastest is the roll
-/// subsidence, the slowest the spiral. A longitudinal oscillation in which α moves as much as
-/// θ (|α| ≥ 0.3 |θ|) is the short period; one at nearly constant α, trading speed and height,
-/// the phugoid; a real longitudinal mode with α moving so is the short period split into two
-/// real roots (an aircraft that is statically unstable, or nearly); a slow one (|λ| below
-/// 0.01/s, hundreds of seconds) mostly of the altitude is the height mode (the air's density
-/// changing with it), and another, at nearly constant α, the phugoid become real (at an
-/// aft centre of gravity the phugoid's pair splits and one root may grow).
-fn name_flight_modes(modes: &mut [Mode], a: &DMatrix<f64>, names: &[String], radius: f64) {
-    let index = |name: &str| names.iter().position(|n| n == name);
-    let share = |v: &DVector<Complex<f64>>, set: &[&str]| -> f64 {
-        set.iter()
-            .filter_map(|n| index(n))
-            .map(|i| v[i].norm())
-            .sum()
-    };
-    let entry = |v: &DVector<Complex<f64>>, name: &str| index(name).map_or(0.0, |i| v[i].norm());
-    let mut lateral_real: Vec<usize> = Vec::new();
-    for (i, mode) in modes.iter_mut().enumerate() {
-        if mode.damping_ratio.is_none() {
-            continue;
-        }
-        let v = eigenvector(a, mode.eigenvalue, radius);
-        let oscillates = mode.eigenvalue.im > 0.0;
-        let lateral = share(&v, &["beta", "phi", "p", "r"]);
-        let longitudinal = share(&v, &["alpha", "theta", "q"]);
-        let pitching = entry(&v, "alpha") >= 0.3 * entry(&v, "theta");
-        let largest = v.iter().fold(0.0f64, |m, x| m.max(x.norm()));
-        mode.name = if entry(&v, "power") > 1e-6 * largest {
-            Some("power lag")
-        } else if lateral > longitudinal {
-            if oscillates {
-                Some("Dutch roll")
-            } else {
-                lateral_real.push(i);
-                None
-            }
-        } else if oscillates {
-            Some(if pitching { "short period" } else { "phugoid" })
-        } else if pitching {
-            Some("short period, aperiodic")
-        } else if entry(&v, "altitude") == largest && mode.eigenvalue.norm() < 0.01 {
-            Some("height")
-        } else {
-            Some("phugoid, aperiodic")
-        };
+    /// A pitch oscillation θ̈ = −16 θ − 0.8 θ̇ on (θ, q): q = λ θ, so read by the mode's time
+    /// q/|λ| is θ's swing, the same share; read as it is, q in rad/s outweighs θ four times
+    /// (|λ| = 4/s), and θ is not among the dominant states.
+    #[test]
+    fn a_rate_read_by_the_modes_time_is_the_angle_it_swings() {
+        let a = DMatrix::from_row_slice(2, 2, &[0.0, 1.0, -16.0, -0.8]);
+        let names = ["theta".to_owned(), "q".to_owned()];
+        let read = [Reading::AsIs, Reading::Rate];
+        let (_, scaled, _) = modes(&a, (&names, &read), Naming::Planes, 0.0);
+        let (_, raw, _) = modes(&a, (&names, &[]), Naming::Planes, 0.0);
+        let [theta, q] = [scaled[0].shares[0], scaled[0].shares[1]];
+        assert!(
+            (theta - 1.0).abs() < 1e-12 && (q - 1.0).abs() < 1e-12,
+            "{theta} {q}"
+        );
+        assert_eq!(scaled[0].dominant, ["theta", "q"]);
+        assert!(
+            (raw[0].shares[0] - 0.25).abs() < 1e-12,
+            "{:?}",
+            raw[0].shares
+        );
+        assert_eq!(raw[0].dominant, ["q"]);
     }
-    lateral_real.sort_by(|&i, &j| modes[i].eigenvalue.re.total_cmp(&modes[j].eigenvalue.re));
-    if let (Some(&fastest), Some(&slowest)) = (lateral_real.first(), lateral_real.last()) {
-        modes[fastest].name = Some("roll subsidence");
-        if slowest != fastest {
-            modes[slowest].name = Some("spiral");
-        }
-    }
-}
 
-/// Names the modes where the family knows them.
-fn name_modes(modes: &mut [Mode], family: Family) {
-    let is =
-        |mode: &Mode, names: &[&str]| mode.dominant.iter().all(|d| names.contains(&d.as_str()));
-    let mut top_oscillations: Vec<usize> = Vec::new();
-    for (index, mode) in modes.iter_mut().enumerate() {
-        let oscillates = mode.eigenvalue.im > 0.0;
-        let moving = mode.damping_ratio.is_some();
-        mode.name = match family {
-            Family::Pendulum if moving => Some("the pendulum's swing"),
-            Family::Spatial
-                if oscillates
-                    && is(mode, &["p", "phi"])
-                    && mode.dominant.iter().any(|d| d == "p") =>
-            {
-                Some("roll")
-            }
-            Family::Spatial if is(mode, &["p", "q", "r"]) && moving => Some(if oscillates {
-                "nutation"
-            } else {
-                "the spin's instability"
-            }),
-            Family::Top if oscillates => {
-                top_oscillations.push(index);
-                None
-            }
-            Family::Top if moving => Some("the top's fall"),
-            // Surge among the dominant entries: where u̇ depends on u alone (a straight course),
-            // the sway–yaw modes have no u at all, and the surge mode drags some sway along.
-            Family::PlanarAtG | Family::PlanarMidship
-                if moving && mode.dominant.iter().any(|d| d == "u") =>
-            {
-                Some("surge")
-            }
-            Family::PlanarAtG | Family::PlanarMidship if moving => Some("sway and yaw"),
-            _ => None,
-        };
-    }
-    // A sleeping top's two oscillations: the faster in space is its nutation, the slower its
-    // precession.
-    let in_space = |mode: &Mode| mode.frequency_in_space.unwrap_or(mode.eigenvalue.im).abs();
-    top_oscillations.sort_by(|&i, &j| in_space(&modes[j]).total_cmp(&in_space(&modes[i])));
-    for (rank, index) in top_oscillations.into_iter().enumerate() {
-        modes[index].name = Some(if rank == 0 { "nutation" } else { "precession" });
+    /// A velocity over the speed, a length over the length, a rate by the mode's time, a
+    /// percentage over 100, an angle and an unknown unit as they are; no scale, as they are.
+    #[test]
+    fn each_unit_is_read_against_its_scale() {
+        assert_eq!(
+            Reading::by_unit("ft/s", 500.0, 7800.0),
+            Reading::Over(500.0)
+        );
+        assert_eq!(Reading::by_unit("m", 2.0, 160.0), Reading::Over(160.0));
+        assert_eq!(Reading::by_unit("rad/s", 2.0, 160.0), Reading::Rate);
+        assert_eq!(
+            Reading::by_unit("percent", 2.0, 160.0),
+            Reading::Over(100.0)
+        );
+        assert_eq!(Reading::by_unit("rad", 2.0, 160.0), Reading::AsIs);
+        assert_eq!(Reading::by_unit("m/s", 0.0, 160.0), Reading::AsIs);
+        assert_eq!(Reading::Rate.read(3.0, 0.0), 0.0, "a neutral mode's rate");
+        assert_eq!(Reading::Rate.read(3.0, 2.0), 1.5);
     }
 }

@@ -6,7 +6,7 @@
 //! folder.
 
 use super::LinearError;
-use super::modes::Naming;
+use super::modes::{Naming, Reading};
 use crate::models::Family;
 use nalgebra::DMatrix;
 
@@ -19,6 +19,12 @@ pub trait LinearPlant {
     /// Whose names its modes get: by default its family's.
     fn naming(&self) -> Naming {
         Naming::Family(self.family())
+    }
+    /// How the modes read each state entry of an eigenvector when they compare its entries
+    /// ([`Reading`]), at `state`, in the model's layout: by default each as it is (a catalog
+    /// body, whose motion gives no speed or length to read its entries against).
+    fn readings(&self, state: &[f64]) -> Vec<Reading> {
+        vec![Reading::AsIs; state.len()]
     }
     /// Every state entry's name, in the model's layout.
     fn state_names(&self) -> Vec<&'static str>;

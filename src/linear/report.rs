@@ -200,10 +200,15 @@ fn print_matrix(
 }
 
 fn print_modes(text: &mut String, linear: &Linearisation) {
+    // The dominant states' column is 18 wide, or as wide as its longest entry, so that the
+    // names stay in one column.
+    let width = (linear.modes.iter())
+        .map(|mode| mode.dominant.join(", ").chars().count())
+        .fold(18, usize::max);
     line(
         text,
         format!(
-            "  modes:\n    {:>28} {:>12} {:>10} {:>14} {:>12}  {:<18} name",
+            "  modes:\n    {:>28} {:>12} {:>10} {:>14} {:>12}  {:<width$} name",
             "eigenvalue [1/s]", "period [s]", "damping", "to double [s]", "to half [s]", "dominant"
         ),
     );
@@ -218,7 +223,7 @@ fn print_modes(text: &mut String, linear: &Linearisation) {
         line(
             text,
             format!(
-                "    {eigenvalue:>28} {:>12} {:>10} {:>14} {:>12}  {:<18} {}",
+                "    {eigenvalue:>28} {:>12} {:>10} {:>14} {:>12}  {:<width$} {}",
                 number(mode.period_s),
                 number(mode.damping_ratio),
                 number(mode.time_to_double_s),

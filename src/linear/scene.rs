@@ -242,7 +242,12 @@ pub fn linearise(
         Some(i) if family == Family::Top && set_aside.contains(&i) => at.rates[i],
         _ => 0.0,
     };
-    let (eigenvalues, mut modes, stability) = modes(&a, &names, plant.naming(), heading_rate);
+    let all_readings = plant.readings(&state);
+    let readings: Vec<_> = (reduced.iter())
+        .map(|&i| all_readings.get(i).copied().unwrap_or(super::Reading::AsIs))
+        .collect();
+    let (eigenvalues, mut modes, stability) =
+        modes(&a, (&names, &readings), plant.naming(), heading_rate);
     let equilibrium = residual.iter().all(|r| r.abs() <= tolerance);
     if !equilibrium {
         // Away from an equilibrium the eigenvalues of A describe no motion that stays near

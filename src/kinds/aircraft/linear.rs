@@ -7,12 +7,15 @@
 //! set aside (nothing but the track depends on them); the altitude stays (the air's density
 //! changes with it, a slow height mode), and so does the power, whose lag is a mode of its
 //! own. The controls are the plant's inputs: throttle (0 to 1), elevator, aileron, rudder
-//! (deg). Modes are named as flight-dynamics texts name them ([`Naming::Flight`]).
+//! (deg). Modes are named as flight-dynamics texts name them ([`Naming::Flight`]), by what
+//! moves in each: the eigenvector's speed over the trim's V, its angles in radians, its rates
+//! by the mode's own time 1/|λ|, its altitude (and north, east) over V²/g, where trading speed
+//! for height (g Δh = −V ΔV) makes the two the same size, and its power over full power.
 
 use super::model::{AircraftModel, CONTROLS, STATE};
 use super::scene::AircraftScene;
 use crate::linear::{
-    Evaluation, LinearError, LinearPlant, Linearisation, Naming, linearise, set_at,
+    Evaluation, LinearError, LinearPlant, Linearisation, Naming, Reading, linearise, set_at,
 };
 use crate::models::{Family, Model};
 use nalgebra::DMatrix;
@@ -37,6 +40,23 @@ impl LinearPlant for AircraftPlant<'_> {
 
     fn naming(&self) -> Naming {
         Naming::Flight
+    }
+
+    /// The speed over the point's airspeed V, a length over V²/g, the angles as they are,
+    /// the rates by the mode's time, the power over full power (see the module docs).
+    fn readings(&self, state: &[f64]) -> Vec<Reading> {
+        let speed = state.first().copied().unwrap_or(0.0);
+        let length = speed * speed / self.model.gravity();
+        let units = super::scene::units(self.units);
+        (STATE.iter())
+            .map(|name| {
+                let unit = units
+                    .iter()
+                    .find(|(n, _)| n == name)
+                    .map_or("", |(_, u)| *u);
+                Reading::by_unit(unit, speed, length)
+            })
+            .collect()
     }
 
     fn state_names(&self) -> Vec<&'static str> {

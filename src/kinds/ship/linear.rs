@@ -27,7 +27,7 @@
 use super::model::{STATE, ShipModel};
 use super::table::ShipTable;
 use super::{Force, Term, Units};
-use crate::linear::{Evaluation, LinearError, LinearPlant, Linearisation};
+use crate::linear::{Evaluation, LinearError, LinearPlant, Linearisation, Naming, Reading};
 use crate::models::{Family, Model};
 use nalgebra::DMatrix;
 use std::collections::BTreeMap;
@@ -265,6 +265,8 @@ pub fn linearise(model: &ShipModel, speed: f64) -> ([[f64; 2]; 2], [f64; 2]) {
 pub struct ShipPlant<'a> {
     /// The ship.
     pub model: &'a ShipModel,
+    /// Its length L, m: what a position is read against when the modes compare what moves.
+    pub length: f64,
 }
 
 impl ShipPlant<'_> {
@@ -279,9 +281,26 @@ impl LinearPlant for ShipPlant<'_> {
         <ShipModel as Model<f64, 7, 2>>::NAME
     }
 
-    /// The ship's modes are named as a planar body's at midship (surge; sway and yaw).
+    /// The ship is a planar body about midship.
     fn family(&self) -> Family {
         Family::PlanarMidship
+    }
+
+    /// By the planes of motion its modes move (surge; sway and yaw), read in comparable units.
+    fn naming(&self) -> Naming {
+        Naming::Planes
+    }
+
+    /// A velocity over the speed at the point, the yaw rate by the mode's time, a position
+    /// over L, the heading as it is.
+    fn readings(&self, state: &[f64]) -> Vec<Reading> {
+        let speed = state[0].hypot(state[1]);
+        (STATE[..6].iter())
+            .map(|name| {
+                let unit = crate::models::state_unit(name).unwrap_or("");
+                Reading::by_unit(unit, speed, self.length)
+            })
+            .collect()
     }
 
     fn state_names(&self) -> Vec<&'static str> {
@@ -341,7 +360,10 @@ pub fn linearise_ship(
     scene: &super::ShipScene,
     model: &ShipModel,
 ) -> Result<Linearisation, LinearError> {
-    let plant = ShipPlant { model };
+    let plant = ShipPlant {
+        model,
+        length: scene.length,
+    };
     let start = scene.start();
     let (mut state, mut extra) = (start[..6].to_vec(), vec![start[6]]);
     let names = (&STATE[..6], &STATE[6..], &ALIASES[..]);

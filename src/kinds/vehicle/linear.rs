@@ -21,7 +21,7 @@ use super::model::{EULER_STATE, Proved};
 use super::{VehicleError, VehicleScene, VehicleTable};
 use crate::defined::engine::Kinematics;
 use crate::linear::{
-    Evaluation, LinearError, LinearPlant, Linearisation, Naming, linearise, set_at,
+    Evaluation, LinearError, LinearPlant, Linearisation, Naming, Reading, linearise, set_at,
 };
 use crate::models::Family;
 use nalgebra::DMatrix;
@@ -36,6 +36,10 @@ pub(crate) const ALIASES: [(&str, &str); 2] = [("rudder", "dr"), ("stern_planes"
 #[derive(Debug, Clone)]
 pub struct VehiclePlant {
     twin: Proved,
+    /// L, m: what a position is read against when the modes compare what moves (the prime
+    /// system's L, else the cross-flow strips' total length; zero where the table gives
+    /// neither, and a position is then read in metres, as the model has it).
+    length: f64,
 }
 
 impl VehiclePlant {
@@ -43,7 +47,9 @@ impl VehiclePlant {
     pub fn new(table: &VehicleTable) -> Result<Self, VehicleError> {
         let (twin, _) = Proved::new(table, Kinematics::Euler)?;
         debug_assert_eq!(twin.body(), BODY);
-        Ok(VehiclePlant { twin })
+        let strips = (table.cross_flow.as_ref()).map(|c| c.lengths.iter().sum::<f64>());
+        let length = (table.prime.map(|p| p.length)).or(strips).unwrap_or(0.0);
+        Ok(VehiclePlant { twin, length })
     }
 }
 
@@ -59,6 +65,18 @@ impl LinearPlant for VehiclePlant {
 
     fn naming(&self) -> Naming {
         Naming::Planes
+    }
+
+    /// A velocity over the speed at the point, a rate by the mode's time, a position over
+    /// L, an angle as it is.
+    fn readings(&self, state: &[f64]) -> Vec<Reading> {
+        let speed = state[..3].iter().map(|v| v * v).sum::<f64>().sqrt();
+        (EULER_STATE[..BODY].iter())
+            .map(|name| {
+                let unit = crate::models::state_unit(name).unwrap_or("");
+                Reading::by_unit(unit, speed, self.length)
+            })
+            .collect()
     }
 
     fn state_names(&self) -> Vec<&'static str> {
