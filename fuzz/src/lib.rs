@@ -5,6 +5,8 @@ use eom_cli::eval::evaluate;
 use eom::mass::{BodyFile, Mesh, MeshMass};
 use eom::models::{Family, Kinematics, Symmetry};
 use eom::run::{Row, Sink};
+use eom::kinds::aircraft::AircraftScene;
+use eom::kinds::aircraft::manoeuvre::AircraftManoeuvre;
 use eom::kinds::body::BodyScene;
 use eom::scene::{AnyScene, Problem, SceneError, sweep};
 use eom::kinds::ship::ShipScene;
@@ -106,6 +108,37 @@ fn vehicle_accepted(scene: &VehicleScene) {
     }
 }
 
+/// An aircraft scene read: trimmed to finite numbers, and 0.05 s of its first manoeuvre run
+/// from the trim, at most 200 steps.
+fn aircraft_accepted(scene: &AircraftScene) {
+    let trim = (&scene.trim.state, &scene.trim.controls);
+    assert!(
+        trim.0.iter().chain(trim.1).all(|x| x.is_finite()),
+        "a trim that is not finite: {:?}",
+        scene.trim
+    );
+    let first = &scene.manoeuvres[0];
+    let short = AircraftManoeuvre {
+        duration: first.duration.min(0.05),
+        ..first.clone()
+    };
+    let mut stepper = scene.stepper.clone();
+    stepper.step = stepper.step.map(|step| step.max(short.duration / 200.0));
+    let every = scene.every.max(short.duration / 10.0);
+    let result = eom::kinds::aircraft::manoeuvre::run(
+        &scene.model,
+        scene.kinematics,
+        &short,
+        trim,
+        (&stepper, every),
+        None,
+        |_| true,
+    );
+    if let Err(error) = result {
+        assert!(!error.to_string().trim().is_empty());
+    }
+}
+
 /// A ship scene read: its model was built and proved.
 fn ship_accepted(scene: &ShipScene) {
     if let Err(error) = eom::kinds::ship::ShipModel::new(&scene.table) {
@@ -131,6 +164,9 @@ pub fn scene_text(text: &str) {
             }
             if let Some(vehicle) = scene.as_any().downcast_ref() {
                 vehicle_accepted(vehicle);
+            }
+            if let Some(aircraft) = scene.as_any().downcast_ref() {
+                aircraft_accepted(aircraft);
             }
         }
         Err(error) => scene_error(&error),
