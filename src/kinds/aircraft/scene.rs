@@ -477,6 +477,21 @@ impl Checker<'_> {
         for (name, value) in derivatives.terms() {
             self.finite(&format!("aerodynamics.derivatives.{name}"), value)?;
         }
+        const SPEED: &str = "aerodynamics.derivatives.reference_speed";
+        if derivatives.has_speed_terms() {
+            if derivatives.reference_speed == 0.0 {
+                return Err(self.missing(
+                    SPEED,
+                    "u₀, the airspeed the speed derivatives CL_u, CD_u, Cm_u are taken about",
+                ));
+            }
+            self.positive(SPEED, derivatives.reference_speed)?;
+        } else if derivatives.reference_speed != 0.0 {
+            return Err(self.invalid(
+                SPEED,
+                "the u₀ of the speed derivatives CL_u, CD_u, Cm_u, which the table does not give",
+            ));
+        }
         Ok(derivatives)
     }
 
