@@ -100,6 +100,17 @@ pub const KEYS: &[Key] = &[
         ..Key::BLANK
     },
     Key {
+        path: "body.products_of_inertia_integrals",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("3: ∫xy dm, ∫yz dm, ∫xz dm"),
+        unit: "slug ft² or kg m²",
+        default: "0, 0, 0",
+        description: "The same products as the integrals ∫xy dm, ∫yz dm, ∫xz dm, typed as Etkin, Nelson and Stevens print them (Etkin's 747: I_zx = −0.212e7 kg m²; Stevens's J_xz = +982): the tensor's entries are their negatives, and the run's report prints the tensor eom uses. Give this key or body.products_of_inertia, not both.",
+        example: "[0.0, 0.0, 982.0]",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
         path: "body.gravity",
         families: AIRCRAFT,
         unit: "ft/s² or m/s²",
