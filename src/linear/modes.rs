@@ -314,10 +314,11 @@ fn plane_of_motion(mode: &Mode) -> Option<&'static str> {
 /// A lateral oscillation is the Dutch roll; of the real lateral modes the fastest is the roll
 /// subsidence, the slowest the spiral. A longitudinal oscillation in which α moves as much as
 /// θ (|α| ≥ 0.3 |θ|) is the short period; one at nearly constant α, trading speed and height,
-/// the phugoid; a real longitudinal mode with α moving so is the short period split into two
-/// real roots (an aircraft that is statically unstable, or nearly); a slow one (|λ| below
-/// 0.01/s, hundreds of seconds) mostly of the altitude is the height mode (the air's density
-/// changing with it), and another, at nearly constant α, the phugoid become real (at an
+/// the phugoid; a real longitudinal mode that is slow (|λ| below 0.01/s, hundreds of seconds)
+/// and mostly of the altitude is the height mode (the air's density changing with it; its α
+/// and θ move together, so it is told apart before α's share is asked); another with α moving
+/// as θ does is the short period split into two real roots (an aircraft that is statically
+/// unstable, or nearly), and the rest, at nearly constant α, the phugoid become real (at an
 /// aft centre of gravity the phugoid's pair splits and one root may grow).
 fn name_flight_modes(modes: &mut [Mode], a: &DMatrix<f64>, names: &[String], radius: f64) {
     let index = |name: &str| names.iter().position(|n| n == name);
@@ -350,10 +351,10 @@ fn name_flight_modes(modes: &mut [Mode], a: &DMatrix<f64>, names: &[String], rad
             }
         } else if oscillates {
             Some(if pitching { "short period" } else { "phugoid" })
-        } else if pitching {
-            Some("short period, aperiodic")
         } else if entry(&v, "altitude") == largest && mode.eigenvalue.norm() < 0.01 {
             Some("height")
+        } else if pitching {
+            Some("short period, aperiodic")
         } else {
             Some("phugoid, aperiodic")
         };
