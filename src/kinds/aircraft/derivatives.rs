@@ -376,8 +376,14 @@ mod tests {
             };
             let by_speed = by(&|h| at(180.0 + h, 0.12), 1e-4);
             let by_alpha = by(&|h| at(180.0, 0.12 + h), 1e-6);
-            assert!((by_speed - base.by_speed[k]).abs() < 1e-9, "{k}: {by_speed}");
-            assert!((by_alpha - base.by_alpha[k]).abs() < 1e-9, "{k}: {by_alpha}");
+            assert!(
+                (by_speed - base.by_speed[k]).abs() < 1e-9,
+                "{k}: {by_speed}"
+            );
+            assert!(
+                (by_alpha - base.by_alpha[k]).abs() < 1e-9,
+                "{k}: {by_alpha}"
+            );
         }
         let level = table.per_alpha_rate(&at(176.0, 0.0), chord);
         assert_eq!(level.per[0], 0.0);

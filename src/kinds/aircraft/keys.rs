@@ -95,7 +95,7 @@ pub const KEYS: &[Key] = &[
         kind: Kind::Numbers("3: I_xy, I_yz, I_xz"),
         unit: "slug ft² or kg m²",
         default: "0, 0, 0",
-        description: "I_xy, I_yz, I_xz: the tensor's off-diagonal entries in the chapter's sign (−∫xz dm; a text's J_xz = +982 is −982 here). An aircraft is symmetric about its xz-plane: I_xy and I_yz must be 0. The tensor must be one a rigid body can have.",
+        description: "I_xy, I_yz, I_xz: the tensor's off-diagonal entries in the chapter's sign (−∫xz dm; a text's J_xz = +982 is −982 here, or give it as printed in body.products_of_inertia_integrals). An aircraft is symmetric about its xz-plane: I_xy and I_yz must be 0. The tensor must be one a rigid body can have.",
         example: "[0.0, 0.0, -982.0]",
         ..Key::BLANK
     },

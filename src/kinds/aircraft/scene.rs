@@ -326,7 +326,8 @@ impl Checker<'_> {
             )),
             (None, Some(integrals)) => {
                 let [xy, yz, xz] = self.finite3(INTEGRALS, Some(integrals))?;
-                Ok((INTEGRALS, [-xy, -yz, -xz]))
+                // 0 − x, not −x: a product of 0 stays +0 (−0 would print as `-0e0`).
+                Ok((INTEGRALS, [0.0 - xy, 0.0 - yz, 0.0 - xz]))
             }
             (entries, None) => Ok((ENTRIES, self.finite3(ENTRIES, entries)?)),
         }
