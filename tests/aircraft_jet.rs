@@ -461,7 +461,7 @@ fn bad_jet_scenes_name_the_key() {
         });
     let error = AircraftScene::parse(&no_speed_terms, "b747.toml")
         .err()
-        .expect("a u0 without speed derivatives was accepted")
+        .unwrap_or_else(|| panic!("a u0 without speed derivatives was accepted"))
         .to_string();
     assert!(
         error.contains("aerodynamics.derivatives.reference_speed"),

@@ -51,8 +51,8 @@ pub struct StevensLewisTables {
 pub enum Aerodynamics {
     /// Tables in α, β and the controls (boxed: a kilobyte of tables).
     StevensLewis(Box<StevensLewisTables>),
-    /// Terms linear in α, β, the rates and the surfaces.
-    Derivatives(Derivatives),
+    /// Terms linear in α, β, the rates and the surfaces (boxed: 33 numbers).
+    Derivatives(Box<Derivatives>),
 }
 
 impl From<StevensLewisTables> for Aerodynamics {
@@ -63,7 +63,7 @@ impl From<StevensLewisTables> for Aerodynamics {
 
 impl From<Derivatives> for Aerodynamics {
     fn from(derivatives: Derivatives) -> Self {
-        Aerodynamics::Derivatives(derivatives)
+        Aerodynamics::Derivatives(Box::new(derivatives))
     }
 }
 
