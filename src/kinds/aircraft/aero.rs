@@ -9,15 +9,15 @@
 //! radian) and the three surfaces (per degree); the program forms the totals with the
 //! non-dimensional rates, the dynamic pressure and the moment transfer.
 
-use super::derivatives::Derivatives;
+use super::derivatives::{Derivatives, PerAlphaRate};
 use super::tables::{Lookup2, Table1, Table2};
 
 /// Degrees per radian as the source's code converts α and β before its lookups.
 pub const DEGREES_PER_RADIAN: f64 = 57.29578;
 
 /// The derivatives a coefficient can have, in this order: α, β (rad), elevator, aileron,
-/// rudder (deg).
-pub const ARGUMENTS: [&str; 5] = ["alpha", "beta", "elevator", "aileron", "rudder"];
+/// rudder (deg), airspeed.
+pub const ARGUMENTS: [&str; 6] = ["alpha", "beta", "elevator", "aileron", "rudder", "speed"];
 
 /// The tables of the Stevens & Lewis form.
 #[derive(Debug, Clone, PartialEq)]
@@ -51,8 +51,8 @@ pub struct StevensLewisTables {
 pub enum Aerodynamics {
     /// Tables in α, β and the controls (boxed: a kilobyte of tables).
     StevensLewis(Box<StevensLewisTables>),
-    /// Terms linear in α, β, the rates and the surfaces.
-    Derivatives(Derivatives),
+    /// Terms linear in α, β, the rates and the surfaces (boxed: 33 numbers).
+    Derivatives(Box<Derivatives>),
 }
 
 impl From<StevensLewisTables> for Aerodynamics {
@@ -63,7 +63,7 @@ impl From<StevensLewisTables> for Aerodynamics {
 
 impl From<Derivatives> for Aerodynamics {
     fn from(derivatives: Derivatives) -> Self {
-        Aerodynamics::Derivatives(derivatives)
+        Aerodynamics::Derivatives(Box::new(derivatives))
     }
 }
 
@@ -76,11 +76,12 @@ impl Aerodynamics {
         }
     }
 
-    /// C_mα̇, the pitching moment per α̇ c̄/(2V) (0 for the tables, which have none).
-    pub fn pitch_by_alpha_rate(&self) -> f64 {
+    /// The increments of C_X, C_Z, C_m per unit α̇ at `flow` for a chord `chord` (none for
+    /// the tables, which have no α̇ terms).
+    pub fn per_alpha_rate(&self, flow: &Flow, chord: f64) -> PerAlphaRate {
         match self {
-            Aerodynamics::StevensLewis(_) => 0.0,
-            Aerodynamics::Derivatives(derivatives) => derivatives.Cm_alpha_dot,
+            Aerodynamics::StevensLewis(_) => PerAlphaRate::default(),
+            Aerodynamics::Derivatives(derivatives) => derivatives.per_alpha_rate(flow, chord),
         }
     }
 }
@@ -90,13 +91,17 @@ impl Aerodynamics {
 pub struct Coefficient {
     /// Its value.
     pub value: f64,
-    /// ∂/∂α, ∂/∂β (per rad), ∂/∂δ_e, ∂/∂δ_a, ∂/∂δ_r (per deg).
-    pub by: [f64; 5],
+    /// ∂/∂α, ∂/∂β (per rad), ∂/∂δ_e, ∂/∂δ_a, ∂/∂δ_r (per deg), ∂/∂V.
+    pub by: [f64; 6],
 }
 
-/// The angles and controls a lookup reads: α, β in radians, the surfaces in degrees.
+/// The angles and controls a lookup reads: α, β in radians, the surfaces in degrees, and the
+/// airspeed (which the tables do not read, and a table of derivatives reads through its speed
+/// derivatives and its α̇ terms).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Flow {
+    /// Airspeed (the scene's length unit per second).
+    pub speed: f64,
     /// Angle of attack (rad).
     pub alpha: f64,
     /// Sideslip (rad).
@@ -120,7 +125,7 @@ impl StevensLewisTables {
         out[0] = in_alpha_and_elevator(self.cx.at(alpha, flow.elevator));
         out[1] = Coefficient {
             value: -0.02 * beta + 0.021 * aileron + 0.086 * rudder,
-            by: [0.0, -0.02 * deg, 0.0, 0.021 / 20.0, 0.086 / 30.0],
+            by: [0.0, -0.02 * deg, 0.0, 0.021 / 20.0, 0.086 / 30.0, 0.0],
         };
         let cz = self.cz.at(alpha);
         let sideslip = 1.0 - (beta / 57.3).powi(2);
@@ -130,6 +135,7 @@ impl StevensLewisTables {
                 cz.slope * deg * sideslip,
                 cz.value * (-2.0 * beta / (57.3 * 57.3)) * deg,
                 -0.19 / 25.0,
+                0.0,
                 0.0,
                 0.0,
             ],
@@ -145,7 +151,7 @@ impl StevensLewisTables {
             let d = table.at(alpha);
             *slot = Coefficient {
                 value: d.value,
-                by: [d.slope * deg, 0.0, 0.0, 0.0, 0.0],
+                by: [d.slope * deg, 0.0, 0.0, 0.0, 0.0, 0.0],
             };
         }
         out
@@ -177,6 +183,7 @@ impl StevensLewisTables {
                 0.0,
                 a.value / 20.0,
                 r.value / 30.0,
+                0.0,
             ],
         }
     }
@@ -186,6 +193,6 @@ impl StevensLewisTables {
 fn in_alpha_and_elevator(at: Lookup2) -> Coefficient {
     Coefficient {
         value: at.value,
-        by: [at.by_x * DEGREES_PER_RADIAN, 0.0, at.by_y, 0.0, 0.0],
+        by: [at.by_x * DEGREES_PER_RADIAN, 0.0, at.by_y, 0.0, 0.0, 0.0],
     }
 }

@@ -11,9 +11,15 @@
 //! per radian, as textbooks give them; the surfaces enter in degrees, as everywhere in eom's
 //! aircraft, converted exactly (π/180).
 //!
-//! C_mα̇, the pitching moment of the rate of change of α (the downwash lag at the tail), is
-//! not a function of the state: the model adds C_mα̇ α̇ c̄/(2V) once α̇ is known
-//! ([`super::model`]), since α̇ does not depend on C_m.
+//! A jet's table adds what a light aircraft's leaves out (Etkin & Reid's, Nelson's,
+//! Roskam's and Heffley & Jewell's common set): the speed derivatives C_Lu, C_Du, C_mu per
+//! û = (V − u₀)/u₀ about the table's own speed u₀ (`reference_speed`, since the trim may be
+//! flown elsewhere), the drag of the pitch rate and of the elevator (C_Dq, C_Dδe) and the
+//! lift of α̇ (C_Lα̇).
+//!
+//! C_mα̇ and C_Lα̇, the moment and lift of the rate of change of α (the downwash lag at the
+//! tail), are not functions of the state: α̇ depends on the lift, so the model solves for it
+//! ([`super::alpha_rate`]) and adds their terms once it is known.
 
 use super::aero::{Coefficient, Flow};
 use serde::Deserialize;
@@ -50,6 +56,18 @@ pub struct Derivatives {
     pub Cm_q: f64,
     /// Pitching moment per elevator.
     pub Cm_elevator: f64,
+    /// Lift per α̇ c̄/(2V).
+    pub CL_alpha_dot: f64,
+    /// Lift per û = (V − u₀)/u₀, u₀ the `reference_speed`.
+    pub CL_u: f64,
+    /// Drag per û.
+    pub CD_u: f64,
+    /// Pitching moment per û.
+    pub Cm_u: f64,
+    /// Drag per q c̄/(2V).
+    pub CD_q: f64,
+    /// Drag per elevator.
+    pub CD_elevator: f64,
     /// Side force per β.
     pub CY_beta: f64,
     /// Side force per p b/(2V).
@@ -80,11 +98,33 @@ pub struct Derivatives {
     pub Cn_aileron: f64,
     /// Yawing moment per rudder.
     pub Cn_rudder: f64,
+    /// u₀, the airspeed the table's speed derivatives are taken about (the scene's length
+    /// unit per second); 0 when the table has none, and required when it has.
+    pub reference_speed: f64,
+}
+
+/// The increments of C_X, C_Z and C_m per unit α̇ (rad/s) at a flow, with their slopes in the
+/// airspeed and α (α̇ held).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct PerAlphaRate {
+    /// ∂C_X/∂α̇, ∂C_Z/∂α̇, ∂C_m/∂α̇.
+    pub per: [f64; 3],
+    /// Their derivatives in V.
+    pub by_speed: [f64; 3],
+    /// Their derivatives in α.
+    pub by_alpha: [f64; 3],
+}
+
+impl PerAlphaRate {
+    /// Whether no coefficient has an α̇ term.
+    pub fn is_zero(&self) -> bool {
+        self.per == [0.0; 3]
+    }
 }
 
 impl Derivatives {
     /// Every term by its key's name, in the order of the fields.
-    pub fn terms(&self) -> [(&'static str, f64); 26] {
+    pub fn terms(&self) -> [(&'static str, f64); 32] {
         [
             ("CL_0", self.CL_0),
             ("CL_alpha", self.CL_alpha),
@@ -97,6 +137,12 @@ impl Derivatives {
             ("Cm_alpha_dot", self.Cm_alpha_dot),
             ("Cm_q", self.Cm_q),
             ("Cm_elevator", self.Cm_elevator),
+            ("CL_alpha_dot", self.CL_alpha_dot),
+            ("CL_u", self.CL_u),
+            ("CD_u", self.CD_u),
+            ("Cm_u", self.Cm_u),
+            ("CD_q", self.CD_q),
+            ("CD_elevator", self.CD_elevator),
             ("CY_beta", self.CY_beta),
             ("CY_p", self.CY_p),
             ("CY_r", self.CY_r),
@@ -115,65 +161,109 @@ impl Derivatives {
         ]
     }
 
+    /// Whether the table has a speed derivative (and so needs its `reference_speed`).
+    pub fn has_speed_terms(&self) -> bool {
+        [self.CL_u, self.CD_u, self.Cm_u] != [0.0; 3]
+    }
+
+    /// û = (V − u₀)/u₀ at airspeed `speed` and its slope in V (0 and 0 for a table without
+    /// speed derivatives, whose u₀ may be 0).
+    fn speed_ratio(&self, speed: f64) -> (f64, f64) {
+        if !self.has_speed_terms() {
+            return (0.0, 0.0);
+        }
+        let u0 = self.reference_speed;
+        ((speed - u0) / u0, 1.0 / u0)
+    }
+
     /// The six static coefficients C_X, C_Y, C_Z, C_l, C_m, C_n and the nine damping
     /// derivatives (in the program's order `C_Xq`, `C_Yr`, `C_Yp`, `C_Zq`, `C_lr`, `C_lp`,
-    /// `C_mq`, `C_nr`, `C_np`) at `flow`, each with its derivatives in α, β (per rad) and the
-    /// surfaces (per deg).
+    /// `C_mq`, `C_nr`, `C_np`) at `flow`, each with its derivatives in α, β (per rad), the
+    /// surfaces (per deg) and the airspeed.
     pub fn coefficients(&self, flow: &Flow) -> [Coefficient; 15] {
         let d = RADIANS_PER_DEGREE;
         let (alpha, beta) = (flow.alpha, flow.beta);
         let [elevator, aileron, rudder] = [flow.elevator, flow.aileron, flow.rudder].map(|s| s * d);
         let (sin, cos) = alpha.sin_cos();
-        let lift = self.CL_0 + self.CL_alpha * alpha + self.CL_elevator * elevator;
-        let drag = self.CD_0 + self.CD_alpha * alpha;
-        let lift_by_elevator = self.CL_elevator * d;
+        let (u, u_by_speed) = self.speed_ratio(flow.speed);
+        let lift = self.CL_0 + self.CL_alpha * alpha + self.CL_elevator * elevator + self.CL_u * u;
+        let drag = self.CD_0 + self.CD_alpha * alpha + self.CD_elevator * elevator + self.CD_u * u;
+        let (lift_by_elevator, drag_by_elevator) = (self.CL_elevator * d, self.CD_elevator * d);
+        let (lift_by_speed, drag_by_speed) = (self.CL_u * u_by_speed, self.CD_u * u_by_speed);
         let linear = |by_beta: f64, by_aileron: f64, by_rudder: f64| Coefficient {
             value: by_beta * beta + by_aileron * aileron + by_rudder * rudder,
-            by: [0.0, by_beta, 0.0, by_aileron * d, by_rudder * d],
+            by: [0.0, by_beta, 0.0, by_aileron * d, by_rudder * d, 0.0],
         };
         let in_alpha = |value: f64, by_alpha: f64| Coefficient {
             value,
-            by: [by_alpha, 0.0, 0.0, 0.0, 0.0],
+            by: [by_alpha, 0.0, 0.0, 0.0, 0.0, 0.0],
         };
         let constant = |value: f64| in_alpha(value, 0.0);
+        // C_X = C_L sin α − C_D cos α and C_Z = −C_L cos α − C_D sin α, of (lift, drag).
+        let along_x = |l: f64, d: f64| l * sin - d * cos;
+        let along_z = |l: f64, d: f64| -l * cos - d * sin;
         let mut out = [Coefficient::default(); 15];
         out[0] = Coefficient {
-            value: lift * sin - drag * cos,
+            value: along_x(lift, drag),
             by: [
-                self.CL_alpha * sin + lift * cos - self.CD_alpha * cos + drag * sin,
+                along_x(self.CL_alpha, self.CD_alpha) - along_z(lift, drag),
                 0.0,
-                lift_by_elevator * sin,
+                along_x(lift_by_elevator, drag_by_elevator),
                 0.0,
                 0.0,
+                along_x(lift_by_speed, drag_by_speed),
             ],
         };
         out[1] = linear(self.CY_beta, self.CY_aileron, self.CY_rudder);
         out[2] = Coefficient {
-            value: -lift * cos - drag * sin,
+            value: along_z(lift, drag),
             by: [
-                -self.CL_alpha * cos + lift * sin - self.CD_alpha * sin - drag * cos,
+                along_z(self.CL_alpha, self.CD_alpha) + along_x(lift, drag),
                 0.0,
-                -lift_by_elevator * cos,
+                along_z(lift_by_elevator, drag_by_elevator),
                 0.0,
                 0.0,
+                along_z(lift_by_speed, drag_by_speed),
             ],
         };
         out[3] = linear(self.Cl_beta, self.Cl_aileron, self.Cl_rudder);
         out[4] = Coefficient {
-            value: self.Cm_0 + self.Cm_alpha * alpha + self.Cm_elevator * elevator,
-            by: [self.Cm_alpha, 0.0, self.Cm_elevator * d, 0.0, 0.0],
+            value: self.Cm_0 + self.Cm_alpha * alpha + self.Cm_elevator * elevator + self.Cm_u * u,
+            by: [
+                self.Cm_alpha,
+                0.0,
+                self.Cm_elevator * d,
+                0.0,
+                0.0,
+                self.Cm_u * u_by_speed,
+            ],
         };
         out[5] = linear(self.Cn_beta, self.Cn_aileron, self.Cn_rudder);
-        out[6] = in_alpha(self.CL_q * sin, self.CL_q * cos);
+        let (lift_q, drag_q) = (self.CL_q, self.CD_q);
+        out[6] = in_alpha(along_x(lift_q, drag_q), -along_z(lift_q, drag_q));
         out[7] = constant(self.CY_r);
         out[8] = constant(self.CY_p);
-        out[9] = in_alpha(-self.CL_q * cos, self.CL_q * sin);
+        out[9] = in_alpha(along_z(lift_q, drag_q), along_x(lift_q, drag_q));
         out[10] = constant(self.Cl_r);
         out[11] = constant(self.Cl_p);
         out[12] = constant(self.Cm_q);
         out[13] = constant(self.Cn_r);
         out[14] = constant(self.Cn_p);
         out
+    }
+
+    /// The increments of C_X, C_Z, C_m per unit α̇ at `flow` for a chord `chord`: C_Lα̇ and
+    /// C_mα̇ per α̇ c̄/(2V), the lift rotated into the body axes through α as C_Lq is.
+    pub fn per_alpha_rate(&self, flow: &Flow, chord: f64) -> PerAlphaRate {
+        let scale = chord / (2.0 * flow.speed);
+        let (sin, cos) = flow.alpha.sin_cos();
+        let lift = self.CL_alpha_dot * scale;
+        let per = [lift * sin, -lift * cos, self.Cm_alpha_dot * scale];
+        PerAlphaRate {
+            per,
+            by_speed: per.map(|k| -k / flow.speed),
+            by_alpha: [lift * cos, lift * sin, 0.0],
+        }
     }
 }
 
@@ -203,13 +293,27 @@ mod tests {
         }
     }
 
+    /// The Navion's table with a jet's terms besides (speed, pitch-rate drag, elevator drag).
+    fn with_jet_terms() -> Derivatives {
+        Derivatives {
+            CL_u: 0.106,
+            CD_u: 0.022,
+            Cm_u: 0.1043,
+            CD_q: 0.3,
+            CD_elevator: 0.05,
+            reference_speed: 176.0,
+            ..navion_like()
+        }
+    }
+
     /// Every derivative a coefficient reports against central differences of its value
     /// (steps 1e-6 rad and 1e-4 deg; the values are smooth, so the differences' truncation,
     /// of order h², and rounding, 1e-16/h, stay below 1e-9).
     #[test]
     fn each_coefficients_derivatives_are_its_slopes() {
-        let table = navion_like();
+        let table = with_jet_terms();
         let at = Flow {
+            speed: 180.0,
             alpha: 0.12,
             beta: -0.05,
             elevator: -3.0,
@@ -224,12 +328,13 @@ mod tests {
                 1 => f.beta += h,
                 2 => f.elevator += h,
                 3 => f.aileron += h,
-                _ => f.rudder += h,
+                4 => f.rudder += h,
+                _ => f.speed += h,
             }
             table.coefficients(&f)
         };
-        for k in 0..5 {
-            let h = if k < 2 { 1e-6 } else { 1e-4 };
+        for k in 0..6 {
+            let h = [1e-6, 1e-6, 1e-4, 1e-4, 1e-4, 1e-4][k];
             let (up, down) = (nudged(k, h), nudged(k, -h));
             for c in 0..15 {
                 let difference = (up[c].value - down[c].value) / (2.0 * h);
@@ -242,11 +347,57 @@ mod tests {
         }
     }
 
+    /// The α̇ terms' slopes in V and α against central differences (steps 1e-4 ft/s and 1e-6
+    /// rad; smooth, so within 1e-9), and at α = 0 the lift's term is all along −z.
+    #[test]
+    fn the_alpha_rate_terms_slopes_are_their_differences() {
+        let table = Derivatives {
+            CL_alpha_dot: 5.9,
+            Cm_alpha_dot: -4.36,
+            ..with_jet_terms()
+        };
+        let at = |speed: f64, alpha: f64| Flow {
+            speed,
+            alpha,
+            beta: 0.0,
+            elevator: 0.0,
+            aileron: 0.0,
+            rudder: 0.0,
+        };
+        let chord = 5.7;
+        let base = table.per_alpha_rate(&at(180.0, 0.12), chord);
+        for k in 0..3 {
+            let by = |f: &dyn Fn(f64) -> Flow, h: f64| {
+                let (up, down) = (
+                    table.per_alpha_rate(&f(h), chord).per[k],
+                    table.per_alpha_rate(&f(-h), chord).per[k],
+                );
+                (up - down) / (2.0 * h)
+            };
+            let by_speed = by(&|h| at(180.0 + h, 0.12), 1e-4);
+            let by_alpha = by(&|h| at(180.0, 0.12 + h), 1e-6);
+            assert!(
+                (by_speed - base.by_speed[k]).abs() < 1e-9,
+                "{k}: {by_speed}"
+            );
+            assert!(
+                (by_alpha - base.by_alpha[k]).abs() < 1e-9,
+                "{k}: {by_alpha}"
+            );
+        }
+        let level = table.per_alpha_rate(&at(176.0, 0.0), chord);
+        assert_eq!(level.per[0], 0.0);
+        let scale = chord / (2.0 * 176.0);
+        assert_eq!(level.per[1], -(5.9 * scale));
+        assert_eq!(level.per[2], -4.36 * scale);
+    }
+
     /// At α = 0 the body axes are the wind axes: C_X = −C_D, C_Z = −C_L.
     #[test]
     fn at_zero_alpha_the_forces_are_drag_and_lift() {
         let table = navion_like();
         let at = Flow {
+            speed: 176.0,
             alpha: 0.0,
             beta: 0.0,
             elevator: 0.0,

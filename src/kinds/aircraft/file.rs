@@ -68,6 +68,10 @@ pub struct BodyTable {
     /// I_xy, I_yz, I_xz about G, the tensor's off-diagonal entries (the chapter's sign:
     /// −∫xz dm; Stevens & Lewis's J_xz = +982 slug ft² is −982 here).
     pub products_of_inertia: Option<[f64; 3]>,
+    /// The same products as the integrals ∫xy dm, ∫yz dm, ∫xz dm, the sign Etkin, Nelson and
+    /// Stevens print them in (Etkin's 747: I_zx = −0.212e7 kg m²); the tensor's entries are
+    /// their negatives. A scene gives one of the two keys, not both.
+    pub products_of_inertia_integrals: Option<[f64; 3]>,
     /// Gravity.
     pub gravity: f64,
 }

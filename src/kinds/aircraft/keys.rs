@@ -95,8 +95,19 @@ pub const KEYS: &[Key] = &[
         kind: Kind::Numbers("3: I_xy, I_yz, I_xz"),
         unit: "slug ft² or kg m²",
         default: "0, 0, 0",
-        description: "I_xy, I_yz, I_xz: the tensor's off-diagonal entries in the chapter's sign (−∫xz dm; a text's J_xz = +982 is −982 here). An aircraft is symmetric about its xz-plane: I_xy and I_yz must be 0. The tensor must be one a rigid body can have.",
+        description: "I_xy, I_yz, I_xz: the tensor's off-diagonal entries in the chapter's sign (−∫xz dm; a text's J_xz = +982 is −982 here, or give it as printed in body.products_of_inertia_integrals). An aircraft is symmetric about its xz-plane: I_xy and I_yz must be 0. The tensor must be one a rigid body can have.",
         example: "[0.0, 0.0, -982.0]",
+        ..Key::BLANK
+    },
+    Key {
+        path: "body.products_of_inertia_integrals",
+        families: AIRCRAFT,
+        kind: Kind::Numbers("3: ∫xy dm, ∫yz dm, ∫xz dm"),
+        unit: "slug ft² or kg m²",
+        default: "0, 0, 0",
+        description: "The same products as the integrals ∫xy dm, ∫yz dm, ∫xz dm, typed as Etkin, Nelson and Stevens print them (Etkin's 747: I_zx = −0.212e7 kg m²; Stevens's J_xz = +982): the tensor's entries are their negatives, and the run's report prints the tensor eom uses. Give this key or body.products_of_inertia, not both.",
+        example: "[0.0, 0.0, 982.0]",
+        shown: Shown::Commented,
         ..Key::BLANK
     },
     Key {

@@ -11,6 +11,7 @@
 
 use super::aero::{Aerodynamics, Flow};
 use super::atmosphere::Atmosphere;
+use super::derivatives::PerAlphaRate;
 use super::engine::Propulsion;
 use crate::defined::engine::{
     AIRCRAFT_QUATERNION_STATE, AIRCRAFT_STATE, BuildError, Kinematics, Operations, aircraft_with,
@@ -62,8 +63,8 @@ impl Layout {
     }
 }
 const INPUTS: usize = 19;
-/// Where C_m is among the inputs.
-const PITCH_MOMENT: usize = 4;
+/// Where C_X, C_Z and C_m, the coefficients with α̇ terms, are among the inputs.
+const WITH_ALPHA_RATE: [usize; 3] = [0, 2, 4];
 
 /// Why an aircraft model cannot be built.
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -269,6 +270,13 @@ struct Beside {
     by: [[f64; DEPENDENCIES]; INPUTS],
 }
 
+/// The inputs with their α̇ terms added: α̇ itself, and the terms per unit α̇.
+struct WithAlphaRate {
+    beside: Beside,
+    alpha_rate: f64,
+    per: PerAlphaRate,
+}
+
 impl AircraftModel {
     /// The model of `airframe` on `aerodynamics` (the Stevens & Lewis tables or a table of
     /// derivatives), with its `engine` in `atmosphere`: the proved program with the
@@ -341,27 +349,40 @@ impl AircraftModel {
         &self.aerodynamics
     }
 
-    /// C_mα̇ c̄/(2V): the pitching-moment coefficient per unit α̇ at airspeed `speed`.
-    fn pitch_by_alpha_rate(&self, speed: f64) -> f64 {
-        self.aerodynamics.pitch_by_alpha_rate() * self.chord / (2.0 * speed)
-    }
-
-    /// The inputs at `state` with C_m's α̇ term added, and α̇: the program's α̇ does not read
-    /// C_m, so one evaluation without the term gives it.
+    /// The inputs at `state` with the α̇ terms of C_X, C_Z and C_m added, and α̇. The
+    /// program's α̇ reads C_X and C_Z (the lift), not C_m, and is affine in them: α̇ =
+    /// α̇₀ + g α̇, where α̇₀ is α̇ without the terms and g what one unit of α̇'s terms adds to
+    /// it, so α̇ = α̇₀/(1 − g), from two evaluations.
     fn beside_with_alpha_rate<const N: usize>(
         &self,
         (flown, layout): (&Flown, Layout),
         state: &[f64; N],
         controls: &[f64; 4],
-    ) -> (Beside, f64) {
+    ) -> WithAlphaRate {
         let mut beside = self.beside(layout, state, controls);
-        let per_alpha_rate = self.pitch_by_alpha_rate(state[0]);
-        if per_alpha_rate == 0.0 {
-            return (beside, 0.0);
+        let per = (self.aerodynamics).per_alpha_rate(&flow_at(state, controls), self.chord);
+        if per.is_zero() {
+            return WithAlphaRate {
+                beside,
+                alpha_rate: 0.0,
+                per,
+            };
         }
-        let alpha_rate = flown.rates(state, &beside.values)[1];
-        beside.values[PITCH_MOMENT] += per_alpha_rate * alpha_rate;
-        (beside, alpha_rate)
+        let without = flown.rates(state, &beside.values)[1];
+        let mut one = beside.values;
+        for (input, k) in WITH_ALPHA_RATE.into_iter().zip(per.per) {
+            one[input] += k;
+        }
+        let gain = flown.rates(state, &one)[1] - without;
+        let alpha_rate = without / (1.0 - gain);
+        for (input, k) in WITH_ALPHA_RATE.into_iter().zip(per.per) {
+            beside.values[input] += k * alpha_rate;
+        }
+        WithAlphaRate {
+            beside,
+            alpha_rate,
+            per,
+        }
     }
 
     /// The program's inputs at `state` under `controls`, with their derivatives. Outside the
@@ -369,17 +390,12 @@ impl AircraftModel {
     fn beside(&self, layout: Layout, state: &[f64], controls: &[f64; 4]) -> Beside {
         let mut values = [0.0; INPUTS];
         let mut by = [[0.0; DEPENDENCIES]; INPUTS];
-        let flow = Flow {
-            alpha: state[1],
-            beta: state[2],
-            elevator: controls[1],
-            aileron: controls[2],
-            rudder: controls[3],
-        };
-        // The coefficients depend on α, β (dependencies 1, 2) and the surfaces (6, 7, 8).
+        let flow = flow_at(state, controls);
+        // The coefficients depend on α, β (dependencies 1, 2), the surfaces (6, 7, 8) and V
+        // (0).
         for (k, c) in self.aerodynamics.coefficients(&flow).iter().enumerate() {
             values[k] = c.value;
-            for (slot, derivative) in [1, 2, 6, 7, 8].into_iter().zip(c.by) {
+            for (slot, derivative) in [1, 2, 6, 7, 8, 0].into_iter().zip(c.by) {
                 by[k][slot] = derivative;
             }
         }
@@ -423,12 +439,13 @@ impl AircraftModel {
         state: &[f64; N],
         controls: &[f64; 4],
     ) -> [f64; N] {
-        let (beside, _) = self.beside_with_alpha_rate((flown, layout), state, controls);
-        flown.rates(state, &beside.values)
+        let with = self.beside_with_alpha_rate((flown, layout), state, controls);
+        flown.rates(state, &with.beside.values)
     }
 
     /// ∂f/∂x and ∂f/∂(controls): the proved Jacobians composed with the inputs' slopes, and
-    /// with C_mα̇'s term, C_m + C_mα̇ α̇ c̄/(2V), through α̇'s own row.
+    /// with the α̇ terms (C_m + C_mα̇ α̇ c̄/(2V), the lift's C_Lα̇ α̇ c̄/(2V)) through α̇'s own
+    /// row.
     pub fn jacobians(
         &self,
         state: &[f64; 13],
@@ -444,7 +461,8 @@ impl AircraftModel {
         state: &[f64; N],
         controls: &[f64; 4],
     ) -> ([[f64; N]; N], [[f64; 4]; N]) {
-        let (beside, alpha_rate) = self.beside_with_alpha_rate((flown, layout), state, controls);
+        let with = self.beside_with_alpha_rate((flown, layout), state, controls);
+        let beside = &with.beside;
         let variables = Variables {
             state,
             computed: &beside.values,
@@ -456,13 +474,17 @@ impl AircraftModel {
             by_state[row][column] += value;
         }
         let mut by_controls = [[0.0; 4]; N];
-        let mut by_pitch_moment = [0.0; N];
+        // Σ ∂f/∂C_i · (∂C_i/∂α̇): what a unit of α̇ adds to each rate through its terms.
+        let mut by_alpha_rate = [0.0; N];
         let entries = program.evaluate(&functions.input_jacobian, variables);
         for (&(row, input), value) in functions.input_pattern.iter().zip(entries) {
-            if input == PITCH_MOMENT {
-                by_pitch_moment[row] += value;
+            let mut slopes = beside.by[input];
+            if let Some(k) = WITH_ALPHA_RATE.iter().position(|&i| i == input) {
+                by_alpha_rate[row] += value * with.per.per[k];
+                // The term k(V, α) α̇ moves with V and α at α̇ held.
+                slopes[0] += with.per.by_speed[k] * with.alpha_rate;
+                slopes[1] += with.per.by_alpha[k] * with.alpha_rate;
             }
-            let slopes = &beside.by[input];
             for (dependency, column) in layout.dependencies() {
                 by_state[row][column] += value * slopes[dependency];
             }
@@ -470,21 +492,21 @@ impl AircraftModel {
                 *slot += value * slopes[5 + control];
             }
         }
-        let per_alpha_rate = self.pitch_by_alpha_rate(state[0]);
-        if per_alpha_rate != 0.0 {
-            // d(k α̇) = k dα̇ + α̇ dk, with k = C_mα̇ c̄/(2V) and dk/dV = −k/V; α̇'s row does
-            // not read C_m, so it is whole before the others take it.
-            let (alpha_by_state, alpha_by_controls) = (by_state[1], by_controls[1]);
-            for (row, &by_moment) in by_pitch_moment.iter().enumerate() {
-                if by_moment == 0.0 {
+        if !with.per.is_zero() {
+            // α̇ = F₁(x, C(x) + k(x) α̇): dα̇ = (∂F₁ + ∂F₁/∂C · dC)/(1 − g), g = by_alpha_rate[1];
+            // every rate then takes its share of dα̇.
+            let whole = 1.0 - by_alpha_rate[1];
+            let alpha_by_state = by_state[1].map(|x| x / whole);
+            let alpha_by_controls = by_controls[1].map(|x| x / whole);
+            for (row, &share) in by_alpha_rate.iter().enumerate() {
+                if share == 0.0 {
                     continue;
                 }
-                for (column, slot) in by_state[row].iter_mut().enumerate() {
-                    *slot += by_moment * per_alpha_rate * alpha_by_state[column];
+                for (slot, by) in by_state[row].iter_mut().zip(alpha_by_state) {
+                    *slot += share * by;
                 }
-                by_state[row][0] -= by_moment * per_alpha_rate * alpha_rate / state[0];
-                for (control, slot) in by_controls[row].iter_mut().enumerate() {
-                    *slot += by_moment * per_alpha_rate * alpha_by_controls[control];
+                for (slot, by) in by_controls[row].iter_mut().zip(alpha_by_controls) {
+                    *slot += share * by;
                 }
             }
         }
@@ -494,6 +516,18 @@ impl AircraftModel {
     /// The kinetic energy ½MV² + ½ωᵀ\[I\]ω of `state`, from the proved form.
     pub fn kinetic_energy(&self, state: &[f64; 13]) -> f64 {
         kinetic_energy_in(&self.euler, state)
+    }
+}
+
+/// What the coefficients read at `state` under `controls`: V, α, β and the surfaces.
+fn flow_at(state: &[f64], controls: &[f64; 4]) -> Flow {
+    Flow {
+        speed: state[0],
+        alpha: state[1],
+        beta: state[2],
+        elevator: controls[1],
+        aileron: controls[2],
+        rudder: controls[3],
     }
 }
 

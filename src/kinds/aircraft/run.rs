@@ -406,6 +406,27 @@ fn drawings(scene: &AircraftScene, path: &str, rows: &[(f64, [f64; 18])]) -> Vec
     ]
 }
 
+/// The inertia tensor about G that the model uses, as the report echoes it: its rows, whose
+/// off-diagonal entries are −∫xz dm (a scene that gave the integrals ∫xz dm, as Etkin and
+/// Nelson print them, sees here the sign they took).
+fn inertia_line(scene: &AircraftScene) -> String {
+    let unit = if scene.units == "si" {
+        "kg m²"
+    } else {
+        "slug ft²"
+    };
+    let rows: Vec<String> = (scene.mass_properties.1.iter())
+        .map(|row| {
+            let entries: Vec<String> = row.iter().map(|x| format!("{x:e}")).collect();
+            format!("[{}]", entries.join(", "))
+        })
+        .collect();
+    format!(
+        "inertia about G, the tensor eom uses ({unit}; off-diagonal entries −∫xz dm): [{}]",
+        rows.join(", ")
+    )
+}
+
 /// The report as the command prints it: the trim, then each manoeuvre's figures and notes.
 fn report(scene: &AircraftScene, ran: &Ran<'_, AircraftScene>) -> String {
     let mut out = String::new();
@@ -426,6 +447,7 @@ fn report(scene: &AircraftScene, ran: &Ran<'_, AircraftScene>) -> String {
         t.controls[3],
         t.residual
     );
+    let _ = writeln!(out, "  {}", inertia_line(scene));
     for (index, outcome) in &ran.outcomes {
         let (name, m) = (&scene.manoeuvres[*index].name, &outcome.summary);
         let figures: Vec<String> = (m.figures.0.iter())

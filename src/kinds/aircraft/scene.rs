@@ -299,10 +299,10 @@ impl Checker<'_> {
         for (i, x) in body.inertia.iter().enumerate() {
             self.positive(&format!("body.inertia[{i}]"), *x)?;
         }
-        let [ixy, iyz, ixz] = self.finite3("body.products_of_inertia", body.products_of_inertia)?;
+        let (key, [ixy, iyz, ixz]) = self.aircraft_products(body)?;
         if ixy != 0.0 || iyz != 0.0 {
             return Err(self.invalid(
-                "body.products_of_inertia",
+                key,
                 "an aircraft is symmetric about its xz-plane: I_xy and I_yz must be 0",
             ));
         }
@@ -321,6 +321,27 @@ impl Checker<'_> {
             reference_point: Airframe::reference_from_chord(chord, xcg, reference),
             rotor_momentum: self.finite("engine.rotor_momentum", file.engine.rotor_momentum)?,
         })
+    }
+
+    /// The tensor's off-diagonal entries I_xy, I_yz, I_xz and the key they were given by:
+    /// `body.products_of_inertia` as they are, or `body.products_of_inertia_integrals`
+    /// (∫xy dm, ∫yz dm, ∫xz dm) negated; never both.
+    fn aircraft_products(&self, body: &BodyTable) -> Result<(&'static str, [f64; 3]), SceneError> {
+        const ENTRIES: &str = "body.products_of_inertia";
+        const INTEGRALS: &str = "body.products_of_inertia_integrals";
+        match (body.products_of_inertia, body.products_of_inertia_integrals) {
+            (Some(_), Some(_)) => Err(self.invalid(
+                INTEGRALS,
+                "the products are given twice: `body.products_of_inertia` (the tensor's \
+                 entries, −∫xz dm) and `body.products_of_inertia_integrals` (∫xz dm); give one",
+            )),
+            (None, Some(integrals)) => {
+                let [xy, yz, xz] = self.finite3(INTEGRALS, Some(integrals))?;
+                // 0 − x, not −x: a product of 0 stays +0 (−0 would print as `-0e0`).
+                Ok((INTEGRALS, [0.0 - xy, 0.0 - yz, 0.0 - xz]))
+            }
+            (entries, None) => Ok((ENTRIES, self.finite3(ENTRIES, entries)?)),
+        }
     }
 
     fn aircraft_table_error(&self, key: &str, error: TableError) -> SceneError {
@@ -487,6 +508,21 @@ impl Checker<'_> {
         })?;
         for (name, value) in derivatives.terms() {
             self.finite(&format!("aerodynamics.derivatives.{name}"), value)?;
+        }
+        const SPEED: &str = "aerodynamics.derivatives.reference_speed";
+        if derivatives.has_speed_terms() {
+            if derivatives.reference_speed == 0.0 {
+                return Err(self.missing(
+                    SPEED,
+                    "u₀, the airspeed the speed derivatives CL_u, CD_u, Cm_u are taken about",
+                ));
+            }
+            self.positive(SPEED, derivatives.reference_speed)?;
+        } else if derivatives.reference_speed != 0.0 {
+            return Err(self.invalid(
+                SPEED,
+                "the u₀ of the speed derivatives CL_u, CD_u, Cm_u, which the table does not give",
+            ));
         }
         Ok(derivatives)
     }

@@ -460,7 +460,7 @@ pub const AERODYNAMICS: &[Key] = &[
         unit: "per rad",
         default: "0",
         required: Required::No,
-        description: "Pitching moment per unit α̇ c̄/(2V) (the downwash's lag at the tail): added once α̇ is known, since α̇ does not depend on it. Read with aerodynamics = derivatives; a term not given is 0.",
+        description: "Pitching moment per unit α̇ c̄/(2V) (the downwash's lag at the tail): added once α̇ is known (α̇ depends on the lift, not on C_m). Read with aerodynamics = derivatives; a term not given is 0.",
         example: "0.0",
         shown: Shown::Commented,
         ..Key::BLANK
@@ -483,6 +483,83 @@ pub const AERODYNAMICS: &[Key] = &[
         default: "0",
         required: Required::No,
         description: "Pitching moment per radian of elevator. Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.CL_alpha_dot",
+        families: AIRCRAFT,
+        unit: "per rad",
+        default: "0",
+        required: Required::No,
+        description: "Lift per unit α̇ c̄/(2V) (Etkin's C_zα̇ is −C_Lα̇ in the condition's stability axes): α̇ depends on the lift, so the model solves α̇ = α̇₀ + g α̇ for it, exactly (α̇ is affine in the lift). Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.CL_u",
+        families: AIRCRAFT,
+        unit: "per unit û",
+        default: "0",
+        required: Required::No,
+        description: "Lift per û = (V − u₀)/u₀, u₀ the table's reference_speed (Etkin's C_zu is −C_Lu; per Mach, C_LM = C_Lu/M₀ at the table's Mach). The lift of the aerodynamics alone: the thrust is the engine's. Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.CD_u",
+        families: AIRCRAFT,
+        unit: "per unit û",
+        default: "0",
+        required: Required::No,
+        description: "Drag per û = (V − u₀)/u₀ (Nelson's and Roskam's C_Du; Etkin's C_xu = −C_Du − 2 C_D0 for a thrust constant with speed, which the engine's constant thrust gives). Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.Cm_u",
+        families: AIRCRAFT,
+        unit: "per unit û",
+        default: "0",
+        required: Required::No,
+        description: "Pitching moment per û = (V − u₀)/u₀, about G. Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.CD_q",
+        families: AIRCRAFT,
+        unit: "per rad",
+        default: "0",
+        required: Required::No,
+        description: "Drag per unit q c̄/(2V) (Etkin's C_xq is −C_Dq in the condition's stability axes). Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.CD_elevator",
+        families: AIRCRAFT,
+        unit: "per rad",
+        default: "0",
+        required: Required::No,
+        description: "Drag per radian of elevator (Etkin's C_xδe is −C_Dδe in the condition's stability axes). Read with aerodynamics = derivatives; a term not given is 0.",
+        example: "0.0",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
+        path: "aerodynamics.derivatives.reference_speed",
+        families: AIRCRAFT,
+        unit: "ft/s or m/s",
+        default: "0",
+        required: Required::No,
+        description: "u₀, the airspeed the speed derivatives CL_u, CD_u, Cm_u are taken about (the table's flight condition; a trim elsewhere sees û ≠ 0). Required with them, refused without them.",
         example: "0.0",
         shown: Shown::Commented,
         ..Key::BLANK
