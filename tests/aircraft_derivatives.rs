@@ -14,7 +14,7 @@
 use eom::kinds::aircraft::AircraftScene;
 use eom::kinds::aircraft::derivatives::Derivatives;
 use eom::linear::modes::eigenvalues;
-use eom_test_support::differences::central_jacobians;
+use eom_test_support::differences::{assert_rows_agree, central_jacobians};
 use nalgebra::{Complex, DMatrix};
 use serde_json::Value;
 use std::path::Path;
@@ -286,24 +286,8 @@ fn the_navions_jacobians_are_its_rates_slopes() {
         (&state, &controls),
         |v| 1e-6 * v.abs().max(1.0),
     );
-    for row in 0..13 {
-        let scale = a[row].iter().fold(1.0_f64, |m, x| m.max(x.abs()));
-        for (column, difference) in numeric_a[row].iter().enumerate() {
-            assert!(
-                (difference - a[row][column]).abs() < 1e-6 * scale,
-                "∂f{row}/∂x{column}: {difference} vs {}",
-                a[row][column]
-            );
-        }
-        let scale = b[row].iter().fold(1.0_f64, |m, x| m.max(x.abs()));
-        for (column, difference) in numeric_b[row].iter().enumerate() {
-            assert!(
-                (difference - b[row][column]).abs() < 1e-6 * scale,
-                "∂f{row}/∂u{column}: {difference} vs {}",
-                b[row][column]
-            );
-        }
-    }
+    assert_rows_agree(&a, &numeric_a, "x", 1e-6);
+    assert_rows_agree(&b, &numeric_b, "u", 1e-6);
 }
 
 /// Bad derivative scenes are refused naming the key: a term not in the list, a term that is

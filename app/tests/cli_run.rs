@@ -1277,12 +1277,15 @@ fn titles_with_control_characters_are_written_safely_everywhere() {
     // Every registered kind's example scene (a scene of manoeuvres cut to its first), the
     // pendulum's as a sweep, and the tennis racket: every writer of a title.
     let examples = eom::kinds::REGISTRY.iter().map(|kind| kind.example);
-    let names: Vec<&str> = std::iter::once("tennis_racket.toml").chain(examples).collect();
+    let names: Vec<&str> = std::iter::once("tennis_racket.toml")
+        .chain(examples)
+        .collect();
     assert!(names.contains(&"pendulum.toml"), "{names:?}");
     for name in names {
         let text = std::fs::read_to_string(scene(name)).unwrap();
         let old_title = text.lines().find(|l| l.starts_with("title = ")).unwrap();
-        let mut text = (text.replacen(old_title, title, 1)).replacen("end_time = 20.0", "end_time = 1.0", 1);
+        let mut text =
+            (text.replacen(old_title, title, 1)).replacen("end_time = 20.0", "end_time = 1.0", 1);
         if name == "pendulum.toml" {
             text += "\n[sweep]\n\"body.mass\" = [1.0, 2.0]\n";
         }

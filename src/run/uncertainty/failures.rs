@@ -94,7 +94,7 @@ pub fn group_failures(failed: &[(usize, String)]) -> Vec<FailureGroup> {
         }
     }
     // A stable sort: equal counts keep the order of their first case.
-    groups.sort_by(|a, b| b.count.cmp(&a.count));
+    groups.sort_by_key(|group| std::cmp::Reverse(group.count));
     groups
 }
 

@@ -32,3 +32,23 @@ pub fn central_jacobians<const N: usize, const M: usize>(
     }
     (by_state, by_input)
 }
+
+/// Asserts that each row of `proved` (a Jacobian by `wrt`, `x` or `u`) equals `numeric` to
+/// `tolerance` of the row's largest proved entry (at least 1), naming the entry (`∂f3/∂x1`)
+/// that does not.
+pub fn assert_rows_agree<const N: usize, const C: usize>(
+    proved: &[[f64; C]; N],
+    numeric: &[[f64; C]; N],
+    wrt: &str,
+    tolerance: f64,
+) {
+    for (row, (proved, numeric)) in proved.iter().zip(numeric).enumerate() {
+        let scale = proved.iter().fold(1.0_f64, |m, x| m.max(x.abs()));
+        for (column, (exact, difference)) in proved.iter().zip(numeric).enumerate() {
+            assert!(
+                (difference - exact).abs() < tolerance * scale,
+                "∂f{row}/∂{wrt}{column}: {difference} vs {exact}"
+            );
+        }
+    }
+}
