@@ -6,11 +6,17 @@
 //! where the full tables have more breakpoints), and a real scene gives the whole tables.
 
 pub mod aerodynamics;
+pub mod derivatives;
 
 use crate::scene::reference::{Choices, Key, Kind, Required, SceneFamily, Shown};
 
 /// Every key of an aircraft scene, a list a part, in the order a template writes them.
-pub const ALL: &[&[Key]] = &[KEYS, aerodynamics::AERODYNAMICS, LATER];
+pub const ALL: &[&[Key]] = &[
+    KEYS,
+    aerodynamics::AERODYNAMICS,
+    derivatives::DERIVATIVES,
+    LATER,
+];
 
 const AIRCRAFT: &[SceneFamily] = &[SceneFamily::Kind("aircraft")];
 

@@ -509,22 +509,58 @@ impl Checker<'_> {
         for (name, value) in derivatives.terms() {
             self.finite(&format!("aerodynamics.derivatives.{name}"), value)?;
         }
-        const SPEED: &str = "aerodynamics.derivatives.reference_speed";
-        if derivatives.has_speed_terms() {
-            if derivatives.reference_speed == 0.0 {
-                return Err(self.missing(
-                    SPEED,
-                    "u₀, the airspeed the speed derivatives CL_u, CD_u, Cm_u are taken about",
-                ));
-            }
-            self.positive(SPEED, derivatives.reference_speed)?;
-        } else if derivatives.reference_speed != 0.0 {
+        const KEY: &str = "aerodynamics.derivatives";
+        let (lift_and_drag, body_axis) = (
+            derivatives.lift_and_drag_terms(),
+            derivatives.body_axis_terms(),
+        );
+        if let (Some(wind), Some(body)) = (lift_and_drag.first(), body_axis.first()) {
             return Err(self.invalid(
-                SPEED,
-                "the u₀ of the speed derivatives CL_u, CD_u, Cm_u, which the table does not give",
+                &format!("{KEY}.{body}"),
+                format!(
+                    "a body-axis force term in a table that gives lift and drag ({wind}): a \
+                     table gives its forces one way, CL_… and CD_… or CX_… and CZ_…"
+                ),
             ));
         }
+        if let Some((speed, mach)) = derivatives.speed_and_mach_of_one() {
+            return Err(self.invalid(
+                &format!("{KEY}.{mach}"),
+                format!("a Mach derivative beside {speed}, the same slope per û: give one"),
+            ));
+        }
+        self.reference_value(
+            &format!("{KEY}.reference_speed"),
+            derivatives.reference_speed,
+            derivatives.has_speed_terms(),
+            "u₀, the airspeed the speed and Mach derivatives (CL_u, CL_M, …) are taken about",
+        )?;
+        self.reference_value(
+            &format!("{KEY}.reference_mach"),
+            derivatives.reference_mach,
+            !derivatives.mach_terms().is_empty(),
+            "M₀, the Mach number the Mach derivatives (CL_M, CD_M, …) are taken about",
+        )?;
         Ok(derivatives)
+    }
+
+    /// A table's reference condition (`what`): positive where the table has the terms that
+    /// need it, absent where it has none.
+    fn reference_value(
+        &self,
+        key: &str,
+        value: f64,
+        needed: bool,
+        what: &str,
+    ) -> Result<(), SceneError> {
+        match (needed, value == 0.0) {
+            (true, true) => Err(self.missing(key, what)),
+            (true, false) => self.positive(key, value).map(|_| ()),
+            (false, false) => {
+                Err(self.invalid(key, format!("{what}, which the table does not give")))
+            }
+            (false, true) => Ok(()),
+        }
     }
 
     /// Thrust tables, or a constant thrust: one of the two, whole.
