@@ -1,8 +1,11 @@
 //! What a run's plots and 3-D view draw, said by the kind of scene and drawn by the command.
 //!
-//! A kind says *which* drawings a run of it has, from a small vocabulary of shapes (a
-//! manoeuvre in the plane, a manoeuvre in space, curves in a plane); the command (`eom-cli`,
-//! which has plotters and the view's page) draws each from the run's rows. A drawing names the
+//! A kind says *which* drawings a run of it has, from a small vocabulary of shapes that name
+//! no kind: a track in a plane ([`Track`]), columns against time ([`Series`]), an attitude's
+//! angles ([`Attitude`]), a track in space seen from the side ([`Profile`]), a body moving in
+//! 3-D ([`View`]), curves in a plane ([`Curves`]), and a rigid body of the catalog's families
+//! ([`RigidBody`], whose plots read the catalog's state layout). The command (`eom-cli`, which
+//! has plotters and the view's page) draws each from the run's rows. A drawing names the
 //! columns it reads, so a new kind whose rows carry them is drawn without a line of the
 //! command changed, and the command names no kind.
 
@@ -13,7 +16,7 @@ use crate::models::{Family, Kinematics};
 pub struct Mark {
     /// What it is (`advance`, `tactical diameter`).
     pub label: String,
-    /// Where: x (north) and y (east) in space axes, m.
+    /// Where: up and across in the track's plane (x north and y east in space axes), m.
     pub at: [f64; 2],
 }
 
@@ -29,33 +32,170 @@ impl Mark {
     }
 }
 
-/// The waterline drawn along a track in the plane and moving in the view.
+/// How a drawing reads a column of the rows.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Hull {
-    /// L, m.
-    pub length: f64,
-    /// B, m.
-    pub beam: f64,
-    /// Whether B is assumed (the scene gives none): the captions and the view say so.
-    pub beam_assumed: bool,
+pub enum Reading {
+    /// As it is.
+    AsIs,
+    /// An angle in radians, drawn in degrees.
+    Degrees,
+    /// An angle in radians, drawn in degrees less its value at the first row at or after
+    /// `from_s` (a heading's change since the rudder was put over; 0 before any row).
+    DegreesSince {
+        /// When the change is counted from, s.
+        from_s: f64,
+    },
 }
 
-impl Hull {
-    /// L/B of a hull whose scene gives no beam: a cargo ship's.
-    pub const ASSUMED_LENGTH_OVER_BEAM: f64 = 7.0;
+/// One line of a [`Series`]: a column as read, under its label in the legend.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Line {
+    /// The legend's label (`rudder δ`).
+    pub label: String,
+    /// The column it reads (`delta`).
+    pub column: String,
+    /// How it reads it.
+    pub reading: Reading,
+}
 
-    /// A hull of `length` whose beam is assumed, L/[`Self::ASSUMED_LENGTH_OVER_BEAM`].
-    pub fn of_length(length: f64) -> Self {
-        Hull {
-            length,
-            beam: length / Self::ASSUMED_LENGTH_OVER_BEAM,
-            beam_assumed: true,
+impl Line {
+    /// A line of `column`, read as `reading`, labelled `label`.
+    pub fn new(label: &str, column: &str, reading: Reading) -> Self {
+        Line {
+            label: label.to_owned(),
+            column: column.to_owned(),
+            reading,
         }
     }
 }
 
-/// A rigid body as the view draws it: its mass and its inertia tensor about G, in body axes,
-/// kg m² (the view finds the solid of revolution with the same principal moments).
+/// Columns against time on one panel with a legend, into a file of their own.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Series {
+    /// The file, in the run's folder (`heading.svg`).
+    pub file: String,
+    /// The captions' title: the scene's and the run's.
+    pub title: String,
+    /// What the caption says after the title (`heading and rudder`).
+    pub what: String,
+    /// The value axis's description, with its unit (`[deg]`).
+    pub y_desc: String,
+    /// The lines, in the legend's order (at most four: the palette's).
+    pub lines: Vec<Line>,
+}
+
+/// An outline drawn along a track at the start and every `1/times` of the distance run, at
+/// the track's point and turned by a heading column: a hull's waterline (a pointed bow over
+/// the fore fifth, parallel sides, a rounded stern), of length L and beam B.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Outline {
+    /// L, in the track's unit.
+    pub length: f64,
+    /// B.
+    pub beam: f64,
+    /// The column of the heading ψ (rad, from north towards east) it is turned by.
+    pub heading: String,
+    /// How many times it is drawn besides the start.
+    pub times: usize,
+    /// Its legend entry (`hull`).
+    pub label: String,
+}
+
+/// A track in a plane: one column across, one up, at one scale, the start a ring and the end a
+/// dot, with marks and an outline along it, into `track.svg`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Track {
+    /// The captions' title: the scene's and the run's.
+    pub title: String,
+    /// What the caption says after the title (`track in plan`).
+    pub what: String,
+    /// The column across (`y`) and its axis's description (`east Y [m]`).
+    pub across: (String, String),
+    /// The column up (`x`) and its axis's description (`north X [m]`).
+    pub up: (String, String),
+    /// Points to mark, in the track's plane.
+    pub marks: Vec<Mark>,
+    /// What is drawn along it, if anything.
+    pub outline: Option<Outline>,
+}
+
+/// A track in space seen from the side: the height against the distance run, and seen from the
+/// east, into `profile.svg`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Profile {
+    /// The captions' title.
+    pub title: String,
+    /// The columns of north, east and down (m).
+    pub position: [String; 3],
+}
+
+/// Roll, pitch and yaw against time, made continuous (a tumbling body's angles do not wrap),
+/// into `attitude.svg`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Attitude {
+    /// The captions' title.
+    pub title: String,
+    /// The columns of φ, θ, ψ (rad).
+    pub angles: [String; 3],
+}
+
+/// One coordinate of a [`View`]'s position: a column, a column negated (an altitude as z
+/// down), or zero (a motion in the plane).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Coordinate {
+    /// The column as it is.
+    Column(String),
+    /// The column negated.
+    Negated(String),
+    /// Zero at every row.
+    Zero,
+}
+
+/// How a [`View`]'s attitude is read from the rows.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Orientation {
+    /// Turned about z (down) by a heading column (rad): a motion in the plane.
+    Heading(String),
+    /// The quaternion's four columns (q0 the scalar), taken to unit length row by row.
+    Quaternion([String; 4]),
+    /// Roll, pitch and yaw columns (rad), z–y–x.
+    EulerAngles([String; 3]),
+}
+
+/// What a [`View`] draws moving: its shape, in the rows' length unit.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Shape {
+    /// A hull's waterline of length L and beam B, on the water.
+    Waterline {
+        /// L.
+        length: f64,
+        /// B.
+        beam: f64,
+    },
+    /// The solid cylinder with a body's mass and principal moments about G (kg, kg m²),
+    /// along the principal axis nearest body x.
+    Cylinder(Solid),
+    /// A fuselage along body x with wings, a tailplane and a fin.
+    Aircraft {
+        /// The fuselage's length.
+        length: f64,
+        /// Its diameter.
+        diameter: f64,
+        /// The wing's span.
+        span: f64,
+        /// Its chord.
+        chord: f64,
+        /// The length unit (`ft`, `m`).
+        unit: &'static str,
+    },
+}
+
+impl Shape {
+    /// L/B of a hull whose scene gives no beam: a cargo ship's.
+    pub const ASSUMED_LENGTH_OVER_BEAM: f64 = 7.0;
+}
+
+/// A rigid body's mass and inertia tensor about G, in body axes, kg m².
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Solid {
     /// M, kg.
@@ -64,38 +204,27 @@ pub struct Solid {
     pub inertia_about_g: [[f64; 3]; 3],
 }
 
-/// A manoeuvre in the horizontal plane. Its rows carry `x`, `y` (north and east of the
-/// reference point, m), `psi` (rad), `delta` and `command` (the rudder and its command after
-/// saturation, rad). Drawn: the track in plan with the hull along it and the marks, the
-/// heading change since the execute, the rudder with its command; and the view of the hull
-/// on the water, its readout the columns named in `readout`.
+/// A body moving in 3-D, Z down, about the rows' reference point, with the rows' columns in
+/// a readout beside it, into `view.html`.
 #[derive(Debug, Clone, PartialEq)]
-pub struct PlaneManoeuvre {
-    /// The captions' title: the scene's and the run's.
+pub struct View {
+    /// The page's title.
     pub title: String,
-    /// When the rudder is put over, s: the heading change is counted from there.
-    pub execute_s: f64,
-    /// Points to mark on the track.
-    pub marks: Vec<Mark>,
-    /// The hull.
-    pub hull: Hull,
-    /// The columns the view's readout shows, in order.
-    pub readout: Vec<String>,
-}
-
-/// A manoeuvre in space. Its rows carry `x`, `y`, `z` (north, east, down, m), `phi`, `theta`,
-/// `psi` (rad), `q0`…`q3` (the attitude's quaternion), `dr`, `ds`, `dr_command`,
-/// `ds_command` (the fins and their commands, rad). Drawn: the track in plan with the marks,
-/// the profile, the attitude, the fins with their commands; and the view of the solid moving
-/// through the water, every column in its readout.
-#[derive(Debug, Clone, PartialEq)]
-pub struct SpaceManoeuvre {
-    /// The captions' title: the scene's and the run's.
-    pub title: String,
-    /// Points to mark on the track.
-    pub marks: Vec<Mark>,
-    /// The body the view draws.
-    pub solid: Solid,
+    /// What is drawn.
+    pub shape: Shape,
+    /// North, east and down of the reference point.
+    pub position: [Coordinate; 3],
+    /// The attitude.
+    pub orientation: Orientation,
+    /// The columns the readout shows, in order; `None` for every column.
+    pub readout: Option<Vec<String>>,
+    /// The point the trail follows (`midship`).
+    pub trail: String,
+    /// Whether the body is on or in water (the surface drawn at z = 0) rather than over a
+    /// floor.
+    pub water: bool,
+    /// What the page says of how the shape was made (and what it assumed).
+    pub notes: Vec<String>,
 }
 
 /// Named curves in one plane, into a file of their own (a spiral's r against δ).
@@ -177,37 +306,23 @@ pub struct RigidBody {
     pub conserves_energy: bool,
 }
 
-/// A flight in space. Its rows carry `north`, `east`, `altitude` (in the scene's length
-/// unit, altitude up) and `phi`, `theta`, `psi` (rad), each column labelled with its unit
-/// (`north[ft]`). Drawn: the view of the aircraft moving over the ground, its fuselage, wings
-/// and tail from the scene's geometry, every column in its readout.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Flight {
-    /// The captions' title: the scene's and the run's.
-    pub title: String,
-    /// The wing's span, in the scene's length unit.
-    pub span: f64,
-    /// Its chord.
-    pub chord: f64,
-    /// The fuselage's length, where the scene gives it.
-    pub length: Option<f64>,
-    /// The length unit of the rows and of the solid (`ft`, `m`).
-    pub length_unit: &'static str,
-}
-
 /// One drawing of a run.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Drawing {
     /// A rigid body of the catalog's families.
     RigidBody(RigidBody),
-    /// A manoeuvre in the horizontal plane.
-    PlaneManoeuvre(PlaneManoeuvre),
-    /// A manoeuvre in space.
-    SpaceManoeuvre(SpaceManoeuvre),
+    /// A track in a plane.
+    Track(Track),
+    /// Columns against time.
+    Series(Series),
+    /// An attitude's angles against time.
+    Attitude(Attitude),
+    /// A track in space seen from the side.
+    Profile(Profile),
+    /// A body moving in 3-D.
+    View(View),
     /// Curves in a plane.
     Curves(Curves),
-    /// A flight in space.
-    Flight(Flight),
 }
 
 /// A run's drawings, under its path in the output (`turning_circle_35/port`).

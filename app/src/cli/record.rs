@@ -7,15 +7,17 @@
 use super::run::{progress_bar, signal_received};
 use anyhow::{Context, Result};
 use eom::output::drawing::{
-    Curves, Drawing, Flight, Mark, PlaneManoeuvre, RigidBody, RunDrawings, SpaceManoeuvre,
+    Attitude, Curves, Drawing, Mark, Profile, Reading, RigidBody, RunDrawings, Series, Track, View,
 };
+use eom::output::text::printable;
 use eom::output::trajectory::{Columns, TrajectoryWriter};
 use eom::run::record::{RecordError, Recorder, RunStart};
 use eom::run::{Row, Sink};
 use eom_cli::plots;
 use eom_cli::plots::curves::{Curve, write_curves};
-use eom_cli::plots::plane_manoeuvre::{ManoeuvrePlot, write_manoeuvre_plots};
-use eom_cli::plots::space_manoeuvre::{SpacePlot, write_space_plots};
+use eom_cli::plots::shapes::{
+    OutlinePlot, SeriesPlot, TrackPlot, write_attitude, write_profile, write_series, write_track,
+};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
@@ -164,9 +166,11 @@ fn retitled(drawing: &Drawing, titled: impl Fn(&str) -> String) -> Drawing {
     let mut drawing = drawing.clone();
     match &mut drawing {
         Drawing::RigidBody(RigidBody { title, .. })
-        | Drawing::PlaneManoeuvre(PlaneManoeuvre { title, .. })
-        | Drawing::SpaceManoeuvre(SpaceManoeuvre { title, .. })
-        | Drawing::Flight(Flight { title, .. }) => *title = titled(title),
+        | Drawing::Track(Track { title, .. })
+        | Drawing::Series(Series { title, .. })
+        | Drawing::Attitude(Attitude { title, .. })
+        | Drawing::Profile(Profile { title, .. })
+        | Drawing::View(View { title, .. }) => *title = titled(title),
         Drawing::Curves(Curves { caption, .. }) => *caption = titled(caption),
     }
     drawing
@@ -175,30 +179,51 @@ fn retitled(drawing: &Drawing, titled: impl Fn(&str) -> String) -> Drawing {
 /// Draws `drawing` of a run whose rows are `kept` into its `folder`: the files written, and
 /// each plot left out although the run has its data, with why.
 fn draw(folder: &Path, drawing: &Drawing, kept: &Kept) -> Result<(Vec<PathBuf>, Vec<String>)> {
-    let mut files = Vec::new();
-    let mut not_drawn = Vec::new();
-    match drawing {
+    let file = match drawing {
         Drawing::RigidBody(body) => {
-            let (plots, left_out) = super::plots::write(body, kept, folder)?;
-            files.extend(plots);
-            not_drawn = left_out;
+            let (mut files, not_drawn) = super::plots::write(body, kept, folder)?;
             files.push(super::view::write(body, kept, folder)?);
+            return Ok((files, not_drawn));
         }
-        Drawing::PlaneManoeuvre(plane) => {
-            files.extend(draw_plane(folder, plane, kept)?);
-            files.push(super::view::write_plane(folder, plane, kept)?);
+        Drawing::Track(track) => draw_track(folder, track, kept)?,
+        Drawing::Series(series) => draw_series(folder, series, kept)?,
+        Drawing::Attitude(attitude) => {
+            let degrees = attitude
+                .angles
+                .iter()
+                .map(|name| read(kept, name, Reading::Degrees))
+                .collect::<Result<Vec<_>>>()?;
+            let [roll, pitch, yaw] = [0, 1, 2].map(|k| degrees[k].as_slice());
+            let title = printable(&attitude.title);
+            write_attitude(folder, &title, &kept.columns.time, [roll, pitch, yaw])?
         }
-        Drawing::SpaceManoeuvre(space) => {
-            files.extend(draw_space(folder, space, kept)?);
-            files.push(super::view::write_space(folder, space, kept)?);
+        Drawing::Profile(profile) => {
+            let [x, y, z] = [0, 1, 2].map(|k| kept.column(&profile.position[k]));
+            write_profile(folder, &printable(&profile.title), (x?, y?, z?))?
         }
-        Drawing::Curves(curves) => files.push(draw_curves(folder, curves)?),
-        Drawing::Flight(flight) => files.push(super::view::write_flight(folder, flight, kept)?),
-    }
-    Ok((files, not_drawn))
+        Drawing::View(view) => super::view::write_drawn(folder, view, kept)?,
+        Drawing::Curves(curves) => draw_curves(folder, curves)?,
+    };
+    Ok((vec![file], Vec::new()))
 }
 
-/// The marks as the track plots take them: (east, north).
+/// The column `name` of `kept` as `reading` reads it.
+fn read(kept: &Kept, name: &str, reading: Reading) -> Result<Vec<f64>> {
+    let column = kept.column(name)?;
+    let degrees = |from: f64| column.iter().map(|x| (x - from).to_degrees()).collect();
+    Ok(match reading {
+        Reading::AsIs => column.to_vec(),
+        Reading::Degrees => degrees(0.0),
+        Reading::DegreesSince { from_s } => {
+            let start = (kept.columns.time.iter().zip(column))
+                .find(|(t, _)| **t >= from_s)
+                .map_or(0.0, |(_, x)| *x);
+            degrees(start)
+        }
+    })
+}
+
+/// The marks as the track plots take them: (across, up).
 fn marks(marks: &[Mark]) -> Vec<plots::Mark> {
     (marks.iter())
         .map(|mark| plots::Mark {
@@ -208,51 +233,47 @@ fn marks(marks: &[Mark]) -> Vec<plots::Mark> {
         .collect()
 }
 
-/// `track.svg` with the hull along it, and the heading and the rudder against time.
-fn draw_plane(folder: &Path, plane: &PlaneManoeuvre, kept: &Kept) -> Result<Vec<PathBuf>> {
-    let time = &kept.columns.time;
-    let psi = kept.column("psi")?;
-    let psi0 = (time.iter().zip(psi))
-        .find(|(t, _)| **t >= plane.execute_s)
-        .map_or(0.0, |(_, psi)| *psi);
-    let degrees = |column: &[f64], from: f64| -> Vec<f64> {
-        column.iter().map(|x| (x - from).to_degrees()).collect()
+/// `track.svg`, with its outline along it.
+fn draw_track(folder: &Path, track: &Track, kept: &Kept) -> Result<PathBuf> {
+    let caption = format!("{}: {}", printable(&track.title), track.what);
+    let outline = match &track.outline {
+        Some(outline) => Some((outline, kept.column(&outline.heading)?)),
+        None => None,
     };
-    let heading = degrees(psi, psi0);
-    let rudder = degrees(kept.column("delta")?, 0.0);
-    let command = degrees(kept.column("command")?, 0.0);
-    let plot = ManoeuvrePlot {
-        title: &plane.title,
-        time,
-        north: kept.column("x")?,
-        east: kept.column("y")?,
-        heading_change_deg: &heading,
-        heading_rad: psi,
-        rudder_deg: &rudder,
-        command_deg: &command,
-        marks: &marks(&plane.marks),
-        hull: plane.hull,
+    let plot = TrackPlot {
+        caption: &caption,
+        axes: (&track.across.1, &track.up.1),
+        across: kept.column(&track.across.0)?,
+        up: kept.column(&track.up.0)?,
+        marks: &marks(&track.marks),
+        outline: outline.map(|(outline, heading)| OutlinePlot {
+            length: outline.length,
+            beam: outline.beam,
+            heading,
+            times: outline.times,
+            label: &outline.label,
+        }),
     };
-    Ok(write_manoeuvre_plots(folder, &plot)?)
+    Ok(write_track(folder, &plot)?)
 }
 
-/// The track in plan, the profile, the attitude and the fins with their commands.
-fn draw_space(folder: &Path, space: &SpaceManoeuvre, kept: &Kept) -> Result<Vec<PathBuf>> {
-    let column = |name: &str| kept.column(name);
-    let plot = SpacePlot {
-        title: &space.title,
+/// A series' file: its columns as its lines read them.
+fn draw_series(folder: &Path, series: &Series, kept: &Kept) -> Result<PathBuf> {
+    let caption = format!("{}: {}", printable(&series.title), series.what);
+    let values = (series.lines.iter())
+        .map(|line| read(kept, &line.column, line.reading))
+        .collect::<Result<Vec<_>>>()?;
+    let lines: Vec<(&str, &[f64])> = (series.lines.iter().zip(&values))
+        .map(|(line, values)| (line.label.as_str(), values.as_slice()))
+        .collect();
+    let plot = SeriesPlot {
+        file: &series.file,
+        caption: &caption,
+        y_desc: &series.y_desc,
         time: &kept.columns.time,
-        position: [column("x")?, column("y")?, column("z")?],
-        attitude: [column("phi")?, column("theta")?, column("psi")?],
-        fins: [
-            column("dr")?,
-            column("ds")?,
-            column("dr_command")?,
-            column("ds_command")?,
-        ],
-        marks: &marks(&space.marks),
+        lines: &lines,
     };
-    Ok(write_space_plots(folder, &plot)?)
+    Ok(write_series(folder, &plot)?)
 }
 
 /// Named curves into their own file.

@@ -11,18 +11,20 @@
 //! - the heavy top: a cone from the pivot to a disc at G, its radius from I₃ = M R²/2;
 //! - the pendulum: its rod from the pivot to G and a bob at G;
 //! - a planar body: a plate (sides 2 : 1) with its mass and I_zz, or for a body about
-//!   midship a hull of length 4 √(I_zz/M) (a radius of gyration of L/4); a ship scene's
-//!   hull has its L, and a beam of L/7, assumed (a ship scene has no key for it).
+//!   midship a hull of length 4 √(I_zz/M) (a radius of gyration of L/4) and a beam of L/7.
 //!
-//! The panel of the page says which of these it drew, and what it assumed.
+//! Any other run's view is drawn as its kind says it ([`View`]): a waterline of the length and
+//! beam given, the solid cylinder of a body's mass and principal moments, or an aircraft of
+//! the size given, moved by the columns it names. The panel of the page says which of these
+//! it drew, and what it assumed.
 
 use super::record::Kept;
 use anyhow::{Context, Result};
 use eom::Short;
 use eom::models::state_with_unit;
-use eom::models::{Family, Kinematics, state_unit};
+use eom::models::{Family, Kinematics};
 use eom::nalgebra::{Matrix3, UnitQuaternion, Vector3};
-use eom::output::drawing::{BodyShape, Flight, Hull, PlaneManoeuvre, RigidBody, SpaceManoeuvre};
+use eom::output::drawing::{BodyShape, Coordinate, Orientation, RigidBody, Shape as Drawn, View};
 use eom::output::trajectory::Columns;
 use eom_cli::view::{
     CameraTarget, Shape, SpaceAxes, Vectors, ViewInput, box_sides, cylinder_size, write_view,
@@ -34,7 +36,7 @@ pub fn write(body: &RigidBody, kept: &Kept, out: &Path) -> Result<PathBuf> {
     let columns = &kept.columns;
     let readout: Vec<(String, &[f64])> = (kept.names.iter())
         .zip(&columns.state)
-        .map(|(name, values)| (labelled(name), values.as_slice()))
+        .map(|(name, values)| (readout_label(name), values.as_slice()))
         .collect();
     let matrix = |rows: [[f64; 3]; 3]| Matrix3::from_fn(|r, c| rows[r][c]);
     let mut input = match body.shape {
@@ -50,14 +52,6 @@ pub fn write(body: &RigidBody, kept: &Kept, out: &Path) -> Result<PathBuf> {
     };
     input.readout = readout;
     write_view(out, &input).with_context(|| format!("writing the view into {}", out.display()))
-}
-
-/// A state name with its unit, as the panel shows it: `q [rad/s]`.
-fn labelled(name: &str) -> String {
-    match state_unit(name) {
-        Some(unit) => format!("{name} [{unit}]"),
-        None => name.to_string(),
-    }
 }
 
 /// The body's initial state entry `k` (0 where it has none).
@@ -146,7 +140,7 @@ fn spatial<'a>(
 ) -> ViewInput<'a> {
     let (moments, axes) = principal(inertia);
     let mut notes = Vec::new();
-    let cylinder = water.then(|| vehicle(mass, moments, axes)).flatten();
+    let cylinder = water.then(|| cylinder(mass, moments, axes)).flatten();
     let (shape, size) = match cylinder {
         Some((shape, size, note)) => {
             notes.push(note);
@@ -215,9 +209,9 @@ fn spatial<'a>(
     }
 }
 
-/// A vehicle: the solid cylinder with the body's mass and moments, along the principal axis
-/// nearest body x; `None` where no cylinder has them.
-fn vehicle(mass: f64, moments: [f64; 3], axes: Matrix3<f64>) -> Option<(Shape, f64, String)> {
+/// The solid cylinder with a body's mass and moments, along the principal axis nearest body x;
+/// `None` where no cylinder has them.
+fn cylinder(mass: f64, moments: [f64; 3], axes: Matrix3<f64>) -> Option<(Shape, f64, String)> {
     let along = (0..3).max_by(|&a, &b| axes[(0, a)].abs().total_cmp(&axes[(0, b)].abs()))?;
     let others: Vec<usize> = (0..3).filter(|&k| k != along).collect();
     let transverse = (moments[others[0]] + moments[others[1]]) / 2.0;
@@ -331,13 +325,13 @@ fn planar<'a>(body: &'a RigidBody, columns: &'a Columns, mass: f64, izz: f64) ->
     let n = columns.time.len();
     let (shape, water, note) = if family == Family::PlanarMidship {
         let length = 4.0 * (izz / mass).sqrt();
-        let beam = length / Hull::ASSUMED_LENGTH_OVER_BEAM;
+        let beam = length / Drawn::ASSUMED_LENGTH_OVER_BEAM;
         let note = format!(
             "a hull of length {} m (a radius of gyration of L/4 about G) and beam {} m \
              (L/B = {} assumed)",
             Short(length),
             Short(beam),
-            Hull::ASSUMED_LENGTH_OVER_BEAM
+            Drawn::ASSUMED_LENGTH_OVER_BEAM
         );
         (Shape::Hull { length, beam }, true, note)
     } else {
@@ -375,178 +369,117 @@ fn planar<'a>(body: &'a RigidBody, columns: &'a Columns, mass: f64, izz: f64) ->
     }
 }
 
-/// Writes the `view.html` of a manoeuvre in the plane into its folder: the hull moving on
-/// the water, turned by ψ, its readout the drawing's columns.
-pub fn write_plane(out: &Path, drawing: &PlaneManoeuvre, kept: &Kept) -> Result<PathBuf> {
+/// Writes the `view.html` of a run whose kind says its view ([`View`]) into `out`: its shape
+/// moved by the columns it names, its readout those columns (every column where it names
+/// none), each labelled with its unit.
+pub fn write_drawn(out: &Path, view: &View, kept: &Kept) -> Result<PathBuf> {
+    let (shape, mut notes) = drawn_shape(&view.shape)?;
+    notes.extend(view.notes.iter().cloned());
     let n = kept.columns.time.len();
-    let hull = drawing.hull;
-    let note = match hull.beam_assumed {
-        true => format!(
-            "the hull of length L = {} m, and of beam B = L/{} = {} m, assumed: a ship scene \
-             has no key for the beam (its table does not need one)",
-            Short(hull.length),
-            Hull::ASSUMED_LENGTH_OVER_BEAM,
-            Short(hull.beam)
-        ),
-        false => format!(
-            "the hull of length L = {} m and beam B = {} m",
-            Short(hull.length),
-            Short(hull.beam)
-        ),
+    let coordinate = |c: &Coordinate| -> Result<Vec<f64>> {
+        Ok(match c {
+            Coordinate::Column(name) => kept.column(name)?.to_vec(),
+            Coordinate::Negated(name) => kept.column(name)?.iter().map(|v| -v).collect(),
+            Coordinate::Zero => vec![0.0; n],
+        })
     };
-    let readout = (drawing.readout.iter())
-        .map(|name| Ok((state_with_unit(name), kept.column(name)?)))
-        .collect::<Result<Vec<_>>>()?;
+    let [x, y, z] = &view.position;
+    let attitude = match &view.orientation {
+        Orientation::Heading(psi) => about_axis(kept.column(psi)?, 2),
+        Orientation::Quaternion(names) => {
+            let [q0, q1, q2, q3] = [0, 1, 2, 3].map(|k| kept.column(&names[k]));
+            unit([q0?, q1?, q2?, q3?])
+        }
+        Orientation::EulerAngles(names) => {
+            let [phi, theta, psi] = [0, 1, 2].map(|k| kept.column(&names[k]));
+            from_euler_angles([phi?, theta?, psi?])
+        }
+    };
+    let readout = match &view.readout {
+        Some(names) => (names.iter())
+            .map(|name| Ok((readout_label(name), kept.column(name)?)))
+            .collect::<Result<Vec<_>>>()?,
+        None => (kept.names.iter().zip(&kept.columns.state))
+            .map(|(name, values)| (readout_label(name), values.as_slice()))
+            .collect(),
+    };
     let input = ViewInput {
-        title: &drawing.title,
-        shape: Shape::Hull {
-            length: hull.length,
-            beam: hull.beam,
-        },
-        axes: SpaceAxes::ZDown,
-        time: &kept.columns.time,
-        position: [
-            kept.column("x")?.to_vec(),
-            kept.column("y")?.to_vec(),
-            vec![0.0; n],
-        ],
-        attitude: about_axis(kept.column("psi")?, 2),
-        readout,
-        vectors: None,
-        trail: ([0.0; 3], "midship".into()),
-        camera: CameraTarget::Follow,
-        floor: 0.0,
-        water: true,
-        notes: vec![note],
-    };
-    write_view(out, &input).with_context(|| format!("writing the view into {}", out.display()))
-}
-
-/// Writes the `view.html` of a manoeuvre in space into its folder: the solid cylinder of the
-/// body's mass and principal moments about G (along the principal axis nearest body x), drawn
-/// about the rows' reference point (G's offset from it, 2 cm for REMUS's origin, is not
-/// drawn), moving through the water in north, east, down and turned by the run's quaternion;
-/// every column in its readout.
-pub fn write_space(out: &Path, drawing: &SpaceManoeuvre, kept: &Kept) -> Result<PathBuf> {
-    let solid = drawing.solid;
-    let inertia = Matrix3::from_fn(|r, c| solid.inertia_about_g[r][c]);
-    let (moments, axes) = principal(inertia);
-    let (shape, note) = match vehicle(solid.mass, moments, axes) {
-        Some((shape, _, note)) => (shape, note),
-        None => anyhow::bail!(
-            "no solid cylinder has the body's mass {} kg and principal moments {:?} kg m²",
-            Short(solid.mass),
-            moments
-        ),
-    };
-    let readout = (kept.names.iter().zip(&kept.columns.state))
-        .map(|(name, values)| (labelled(name), values.as_slice()))
-        .collect();
-    let quaternion = [
-        kept.column("q0")?,
-        kept.column("q1")?,
-        kept.column("q2")?,
-        kept.column("q3")?,
-    ];
-    let input = ViewInput {
-        title: &drawing.title,
+        title: &view.title,
         shape,
         axes: SpaceAxes::ZDown,
         time: &kept.columns.time,
-        position: [
-            kept.column("x")?.to_vec(),
-            kept.column("y")?.to_vec(),
-            kept.column("z")?.to_vec(),
-        ],
-        attitude: unit(quaternion),
+        position: [coordinate(x)?, coordinate(y)?, coordinate(z)?],
+        attitude,
         readout,
         vectors: None,
-        trail: ([0.0; 3], "the table's origin O".into()),
+        trail: ([0.0; 3], view.trail.clone()),
         camera: CameraTarget::Follow,
         floor: 0.0,
-        water: true,
-        notes: vec![note],
+        water: view.water,
+        notes,
     };
     write_view(out, &input).with_context(|| format!("writing the view into {}", out.display()))
 }
 
-/// The fuselage's length over its diameter, as the view draws an aircraft.
-const FUSELAGE_FINENESS: f64 = 10.0;
+/// The view's shape of a drawn one, with what the page says of how it was made.
+fn drawn_shape(shape: &Drawn) -> Result<(Shape, Vec<String>)> {
+    Ok(match *shape {
+        Drawn::Waterline { length, beam } => (Shape::Hull { length, beam }, Vec::new()),
+        Drawn::Cylinder(solid) => {
+            let inertia = Matrix3::from_fn(|r, c| solid.inertia_about_g[r][c]);
+            let (moments, axes) = principal(inertia);
+            match cylinder(solid.mass, moments, axes) {
+                Some((shape, _, note)) => (shape, vec![note]),
+                None => anyhow::bail!(
+                    "no solid cylinder has the body's mass {} kg and principal moments {:?} kg m²",
+                    Short(solid.mass),
+                    moments
+                ),
+            }
+        }
+        Drawn::Aircraft {
+            length,
+            diameter,
+            span,
+            chord,
+            unit,
+        } => {
+            let shape = Shape::Aircraft {
+                length,
+                diameter,
+                span,
+                chord,
+                unit,
+            };
+            (shape, Vec::new())
+        }
+    })
+}
 
-/// The view of a flight (`view.html`): the aircraft from the scene's geometry (a fuselage of
-/// its length along body x, wings of its span and chord, a tailplane and a fin), over the
-/// ground (z = 0 at altitude 0, Z down), the attitude from the rows' Euler angles.
-pub fn write_flight(out: &Path, drawing: &Flight, kept: &Kept) -> Result<PathBuf> {
-    // The fuselage a tenth as thick as it is long, a transport's and a fighter's fineness
-    // ratio to within a factor of two; without the scene's length, as long as the span.
-    let (length, said) = match drawing.length {
-        Some(length) => (length, "`geometry.length`"),
-        None => (
-            drawing.span,
-            "the span, the scene giving no `geometry.length`",
-        ),
+/// A column's label as the readout writes it, with its unit and a space before it:
+/// `alpha[rad]` and `psi` (a state whose unit is known) as `alpha [rad]` and `psi [rad]`, so
+/// that an angle shows in degrees.
+fn readout_label(name: &str) -> String {
+    let with_unit = match name.contains('[') {
+        true => name.to_owned(),
+        false => state_with_unit(name),
     };
-    let diameter = length / FUSELAGE_FINENESS;
-    let unit = drawing.length_unit;
-    let column = |name: &str, unit: &str| kept.column(&format!("{name}[{unit}]"));
-    let angles = [
-        column("phi", "rad")?,
-        column("theta", "rad")?,
-        column("psi", "rad")?,
-    ];
+    match with_unit.split_once('[') {
+        Some((base, unit)) => format!("{base} [{unit}"),
+        None => with_unit,
+    }
+}
+
+/// The quaternion of each row's Euler angles (roll, pitch, yaw; z–y–x).
+fn from_euler_angles([phi, theta, psi]: [&[f64]; 3]) -> [Vec<f64>; 4] {
     let mut attitude: [Vec<f64>; 4] = Default::default();
-    for ((phi, theta), psi) in angles[0].iter().zip(angles[1]).zip(angles[2]) {
+    for ((phi, theta), psi) in phi.iter().zip(theta).zip(psi) {
         let q = UnitQuaternion::from_euler_angles(*phi, *theta, *psi);
         for (column, v) in attitude.iter_mut().zip([q.w, q.i, q.j, q.k]) {
             column.push(v);
         }
     }
-    let readout = (kept.names.iter().zip(&kept.columns.state))
-        .map(|(name, values)| (spaced(name), values.as_slice()))
-        .collect();
-    let note = format!(
-        "drawn from the scene's geometry: the fuselage {} {unit} long ({said}) and a tenth of \
-         that across, the wings of span {} {unit} and chord {} {unit}, the tailplane a third \
-         of the span",
-        Short(length),
-        Short(drawing.span),
-        Short(drawing.chord),
-    );
-    let input = ViewInput {
-        title: &drawing.title,
-        shape: Shape::Aircraft {
-            length,
-            diameter,
-            span: drawing.span,
-            chord: drawing.chord,
-            unit,
-        },
-        axes: SpaceAxes::ZDown,
-        time: &kept.columns.time,
-        position: [
-            column("north", unit)?.to_vec(),
-            column("east", unit)?.to_vec(),
-            column("altitude", unit)?.iter().map(|h| -h).collect(),
-        ],
-        attitude,
-        readout,
-        vectors: None,
-        trail: ([0.0; 3], "G".into()),
-        camera: CameraTarget::Follow,
-        floor: 0.0,
-        water: false,
-        notes: vec![note],
-    };
-    write_view(out, &input).with_context(|| format!("writing the view into {}", out.display()))
-}
-
-/// A column's label as the readout writes it: `alpha[rad]` as `alpha [rad]`, so that an angle
-/// shows in degrees.
-fn spaced(name: &str) -> String {
-    match name.split_once('[') {
-        Some((base, unit)) => format!("{base} [{unit}"),
-        None => name.to_owned(),
-    }
+    attitude
 }
 
 /// Quaternion columns divided by their length, row by row (a run's quaternion drifts from

@@ -52,7 +52,8 @@
 //!
 //! Here: the input, the errors, and writing each plot atomically. `scale` decides which
 //! samples are drawn and where the axes run; `series`, `track`, `profile`, `polhode` and
-//! `energy` draw the plots; `plane_manoeuvre` and `space_manoeuvre` draw a manoeuvre's (in the plane, in space), `poles` a linear model's eigenvalues,
+//! `energy` draw the plots; `shapes` draws the library's drawing shapes from them (a track with
+//! an outline along it, a series, an attitude, a profile), `poles` a linear model's eigenvalues,
 //! `curves` one quantity against another (a spiral's r–δ curve, a rudder sweep's diameters),
 //! `distributions` a Monte Carlo's figures and pass rates.
 
@@ -70,14 +71,13 @@ use eom::output::text::printable;
 pub mod curves;
 pub mod distributions;
 mod energy;
-pub mod plane_manoeuvre;
 pub mod poles;
 mod polhode;
 mod precise;
 mod profile;
 mod scale;
 mod series;
-pub mod space_manoeuvre;
+pub mod shapes;
 mod track;
 
 use energy::draw_energy;
@@ -197,7 +197,7 @@ pub fn write_plots(dir: &Path, input: &PlotInput) -> Result<Vec<PathBuf>, PlotEr
         let caption = format!("{}: track in space axes", input.title);
         let axes = ("x [m]", "y [m]");
         written.push(emit(dir, TRACK, |svg| {
-            draw_track(svg, &caption, axes, (x, y), &[], &[])
+            draw_track(svg, &caption, axes, (x, y), &[], ("", &[]))
         })?);
     }
     if let Some(drift) = input.energy_drift {

@@ -57,7 +57,7 @@ fn legend_place(
 }
 
 /// The colour of a hull's outline.
-const HULL_GREY: RGBColor = RGBColor(110, 110, 110);
+const OUTLINE_GREY: RGBColor = RGBColor(110, 110, 110);
 
 /// The chart builder of the track plot, the same for the layout pass and the drawing.
 fn track_builder<'a, 'b>(
@@ -113,14 +113,15 @@ pub struct Mark {
 
 /// The track plot: the vertical coordinate against the horizontal with one scale on both axes
 /// (a circle is drawn round), the start and the end marked, `marks` as crosses and `outlines`
-/// (a hull drawn along the track) as thin grey lines under it.
+/// (an outline drawn along the track, a hull's waterline) as thin grey lines under it, under
+/// their legend entry.
 pub(super) fn draw_track(
     svg: &mut String,
     caption: &str,
     (x_desc, y_desc): (&str, &str),
     (x, y): (&[f64], &[f64]),
     marks: &[Mark],
-    outlines: &[Vec<(f64, f64)>],
+    (outline_label, outlines): (&str, &[Vec<(f64, f64)>]),
 ) -> Result<(), DrawError> {
     let size = (WIDTH, WIDTH);
     // The size of the plotting area does not depend on the ranges: lay out once on a scratch
@@ -189,13 +190,13 @@ pub(super) fn draw_track(
         let colour = COLOURS[0];
         let frame = PixelFrame::new(chart.plotting_area().get_pixel_range(), x_range, y_range);
         for outline in &outlines {
-            overlay.line(root, outline.iter().map(|p| frame.at(*p)), HULL_GREY, 1)?;
+            overlay.line(root, outline.iter().map(|p| frame.at(*p)), OUTLINE_GREY, 1)?;
         }
         if !outlines.is_empty() {
             chart
                 .draw_series(std::iter::empty::<PathElement<(f64, f64)>>())?
-                .label("hull")
-                .legend(|(x, y)| Rectangle::new([(x, y - 4), (x + 16, y + 4)], HULL_GREY));
+                .label(outline_label)
+                .legend(|(x, y)| Rectangle::new([(x, y - 4), (x + 16, y + 4)], OUTLINE_GREY));
         }
         overlay.line(root, points.iter().map(|p| frame.at(*p)), colour, 2)?;
         chart

@@ -7,7 +7,7 @@ use super::linear::linearise_aircraft;
 use super::manoeuvre::{self, AircraftRun, Manoeuvre, ROW, RunError, dutch_roll};
 use super::scene::{AircraftScene, units};
 use crate::kind::KindError;
-use crate::output::drawing::{Curves, Drawing, Flight};
+use crate::output::drawing::{Coordinate, Curves, Drawing, Orientation, Shape, View};
 use crate::output::summary::{Figure, IntegratorSummary, Named, RunFigures};
 use crate::output::trajectory::number_text;
 use crate::run::Row;
@@ -389,13 +389,7 @@ fn drawings(scene: &AircraftScene, path: &str, rows: &[(f64, [f64; 18])]) -> Vec
                 .map(|n| curve(n, column(n), degrees))
                 .collect(),
         }),
-        Drawing::Flight(Flight {
-            title: format!("{}: {path}", scene.title),
-            span: scene.span,
-            chord: scene.chord,
-            length: scene.length,
-            length_unit: units(scene.units)[9].1,
-        }),
+        Drawing::View(view(scene, format!("{}: {path}", scene.title))),
         Drawing::Curves(Curves {
             file: "load_factor.svg".into(),
             caption: format!("{}: {path}, load factor", scene.title),
@@ -404,6 +398,53 @@ fn drawings(scene: &AircraftScene, path: &str, rows: &[(f64, [f64; 18])]) -> Vec
             curves: vec![curve("n_z", column("load_factor"), 1.0)],
         }),
     ]
+}
+
+/// The fuselage's length over its diameter, as the view draws an aircraft: a transport's and
+/// a fighter's fineness ratio to within a factor of two.
+const FUSELAGE_FINENESS: f64 = 10.0;
+
+/// The view of a flight: the aircraft from the scene's geometry (a fuselage of its length
+/// along body x, a tenth as thick, wings of its span and chord, a tailplane and a fin; without
+/// the scene's length, as long as the span) over the ground (z = 0 at altitude 0), turned by
+/// the rows' Euler angles, every column in its readout.
+fn view(scene: &AircraftScene, title: String) -> View {
+    let (length, said) = match scene.length {
+        Some(length) => (length, "`geometry.length`"),
+        None => (
+            scene.span,
+            "the span, the scene giving no `geometry.length`",
+        ),
+    };
+    let unit = units(scene.units)[9].1;
+    let column = |name: &str, unit: &str| format!("{name}[{unit}]");
+    View {
+        title,
+        shape: Shape::Aircraft {
+            length,
+            diameter: length / FUSELAGE_FINENESS,
+            span: scene.span,
+            chord: scene.chord,
+            unit,
+        },
+        position: [
+            Coordinate::Column(column("north", unit)),
+            Coordinate::Column(column("east", unit)),
+            Coordinate::Negated(column("altitude", unit)),
+        ],
+        orientation: Orientation::EulerAngles(["phi", "theta", "psi"].map(|a| column(a, "rad"))),
+        readout: None,
+        trail: "G".into(),
+        water: false,
+        notes: vec![format!(
+            "drawn from the scene's geometry: the fuselage {} {unit} long ({said}) and a tenth \
+             of that across, the wings of span {} {unit} and chord {} {unit}, the tailplane a \
+             third of the span",
+            crate::Short(length),
+            crate::Short(scene.span),
+            crate::Short(scene.chord),
+        )],
+    }
 }
 
 /// The inertia tensor about G that the model uses, as the report echoes it: its rows, whose

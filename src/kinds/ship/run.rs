@@ -18,7 +18,10 @@ use super::summary::{
 };
 use super::{Manoeuvre, ShipModel, ShipScene};
 use crate::kind::KindError;
-use crate::output::drawing::{Curves, Drawing, Hull, Mark, PlaneManoeuvre};
+use crate::output::drawing::{
+    Coordinate, Curves, Drawing, Line, Mark, Orientation, Outline, Reading, Series, Shape, Track,
+    View,
+};
 use crate::output::summary::{IntegratorSummary, RunFigures};
 use crate::output::text::printable;
 use crate::run::Row;
@@ -367,9 +370,10 @@ fn cells(
     cells
 }
 
-/// What a manoeuvre's run draws: the manoeuvre in the plane, the hull of the scene's length
-/// (its beam assumed: a ship scene has no key for it), the view's readout the model's seven
-/// states; and a spiral's r against δ.
+/// What a manoeuvre's run draws: midship's track with the manoeuvre's points marked and the
+/// hull's waterline along it, the heading change with the rudder and its command, the hull on
+/// the water (the view's readout the model's seven states); and a spiral's r against δ. The
+/// hull has the scene's length and a beam assumed (a ship scene has no key for it).
 fn drawings(
     scene: &ShipScene,
     (manoeuvre, name): (&Manoeuvre, &str),
@@ -380,15 +384,68 @@ fn drawings(
     if let Some(curve) = &figures.spiral {
         drawings.push(Drawing::Curves(spiral_curves(&title, curve)));
     }
-    drawings.push(Drawing::PlaneManoeuvre(PlaneManoeuvre {
-        title,
-        execute_s: manoeuvre.execute,
+    let length = scene.length;
+    let beam = length / Shape::ASSUMED_LENGTH_OVER_BEAM;
+    let column = |name: &str, desc: &str| (name.to_owned(), desc.to_owned());
+    drawings.push(Drawing::Track(Track {
+        title: title.clone(),
+        what: format!(
+            "track, hull every 1/{HULLS} of the run (B = L/{} assumed)",
+            crate::Short(length / beam)
+        ),
+        across: column("y", "east Y [m]"),
+        up: column("x", "north X [m]"),
         marks: Mark::all(&figures.marks),
-        hull: Hull::of_length(scene.length),
-        readout: ROW[..7].iter().map(|c| (*c).to_owned()).collect(),
+        outline: Some(Outline {
+            length,
+            beam,
+            heading: "psi".into(),
+            times: HULLS,
+            label: "hull".into(),
+        }),
+    }));
+    drawings.push(Drawing::Series(Series {
+        file: "heading.svg".into(),
+        title: title.clone(),
+        what: "heading and rudder".into(),
+        y_desc: "[deg]".into(),
+        lines: vec![
+            Line::new(
+                "heading change ψ − ψ₀",
+                "psi",
+                Reading::DegreesSince {
+                    from_s: manoeuvre.execute,
+                },
+            ),
+            Line::new("rudder δ", "delta", Reading::Degrees),
+            Line::new("command", "command", Reading::Degrees),
+        ],
+    }));
+    drawings.push(Drawing::View(View {
+        title,
+        shape: Shape::Waterline { length, beam },
+        position: [
+            Coordinate::Column("x".into()),
+            Coordinate::Column("y".into()),
+            Coordinate::Zero,
+        ],
+        orientation: Orientation::Heading("psi".into()),
+        readout: Some(ROW[..7].iter().map(|c| (*c).to_owned()).collect()),
+        trail: "midship".into(),
+        water: true,
+        notes: vec![format!(
+            "the hull of length L = {} m, and of beam B = L/{} = {} m, assumed: a ship scene \
+             has no key for the beam (its table does not need one)",
+            crate::Short(length),
+            Shape::ASSUMED_LENGTH_OVER_BEAM,
+            crate::Short(beam)
+        )],
     }));
     drawings
 }
+
+/// How many times the hull is drawn along the track, evenly by distance run, besides the start.
+const HULLS: usize = 10;
 
 /// A spiral's plot, in its manoeuvre's folder.
 pub const SPIRAL_PLOT: &str = "spiral.svg";

@@ -12,7 +12,10 @@ use super::summary::{
 use super::trial::{Plane, TrialFigures, largest_trial_difference};
 use super::{VehicleScene, format_folded};
 use crate::kind::KindError;
-use crate::output::drawing::{Drawing, Mark, SpaceManoeuvre};
+use crate::output::drawing::{
+    Attitude, Coordinate, Drawing, Line, Mark, Orientation, Profile, Reading, Series, Shape, Track,
+    View,
+};
 use crate::output::summary::{Figure, IntegratorSummary, RunFigures};
 use crate::output::text::printable;
 use crate::output::trajectory::number_text;
@@ -135,11 +138,11 @@ impl SceneRuns for VehicleScene {
     }
 
     fn drawings(&self, _: &(), index: usize, outcome: &Outcome) -> Vec<Drawing> {
-        vec![Drawing::SpaceManoeuvre(SpaceManoeuvre {
-            title: format!("{} — {}", self.title, self.manoeuvres[index].name),
-            marks: Mark::all(&outcome.marks),
-            solid: self.solid(),
-        })]
+        drawings(
+            self,
+            format!("{} — {}", self.title, self.manoeuvres[index].name),
+            Mark::all(&outcome.marks),
+        )
     }
 
     fn close(&self, ran: &Ran<'_, Self>) -> Closing<VehicleSection> {
@@ -520,4 +523,55 @@ fn trial_report(out: &mut String, trial: &TrialFigures) -> std::fmt::Result {
             }
         }
     }
+}
+
+/// What a manoeuvre's run draws: the track in plan with its marks, the profile, the attitude,
+/// the fins with their commands, and the solid of the body's mass and principal moments
+/// moving through the water about the table's origin O (G's offset from it, 2 cm for REMUS,
+/// not drawn), every column in its readout.
+fn drawings(scene: &VehicleScene, title: String, marks: Vec<Mark>) -> Vec<Drawing> {
+    let column = |name: &str| name.to_owned();
+    let [x, y, z] = ["x", "y", "z"].map(column);
+    let angles = ["phi", "theta", "psi"].map(column);
+    let fin = |label: &str, name: &str| Line::new(label, name, Reading::Degrees);
+    vec![
+        Drawing::Track(Track {
+            title: title.clone(),
+            what: "track in plan".into(),
+            across: (y.clone(), "east Y [m]".into()),
+            up: (x.clone(), "north X [m]".into()),
+            marks,
+            outline: None,
+        }),
+        Drawing::Profile(Profile {
+            title: title.clone(),
+            position: [x.clone(), y.clone(), z.clone()],
+        }),
+        Drawing::Attitude(Attitude {
+            title: title.clone(),
+            angles,
+        }),
+        Drawing::Series(Series {
+            file: "fins.svg".into(),
+            title: title.clone(),
+            what: "fins and their commands".into(),
+            y_desc: "[deg]".into(),
+            lines: vec![
+                fin("rudder δr", "dr"),
+                fin("stern planes δs", "ds"),
+                fin("rudder command", "dr_command"),
+                fin("stern planes command", "ds_command"),
+            ],
+        }),
+        Drawing::View(View {
+            title,
+            shape: Shape::Cylinder(scene.solid()),
+            position: [x, y, z].map(Coordinate::Column),
+            orientation: Orientation::Quaternion(["q0", "q1", "q2", "q3"].map(column)),
+            readout: None,
+            trail: "the table's origin O".into(),
+            water: true,
+            notes: Vec::new(),
+        }),
+    ]
 }
