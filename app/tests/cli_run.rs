@@ -534,6 +534,106 @@ fn a_sweep_runs_every_case_and_shards_split_them() {
     assert_eq!(sharded, whole);
 }
 
+/// Every registered kind's example scene swept over one key of its integrator (its fixed
+/// step, or its relative tolerance), whole and as two shards merged: the merged table the
+/// whole run's but the wall times, and `sweep.svg` (the figures the kind names for its sweeps
+/// against the key) the same bytes, drawn for every kind whose example gives one of them
+/// (every kind's does). Each example cut to its first run, briefly, as the titles test cuts
+/// them.
+#[test]
+fn every_kinds_sweep_runs_whole_or_in_shards_and_draws_its_figures_alike() {
+    for kind in eom::kinds::REGISTRY {
+        let dir = folder(&format!("sweep_every_kind_{}", kind.name));
+        let text = std::fs::read_to_string(scene(kind.example)).unwrap();
+        let table: toml::Table = toml::from_str(&text).unwrap();
+        let integrator = table["integrator"].as_table().unwrap();
+        let (key, values) = match integrator.get("step").and_then(toml::Value::as_float) {
+            Some(step) => ("integrator.step", [step, step / 2.0]),
+            None => {
+                let rtol = integrator["rtol"].as_float().unwrap();
+                ("integrator.rtol", [rtol, rtol * 10.0])
+            }
+        };
+        let text = format!(
+            "{text}\n[sweep]\n\"{key}\" = [{:?}, {:?}]\n",
+            values[0], values[1]
+        );
+        let path = dir.join("sweep.toml");
+        std::fs::write(&path, &text).unwrap();
+        let run = |out: &Path, shard: Option<&str>| {
+            let mut command = eom_command();
+            command.args([
+                "run",
+                path.to_str().unwrap(),
+                "--out",
+                out.to_str().unwrap(),
+            ]);
+            command.args(shard.map(|s| ["--shard", s]).iter().flatten());
+            let output = command.output().unwrap();
+            assert!(
+                output.status.success(),
+                "{}: {}",
+                kind.name,
+                String::from_utf8_lossy(&output.stderr)
+            );
+        };
+        let (whole, sharded) = (dir.join("whole"), dir.join("sharded"));
+        run(&whole, None);
+        run(&sharded, Some("0/2"));
+        run(&sharded, Some("1/2"));
+        let merge = eom_command()
+            .args(["sweep-merge", sharded.to_str().unwrap()])
+            .output()
+            .unwrap();
+        assert!(
+            merge.status.success(),
+            "{}",
+            String::from_utf8_lossy(&merge.stderr)
+        );
+        let without_wall_times = |folder: &Path| -> Vec<String> {
+            let table = std::fs::read_to_string(folder.join("sweep.csv")).unwrap();
+            let header: Vec<&str> = table.lines().next().unwrap().split(',').collect();
+            let timed: Vec<usize> = (0..header.len())
+                .filter(|&k| header[k].ends_with("wall_seconds"))
+                .collect();
+            (table.lines())
+                .map(|line| {
+                    let fields = line.split(',').enumerate();
+                    let kept = fields.filter(|(k, _)| !timed.contains(k)).map(|(_, f)| f);
+                    kept.collect::<Vec<_>>().join(",")
+                })
+                .collect()
+        };
+        assert_eq!(
+            without_wall_times(&sharded),
+            without_wall_times(&whole),
+            "{}",
+            kind.name
+        );
+        let plot = std::fs::read_to_string(whole.join("sweep.svg"))
+            .unwrap_or_else(|_| panic!("{}: no sweep.svg", kind.name));
+        assert!(
+            plot.contains(key),
+            "{}: the key is not on the plot",
+            kind.name
+        );
+        // The kind's own figures, not another kind's of the same name's end.
+        let first = kind.swept_figures.names[0].trim_start_matches("*.");
+        let label = first.rsplit_once('_').unwrap().0.replace('_', " ");
+        assert!(
+            plot.contains(&label),
+            "{}: {label} is not on the plot",
+            kind.name
+        );
+        assert_eq!(
+            std::fs::read_to_string(sharded.join("sweep.svg")).unwrap(),
+            plot,
+            "{}: the merge draws the same plot",
+            kind.name
+        );
+    }
+}
+
 #[test]
 fn tradeoff_recommends_a_setting_that_meets_the_target() {
     let dir = folder("tradeoff");

@@ -527,7 +527,7 @@ fn a_ship_sweep_over_the_rudder_runs_whole_or_in_shards_alike() {
         assert!(header.contains(&column), "{column}: {header:?}");
     }
     // The plot of the diameters against the rudder angle, beside the table.
-    let plot = std::fs::read_to_string(whole.join("rudder_sweep.svg")).unwrap();
+    let plot = std::fs::read_to_string(whole.join("sweep.svg")).unwrap();
     let document = roxmltree::Document::parse(&plot).unwrap();
     assert!(document.descendants().any(|n| n.has_tag_name("polyline")));
     assert!(plot.contains("tactical diameter") && plot.contains("steady turning radius"));
@@ -538,7 +538,7 @@ fn a_ship_sweep_over_the_rudder_runs_whole_or_in_shards_alike() {
     let merged = std::fs::read_to_string(sharded.join("sweep.csv")).unwrap();
     assert_eq!(merged, table);
     assert_eq!(
-        std::fs::read_to_string(sharded.join("rudder_sweep.svg")).unwrap(),
+        std::fs::read_to_string(sharded.join("sweep.svg")).unwrap(),
         plot,
         "the merge draws the same plot"
     );
@@ -608,7 +608,7 @@ fn a_sweep_over_an_unnamed_turns_rudder_keeps_every_cases_figures() {
         }
     }
     // The plot over the rudder angle finds the one swept key and the turn's columns.
-    let plot = std::fs::read_to_string(whole.join("rudder_sweep.svg")).unwrap();
+    let plot = std::fs::read_to_string(whole.join("sweep.svg")).unwrap();
     assert!(plot.contains("manoeuvre[0] tactical diameter") || plot.contains("tactical diameter"));
     let sharded = dir.join("sharded");
     run(&sharded, Some("0/2"));

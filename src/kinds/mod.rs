@@ -160,6 +160,20 @@ pub struct Registered {
     /// Its example scene, under the repository's `scenes/`: what the tests run every kind by
     /// (each feature, the same way for every kind).
     pub example: &'static str,
+    /// The figures a sweep over one key draws against it (`sweep.svg`, beside its table), all
+    /// in one unit.
+    pub swept_figures: SweptFigures,
+}
+
+/// The figures a sweep over one key draws against it, in one unit.
+#[derive(Debug, Clone, Copy)]
+pub struct SweptFigures {
+    /// Each figure's column in the sweep's table: its name (`period_s`, a scene of one run),
+    /// or `*.` and its name for every run's (`*.tactical_diameter_m`: the column
+    /// `turn.port.tactical_diameter_m` and the like).
+    pub names: &'static [&'static str],
+    /// Their unit (`m`).
+    pub unit: &'static str,
 }
 
 /// The kinds of scene: the only list of them, in the order the reference lists them. A scene

@@ -4,8 +4,8 @@
 //! Each shard (`eom run SCENE --shard K/N`) writes `sweep-shard-K-of-N.csv`; the cases of one
 //! shard are k ≡ K (mod N), so the tables interleave. The merge checks that every shard of
 //! the same N is there and that their headers agree, and refuses while a shard still holds
-//! the folder. The table of a ship sweep over one rudder angle gets its plot,
-//! `rudder_sweep.svg`, as a whole run's does (drawn from the table alone).
+//! the folder. The table of a sweep over one key gets its plot,
+//! `sweep.svg`, as a whole run's does (drawn from the table alone).
 //!
 //! A Monte Carlo's shards (`uncertainty-shard-K-of-N.csv`, from a scene with an
 //! `[uncertainty]`) merge alike into `uncertainty.csv`, and the merge writes from it what one

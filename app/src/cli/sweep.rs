@@ -114,14 +114,8 @@ fn table(cases: &[(TableCase, Box<dyn Kind>)], runs: &[CaseRun]) -> String {
     String::from_utf8(writer.into_inner().unwrap_or_default()).unwrap_or_default()
 }
 
-/// A ship sweep's plot over a rudder angle, beside its table.
-pub const SWEEP_PLOT: &str = "rudder_sweep.svg";
-
-/// The figures [`write_sweep_plot`] draws against the rudder angle, with their names.
-const SWEPT_FIGURES: [(&str, &str); 2] = [
-    ("tactical_diameter_m", "tactical diameter"),
-    ("steady_turning_radius_m", "steady turning radius"),
-];
+/// A sweep's plot over one key, beside its table.
+pub const SWEEP_PLOT: &str = "sweep.svg";
 
 /// Whether a column of a sweep's table is a swept key (a key path of the scene: a key of an
 /// entry of an array, `manoeuvre[0].rudder_deg`, or a key of one of its tables), not a figure
@@ -142,11 +136,12 @@ fn is_key_path(column: &str) -> bool {
     })
 }
 
-/// `rudder_sweep.svg` in `dir`, from a ship sweep's table (`sweep.csv`'s text), when the sweep
-/// varies one key and that key is a rudder angle (`….rudder_deg`): the tactical diameter and
-/// the steady turning radius of each turning circle against it, each side's where a turn ran
-/// to both. Draws nothing for any other sweep. The table alone decides, so that a whole run
-/// and the merge of its shards draw the same plot.
+/// `sweep.svg` in `dir`, from a sweep's table (`sweep.csv`'s text), when the sweep varies one
+/// key: each figure a registered kind names for its sweeps ([`eom::kinds::SweptFigures`]:
+/// a turning circle's tactical diameter, a pendulum's period) against the key, a curve for
+/// each manoeuvre the table gives it for (each side's where a turn ran to both). Draws nothing
+/// for a sweep over several keys or a table with none of the figures. The table alone
+/// decides, so that a whole run and the merge of its shards draw the same plot.
 pub fn write_sweep_plot(dir: &Path, table: &str) -> Result<()> {
     let mut reader = csv::Reader::from_reader(table.as_bytes());
     let Ok(header) = reader.headers().cloned() else {
@@ -157,29 +152,81 @@ pub fn write_sweep_plot(dir: &Path, table: &str) -> Result<()> {
         .skip(1)
         .take_while(|c| is_key_path(c))
         .collect();
-    let [rudder] = swept.as_slice() else {
+    let [key] = swept.as_slice() else {
         return Ok(());
     };
-    if !rudder.ends_with("rudder_deg") {
-        return Ok(());
-    }
     let rows: Vec<csv::StringRecord> = reader.records().filter_map(Result::ok).collect();
+    // The kind whose figures the table has most of (a ship's and a vehicle's turning circles
+    // share the tactical diameter), the first listed of equals.
+    let found = (eom::kinds::REGISTRY.iter().rev()).map(|kind| {
+        let figures = kind.swept_figures;
+        (figures, swept_lines(&header, &rows, figures.names))
+    });
+    let Some((figures, lines)) = found
+        .max_by_key(|(_, lines)| lines.len())
+        .filter(|(_, lines)| !lines.is_empty())
+    else {
+        return Ok(());
+    };
+    let curves: Vec<Curve> = (lines.iter())
+        .map(|(name, points)| Curve { name, points })
+        .collect();
+    let names: Vec<String> = (figures.names.iter())
+        .map(|pattern| label(figure_of(pattern)))
+        .filter(|name| lines.iter().any(|(line, _)| line.ends_with(name.as_str())))
+        .collect();
+    let caption = format!("{} against {key}", names.join(", "));
+    let y_desc = format!("{} [{}]", names.join(", "), figures.unit);
+    let plot = Curves {
+        caption: &caption,
+        x_desc: key,
+        y_desc: &y_desc,
+        curves: &curves,
+    };
+    write_curves(dir, SWEEP_PLOT, &plot)?;
+    Ok(())
+}
+
+/// The figure a column pattern names: `*.tactical_diameter_m`'s `tactical_diameter_m`.
+fn figure_of(pattern: &str) -> &str {
+    pattern.strip_prefix("*.").unwrap_or(pattern)
+}
+
+/// The run a column is of where it is the figure `pattern` names (`turn.port` of
+/// `turn.port.tactical_diameter_m` for `*.tactical_diameter_m`; empty for `period_s` itself).
+fn run_of<'a>(pattern: &str, column: &'a str) -> Option<&'a str> {
+    match pattern.strip_prefix("*.") {
+        Some(figure) => column.strip_suffix(figure)?.strip_suffix('.'),
+        None => (column == pattern).then_some(""),
+    }
+}
+
+/// A figure's name as a reader says it, its unit's suffix off: `tactical_diameter_m` as
+/// `tactical diameter`.
+fn label(figure: &str) -> String {
+    let name = figure.rsplit_once('_').map_or(figure, |(name, _)| name);
+    name.replace('_', " ")
+}
+
+/// Each column of `figures` in the table, as (what it is, (the swept value, the figure) of
+/// every case that gave it), sorted by the swept value: a turn run to both sides by its
+/// sides' columns, not the worse side's.
+fn swept_lines(
+    header: &csv::StringRecord,
+    rows: &[csv::StringRecord],
+    figures: &[&str],
+) -> Vec<(String, Vec<(f64, f64)>)> {
     let number = |row: &csv::StringRecord, i: usize| row.get(i)?.parse::<f64>().ok();
-    let mut lines: Vec<(String, Vec<(f64, f64)>)> = Vec::new();
+    let mut lines = Vec::new();
     for (i, column) in header.iter().enumerate() {
-        let Some((key, what)) = SWEPT_FIGURES
-            .iter()
-            .find(|(k, _)| column.ends_with(&format!(".{k}")))
+        let Some((figure, run)) = (figures.iter())
+            .find_map(|pattern| Some((figure_of(pattern), run_of(pattern, column)?)))
         else {
             continue;
         };
-        let manoeuvre = &column[..column.len() - key.len() - 1];
-        // A turn run to both sides: its sides' columns, not the worse side's.
-        let sided = ["port", "starboard"].iter().any(|side| {
-            header
-                .iter()
-                .any(|c| c == format!("{manoeuvre}.{side}.{key}"))
-        });
+        let sided = ["port", "starboard"]
+            .iter()
+            .any(|side| header.iter().any(|c| c == format!("{run}.{side}.{figure}")));
         if sided {
             continue;
         }
@@ -188,21 +235,8 @@ pub fn write_sweep_plot(dir: &Path, table: &str) -> Result<()> {
             .filter_map(|row| Some((number(row, 1)?, number(row, i)?)))
             .collect();
         points.sort_by(|a, b| a.0.total_cmp(&b.0));
-        lines.push((format!("{} {what}", manoeuvre.replace('.', " ")), points));
+        let what = format!("{} {}", run.replace('.', " "), label(figure));
+        lines.push((what.trim().to_owned(), points));
     }
-    if lines.is_empty() {
-        return Ok(());
-    }
-    let curves: Vec<Curve> = (lines.iter())
-        .map(|(name, points)| Curve { name, points })
-        .collect();
-    let caption = format!("Turning circles against the rudder angle ({rudder})");
-    let plot = Curves {
-        caption: &caption,
-        x_desc: "rudder angle [deg]",
-        y_desc: "tactical diameter, steady turning radius [m]",
-        curves: &curves,
-    };
-    write_curves(dir, SWEEP_PLOT, &plot)?;
-    Ok(())
+    lines
 }

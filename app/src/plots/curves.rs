@@ -1,6 +1,6 @@
 //! Curves of one quantity against another, each a line through its points with the points
-//! marked: a spiral's r–δ curve (`spiral.svg`), a rudder sweep's diameters against the rudder
-//! angle (`rudder_sweep.svg`). The axes through zero are drawn where zero is in range, so
+//! marked: a spiral's r–δ curve (`spiral.svg`), a sweep's figures against its key
+//! (`sweep.svg`). The axes through zero are drawn where zero is in range, so
 //! that a loop about δ = 0, r = 0 shows where it sits.
 
 use super::scale::{axis_range, tick_label};

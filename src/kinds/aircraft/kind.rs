@@ -40,6 +40,10 @@ pub const KIND: Registered = Registered {
     reads_the_rest: false,
     read,
     example: "navion.toml",
+    swept_figures: crate::kinds::SweptFigures {
+        names: &["*.dutch_roll_period_s", "*.dutch_roll_period_linear_s"],
+        unit: "s",
+    },
 };
 
 /// An aircraft's scene has `[aircraft]`.

@@ -31,6 +31,10 @@ pub const KIND: Registered = Registered {
     reads_the_rest: true,
     read,
     example: "pendulum.toml",
+    swept_figures: crate::kinds::SweptFigures {
+        names: &["period_s"],
+        unit: "s",
+    },
 };
 
 /// A catalog body's scene is every scene that no other kind recognises and whose own table does

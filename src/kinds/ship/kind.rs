@@ -38,6 +38,10 @@ pub const KIND: Registered = Registered {
     reads_the_rest: false,
     read,
     example: "mariner.toml",
+    swept_figures: crate::kinds::SweptFigures {
+        names: &["*.tactical_diameter_m", "*.steady_turning_radius_m"],
+        unit: "m",
+    },
 };
 
 /// A ship's scene has `[hydrodynamics]` and is not a vehicle's.

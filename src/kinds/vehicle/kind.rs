@@ -39,6 +39,10 @@ pub const KIND: Registered = Registered {
     reads_the_rest: false,
     read,
     example: "remus100.toml",
+    swept_figures: crate::kinds::SweptFigures {
+        names: &["*.tactical_diameter_m", "*.steady_diameter_m"],
+        unit: "m",
+    },
 };
 
 /// A vehicle's scene has `[hydrodynamics]` and `[model] family = "vehicle"`.
