@@ -634,6 +634,33 @@ fn every_kinds_sweep_runs_whole_or_in_shards_and_draws_its_figures_alike() {
     }
 }
 
+/// `eom tradeoff --json` of every registered kind's example scene: a row per setting
+/// compared, and a recommendation or why there is none.
+#[test]
+fn every_kinds_example_gets_a_tradeoff() {
+    for kind in eom::kinds::REGISTRY {
+        let output = eom_command()
+            .args(["tradeoff", scene(kind.example).to_str().unwrap(), "--json"])
+            .output()
+            .unwrap();
+        assert!(
+            output.status.success(),
+            "{}: {}",
+            kind.name,
+            String::from_utf8_lossy(&output.stderr)
+        );
+        let report: serde_json::Value = serde_json::from_slice(&output.stdout).unwrap();
+        let rows = report["rows"].as_array().unwrap();
+        assert!(!rows.is_empty(), "{}: {report}", kind.name);
+        let why_not = report["why_not"].as_str().unwrap_or("");
+        assert!(
+            !report["recommended"].is_null() || !why_not.is_empty(),
+            "{}: neither a recommendation nor why not: {report}",
+            kind.name
+        );
+    }
+}
+
 #[test]
 fn tradeoff_recommends_a_setting_that_meets_the_target() {
     let dir = folder("tradeoff");

@@ -89,6 +89,54 @@ fn a_monte_carlo_run_whole_or_in_shards_gives_the_same_numbers() {
     assert!(steady["mean"].is_null());
 }
 
+/// Every registered kind's example scene as a Monte Carlo of six cases over its integrator's
+/// setting (its fixed step, or its relative tolerance, each ±30 % uniform): run whole and as
+/// three shards merged, the table, the statistics and both plots the same bytes, and every
+/// case run.
+#[test]
+fn every_kinds_monte_carlo_runs_whole_or_in_shards_alike() {
+    for kind in eom::kinds::REGISTRY {
+        let dir = folder(&format!("every_kind_{}", kind.name));
+        let text = read(PathBuf::from(scene_arg(kind.example)));
+        let table: toml::Table = toml::from_str(&text).unwrap();
+        let integrator = table["integrator"].as_table().unwrap();
+        let key = match integrator.contains_key("step") {
+            true => "integrator.step",
+            false => "integrator.rtol",
+        };
+        let text = format!(
+            "{text}\n[uncertainty]\ncases = 6\nseed = 7\n\n[uncertainty.vary]\n\
+             \"{key}\" = {{ distribution = \"uniform\", relative = 0.3 }}\n"
+        );
+        let scene = dir.join("scene.toml");
+        std::fs::write(&scene, text).unwrap();
+        let whole = dir.join("whole");
+        let report = run(&scene, &whole, None);
+        assert!(
+            report.contains("6 of 6 cases ran"),
+            "{}: {report}",
+            kind.name
+        );
+        let sharded = dir.join("sharded");
+        for shard in ["0/3", "1/3", "2/3"] {
+            run(&scene, &sharded, Some(shard));
+        }
+        succeeded(&eom(&["sweep-merge", sharded.to_str().unwrap()]));
+        for file in [
+            "uncertainty.csv",
+            "uncertainty.json",
+            "distributions.svg",
+            "pass_rates.svg",
+        ] {
+            assert!(
+                read(whole.join(file)) == read(sharded.join(file)),
+                "{}: {file} differs",
+                kind.name
+            );
+        }
+    }
+}
+
 /// Case k of a Monte Carlo of 12 cases is case k of one of 30: its stream is its own.
 #[test]
 fn a_case_is_the_same_in_a_smaller_monte_carlo() {
