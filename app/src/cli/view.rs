@@ -333,7 +333,7 @@ fn planar<'a>(body: &'a RigidBody, columns: &'a Columns, mass: f64, izz: f64) ->
             Short(beam),
             Drawn::ASSUMED_LENGTH_OVER_BEAM
         );
-        (Shape::Hull { length, beam }, true, note)
+        (Shape::Waterline { length, beam }, true, note)
     } else {
         // a² + b² = 12 I_zz/M with a = 2b.
         let b = (12.0 * izz / (5.0 * mass)).sqrt();
@@ -424,7 +424,7 @@ pub fn write_drawn(out: &Path, view: &View, kept: &Kept) -> Result<PathBuf> {
 /// The view's shape of a drawn one, with what the page says of how it was made.
 fn drawn_shape(shape: &Drawn) -> Result<(Shape, Vec<String>)> {
     Ok(match *shape {
-        Drawn::Waterline { length, beam } => (Shape::Hull { length, beam }, Vec::new()),
+        Drawn::Waterline { length, beam } => (Shape::Waterline { length, beam }, Vec::new()),
         Drawn::Cylinder(solid) => {
             let inertia = Matrix3::from_fn(|r, c| solid.inertia_about_g[r][c]);
             let (moments, axes) = principal(inertia);

@@ -75,8 +75,10 @@ pub enum Shape {
         /// The disc's radius, m.
         radius: f64,
     },
-    /// A ship's hull from its length and beam, midship at the body origin.
-    Hull {
+    /// A hull's waterline from its length and beam, midship at the body origin (the page
+    /// knows it as `hull`).
+    #[serde(rename = "hull")]
+    Waterline {
         /// L, m.
         length: f64,
         /// B, m.
