@@ -148,8 +148,13 @@ pub struct Registered {
     pub name: &'static str,
     /// What the scene reference says of it.
     pub reference: Reference,
-    /// Whether a scene's tables are this kind's.
+    /// Whether a scene's tables are this kind's: each kind says what its own scenes have,
+    /// not what another's lack.
     pub recognises: fn(&toml::Table) -> bool,
+    /// The `model.family` its scenes name where another kind's scenes have the same tables
+    /// (a ship's and a vehicle's both have `[hydrodynamics]`): what a scene with those tables
+    /// and another family is told to name.
+    pub family: Option<&'static str>,
     /// Whether it reads the scenes no other kind recognises (the catalog body's, whose
     /// checker says what such a scene lacks): it is asked after every other kind, so that a
     /// kind added to the registry is recognised wherever it stands in it.
@@ -230,6 +235,13 @@ mod tests {
         assert_eq!(name(""), Some("body"));
         let hull = "[model]\nfamily = \"planar-midship\"\n[hydrodynamics]";
         let vehicle = "[model]\nfamily = \"vehicle\"\n[hydrodynamics]";
+        // A scene with the ship's and the vehicle's table and another family, or none, is
+        // neither's: each kind recognises its own scenes, not by what another's lack.
+        let neither = [
+            "[model]\nfamily = \"spatial\"\n[hydrodynamics]",
+            "[hydrodynamics]",
+        ];
+        assert_eq!(neither.map(name), [None, None]);
         match cfg!(feature = "ship") {
             true => {
                 assert_eq!(name(hull), Some("ship"));

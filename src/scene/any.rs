@@ -70,20 +70,72 @@ impl AnyScene {
     }
 }
 
-/// The registered kind whose tables `table` are; a scene whose own table defines its model,
-/// where no registered kind reads it, is refused: this build has not the feature that
+/// The registered kind whose tables `table` are. A scene whose own table defines its model
+/// and that no registered kind reads names a family none of them reads (each kind that reads
+/// such scenes is said with its family), or, where none is registered, needs the feature that
 /// builds such models.
 fn recognise(table: &Table, name: &str) -> Result<&'static kinds::Registered, SceneError> {
     kinds::recognise(table).ok_or_else(|| {
-        SceneError::new(
-            name,
-            DEFINED_MODEL_TABLE,
-            Problem::Invalid(
-                "a scene whose table defines its model (a ship's 4.46, a vehicle's six \
-                 equations) needs eom's feature `ship`, which builds it with the symbolic \
-                 engine"
-                    .into(),
+        let families: Vec<String> = (kinds::REGISTRY.iter())
+            .filter_map(|kind| Some(format!("{}'s `{}`", kind.name, kind.family?)))
+            .collect();
+        if families.is_empty() {
+            return SceneError::new(
+                name,
+                DEFINED_MODEL_TABLE,
+                Problem::Invalid(
+                    "a scene whose table defines its model (a ship's 4.46, a vehicle's six \
+                     equations) needs eom's feature `ship`, which builds it with the symbolic \
+                     engine"
+                        .into(),
+                ),
+            );
+        }
+        let read = format!(
+            "a scene with [{DEFINED_MODEL_TABLE}] names the family of the kind that reads it: {}",
+            families.join(" or ")
+        );
+        match kinds::family_of(table) {
+            Some(family) => SceneError::new(
+                name,
+                "model.family",
+                Problem::Invalid(format!("`{family}`: {read}")),
             ),
-        )
+            None => SceneError::new(name, "model.family", Problem::Missing(read)),
+        }
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A scene with `[hydrodynamics]` that names another family, or none, is told which
+    /// family each kind that reads such scenes names (or, without them, which feature
+    /// builds them), at `model.family`.
+    #[test]
+    fn a_table_no_kind_reads_is_told_the_families_that_are_read() {
+        for (text, said) in [
+            (
+                "[model]\nfamily = \"spatial\"\n[hydrodynamics]\n",
+                "`spatial`: ",
+            ),
+            ("[hydrodynamics]\n", "missing"),
+        ] {
+            let error = AnyScene::parse(text, "scene.toml", Path::new("."))
+                .err()
+                .unwrap()
+                .to_string();
+            if cfg!(feature = "ship") {
+                assert!(
+                    error.contains("model.family") && error.contains(said),
+                    "{error}"
+                );
+                assert!(error.contains("ship's `planar-midship`"), "{error}");
+                assert!(error.contains("vehicle's `vehicle`"), "{error}");
+            } else {
+                assert!(error.contains("feature `ship`"), "{error}");
+            }
+        }
+    }
 }

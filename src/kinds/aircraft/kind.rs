@@ -37,6 +37,7 @@ pub const KIND: Registered = Registered {
         },
     },
     recognises,
+    family: None,
     reads_the_rest: false,
     read,
     example: "navion.toml",

@@ -28,6 +28,7 @@ pub const KIND: Registered = Registered {
         columns: Columns::Written(keys::columns),
     },
     recognises,
+    family: None,
     reads_the_rest: true,
     read,
     example: "pendulum.toml",

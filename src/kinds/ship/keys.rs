@@ -25,8 +25,8 @@ pub const KEYS: &[Key] = &[
         families: SHIP,
         kind: Kind::Text(Choices::These(&["planar-midship"])),
         required: Required::Yes,
-        description: "A ship runs 4.46 at midship; the [hydrodynamics] table is what makes a \
-                      scene a ship scene.",
+        description: "A ship runs 4.46 at midship; the [hydrodynamics] table with this \
+                      family is what makes a scene a ship scene.",
         example: "\"planar-midship\"",
         ..Key::BLANK
     },

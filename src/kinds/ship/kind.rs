@@ -35,6 +35,7 @@ pub const KIND: Registered = Registered {
         },
     },
     recognises,
+    family: Some("planar-midship"),
     reads_the_rest: false,
     read,
     example: "mariner.toml",
@@ -44,9 +45,9 @@ pub const KIND: Registered = Registered {
     },
 };
 
-/// A ship's scene has `[hydrodynamics]` and is not a vehicle's.
+/// A ship's scene has `[hydrodynamics]` and `[model] family = "planar-midship"`.
 fn recognises(table: &toml::Table) -> bool {
-    table.contains_key("hydrodynamics") && kinds::family_of(table) != Some("vehicle")
+    table.contains_key("hydrodynamics") && kinds::family_of(table) == KIND.family
 }
 
 fn read(source: Source, name: &str, _base: &Path) -> Result<Box<dyn kinds::Kind>, SceneError> {

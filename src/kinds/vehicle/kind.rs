@@ -36,6 +36,7 @@ pub const KIND: Registered = Registered {
         },
     },
     recognises,
+    family: Some("vehicle"),
     reads_the_rest: false,
     read,
     example: "remus100.toml",
@@ -47,7 +48,7 @@ pub const KIND: Registered = Registered {
 
 /// A vehicle's scene has `[hydrodynamics]` and `[model] family = "vehicle"`.
 fn recognises(table: &toml::Table) -> bool {
-    table.contains_key("hydrodynamics") && kinds::family_of(table) == Some("vehicle")
+    table.contains_key("hydrodynamics") && kinds::family_of(table) == KIND.family
 }
 
 fn read(source: Source, name: &str, _base: &Path) -> Result<Box<dyn kinds::Kind>, SceneError> {
