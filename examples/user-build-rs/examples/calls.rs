@@ -9,17 +9,39 @@
 //! ```
 //!
 //! `TABLE` is `ten` (the ten-term ship of `build.rs`), `mariner` or `remus`; `FORM` is
-//! `rustc`, `jit` (compiled when the scene is read) or `interpreted`.
+//! `rustc`, `jit` (compiled when the scene is read) or `interpreted`; `TABLE` `ten-rk4` runs the
+//! ten-term ship's steady turn inside eom's RK4 (the bench's "inside RK4", `CALLS` its right-hand
+//! sides), `FORM` `rustc` or `jit`, the function collected then `calls::rk4`:
+//!
+//! ```sh
+//! valgrind --tool=callgrind --collect-atstart=no --toggle-collect='*calls::rk4*' \
+//!     target/release/examples/calls ten-rk4 jit 100000
+//! ``` A ship's calls start at
+//! the heading ψ = 0.3 rad, within ±π/4, where the kernel's sine and cosine need no
+//! reduction; a fourth argument gives another (`calls ten jit 100000 2.0`: the path a steady
+//! turn takes once its heading has left ±π/4, as inside RK4).
 
 #[path = "../tests/common/mod.rs"]
 #[allow(dead_code)]
 mod common;
 
 use common::{mariner_coefficients, mariner_rates, mariner_table, remus_coefficients, remus_rates};
-use eom::Model;
+use eom::integrate::{Integrator, Rk4};
 use eom::kinds::ship::ShipModel;
+use eom::nalgebra::SVector;
+use eom::{Constant, Model, OdeSystem};
 use eom_example_user_build_rs::{example_ship, ship};
 use std::hint::black_box;
+
+/// `system`'s steady turn in RK4 at 0.1 s for `calls` right-hand sides (four a step), as the
+/// bench's `time_rk4` runs it.
+#[inline(never)]
+fn rk4(system: &impl OdeSystem<f64, 7>, start: [f64; 7], calls: usize) -> [f64; 7] {
+    let mut method = Rk4::new(0.1);
+    let end = 0.1 * (calls / 4) as f64;
+    let reached = method.integrate(system, 0.0, SVector::from(start), end);
+    reached.expect("a steady turn integrates").into()
+}
 
 /// `calls` calls of `rhs`, each on the state nudged by the last rates: the loop of the bench.
 #[inline(never)]
@@ -40,18 +62,32 @@ fn run<const N: usize>(
 
 fn main() {
     let arguments: Vec<String> = std::env::args().skip(1).collect();
-    let [table, form, calls] = arguments.as_slice() else {
-        eprintln!(
-            "usage: calls TABLE FORM CALLS (TABLE: ten, mariner, remus; FORM: rustc, jit, interpreted)"
-        );
-        std::process::exit(2);
+    let (table, form, calls, heading) = match arguments.as_slice() {
+        [table, form, calls] => (table, form, calls, 0.3),
+        [table, form, calls, heading] => {
+            (table, form, calls, heading.parse().expect("a heading, rad"))
+        }
+        _ => {
+            eprintln!(
+                "usage: calls TABLE FORM CALLS [HEADING] (TABLE: ten, mariner, remus; FORM: rustc, jit, interpreted)"
+            );
+            std::process::exit(2);
+        }
     };
     let calls: usize = calls.parse().expect("CALLS is a count");
-    let ship_start = [6.0, 0.4, -0.02, 10.0, -5.0, 0.3, 0.1];
+    let ship_start = [6.0, 0.4, -0.02, 10.0, -5.0, heading, 0.1];
     let end = match (table.as_str(), form.as_str()) {
         ("ten", "rustc") => {
             let k = ship::Coefficients::<f64>::new(&example_ship());
             run(ship_start, calls, |y| k.rhs(y, &[0.01])).to_vec()
+        }
+        ("ten-rk4", "rustc") => {
+            let k = ship::Coefficients::<f64>::new(&example_ship());
+            rk4(&k.driven_by(Constant([0.0])), ship_start, calls).to_vec()
+        }
+        ("ten-rk4", _) => {
+            let jit = ShipModel::new(&common::table()).expect("the table builds");
+            rk4(&jit.driven_by(Constant([0.0, 0.0])), ship_start, calls).to_vec()
         }
         ("ten", form) => {
             let jit = ShipModel::new(&common::table()).expect("the table builds");
@@ -64,7 +100,7 @@ fn main() {
         }
         ("mariner", form) => {
             let table = mariner_table();
-            let start = [7.5, 0.3, -0.01, 10.0, -5.0, 0.3, 0.1];
+            let start = [7.5, 0.3, -0.01, 10.0, -5.0, heading, 0.1];
             if form == "rustc" {
                 let m = mariner_coefficients(&table);
                 run(start, calls, |y| mariner_rates(&m, y, 0.01)).to_vec()
