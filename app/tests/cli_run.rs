@@ -5,7 +5,7 @@
 //! Bad scene files each give an error that names the key and a non-zero exit.
 
 use eom_test_support::child;
-use eom_test_support::cli::{eom_command, folder, scene};
+use eom_test_support::cli::{eom, eom_command, folder, run_into, scene, succeeded};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
@@ -462,22 +462,7 @@ fn a_sweep_runs_every_case_and_shards_split_them() {
     let path = dir.join("sweep.toml");
     std::fs::write(&path, &text).unwrap();
     let run = |out: &Path, shard: Option<&str>| {
-        let mut command = eom_command();
-        command.args([
-            "run",
-            path.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ]);
-        if let Some(shard) = shard {
-            command.args(["--shard", shard]);
-        }
-        let output = command.output().unwrap();
-        assert!(
-            output.status.success(),
-            "{}",
-            String::from_utf8_lossy(&output.stderr)
-        );
+        run_into(&path, out, shard);
     };
     let all = dir.join("all");
     run(&all, None);
@@ -560,36 +545,12 @@ fn every_kinds_sweep_runs_whole_or_in_shards_and_draws_its_figures_alike() {
         );
         let path = dir.join("sweep.toml");
         std::fs::write(&path, &text).unwrap();
-        let run = |out: &Path, shard: Option<&str>| {
-            let mut command = eom_command();
-            command.args([
-                "run",
-                path.to_str().unwrap(),
-                "--out",
-                out.to_str().unwrap(),
-            ]);
-            command.args(shard.map(|s| ["--shard", s]).iter().flatten());
-            let output = command.output().unwrap();
-            assert!(
-                output.status.success(),
-                "{}: {}",
-                kind.name,
-                String::from_utf8_lossy(&output.stderr)
-            );
-        };
+        let run = |out: &Path, shard: Option<&str>| run_into(&path, out, shard);
         let (whole, sharded) = (dir.join("whole"), dir.join("sharded"));
         run(&whole, None);
         run(&sharded, Some("0/2"));
         run(&sharded, Some("1/2"));
-        let merge = eom_command()
-            .args(["sweep-merge", sharded.to_str().unwrap()])
-            .output()
-            .unwrap();
-        assert!(
-            merge.status.success(),
-            "{}",
-            String::from_utf8_lossy(&merge.stderr)
-        );
+        succeeded(&eom(&["sweep-merge", sharded.to_str().unwrap()]));
         let without_wall_times = |folder: &Path| -> Vec<String> {
             let table = std::fs::read_to_string(folder.join("sweep.csv")).unwrap();
             let header: Vec<&str> = table.lines().next().unwrap().split(',').collect();

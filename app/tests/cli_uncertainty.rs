@@ -2,7 +2,7 @@
 //! gives the same table, statistics and plots, byte for byte; a case is the same whatever
 //! else runs; and a table that cannot be used is refused by its key before anything runs.
 
-use eom_test_support::cli::{eom, folder, scene_arg, succeeded};
+use eom_test_support::cli::{eom, folder, run_into as run, scene_arg, succeeded};
 use std::path::{Path, PathBuf};
 
 /// The Mariner's turning circle Monte Carlo, shortened to `cases` cases, written into `dir`.
@@ -15,16 +15,22 @@ fn turning_scene(dir: &Path, cases: usize) -> PathBuf {
     path
 }
 
-/// `eom run SCENE --out OUT [--shard S]`, which must succeed: what it printed.
-fn run(scene: &Path, out: &Path, shard: Option<&str>) -> String {
-    let mut args = vec![
-        "run",
-        scene.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ];
-    args.extend(shard.map(|s| ["--shard", s]).into_iter().flatten());
-    succeeded(&eom(&args))
+/// What a Monte Carlo writes from its table, the same bytes whole and merged from shards.
+const FROM_THE_TABLE: [&str; 4] = [
+    "uncertainty.csv",
+    "uncertainty.json",
+    "distributions.svg",
+    "pass_rates.svg",
+];
+
+/// Asserts that `whole` and `merged` hold [`FROM_THE_TABLE`] the same bytes (`what` the run).
+fn assert_same_files(whole: &Path, merged: &Path, what: &str) {
+    for file in FROM_THE_TABLE {
+        assert!(
+            read(whole.join(file)) == read(merged.join(file)),
+            "{what}: {file} differs"
+        );
+    }
 }
 
 fn read(path: PathBuf) -> String {
@@ -50,17 +56,7 @@ fn a_monte_carlo_run_whole_or_in_shards_gives_the_same_numbers() {
     assert!(!sharded.join("uncertainty.json").exists());
     let merged = succeeded(&eom(&["sweep-merge", sharded.to_str().unwrap()]));
     assert!(merged.contains("merged 3 shards, 30 cases"), "{merged}");
-    for file in [
-        "uncertainty.csv",
-        "uncertainty.json",
-        "distributions.svg",
-        "pass_rates.svg",
-    ] {
-        assert!(
-            read(whole.join(file)) == read(sharded.join(file)),
-            "{file} differs"
-        );
-    }
+    assert_same_files(&whole, &sharded, "30 turns");
     // The statistics the report printed are those of uncertainty.json.
     let json: serde_json::Value =
         serde_json::from_str(&read(whole.join("uncertainty.json"))).unwrap();
@@ -122,18 +118,7 @@ fn every_kinds_monte_carlo_runs_whole_or_in_shards_alike() {
             run(&scene, &sharded, Some(shard));
         }
         succeeded(&eom(&["sweep-merge", sharded.to_str().unwrap()]));
-        for file in [
-            "uncertainty.csv",
-            "uncertainty.json",
-            "distributions.svg",
-            "pass_rates.svg",
-        ] {
-            assert!(
-                read(whole.join(file)) == read(sharded.join(file)),
-                "{}: {file} differs",
-                kind.name
-            );
-        }
+        assert_same_files(&whole, &sharded, kind.name);
     }
 }
 

@@ -176,18 +176,24 @@ pub enum Shape {
     /// along the principal axis nearest body x.
     Cylinder(Solid),
     /// A fuselage along body x with wings, a tailplane and a fin.
-    Aircraft {
-        /// The fuselage's length.
-        length: f64,
-        /// Its diameter.
-        diameter: f64,
-        /// The wing's span.
-        span: f64,
-        /// Its chord.
-        chord: f64,
-        /// The length unit (`ft`, `m`).
-        unit: &'static str,
-    },
+    Aircraft(Airframe),
+}
+
+/// An aircraft as a view draws it: a fuselage along body x, wings of its span and chord
+/// through G, a tailplane and a fin, in the rows' length unit (the view's page reads these
+/// fields as they are serialised).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct Airframe {
+    /// The fuselage's length.
+    pub length: f64,
+    /// Its diameter.
+    pub diameter: f64,
+    /// The wing's span.
+    pub span: f64,
+    /// Its chord.
+    pub chord: f64,
+    /// The length unit (`ft`, `m`).
+    pub unit: &'static str,
 }
 
 impl Shape {

@@ -437,22 +437,7 @@ fn drawn_shape(shape: &Drawn) -> Result<(Shape, Vec<String>)> {
                 ),
             }
         }
-        Drawn::Aircraft {
-            length,
-            diameter,
-            span,
-            chord,
-            unit,
-        } => {
-            let shape = Shape::Aircraft {
-                length,
-                diameter,
-                span,
-                chord,
-                unit,
-            };
-            (shape, Vec::new())
-        }
+        Drawn::Aircraft(airframe) => (Shape::Aircraft(airframe), Vec::new()),
     })
 }
 

@@ -23,6 +23,7 @@
 //! each visible face's screen outline and colour, and the camera, so that a test in a real
 //! browser can check the drawing against the trajectory.
 
+use eom::output::drawing::Airframe;
 use serde::Serialize;
 use std::borrow::Cow;
 use std::path::{Path, PathBuf};
@@ -84,20 +85,8 @@ pub enum Shape {
         /// B, m.
         beam: f64,
     },
-    /// An aircraft: a solid cylinder along body x (its fuselage, the body's mass and moments)
-    /// with flat wings of `span` and `chord` through G and a fin on top.
-    Aircraft {
-        /// The fuselage's length.
-        length: f64,
-        /// Its diameter.
-        diameter: f64,
-        /// The wings' span.
-        span: f64,
-        /// Their chord.
-        chord: f64,
-        /// The length unit of these and of the positions (`ft`, `m`).
-        unit: &'static str,
-    },
+    /// An aircraft: a fuselage along body x, wings through G, a tailplane and a fin.
+    Aircraft(Airframe),
     /// A pendulum: a rod from the pivot (the body origin) to a bob at G, `length` along body z.
     Pendulum {
         /// Pivot to G, m.
@@ -285,7 +274,7 @@ fn render_view(input: &ViewInput) -> Result<String, Problem> {
             inertia: v.inertia,
         }),
         length_unit: match input.shape {
-            Shape::Aircraft { unit, .. } => unit,
+            Shape::Aircraft(airframe) => airframe.unit,
             _ => "m",
         },
         trail: input.trail.0,

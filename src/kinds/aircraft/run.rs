@@ -7,7 +7,7 @@ use super::linear::linearise_aircraft;
 use super::manoeuvre::{self, AircraftRun, Manoeuvre, ROW, RunError, dutch_roll};
 use super::scene::{AircraftScene, units};
 use crate::kind::KindError;
-use crate::output::drawing::{Coordinate, Curves, Drawing, Orientation, Shape, View};
+use crate::output::drawing::{Airframe, Coordinate, Curves, Drawing, Orientation, Shape, View};
 use crate::output::summary::{Figure, IntegratorSummary, Named, RunFigures};
 use crate::output::trajectory::number_text;
 use crate::run::Row;
@@ -420,13 +420,13 @@ fn view(scene: &AircraftScene, title: String) -> View {
     let column = |name: &str, unit: &str| format!("{name}[{unit}]");
     View {
         title,
-        shape: Shape::Aircraft {
+        shape: Shape::Aircraft(Airframe {
             length,
             diameter: length / FUSELAGE_FINENESS,
             span: scene.span,
             chord: scene.chord,
             unit,
-        },
+        }),
         position: [
             Coordinate::Column(column("north", unit)),
             Coordinate::Column(column("east", unit)),

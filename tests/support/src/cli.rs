@@ -68,6 +68,18 @@ pub fn succeeded(output: &Output) -> String {
     String::from_utf8(output.stdout.clone()).unwrap()
 }
 
+/// `eom run SCENE --out OUT [--shard S]`, which must succeed: what it printed.
+pub fn run_into(scene: &Path, out: &Path, shard: Option<&str>) -> String {
+    let mut args = vec![
+        "run",
+        scene.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ];
+    args.extend(shard.map(|s| ["--shard", s]).into_iter().flatten());
+    succeeded(&eom(&args))
+}
+
 /// A fresh, empty folder for one test's output, `target/tmp/<test crate>/<test>`.
 pub fn folder(test: &str) -> PathBuf {
     let dir = scratch().join(test_crate()).join(test);
