@@ -2,7 +2,7 @@
 //! figures, IMO verdicts and convergence, the files of each manoeuvre, and the errors.
 
 use eom_test_support::child;
-use eom_test_support::cli::{eom, folder, scene_arg, succeeded};
+use eom_test_support::cli::{eom, folder, run_into, scene_arg, succeeded};
 use std::path::Path;
 
 #[test]
@@ -482,16 +482,7 @@ fn a_ship_sweep_over_the_rudder_runs_whole_or_in_shards_alike() {
     );
     let path = dir.join("sweep.toml");
     std::fs::write(&path, text).unwrap();
-    let run = |out: &Path, shard: Option<&str>| {
-        let mut args = vec![
-            "run",
-            path.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ];
-        args.extend(shard.map(|s| ["--shard", s]).into_iter().flatten());
-        succeeded(&eom(&args))
-    };
+    let run = |out: &Path, shard: Option<&str>| run_into(&path, out, shard);
     let whole = dir.join("whole");
     run(&whole, None);
     let table = std::fs::read_to_string(whole.join("sweep.csv")).unwrap();
@@ -559,16 +550,7 @@ fn a_sweep_over_an_unnamed_turns_rudder_keeps_every_cases_figures() {
     );
     let path = dir.join("sweep.toml");
     std::fs::write(&path, text).unwrap();
-    let run = |out: &Path, shard: Option<&str>| {
-        let mut args = vec![
-            "run",
-            path.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ];
-        args.extend(shard.map(|s| ["--shard", s]).into_iter().flatten());
-        succeeded(&eom(&args))
-    };
+    let run = |out: &Path, shard: Option<&str>| run_into(&path, out, shard);
     let whole = dir.join("whole");
     run(&whole, None);
     let table = std::fs::read_to_string(whole.join("sweep.csv")).unwrap();

@@ -4,7 +4,7 @@
 //! runs its trials from its trim, one without a trim ahead runs nothing, and commands and
 //! bodies it could not run as labelled are refused by key.
 
-use eom_test_support::cli::{eom, folder, scene, scene_arg, succeeded};
+use eom_test_support::cli::{eom, folder, run_into, scene, scene_arg, succeeded};
 use std::path::{Path, PathBuf};
 
 #[test]
@@ -409,16 +409,7 @@ fn a_vehicle_sweep_over_a_coefficient_runs_whole_or_in_shards_alike() {
     );
     let path = dir.join("remus_sweep.toml");
     std::fs::write(&path, text).unwrap();
-    let run = |out: &Path, shard: Option<&str>| {
-        let mut args = vec![
-            "run",
-            path.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ];
-        args.extend(shard.map(|s| ["--shard", s]).into_iter().flatten());
-        succeeded(&eom(&args))
-    };
+    let run = |out: &Path, shard: Option<&str>| run_into(&path, out, shard);
     let whole = dir.join("whole");
     run(&whole, None);
     let table = std::fs::read_to_string(whole.join("sweep.csv")).unwrap();
