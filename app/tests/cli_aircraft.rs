@@ -3,7 +3,7 @@
 //! at the trim, a sweep over its centre of gravity, `eom new aircraft`, and bad input refused
 //! by key.
 
-use eom_test_support::cli::{eom, folder, scene, scene_arg, succeeded};
+use eom_test_support::cli::{eom, folder, run_into, scene, scene_arg, succeeded};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 use std::process::Output;
@@ -61,12 +61,7 @@ const QUATERNION: (&str, &str) = (
 #[test]
 fn the_f16_runs_its_manoeuvres_from_its_trim() {
     let out = folder("f16");
-    let stdout = succeeded(&eom(&[
-        "run",
-        &scene_arg("f16.toml"),
-        "--out",
-        out.to_str().unwrap(),
-    ]));
+    let stdout = run_into(&scene("f16.toml"), &out, None);
     assert!(stdout.contains("trim: V = 502 ft/s"), "{stdout}");
     let summary = json(&out.join("summary.json"));
     assert_eq!(summary["kind"], "aircraft");
@@ -136,12 +131,7 @@ fn assert_dutch_roll_read_as_linear(kick: &Value) {
 #[test]
 fn the_navion_runs_on_its_derivatives() {
     let out = folder("navion");
-    let stdout = succeeded(&eom(&[
-        "run",
-        &scene_arg("navion.toml"),
-        "--out",
-        out.to_str().unwrap(),
-    ]));
+    let stdout = run_into(&scene("navion.toml"), &out, None);
     assert!(stdout.contains("trim: V = 176 ft/s"), "{stdout}");
     let summary = json(&out.join("summary.json"));
     for name in [
@@ -189,12 +179,7 @@ fn the_navion_runs_on_its_derivatives() {
 #[test]
 fn the_747_runs_on_its_jet_derivatives_and_echoes_its_tensor() {
     let out = folder("b747");
-    let stdout = succeeded(&eom(&[
-        "run",
-        &scene_arg("b747.toml"),
-        "--out",
-        out.to_str().unwrap(),
-    ]));
+    let stdout = run_into(&scene("b747.toml"), &out, None);
     assert!(stdout.contains("trim: V = 235.9 m/s"), "{stdout}");
     let tensor = "inertia about G, the tensor eom uses (kg m²; off-diagonal entries −∫xz dm): \
                   [[2.47e7, 0e0, 2.12e6], [0e0, 4.49e7, 0e0], [2.12e6, 0e0, 6.73e7]]";
