@@ -40,7 +40,8 @@ pub enum Reading {
     /// An angle in radians, drawn in degrees.
     Degrees,
     /// An angle in radians, drawn in degrees less its value at the first row at or after
-    /// `from_s` (a heading's change since the rudder was put over; 0 before any row).
+    /// `from_s` (a heading's change since the rudder was put over); as it is where no row
+    /// is that late.
     DegreesSince {
         /// When the change is counted from, s.
         from_s: f64,
