@@ -169,11 +169,15 @@ pub fn write_sweep_plot(dir: &Path, table: &str) -> Result<()> {
         return Ok(());
     };
     let curves: Vec<Curve> = (lines.iter())
-        .map(|(name, points)| Curve { name, points })
+        .map(|line| Curve {
+            name: &line.what,
+            points: &line.points,
+        })
         .collect();
     let names: Vec<String> = (figures.names.iter())
-        .map(|pattern| label(figure_of(pattern)))
-        .filter(|name| lines.iter().any(|(line, _)| line.ends_with(name.as_str())))
+        .map(|pattern| figure_of(pattern))
+        .filter(|figure| lines.iter().any(|line| line.figure == *figure))
+        .map(label)
         .collect();
     let caption = format!("{} against {key}", names.join(", "));
     let y_desc = format!("{} [{}]", names.join(", "), figures.unit);
@@ -208,14 +212,23 @@ fn label(figure: &str) -> String {
     name.replace('_', " ")
 }
 
-/// Each column of `figures` in the table, as (what it is, (the swept value, the figure) of
-/// every case that gave it), sorted by the swept value: a turn run to both sides by its
-/// sides' columns, not the worse side's.
-fn swept_lines(
+/// One figure's column of a sweep's table, as its plot draws it.
+struct SweptLine<'a> {
+    /// The figure (`tactical_diameter_m`).
+    figure: &'a str,
+    /// What the curve is (`turn port tactical diameter`).
+    what: String,
+    /// (the swept value, the figure) of every case that gave it, by the swept value.
+    points: Vec<(f64, f64)>,
+}
+
+/// Each column of `figures` in the table, sorted by the swept value: a turn run to both sides
+/// by its sides' columns, not the worse side's.
+fn swept_lines<'a>(
     header: &csv::StringRecord,
     rows: &[csv::StringRecord],
-    figures: &[&str],
-) -> Vec<(String, Vec<(f64, f64)>)> {
+    figures: &[&'a str],
+) -> Vec<SweptLine<'a>> {
     let number = |row: &csv::StringRecord, i: usize| row.get(i)?.parse::<f64>().ok();
     let mut lines = Vec::new();
     for (i, column) in header.iter().enumerate() {
@@ -236,7 +249,11 @@ fn swept_lines(
             .collect();
         points.sort_by(|a, b| a.0.total_cmp(&b.0));
         let what = format!("{} {}", run.replace('.', " "), label(figure));
-        lines.push((what.trim().to_owned(), points));
+        lines.push(SweptLine {
+            figure,
+            what: what.trim().to_owned(),
+            points,
+        });
     }
     lines
 }

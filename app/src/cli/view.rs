@@ -64,24 +64,15 @@ fn rows(m: &Matrix3<f64>) -> [[f64; 3]; 3] {
     [0, 1, 2].map(|r| [m[(r, 0)], m[(r, 1)], m[(r, 2)]])
 }
 
-/// The attitude quaternion of every row, from the state entries at `first` on.
+/// The attitude quaternion of every row, from the state entries at `first` on (0 for an
+/// entry the state does not have).
 fn quaternions(columns: &Columns, kinematics: Option<Kinematics>, first: usize) -> [Vec<f64>; 4] {
-    let n = columns.time.len();
-    let mut q: [Vec<f64>; 4] = Default::default();
-    for row in 0..n {
-        let entry = |k: usize| columns.state.get(first + k).map_or(0.0, |c| c[row]);
-        let [w, x, y, z] = match kinematics {
-            Some(Kinematics::Euler) => {
-                let u = UnitQuaternion::from_euler_angles(entry(0), entry(1), entry(2));
-                [u.w, u.i, u.j, u.k]
-            }
-            _ => [entry(0), entry(1), entry(2), entry(3)],
-        };
-        for (column, value) in q.iter_mut().zip([w, x, y, z]) {
-            column.push(value);
-        }
+    let zeros = vec![0.0; columns.time.len()];
+    let entry = |k: usize| (columns.state.get(first + k)).map_or(zeros.as_slice(), Vec::as_slice);
+    match kinematics {
+        Some(Kinematics::Euler) => from_euler_angles([entry(0), entry(1), entry(2)]),
+        _ => [0, 1, 2, 3].map(|k| entry(k).to_vec()),
     }
-    q
 }
 
 /// A quaternion column set of a turn about one body axis by the angles given.

@@ -53,21 +53,9 @@ pub struct TrackPlot<'a> {
 
 /// Writes `track.svg` into `dir`.
 pub fn write_track(dir: &Path, plot: &TrackPlot) -> Result<PathBuf, PlotError> {
-    let heading = plot.outline.map(|o| o.heading);
-    let columns = [("up", Some(plot.up)), ("heading", heading)];
-    for (column, values) in columns {
-        if let Some(len) = values
-            .map(<[f64]>::len)
-            .filter(|len| *len != plot.across.len())
-        {
-            return Err(PlotError::Length {
-                file: dir.join("track.svg"),
-                column: column.into(),
-                len,
-                times: plot.across.len(),
-            });
-        }
-    }
+    let heading = plot.outline.map(|o| ("heading", o.heading.len()));
+    let columns = std::iter::once(("up", plot.up.len())).chain(heading);
+    same_lengths(dir, "track.svg", plot.across.len(), columns)?;
     let outlines = (plot.outline)
         .map(|outline| outlines(plot.across, plot.up, &outline))
         .unwrap_or_default();
@@ -100,15 +88,11 @@ pub struct SeriesPlot<'a> {
 
 /// Writes a series' file into `dir`.
 pub fn write_series(dir: &Path, plot: &SeriesPlot) -> Result<PathBuf, PlotError> {
-    let times = plot.time.len();
-    if let Some((label, values)) = plot.lines.iter().find(|(_, v)| v.len() != times) {
-        return Err(PlotError::Length {
-            file: dir.join(plot.file),
-            column: (*label).into(),
-            len: values.len(),
-            times,
-        });
-    }
+    let columns = plot
+        .lines
+        .iter()
+        .map(|(label, values)| (*label, values.len()));
+    same_lengths(dir, plot.file, plot.time.len(), columns)?;
     let style = PanelStyle {
         caption: plot.caption,
         caption_size: TITLE_FONT,
@@ -140,18 +124,8 @@ pub fn write_attitude(
     time: &[f64],
     degrees: [&[f64]; 3],
 ) -> Result<PathBuf, PlotError> {
-    if let Some(len) = degrees
-        .iter()
-        .map(|c| c.len())
-        .find(|len| *len != time.len())
-    {
-        return Err(PlotError::Length {
-            file: dir.join("attitude.svg"),
-            column: "an angle".into(),
-            len,
-            times: time.len(),
-        });
-    }
+    let columns = degrees.map(|angle| ("an angle", angle.len()));
+    same_lengths(dir, "attitude.svg", time.len(), columns)?;
     emit(dir, "attitude.svg", |svg| {
         draw_attitude(svg, title, time, degrees)
     })
@@ -164,17 +138,30 @@ pub fn write_profile(
     title: &str,
     (x, y, z): (&[f64], &[f64], &[f64]),
 ) -> Result<PathBuf, PlotError> {
-    if let Some(len) = [y, z].iter().map(|c| c.len()).find(|len| *len != x.len()) {
-        return Err(PlotError::Length {
-            file: dir.join("profile.svg"),
-            column: "a position".into(),
-            len,
-            times: x.len(),
-        });
-    }
+    let columns = [y, z].map(|position| ("a position", position.len()));
+    same_lengths(dir, "profile.svg", x.len(), columns)?;
     emit(dir, "profile.svg", |svg| {
         draw_profile(svg, title, (x, y, z))
     })
+}
+
+/// Whether every column of `file`, each (its name, its length), has `times` values: the
+/// first that has not is an error naming it.
+fn same_lengths<'a>(
+    dir: &Path,
+    file: &str,
+    times: usize,
+    columns: impl IntoIterator<Item = (&'a str, usize)>,
+) -> Result<(), PlotError> {
+    match columns.into_iter().find(|(_, len)| *len != times) {
+        Some((column, len)) => Err(PlotError::Length {
+            file: dir.join(file),
+            column: column.into(),
+            len,
+            times,
+        }),
+        None => Ok(()),
+    }
 }
 
 /// The waterline of a hull of `length` and `beam`, in body axes (x forward, y to starboard),
