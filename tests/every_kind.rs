@@ -104,6 +104,34 @@ impl Recorder for StoppedAtOnce {
     }
 }
 
+/// A caller that stops the first run after its third row (Ctrl-C mid-run): it refuses the
+/// row, and asks every run after to stop.
+#[derive(Default)]
+struct StoppedMidRun {
+    begun: usize,
+    rows: usize,
+}
+
+impl Recorder for StoppedMidRun {
+    fn begin(&mut self, _: RunStart) -> Result<(), RecordError> {
+        self.begun += 1;
+        Ok(())
+    }
+    fn row(&mut self, _: &Row) -> bool {
+        self.rows += 1;
+        self.rows <= 3
+    }
+    fn end(&mut self) -> Result<(), RecordError> {
+        Ok(())
+    }
+    fn drawn(&mut self, _: RunDrawings) -> Result<(), RecordError> {
+        Ok(())
+    }
+    fn stop_asked(&self) -> bool {
+        self.rows > 3
+    }
+}
+
 /// Each figure's value, as bits, by run and key.
 fn values(runs: &[RunFigures]) -> Vec<(String, String, Option<u64>)> {
     let mut values = Vec::new();
@@ -184,5 +212,23 @@ fn every_kind_stopped_before_it_began_runs_nothing_and_says_so() {
         let summary = finished.summary();
         assert!(summary.interrupted, "{example}");
         assert!(finished.kept().contains("summary.json"), "{example}");
+    }
+}
+
+/// A stop asked in the middle of the first run is the caller's stop for every kind, whatever
+/// error the kind's integration gave for it (the runner says it, from the rows it refused):
+/// the scene's run is interrupted, no run fails, and no run after it begins.
+#[test]
+fn every_kind_stopped_mid_run_is_interrupted_not_failed() {
+    for (example, scene) in examples() {
+        let mut stopped = StoppedMidRun::default();
+        let finished = scene.as_kind().run(example, &mut stopped).unwrap();
+        assert_eq!(stopped.begun, 1, "{example}: a run after the stop began");
+        assert_eq!(stopped.rows, 4, "{example}: rows offered after the refused one");
+        assert!(finished.stopped(), "{example}");
+        assert!(finished.failure().is_none(), "{example}: {:?}", finished.failure());
+        let summary = finished.summary();
+        assert!(summary.interrupted, "{example}");
+        assert!(summary.error.is_none(), "{example}: {:?}", summary.error);
     }
 }

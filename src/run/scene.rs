@@ -68,26 +68,57 @@ pub struct Rows<'a> {
     recorder: &'a mut dyn Recorder,
     keeps: bool,
     taken: usize,
+    ended_by_caller: bool,
 }
 
-impl Rows<'_> {
+impl<'a> Rows<'a> {
+    fn new(recorder: &'a mut dyn Recorder, keeps: bool) -> Self {
+        Rows {
+            recorder,
+            keeps,
+            taken: 0,
+            ended_by_caller: false,
+        }
+    }
+
+    /// How a run through these rows ended: where the caller ended it (a row refused, a stop
+    /// asked for), its failure is the caller's stop ([`KindError::Stopped`]), whatever the
+    /// kind said of it; so no kind says a stop of its own.
+    fn ended<O>(&self, done: Result<O, Failed<O>>) -> Result<O, Failed<O>> {
+        match done {
+            Err(Failed { error, kept }) if self.ended_by_caller => Err(Failed {
+                error: match error {
+                    KindError::Stopped(_) => error,
+                    error => KindError::Stopped(Box::new(error)),
+                },
+                kept,
+            }),
+            done => done,
+        }
+    }
+
     /// Whether the rows are kept: a run whose rows are not need not build them.
     pub fn keeps(&self) -> bool {
         self.keeps
     }
 
-    /// Whether the caller asked the run to stop.
-    pub fn stop_asked(&self) -> bool {
-        self.recorder.stop_asked()
+    /// Whether the caller asked the run to stop; a run told so ends, and the runner counts
+    /// how it ended as the caller's stop, whatever error the kind gives for it.
+    pub fn stop_asked(&mut self) -> bool {
+        let asked = self.recorder.stop_asked();
+        self.ended_by_caller |= asked;
+        asked
     }
 
-    /// Takes one row; `false` ends the run (the recorder refused it, or a stop was asked).
+    /// Takes one row; `false` ends the run (the recorder refused it, or a stop was asked),
+    /// and the runner counts how it ended as the caller's stop.
     pub fn take(&mut self, row: &Row) -> bool {
         if !self.keeps {
-            return !self.recorder.stop_asked();
+            return !self.stop_asked();
         }
         let taken = self.recorder.row(row);
         self.taken += usize::from(taken);
+        self.ended_by_caller |= !taken;
         taken
     }
 
@@ -323,12 +354,9 @@ pub fn run<'a, K: SceneRuns + ?Sized>(
         };
         add(&mut counts, scene.counts(&outcome));
         if failure.is_none() && recorder.refines() && scene.worth_refining(&outcome) {
-            let mut quiet = Rows {
-                recorder: &mut *recorder,
-                keeps: false,
-                taken: 0,
-            };
-            match scene.run_one(&ran.shared, index, Setting::Refined, &mut quiet) {
+            let mut quiet = Rows::new(&mut *recorder, false);
+            let refined = scene.run_one(&ran.shared, index, Setting::Refined, &mut quiet);
+            match quiet.ended(refined) {
                 Err(Failed {
                     error: KindError::Stopped(_),
                     ..
@@ -390,12 +418,9 @@ fn run_recorded<K: SceneRuns + ?Sized>(
             energy_unit: plan.energy_unit,
         })
         .map_err(KindError::Output)?;
-    let mut rows = Rows {
-        recorder: &mut *recorder,
-        keeps,
-        taken: 0,
-    };
+    let mut rows = Rows::new(&mut *recorder, keeps);
     let done = scene.run_one(&ran.shared, index, Setting::Scene, &mut rows);
+    let done = rows.ended(done);
     let taken = rows.taken;
     // What the recorder could not keep comes first: the run stopped because of it.
     recorder.end().map_err(KindError::Output)?;

@@ -260,12 +260,6 @@ pub enum RunError {
         /// Why.
         reason: String,
     },
-    /// The recorder stopped it.
-    #[error("stopped at t = {} s", crate::Short(*time))]
-    Stopped {
-        /// When.
-        time: f64,
-    },
 }
 
 /// A form of the aircraft a manoeuvre integrates, of `N` states: its attitude in Euler angles
@@ -511,7 +505,6 @@ fn run_in<F: Flight<N>, const N: usize>(
         return Err(RunError::Failed { time, reason });
     }
     let end = reached.map_err(|error| match error {
-        IntegrateError::Stopped { t } => RunError::Stopped { time: t },
         IntegrateError::NonFiniteState { component, t } => RunError::Failed {
             time: t,
             reason: format!(

@@ -4,7 +4,7 @@
 //! summary.
 
 use super::linear::linearise_aircraft;
-use super::manoeuvre::{self, AircraftRun, Manoeuvre, ROW, RunError, dutch_roll};
+use super::manoeuvre::{self, AircraftRun, Manoeuvre, ROW, dutch_roll};
 use super::scene::{AircraftScene, units};
 use crate::kind::KindError;
 use crate::output::drawing::{Airframe, Coordinate, Curves, Drawing, Orientation, Shape, View};
@@ -222,11 +222,8 @@ impl SceneRuns for AircraftScene {
                 })
             },
         );
-        let done = done.map_err(|error| match error {
-            RunError::Stopped { .. } => KindError::Stopped(Box::new(error)),
-            RunError::Failed { .. } => {
-                KindError::Run(format!("manoeuvre {}: {error}", manoeuvre.name).into())
-            }
+        let done = done.map_err(|error| {
+            KindError::Run(format!("manoeuvre {}: {error}", manoeuvre.name).into())
         })?;
         let kick = manoeuvre.kind == Manoeuvre::RudderKick;
         let (named, mut notes) = figures(self, &done, (kick, *linear));

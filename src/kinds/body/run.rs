@@ -3,7 +3,7 @@
 //! and its drawing.
 
 use super::summary::{BodySection, Extra};
-use super::{Body, BodyScene, Report, RunError, SceneLoads, run_reporting};
+use super::{Body, BodyScene, Report, SceneLoads, run_reporting};
 use crate::Short;
 use crate::kind::KindError;
 use crate::output::drawing::{BodyShape, Drawing, RigidBody};
@@ -145,7 +145,6 @@ impl SceneRuns for BodyScene {
         };
         let error = match ran.error {
             None => return Ok(outcome),
-            Some(stopped @ RunError::Stopped { .. }) => KindError::Stopped(Box::new(stopped)),
             Some(error) => KindError::Run(Box::new(error)),
         };
         Err(Failed {

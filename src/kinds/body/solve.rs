@@ -108,12 +108,6 @@ pub enum RunError {
         /// What went wrong.
         message: String,
     },
-    /// The sink stopped the run.
-    #[error("the run was stopped at t = {}", seconds(*t))]
-    Stopped {
-        /// The time reached.
-        t: f64,
-    },
     /// The pitch of an Euler-angle attitude came within [`guard::gimbal_bound`](super::guard::gimbal_bound) of ±90°, or
     /// crossed it within one step: the Euler-angle rates (4.60) divide by cos θ.
     #[error("{}", gimbal_message(*t, *pitch_deg, *cos_pitch, *bound, *crossed_since))]
@@ -330,7 +324,10 @@ impl Visitor for Runner<'_> {
         };
         let wall_seconds = clock.elapsed().as_secs_f64();
         let error = result.as_ref().err().map(|e| match e {
-            IntegrateError::Stopped { t } => guard.stop().unwrap_or(RunError::Stopped { t: *t }),
+            // The guard ends a run by refusing its row; a stop without its reason is the sink's.
+            IntegrateError::Stopped { .. } => guard
+                .stop()
+                .unwrap_or_else(|| run_error(e.clone(), &scene.state_names())),
             other => run_error(other.clone(), &scene.state_names()),
         });
         let stopped_at = match &result {
@@ -584,7 +581,6 @@ fn free_rotation<const N: usize>(
 /// An integration error as a run error, naming the state component or the load input.
 fn run_error(error: IntegrateError, names: &[String]) -> RunError {
     match error {
-        IntegrateError::Stopped { t } => RunError::Stopped { t },
         IntegrateError::NonFiniteState { component, t } => RunError::Integration {
             t,
             message: format!(
@@ -602,7 +598,8 @@ fn run_error(error: IntegrateError, names: &[String]) -> RunError {
         // The run's error says the time once: these messages leave it out.
         IntegrateError::StepSizeTooSmall { t, .. }
         | IntegrateError::MaxStepsExceeded { t, .. }
-        | IntegrateError::NotConverged { t, .. } => RunError::Integration {
+        | IntegrateError::NotConverged { t, .. }
+        | IntegrateError::Stopped { t } => RunError::Integration {
             t,
             message: error.without_time(),
         },

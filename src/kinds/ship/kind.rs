@@ -60,7 +60,6 @@ impl From<ShipError> for KindError {
         let class = match error.cause() {
             ShipError::Invalid { .. } => KindError::Scene,
             ShipError::Run { .. } => KindError::Run,
-            ShipError::Stopped { .. } => KindError::Stopped,
             ShipError::Record { .. } => KindError::Output,
             ShipError::Build(_) | ShipError::In { .. } => KindError::Internal,
         };

@@ -306,7 +306,7 @@ const DRIVE_STATE: [&str; 8] = ["u", "v", "r", "X", "Y", "psi", "delta", "distan
 
 /// Runs a manoeuvre from `start` (the model's seven states) with `stepper`'s method, handing
 /// each row (at t = k·`every` and at each event) to `observe`, which returns whether to go on
-/// (false ends the run with [`ShipError::Stopped`]: Ctrl-C).
+/// (false ends the run, an error that says it was stopped: Ctrl-C).
 pub fn run(
     model: &ShipModel,
     rudder: &Rudder,
@@ -477,7 +477,6 @@ impl<'a> Problem<8> for Driver<'a> {
 /// A failed stretch as a ship's error, naming the state entry or the cause.
 fn run_error(error: IntegrateError, stepper: &Stepper) -> ShipError {
     match error {
-        IntegrateError::Stopped { t } => ShipError::Stopped { time: t },
         IntegrateError::NonFiniteState { component, t } => ShipError::Run {
             time: t,
             reason: format!(

@@ -86,12 +86,6 @@ pub enum ShipError {
         /// Why.
         reason: String,
     },
-    /// A run its observer asked to end (Ctrl-C).
-    #[error("the run was stopped at t = {} s", crate::Short(*time))]
-    Stopped {
-        /// When.
-        time: f64,
-    },
     /// An error of one manoeuvre's run.
     #[error("manoeuvre {manoeuvre}")]
     In {
@@ -114,12 +108,9 @@ pub enum ShipError {
 impl ShipError {
     /// The error said as of the manoeuvre it happened in (`manoeuvre turning_circle_35: …`).
     pub fn in_manoeuvre(self, manoeuvre: &str) -> Self {
-        match self {
-            stopped @ ShipError::Stopped { .. } => stopped,
-            error => ShipError::In {
-                manoeuvre: manoeuvre.to_owned(),
-                source: Box::new(error),
-            },
+        ShipError::In {
+            manoeuvre: manoeuvre.to_owned(),
+            source: Box::new(self),
         }
     }
 

@@ -62,7 +62,6 @@ impl From<VehicleError> for KindError {
             VehicleError::Invalid { .. } | VehicleError::Table(_) => KindError::Scene,
             VehicleError::Linear(linear) if linear.is_scene_error() => KindError::Scene,
             VehicleError::Run { .. } | VehicleError::Linear(_) => KindError::Run,
-            VehicleError::Stopped { .. } => KindError::Stopped,
             VehicleError::Record { .. } => KindError::Output,
             VehicleError::Prove(_) | VehicleError::In { .. } => KindError::Internal,
         };
@@ -131,7 +130,5 @@ mod tests {
         };
         let error = KindError::from(invalid.in_manoeuvre("turn"));
         assert!(matches!(error, KindError::Scene(_)), "{error:?}");
-        let stopped = VehicleError::Stopped { time: 2.0 }.in_manoeuvre("turn");
-        assert!(matches!(KindError::from(stopped), KindError::Stopped(_)));
     }
 }

@@ -187,7 +187,7 @@ pub struct VehicleRun {
 
 /// Runs a manoeuvre from `start` with `stepper`'s method, handing each row (at t = k·`every`
 /// and at each change of the commands) to `observe`, which returns whether to go on (false
-/// ends the run with [`VehicleError::Stopped`]: Ctrl-C).
+/// ends the run, an error that says it was stopped: Ctrl-C).
 pub fn run(
     model: &VehicleModel,
     fins: &Fins,
@@ -555,7 +555,6 @@ impl<'a> Command<'a> {
 /// A failed stretch as a vehicle's error, naming the state entry or the cause.
 fn run_error(error: IntegrateError, stepper: &Stepper) -> VehicleError {
     match error {
-        IntegrateError::Stopped { t } => VehicleError::Stopped { time: t },
         IntegrateError::NonFiniteState { component, t } => VehicleError::Run {
             time: t,
             reason: format!(

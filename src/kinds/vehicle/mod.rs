@@ -85,12 +85,6 @@ pub enum VehicleError {
         /// Why.
         reason: String,
     },
-    /// A run its observer asked to end (Ctrl-C).
-    #[error("the run was stopped at t = {} s", crate::Short(*time))]
-    Stopped {
-        /// When.
-        time: f64,
-    },
     /// An error of one manoeuvre's run.
     #[error("manoeuvre {manoeuvre}")]
     In {
@@ -113,12 +107,9 @@ pub enum VehicleError {
 impl VehicleError {
     /// The error said as of the manoeuvre it happened in (`manoeuvre turning_circle: …`).
     pub fn in_manoeuvre(self, manoeuvre: &str) -> Self {
-        match self {
-            stopped @ VehicleError::Stopped { .. } => stopped,
-            error => VehicleError::In {
-                manoeuvre: manoeuvre.to_owned(),
-                source: Box::new(error),
-            },
+        VehicleError::In {
+            manoeuvre: manoeuvre.to_owned(),
+            source: Box::new(self),
         }
     }
 

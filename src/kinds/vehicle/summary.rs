@@ -296,7 +296,7 @@ pub fn trial_figures(run: &VehicleRun, manoeuvre: &VehicleManoeuvre) -> Option<T
     let progress = run.trial.as_ref()?;
     let rudder = manoeuvre.steps.angles(progress.execute_time())[0];
     let end = match run.stopped_at {
-        Some(t) => Ended::Stopped(t),
+        Some(t) => Ended::AtStopCondition(t),
         None => Ended::AtEnd(&run.ends.last()?.state),
     };
     Some(TrialFigures::of(progress, (rudder, end)))

@@ -16,7 +16,7 @@
 //! their final values; else the summary says why not. The steady diameter is then
 //! 2 V_h / |ψ̇| at the end, V_h the horizontal speed of O from 4.57.
 //!
-//! A run the scene's stop condition ended ([`Ended::Stopped`]) gives the figures of the events
+//! A run the scene's stop condition ended ([`Ended::AtStopCondition`]) gives the figures of the events
 //! that fell before the stop, and none of those read at the end of the run (the steady
 //! diameter, the speed, rates and attitude at the end): they are not given, rather than read
 //! at the stop.
@@ -311,7 +311,7 @@ pub enum Ended<'a> {
     /// At the end of the manoeuvre, in this state.
     AtEnd(&'a [f64; 15]),
     /// Where the scene's stop condition first held, at this time (s): no figure is read there.
-    Stopped(f64),
+    AtStopCondition(f64),
 }
 
 /// The turning circle's figures.
@@ -467,7 +467,7 @@ fn zig_zag(
                  of the run: it was {}° at the end, so the fin was never reversed",
                 Short(progress.angle(end).to_degrees())
             ),
-            Ended::Stopped(t) => format!(
+            Ended::AtStopCondition(t) => format!(
                 "{angle} did not reach ±{switch}° between the execute at {execute} s and t = \
                  {t:.1} s, where integrator.stop_when stopped the run"
             ),
@@ -514,7 +514,7 @@ fn turning_circle(progress: &Progress, rudder: f64, end: Ended<'_>) -> TurningCi
     }
     let end = match end {
         Ended::AtEnd(end) => Ok(end),
-        Ended::Stopped(t) => Err(format!(
+        Ended::AtStopCondition(t) => Err(format!(
             "the run was stopped at t = {t:.1} s (integrator.stop_when): the steady turn is read \
              at the end"
         )),
