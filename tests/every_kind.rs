@@ -224,9 +224,16 @@ fn every_kind_stopped_mid_run_is_interrupted_not_failed() {
         let mut stopped = StoppedMidRun::default();
         let finished = scene.as_kind().run(example, &mut stopped).unwrap();
         assert_eq!(stopped.begun, 1, "{example}: a run after the stop began");
-        assert_eq!(stopped.rows, 4, "{example}: rows offered after the refused one");
+        assert_eq!(
+            stopped.rows, 4,
+            "{example}: rows offered after the refused one"
+        );
         assert!(finished.stopped(), "{example}");
-        assert!(finished.failure().is_none(), "{example}: {:?}", finished.failure());
+        assert!(
+            finished.failure().is_none(),
+            "{example}: {:?}",
+            finished.failure()
+        );
         let summary = finished.summary();
         assert!(summary.interrupted, "{example}");
         assert!(summary.error.is_none(), "{example}: {:?}", summary.error);

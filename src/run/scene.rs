@@ -150,6 +150,44 @@ impl<O> From<KindError> for Failed<O> {
     }
 }
 
+/// What one run gave, for every kind: the kind's own result of the run with the scene's
+/// method, what it cost, and the same run's result refined, where the runner refined it (a
+/// kind's figures say how far they moved from it).
+#[derive(Debug, Clone)]
+pub struct Outcome<G> {
+    /// What the kind's run gave: its figures, and what its drawings, report and cells read.
+    pub gave: G,
+    /// What the run cost.
+    pub counts: Counts,
+    /// The refined run: what it gave, or why it did not finish (the error's message with its
+    /// causes); `None` where it was not run (a Monte Carlo's case, a run that gave no figure).
+    pub refinement: Option<Result<G, String>>,
+}
+
+impl<G> Outcome<G> {
+    /// What a run gave at `counts`, not refined (yet).
+    pub fn new(gave: G, counts: Counts) -> Self {
+        Outcome {
+            gave,
+            counts,
+            refinement: None,
+        }
+    }
+
+    /// What the refined run gave, where it ran and finished.
+    pub fn refined(&self) -> Option<&G> {
+        self.refinement.as_ref()?.as_ref().ok()
+    }
+
+    /// Why the refined run did not finish, where it ran and failed.
+    pub fn refined_failure(&self) -> Option<&str> {
+        self.refinement.as_ref()?.as_ref().err().map(String::as_str)
+    }
+}
+
+/// How one run ended: what it gave, or why it failed and what it gave up to there.
+pub type RunResult<G> = Result<Outcome<G>, Failed<Outcome<G>>>;
+
 /// What an integration cost, summed over a scene's runs for its summary.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct Counts {
@@ -179,8 +217,9 @@ pub trait SceneRuns: Sync {
     /// What every run of one scene's run shares, made once before the first (a ship's
     /// model, derived and proved; nothing for a kind whose scene holds its model).
     type Shared;
-    /// What one run gave: its figures, and what its drawings, report and cells read.
-    type Outcome;
+    /// What one run of this kind gives: its figures, and what its drawings, report and cells
+    /// read (the runner keeps it in an [`Outcome`], with its cost and its refined run's).
+    type Gave;
     /// The kind's section of the summary.
     type Section: Serialize + Clone + std::fmt::Debug;
 
@@ -206,35 +245,27 @@ pub trait SceneRuns: Sync {
         index: usize,
         setting: Setting,
         rows: &mut Rows,
-    ) -> Result<Self::Outcome, Failed<Self::Outcome>>;
+    ) -> RunResult<Self::Gave>;
 
-    /// What the run cost.
-    fn counts(&self, outcome: &Self::Outcome) -> Counts;
-
-    /// Whether a run that gave `outcome` is worth running again refined (a body that gave no
+    /// Whether a run that gave `gave` is worth running again refined (a body that gave no
     /// figure is not).
-    fn worth_refining(&self, _outcome: &Self::Outcome) -> bool {
+    fn worth_refining(&self, _gave: &Self::Gave) -> bool {
         true
     }
 
-    /// Takes the refined run's outcome (or why it did not finish) into `outcome`, its figures'
-    /// differences; returns what a reader should know (a figure the refined run did not give).
-    fn take_refined(
-        &self,
-        index: usize,
-        outcome: &mut Self::Outcome,
-        refined: Result<Self::Outcome, KindError>,
-    ) -> Vec<String>;
+    /// What a reader should know of the refined run of `outcome`, once it ran: why it
+    /// failed, or a figure it did not give.
+    fn refined_warnings(&self, outcome: &Outcome<Self::Gave>) -> Vec<String>;
 
     /// The run's figures in the shape every kind gives them.
-    fn figures(&self, plan: &RunPlan, outcome: &Self::Outcome) -> RunFigures;
+    fn figures(&self, plan: &RunPlan, outcome: &Outcome<Self::Gave>) -> RunFigures;
 
     /// What the run draws, once its figures are known.
     fn drawings(
         &self,
         shared: &Self::Shared,
         index: usize,
-        outcome: &Self::Outcome,
+        outcome: &Outcome<Self::Gave>,
     ) -> Vec<Drawing>;
 
     /// The section, verdicts and warnings of the runs that finished.
@@ -280,7 +311,7 @@ pub struct Ran<'a, K: SceneRuns + ?Sized> {
     /// The plans of every run, in order.
     pub plans: Vec<RunPlan>,
     /// Each run that gave an outcome (finished, or failed keeping what it ran), by index.
-    pub outcomes: Vec<(usize, K::Outcome)>,
+    pub outcomes: Vec<(usize, Outcome<K::Gave>)>,
     /// Each run that failed, by index, with why.
     pub failures: Vec<(usize, KindError)>,
     /// Whether the caller stopped the runs.
@@ -289,7 +320,7 @@ pub struct Ran<'a, K: SceneRuns + ?Sized> {
 
 impl<K: SceneRuns + ?Sized> Ran<'_, K> {
     /// The outcome of run `index`, if it gave one.
-    pub fn outcome(&self, index: usize) -> Option<&K::Outcome> {
+    pub fn outcome(&self, index: usize) -> Option<&Outcome<K::Gave>> {
         (self.outcomes.iter()).find_map(|(i, outcome)| (*i == index).then_some(outcome))
     }
 
@@ -352,8 +383,8 @@ pub fn run<'a, K: SceneRuns + ?Sized>(
             record_failure(&mut ran, index, failure);
             continue;
         };
-        add(&mut counts, scene.counts(&outcome));
-        if failure.is_none() && recorder.refines() && scene.worth_refining(&outcome) {
+        add(&mut counts, outcome.counts);
+        if failure.is_none() && recorder.refines() && scene.worth_refining(&outcome.gave) {
             let mut quiet = Rows::new(&mut *recorder, false);
             let refined = scene.run_one(&ran.shared, index, Setting::Refined, &mut quiet);
             match quiet.ended(refined) {
@@ -362,8 +393,9 @@ pub fn run<'a, K: SceneRuns + ?Sized>(
                     ..
                 }) => ran.stopped = true,
                 refined => {
-                    let refined = refined.map_err(|failed| failed.error);
-                    warnings.extend(scene.take_refined(index, &mut outcome, refined));
+                    let refined = refined.map(|refined| refined.gave);
+                    outcome.refinement = Some(refined.map_err(|failed| failed.error.message()));
+                    warnings.extend(scene.refined_warnings(&outcome));
                 }
             }
         }
@@ -396,7 +428,7 @@ fn record_failure<K: SceneRuns + ?Sized>(
 
 /// What a run with the scene's method gave: its outcome (or what it kept where it failed),
 /// why it failed, and how many rows the recorder took.
-type Recorded<O> = (Option<O>, Option<KindError>, usize);
+type Recorded<G> = (Option<Outcome<G>>, Option<KindError>, usize);
 
 /// Runs run `index` with the scene's method into the recorder: begun, its rows, ended. An
 /// error is the recorder's alone.
@@ -405,7 +437,7 @@ fn run_recorded<K: SceneRuns + ?Sized>(
     ran: &Ran<'_, K>,
     index: usize,
     recorder: &mut dyn Recorder,
-) -> Result<Recorded<K::Outcome>, KindError> {
+) -> Result<Recorded<K::Gave>, KindError> {
     let plan = &ran.plans[index];
     let keeps = recorder.keeps_rows();
     recorder

@@ -11,7 +11,7 @@ use crate::output::drawing::{Airframe, Coordinate, Curves, Drawing, Orientation,
 use crate::output::summary::{Figure, IntegratorSummary, Named, RunFigures};
 use crate::output::trajectory::number_text;
 use crate::run::Row;
-use crate::run::scene::{Closing, Counts, Failed, Ran, Rows, RunPlan, SceneRuns, Setting};
+use crate::run::scene::{Closing, Counts, Ran, Rows, RunPlan, RunResult, SceneRuns, Setting};
 use crate::scene::sweep::TableCase;
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -133,21 +133,45 @@ fn figures(
     (Named(figures), notes)
 }
 
-/// A manoeuvre's run: its summary, and the rows its plots draw (every few, at most about
-/// 2000; none where its rows are not kept).
+/// What a manoeuvre's run gives: its summary, and the rows its plots draw (every few, at
+/// most about 2000; none where its rows are not kept).
 #[derive(Debug, Clone)]
-pub struct Outcome {
-    /// What summary.json says of it.
+pub struct ManoeuvreFigures {
+    /// What summary.json says of it, but how far it moved refined ([`summary`] adds that).
     pub summary: ManoeuvreSummary,
-    /// Its evaluations of the right-hand side.
-    pub rhs_evals: u64,
     curves: Vec<(f64, [f64; 18])>,
+}
+
+/// A manoeuvre run with the scene's method, its cost, and its figures refined.
+pub type Outcome = crate::run::scene::Outcome<ManoeuvreFigures>;
+
+/// What summary.json says of a manoeuvre's run: its summary, with each figure's difference
+/// from the refined run's, by key, where that finished (under `tolerance_difference` for an
+/// adaptive method, `half_step_difference` for a fixed step).
+pub fn summary(scene: &AircraftScene, outcome: &Outcome) -> ManoeuvreSummary {
+    let mut summary = outcome.gave.summary.clone();
+    let Some(refined) = outcome.refined() else {
+        return summary;
+    };
+    let refined = &refined.summary.figures;
+    let differences = (summary.figures.0.iter())
+        .map(|(key, value)| {
+            let moved = (refined.0.iter()).find(|(k, _)| k == key);
+            let difference = moved.map(|(_, refined)| (value - refined).abs());
+            (key.clone(), difference)
+        })
+        .collect();
+    match scene.stepper.method.is_adaptive() {
+        true => summary.tolerance_difference = Some(differences),
+        false => summary.half_step_difference = Some(differences),
+    }
+    summary
 }
 
 impl SceneRuns for AircraftScene {
     /// The linear model's Dutch roll at the trim, where a manoeuvre is a rudder kick.
     type Shared = Option<(f64, f64)>;
-    type Outcome = Outcome;
+    type Gave = ManoeuvreFigures;
     type Section = AircraftSection;
 
     fn kind_name(&self) -> &'static str {
@@ -190,7 +214,7 @@ impl SceneRuns for AircraftScene {
         index: usize,
         setting: Setting,
         rows: &mut Rows,
-    ) -> Result<Outcome, Failed<Outcome>> {
+    ) -> RunResult<ManoeuvreFigures> {
         let manoeuvre = &self.manoeuvres[index];
         let stepper = match setting {
             Setting::Scene => self.stepper.clone(),
@@ -243,56 +267,26 @@ impl SceneRuns for AircraftScene {
             steps_taken: done.steps,
             stopped_at: done.stopped_at,
         };
-        Ok(Outcome {
-            summary,
-            rhs_evals: done.rhs_evals,
-            curves,
-        })
-    }
-
-    fn counts(&self, outcome: &Outcome) -> Counts {
-        Counts {
-            steps: outcome.summary.steps_taken,
+        let counts = Counts {
+            steps: done.steps,
             rejected: None,
-            rhs_evals: outcome.rhs_evals,
-        }
+            rhs_evals: done.rhs_evals,
+        };
+        Ok(Outcome::new(ManoeuvreFigures { summary, curves }, counts))
     }
 
-    /// Each figure's difference from the refined run's, by key.
-    fn take_refined(
-        &self,
-        _index: usize,
-        outcome: &mut Outcome,
-        refined: Result<Outcome, KindError>,
-    ) -> Vec<String> {
-        let refined = match refined {
-            Ok(refined) => refined.summary.figures,
-            Err(error) => {
-                let key = match self.stepper.method.is_adaptive() {
-                    true => "tolerance_difference",
-                    false => "half_step_difference",
-                };
-                return vec![format!("{key} is not given: refined, {}", error.message())];
-            }
+    fn refined_warnings(&self, outcome: &Outcome) -> Vec<String> {
+        let key = match self.stepper.method.is_adaptive() {
+            true => "tolerance_difference",
+            false => "half_step_difference",
         };
-        let differences = (outcome.summary.figures.0.iter())
-            .map(|(key, value)| {
-                let moved = (refined.0.iter()).find(|(k, _)| k == key);
-                (
-                    key.clone(),
-                    moved.map(|(_, refined)| (value - refined).abs()),
-                )
-            })
-            .collect();
-        match self.stepper.method.is_adaptive() {
-            true => outcome.summary.tolerance_difference = Some(differences),
-            false => outcome.summary.half_step_difference = Some(differences),
-        }
-        Vec::new()
+        (outcome.refined_failure().iter())
+            .map(|error| format!("{key} is not given: refined, {error}"))
+            .collect()
     }
 
     fn figures(&self, plan: &RunPlan, outcome: &Outcome) -> RunFigures {
-        let m = &outcome.summary;
+        let m = &summary(self, outcome);
         let differences = (m.half_step_difference.as_ref()).or(m.tolerance_difference.as_ref());
         RunFigures {
             run: plan.path.clone(),
@@ -310,7 +304,7 @@ impl SceneRuns for AircraftScene {
     }
 
     fn drawings(&self, _: &Option<(f64, f64)>, index: usize, outcome: &Outcome) -> Vec<Drawing> {
-        drawings(self, &self.manoeuvres[index].name, &outcome.curves)
+        drawings(self, &self.manoeuvres[index].name, &outcome.gave.curves)
     }
 
     fn close(&self, ran: &Ran<'_, Self>) -> Closing<AircraftSection> {
@@ -318,7 +312,7 @@ impl SceneRuns for AircraftScene {
             units: units(self.units).into_iter().collect(),
             trim: trim_summary(self),
             manoeuvre: (ran.outcomes.iter())
-                .map(|(index, o)| (self.manoeuvres[*index].name.clone(), o.summary.clone()))
+                .map(|(index, o)| (self.manoeuvres[*index].name.clone(), summary(self, o)))
                 .collect(),
             stop_when: self.stop.as_ref().map(|s| s.text.clone()),
         };
@@ -487,7 +481,7 @@ fn report(scene: &AircraftScene, ran: &Ran<'_, AircraftScene>) -> String {
     );
     let _ = writeln!(out, "  {}", inertia_line(scene));
     for (index, outcome) in &ran.outcomes {
-        let (name, m) = (&scene.manoeuvres[*index].name, &outcome.summary);
+        let (name, m) = (&scene.manoeuvres[*index].name, &outcome.gave.summary);
         let figures: Vec<String> = (m.figures.0.iter())
             .map(|(k, v)| format!("{k} {}", crate::Short(*v)))
             .collect();
@@ -503,7 +497,7 @@ fn report(scene: &AircraftScene, ran: &Ran<'_, AircraftScene>) -> String {
 fn cells(scene: &AircraftScene, ran: &Ran<'_, AircraftScene>) -> Vec<(String, String)> {
     let mut cells = Vec::new();
     for (index, manoeuvre) in scene.manoeuvres.iter().enumerate() {
-        let Some(m) = ran.outcome(index).map(|outcome| &outcome.summary) else {
+        let Some(m) = ran.outcome(index).map(|outcome| &outcome.gave.summary) else {
             continue;
         };
         for (key, value) in &m.figures.0 {

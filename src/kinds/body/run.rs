@@ -10,7 +10,9 @@ use crate::output::drawing::{BodyShape, Drawing, RigidBody};
 use crate::output::summary::{Figure, IntegratorSummary, RunFigures, Summary};
 use crate::output::text::printable;
 use crate::output::trajectory::number_text;
-use crate::run::scene::{Closing, Counts, Failed, Ran, Rows, RunPlan, SceneRuns, Setting};
+use crate::run::scene::{
+    Closing, Counts, Failed, Ran, Rows, RunPlan, RunResult, SceneRuns, Setting,
+};
 use crate::run::{Row, Sink};
 use crate::scene::sweep::TableCase;
 use std::fmt::Write;
@@ -18,20 +20,53 @@ use std::fmt::Write;
 /// The pendulum's period, measured from its rows ([`crate::swing::measure_period`]).
 const PERIOD: &str = "period_s";
 
-/// A body's run as it ended: at its end time, at its stop condition, stopped by the caller,
-/// or failed where it failed (the runner keeps why).
+/// What a body's run gives, as it ended: at its end time, at its stop condition, stopped by
+/// the caller, or failed where it failed (the runner keeps why).
 #[derive(Debug, Clone)]
-pub struct BodyOutcome {
+pub struct BodyRun {
     /// What the run did, up to where it ended.
     pub report: Report,
     /// The rows the recorder took.
     pub rows: usize,
     /// The family's figures (the pendulum's period), each or why it is not given.
     pub measures: Vec<(&'static str, Result<f64, String>)>,
-    /// How far each figure moved when the run was refined (`None` where the refined run gave
-    /// none); empty where the run gave no figure, was not refined, or did not end as it
-    /// should.
-    pub refined: Vec<(&'static str, Option<f64>)>,
+}
+
+/// A body's run with the scene's method, its cost, and its figures refined.
+pub type BodyOutcome = crate::run::scene::Outcome<BodyRun>;
+
+/// How far each figure of `outcome` moved when the run was refined (`None` where the refined
+/// run did not give it or did not finish), with why each is not given; empty where the run
+/// gave no figure or was not refined.
+fn refined_differences(
+    scene: &BodyScene,
+    outcome: &BodyOutcome,
+) -> (Vec<(&'static str, Option<f64>)>, Vec<String>) {
+    let Some(refinement) = &outcome.refinement else {
+        return Default::default();
+    };
+    let key = scene.integrator.refinement_key();
+    let mut warnings = Vec::new();
+    let differences = (outcome.gave.measures.iter().enumerate())
+        .filter_map(|(k, (name, value))| {
+            let value = value.as_ref().ok()?;
+            let difference = match refinement {
+                Ok(refined) => match &refined.measures[k].1 {
+                    Ok(refined) => Some((value - refined).abs()),
+                    Err(why) => {
+                        warnings.push(format!("{key} of {name} is not given: {why}"));
+                        None
+                    }
+                },
+                Err(error) => {
+                    warnings.push(format!("{key} of {name} is not given: refined, {error}"));
+                    None
+                }
+            };
+            Some((*name, difference))
+        })
+        .collect();
+    (differences, warnings)
 }
 
 /// The rows to the runner's, with what the family's figures are measured from.
@@ -80,7 +115,7 @@ pub(super) fn trajectory_numbers(scene: &BodyScene) -> f64 {
 
 impl SceneRuns for BodyScene {
     type Shared = ();
-    type Outcome = BodyOutcome;
+    type Gave = BodyRun;
     type Section = BodySection;
 
     fn kind_name(&self) -> &'static str {
@@ -119,7 +154,7 @@ impl SceneRuns for BodyScene {
         _index: usize,
         setting: Setting,
         rows: &mut Rows,
-    ) -> Result<BodyOutcome, Failed<BodyOutcome>> {
+    ) -> RunResult<BodyRun> {
         let refined;
         let scene = match setting {
             Setting::Scene => self,
@@ -137,12 +172,18 @@ impl SceneRuns for BodyScene {
         };
         let ran = run_reporting(scene, &mut recording);
         let measured = recording.measured;
-        let outcome = BodyOutcome {
-            report: ran.report,
+        let report = ran.report;
+        let counts = Counts {
+            steps: report.steps as u64,
+            rejected: Some(report.rejected as u64),
+            rhs_evals: report.rhs_evals as u64,
+        };
+        let gave = BodyRun {
+            report,
             rows: recording.rows.taken(),
             measures: measures(scene, measured.as_ref()),
-            refined: Vec::new(),
         };
+        let outcome = BodyOutcome::new(gave, counts);
         let error = match ran.error {
             None => return Ok(outcome),
             Some(error) => KindError::Run(Box::new(error)),
@@ -153,54 +194,18 @@ impl SceneRuns for BodyScene {
         })
     }
 
-    fn counts(&self, outcome: &BodyOutcome) -> Counts {
-        let report = &outcome.report;
-        Counts {
-            steps: report.steps as u64,
-            rejected: Some(report.rejected as u64),
-            rhs_evals: report.rhs_evals as u64,
-        }
-    }
-
     /// A run that gave no figure is not refined.
-    fn worth_refining(&self, outcome: &BodyOutcome) -> bool {
-        outcome.measures.iter().any(|(_, value)| value.is_ok())
+    fn worth_refining(&self, gave: &BodyRun) -> bool {
+        gave.measures.iter().any(|(_, value)| value.is_ok())
     }
 
-    fn take_refined(
-        &self,
-        _index: usize,
-        outcome: &mut BodyOutcome,
-        refined: Result<BodyOutcome, KindError>,
-    ) -> Vec<String> {
-        let key = self.integrator.refinement_key();
-        let mut warnings = Vec::new();
-        let refined_measures = refined.as_ref().map(|refined| &refined.measures);
-        outcome.refined = (outcome.measures.iter().enumerate())
-            .filter_map(|(k, (name, value))| {
-                let value = value.as_ref().ok()?;
-                let difference = match &refined_measures {
-                    Ok(measures) => match &measures[k].1 {
-                        Ok(refined) => Some((value - refined).abs()),
-                        Err(why) => {
-                            warnings.push(format!("{key} of {name} is not given: {why}"));
-                            None
-                        }
-                    },
-                    Err(error) => {
-                        let error = error.message();
-                        warnings.push(format!("{key} of {name} is not given: refined, {error}"));
-                        None
-                    }
-                };
-                Some((*name, difference))
-            })
-            .collect();
-        warnings
+    fn refined_warnings(&self, outcome: &BodyOutcome) -> Vec<String> {
+        refined_differences(self, outcome).1
     }
 
     fn figures(&self, _: &RunPlan, outcome: &BodyOutcome) -> RunFigures {
-        run_figures(self, &outcome.measures, &outcome.refined)
+        let (differences, _) = refined_differences(self, outcome);
+        run_figures(self, &outcome.gave.measures, &differences)
     }
 
     fn drawings(&self, _: &(), _: usize, _: &BodyOutcome) -> Vec<Drawing> {
@@ -224,12 +229,12 @@ impl SceneRuns for BodyScene {
                 warnings: Vec::new(),
             };
         };
-        let report = &outcome.report;
+        let report = &outcome.gave.report;
         let names = self.state_names();
         let mut section =
             BodySection::new((selection.info, selection.reason.clone()), report, &names);
         let mut warnings = report.warnings.clone();
-        for (key, value) in &outcome.measures {
+        for (key, value) in &outcome.gave.measures {
             match value {
                 Ok(value) => {
                     (section.extra).insert((*key).into(), Extra::Number(*value));
@@ -237,8 +242,9 @@ impl SceneRuns for BodyScene {
                 Err(why) => warnings.push(not_given(key, why)),
             }
         }
-        if !outcome.refined.is_empty() {
-            let differences = (outcome.refined.iter())
+        let (differences, _) = refined_differences(self, outcome);
+        if !differences.is_empty() {
+            let differences = (differences.iter())
                 .map(|(k, d)| ((*k).to_owned(), *d))
                 .collect();
             let key = self.integrator.refinement_key();
@@ -380,7 +386,7 @@ fn in_water(loads: &SceneLoads) -> bool {
 fn report(scene: &BodyScene, outcome: &BodyOutcome) -> Result<String, std::fmt::Error> {
     let info = scene.selection.info;
     let (ops, full) = (info.operations, info.full_variant().operations);
-    let report = &outcome.report;
+    let report = &outcome.gave.report;
     let mut text = String::new();
     let out = &mut text;
     let title = printable(&scene.title);
@@ -413,7 +419,8 @@ fn report(scene: &BodyScene, outcome: &BodyOutcome) -> Result<String, std::fmt::
             "  energy drift {drift:.2e} (largest |E − E₀| over the rows, relative to max(|E₀|, largest T))"
         )?;
     }
-    for ((key, value), (_, moved)) in outcome.measures.iter().zip(&outcome.refined) {
+    let (differences, _) = refined_differences(scene, outcome);
+    for ((key, value), (_, moved)) in outcome.gave.measures.iter().zip(&differences) {
         if let (Ok(value), Some(moved)) = (value, moved) {
             writeln!(
                 out,
@@ -440,8 +447,8 @@ fn cells(scene: &BodyScene, outcome: Option<&BodyOutcome>, whole: bool) -> Vec<(
     let ran = whole && outcome.is_some();
     let value = |text: String| if ran { text } else { String::new() };
     let default = Report::default();
-    let report = outcome.map_or(&default, |outcome| &outcome.report);
-    let measures = outcome.map_or(&[][..], |outcome| &outcome.measures[..]);
+    let report = outcome.map_or(&default, |outcome| &outcome.gave.report);
+    let measures = outcome.map_or(&[][..], |outcome| &outcome.gave.measures[..]);
     let mut cells = vec![
         ("variant".to_owned(), scene.selection.info.name.to_owned()),
         ("steps".into(), value(report.steps.to_string())),
@@ -471,7 +478,7 @@ fn cells(scene: &BodyScene, outcome: Option<&BodyOutcome>, whole: bool) -> Vec<(
 
 /// What the run kept when it ended early, in words.
 fn kept(scene: &BodyScene, outcome: Option<&BodyOutcome>, stopped: bool) -> String {
-    let (t, rows) = outcome.map_or((0.0, 0), |o| (o.report.final_time, o.rows));
+    let (t, rows) = outcome.map_or((0.0, 0), |o| (o.gave.report.final_time, o.gave.rows));
     let end = scene.integrator.end_time;
     match (stopped, rows) {
         (true, _) => format!(

@@ -194,7 +194,7 @@ fn gimbal_message(
 
 /// A run as it ended: what it did, and why it stopped if it did not reach its end time.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Outcome {
+pub struct Ended {
     /// What the run did. For a run that stopped early, `final_time` and `final_state` are its
     /// last row's, and the energy drift is over the rows it wrote.
     pub report: Report,
@@ -202,7 +202,7 @@ pub struct Outcome {
     pub error: Option<RunError>,
 }
 
-impl Outcome {
+impl Ended {
     /// The report of a run that finished, or why it did not.
     pub fn into_result(self) -> Result<Report, RunError> {
         match self.error {
@@ -219,7 +219,7 @@ pub fn run(scene: &BodyScene, sink: &mut dyn Sink) -> Result<Report, RunError> {
 
 /// Runs `scene` as [`run`] does, and reports what the run did also when it stopped early (a
 /// failure, or the sink's refusal of a row): the rows written stay, and so does their account.
-pub fn run_reporting(scene: &BodyScene, sink: &mut dyn Sink) -> Outcome {
+pub fn run_reporting(scene: &BodyScene, sink: &mut dyn Sink) -> Ended {
     scene.model().visit(Runner { scene, sink })
 }
 
@@ -285,7 +285,7 @@ impl Rows<'_> {
 }
 
 impl Visitor for Runner<'_> {
-    type Output = Outcome;
+    type Output = Ended;
 
     fn visit<Mo: Model<f64, N, M>, const N: usize, const M: usize>(
         self,
@@ -350,7 +350,7 @@ impl Visitor for Runner<'_> {
             warnings: [scene.integrator.warnings(), guard.warnings()].concat(),
             stopped_at,
         };
-        Outcome { report, error }
+        Ended { report, error }
     }
 }
 

@@ -7,7 +7,7 @@
 use super::Side;
 use super::imo::{Criterion, Trial, criteria, possible};
 use super::linear::LinearModel;
-use super::manoeuvre::{Figures, ManoeuvreKind, ROW, run_until};
+use super::manoeuvre::{Figures, ManoeuvreKind, ManoeuvreRun, ROW, run_until};
 use super::scene::NAMED_FROM;
 use super::side::{deciding_figure, worse};
 use super::spiral::{Branch, Loop, SpiralCurve, SpiralPoint, Verdict};
@@ -25,26 +25,14 @@ use crate::output::drawing::{
 use crate::output::summary::{IntegratorSummary, RunFigures};
 use crate::output::text::printable;
 use crate::run::Row;
-use crate::run::scene::{Closing, Counts, Failed, Ran, Rows, RunPlan, SceneRuns, Setting};
+use crate::run::scene::{Closing, Counts, Ran, Rows, RunPlan, RunResult, SceneRuns, Setting};
 use crate::scene::sweep::{TableCase, manoeuvre_columns};
 use crate::{Model, Short, fixed};
 use std::fmt::Write;
 
-/// A manoeuvre run with the scene's method, and the same refined (`Stepper::refined`: half
-/// the step, or tolerances a hundred times tighter).
-#[derive(Debug, Clone)]
-pub struct Outcome {
-    /// The figures of the run with the scene's method.
-    pub figures: Figures,
-    /// The same, refined; `None` where the run was not refined (a Monte Carlo's case).
-    pub refined: Option<Figures>,
-    /// The steps the run took.
-    pub steps: u64,
-    /// Its evaluations of the right-hand side.
-    pub rhs_evals: u64,
-    /// Where the scene's stop condition ended the run with the scene's method, s.
-    pub stopped_at: Option<f64>,
-}
+/// A manoeuvre run with the scene's method, its cost, and its figures refined
+/// (`Stepper::refined`: half the step, or tolerances a hundred times tighter).
+pub type Outcome = crate::run::scene::Outcome<ManoeuvreRun>;
 
 /// A manoeuvre's runs: one per side (`turning_circle_35/port/`, `…/starboard/`), or one of no
 /// side or of the one side the scene names (`turning_circle_35/`).
@@ -58,7 +46,10 @@ pub fn worse_side(manoeuvre: &Manoeuvre, runs: &Runs) -> Option<Side> {
     };
     let turning = matches!(manoeuvre.kind, ManoeuvreKind::TurningCircle { .. });
     let key = deciding_figure(turning);
-    Some(worse(port.figures.get(key), starboard.figures.get(key)))
+    Some(worse(
+        port.gave.figures.get(key),
+        starboard.gave.figures.get(key),
+    ))
 }
 
 /// The outcome a manoeuvre's summary shows first: the worse side's, or its one run's.
@@ -102,7 +93,7 @@ fn path(manoeuvre: &Manoeuvre, side: Option<Side>, sides: usize) -> String {
 
 impl SceneRuns for ShipScene {
     type Shared = Shared;
-    type Outcome = Outcome;
+    type Gave = ManoeuvreRun;
     type Section = ShipSection;
 
     fn kind_name(&self) -> &'static str {
@@ -154,7 +145,7 @@ impl SceneRuns for ShipScene {
         index: usize,
         setting: Setting,
         rows: &mut Rows,
-    ) -> Result<Outcome, Failed<Outcome>> {
+    ) -> RunResult<ManoeuvreRun> {
         let (number, _, one) = &shared.runs[index];
         let stepper = match setting {
             Setting::Scene => self.stepper.clone(),
@@ -189,50 +180,29 @@ impl SceneRuns for ShipScene {
         );
         let manoeuvre = &self.manoeuvres[*number].name;
         let done = done.map_err(|e| KindError::from(e.in_manoeuvre(manoeuvre)))?;
-        Ok(Outcome {
-            figures: done.figures,
-            refined: None,
+        let counts = Counts {
             steps: done.steps,
-            rhs_evals: done.rhs_evals,
-            stopped_at: done.stopped_at,
-        })
-    }
-
-    fn counts(&self, outcome: &Outcome) -> Counts {
-        Counts {
-            steps: outcome.steps,
             rejected: None,
-            rhs_evals: outcome.rhs_evals,
-        }
+            rhs_evals: done.rhs_evals,
+        };
+        Ok(Outcome::new(done, counts))
     }
 
-    fn take_refined(
-        &self,
-        _index: usize,
-        outcome: &mut Outcome,
-        refined: Result<Outcome, KindError>,
-    ) -> Vec<String> {
-        match refined {
-            Ok(refined) => {
-                outcome.refined = Some(refined.figures);
-                Vec::new()
-            }
-            Err(error) => vec![format!(
-                "{} of its figures is not given: refined, {}",
-                self.stepper.refinement(),
-                error.message()
-            )],
-        }
+    fn refined_warnings(&self, outcome: &Outcome) -> Vec<String> {
+        (outcome.refined_failure().iter())
+            .map(|error| {
+                let refinement = self.stepper.refinement();
+                format!("{refinement} of its figures is not given: refined, {error}")
+            })
+            .collect()
     }
 
     fn figures(&self, plan: &RunPlan, outcome: &Outcome) -> RunFigures {
         let not_refined = Figures::default();
-        let both = (
-            &outcome.figures,
-            outcome.refined.as_ref().unwrap_or(&not_refined),
-        );
+        let refined = outcome.refined().map(|refined| &refined.figures);
+        let both = (&outcome.gave.figures, refined.unwrap_or(&not_refined));
         let mut figures = run_figures(&plan.path, &self.stepper, both);
-        figures.refinement = figures.refinement.filter(|_| outcome.refined.is_some());
+        figures.refinement = figures.refinement.filter(|_| outcome.refined().is_some());
         figures
     }
 
@@ -245,7 +215,7 @@ impl SceneRuns for ShipScene {
             }
             _ => manoeuvre.name.clone(),
         };
-        drawings(self, (manoeuvre, &name), &outcome.figures)
+        drawings(self, (manoeuvre, &name), &outcome.gave.figures)
     }
 
     fn close(&self, ran: &Ran<'_, Self>) -> Closing<ShipSection> {
@@ -293,7 +263,7 @@ impl SceneRuns for ShipScene {
 fn judged(scene: &ShipScene, outcomes: &[Runs]) -> Vec<Criterion> {
     let trials: Vec<Trial> = (scene.manoeuvres.iter().zip(outcomes))
         .filter(|(_, runs)| !runs.is_empty())
-        .map(|(m, runs)| (m, runs.iter().map(|(s, o)| (*s, &o.figures)).collect()))
+        .map(|(m, runs)| (m, runs.iter().map(|(s, o)| (*s, &o.gave.figures)).collect()))
         .collect();
     criteria(scene, &trials)
 }
@@ -303,13 +273,12 @@ fn manoeuvre_summary(scene: &ShipScene, manoeuvre: &Manoeuvre, runs: &Runs) -> M
     let summary_of = |(side, outcome): &(Option<Side>, Outcome)| {
         let not_refined = Figures::default();
         // No figure of its own where it was not refined: every difference `None`.
-        let figures = (
-            &outcome.figures,
-            outcome.refined.as_ref().unwrap_or(&not_refined),
-        );
-        let mut summary = ManoeuvreSummary::new(manoeuvre, &scene.stepper, figures, outcome.steps);
+        let refined = outcome.refined().map(|refined| &refined.figures);
+        let figures = (&outcome.gave.figures, refined.unwrap_or(&not_refined));
+        let steps = outcome.gave.steps;
+        let mut summary = ManoeuvreSummary::new(manoeuvre, &scene.stepper, figures, steps);
         summary.side = side.map(Side::name).or(summary.side);
-        summary.stopped_at = scene.stop.as_ref().map(|_| outcome.stopped_at);
+        summary.stopped_at = scene.stop.as_ref().map(|_| outcome.gave.stopped_at);
         summary
     };
     match (worse_side(manoeuvre, runs), runs.as_slice()) {
@@ -338,13 +307,13 @@ fn cells(
     );
     for ((manoeuvre, runs), name) in scene.manoeuvres.iter().zip(outcomes).zip(&names) {
         if let Some(outcome) = shown(manoeuvre, runs) {
-            for (key, value) in &outcome.figures.values {
+            for (key, value) in &outcome.gave.figures.values {
                 cells.push((format!("{name}.{key}"), text(*value)));
             }
         }
         for (side, outcome) in runs.iter().filter(|_| runs.len() > 1) {
             let side = side.map_or("", Side::name);
-            for (key, value) in &outcome.figures.values {
+            for (key, value) in &outcome.gave.figures.values {
                 cells.push((format!("{name}.{side}.{key}"), text(*value)));
             }
         }
@@ -515,7 +484,13 @@ fn manoeuvre_report(out: &mut String, manoeuvre: &Manoeuvre, runs: &Runs) -> std
                 format!("port{}", mark(Side::Port)),
                 format!("starboard{}", mark(Side::Starboard))
             )?;
-            for ((key, p), (_, s)) in port.figures.values.iter().zip(&starboard.figures.values) {
+            for ((key, p), (_, s)) in port
+                .gave
+                .figures
+                .values
+                .iter()
+                .zip(&starboard.gave.figures.values)
+            {
                 writeln!(out, "    {key:<28} {:>12} {:>21}", cell(*p), cell(*s))?;
             }
         }
@@ -526,21 +501,21 @@ fn manoeuvre_report(out: &mut String, manoeuvre: &Manoeuvre, runs: &Runs) -> std
                 None => writeln!(out, "  {}:", manoeuvre.name)?,
             }
             for (_, outcome) in runs {
-                for (key, value) in &outcome.figures.values {
+                for (key, value) in &outcome.gave.figures.values {
                     writeln!(out, "    {key:<28} {:>12}", cell(*value))?;
                 }
             }
         }
     }
     for (side, outcome) in runs {
-        if let Some(curve) = &outcome.figures.spiral {
+        if let Some(curve) = &outcome.gave.figures.spiral {
             spiral_report(out, curve)?;
         }
         let side = match side {
             Some(side) if runs.len() > 1 => format!(" ({})", side.name()),
             _ => String::new(),
         };
-        for note in &outcome.figures.notes {
+        for note in &outcome.gave.figures.notes {
             writeln!(out, "    note{side}: {note}")?;
         }
     }

@@ -20,28 +20,40 @@ use crate::output::summary::{Figure, IntegratorSummary, RunFigures};
 use crate::output::text::printable;
 use crate::output::trajectory::number_text;
 use crate::run::Row;
-use crate::run::scene::{Closing, Counts, Failed, Ran, Rows, RunPlan, SceneRuns, Setting};
+use crate::run::scene::{Closing, Counts, Ran, Rows, RunPlan, RunResult, SceneRuns, Setting};
 use crate::scene::stop::StopCondition;
 use crate::scene::sweep::{TableCase, manoeuvre_columns};
 use crate::{Model, Short, counted, fixed};
 use std::fmt::Write;
 
-/// A manoeuvre run with the scene's method, and its figures refined.
+/// What a manoeuvre's run gives: each stretch's figures, the summary that says them, the
+/// points its track marks.
 #[derive(Debug, Clone)]
-pub struct Outcome {
+pub struct ManoeuvreFigures {
     /// The figures of each stretch of constant commands.
     pub steps: Vec<StepFigures>,
-    /// What summary.json says of it.
+    /// What summary.json says of it, but how far it moved refined ([`summary`] adds that).
     pub summary: ManoeuvreSummary,
     /// Points to mark on its track: a turning circle's, (what, [x, y]).
     pub marks: Vec<(String, [f64; 2])>,
-    /// Its evaluations of the right-hand side.
-    pub rhs_evals: u64,
+}
+
+/// A manoeuvre run with the scene's method, its cost, and its figures refined.
+pub type Outcome = crate::run::scene::Outcome<ManoeuvreFigures>;
+
+/// What summary.json says of a manoeuvre's run: its summary, with the largest difference of
+/// its figures from the refined run's where that finished.
+pub fn summary(outcome: &Outcome) -> ManoeuvreSummary {
+    let refined = outcome.refined();
+    ManoeuvreSummary {
+        refined_difference: refined.map(|r| moved_when_refined(&outcome.gave.summary, &r.summary)),
+        ..outcome.gave.summary.clone()
+    }
 }
 
 impl SceneRuns for VehicleScene {
     type Shared = ();
-    type Outcome = Outcome;
+    type Gave = ManoeuvreFigures;
     type Section = VehicleSection;
 
     fn kind_name(&self) -> &'static str {
@@ -82,7 +94,7 @@ impl SceneRuns for VehicleScene {
         index: usize,
         setting: Setting,
         rows: &mut Rows,
-    ) -> Result<Outcome, Failed<Outcome>> {
+    ) -> RunResult<ManoeuvreFigures> {
         let manoeuvre = &self.manoeuvres[index];
         let stepper = match setting {
             Setting::Scene => self.stepper.clone(),
@@ -106,48 +118,27 @@ impl SceneRuns for VehicleScene {
         Ok(outcome(self, manoeuvre, &done))
     }
 
-    fn counts(&self, outcome: &Outcome) -> Counts {
-        Counts {
-            steps: outcome.summary.steps_taken,
-            rejected: None,
-            rhs_evals: outcome.rhs_evals,
-        }
-    }
-
-    fn take_refined(
-        &self,
-        _index: usize,
-        outcome: &mut Outcome,
-        refined: Result<Outcome, KindError>,
-    ) -> Vec<String> {
-        match refined {
-            Ok(refined) => {
-                let moved = moved_when_refined(&outcome.summary, &refined.summary);
-                outcome.summary.refined_difference = Some(moved);
-                Vec::new()
-            }
-            Err(error) => vec![format!(
-                "refined_difference is not given: refined, {}",
-                error.message()
-            )],
-        }
+    fn refined_warnings(&self, outcome: &Outcome) -> Vec<String> {
+        (outcome.refined_failure().iter())
+            .map(|error| format!("refined_difference is not given: refined, {error}"))
+            .collect()
     }
 
     fn figures(&self, plan: &RunPlan, outcome: &Outcome) -> RunFigures {
-        run_figures(&plan.path, &outcome.summary)
+        run_figures(&plan.path, &summary(outcome))
     }
 
     fn drawings(&self, _: &(), index: usize, outcome: &Outcome) -> Vec<Drawing> {
         drawings(
             self,
             format!("{} — {}", self.title, self.manoeuvres[index].name),
-            Mark::all(&outcome.marks),
+            Mark::all(&outcome.gave.marks),
         )
     }
 
     fn close(&self, ran: &Ran<'_, Self>) -> Closing<VehicleSection> {
         let manoeuvre = (ran.outcomes.iter())
-            .map(|(index, o)| (self.manoeuvres[*index].name.clone(), o.summary.clone()))
+            .map(|(index, o)| (self.manoeuvres[*index].name.clone(), summary(o)))
             .collect();
         let section = VehicleSection {
             model: ModelSummary::new(self),
@@ -184,7 +175,7 @@ impl SceneRuns for VehicleScene {
             let Some(outcome) = ran.outcome(index) else {
                 continue;
             };
-            let json = serde_json::to_value(&outcome.summary).unwrap_or_default();
+            let json = serde_json::to_value(summary(outcome)).unwrap_or_default();
             for (key, value) in manoeuvre_figures(&json) {
                 if let Some(text) = scalar_text(value) {
                     cells.push((format!("{column}.{key}"), text));
@@ -200,7 +191,7 @@ impl SceneRuns for VehicleScene {
     }
 }
 
-/// What a manoeuvre's run gave: its figures and the summary that says them, its marks.
+/// What a manoeuvre's run gave, and what it cost.
 fn outcome(scene: &VehicleScene, manoeuvre: &VehicleManoeuvre, done: &VehicleRun) -> Outcome {
     let steps = StepFigures::of(done);
     let trial = trial_figures(done, manoeuvre);
@@ -213,19 +204,26 @@ fn outcome(scene: &VehicleScene, manoeuvre: &VehicleManoeuvre, done: &VehicleRun
         steps: steps.clone(),
         autopilot: SetpointFigures::of(done),
         trial,
-        // Until the refined run gives one; a Monte Carlo's case is not run again refined.
+        // Said by [`summary`], from the refined run where it ran.
         refined_difference: None,
         refinement: scene.stepper.refinement(),
         steps_taken: done.steps,
         stopped_at: scene.stop.as_ref().map(|_| done.stopped_at),
         notes,
     };
-    Outcome {
-        steps,
-        summary,
-        marks,
+    let counts = Counts {
+        steps: done.steps,
+        rejected: None,
         rhs_evals: done.rhs_evals,
-    }
+    };
+    Outcome::new(
+        ManoeuvreFigures {
+            steps,
+            summary,
+            marks,
+        },
+        counts,
+    )
 }
 
 /// The largest difference between a run's figures (its steps, autopilots and trial) and those
@@ -394,7 +392,7 @@ fn report(
         )?;
     }
     for (manoeuvre, outcome) in outcomes {
-        match outcome.summary.refined_difference {
+        match summary(outcome).refined_difference {
             Some(moved) => writeln!(out, "  {}: (refined: {moved:.1e})", manoeuvre.name)?,
             None => writeln!(out, "  {}: (not refined)", manoeuvre.name)?,
         }
@@ -403,7 +401,7 @@ fn report(
             "    {:>6} {:>6} {:>7} {:>7} {:>10} {:>8} {:>8} {:>8} {:>8}",
             "from s", "to s", "δr °", "δs °", "r °/s", "U m/s", "φ °", "θ °", "z m"
         )?;
-        for s in &outcome.steps {
+        for s in &outcome.gave.steps {
             writeln!(
                 out,
                 "    {:>6} {:>6} {:>7} {:>7} {:>10} {:>8} {:>8} {:>8} {:>8}",
@@ -418,11 +416,11 @@ fn report(
                 fixed(s.depth_m, 3)
             )?;
         }
-        autopilot_report(out, &outcome.summary.autopilot)?;
-        if let Some(trial) = &outcome.summary.trial {
+        autopilot_report(out, &outcome.gave.summary.autopilot)?;
+        if let Some(trial) = &outcome.gave.summary.trial {
             trial_report(out, trial)?;
         }
-        for note in &outcome.summary.notes {
+        for note in &outcome.gave.summary.notes {
             writeln!(out, "    note: {note}")?;
         }
     }
