@@ -13,9 +13,22 @@ use crate::scene::SceneError;
 use crate::scene::sweep::TableCase;
 use std::any::Any;
 
-/// A scene's run through the one runner ([`crate::run::scene::run`]): every kind has it by
-/// saying its runs ([`SceneRuns`]).
+/// What every kind has by saying its runs ([`SceneRuns`]): its name and title, the scene's run
+/// through the one runner ([`crate::run::scene::run`]), and the scene as its own type.
 pub trait RunScene {
+    /// The kind's name, as the registry lists it (`ship`, `vehicle`).
+    fn kind(&self) -> &'static str;
+
+    /// The scene's title.
+    fn title(&self) -> &str;
+
+    /// The scene as its own type, for a library user who knows the kind
+    /// (`scene.as_any().downcast_ref::<S>()`, `S` the kind's scene type).
+    fn as_any(&self) -> &dyn Any;
+
+    /// The scene as its own type, owned ([`crate::scene::AnyScene::downcast`]).
+    fn into_any(self: Box<Self>) -> Box<dyn Any>;
+
     /// Runs every run the scene asks for, in order, each one's rows to `recorder` (`name` is
     /// the scene's file, as the summary names it). A run the recorder stops ends the scene's,
     /// keeping the runs before it ([`Finished::stopped`]); a run that fails is kept as failed
@@ -28,7 +41,23 @@ pub trait RunScene {
     ) -> Result<Box<dyn Finished + '_>, KindError>;
 }
 
-impl<K: SceneRuns> RunScene for K {
+impl<K: SceneRuns + 'static> RunScene for K {
+    fn kind(&self) -> &'static str {
+        self.kind_name()
+    }
+
+    fn title(&self) -> &str {
+        self.scene_title()
+    }
+
+    fn as_any(&self) -> &dyn Any {
+        self
+    }
+
+    fn into_any(self: Box<Self>) -> Box<dyn Any> {
+        self
+    }
+
     fn run(
         &self,
         name: &str,
@@ -43,12 +72,6 @@ impl<K: SceneRuns> RunScene for K {
 /// which every kind has by saying its runs to the one runner, [`SceneRuns`]), and its linear
 /// plant. The command runs, sweeps, shards, guards and reports a scene through this alone.
 pub trait Kind: RunScene + Send + Sync + std::fmt::Debug {
-    /// The kind's name, as the registry lists it (`ship`, `vehicle`).
-    fn kind(&self) -> &'static str;
-
-    /// The scene's title.
-    fn title(&self) -> &str;
-
     /// The entries its run writes at the top of its output folder besides `summary.json`
     /// (each manoeuvre's folder), for the folder's claim.
     fn folders(&self) -> Vec<String>;
@@ -86,13 +109,6 @@ pub trait Kind: RunScene + Send + Sync + std::fmt::Debug {
     ) -> Option<Result<Box<dyn Kind>, SceneError>> {
         None
     }
-
-    /// The scene as its own type, for a library user who knows the kind
-    /// (`scene.as_any().downcast_ref::<S>()`, `S` the kind's scene type).
-    fn as_any(&self) -> &dyn Any;
-
-    /// The scene as its own type, owned ([`crate::scene::AnyScene::downcast`]).
-    fn into_any(self: Box<Self>) -> Box<dyn Any>;
 }
 
 /// What a scene's run gave: the summary, the report, a sweep case's line.

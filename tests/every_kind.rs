@@ -239,3 +239,39 @@ fn every_kind_stopped_mid_run_is_interrupted_not_failed() {
         assert!(summary.error.is_none(), "{example}: {:?}", summary.error);
     }
 }
+
+/// A manoeuvre named as an earlier one is refused at its name, for every kind whose example
+/// has manoeuvres: each manoeuvre's name is its folder in the output and its key in the
+/// summary.
+#[test]
+fn every_kind_refuses_a_manoeuvre_named_as_an_earlier_one() {
+    let scenes = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
+    let mut checked = 0;
+    for kind in REGISTRY {
+        let file = scenes.join(kind.example);
+        let text = std::fs::read_to_string(&file).unwrap();
+        let mut table: toml::Table = toml::from_str(&text).unwrap();
+        let Some(toml::Value::Array(manoeuvres)) = table.get_mut("manoeuvre") else {
+            continue;
+        };
+        let again = manoeuvres[0].clone();
+        let index = manoeuvres.len();
+        manoeuvres.push(again);
+        let error = AnyScene::from_table(table, kind.example, &scenes).unwrap_err();
+        let message = error.to_string();
+        assert!(
+            message.contains(&format!("manoeuvre[{index}].name")),
+            "{}: {message}",
+            kind.example
+        );
+        assert!(
+            message.contains("is taken by an earlier manoeuvre"),
+            "{message}"
+        );
+        checked += 1;
+    }
+    assert!(
+        checked >= 3,
+        "the ship's, the vehicle's and the aircraft's examples"
+    );
+}

@@ -52,7 +52,7 @@
 //! The file is written whole to a temporary name in the same folder and renamed over
 //! `summary.json`, so a reader never sees half of one.
 
-use crate::integrate::{AdaptiveOptions, Method};
+use crate::integrate::{AdaptiveOptions, Method, Stepper};
 use crate::scene::sweep::TableCase;
 use serde::Serialize;
 use serde::ser::{SerializeMap, Serializer};
@@ -171,6 +171,11 @@ impl IntegratorSummary {
             atol: adaptive.map(|o| o.atol),
             ..IntegratorSummary::default()
         }
+    }
+
+    /// A run's method with its settings ([`settings`](Self::settings)).
+    pub fn of(stepper: &Stepper) -> Self {
+        Self::settings(stepper.method, stepper.step, stepper.adaptive)
     }
 }
 

@@ -27,6 +27,7 @@
 
 use super::Row;
 use super::record::{Recorder, RunStart};
+use crate::integrate::Stepper;
 use crate::kind::{Finished, KindError};
 use crate::output::drawing::{Drawing, RunDrawings};
 use crate::output::summary::{IntegratorSummary, RunFigures, Summary, Verdict};
@@ -59,6 +60,17 @@ pub enum Setting {
     Scene,
     /// The same, refined.
     Refined,
+}
+
+impl Setting {
+    /// The method a run steps with at this setting: `stepper` as the scene gave it, or
+    /// refined ([`Stepper::refined`], `every` the rows' interval it keeps landing on).
+    pub fn stepper(self, stepper: &Stepper, every: f64) -> Stepper {
+        match self {
+            Setting::Scene => stepper.clone(),
+            Setting::Refined => stepper.refined(every),
+        }
+    }
 }
 
 /// Where a run's rows go: the caller's recorder, or, for a run whose rows nobody keeps (a
@@ -120,6 +132,25 @@ impl<'a> Rows<'a> {
         self.taken += usize::from(taken);
         self.ended_by_caller |= !taken;
         taken
+    }
+
+    /// Takes the row at `t` that `row` builds (its state and kinetic energy; no potential),
+    /// built only where the rows are kept; `false` ends the run, as [`take`](Self::take).
+    pub fn take_built<const N: usize>(
+        &mut self,
+        t: f64,
+        row: impl FnOnce() -> ([f64; N], f64),
+    ) -> bool {
+        if !self.keeps {
+            return !self.stop_asked();
+        }
+        let (state, kinetic_energy) = row();
+        self.take(&Row {
+            t,
+            state: &state,
+            kinetic_energy,
+            potential_energy: None,
+        })
     }
 
     /// How many rows the recorder took.

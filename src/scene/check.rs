@@ -50,6 +50,23 @@ impl Checker<'_> {
         self.error(key, Problem::Invalid(message.into()))
     }
 
+    /// Refuses the name of manoeuvre `index` where an earlier manoeuvre has it: a manoeuvre's
+    /// name is its folder in the output, and its key in the summary.
+    pub(crate) fn unique_manoeuvre<'n>(
+        &self,
+        index: usize,
+        name: &str,
+        mut earlier: impl Iterator<Item = &'n str>,
+    ) -> Result<(), SceneError> {
+        match earlier.any(|taken| taken == name) {
+            true => Err(self.invalid(
+                &format!("manoeuvre[{index}].name"),
+                format!("`{name}` is taken by an earlier manoeuvre"),
+            )),
+            false => Ok(()),
+        }
+    }
+
     /// `key` is missing, and why it is needed.
     pub(crate) fn missing(&self, key: &str, why: &str) -> SceneError {
         self.error(key, Problem::Missing(why.to_owned()))

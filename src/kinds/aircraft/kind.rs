@@ -8,7 +8,6 @@ use super::scene::AircraftScene;
 use crate::kinds::{self, Columns, KindError, Linearised, Reference, Registered, Source};
 use crate::scene::SceneError;
 use crate::scene::reference::SceneFamily;
-use std::any::Any;
 use std::path::Path;
 
 /// The registry's entry.
@@ -58,14 +57,6 @@ fn read(source: Source, name: &str, _base: &Path) -> Result<Box<dyn kinds::Kind>
 }
 
 impl kinds::Kind for AircraftScene {
-    fn kind(&self) -> &'static str {
-        KIND.name
-    }
-
-    fn title(&self) -> &str {
-        &self.title
-    }
-
     fn folders(&self) -> Vec<String> {
         self.manoeuvres.iter().map(|m| m.name.clone()).collect()
     }
@@ -97,13 +88,5 @@ impl kinds::Kind for AircraftScene {
     /// (controls: throttle 0–1, surfaces in degrees).
     fn model(&self) -> Option<Result<Box<dyn crate::models::DynModel>, KindError>> {
         Some(Ok(Box::new(crate::models::Erased(self.model.clone()))))
-    }
-
-    fn as_any(&self) -> &dyn Any {
-        self
-    }
-
-    fn into_any(self: Box<Self>) -> Box<dyn Any> {
-        self
     }
 }

@@ -10,7 +10,6 @@ use crate::kind::KindError;
 use crate::output::drawing::{Airframe, Coordinate, Curves, Drawing, Orientation, Shape, View};
 use crate::output::summary::{Figure, IntegratorSummary, Named, RunFigures};
 use crate::output::trajectory::number_text;
-use crate::run::Row;
 use crate::run::scene::{Closing, Counts, Ran, Rows, RunPlan, RunResult, SceneRuns, Setting};
 use crate::scene::sweep::TableCase;
 use serde::Serialize;
@@ -183,8 +182,7 @@ impl SceneRuns for AircraftScene {
     }
 
     fn integrator(&self) -> IntegratorSummary {
-        let stepper = &self.stepper;
-        IntegratorSummary::settings(stepper.method, stepper.step, stepper.adaptive)
+        IntegratorSummary::of(&self.stepper)
     }
 
     fn prepare(&self) -> Result<Option<(f64, f64)>, KindError> {
@@ -216,10 +214,7 @@ impl SceneRuns for AircraftScene {
         rows: &mut Rows,
     ) -> RunResult<ManoeuvreFigures> {
         let manoeuvre = &self.manoeuvres[index];
-        let stepper = match setting {
-            Setting::Scene => self.stepper.clone(),
-            Setting::Refined => self.stepper.refined(self.every),
-        };
+        let stepper = setting.stepper(&self.stepper, self.every);
         let mut curves: Vec<(f64, [f64; 18])> = Vec::new();
         let stride = ((manoeuvre.duration / self.every).ceil() as usize / 2000).max(1);
         let mut count = 0usize;
@@ -231,19 +226,12 @@ impl SceneRuns for AircraftScene {
             (&stepper, self.every),
             self.stop.as_ref(),
             |sample| {
-                if !rows.keeps() {
-                    return !rows.stop_asked();
-                }
-                if count.is_multiple_of(stride) {
+                // The plots' curves, of the rows kept alone.
+                if rows.keeps() && count.is_multiple_of(stride) {
                     curves.push((sample.t, sample.row));
                 }
                 count += 1;
-                rows.take(&Row {
-                    t: sample.t,
-                    state: &sample.row,
-                    kinetic_energy: sample.kinetic,
-                    potential_energy: None,
-                })
+                rows.take_built(sample.t, || (sample.row, sample.kinetic))
             },
         );
         let done = done.map_err(|error| {

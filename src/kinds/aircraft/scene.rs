@@ -227,12 +227,8 @@ impl AircraftScene {
         let mut manoeuvres: Vec<AircraftManoeuvre> = Vec::new();
         for (index, table) in file.manoeuvre.iter().enumerate() {
             let manoeuvre = check.aircraft_manoeuvre(index, table, &trimmed, &limits)?;
-            if manoeuvres.iter().any(|m| m.name == manoeuvre.name) {
-                return Err(check.invalid(
-                    &format!("manoeuvre[{index}].name"),
-                    format!("`{}` is taken by an earlier manoeuvre", manoeuvre.name),
-                ));
-            }
+            let names = manoeuvres.iter().map(|m| m.name.as_str());
+            check.unique_manoeuvre(index, &manoeuvre.name, names)?;
             manoeuvres.push(manoeuvre);
         }
         let longest = manoeuvres.iter().map(|m| m.duration).fold(0.0, f64::max);

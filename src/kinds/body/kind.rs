@@ -7,7 +7,6 @@ use super::run::trajectory_numbers;
 use crate::kinds::{Columns, Kind, KindError, Linearised, Reference, Registered, Source};
 use crate::run::tradeoff::Tradeoff;
 use crate::scene::SceneError;
-use std::any::Any;
 use std::path::Path;
 
 /// The kind's name.
@@ -54,14 +53,6 @@ fn read(source: Source, name: &str, base: &Path) -> Result<Box<dyn Kind>, SceneE
 }
 
 impl Kind for BodyScene {
-    fn kind(&self) -> &'static str {
-        NAME
-    }
-
-    fn title(&self) -> &str {
-        &self.title
-    }
-
     /// Its one run's trajectory, at the top of the output (its drawings beside it).
     fn folders(&self) -> Vec<String> {
         vec!["trajectory.csv".to_owned()]
@@ -83,13 +74,5 @@ impl Kind for BodyScene {
     fn tradeoff(&self) -> Option<Result<Tradeoff, KindError>> {
         let compared = super::tradeoff::tradeoff(self);
         Some(compared.map_err(|error| KindError::Run(Box::new(error))))
-    }
-
-    fn as_any(&self) -> &dyn Any {
-        self
-    }
-
-    fn into_any(self: Box<Self>) -> Box<dyn Any> {
-        self
     }
 }

@@ -11,7 +11,6 @@ use super::{ShipError, ShipModel, ShipScene};
 use crate::kinds::{self, Columns, KindError, Linearised, Reference, Registered, Source};
 use crate::scene::SceneError;
 use crate::scene::reference::SceneFamily;
-use std::any::Any;
 use std::path::Path;
 
 /// The registry's entry.
@@ -68,14 +67,6 @@ impl From<ShipError> for KindError {
 }
 
 impl kinds::Kind for ShipScene {
-    fn kind(&self) -> &'static str {
-        KIND.name
-    }
-
-    fn title(&self) -> &str {
-        &self.title
-    }
-
     fn folders(&self) -> Vec<String> {
         self.manoeuvres.iter().map(|m| m.name.clone()).collect()
     }
@@ -117,13 +108,5 @@ impl kinds::Kind for ShipScene {
     ) -> Option<Result<Box<dyn kinds::Kind>, SceneError>> {
         let scene = self.with_coefficients(name, numbers)?;
         Some(scene.map(|scene| Box::new(scene) as Box<dyn kinds::Kind>))
-    }
-
-    fn as_any(&self) -> &dyn Any {
-        self
-    }
-
-    fn into_any(self: Box<Self>) -> Box<dyn Any> {
-        self
     }
 }

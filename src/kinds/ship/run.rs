@@ -24,7 +24,6 @@ use crate::output::drawing::{
 };
 use crate::output::summary::{IntegratorSummary, RunFigures};
 use crate::output::text::printable;
-use crate::run::Row;
 use crate::run::scene::{Closing, Counts, Ran, Rows, RunPlan, RunResult, SceneRuns, Setting};
 use crate::scene::sweep::{TableCase, manoeuvre_columns};
 use crate::{Model, Short, fixed};
@@ -105,8 +104,7 @@ impl SceneRuns for ShipScene {
     }
 
     fn integrator(&self) -> IntegratorSummary {
-        let stepper = &self.stepper;
-        IntegratorSummary::settings(stepper.method, stepper.step, stepper.adaptive)
+        IntegratorSummary::of(&self.stepper)
     }
 
     fn prepare(&self) -> Result<Shared, KindError> {
@@ -147,10 +145,7 @@ impl SceneRuns for ShipScene {
         rows: &mut Rows,
     ) -> RunResult<ManoeuvreRun> {
         let (number, _, one) = &shared.runs[index];
-        let stepper = match setting {
-            Setting::Scene => self.stepper.clone(),
-            Setting::Refined => self.stepper.refined(self.every),
-        };
+        let stepper = setting.stepper(&self.stepper, self.every);
         let model = &shared.model;
         let start = (self.start(), self.stop.as_ref());
         // The figures are read from every accepted step and event, not from the rows: where
@@ -167,15 +162,8 @@ impl SceneRuns for ShipScene {
             start,
             (&stepper, every),
             |sample| {
-                if !rows.keeps() {
-                    return !rows.stop_asked();
-                }
-                rows.take(&Row {
-                    t: sample.t,
-                    state: &sample.row(),
-                    kinetic_energy: model.kinetic_energy(&sample.model_state()),
-                    potential_energy: None,
-                })
+                let kinetic = || model.kinetic_energy(&sample.model_state());
+                rows.take_built(sample.t, || (sample.row(), kinetic()))
             },
         );
         let manoeuvre = &self.manoeuvres[*number].name;

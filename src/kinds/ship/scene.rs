@@ -194,12 +194,8 @@ impl ShipScene {
                 length,
             };
             let manoeuvre = check.manoeuvre(index, table, ship)?;
-            if manoeuvres.iter().any(|m| m.name == manoeuvre.name) {
-                return Err(check.invalid(
-                    &format!("manoeuvre[{index}].name"),
-                    format!("`{}` is taken by an earlier manoeuvre", manoeuvre.name),
-                ));
-            }
+            let names = manoeuvres.iter().map(|m| m.name.as_str());
+            check.unique_manoeuvre(index, &manoeuvre.name, names)?;
             manoeuvres.push(manoeuvre);
         }
         let longest = manoeuvres.iter().map(|m| m.duration).fold(0.0, f64::max);

@@ -10,7 +10,6 @@ use super::{VehicleError, VehicleScene};
 use crate::kinds::{self, Columns, KindError, Linearised, Reference, Registered, Source};
 use crate::scene::SceneError;
 use crate::scene::reference::SceneFamily;
-use std::any::Any;
 use std::path::Path;
 
 /// The registry's entry.
@@ -70,14 +69,6 @@ impl From<VehicleError> for KindError {
 }
 
 impl kinds::Kind for VehicleScene {
-    fn kind(&self) -> &'static str {
-        KIND.name
-    }
-
-    fn title(&self) -> &str {
-        &self.title
-    }
-
     fn folders(&self) -> Vec<String> {
         self.manoeuvres.iter().map(|m| m.name.clone()).collect()
     }
@@ -97,14 +88,6 @@ impl kinds::Kind for VehicleScene {
     /// The table's proved model, as the scene built it.
     fn model(&self) -> Option<Result<Box<dyn crate::models::DynModel>, KindError>> {
         Some(Ok(Box::new(crate::models::Erased(self.model.clone()))))
-    }
-
-    fn as_any(&self) -> &dyn Any {
-        self
-    }
-
-    fn into_any(self: Box<Self>) -> Box<dyn Any> {
-        self
     }
 }
 

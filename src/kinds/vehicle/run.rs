@@ -19,7 +19,6 @@ use crate::output::drawing::{
 use crate::output::summary::{Figure, IntegratorSummary, RunFigures};
 use crate::output::text::printable;
 use crate::output::trajectory::number_text;
-use crate::run::Row;
 use crate::run::scene::{Closing, Counts, Ran, Rows, RunPlan, RunResult, SceneRuns, Setting};
 use crate::scene::stop::StopCondition;
 use crate::scene::sweep::{TableCase, manoeuvre_columns};
@@ -65,8 +64,7 @@ impl SceneRuns for VehicleScene {
     }
 
     fn integrator(&self) -> IntegratorSummary {
-        let stepper = &self.stepper;
-        IntegratorSummary::settings(stepper.method, stepper.step, stepper.adaptive)
+        IntegratorSummary::of(&self.stepper)
     }
 
     fn prepare(&self) -> Result<(), KindError> {
@@ -96,23 +94,13 @@ impl SceneRuns for VehicleScene {
         rows: &mut Rows,
     ) -> RunResult<ManoeuvreFigures> {
         let manoeuvre = &self.manoeuvres[index];
-        let stepper = match setting {
-            Setting::Scene => self.stepper.clone(),
-            Setting::Refined => self.stepper.refined(self.every),
-        };
+        let stepper = setting.stepper(&self.stepper, self.every);
         let model = &self.model;
         let start = (manoeuvre.trim.state, self.stop.as_ref());
         let settings = (&stepper, self.every);
         let done = run_until(model, &self.fins, manoeuvre, start, settings, |sample| {
-            if !rows.keeps() {
-                return !rows.stop_asked();
-            }
-            rows.take(&Row {
-                t: sample.t,
-                state: &sample.row(),
-                kinetic_energy: model.kinetic_energy(&sample.state),
-                potential_energy: None,
-            })
+            let kinetic = || model.kinetic_energy(&sample.state);
+            rows.take_built(sample.t, || (sample.row(), kinetic()))
         });
         let done = done.map_err(|e| KindError::from(e.in_manoeuvre(&manoeuvre.name)))?;
         Ok(outcome(self, manoeuvre, &done))

@@ -212,12 +212,8 @@ impl VehicleScene {
             if held != Held::default() {
                 manoeuvre.trim = check.held_trim(index, &mut trimmer, held, &fins, file)?;
             }
-            if manoeuvres.iter().any(|m| m.name == manoeuvre.name) {
-                return Err(check.invalid(
-                    &format!("manoeuvre[{index}].name"),
-                    format!("`{}` is taken by an earlier manoeuvre", manoeuvre.name),
-                ));
-            }
+            let names = manoeuvres.iter().map(|m| m.name.as_str());
+            check.unique_manoeuvre(index, &manoeuvre.name, names)?;
             manoeuvres.push(manoeuvre);
         }
         let longest = manoeuvres.iter().map(|m| m.duration).fold(0.0, f64::max);
