@@ -16,21 +16,35 @@
 //! ```sh
 //! valgrind --tool=callgrind --collect-atstart=no --toggle-collect='*calls::rk4*' \
 //!     target/release/examples/calls ten-rk4 jit 100000
-//! ``` A ship's calls start at
-//! the heading ψ = 0.3 rad, within ±π/4, where the kernel's sine and cosine need no
-//! reduction; a fourth argument gives another (`calls ten jit 100000 2.0`: the path a steady
-//! turn takes once its heading has left ±π/4, as inside RK4).
+//! ```
+//!
+//! A ship's calls start at the heading ψ = 0.3 rad, within ±π/4, where the kernel's sine and
+//! cosine need no reduction; a fourth argument gives another (`calls ten jit 100000 2.0`: the
+//! path a steady turn takes once its heading has left ±π/4, as inside RK4).
+//!
+//! `TABLE` `lanes` and `scalar-cases` (`FORM` `rustc`, `CALLS` the RK4 steps) run 64 of the
+//! Mariner's turning circles of `benches/lanes.rs` (approaches at 0.95–1.05 U₀, rudder orders
+//! 20°, 25°, 30°, 35° through the scene's steering gear, steps of 0.1 s): `lanes` four cases to
+//! a `Batch<WideF64x4, 7>`, `scalar-cases` one at a time (`Batch<f64, 7>`), the function
+//! collected `calls::turns`; its count over 64 × `CALLS` is the instructions per case-step:
+//!
+//! ```sh
+//! valgrind --tool=callgrind --collect-atstart=no --toggle-collect='*calls::turns*' \
+//!     target/release/examples/calls lanes rustc 3400
+//! ```
 
 #[path = "../tests/common/mod.rs"]
 #[allow(dead_code)]
 mod common;
 
 use common::{mariner_coefficients, mariner_rates, mariner_table, remus_coefficients, remus_rates};
+use eom::batch::Batch;
 use eom::integrate::{Integrator, Rk4};
 use eom::kinds::ship::ShipModel;
 use eom::nalgebra::SVector;
 use eom::{Constant, Model, OdeSystem};
-use eom_example_user_build_rs::{example_ship, ship};
+use eom_example_user_build_rs::{example_ship, mariner, ship};
+use simba::simd::{SimdRealField, WideF64x4};
 use std::hint::black_box;
 
 /// `system`'s steady turn in RK4 at 0.1 s for `calls` right-hand sides (four a step), as the
@@ -41,6 +55,73 @@ fn rk4(system: &impl OdeSystem<f64, 7>, start: [f64; 7], calls: usize) -> [f64; 
     let end = 0.1 * (calls / 4) as f64;
     let reached = method.integrate(system, 0.0, SVector::from(start), end);
     reached.expect("a steady turn integrates").into()
+}
+
+/// The turning circles of `benches/lanes.rs`, 64 cases: the rudder orders (case `i` takes the
+/// `i % 4`th, so each lane of a group of four its own), degrees to port.
+const ORDERS_DEG: [f64; 4] = [20.0, 25.0, 30.0, 35.0];
+const TURNS: usize = 64;
+
+/// The inputs `[δ̇, U]` of the compiled Mariner: `scenes/mariner.toml`'s steering gear
+/// δ̇ = clamp((δ_c − δ)/T_δ, ±δ̇_max), T_δ = 1 s, δ̇_max = 5°/s, towards `order`, branch-free,
+/// and U = √(u² + v²) (as `benches/lanes.rs`).
+fn gear<T: SimdRealField + Copy>(order: T) -> impl Fn(T, &[T; 7]) -> [T; 2] {
+    let lag = T::from_subset(&1.0);
+    let max = T::from_subset(&5.0_f64.to_radians());
+    move |_, y| {
+        let rate = ((order - y[6]) / lag).simd_clamp(-max, max);
+        [rate, (y[0] * y[0] + y[1] * y[1]).simd_sqrt()]
+    }
+}
+
+/// `steps` RK4 steps of 0.1 s of every batch under its loads: the loop the bench times.
+#[inline(never)]
+fn turns<T, Mo, L>(model: &Mo, batches: &mut [(Batch<T, 7>, L)], steps: usize)
+where
+    T: SimdRealField + Copy,
+    T::Element: Copy,
+    Mo: Model<T, 7, 2>,
+    L: eom::Loads<T, 7, 2>,
+{
+    for step in 0..steps {
+        for (batch, loads) in batches.iter_mut() {
+            batch.step_rk4(model, loads, step as f64 * 0.1, 0.1);
+        }
+    }
+}
+
+/// The 64 turns through `steps` steps, in f64×4 lanes (`lanes`) or one at a time; their end
+/// states, in order.
+fn cases(lanes: bool, steps: usize) -> Vec<f64> {
+    let table = mariner_table();
+    let values = common::symbols(&table);
+    let parameters =
+        mariner::Parameters::from_symbols(|s| values.get(s).copied().unwrap_or(f64::NAN));
+    let starts: Vec<[f64; 7]> = (0..TURNS)
+        .map(|i| {
+            let speed = table.design_speed * (0.95 + 0.1 * i as f64 / TURNS as f64);
+            [speed, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]
+        })
+        .collect();
+    let orders = ORDERS_DEG.map(f64::to_radians);
+    let ends: Vec<[f64; 7]> = if lanes {
+        let m = mariner::Coefficients::<WideF64x4>::new(&parameters);
+        let loads = gear(WideF64x4::from(orders));
+        let mut batches = [(Batch::<WideF64x4, 7>::new(&starts), loads)];
+        turns(&m, &mut batches, steps);
+        batches[0].0.states()
+    } else {
+        let m = mariner::Coefficients::<f64>::new(&parameters);
+        let mut batches: Vec<_> = (orders.iter().enumerate())
+            .map(|(lane, &order)| {
+                let cases: Vec<[f64; 7]> = starts.iter().skip(lane).step_by(4).copied().collect();
+                (Batch::<f64, 7>::new(&cases), gear(order))
+            })
+            .collect();
+        turns(&m, &mut batches, steps);
+        (0..TURNS).map(|i| batches[i % 4].0.state(i / 4)).collect()
+    };
+    ends.concat()
 }
 
 /// `calls` calls of `rhs`, each on the state nudged by the last rates: the loop of the bench.
@@ -69,7 +150,7 @@ fn main() {
         }
         _ => {
             eprintln!(
-                "usage: calls TABLE FORM CALLS [HEADING] (TABLE: ten, mariner, remus; FORM: rustc, jit, interpreted)"
+                "usage: calls TABLE FORM CALLS [HEADING] (TABLE: ten, ten-rk4, mariner, remus, lanes, scalar-cases; FORM: rustc, jit, interpreted)"
             );
             std::process::exit(2);
         }
@@ -81,6 +162,8 @@ fn main() {
             let k = ship::Coefficients::<f64>::new(&example_ship());
             run(ship_start, calls, |y| k.rhs(y, &[0.01])).to_vec()
         }
+        ("lanes", "rustc") => cases(true, calls),
+        ("scalar-cases", "rustc") => cases(false, calls),
         ("ten-rk4", "rustc") => {
             let k = ship::Coefficients::<f64>::new(&example_ship());
             rk4(&k.driven_by(Constant([0.0])), ship_start, calls).to_vec()
