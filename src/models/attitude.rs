@@ -28,8 +28,22 @@ pub fn euler_angles(kinematics: Kinematics, attitude_entries: &[f64]) -> [f64; 3
             attitude_entries[2],
         ],
         Kinematics::Quaternion => {
-            let (r, p, y) = attitude(kinematics, attitude_entries).euler_angles();
-            [r, p, y]
+            euler_angles_of_quaternion([0, 1, 2, 3].map(|k| attitude_entries[k]))
         }
     }
+}
+
+/// Roll, pitch and yaw, radians (z–y–x), of the quaternion `[q0, q1, q2, q3]` (q0 the scalar,
+/// normalised): what a drawing of a quaternion's attitude plots.
+///
+/// ```
+/// let half = std::f64::consts::FRAC_PI_8;
+/// // A turn of π/4 about z, the quaternion twice unit length.
+/// let [roll, pitch, yaw] = eom::models::euler_angles_of_quaternion([2.0 * half.cos(), 0.0, 0.0, 2.0 * half.sin()]);
+/// assert!(roll.abs() < 1e-15 && pitch.abs() < 1e-15);
+/// assert!((yaw - std::f64::consts::FRAC_PI_4).abs() < 1e-15);
+/// ```
+pub fn euler_angles_of_quaternion(q: [f64; 4]) -> [f64; 3] {
+    let (r, p, y) = attitude(Kinematics::Quaternion, &q).euler_angles();
+    [r, p, y]
 }

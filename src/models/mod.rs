@@ -38,7 +38,7 @@ mod pendulum;
 mod planar;
 mod units;
 
-pub use attitude::{attitude, euler_angles};
+pub use attitude::{attitude, euler_angles, euler_angles_of_quaternion};
 pub use eom_kernel::Operations;
 pub use info::ModelInfo;
 pub use model::{Constant, Driven, Loads, Model};

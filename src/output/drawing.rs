@@ -1,15 +1,13 @@
 //! What a run's plots and 3-D view draw, said by the kind of scene and drawn by the command.
 //!
 //! A kind says *which* drawings a run of it has, from a small vocabulary of shapes that name
-//! no kind: a track in a plane ([`Track`]), columns against time ([`Series`]), an attitude's
-//! angles ([`Attitude`]), a track in space seen from the side ([`Profile`]), a body moving in
-//! 3-D ([`View`]), curves in a plane ([`Curves`]), and a rigid body of the catalog's families
-//! ([`RigidBody`], whose plots read the catalog's state layout). The command (`eom-cli`, which
-//! has plotters and the view's page) draws each from the run's rows. A drawing names the
-//! columns it reads, so a new kind whose rows carry them is drawn without a line of the
-//! command changed, and the command names no kind.
-
-use crate::models::{Family, Kinematics};
+//! no kind: a track in a plane ([`Track`]), columns against time on one panel ([`Series`]) or
+//! a panel each ([`Panels`]), an attitude's angles ([`Attitude`]), a track in space seen from
+//! the side ([`Profile`]), the drift of the total energy ([`EnergyDrift`]), a free body's
+//! polhode ([`Polhode`]), a body moving in 3-D ([`View`]) and curves in a plane ([`Curves`]).
+//! The command (`eom-cli`, which has plotters and the view's page) draws each from the run's
+//! rows. A drawing names the columns it reads, so a new kind whose rows carry them is drawn
+//! without a line of the command changed, and the command names no kind.
 
 /// A point to mark on a track: a turning circle's execute, its 90° and 180° points.
 #[derive(Debug, Clone, PartialEq)]
@@ -128,6 +126,22 @@ pub struct Profile {
     pub title: String,
     /// The columns of north, east and down (m).
     pub position: [String; 3],
+    /// Whether it is drawn where the motion stays level (z varies by no more than 1 % of the
+    /// larger of the north and east spans): a run whose depth or height is its point has its
+    /// profile whatever it shows; a body that may stay level has one where it leaves the
+    /// plane.
+    pub when_level: bool,
+}
+
+/// Every column named against time, one small panel each titled with its name, its value
+/// axis with its unit (stacked up to four, else two to a row), a column zero throughout named
+/// in the caption instead, into `state.svg`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Panels {
+    /// The captions' title.
+    pub title: String,
+    /// The columns, in the panels' order.
+    pub columns: Vec<String>,
 }
 
 /// Roll, pitch and yaw against time, made continuous (a tumbling body's angles do not wrap),
@@ -136,8 +150,41 @@ pub struct Profile {
 pub struct Attitude {
     /// The captions' title.
     pub title: String,
-    /// The columns of φ, θ, ψ (rad).
-    pub angles: [String; 3],
+    /// How the angles are read from the rows: a quaternion's turned into roll, pitch and yaw
+    /// (z–y–x), a heading's or a pitch's with the other two angles zero.
+    pub orientation: Orientation,
+}
+
+/// The drift of the rows' total energy from its first value, relative to the larger of |E₀|
+/// and the largest kinetic energy (a potential's zero is a convention, so E₀ alone may be 0),
+/// as the summary's `energy_drift` measures it, on a symmetric logarithmic axis, into
+/// `energy.svg`. Said only of a run whose energy is conserved; not drawn where the rows carry
+/// no energy, or the scale is 0.
+#[derive(Debug, Clone, PartialEq)]
+pub struct EnergyDrift {
+    /// The captions' title.
+    pub title: String,
+}
+
+/// A body's angular velocity and its inertia tensor about G, as a polhode and a view's arrows
+/// of ω and H = I ω read them.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Spin {
+    /// The columns of p, q, r (rad/s, body axes).
+    pub omega: [String; 3],
+    /// The inertia tensor about G, body axes, kg m².
+    pub inertia_about_g: [[f64; 3]; 3],
+}
+
+/// The angular velocity of a body turning free of moments about G, in its principal axes, on
+/// the energy and momentum ellipsoids, with the polhode of its first row, into `polhode.svg`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Polhode {
+    /// The captions' title.
+    pub title: String,
+    /// Its rates and its tensor (drawn in the tensor's principal axes; not drawn where the
+    /// tensor is not a body's).
+    pub spin: Spin,
 }
 
 /// One coordinate of a [`View`]'s position: a column, a column negated (an altitude as z
@@ -152,13 +199,19 @@ pub enum Coordinate {
     Zero,
 }
 
-/// How a [`View`]'s attitude is read from the rows.
+/// How an attitude is read from the rows, by a [`View`] and an [`Attitude`].
 #[derive(Debug, Clone, PartialEq)]
 pub enum Orientation {
     /// Turned about z (down) by a heading column (rad): a motion in the plane.
     Heading(String),
+    /// Turned about y by a pitch column (rad): a swing in the x–z plane.
+    Pitch(String),
     /// The quaternion's four columns (q0 the scalar), taken to unit length row by row.
     Quaternion([String; 4]),
+    /// The quaternion's four columns (q0 the scalar) as the rows give them, near unit length:
+    /// a view's page takes each to unit length as it draws it, so the two draw the same, and
+    /// the page's data keeps the run's own values.
+    QuaternionAsIs([String; 4]),
     /// Roll, pitch and yaw columns (rad), z–y–x.
     EulerAngles([String; 3]),
 }
@@ -174,10 +227,41 @@ pub enum Shape {
         beam: f64,
     },
     /// The solid cylinder with a body's mass and principal moments about G (kg, kg m²),
-    /// along the principal axis nearest body x.
+    /// along the principal axis nearest body x; where no cylinder has them (the moment across
+    /// less than half the moment along), the [`Box`](Shape::Box).
     Cylinder(Solid),
+    /// The uniform box with a body's mass and principal moments about G, its sides along the
+    /// principal axes, so that it turns as the body does.
+    Box(Solid),
     /// A fuselage along body x with wings, a tailplane and a fin.
     Aircraft(Airframe),
+    /// A cone from a pivot at the reference point to a disc at G, `h` along body z, the disc's
+    /// radius R from I₃ = M R²/2 (within 0.2 h and 1.5 h).
+    Top {
+        /// M, kg.
+        mass: f64,
+        /// I₃, the moment about body z through G, kg m².
+        axial: f64,
+        /// Pivot to G.
+        h: f64,
+    },
+    /// A rod from a pivot at the reference point to a bob at G, `h` along body z, the bob the
+    /// sphere with the moment about G that I₀ − M h² leaves (within h/20 and h/3 in radius).
+    Pendulum {
+        /// Pivot to G.
+        h: f64,
+        /// I₀, the moment about the pivot, kg m².
+        i0: f64,
+        /// M, kg.
+        mass: f64,
+    },
+    /// A plate in body x–y, its sides 2 : 1 (assumed), with a body's mass and I_zz about G.
+    Plate {
+        /// M, kg.
+        mass: f64,
+        /// I_zz about G, kg m².
+        izz: f64,
+    },
 }
 
 /// An aircraft as a view draws it: a fuselage along body x, wings of its span and chord
@@ -211,25 +295,63 @@ pub struct Solid {
     pub inertia_about_g: [[f64; 3]; 3],
 }
 
-/// A body moving in 3-D, Z down, about the rows' reference point, with the rows' columns in
-/// a readout beside it, into `view.html`.
+/// The point a [`View`]'s trail follows.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Trail {
+    /// A point fixed in the body, in body axes from the reference point and in the rows'
+    /// length unit, and what it is (`midship`, `G`).
+    Point([f64; 3], String),
+    /// The tip of body axis `axis` (0 x, 1 y, 2 z), three quarters of the shape's size out,
+    /// where the reference point moves less than half the shape's size over the run (a free
+    /// spin, its G staying put: the tip shows the turning); else the reference point, named
+    /// `reference`.
+    TipWhereStill {
+        /// The axis.
+        axis: usize,
+        /// What the reference point is (`G`).
+        reference: String,
+    },
+}
+
+/// What a [`View`] draws its body over.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Ground {
+    /// The water's surface at z = 0, drawn blue: the body is on or in water.
+    Water,
+    /// A floor at this z, in space axes and the rows' length unit.
+    Floor(f64),
+    /// A floor under the deepest point of the reference point's path by 0.8 of the shape's
+    /// size (z down): a body in flight over no floor of its own.
+    BelowPath,
+}
+
+/// A body moving in 3-D about the rows' reference point, with the rows' columns in a readout
+/// beside it, into `view.html`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct View {
     /// The page's title.
     pub title: String,
     /// What is drawn.
     pub shape: Shape,
-    /// North, east and down of the reference point.
+    /// The reference point's position along the space axes x, y and z (north, east and down;
+    /// z up where `z_up`).
     pub position: [Coordinate; 3],
     /// The attitude.
     pub orientation: Orientation,
     /// The columns the readout shows, in order; `None` for every column.
     pub readout: Option<Vec<String>>,
-    /// The point the trail follows (`midship`).
-    pub trail: String,
-    /// Whether the body is on or in water (the surface drawn at z = 0) rather than over a
-    /// floor.
-    pub water: bool,
+    /// The point the trail follows.
+    pub trail: Trail,
+    /// What the body is over.
+    pub ground: Ground,
+    /// Whether the space axes have z up (gravity along −z, as a top's) rather than down.
+    pub z_up: bool,
+    /// The point the camera looks at, in space axes; `None` where it follows the reference
+    /// point.
+    pub camera: Option<[f64; 3]>,
+    /// The body's rates and tensor, where ω and H = I ω are drawn as arrows from G (read from
+    /// the readout, which must show the rates).
+    pub spin: Option<Spin>,
     /// What the page says of how the shape was made (and what it assumed).
     pub notes: Vec<String>,
 }
@@ -249,85 +371,25 @@ pub struct Curves {
     pub curves: Vec<(String, Vec<(f64, f64)>)>,
 }
 
-/// The shape of a rigid body of the catalog's families, as its plots and its view need it.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum BodyShape {
-    /// A spatial body: M and the inertia tensor about G, body axes, kg m².
-    Spatial {
-        /// M, kg.
-        mass: f64,
-        /// The tensor about G.
-        inertia: [[f64; 3]; 3],
-        /// Whether water acts on it (buoyancy, damping): the view draws it as a cylinder on
-        /// the water rather than a box over a floor.
-        in_water: bool,
-        /// Whether it turns free of moments about G (no loads, or uniform gravity at G alone):
-        /// its polhode is drawn.
-        free_of_moments: bool,
-    },
-    /// The heavy top: M, its tensor about G in principal axes, G at h along body z.
-    Top {
-        /// M, kg.
-        mass: f64,
-        /// The tensor about G.
-        inertia: [[f64; 3]; 3],
-        /// Pivot to G, m.
-        h: f64,
-    },
-    /// The compound pendulum: pivot to G, the moment of inertia about the pivot, M.
-    Pendulum {
-        /// Pivot to G, m.
-        h: f64,
-        /// I about the pivot, kg m².
-        i0: f64,
-        /// M, kg.
-        mass: f64,
-    },
-    /// A planar body: M and I_zz about G.
-    Planar {
-        /// M, kg.
-        mass: f64,
-        /// I_zz about G, kg m².
-        izz: f64,
-    },
-}
-
-/// A rigid body of the catalog's families. Its rows carry the model's state in its own layout
-/// (the family's and the attitude's: `family` and `kinematics` say which) and, where its loads
-/// have a potential, the potential and total energy. Drawn: the state against time, the
-/// attitude, the track (and a spatial body's profile), the energy drift, a free body's
-/// polhode; and the view of its shape moving, every column in its readout.
-#[derive(Debug, Clone, PartialEq)]
-pub struct RigidBody {
-    /// The captions' title.
-    pub title: String,
-    /// The model's family.
-    pub family: Family,
-    /// How its attitude is written, where it has one.
-    pub kinematics: Option<Kinematics>,
-    /// Its shape.
-    pub shape: BodyShape,
-    /// The state it started from (the view trails the tip of the axis it spins most about).
-    pub initial: Vec<f64>,
-    /// Whether its energy is conserved, so that the drift of the total energy is drawn.
-    pub conserves_energy: bool,
-}
-
 /// One drawing of a run.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Drawing {
-    /// A rigid body of the catalog's families.
-    RigidBody(RigidBody),
     /// A track in a plane.
     Track(Track),
-    /// Columns against time.
+    /// Columns against time on one panel.
     Series(Series),
+    /// Columns against time, a panel each.
+    Panels(Panels),
     /// An attitude's angles against time.
     Attitude(Attitude),
     /// A track in space seen from the side.
     Profile(Profile),
-    /// A body moving in 3-D.
-    View(View),
+    /// The drift of the total energy.
+    EnergyDrift(EnergyDrift),
+    /// A free body's angular velocity on its ellipsoids.
+    Polhode(Polhode),
+    /// A body moving in 3-D (boxed: the largest shape by far).
+    View(Box<View>),
     /// Curves in a plane.
     Curves(Curves),
 }

@@ -7,7 +7,6 @@ mod mass;
 mod merge;
 mod models;
 mod new;
-mod plots;
 mod record;
 mod run;
 mod serves;

@@ -6,8 +6,12 @@
 
 use super::run::{progress_bar, signal_received};
 use anyhow::{Context, Result};
+use eom::InertiaTensor;
+use eom::models::euler_angles_of_quaternion;
+use eom::nalgebra::Matrix3;
 use eom::output::drawing::{
-    Attitude, Curves, Drawing, Mark, Profile, Reading, RigidBody, RunDrawings, Series, Track, View,
+    Attitude, Curves, Drawing, EnergyDrift, Mark, Orientation, Panels, Polhode, Profile, Reading,
+    RunDrawings, Series, Track,
 };
 use eom::output::text::printable;
 use eom::output::trajectory::{Columns, TrajectoryWriter};
@@ -16,8 +20,11 @@ use eom::run::{Row, Sink};
 use eom_cli::plots;
 use eom_cli::plots::curves::{Curve, write_curves};
 use eom_cli::plots::shapes::{
-    OutlinePlot, SeriesPlot, TrackPlot, write_attitude, write_profile, write_series, write_track,
+    OutlinePlot, SeriesPlot, TrackPlot, energy_drift, leaves_the_plane, track_not_drawn,
+    write_attitude, write_energy_drift, write_panels, write_polhode, write_profile, write_series,
+    write_track,
 };
+use eom_cli::plots::{Polhode as PolhodePlot, in_principal_axes};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
@@ -165,46 +172,117 @@ impl Recorder for FolderRecorder<'_> {
 fn retitled(drawing: &Drawing, titled: impl Fn(&str) -> String) -> Drawing {
     let mut drawing = drawing.clone();
     match &mut drawing {
-        Drawing::RigidBody(RigidBody { title, .. })
-        | Drawing::Track(Track { title, .. })
+        Drawing::Track(Track { title, .. })
         | Drawing::Series(Series { title, .. })
+        | Drawing::Panels(Panels { title, .. })
         | Drawing::Attitude(Attitude { title, .. })
         | Drawing::Profile(Profile { title, .. })
-        | Drawing::View(View { title, .. }) => *title = titled(title),
+        | Drawing::EnergyDrift(EnergyDrift { title })
+        | Drawing::Polhode(Polhode { title, .. }) => *title = titled(title),
+        Drawing::View(view) => view.title = titled(&view.title),
         Drawing::Curves(Curves { caption, .. }) => *caption = titled(caption),
     }
     drawing
 }
 
 /// Draws `drawing` of a run whose rows are `kept` into its `folder`: the files written, and
-/// each plot left out although the run has its data, with why.
+/// each plot left out although the run has its data, with why. A plot whose data says nothing
+/// (a level profile, an energy with no scale, a tensor no body has) is left out unsaid.
 fn draw(folder: &Path, drawing: &Drawing, kept: &Kept) -> Result<(Vec<PathBuf>, Vec<String>)> {
     let file = match drawing {
-        Drawing::RigidBody(body) => {
-            let (mut files, not_drawn) = super::plots::write(body, kept, folder)?;
-            files.push(super::view::write(body, kept, folder)?);
-            return Ok((files, not_drawn));
+        Drawing::Track(track) => {
+            let (across, up) = (kept.column(&track.across.0)?, kept.column(&track.up.0)?);
+            if let Some(why) = track_not_drawn(across, up) {
+                return Ok((Vec::new(), vec![why]));
+            }
+            Some(draw_track(folder, track, kept)?)
         }
-        Drawing::Track(track) => draw_track(folder, track, kept)?,
-        Drawing::Series(series) => draw_series(folder, series, kept)?,
-        Drawing::Attitude(attitude) => {
-            let degrees = attitude
-                .angles
-                .iter()
-                .map(|name| read(kept, name, Reading::Degrees))
+        Drawing::Series(series) => Some(draw_series(folder, series, kept)?),
+        Drawing::Panels(panels) => {
+            let columns = (panels.columns.iter())
+                .map(|name| Ok((name.as_str(), kept.column(name)?)))
                 .collect::<Result<Vec<_>>>()?;
+            let title = printable(&panels.title);
+            Some(write_panels(folder, &title, &kept.columns.time, &columns)?)
+        }
+        Drawing::Attitude(attitude) => {
+            let degrees = attitude_degrees(kept, &attitude.orientation)?;
             let [roll, pitch, yaw] = [0, 1, 2].map(|k| degrees[k].as_slice());
             let title = printable(&attitude.title);
-            write_attitude(folder, &title, &kept.columns.time, [roll, pitch, yaw])?
+            Some(write_attitude(
+                folder,
+                &title,
+                &kept.columns.time,
+                [roll, pitch, yaw],
+            )?)
         }
         Drawing::Profile(profile) => {
             let [x, y, z] = [0, 1, 2].map(|k| kept.column(&profile.position[k]));
-            write_profile(folder, &printable(&profile.title), (x?, y?, z?))?
+            let (x, y, z) = (x?, y?, z?);
+            let title = printable(&profile.title);
+            (profile.when_level || leaves_the_plane(x, y, z))
+                .then(|| write_profile(folder, &title, (x, y, z)))
+                .transpose()?
         }
-        Drawing::View(view) => super::view::write_drawn(folder, view, kept)?,
-        Drawing::Curves(curves) => draw_curves(folder, curves)?,
+        Drawing::EnergyDrift(drift) => {
+            let columns = &kept.columns;
+            let title = printable(&drift.title);
+            (energy_drift(&columns.energy, &columns.kinetic))
+                .map(|drift| write_energy_drift(folder, &title, &columns.time, &drift))
+                .transpose()?
+        }
+        Drawing::Polhode(polhode) => draw_polhode(folder, polhode, kept)?,
+        Drawing::View(view) => Some(super::view::write(folder, view, kept)?),
+        Drawing::Curves(curves) => Some(draw_curves(folder, curves)?),
     };
-    Ok((vec![file], Vec::new()))
+    Ok((file.into_iter().collect(), Vec::new()))
+}
+
+/// Roll, pitch and yaw in degrees of every row, as `orientation` reads them: a quaternion's
+/// turned into Euler angles (z–y–x), a heading's or a pitch's with the other two angles zero.
+fn attitude_degrees(kept: &Kept, orientation: &Orientation) -> Result<[Vec<f64>; 3]> {
+    let zero = || vec![0.0; kept.columns.time.len()];
+    let degrees = |name: &str| read(kept, name, Reading::Degrees);
+    Ok(match orientation {
+        Orientation::EulerAngles([phi, theta, psi]) => {
+            [degrees(phi)?, degrees(theta)?, degrees(psi)?]
+        }
+        Orientation::Heading(psi) => [zero(), zero(), degrees(psi)?],
+        Orientation::Pitch(theta) => [zero(), degrees(theta)?, zero()],
+        Orientation::Quaternion(names) | Orientation::QuaternionAsIs(names) => {
+            let [q0, q1, q2, q3] = [0, 1, 2, 3].map(|k| kept.column(&names[k]));
+            let q = [q0?, q1?, q2?, q3?];
+            let mut angles: [Vec<f64>; 3] = Default::default();
+            for row in 0..q[0].len() {
+                let value = euler_angles_of_quaternion(q.map(|column| column[row]));
+                for (angle, value) in angles.iter_mut().zip(value) {
+                    angle.push(value.to_degrees());
+                }
+            }
+            angles
+        }
+    })
+}
+
+/// `polhode.svg`, ω turned into the tensor's principal axes; none where the tensor is not a
+/// body's.
+fn draw_polhode(folder: &Path, polhode: &Polhode, kept: &Kept) -> Result<Option<PathBuf>> {
+    let inertia = polhode.spin.inertia_about_g;
+    let matrix = Matrix3::from_fn(|r, c| inertia[r][c]);
+    let Ok(tensor) = InertiaTensor::from_matrix(matrix) else {
+        return Ok(None);
+    };
+    let [p, q, r] = [0, 1, 2].map(|k| kept.column(&polhode.spin.omega[k]));
+    let (moments, [w1, w2, w3]) = in_principal_axes(&tensor, [p?, q?, r?]);
+    let plot = PolhodePlot {
+        moments,
+        omega: [&w1, &w2, &w3],
+    };
+    Ok(Some(write_polhode(
+        folder,
+        &printable(&polhode.title),
+        &plot,
+    )?))
 }
 
 /// The column `name` of `kept` as `reading` reads it.
@@ -288,4 +366,83 @@ fn draw_curves(folder: &Path, drawing: &Curves) -> Result<PathBuf> {
         curves: &curves,
     };
     Ok(write_curves(folder, &drawing.file, &plot)?)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use eom::nalgebra::UnitQuaternion;
+
+    /// Rows of the columns `names`, each given as its values.
+    fn kept(columns: &[(&str, Vec<f64>)]) -> Kept {
+        let rows = columns.first().map_or(0, |(_, values)| values.len());
+        Kept {
+            names: columns.iter().map(|(name, _)| (*name).to_owned()).collect(),
+            columns: Columns {
+                time: (0..rows).map(|row| row as f64).collect(),
+                state: columns.iter().map(|(_, values)| values.clone()).collect(),
+                energy: Vec::new(),
+                kinetic: Vec::new(),
+            },
+        }
+    }
+
+    /// A quaternion body's attitude is its quaternion's roll, pitch and yaw, whatever its
+    /// length (a run's quaternion drifts from unit length), and the same as the Euler
+    /// angles' of the same turn.
+    #[test]
+    fn a_quaternion_s_attitude_is_its_roll_pitch_and_yaw() {
+        let turns = [(0.3, -0.4, 1.1), (-1.2, 0.7, -2.9), (0.0, 0.0, 0.0)];
+        let quaternions = turns.map(|(r, p, y)| UnitQuaternion::from_euler_angles(r, p, y));
+        // Each row's quaternion off unit length by its own factor.
+        let scaled = |part: fn(&UnitQuaternion<f64>) -> f64| {
+            (quaternions.iter().zip([1.0, 1.0 + 1e-9, 0.5]))
+                .map(|(q, factor)| factor * part(q))
+                .collect::<Vec<_>>()
+        };
+        let q = kept(&[
+            ("q0", scaled(|q| q.w)),
+            ("q1", scaled(|q| q.i)),
+            ("q2", scaled(|q| q.j)),
+            ("q3", scaled(|q| q.k)),
+        ]);
+        let names = ["q0", "q1", "q2", "q3"].map(String::from);
+        let angle = |k: usize| turns.map(|turn| [turn.0, turn.1, turn.2][k]).to_vec();
+        let euler = kept(&[("phi", angle(0)), ("theta", angle(1)), ("psi", angle(2))]);
+        let from_euler = attitude_degrees(
+            &euler,
+            &Orientation::EulerAngles(["phi", "theta", "psi"].map(String::from)),
+        )
+        .unwrap();
+        for orientation in [
+            Orientation::Quaternion(names.clone()),
+            Orientation::QuaternionAsIs(names.clone()),
+        ] {
+            let degrees = attitude_degrees(&q, &orientation).unwrap();
+            for (k, turn) in turns.iter().enumerate() {
+                let expected = [turn.0, turn.1, turn.2].map(f64::to_degrees);
+                for angle in 0..3 {
+                    let (got, euler) = (degrees[angle][k], from_euler[angle][k]);
+                    assert!((got - expected[angle]).abs() < 1e-9, "{got} {expected:?}");
+                    assert!((got - euler).abs() < 1e-9, "{got} {euler}");
+                }
+            }
+        }
+    }
+
+    /// A heading turns about z alone, a pitch about y alone: the other angles are zero.
+    #[test]
+    fn a_heading_or_a_pitch_has_the_other_angles_zero() {
+        let rows = kept(&[("psi", vec![0.5, -1.0]), ("theta", vec![0.25, 0.0])]);
+        let heading = attitude_degrees(&rows, &Orientation::Heading("psi".into())).unwrap();
+        assert_eq!(heading[0], [0.0, 0.0]);
+        assert_eq!(heading[1], [0.0, 0.0]);
+        assert_eq!(heading[2], [0.5f64.to_degrees(), -(1.0f64.to_degrees())]);
+        let pitch = attitude_degrees(&rows, &Orientation::Pitch("theta".into())).unwrap();
+        assert_eq!(pitch[1], [0.25f64.to_degrees(), 0.0]);
+        assert_eq!([&pitch[0], &pitch[2]], [&[0.0, 0.0], &[0.0, 0.0]]);
+        // A column the run does not give is an error, not a plot of another.
+        let error = attitude_degrees(&rows, &Orientation::Heading("yaw".into())).unwrap_err();
+        assert!(error.to_string().contains("yaw"), "{error}");
+    }
 }

@@ -1,78 +1,273 @@
-//! The 3-D view of a run: the body's shape made from the scene, and the columns kept,
-//! handed to [`eom_cli::view`].
+//! The 3-D view of a run: the shape its kind says ([`View`]) made into what the page draws,
+//! moved by the columns it names, handed to [`eom_cli::view`].
 //!
-//! How each family is drawn, and from what:
+//! How each shape is made, and from what:
 //!
-//! - a spatial body: the uniform box with its mass and principal moments (4.20–4.21 turned
-//!   round), its sides along the principal axes (the inertia tensor's eigenvectors), so a box
-//!   of the same mass and moments turns as the body does; a body in water (buoyancy or
-//!   damping) a solid cylinder from the same moments, along the principal axis nearest
-//!   body x; ω and H = I ω drawn from G;
-//! - the heavy top: a cone from the pivot to a disc at G, its radius from I₃ = M R²/2;
-//! - the pendulum: its rod from the pivot to G and a bob at G;
-//! - a planar body: a plate (sides 2 : 1) with its mass and I_zz, or for a body about
-//!   midship a hull of length 4 √(I_zz/M) (a radius of gyration of L/4) and a beam of L/7.
+//! - a hull's waterline, of the length and beam given; an aircraft, of the size given;
+//! - the uniform box with a body's mass and principal moments (4.20–4.21 turned round), its
+//!   sides along the principal axes (the inertia tensor's eigenvectors), so a box of the same
+//!   mass and moments turns as the body does;
+//! - the solid cylinder from the same moments, along the principal axis nearest body x (the
+//!   box where no cylinder has them);
+//! - a top: a cone from the pivot to a disc at G, its radius from I₃ = M R²/2;
+//! - a pendulum: its rod from the pivot to G and a bob at G;
+//! - a plate (sides 2 : 1) with a body's mass and I_zz.
 //!
-//! Any other run's view is drawn as its kind says it ([`View`]): a waterline of the length and
-//! beam given, the solid cylinder of a body's mass and principal moments, or an aircraft of
-//! the size given, moved by the columns it names. The panel of the page says which of these
-//! it drew, and what it assumed.
+//! The panel of the page says which of these it drew, and what it assumed. Where the kind
+//! says a spin, ω and H = I ω are drawn from G; where its trail is the tip of an axis while
+//! the body stays put, or its floor under the path, the shape's size sets how far.
 
 use super::record::Kept;
 use anyhow::{Context, Result};
 use eom::Short;
 use eom::models::state_with_unit;
-use eom::models::{Family, Kinematics};
 use eom::nalgebra::{Matrix3, UnitQuaternion, Vector3};
-use eom::output::drawing::{BodyShape, Coordinate, Orientation, RigidBody, Shape as Drawn, View};
-use eom::output::trajectory::Columns;
+use eom::output::drawing::{
+    Coordinate, Ground, Orientation, Shape as Drawn, Solid, Spin, Trail, View,
+};
 use eom_cli::view::{
     CameraTarget, Shape, SpaceAxes, Vectors, ViewInput, box_sides, cylinder_size, write_view,
 };
 use std::path::{Path, PathBuf};
 
-/// Writes `view.html` of a rigid body's run into `out`.
-pub fn write(body: &RigidBody, kept: &Kept, out: &Path) -> Result<PathBuf> {
-    let columns = &kept.columns;
-    let readout: Vec<(String, &[f64])> = (kept.names.iter())
-        .zip(&columns.state)
-        .map(|(name, values)| (readout_label(name), values.as_slice()))
-        .collect();
-    let matrix = |rows: [[f64; 3]; 3]| Matrix3::from_fn(|r, c| rows[r][c]);
-    let mut input = match body.shape {
-        BodyShape::Spatial {
-            mass,
-            inertia,
-            in_water,
-            ..
-        } => spatial(body, columns, mass, matrix(inertia), in_water),
-        BodyShape::Top { mass, inertia, h } => top(body, columns, mass, matrix(inertia), h),
-        BodyShape::Pendulum { h, i0, mass } => pendulum(body, columns, h, i0, mass),
-        BodyShape::Planar { mass, izz } => planar(body, columns, mass, izz),
+/// Writes the `view.html` of a run into `out`: the shape its kind says, moved by the columns
+/// it names, its readout those columns (every column where it names none), each labelled with
+/// its unit.
+pub fn write(out: &Path, view: &View, kept: &Kept) -> Result<PathBuf> {
+    let made = made(&view.shape);
+    let mut notes = made.notes;
+    notes.extend(view.notes.iter().cloned());
+    let n = kept.columns.time.len();
+    let coordinate = |c: &Coordinate| -> Result<Vec<f64>> {
+        Ok(match c {
+            Coordinate::Column(name) => kept.column(name)?.to_vec(),
+            Coordinate::Negated(name) => kept.column(name)?.iter().map(|v| -v).collect(),
+            Coordinate::Zero => vec![0.0; n],
+        })
     };
-    input.readout = readout;
+    let [x, y, z] = &view.position;
+    let position = [coordinate(x)?, coordinate(y)?, coordinate(z)?];
+    let shown: Vec<&str> = match &view.readout {
+        Some(names) => names.iter().map(String::as_str).collect(),
+        None => kept.names.iter().map(String::as_str).collect(),
+    };
+    let readout = (shown.iter())
+        .map(|name| Ok((readout_label(name), kept.column(name)?)))
+        .collect::<Result<Vec<_>>>()?;
+    let vectors = match &view.spin {
+        Some(spin) => Some(vectors(spin, &shown)?),
+        None => None,
+    };
+    let trail = match &view.trail {
+        Trail::Point(at, name) => (*at, name.clone()),
+        Trail::TipWhereStill { axis, reference } => {
+            tip_where_still(&position, made.size, *axis, reference)
+        }
+    };
+    let (floor, water) = match view.ground {
+        Ground::Water => (0.0, true),
+        Ground::Floor(z) => (z, false),
+        Ground::BelowPath => (deepest(&position[2]) + 0.8 * made.size, false),
+    };
+    let input = ViewInput {
+        title: &view.title,
+        shape: made.shape,
+        axes: match view.z_up {
+            true => SpaceAxes::ZUp,
+            false => SpaceAxes::ZDown,
+        },
+        time: &kept.columns.time,
+        position,
+        attitude: attitude(&view.orientation, kept)?,
+        readout,
+        vectors,
+        trail,
+        camera: match view.camera {
+            Some(point) => CameraTarget::Fixed(point),
+            None => CameraTarget::Follow,
+        },
+        floor,
+        water,
+        notes,
+    };
     write_view(out, &input).with_context(|| format!("writing the view into {}", out.display()))
 }
 
-/// The body's initial state entry `k` (0 where it has none).
-fn initial(body: &RigidBody, k: usize) -> f64 {
-    body.initial.get(k).copied().unwrap_or(0.0)
+/// A shape as the page draws it: its size (its largest extent, in the rows' length unit) and
+/// what the page says of how it was made.
+struct Made {
+    shape: Shape,
+    size: f64,
+    notes: Vec<String>,
+}
+
+/// The page's shape of a drawn one.
+fn made(shape: &Drawn) -> Made {
+    let plain = |shape, size| Made {
+        shape,
+        size,
+        notes: Vec::new(),
+    };
+    match *shape {
+        Drawn::Waterline { length, beam } => plain(Shape::Waterline { length, beam }, length),
+        Drawn::Aircraft(airframe) => {
+            let size = airframe.length.max(airframe.span);
+            plain(Shape::Aircraft(airframe), size)
+        }
+        Drawn::Cylinder(solid) => {
+            let (moments, axes) = principal(matrix(solid.inertia_about_g));
+            cylinder(solid.mass, moments, axes).unwrap_or_else(|| uniform_box(solid))
+        }
+        Drawn::Box(solid) => uniform_box(solid),
+        Drawn::Top { mass, axial, h } => top(mass, axial, h),
+        Drawn::Pendulum { h, i0, mass } => pendulum(h, i0, mass),
+        Drawn::Plate { mass, izz } => plate(mass, izz),
+    }
+}
+
+/// A tensor's rows as a matrix.
+fn matrix(rows: [[f64; 3]; 3]) -> Matrix3<f64> {
+    Matrix3::from_fn(|r, c| rows[r][c])
+}
+
+/// The uniform box with a body's mass and principal moments, along its principal axes.
+fn uniform_box(solid: Solid) -> Made {
+    let (moments, axes) = principal(matrix(solid.inertia_about_g));
+    let sides = box_sides(solid.mass, moments);
+    let note = format!(
+        "the uniform box of mass {} kg with the principal moments {} kg m² \
+         (sides {} × {} × {} m), along the principal axes",
+        Short(solid.mass),
+        moments.map(|m| Short(m).to_string()).join(", "),
+        Short(sides[0]),
+        Short(sides[1]),
+        Short(sides[2])
+    );
+    Made {
+        shape: Shape::Box {
+            sides,
+            axes: rows(&axes),
+        },
+        size: sides.iter().fold(0.0f64, |m, s| m.max(*s)),
+        notes: vec![note],
+    }
+}
+
+/// A top: a cone from the pivot to a disc at G, the disc's radius from I₃ = M R²/2.
+fn top(mass: f64, axial: f64, h: f64) -> Made {
+    let radius = (2.0 * axial / mass).sqrt().clamp(0.2 * h, 1.5 * h);
+    let note = format!(
+        "a cone from the pivot to a disc at G, h = {} m above it along the body z-axis; \
+         the disc's radius {} m from I₃ = M R²/2",
+        Short(h),
+        Short(radius)
+    );
+    Made {
+        shape: Shape::Top { h, radius },
+        size: h.max(2.0 * radius),
+        notes: vec![note],
+    }
+}
+
+/// A pendulum: a rod from the pivot down to G, a bob at G.
+fn pendulum(h: f64, i0: f64, mass: f64) -> Made {
+    // A sphere of radius r about G has I_G = (2/5) M r²; drawn no larger than h/3.
+    let i_g = (i0 - mass * h * h).max(0.0);
+    let bob = (2.5 * i_g / mass).sqrt().min(h / 3.0).max(0.05 * h);
+    let note = format!(
+        "the rod from the pivot to G, h = {} m; θ turns it about the pivot's y-axis; the bob \
+         at G is drawn {} m in radius",
+        Short(h),
+        Short(bob)
+    );
+    Made {
+        shape: Shape::Pendulum { length: h, bob },
+        size: h + bob,
+        notes: vec![note],
+    }
+}
+
+/// A plate of sides 2 : 1 with a body's mass and I_zz.
+fn plate(mass: f64, izz: f64) -> Made {
+    // a² + b² = 12 I_zz/M with a = 2b.
+    let b = (12.0 * izz / (5.0 * mass)).sqrt();
+    let note = format!(
+        "a plate of {} × {} m (sides 2 : 1 assumed) with the mass and I_zz",
+        Short(2.0 * b),
+        Short(b)
+    );
+    Made {
+        shape: Shape::Box {
+            sides: [2.0 * b, b, 0.1 * b],
+            axes: rows(&Matrix3::identity()),
+        },
+        size: 2.0 * b,
+        notes: vec![note],
+    }
+}
+
+/// The attitude quaternion of every row, as `orientation` reads it.
+fn attitude(orientation: &Orientation, kept: &Kept) -> Result<[Vec<f64>; 4]> {
+    let quaternion = |names: &[String; 4]| -> Result<[&[f64]; 4]> {
+        let [q0, q1, q2, q3] = [0, 1, 2, 3].map(|k| kept.column(&names[k]));
+        Ok([q0?, q1?, q2?, q3?])
+    };
+    Ok(match orientation {
+        Orientation::Heading(psi) => about_axis(kept.column(psi)?, 2),
+        Orientation::Pitch(theta) => about_axis(kept.column(theta)?, 1),
+        Orientation::Quaternion(names) => unit(quaternion(names)?),
+        Orientation::QuaternionAsIs(names) => quaternion(names)?.map(<[f64]>::to_vec),
+        Orientation::EulerAngles(names) => {
+            let [phi, theta, psi] = [0, 1, 2].map(|k| kept.column(&names[k]));
+            from_euler_angles([phi?, theta?, psi?])
+        }
+    })
+}
+
+/// ω and H as the page draws them: the readout's columns of the rates (`shown` the columns the
+/// readout shows) and the tensor.
+fn vectors(spin: &Spin, shown: &[&str]) -> Result<Vectors> {
+    let index = |name: &String| {
+        (shown.iter().position(|shown| shown == name)).with_context(|| {
+            format!("the view draws ω from the column {name}, which its readout does not show")
+        })
+    };
+    let [p, q, r] = [0, 1, 2].map(|k| index(&spin.omega[k]));
+    Ok(Vectors {
+        omega: [p?, q?, r?],
+        inertia: spin.inertia_about_g,
+    })
+}
+
+/// The trail of a body whose reference point stays put (moves less than half its `size`: a
+/// free spin) at the tip of body axis `axis`, three quarters of its size out; else of the
+/// reference point.
+fn tip_where_still(
+    position: &[Vec<f64>; 3],
+    size: f64,
+    axis: usize,
+    reference: &str,
+) -> ([f64; 3], String) {
+    let path = extent(&[&position[0], &position[1], &position[2]]);
+    if path < 0.5 * size {
+        let mut tip = [0.0; 3];
+        tip[axis] = 0.75 * size;
+        (tip, format!("tip of body {}", ["x", "y", "z"][axis]))
+    } else {
+        ([0.0; 3], reference.to_owned())
+    }
+}
+
+/// The largest finite value of a column (−∞ for none): the deepest of a path, z down.
+fn deepest(z: &[f64]) -> f64 {
+    (z.iter())
+        .filter(|z| z.is_finite())
+        .fold(f64::NEG_INFINITY, |m, z| m.max(*z))
 }
 
 /// A matrix as rows.
 fn rows(m: &Matrix3<f64>) -> [[f64; 3]; 3] {
     [0, 1, 2].map(|r| [m[(r, 0)], m[(r, 1)], m[(r, 2)]])
-}
-
-/// The attitude quaternion of every row, from the state entries at `first` on (0 for an
-/// entry the state does not have).
-fn quaternions(columns: &Columns, kinematics: Option<Kinematics>, first: usize) -> [Vec<f64>; 4] {
-    let zeros = vec![0.0; columns.time.len()];
-    let entry = |k: usize| (columns.state.get(first + k)).map_or(zeros.as_slice(), Vec::as_slice);
-    match kinematics {
-        Some(Kinematics::Euler) => from_euler_angles([entry(0), entry(1), entry(2)]),
-        _ => [0, 1, 2, 3].map(|k| entry(k).to_vec()),
-    }
 }
 
 /// A quaternion column set of a turn about one body axis by the angles given.
@@ -121,88 +316,9 @@ fn principal(inertia: Matrix3<f64>) -> ([f64; 3], Matrix3<f64>) {
     ([moments[0], moments[1], moments[2]], axes)
 }
 
-/// A spatial body: a box (or in water a cylinder) in its principal axes.
-fn spatial<'a>(
-    body: &'a RigidBody,
-    columns: &'a Columns,
-    mass: f64,
-    inertia: Matrix3<f64>,
-    water: bool,
-) -> ViewInput<'a> {
-    let (moments, axes) = principal(inertia);
-    let mut notes = Vec::new();
-    let cylinder = water.then(|| cylinder(mass, moments, axes)).flatten();
-    let (shape, size) = match cylinder {
-        Some((shape, size, note)) => {
-            notes.push(note);
-            (shape, size)
-        }
-        None => {
-            let sides = box_sides(mass, moments);
-            notes.push(format!(
-                "the uniform box of mass {} kg with the principal moments {} kg m² \
-                 (sides {} × {} × {} m), along the principal axes",
-                Short(mass),
-                moments.map(|m| Short(m).to_string()).join(", "),
-                Short(sides[0]),
-                Short(sides[1]),
-                Short(sides[2])
-            ));
-            let size = sides.iter().fold(0.0f64, |m, s| m.max(*s));
-            (
-                Shape::Box {
-                    sides,
-                    axes: rows(&axes),
-                },
-                size,
-            )
-        }
-    };
-    let position = [6, 7, 8].map(|k| columns.state[k].clone());
-    let path = extent(&[&position[0], &position[1], &position[2]]);
-    // A body whose G stays put (a free spin) trails the tip of the axis it spins most about.
-    let trail = if path < 0.5 * size {
-        let spin = (3..6)
-            .max_by(|&a, &b| initial(body, a).abs().total_cmp(&initial(body, b).abs()))
-            .unwrap_or(3)
-            - 3;
-        let mut tip = [0.0; 3];
-        tip[spin] = 0.75 * size;
-        (tip, format!("tip of body {}", ["x", "y", "z"][spin]))
-    } else {
-        ([0.0; 3], "G".to_string())
-    };
-    let deepest = position[2]
-        .iter()
-        .filter(|z| z.is_finite())
-        .fold(f64::NEG_INFINITY, |m, z| m.max(*z));
-    let floor = if water { 0.0 } else { deepest + 0.8 * size };
-    if water {
-        notes.push("the blue plane is the water's surface, z = 0".into());
-    }
-    ViewInput {
-        title: &body.title,
-        shape,
-        axes: SpaceAxes::ZDown,
-        time: &columns.time,
-        position,
-        attitude: quaternions(columns, body.kinematics, 9),
-        readout: Vec::new(),
-        vectors: Some(Vectors {
-            omega: [3, 4, 5],
-            inertia: rows(&inertia),
-        }),
-        trail,
-        camera: CameraTarget::Follow,
-        floor,
-        water,
-        notes,
-    }
-}
-
 /// The solid cylinder with a body's mass and moments, along the principal axis nearest body x;
 /// `None` where no cylinder has them.
-fn cylinder(mass: f64, moments: [f64; 3], axes: Matrix3<f64>) -> Option<(Shape, f64, String)> {
+fn cylinder(mass: f64, moments: [f64; 3], axes: Matrix3<f64>) -> Option<Made> {
     let along = (0..3).max_by(|&a, &b| axes[(0, a)].abs().total_cmp(&axes[(0, b)].abs()))?;
     let others: Vec<usize> = (0..3).filter(|&k| k != along).collect();
     let transverse = (moments[others[0]] + moments[others[1]]) / 2.0;
@@ -222,213 +338,14 @@ fn cylinder(mass: f64, moments: [f64; 3], axes: Matrix3<f64>) -> Option<(Shape, 
         Short(length),
         Short(diameter)
     );
-    let size = length.max(diameter);
-    Some((
-        Shape::Cylinder {
+    Some(Made {
+        shape: Shape::Cylinder {
             length,
             diameter,
             axes: rows(&frame),
         },
-        size,
-        note,
-    ))
-}
-
-/// The heavy top: a cone from the pivot to a disc at G, Z up.
-fn top<'a>(
-    body: &'a RigidBody,
-    columns: &'a Columns,
-    mass: f64,
-    inertia: Matrix3<f64>,
-    h: f64,
-) -> ViewInput<'a> {
-    let n = columns.time.len();
-    let axial = inertia[(2, 2)];
-    let radius = (2.0 * axial / mass).sqrt().clamp(0.2 * h, 1.5 * h);
-    let notes = vec![format!(
-        "a cone from the pivot to a disc at G, h = {} m above it along the body z-axis; \
-         the disc's radius {} m from I₃ = M R²/2",
-        Short(h),
-        Short(radius)
-    )];
-    ViewInput {
-        title: &body.title,
-        shape: Shape::Top { h, radius },
-        axes: SpaceAxes::ZUp,
-        time: &columns.time,
-        position: [vec![0.0; n], vec![0.0; n], vec![0.0; n]],
-        attitude: quaternions(columns, body.kinematics, 3),
-        readout: Vec::new(),
-        vectors: Some(Vectors {
-            omega: [0, 1, 2],
-            inertia: rows(&inertia),
-        }),
-        trail: ([0.0, 0.0, h], "G".into()),
-        camera: CameraTarget::Fixed([0.0, 0.0, 0.6 * h]),
-        floor: 0.0,
-        water: false,
-        notes,
-    }
-}
-
-/// The pendulum: a rod from the pivot down to G, swinging in the x–z plane.
-fn pendulum<'a>(
-    body: &'a RigidBody,
-    columns: &'a Columns,
-    h: f64,
-    i0: f64,
-    mass: f64,
-) -> ViewInput<'a> {
-    let n = columns.time.len();
-    // A sphere of radius r about G has I_G = (2/5) M r²; drawn no larger than h/3.
-    let i_g = (i0 - mass * h * h).max(0.0);
-    let bob = (2.5 * i_g / mass).sqrt().min(h / 3.0).max(0.05 * h);
-    let notes = vec![format!(
-        "the rod from the pivot to G, h = {} m; θ turns it about the pivot's y-axis; the bob \
-         at G is drawn {} m in radius",
-        Short(h),
-        Short(bob)
-    )];
-    ViewInput {
-        title: &body.title,
-        shape: Shape::Pendulum { length: h, bob },
-        axes: SpaceAxes::ZDown,
-        time: &columns.time,
-        position: [vec![0.0; n], vec![0.0; n], vec![0.0; n]],
-        attitude: about_axis(&columns.state[0], 1),
-        readout: Vec::new(),
-        vectors: None,
-        trail: ([0.0, 0.0, h], "G".into()),
-        camera: CameraTarget::Fixed([0.0; 3]),
-        floor: 1.4 * h,
-        water: false,
-        notes,
-    }
-}
-
-/// A planar body: a hull about midship, else a plate.
-fn planar<'a>(body: &'a RigidBody, columns: &'a Columns, mass: f64, izz: f64) -> ViewInput<'a> {
-    let family = body.family;
-    let (x, y, psi) = match family {
-        Family::PlanarSpaceFixed => (0, 1, 2),
-        _ => (3, 4, 5),
-    };
-    let n = columns.time.len();
-    let (shape, water, note) = if family == Family::PlanarMidship {
-        let length = 4.0 * (izz / mass).sqrt();
-        let beam = length / Drawn::ASSUMED_LENGTH_OVER_BEAM;
-        let note = format!(
-            "a hull of length {} m (a radius of gyration of L/4 about G) and beam {} m \
-             (L/B = {} assumed)",
-            Short(length),
-            Short(beam),
-            Drawn::ASSUMED_LENGTH_OVER_BEAM
-        );
-        (Shape::Waterline { length, beam }, true, note)
-    } else {
-        // a² + b² = 12 I_zz/M with a = 2b.
-        let b = (12.0 * izz / (5.0 * mass)).sqrt();
-        let note = format!(
-            "a plate of {} × {} m (sides 2 : 1 assumed) with the mass and I_zz",
-            Short(2.0 * b),
-            Short(b)
-        );
-        let shape = Shape::Box {
-            sides: [2.0 * b, b, 0.1 * b],
-            axes: rows(&Matrix3::identity()),
-        };
-        (shape, false, note)
-    };
-    ViewInput {
-        title: &body.title,
-        shape,
-        axes: SpaceAxes::ZDown,
-        time: &columns.time,
-        position: [
-            columns.state[x].clone(),
-            columns.state[y].clone(),
-            vec![0.0; n],
-        ],
-        attitude: about_axis(&columns.state[psi], 2),
-        readout: Vec::new(),
-        vectors: None,
-        trail: ([0.0; 3], "the body origin".into()),
-        camera: CameraTarget::Follow,
-        floor: 0.0,
-        water,
+        size: length.max(diameter),
         notes: vec![note],
-    }
-}
-
-/// Writes the `view.html` of a run whose kind says its view ([`View`]) into `out`: its shape
-/// moved by the columns it names, its readout those columns (every column where it names
-/// none), each labelled with its unit.
-pub fn write_drawn(out: &Path, view: &View, kept: &Kept) -> Result<PathBuf> {
-    let (shape, mut notes) = drawn_shape(&view.shape)?;
-    notes.extend(view.notes.iter().cloned());
-    let n = kept.columns.time.len();
-    let coordinate = |c: &Coordinate| -> Result<Vec<f64>> {
-        Ok(match c {
-            Coordinate::Column(name) => kept.column(name)?.to_vec(),
-            Coordinate::Negated(name) => kept.column(name)?.iter().map(|v| -v).collect(),
-            Coordinate::Zero => vec![0.0; n],
-        })
-    };
-    let [x, y, z] = &view.position;
-    let attitude = match &view.orientation {
-        Orientation::Heading(psi) => about_axis(kept.column(psi)?, 2),
-        Orientation::Quaternion(names) => {
-            let [q0, q1, q2, q3] = [0, 1, 2, 3].map(|k| kept.column(&names[k]));
-            unit([q0?, q1?, q2?, q3?])
-        }
-        Orientation::EulerAngles(names) => {
-            let [phi, theta, psi] = [0, 1, 2].map(|k| kept.column(&names[k]));
-            from_euler_angles([phi?, theta?, psi?])
-        }
-    };
-    let readout = match &view.readout {
-        Some(names) => (names.iter())
-            .map(|name| Ok((readout_label(name), kept.column(name)?)))
-            .collect::<Result<Vec<_>>>()?,
-        None => (kept.names.iter().zip(&kept.columns.state))
-            .map(|(name, values)| (readout_label(name), values.as_slice()))
-            .collect(),
-    };
-    let input = ViewInput {
-        title: &view.title,
-        shape,
-        axes: SpaceAxes::ZDown,
-        time: &kept.columns.time,
-        position: [coordinate(x)?, coordinate(y)?, coordinate(z)?],
-        attitude,
-        readout,
-        vectors: None,
-        trail: ([0.0; 3], view.trail.clone()),
-        camera: CameraTarget::Follow,
-        floor: 0.0,
-        water: view.water,
-        notes,
-    };
-    write_view(out, &input).with_context(|| format!("writing the view into {}", out.display()))
-}
-
-/// The view's shape of a drawn one, with what the page says of how it was made.
-fn drawn_shape(shape: &Drawn) -> Result<(Shape, Vec<String>)> {
-    Ok(match *shape {
-        Drawn::Waterline { length, beam } => (Shape::Waterline { length, beam }, Vec::new()),
-        Drawn::Cylinder(solid) => {
-            let inertia = Matrix3::from_fn(|r, c| solid.inertia_about_g[r][c]);
-            let (moments, axes) = principal(inertia);
-            match cylinder(solid.mass, moments, axes) {
-                Some((shape, _, note)) => (shape, vec![note]),
-                None => anyhow::bail!(
-                    "no solid cylinder has the body's mass {} kg and principal moments {:?} kg m²",
-                    Short(solid.mass),
-                    moments
-                ),
-            }
-        }
-        Drawn::Aircraft(airframe) => (Shape::Aircraft(airframe), Vec::new()),
     })
 }
 
@@ -479,18 +396,55 @@ mod tests {
 
     #[test]
     fn euler_angles_and_the_quaternion_give_one_rotation() {
-        let columns = Columns {
-            time: vec![0.0],
-            state: [0.3, -0.4, 1.1].iter().map(|v| vec![*v]).collect(),
-            energy: vec![],
-            kinetic: vec![],
-        };
-        let q = quaternions(&columns, Some(Kinematics::Euler), 0);
+        let q = from_euler_angles([&[0.3], &[-0.4], &[1.1]]);
         let from_q = UnitQuaternion::from_quaternion(eom::nalgebra::Quaternion::new(
             q[0][0], q[1][0], q[2][0], q[3][0],
         ))
         .to_rotation_matrix();
         let from_euler = Rotation3::from_euler_angles(0.3, -0.4, 1.1);
         assert!((from_q.matrix() - from_euler.matrix()).abs().max() < 1e-12);
+    }
+
+    /// A body that stays put (a free spin) trails the tip of the axis it spins about, three
+    /// quarters of its size out; one that moves half its size or more, its reference point.
+    #[test]
+    fn a_body_that_stays_put_trails_the_tip_of_its_axis() {
+        let path = |end: f64| [vec![0.0, end], vec![0.0, 0.0], vec![0.0, 0.0]];
+        assert_eq!(
+            tip_where_still(&path(0.9), 2.0, 2, "G"),
+            ([0.0, 0.0, 1.5], "tip of body z".to_owned())
+        );
+        assert_eq!(
+            tip_where_still(&path(1.0), 2.0, 2, "G"),
+            ([0.0; 3], "G".to_owned())
+        );
+    }
+
+    /// A flat disc has no solid cylinder of its moments (L² = 0): it is drawn as its box.
+    #[test]
+    fn a_cylinder_no_solid_has_is_drawn_as_the_box() {
+        let disc = Solid {
+            mass: 1.0,
+            inertia_about_g: [[2.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+        };
+        let drawn = made(&Drawn::Cylinder(disc));
+        assert!(
+            matches!(drawn.shape, Shape::Box { .. }),
+            "{:?}",
+            drawn.shape
+        );
+        assert!(
+            drawn.notes[0].starts_with("the uniform box"),
+            "{:?}",
+            drawn.notes
+        );
+        let rod = Solid {
+            inertia_about_g: [[1.0, 0.0, 0.0], [0.0, 4.0, 0.0], [0.0, 0.0, 4.0]],
+            ..disc
+        };
+        assert!(matches!(
+            made(&Drawn::Cylinder(rod)).shape,
+            Shape::Cylinder { .. }
+        ));
     }
 }

@@ -1,5 +1,5 @@
-//! The SVG plots of a run: the state's time series, the attitude, the track and the energy
-//! drift, drawn with plotters' SVG backend from columns sampled at the same times.
+//! The SVG plots of a run: the state's time series, the attitude, the track, the profile, the
+//! energy drift and the polhode, drawn with plotters' SVG backend from columns sampled at the same times.
 //!
 //! Three choices shape this module:
 //!
@@ -26,15 +26,15 @@
 //! value axis labelled with its unit, over one time range (stacked for up to four components,
 //! else two to a row); a component zero for the whole run is named in the caption instead
 //! of given a panel; `attitude.svg` has roll, pitch and yaw on one panel with a legend, made
-//! continuous so that a tumbling body's angles do not wrap; `track.svg` has y
-//! against x at one scale on both axes, the start a ring and the end a dot (a track that is one
-//! point is said to be in its caption); `profile.svg`, where a spatial body's motion leaves the
-//! horizontal plane, its height against the distance run (see `profile.rs`); `polhode.svg`, for a
-//! body turning free of moments, ω in principal axes on the energy and momentum ellipsoids
-//! (see `polhode.rs`); `energy.svg` has
-//! the relative drift on a symmetric logarithmic axis, `sign(d)·log₁₀(1 + |d|/10⁻¹⁶)`: linear
-//! through zero within round-off, a decade per unit above it, so that a drift of 10⁻¹⁴
-//! and one of 10⁻³ both read on the same axis, with their sign.
+//! continuous so that a tumbling body's angles do not wrap; `track.svg` has a track in a plane
+//! at one scale on both axes, the start a ring and the end a dot (a track that is one point to
+//! round-off is not drawn, and [`shapes::track_not_drawn`] says so); `profile.svg` a track in
+//! space, its height against the distance run (see `profile.rs`); `polhode.svg`, for a body
+//! turning free of moments, ω in principal axes on the energy and momentum ellipsoids (see
+//! `polhode.rs`); `energy.svg` has the relative drift on a symmetric logarithmic axis,
+//! `sign(d)·log₁₀(1 + |d|/10⁻¹⁶)`: linear through zero within round-off, a decade per unit
+//! above it, so that a drift of 10⁻¹⁴ and one of 10⁻³ both read on the same axis, with their
+//! sign.
 //!
 //! Non-finite values (NaN, ±∞) are skipped: a sample whose time or value is not finite is not
 //! drawn, and the line joins its finite neighbours across it; the axis ranges are taken from
@@ -44,16 +44,18 @@
 //! - **Sub-pixel lines.** plotters' SVG backend writes whole pixels; the data lines are
 //!   written by [`precise`] with two decimals, so that curves are smooth when zoomed.
 //!
-//! A title is drawn [`printable`]: XML cannot hold most control characters (see
+//! A title is drawn as it is handed in, which the caller makes
+//! [`printable`](eom::output::text::printable): XML cannot hold most control characters (see
 //! [`text`](eom::output::text)).
 //!
 //! The output is deterministic: the same input gives the same bytes (the SVG holds no
 //! timestamp, and every coordinate is written to a fixed number of decimals).
 //!
-//! Here: the input, the errors, and writing each plot atomically. `scale` decides which
-//! samples are drawn and where the axes run; `series`, `track`, `profile`, `polhode` and
-//! `energy` draw the plots; `shapes` draws the library's drawing shapes from them (a track with
-//! an outline along it, a series, an attitude, a profile), `poles` a linear model's eigenvalues,
+//! Here: the errors, and writing each plot atomically. `scale` decides which samples are drawn
+//! and where the axes run; `series`, `track`, `profile`, `polhode` and `energy` draw the plots;
+//! `shapes` draws the library's drawing shapes from them (a track with an outline along it, a
+//! series, the state's panels, an attitude, a profile, the energy drift, a polhode), `poles` a
+//! linear model's eigenvalues,
 //! `curves` one quantity against another (a spiral's r–δ curve, a rudder sweep's diameters),
 //! `distributions` a Monte Carlo's figures and pass rates.
 
@@ -65,8 +67,6 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use thiserror::Error;
-
-use eom::output::text::printable;
 
 pub mod curves;
 pub mod distributions;
@@ -80,39 +80,9 @@ mod series;
 pub mod shapes;
 mod track;
 
-use energy::draw_energy;
-use polhode::draw_polhode;
 pub use polhode::{Polhode, in_principal_axes};
 use precise::Overlay;
-use profile::{draw_profile, leaves_the_plane};
-use series::{draw_attitude, draw_state};
 pub use track::Mark;
-use track::draw_track;
-
-/// What a run hands to the plots: columns sampled at the same times.
-///
-/// Every column has one value per entry of [`time`](Self::time); a column of another length
-/// is an error ([`PlotError::Length`]).
-pub struct PlotInput<'a> {
-    /// The scene's title, for the plot titles.
-    pub title: &'a str,
-    /// The sample times, ascending.
-    pub time: &'a [f64],
-    /// Every state component, named as trajectory.csv names it without its unit (`u`,
-    /// `theta_dot`, `q0`, …).
-    pub state: Vec<(&'a str, &'a [f64])>,
-    /// Roll, pitch and yaw in degrees, where the model has an attitude.
-    pub attitude_deg: Option<[&'a [f64]; 3]>,
-    /// The track (x, y) in space axes, where the model has a position in the plane.
-    pub track: Option<(&'a [f64], &'a [f64])>,
-    /// z in space axes (down), where the model has a position in space: with the track, the
-    /// profile where the motion leaves the horizontal plane.
-    pub depth: Option<&'a [f64]>,
-    /// The relative energy drift (E − E₀)/|E₀| at each time, where the run has an energy.
-    pub energy_drift: Option<&'a [f64]>,
-    /// ω in principal axes, where the body turns free of moments about G.
-    pub polhode: Option<Polhode<'a>>,
-}
 
 /// Why a plot could not be drawn or written: each variant names the file.
 #[derive(Debug, Error)]
@@ -161,120 +131,8 @@ const ENERGY: &str = "energy.svg";
 const POLHODE: &str = "polhode.svg";
 /// The file of the profile plot.
 const PROFILE: &str = "profile.svg";
-/// Every file [`write_plots`] may write, for the output folder's manifest.
+/// Every file of a fixed name the [`shapes`] may write, for the output folder's manifest.
 pub const PLOT_FILES: [&str; 6] = [STATE, ATTITUDE, TRACK, ENERGY, POLHODE, PROFILE];
-
-/// Draws every plot the input has data for into `dir` and returns the files written:
-/// `state.svg`, `attitude.svg`, `track.svg`, `energy.svg`, `polhode.svg`, `profile.svg`.
-///
-/// `state.svg` is written when the input has a state component, `track.svg` when it has a
-/// track that is more than one point (see [`not_drawn`]), `profile.svg` when the track
-/// and the depth leave the horizontal plane (z varies by more than 1 % of the larger of the x
-/// and y spans), the others when their `Option`
-/// is `Some`; each replaces a file of the same name. `dir` must exist. Every column's
-/// length is checked before anything is drawn, so a malformed input writes no file.
-pub fn write_plots(dir: &Path, input: &PlotInput) -> Result<Vec<PathBuf>, PlotError> {
-    check_lengths(dir, input)?;
-    // The title as XML can hold it (see `output::text`).
-    let title = printable(input.title);
-    let input = &PlotInput {
-        title: &title,
-        state: input.state.clone(),
-        ..*input
-    };
-    let mut written = Vec::new();
-    if !input.state.is_empty() {
-        written.push(emit(dir, STATE, |svg| draw_state(svg, input))?);
-    }
-    if let Some(angles) = input.attitude_deg {
-        written.push(emit(dir, ATTITUDE, |svg| {
-            draw_attitude(svg, input.title, input.time, angles)
-        })?);
-    }
-    if let Some((x, y)) = input.track
-        && track::stays_at(x, y).is_none()
-    {
-        let caption = format!("{}: track in space axes", input.title);
-        let axes = ("x [m]", "y [m]");
-        written.push(emit(dir, TRACK, |svg| {
-            draw_track(svg, &caption, axes, (x, y), &[], ("", &[]))
-        })?);
-    }
-    if let Some(drift) = input.energy_drift {
-        written.push(emit(dir, ENERGY, |svg| {
-            draw_energy(svg, input.title, input.time, drift)
-        })?);
-    }
-    if let Some(polhode) = &input.polhode {
-        written.push(emit(dir, POLHODE, |svg| {
-            draw_polhode(svg, input.title, polhode)
-        })?);
-    }
-    if let (Some((x, y)), Some(z)) = (input.track, input.depth)
-        && leaves_the_plane(x, y, z)
-    {
-        written.push(emit(dir, PROFILE, |svg| {
-            draw_profile(svg, input.title, (x, y, z))
-        })?);
-    }
-    Ok(written)
-}
-
-/// The plots [`write_plots`] leaves out although `input` has their data, each with why: the
-/// track of a body that does not translate (x and y one point to round-off, as a body turning
-/// in place), which would be an empty frame.
-pub fn not_drawn(input: &PlotInput) -> Vec<String> {
-    let still = input.track.and_then(|(x, y)| track::stays_at(x, y));
-    still
-        .map(|(x, y)| {
-            format!(
-                "{TRACK} not drawn: the body does not translate, it stays at ({}, {}) m",
-                eom::Short(x),
-                eom::Short(y)
-            )
-        })
-        .into_iter()
-        .collect()
-}
-
-/// Checks that every column has one value per sample time.
-fn check_lengths(dir: &Path, input: &PlotInput) -> Result<(), PlotError> {
-    let times = input.time.len();
-    let mut columns: Vec<(&str, String, usize)> = input
-        .state
-        .iter()
-        .map(|(name, values)| (STATE, name.to_string(), values.len()))
-        .collect();
-    if let Some(angles) = input.attitude_deg {
-        for (name, values) in ["roll", "pitch", "yaw"].into_iter().zip(angles) {
-            columns.push((ATTITUDE, name.to_string(), values.len()));
-        }
-    }
-    if let Some((x, y)) = input.track {
-        columns.push((TRACK, "track x".to_string(), x.len()));
-        columns.push((TRACK, "track y".to_string(), y.len()));
-    }
-    if let Some(z) = input.depth {
-        columns.push((PROFILE, "track z".to_string(), z.len()));
-    }
-    if let Some(drift) = input.energy_drift {
-        columns.push((ENERGY, "energy drift".to_string(), drift.len()));
-    }
-    if let Some(polhode) = &input.polhode {
-        for (name, values) in ["ω₁", "ω₂", "ω₃"].into_iter().zip(polhode.omega) {
-            columns.push((POLHODE, name.to_string(), values.len()));
-        }
-    }
-    match columns.into_iter().find(|(_, _, len)| *len != times) {
-        Some((file, column, len)) => Err(PlotError::Length {
-            file: dir.join(file),
-            column,
-            len,
-            times,
-        }),
-        None => Ok(()),
-    }
-}
 
 /// A drawing area of the SVG backend, drawing into a string.
 type Area<'b> = DrawingArea<SVGBackend<'b>, Shift>;

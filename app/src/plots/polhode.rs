@@ -377,7 +377,7 @@ fn draw_projection(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use eom::output::drawing::{BodyShape, Drawing, RunDrawings};
+    use eom::output::drawing::{Drawing, RunDrawings};
     use eom::run::Row;
     use eom::run::record::{RecordError, Recorder, RunStart};
     use eom::scene::AnyScene;
@@ -404,10 +404,8 @@ mod tests {
         }
         fn drawn(&mut self, drawn: RunDrawings) -> Result<(), RecordError> {
             for drawing in drawn.drawings {
-                if let Drawing::RigidBody(body) = drawing
-                    && let BodyShape::Spatial { inertia, .. } = body.shape
-                {
-                    self.inertia = Some(inertia);
+                if let Drawing::Polhode(polhode) = drawing {
+                    self.inertia = Some(polhode.spin.inertia_about_g);
                 }
             }
             Ok(())
@@ -426,9 +424,7 @@ mod tests {
             .into_kind()
             .run("tennis_racket.toml", &mut rates)
             .unwrap();
-        let inertia = rates
-            .inertia
-            .expect("the tennis racket is drawn as a spatial body");
+        let inertia = rates.inertia.expect("the tennis racket's polhode is drawn");
         let [p, q, r] = &rates.rates;
         let tensor = nalgebra::Matrix3::from_fn(|r, c| inertia[r][c]);
         in_principal_axes(&InertiaTensor::from_matrix(tensor).unwrap(), [p, q, r])

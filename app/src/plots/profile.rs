@@ -32,7 +32,7 @@ fn span(values: &[f64]) -> Option<f64> {
 
 /// Whether the motion leaves the horizontal plane: z varies by more than
 /// [`PROFILE_FRACTION`] of the larger of the x and y spans, and by more than round-off.
-pub(super) fn leaves_the_plane(x: &[f64], y: &[f64], z: &[f64]) -> bool {
+pub fn leaves_the_plane(x: &[f64], y: &[f64], z: &[f64]) -> bool {
     let Some(z_span) = span(z) else {
         return false;
     };

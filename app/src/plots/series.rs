@@ -4,8 +4,8 @@
 use super::precise::{Overlay, PixelFrame};
 use super::scale::{axis_range, bounded, decimate, extent, tick_label};
 use super::{
-    Area, COLOURS, DrawError, FONT, LABEL_FONT, PANEL_FONT, PlotInput, TITLE_FONT, WIDTH,
-    fitted_caption, render,
+    Area, COLOURS, DrawError, FONT, LABEL_FONT, PANEL_FONT, TITLE_FONT, WIDTH, fitted_caption,
+    render,
 };
 use eom::models::state_unit;
 use plotters::prelude::*;
@@ -143,13 +143,18 @@ fn identically_zero(values: &[f64]) -> bool {
     !values.is_empty() && values.iter().all(|v| *v == 0.0)
 }
 
-/// The state plot: one small panel per component that is not zero throughout, titled with
-/// its name, its value axis labelled with its unit, all over the same time range; the
-/// components left out are named in the caption. Up to four panels are stacked in one
-/// column; more are laid out two to a row, so that the plot stays 830 px wide with readable labels.
-pub(super) fn draw_state(svg: &mut String, input: &PlotInput) -> Result<(), DrawError> {
-    let (zero, mut shown): (Vec<_>, Vec<_>) = input
-        .state
+/// The state plot: one small panel per component (its name, its values against `time`) that
+/// is not zero throughout, titled with its name, its value axis labelled with its unit, all
+/// over the same time range; the components left out are named in the caption. Up to four
+/// panels are stacked in one column; more are laid out two to a row, so that the plot stays
+/// 830 px wide with readable labels.
+pub(super) fn draw_state(
+    svg: &mut String,
+    title: &str,
+    time: &[f64],
+    state: &[(&str, &[f64])],
+) -> Result<(), DrawError> {
+    let (zero, mut shown): (Vec<_>, Vec<_>) = state
         .iter()
         .partition(|(_, values)| identically_zero(values));
     if shown.is_empty() {
@@ -168,13 +173,12 @@ pub(super) fn draw_state(svg: &mut String, input: &PlotInput) -> Result<(), Draw
         columns as u32 * panel.0,
         title_height + rows as u32 * panel.1,
     );
-    let time_range = time_range(input.time);
+    let time_range = time_range(time);
     let caption = match zero.len() {
-        0 => format!("{}: state", input.title),
-        _ if zero.len() == input.state.len() => format!("{}: state, zero throughout", input.title),
+        0 => format!("{title}: state"),
+        _ if zero.len() == state.len() => format!("{title}: state, zero throughout"),
         _ => format!(
-            "{}: state ({} zero throughout, not drawn)",
-            input.title,
+            "{title}: state ({} zero throughout, not drawn)",
             zero.iter()
                 .map(|(name, _)| *name)
                 .collect::<Vec<_>>()
@@ -203,7 +207,7 @@ pub(super) fn draw_state(svg: &mut String, input: &PlotInput) -> Result<(), Draw
                 values,
                 colour: COLOURS[0],
             };
-            time_panel(area, overlay, &style, input.time, time_range, &[line])?;
+            time_panel(area, overlay, &style, time, time_range, &[line])?;
         }
         Ok(())
     })

@@ -1,18 +1,26 @@
-//! The plots of the library's drawing shapes other than a catalog body's: a track in a plane
-//! (`track.svg`, one scale on both axes, with marks and an outline drawn along it), columns
-//! against time on one panel with a legend (a series, `heading.svg`), an attitude's angles
-//! (`attitude.svg`) and a track in space seen from the side (`profile.svg`). Each reads the
-//! columns the command hands it, one value per time, angles already in degrees.
+//! The plots of the library's drawing shapes: a track in a plane (`track.svg`, one scale on
+//! both axes, with marks and an outline drawn along it), columns against time on one panel
+//! with a legend (a series, `heading.svg`) or a panel each (`state.svg`), an attitude's angles
+//! (`attitude.svg`), a track in space seen from the side (`profile.svg`), the drift of the
+//! total energy (`energy.svg`) and a free body's polhode (`polhode.svg`). Each reads the
+//! columns the command hands it, one value per time, angles already in degrees; each checks
+//! their lengths before it draws, so a malformed column writes no file.
 //!
 //! The outline is the waterline view.html draws: a pointed bow over the fore fifth, parallel
 //! sides, a rounded stern, of length L and beam B, at the track's point and heading at the
 //! start and every `1/times` of the distance run, so that a drift angle (the body turned
 //! across its own track) shows.
 
+use super::energy::draw_energy;
+use super::polhode::{Polhode, draw_polhode};
+pub use super::profile::leaves_the_plane;
 use super::profile::{distance_run, draw_profile};
-use super::series::{Line, PanelStyle, draw_attitude, time_panel, time_range};
-use super::track::{Mark, draw_track};
-use super::{COLOURS, PlotError, TITLE_FONT, WIDTH, emit, render};
+use super::series::{Line, PanelStyle, draw_attitude, draw_state, time_panel, time_range};
+use super::track::{Mark, draw_track, stays_at};
+use super::{
+    ATTITUDE, COLOURS, ENERGY, POLHODE, PROFILE, PlotError, STATE, TITLE_FONT, TRACK, WIDTH, emit,
+    render,
+};
 use plotters::style::RGBColor;
 use std::path::{Path, PathBuf};
 
@@ -55,11 +63,11 @@ pub struct TrackPlot<'a> {
 pub fn write_track(dir: &Path, plot: &TrackPlot) -> Result<PathBuf, PlotError> {
     let heading = plot.outline.map(|o| ("heading", o.heading.len()));
     let columns = std::iter::once(("up", plot.up.len())).chain(heading);
-    same_lengths(dir, "track.svg", plot.across.len(), columns)?;
+    same_lengths(dir, TRACK, plot.across.len(), columns)?;
     let outlines = (plot.outline)
         .map(|outline| outlines(plot.across, plot.up, &outline))
         .unwrap_or_default();
-    emit(dir, "track.svg", |svg| {
+    emit(dir, TRACK, |svg| {
         draw_track(
             svg,
             plot.caption,
@@ -125,8 +133,8 @@ pub fn write_attitude(
     degrees: [&[f64]; 3],
 ) -> Result<PathBuf, PlotError> {
     let columns = degrees.map(|angle| ("an angle", angle.len()));
-    same_lengths(dir, "attitude.svg", time.len(), columns)?;
-    emit(dir, "attitude.svg", |svg| {
+    same_lengths(dir, ATTITUDE, time.len(), columns)?;
+    emit(dir, ATTITUDE, |svg| {
         draw_attitude(svg, title, time, degrees)
     })
 }
@@ -139,10 +147,62 @@ pub fn write_profile(
     (x, y, z): (&[f64], &[f64], &[f64]),
 ) -> Result<PathBuf, PlotError> {
     let columns = [y, z].map(|position| ("a position", position.len()));
-    same_lengths(dir, "profile.svg", x.len(), columns)?;
-    emit(dir, "profile.svg", |svg| {
-        draw_profile(svg, title, (x, y, z))
-    })
+    same_lengths(dir, PROFILE, x.len(), columns)?;
+    emit(dir, PROFILE, |svg| draw_profile(svg, title, (x, y, z)))
+}
+
+/// Why `track.svg` is not drawn of a track that is one point to round-off (a body turning in
+/// place), which would be an empty frame; `None` for a track drawn.
+pub fn track_not_drawn(across: &[f64], up: &[f64]) -> Option<String> {
+    let (across, up) = stays_at(across, up)?;
+    Some(format!(
+        "{TRACK} not drawn: the body does not translate, it stays at ({}, {}) m",
+        eom::Short(across),
+        eom::Short(up)
+    ))
+}
+
+/// Writes `state.svg` into `dir`: each column (its name, its values) against `time`, a panel
+/// each.
+pub fn write_panels(
+    dir: &Path,
+    title: &str,
+    time: &[f64],
+    columns: &[(&str, &[f64])],
+) -> Result<PathBuf, PlotError> {
+    let lengths = columns.iter().map(|(name, values)| (*name, values.len()));
+    same_lengths(dir, STATE, time.len(), lengths)?;
+    emit(dir, STATE, |svg| draw_state(svg, title, time, columns))
+}
+
+/// The drift of the total energy `total` from its first value, relative to the larger of |E₀|
+/// and the largest |T| of `kinetic` (a potential's zero is a convention, so E₀ alone may be 0):
+/// what `energy.svg` draws, as the summary's `energy_drift` measures it. `None` where there is
+/// no energy, or the scale is 0 (or not a number).
+pub fn energy_drift(total: &[f64], kinetic: &[f64]) -> Option<Vec<f64>> {
+    let largest_kinetic = kinetic.iter().fold(0.0f64, |m, t| m.max(t.abs()));
+    let e0 = *total.first()?;
+    let scale = e0.abs().max(largest_kinetic);
+    (scale > 0.0).then(|| total.iter().map(|e| (e - e0) / scale).collect())
+}
+
+/// Writes `energy.svg` into `dir`: the relative drift against `time`.
+pub fn write_energy_drift(
+    dir: &Path,
+    title: &str,
+    time: &[f64],
+    drift: &[f64],
+) -> Result<PathBuf, PlotError> {
+    same_lengths(dir, ENERGY, time.len(), [("energy drift", drift.len())])?;
+    emit(dir, ENERGY, |svg| draw_energy(svg, title, time, drift))
+}
+
+/// Writes `polhode.svg` into `dir`.
+pub fn write_polhode(dir: &Path, title: &str, polhode: &Polhode) -> Result<PathBuf, PlotError> {
+    let lengths = ["ω₂", "ω₃"].into_iter().zip(&polhode.omega[1..]);
+    let lengths = lengths.map(|(name, values)| (name, values.len()));
+    same_lengths(dir, POLHODE, polhode.omega[0].len(), lengths)?;
+    emit(dir, POLHODE, |svg| draw_polhode(svg, title, polhode))
 }
 
 /// Whether every column of `file`, each (its name, its length), has `times` values: the

@@ -1,5 +1,9 @@
 //! The plots' tests: each plot written for the shapes a run draws, and what is left out and why.
 
+use super::shapes::{
+    TrackPlot, energy_drift, leaves_the_plane, track_not_drawn, write_attitude, write_energy_drift,
+    write_panels, write_polhode as write_polhode_plot, write_profile, write_track,
+};
 use super::*;
 use std::f64::consts::TAU;
 use std::time::Instant;
@@ -108,22 +112,35 @@ impl Run {
         }
     }
 
-    fn input(&self, title: &'static str, spatial: bool) -> PlotInput<'_> {
-        PlotInput {
-            title,
-            time: &self.time,
-            state: self.state.iter().map(|(n, v)| (*n, v.as_slice())).collect(),
-            attitude_deg: spatial.then(|| {
-                [
-                    &self.attitude[0][..],
-                    &self.attitude[1][..],
-                    &self.attitude[2][..],
-                ]
-            }),
-            track: spatial.then(|| (&self.x[..], &self.y[..])),
-            depth: None,
-            energy_drift: Some(&self.drift),
-            polhode: None,
+    /// Writes the plots of the run into `dir` as the recorder draws a body's, in its order:
+    /// the state, and for a spatial run the attitude and the track (where it is more than a
+    /// point), then the energy drift.
+    fn write(&self, dir: &Path, title: &str, spatial: bool) -> Result<Vec<PathBuf>, PlotError> {
+        let state: Vec<(&str, &[f64])> = (self.state.iter())
+            .map(|(n, v)| (*n, v.as_slice()))
+            .collect();
+        let mut written = vec![write_panels(dir, title, &self.time, &state)?];
+        if spatial {
+            let [roll, pitch, yaw] = [0, 1, 2].map(|k| self.attitude[k].as_slice());
+            written.push(write_attitude(dir, title, &self.time, [roll, pitch, yaw])?);
+            if track_not_drawn(&self.x, &self.y).is_none() {
+                let caption = format!("{title}: track in space axes");
+                written.push(write_track(dir, &self.track(&caption))?);
+            }
+        }
+        written.push(write_energy_drift(dir, title, &self.time, &self.drift)?);
+        Ok(written)
+    }
+
+    /// The track under `caption`, as the recorder draws a body's.
+    fn track<'a>(&'a self, caption: &'a str) -> TrackPlot<'a> {
+        TrackPlot {
+            caption,
+            axes: ("x [m]", "y [m]"),
+            across: &self.x,
+            up: &self.y,
+            marks: &[],
+            outline: None,
         }
     }
 }
@@ -180,7 +197,7 @@ fn a_long_title_is_fitted_to_the_plot_not_cut_off_at_its_edge() {
     let run = Run::spatial(1_000);
     let title = "A REMUS 100 with 6.5 kg of payload forward of its centre of buoyancy, \
                  trimmed nose-down at 1.5 m/s, on Prestero's table with the fins at 15°";
-    let written = write_plots(&folder.0, &run.input(title, true)).unwrap();
+    let written = run.write(&folder.0, title, true).unwrap();
     assert_eq!(written.len(), 4);
     for file in written {
         let svg = Svg::read(&file);
@@ -235,7 +252,7 @@ fn a_caption_that_fits_is_kept_whole_at_the_largest_size_it_fits() {
 fn writes_the_four_plots_with_their_series_and_titles() {
     let folder = Folder::new("four");
     let run = Run::spatial(100_000);
-    let written = write_plots(&folder.0, &run.input("tennis racket", true)).unwrap();
+    let written = run.write(&folder.0, "tennis racket", true).unwrap();
     let names = ["attitude.svg", "energy.svg", "state.svg", "track.svg"];
     assert_eq!(
         written,
@@ -309,7 +326,7 @@ fn writes_the_four_plots_with_their_series_and_titles() {
 fn a_circle_track_is_drawn_round() {
     let folder = Folder::new("round");
     let run = Run::spatial(20_001);
-    write_plots(&folder.0, &run.input("circle", true)).unwrap();
+    run.write(&folder.0, "circle", true).unwrap();
     let track = &Svg::read(&folder.0.join("track.svg")).series()[0];
     let (xs, ys): (Vec<f64>, Vec<f64>) = track.iter().copied().unzip();
     let spread = |v: &[f64]| {
@@ -331,7 +348,7 @@ fn a_circle_track_is_drawn_round() {
 fn a_pendulum_is_stacked_in_one_column() {
     let folder = Folder::new("pendulum");
     let run = Run::pendulum(10_000);
-    let written = write_plots(&folder.0, &run.input("pendulum", false)).unwrap();
+    let written = run.write(&folder.0, "pendulum", false).unwrap();
     assert_eq!(
         written,
         [folder.0.join("state.svg"), folder.0.join("energy.svg")]
@@ -360,7 +377,7 @@ fn a_million_samples_make_small_files_quickly() {
     let folder = Folder::new("million");
     let run = Run::spatial(1_000_000);
     let start = Instant::now();
-    let written = write_plots(&folder.0, &run.input("a long run", true)).unwrap();
+    let written = run.write(&folder.0, "a long run", true).unwrap();
     let seconds = start.elapsed().as_secs_f64();
     for (path, lines) in written.iter().zip([10, 3, 1, 1]) {
         let bytes = fs::metadata(path).unwrap().len();
@@ -391,7 +408,7 @@ fn non_finite_values_are_skipped() {
     run.attitude[0][0] = f64::NEG_INFINITY;
     run.x[4_999] = f64::NAN;
     run.drift.fill(f64::NAN);
-    let written = write_plots(&folder.0, &run.input("broken", true)).unwrap();
+    let written = run.write(&folder.0, "broken", true).unwrap();
     assert_eq!(written.len(), 4);
     for path in &written {
         let svg = Svg::read(path);
@@ -401,30 +418,37 @@ fn non_finite_values_are_skipped() {
     // zero throughout: 11 lines for 12 panels, z alone left out.
     assert_eq!(Svg::read(&written[0]).series().len(), 11);
 
-    // No samples at all.
-    let empty = PlotInput {
-        title: "empty",
-        time: &[],
-        state: vec![("u", &[])],
-        attitude_deg: Some([&[], &[], &[]]),
-        track: Some((&[], &[])),
-        depth: Some(&[]),
-        energy_drift: Some(&[]),
-        polhode: Some(Polhode {
-            moments: [1.0, 2.0, 3.0],
-            omega: [&[], &[], &[]],
-        }),
+    // No samples at all: each plot drawn empty (a track of none is not one point).
+    let empty = Folder::new("nan-empty");
+    let none: &[f64] = &[];
+    assert!(track_not_drawn(none, none).is_none());
+    let plot = TrackPlot {
+        caption: "empty: track in space axes",
+        axes: ("x [m]", "y [m]"),
+        across: none,
+        up: none,
+        marks: &[],
+        outline: None,
     };
-    assert_eq!(write_plots(&folder.0, &empty).unwrap().len(), 5);
-    assert_eq!(folder.names().len(), 5);
+    let polhode = Polhode {
+        moments: [1.0, 2.0, 3.0],
+        omega: [none, none, none],
+    };
+    write_panels(&empty.0, "empty", none, &[("u", none)]).unwrap();
+    write_attitude(&empty.0, "empty", none, [none, none, none]).unwrap();
+    write_track(&empty.0, &plot).unwrap();
+    write_energy_drift(&empty.0, "empty", none, none).unwrap();
+    write_polhode_plot(&empty.0, "empty", &polhode).unwrap();
+    assert!(!leaves_the_plane(none, none, none));
+    assert_eq!(empty.names().len(), 5);
 }
 
 #[test]
 fn the_same_input_gives_the_same_bytes() {
     let (a, b) = (Folder::new("same-a"), Folder::new("same-b"));
     let run = Run::spatial(30_000);
-    let first = write_plots(&a.0, &run.input("again", true)).unwrap();
-    let second = write_plots(&b.0, &run.input("again", true)).unwrap();
+    let first = run.write(&a.0, "again", true).unwrap();
+    let second = run.write(&b.0, "again", true).unwrap();
     for (p, q) in first.iter().zip(&second) {
         assert_eq!(
             fs::read(p).unwrap(),
@@ -440,11 +464,16 @@ fn a_column_of_the_wrong_length_writes_nothing() {
     let folder = Folder::new("length");
     let mut run = Run::spatial(1_000);
     run.y.pop();
-    let error = write_plots(&folder.0, &run.input("short", true)).unwrap_err();
+    let error = write_track(&folder.0, &run.track("short: track")).unwrap_err();
     assert!(
-        matches!(&error, PlotError::Length { column, len: 999, times: 1000, .. } if column == "track y")
+        matches!(&error, PlotError::Length { column, len: 999, times: 1000, .. } if column == "up")
     );
     assert!(error.to_string().contains("track.svg"), "{error}");
+    run.drift.pop();
+    let error = write_energy_drift(&folder.0, "short", &run.time, &run.drift).unwrap_err();
+    assert!(
+        matches!(&error, PlotError::Length { column, len: 999, times: 1000, .. } if column == "energy drift")
+    );
     assert!(folder.names().is_empty());
 }
 
@@ -491,22 +520,20 @@ fn plate(n: usize) -> [Vec<f64>; 3] {
     ]
 }
 
-/// Writes the plots of a pendulum of as many rows as `omega`, with `omega` as its polhode.
-fn write_polhode(folder: &Folder, omega: &[Vec<f64>; 3]) -> Vec<PathBuf> {
-    let run = Run::pendulum(omega[0].len());
-    let mut input = run.input("plate", false);
-    input.polhode = Some(Polhode {
+/// Writes the polhode of a plate, with `omega` as its ω.
+fn write_polhode(folder: &Folder, omega: &[Vec<f64>; 3]) -> PathBuf {
+    let polhode = Polhode {
         moments: [1.0, 1.0, 2.0],
         omega: [&omega[0], &omega[1], &omega[2]],
-    });
-    write_plots(&folder.0, &input).unwrap()
+    };
+    write_polhode_plot(&folder.0, "plate", &polhode).unwrap()
 }
 
 #[test]
 fn the_polhode_draws_the_run_and_the_dashed_curve_in_three_projections() {
     let folder = Folder::new("polhode");
     let written = write_polhode(&folder, &plate(700));
-    assert_eq!(written.last(), Some(&folder.0.join("polhode.svg")));
+    assert_eq!(written, folder.0.join("polhode.svg"));
     let svg = Svg::read(&folder.0.join("polhode.svg"));
     let dashed = svg.elements("polyline", |n| n.attribute("stroke-dasharray").is_some());
     // Per projection: the run, the polhode (dashed) and the ellipsoid's outline, clipped
@@ -536,20 +563,19 @@ fn the_polhode_draws_the_run_and_the_dashed_curve_in_three_projections() {
 fn a_track_in_place_is_said_to_be_one_and_a_climb_gets_a_profile() {
     let folder = Folder::new("profile");
     let mut run = Run::spatial(2_000);
-    let still = vec![0.0; 2_000];
-    // Turning in place: the track is a point, not drawn as an empty frame, and said so.
-    let mut input = run.input("in place", true);
-    input.track = Some((&still, &still));
-    input.depth = Some(&still);
-    let written = write_plots(&folder.0, &input).unwrap();
-    assert!(!written.contains(&folder.0.join("profile.svg")));
+    // Turning in place: the track is a point, not drawn as an empty frame, and said so; its
+    // profile is not drawn.
+    run.x = vec![0.0; 2_000];
+    run.y = vec![0.0; 2_000];
+    let written = run.write(&folder.0, "in place", true).unwrap();
     assert!(!written.contains(&folder.0.join("track.svg")));
     assert!(!folder.0.join("track.svg").exists());
     assert_eq!(
-        not_drawn(&input),
-        ["track.svg not drawn: the body does not translate, it stays at (0, 0) m"]
+        track_not_drawn(&run.x, &run.y).as_deref(),
+        Some("track.svg not drawn: the body does not translate, it stays at (0, 0) m")
     );
-    assert!(not_drawn(&run.input("circle", true)).is_empty());
+    assert!(!leaves_the_plane(&run.x, &run.y, &run.x));
+    assert!(track_not_drawn(&Run::spatial(2_000).x, &Run::spatial(2_000).y).is_none());
 
     // Climbing 30 m on the 50 m circle (3 % of its 100 m span): a profile, the height
     // against the distance run, which ends at 1/10 of the circumference.
@@ -560,10 +586,10 @@ fn a_track_in_place_is_said_to_be_one_and_a_climb_gets_a_profile() {
         .map(|i| 50.0 * (i as f64 * TAU / 20_000.0).sin())
         .collect();
     let climb: Vec<f64> = (0..2_000).map(|i| -0.015 * i as f64).collect();
-    let mut input = run.input("climb", true);
-    input.depth = Some(&climb);
-    let written = write_plots(&folder.0, &input).unwrap();
-    assert_eq!(written.last(), Some(&folder.0.join("profile.svg")));
+    assert!(leaves_the_plane(&run.x, &run.y, &climb));
+    let level = vec![0.0; 2_000];
+    assert!(!leaves_the_plane(&run.x, &run.y, &level));
+    write_profile(&folder.0, "climb", (&run.x, &run.y, &climb)).unwrap();
     let profile = Svg::read(&folder.0.join("profile.svg"));
     let line = &profile.series()[0];
     // Up to the right: the height grows as the distance does.
@@ -573,9 +599,29 @@ fn a_track_in_place_is_said_to_be_one_and_a_climb_gets_a_profile() {
         assert!(texts.contains(&text.to_string()), "no {text} in {texts:?}");
     }
     // A z column of the wrong length is refused before anything is drawn.
-    input.depth = Some(&climb[1..]);
-    let error = write_plots(&folder.0, &input).unwrap_err();
+    let error = write_profile(&folder.0, "climb", (&run.x, &run.y, &climb[1..])).unwrap_err();
     assert!(error.to_string().contains("profile.svg"), "{error}");
+}
+
+/// The drift is relative to the larger of |E₀| and the largest kinetic energy, so that a
+/// potential whose zero makes E₀ nought still gives a drift; no energy, or none to scale it
+/// by, gives none.
+#[test]
+fn the_energy_drift_is_relative_to_the_larger_of_e0_and_the_largest_kinetic_energy() {
+    // |E₀| = 2 is the larger: the drift of 1 is a half.
+    assert_eq!(
+        energy_drift(&[2.0, 3.0, 1.0], &[1.0, 1.5, 0.5]),
+        Some(vec![0.0, 0.5, -0.5])
+    );
+    // E₀ = 0 (a potential's zero at the start), |T| up to 4: the drift of 1 is a quarter.
+    assert_eq!(
+        energy_drift(&[0.0, 1.0], &[4.0, -4.0]),
+        Some(vec![0.0, 0.25])
+    );
+    // Nothing to scale by, and no energy.
+    assert_eq!(energy_drift(&[0.0, 1.0], &[0.0, 0.0]), None);
+    assert_eq!(energy_drift(&[f64::NAN], &[0.0]), None);
+    assert_eq!(energy_drift(&[], &[]), None);
 }
 
 #[test]
@@ -583,7 +629,7 @@ fn a_missing_folder_names_the_file() {
     let folder = Folder::new("missing");
     let run = Run::pendulum(100);
     let missing = folder.0.join("no such folder");
-    let error = write_plots(&missing, &run.input("pendulum", false)).unwrap_err();
+    let error = run.write(&missing, "pendulum", false).unwrap_err();
     assert!(matches!(error, PlotError::Write { .. }));
     assert!(error.to_string().contains("state.svg"), "{error}");
 }

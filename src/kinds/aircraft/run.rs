@@ -7,7 +7,9 @@ use super::linear::linearise_aircraft;
 use super::manoeuvre::{self, AircraftRun, Manoeuvre, ROW, dutch_roll};
 use super::scene::{AircraftScene, units};
 use crate::kind::KindError;
-use crate::output::drawing::{Airframe, Coordinate, Curves, Drawing, Orientation, Shape, View};
+use crate::output::drawing::{
+    Airframe, Coordinate, Curves, Drawing, Ground, Orientation, Shape, Trail, View,
+};
 use crate::output::summary::{Figure, IntegratorSummary, Named, RunFigures};
 use crate::output::trajectory::number_text;
 use crate::run::scene::{Closing, Counts, Ran, Rows, RunPlan, RunResult, SceneRuns, Setting};
@@ -368,7 +370,7 @@ fn drawings(scene: &AircraftScene, path: &str, rows: &[(f64, [f64; 18])]) -> Vec
                 .map(|n| curve(n, column(n), degrees))
                 .collect(),
         }),
-        Drawing::View(view(scene, format!("{}: {path}", scene.title))),
+        Drawing::View(Box::new(view(scene, format!("{}: {path}", scene.title)))),
         Drawing::Curves(Curves {
             file: "load_factor.svg".into(),
             caption: format!("{}: {path}, load factor", scene.title),
@@ -413,8 +415,11 @@ fn view(scene: &AircraftScene, title: String) -> View {
         ],
         orientation: Orientation::EulerAngles(["phi", "theta", "psi"].map(|a| column(a, "rad"))),
         readout: None,
-        trail: "G".into(),
-        water: false,
+        trail: Trail::Point([0.0; 3], "G".into()),
+        ground: Ground::Floor(0.0),
+        z_up: false,
+        camera: None,
+        spin: None,
         notes: vec![format!(
             "drawn from the scene's geometry: the fuselage {} {unit} long ({said}) and a tenth \
              of that across, the wings of span {} {unit} and chord {} {unit}, the tailplane a \

@@ -10,7 +10,9 @@
 //! watched by the [`guard`]); its linear plant ([`linear`]); its integrators compared on its
 //! end state ([`tradeoff`]); its keys for the scene reference ([`EVERY_KEY`]). Its rows go to the
 //! caller's recorder, its summary is [`crate::output::summary::Summary`] with a
-//! [`summary::BodySection`], and its drawing a [`RigidBody`].
+//! [`summary::BodySection`], and its drawings said in the shapes that name no kind
+//! ([`drawing`](mod@drawing): its state, attitude, track, energy drift, polhode, profile and
+//! view, in the columns of its family's layout).
 //!
 //! A body's run that fails (gimbal lock, a step too long, a value that is not finite) keeps
 //! what it ran: its rows, its drawings and a summary that gives the error; the failure is
@@ -34,10 +36,9 @@
 //! assert_eq!(summary.figure("", "period_s"), summary.section["period_s"].as_f64());
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
-//!
-//! [`RigidBody`]: crate::output::drawing::RigidBody
 
 mod check;
+mod drawing;
 pub mod file;
 pub mod guard;
 mod keys;

@@ -3,10 +3,10 @@
 //! and its drawing.
 
 use super::summary::{BodySection, Extra};
-use super::{Body, BodyScene, Report, SceneLoads, run_reporting};
+use super::{Body, BodyScene, Report, run_reporting};
 use crate::Short;
 use crate::kind::KindError;
-use crate::output::drawing::{BodyShape, Drawing, RigidBody};
+use crate::output::drawing::Drawing;
 use crate::output::summary::{Figure, IntegratorSummary, RunFigures, Summary};
 use crate::output::text::printable;
 use crate::output::trajectory::number_text;
@@ -209,7 +209,7 @@ impl SceneRuns for BodyScene {
     }
 
     fn drawings(&self, _: &(), _: usize, _: &BodyOutcome) -> Vec<Drawing> {
-        vec![Drawing::RigidBody(drawing(self))]
+        super::drawing::drawings(self)
     }
 
     /// The model and where the run ended, its figures, how far they moved refined, and where
@@ -332,53 +332,6 @@ fn measures(
             (key, value)
         })
         .collect()
-}
-
-/// What the plots and the view draw of the body.
-fn drawing(scene: &BodyScene) -> RigidBody {
-    let rows = |m: nalgebra::Matrix3<f64>| [0, 1, 2].map(|r| [m[(r, 0)], m[(r, 1)], m[(r, 2)]]);
-    let shape = match &scene.body {
-        Body::Spatial { mass, inertia } => BodyShape::Spatial {
-            mass: *mass,
-            inertia: rows(inertia.matrix()),
-            in_water: in_water(&scene.loads),
-            free_of_moments: scene.loads.is_free() || scene.loads.uniform_gravity_only().is_some(),
-        },
-        Body::Top {
-            mass, inertia, h, ..
-        } => BodyShape::Top {
-            mass: *mass,
-            inertia: rows(inertia.matrix()),
-            h: *h,
-        },
-        Body::Pendulum(p) => BodyShape::Pendulum {
-            h: p.h(),
-            i0: p.i0(),
-            mass: p.mass(),
-        },
-        Body::Planar { mass, izz, .. } => BodyShape::Planar {
-            mass: *mass,
-            izz: *izz,
-        },
-    };
-    RigidBody {
-        title: scene.title.clone(),
-        family: scene.selection.info.family,
-        kinematics: scene.selection.info.kinematics,
-        shape,
-        initial: scene.initial.clone(),
-        conserves_energy: scene.loads.potential_energy(&scene.initial).is_some(),
-    }
-}
-
-/// Whether water acts on a spatial body: buoyancy, or any damping.
-fn in_water(loads: &SceneLoads) -> bool {
-    match loads {
-        SceneLoads::Spatial(l) => {
-            l.buoyancy != 0.0 || l.linear.iter().chain(&l.quadratic).any(|c| *c != 0.0)
-        }
-        _ => false,
-    }
 }
 
 /// The report as `eom run` prints it: the model and why, its cost against the full variant's,

@@ -19,8 +19,8 @@ use super::summary::{
 use super::{Manoeuvre, ShipModel, ShipScene};
 use crate::kind::KindError;
 use crate::output::drawing::{
-    Coordinate, Curves, Drawing, Line, Mark, Orientation, Outline, Reading, Series, Shape, Track,
-    View,
+    Coordinate, Curves, Drawing, Ground, Line, Mark, Orientation, Outline, Reading, Series, Shape,
+    Track, Trail, View,
 };
 use crate::output::summary::{IntegratorSummary, RunFigures};
 use crate::output::text::printable;
@@ -378,7 +378,7 @@ fn drawings(
             Line::new("command", "command", Reading::Degrees),
         ],
     }));
-    drawings.push(Drawing::View(View {
+    drawings.push(Drawing::View(Box::new(View {
         title,
         shape: Shape::Waterline { length, beam },
         position: [
@@ -388,8 +388,11 @@ fn drawings(
         ],
         orientation: Orientation::Heading("psi".into()),
         readout: Some(ROW[..7].iter().map(|c| (*c).to_owned()).collect()),
-        trail: "midship".into(),
-        water: true,
+        trail: Trail::Point([0.0; 3], "midship".into()),
+        ground: Ground::Water,
+        z_up: false,
+        camera: None,
+        spin: None,
         notes: vec![format!(
             "the hull of length L = {} m, and of beam B = L/{} = {} m, assumed: a ship scene \
              has no key for the beam (its table does not need one)",
@@ -397,7 +400,7 @@ fn drawings(
             Shape::ASSUMED_LENGTH_OVER_BEAM,
             crate::Short(beam)
         )],
-    }));
+    })));
     drawings
 }
 

@@ -13,8 +13,8 @@ use super::trial::{Plane, TrialFigures, largest_trial_difference};
 use super::{VehicleScene, format_folded};
 use crate::kind::KindError;
 use crate::output::drawing::{
-    Attitude, Coordinate, Drawing, Line, Mark, Orientation, Profile, Reading, Series, Shape, Track,
-    View,
+    Attitude, Coordinate, Drawing, Ground, Line, Mark, Orientation, Profile, Reading, Series,
+    Shape, Track, Trail, View,
 };
 use crate::output::summary::{Figure, IntegratorSummary, RunFigures};
 use crate::output::text::printable;
@@ -532,10 +532,11 @@ fn drawings(scene: &VehicleScene, title: String, marks: Vec<Mark>) -> Vec<Drawin
         Drawing::Profile(Profile {
             title: title.clone(),
             position: [x.clone(), y.clone(), z.clone()],
+            when_level: true,
         }),
         Drawing::Attitude(Attitude {
             title: title.clone(),
-            angles,
+            orientation: Orientation::EulerAngles(angles),
         }),
         Drawing::Series(Series {
             file: "fins.svg".into(),
@@ -549,15 +550,18 @@ fn drawings(scene: &VehicleScene, title: String, marks: Vec<Mark>) -> Vec<Drawin
                 fin("stern planes command", "ds_command"),
             ],
         }),
-        Drawing::View(View {
+        Drawing::View(Box::new(View {
             title,
             shape: Shape::Cylinder(scene.solid()),
             position: [x, y, z].map(Coordinate::Column),
             orientation: Orientation::Quaternion(["q0", "q1", "q2", "q3"].map(column)),
             readout: None,
-            trail: "the table's origin O".into(),
-            water: true,
+            trail: Trail::Point([0.0; 3], "the table's origin O".into()),
+            ground: Ground::Water,
+            z_up: false,
+            camera: None,
+            spin: None,
             notes: Vec::new(),
-        }),
+        })),
     ]
 }
