@@ -356,6 +356,32 @@ pub struct View {
     pub notes: Vec<String>,
 }
 
+impl View {
+    /// A view of `shape` moved by `position` and `orientation`: every column in its readout,
+    /// its trail following the reference point (named `G`), over the floor z = 0 (z down),
+    /// the camera following it, no arrows and no notes; a kind sets what differs.
+    pub fn moving(
+        title: String,
+        shape: Shape,
+        position: [Coordinate; 3],
+        orientation: Orientation,
+    ) -> Self {
+        View {
+            title,
+            shape,
+            position,
+            orientation,
+            readout: None,
+            trail: Trail::Point([0.0; 3], "G".into()),
+            ground: Ground::Floor(0.0),
+            z_up: false,
+            camera: None,
+            spin: None,
+            notes: Vec::new(),
+        }
+    }
+}
+
 /// Named curves in one plane, into a file of their own (a spiral's r against δ).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Curves {

@@ -15,11 +15,13 @@
 #[path = "../tests/common/mod.rs"]
 #[allow(dead_code)]
 mod common;
+#[path = "../tests/common/gear.rs"]
+mod gear;
 
 use common::{mariner_coefficients, mariner_table, symbols};
 use eom::batch::Batch;
 use eom_example_user_build_rs::mariner;
-use simba::simd::{SimdRealField, WideF64x4};
+use simba::simd::WideF64x4;
 use std::hint::black_box;
 use std::time::Instant;
 
@@ -27,23 +29,6 @@ const CASES: usize = 4096;
 const STEPS: usize = 3400;
 const ROUNDS: usize = 7;
 const H: f64 = 0.1;
-/// The rudder orders, one to a lane (case `i` takes `ORDERS_DEG[i % 4]`), degrees to port.
-const ORDERS_DEG: [f64; 4] = [20.0, 25.0, 30.0, 35.0];
-/// The steering gear of `scenes/mariner.toml`'s `[rudder]`: T_δ, s, and δ̇_max, rad/s.
-const TIME_CONSTANT: f64 = 1.0;
-const MAX_RATE: f64 = 5.0 * std::f64::consts::PI / 180.0;
-
-/// The inputs `[δ̇, U]` of the compiled Mariner: the steering gear δ̇ = clamp((δ_c − δ)/T_δ,
-/// ±δ̇_max) towards `order`, branch-free so that each lane clamps its own, and the speed
-/// U = √(u² + v²) as `eom`'s ship model computes it.
-fn gear<T: SimdRealField + Copy>(order: T) -> impl Fn(T, &[T; 7]) -> [T; 2] {
-    let lag = T::from_subset(&TIME_CONSTANT);
-    let max = T::from_subset(&MAX_RATE);
-    move |_, y| {
-        let rate = ((order - y[6]) / lag).simd_clamp(-max, max);
-        [rate, (y[0] * y[0] + y[1] * y[1]).simd_sqrt()]
-    }
-}
 
 /// The cases' straight approaches, rudder amidships, at speeds spread over ±5 % of U₀.
 fn starts(design_speed: f64) -> Vec<[f64; 7]> {
@@ -56,7 +41,7 @@ fn starts(design_speed: f64) -> Vec<[f64; 7]> {
 }
 
 fn orders() -> [f64; 4] {
-    ORDERS_DEG.map(f64::to_radians)
+    gear::RUDDER_ORDERS_DEG.map(f64::to_radians)
 }
 
 /// Seconds for every case's `STEPS` steps one case at a time, and the end states: the cases of
@@ -65,7 +50,7 @@ fn time_scalar(m: &mariner::Coefficients<f64>, starts: &[[f64; 7]]) -> (f64, Vec
     let mut batches: Vec<(Batch<f64, 7>, _)> = (orders().iter().enumerate())
         .map(|(lane, &order)| {
             let cases: Vec<[f64; 7]> = starts.iter().skip(lane).step_by(4).copied().collect();
-            (Batch::<f64, 7>::new(&cases), gear(order))
+            (Batch::<f64, 7>::new(&cases), gear::steering_gear(order))
         })
         .collect();
     let clock = Instant::now();
@@ -83,7 +68,7 @@ fn time_scalar(m: &mariner::Coefficients<f64>, starts: &[[f64; 7]]) -> (f64, Vec
 /// states.
 fn time_lanes(m: &mariner::Coefficients<WideF64x4>, starts: &[[f64; 7]]) -> (f64, Vec<[f64; 7]>) {
     let mut batch = Batch::<WideF64x4, 7>::new(starts);
-    let loads = gear(WideF64x4::from(orders()));
+    let loads = gear::steering_gear(WideF64x4::from(orders()));
     let clock = Instant::now();
     for step in 0..STEPS {
         batch.step_rk4(m, &loads, step as f64 * H, H);
@@ -138,7 +123,7 @@ fn main() {
         let (low, high) = headings.fold((f64::INFINITY, 0.0_f64), |(lo, hi), x| {
             (lo.min(x), hi.max(x))
         });
-        format!("{}°: {low:.0}–{high:.0}°", ORDERS_DEG[lane])
+        format!("{}°: {low:.0}–{high:.0}°", gear::RUDDER_ORDERS_DEG[lane])
     };
     println!(
         "every lane's end bit for bit its case's alone; heading turned after {} s by order: {}",

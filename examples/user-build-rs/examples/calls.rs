@@ -36,6 +36,8 @@
 #[path = "../tests/common/mod.rs"]
 #[allow(dead_code)]
 mod common;
+#[path = "../tests/common/gear.rs"]
+mod gear;
 
 use common::{mariner_coefficients, mariner_rates, mariner_table, remus_coefficients, remus_rates};
 use eom::batch::Batch;
@@ -57,22 +59,9 @@ fn rk4(system: &impl OdeSystem<f64, 7>, start: [f64; 7], calls: usize) -> [f64; 
     reached.expect("a steady turn integrates").into()
 }
 
-/// The turning circles of `benches/lanes.rs`, 64 cases: the rudder orders (case `i` takes the
-/// `i % 4`th, so each lane of a group of four its own), degrees to port.
-const ORDERS_DEG: [f64; 4] = [20.0, 25.0, 30.0, 35.0];
+/// The turning circles of `benches/lanes.rs`, as 64 cases (each lane of a group of four its
+/// own rudder order, `gear::RUDDER_ORDERS_DEG`).
 const TURNS: usize = 64;
-
-/// The inputs `[δ̇, U]` of the compiled Mariner: `scenes/mariner.toml`'s steering gear
-/// δ̇ = clamp((δ_c − δ)/T_δ, ±δ̇_max), T_δ = 1 s, δ̇_max = 5°/s, towards `order`, branch-free,
-/// and U = √(u² + v²) (as `benches/lanes.rs`).
-fn gear<T: SimdRealField + Copy>(order: T) -> impl Fn(T, &[T; 7]) -> [T; 2] {
-    let lag = T::from_subset(&1.0);
-    let max = T::from_subset(&5.0_f64.to_radians());
-    move |_, y| {
-        let rate = ((order - y[6]) / lag).simd_clamp(-max, max);
-        [rate, (y[0] * y[0] + y[1] * y[1]).simd_sqrt()]
-    }
-}
 
 /// `steps` RK4 steps of 0.1 s of every batch under its loads: the loop the bench times.
 #[inline(never)]
@@ -103,10 +92,10 @@ fn cases(lanes: bool, steps: usize) -> Vec<f64> {
             [speed, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]
         })
         .collect();
-    let orders = ORDERS_DEG.map(f64::to_radians);
+    let orders = gear::RUDDER_ORDERS_DEG.map(f64::to_radians);
     let ends: Vec<[f64; 7]> = if lanes {
         let m = mariner::Coefficients::<WideF64x4>::new(&parameters);
-        let loads = gear(WideF64x4::from(orders));
+        let loads = gear::steering_gear(WideF64x4::from(orders));
         let mut batches = [(Batch::<WideF64x4, 7>::new(&starts), loads)];
         turns(&m, &mut batches, steps);
         batches[0].0.states()
@@ -115,7 +104,7 @@ fn cases(lanes: bool, steps: usize) -> Vec<f64> {
         let mut batches: Vec<_> = (orders.iter().enumerate())
             .map(|(lane, &order)| {
                 let cases: Vec<[f64; 7]> = starts.iter().skip(lane).step_by(4).copied().collect();
-                (Batch::<f64, 7>::new(&cases), gear(order))
+                (Batch::<f64, 7>::new(&cases), gear::steering_gear(order))
             })
             .collect();
         turns(&m, &mut batches, steps);

@@ -6,32 +6,17 @@
 
 #[allow(dead_code)]
 mod common;
+#[path = "common/gear.rs"]
+mod gear;
 
 use common::{mariner_coefficients, mariner_table};
 use eom::batch::Batch;
 use eom::{Integrator, Model, Rk4};
 use eom_example_user_build_rs::mariner;
-use simba::simd::{SimdRealField, WideF64x4};
+use simba::simd::WideF64x4;
 
-/// The rudder orders, one to a lane (case `i` takes `ORDERS_DEG[i % 4]`), degrees to port.
-const ORDERS_DEG: [f64; 4] = [20.0, 25.0, 30.0, 35.0];
-/// The steering gear of `scenes/mariner.toml`'s `[rudder]`: T_δ, s, and δ̇_max, rad/s.
-const TIME_CONSTANT: f64 = 1.0;
-const MAX_RATE: f64 = 5.0 * std::f64::consts::PI / 180.0;
 const H: f64 = 0.1;
 const STEPS: usize = 3400;
-
-/// The inputs `[δ̇, U]` of the compiled Mariner: the steering gear δ̇ = clamp((δ_c − δ)/T_δ,
-/// ±δ̇_max) towards `order`, branch-free so that each lane clamps its own, and the speed
-/// U = √(u² + v²) as `eom`'s ship model computes it.
-fn gear<T: SimdRealField + Copy>(order: T) -> impl Fn(T, &[T; 7]) -> [T; 2] {
-    let lag = T::from_subset(&TIME_CONSTANT);
-    let max = T::from_subset(&MAX_RATE);
-    move |_, y| {
-        let rate = ((order - y[6]) / lag).simd_clamp(-max, max);
-        [rate, (y[0] * y[0] + y[1] * y[1]).simd_sqrt()]
-    }
-}
 
 /// `cases` straight approaches, rudder amidships, at speeds spread over ±5 % of U₀.
 fn starts(cases: usize, design_speed: f64) -> Vec<[f64; 7]> {
@@ -52,10 +37,10 @@ fn each_lane_turns_as_its_case_alone() {
         common::symbols(&table).get(s).copied().unwrap_or(f64::NAN)
     }));
     let starts = starts(7, table.design_speed);
-    let orders = ORDERS_DEG.map(f64::to_radians);
+    let orders = gear::RUDDER_ORDERS_DEG.map(f64::to_radians);
 
     let mut batch = Batch::<WideF64x4, 7>::new(&starts);
-    let loads = gear(WideF64x4::from(orders));
+    let loads = gear::steering_gear(WideF64x4::from(orders));
     for step in 0..STEPS {
         batch.step_rk4(&lanes, &loads, step as f64 * H, H);
     }
@@ -67,13 +52,13 @@ fn each_lane_turns_as_its_case_alone() {
         let alone: Vec<[f64; 7]> = cases.iter().map(|&i| starts[i]).collect();
         let mut one_by_one = Batch::<f64, 7>::new(&alone);
         for step in 0..STEPS {
-            one_by_one.step_rk4(&scalar, &gear(order), step as f64 * H, H);
+            one_by_one.step_rk4(&scalar, &gear::steering_gear(order), step as f64 * H, H);
         }
         for (k, &case) in cases.iter().enumerate() {
             let end = batch.state(case);
             let bits = |y: [f64; 7]| y.map(f64::to_bits);
             assert_eq!(bits(end), bits(one_by_one.state(k)), "case {case}");
-            let driven = scalar.driven_by(gear(order));
+            let driven = scalar.driven_by(gear::steering_gear(order));
             let rk4 = Rk4::new(H)
                 .integrate(&driven, 0.0, starts[case].into(), STEPS as f64 * H)
                 .unwrap();

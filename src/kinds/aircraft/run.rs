@@ -7,9 +7,7 @@ use super::linear::linearise_aircraft;
 use super::manoeuvre::{self, AircraftRun, Manoeuvre, ROW, dutch_roll};
 use super::scene::{AircraftScene, units};
 use crate::kind::KindError;
-use crate::output::drawing::{
-    Airframe, Coordinate, Curves, Drawing, Ground, Orientation, Shape, Trail, View,
-};
+use crate::output::drawing::{Airframe, Coordinate, Curves, Drawing, Orientation, Shape, View};
 use crate::output::summary::{Figure, IntegratorSummary, Named, RunFigures};
 use crate::output::trajectory::number_text;
 use crate::run::scene::{Closing, Counts, Ran, Rows, RunPlan, RunResult, SceneRuns, Setting};
@@ -399,27 +397,20 @@ fn view(scene: &AircraftScene, title: String) -> View {
     };
     let unit = units(scene.units)[9].1;
     let column = |name: &str, unit: &str| format!("{name}[{unit}]");
+    let airframe = Shape::Aircraft(Airframe {
+        length,
+        diameter: length / FUSELAGE_FINENESS,
+        span: scene.span,
+        chord: scene.chord,
+        unit,
+    });
+    let position = [
+        Coordinate::Column(column("north", unit)),
+        Coordinate::Column(column("east", unit)),
+        Coordinate::Negated(column("altitude", unit)),
+    ];
+    let attitude = Orientation::EulerAngles(["phi", "theta", "psi"].map(|a| column(a, "rad")));
     View {
-        title,
-        shape: Shape::Aircraft(Airframe {
-            length,
-            diameter: length / FUSELAGE_FINENESS,
-            span: scene.span,
-            chord: scene.chord,
-            unit,
-        }),
-        position: [
-            Coordinate::Column(column("north", unit)),
-            Coordinate::Column(column("east", unit)),
-            Coordinate::Negated(column("altitude", unit)),
-        ],
-        orientation: Orientation::EulerAngles(["phi", "theta", "psi"].map(|a| column(a, "rad"))),
-        readout: None,
-        trail: Trail::Point([0.0; 3], "G".into()),
-        ground: Ground::Floor(0.0),
-        z_up: false,
-        camera: None,
-        spin: None,
         notes: vec![format!(
             "drawn from the scene's geometry: the fuselage {} {unit} long ({said}) and a tenth \
              of that across, the wings of span {} {unit} and chord {} {unit}, the tailplane a \
@@ -428,6 +419,7 @@ fn view(scene: &AircraftScene, title: String) -> View {
             crate::Short(scene.span),
             crate::Short(scene.chord),
         )],
+        ..View::moving(title, airframe, position, attitude)
     }
 }
 

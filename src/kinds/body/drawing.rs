@@ -126,7 +126,7 @@ fn view(scene: &BodyScene, title: String) -> View {
                 notes: (water.then(|| "the blue plane is the water's surface, z = 0".into()))
                     .into_iter()
                     .collect(),
-                ..moving(title, shape, position, turning)
+                ..View::moving(title, shape, position, turning)
             }
         }
         Body::Top {
@@ -142,7 +142,7 @@ fn view(scene: &BodyScene, title: String) -> View {
                 z_up: true,
                 camera: Some([0.0, 0.0, 0.6 * h]),
                 spin: Some(spin(rows(inertia.matrix()))),
-                ..moving(title, shape, pivot(), turning)
+                ..View::moving(title, shape, pivot(), turning)
             }
         }
         Body::Pendulum(p) => {
@@ -156,7 +156,7 @@ fn view(scene: &BodyScene, title: String) -> View {
                 trail: Trail::Point([0.0, 0.0, p.h()], "G".into()),
                 ground: Ground::Floor(1.4 * p.h()),
                 camera: Some([0.0; 3]),
-                ..moving(title, shape, pivot(), swing)
+                ..View::moving(title, shape, pivot(), swing)
             }
         }
         Body::Planar { mass, izz, .. } => {
@@ -172,36 +172,13 @@ fn view(scene: &BodyScene, title: String) -> View {
             };
             let view = View {
                 trail: Trail::Point([0.0; 3], "the body origin".into()),
-                ..moving(title, plate, position, heading)
+                ..View::moving(title, plate, position, heading)
             };
             match scene.selection.info.family {
                 Family::PlanarMidship => hull(view, *mass, *izz),
                 _ => view,
             }
         }
-    }
-}
-
-/// A view of `shape` moved by `position` and `orientation`, every column in its readout,
-/// trailing G, over the floor z = 0 (z down), the camera following it.
-fn moving(
-    title: String,
-    shape: Shape,
-    position: [Coordinate; 3],
-    orientation: Orientation,
-) -> View {
-    View {
-        title,
-        shape,
-        position,
-        orientation,
-        readout: None,
-        trail: Trail::Point([0.0; 3], "G".into()),
-        ground: Ground::Floor(0.0),
-        z_up: false,
-        camera: None,
-        spin: None,
-        notes: Vec::new(),
     }
 }
 

@@ -378,21 +378,16 @@ fn drawings(
             Line::new("command", "command", Reading::Degrees),
         ],
     }));
+    let position = [
+        Coordinate::Column("x".into()),
+        Coordinate::Column("y".into()),
+        Coordinate::Zero,
+    ];
+    let heading = Orientation::Heading("psi".into());
     drawings.push(Drawing::View(Box::new(View {
-        title,
-        shape: Shape::Waterline { length, beam },
-        position: [
-            Coordinate::Column("x".into()),
-            Coordinate::Column("y".into()),
-            Coordinate::Zero,
-        ],
-        orientation: Orientation::Heading("psi".into()),
         readout: Some(ROW[..7].iter().map(|c| (*c).to_owned()).collect()),
         trail: Trail::Point([0.0; 3], "midship".into()),
         ground: Ground::Water,
-        z_up: false,
-        camera: None,
-        spin: None,
         notes: vec![format!(
             "the hull of length L = {} m, and of beam B = L/{} = {} m, assumed: a ship scene \
              has no key for the beam (its table does not need one)",
@@ -400,6 +395,7 @@ fn drawings(
             Shape::ASSUMED_LENGTH_OVER_BEAM,
             crate::Short(beam)
         )],
+        ..View::moving(title, Shape::Waterline { length, beam }, position, heading)
     })));
     drawings
 }

@@ -551,17 +551,14 @@ fn drawings(scene: &VehicleScene, title: String, marks: Vec<Mark>) -> Vec<Drawin
             ],
         }),
         Drawing::View(Box::new(View {
-            title,
-            shape: Shape::Cylinder(scene.solid()),
-            position: [x, y, z].map(Coordinate::Column),
-            orientation: Orientation::Quaternion(["q0", "q1", "q2", "q3"].map(column)),
-            readout: None,
             trail: Trail::Point([0.0; 3], "the table's origin O".into()),
             ground: Ground::Water,
-            z_up: false,
-            camera: None,
-            spin: None,
-            notes: Vec::new(),
+            ..View::moving(
+                title,
+                Shape::Cylinder(scene.solid()),
+                [x, y, z].map(Coordinate::Column),
+                Orientation::Quaternion(["q0", "q1", "q2", "q3"].map(column)),
+            )
         })),
     ]
 }
