@@ -19,6 +19,7 @@
 //! | what the figures assume (ahead, not stopped, one way, settled), checked on the run (shared with the vehicle's turning circle) | [`crate::manoeuvring::course`] |
 //! | the IMO MSC.137(76) criteria | [`imo`] |
 //! | the linear model about the straight course: Nomoto, course stability, pivot point | [`linear`] |
+//! | the MMG standard method's forces (hull, propeller, rudder) at a state, every quantity kept (its equations of motion are a later step) | [`mmg`] |
 //! | the scene file | [`scene`] |
 //!
 //! The model is built when the scene is read, because the table is known only then: the
@@ -37,6 +38,7 @@ pub mod keys;
 pub mod kind;
 pub mod linear;
 pub mod manoeuvre;
+pub mod mmg;
 pub mod model;
 pub mod propulsion;
 pub mod run;
