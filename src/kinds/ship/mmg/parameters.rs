@@ -436,6 +436,32 @@ mod tests {
         )
     }
 
+    /// A coefficient is read as written: every decimal of 17 significant digits to its nearest
+    /// double, as Rust's own parser reads it (serde_json's default reader puts a fifth to a
+    /// third of such decimals an ulp off; the library's `float_roundtrip` reads them exactly).
+    #[test]
+    fn a_coefficient_is_read_to_its_nearest_double() {
+        let mut bits: u64 = 0x9E37_79B9_7F4A_7C15;
+        let mut wrong = Vec::new();
+        for _ in 0..2000 {
+            // A double in [0.1, 1): a coefficient's range, every bit of its mantissa random.
+            bits = bits.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1);
+            let x = 0.1 + 0.9 * (bits >> 11) as f64 / (1u64 << 53) as f64;
+            let text = format!("{x:.16e}");
+            let document: Value = serde_json::from_str(&format!("{{\"t_P\": {text}}}")).unwrap();
+            let read = document["t_P"].as_f64().unwrap();
+            if read.to_bits() != text.parse::<f64>().unwrap().to_bits() {
+                wrong.push(text);
+            }
+        }
+        assert!(
+            wrong.is_empty(),
+            "{} of 2000 read wrong: {:?}",
+            wrong.len(),
+            &wrong[..wrong.len().min(5)]
+        );
+    }
+
     #[test]
     fn the_published_table_reads_at_both_scales() {
         let document = kvlcc2();
