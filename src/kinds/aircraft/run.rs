@@ -149,22 +149,26 @@ pub type Outcome = crate::run::scene::Outcome<ManoeuvreFigures>;
 /// adaptive method, `half_step_difference` for a fixed step).
 pub fn summary(scene: &AircraftScene, outcome: &Outcome) -> ManoeuvreSummary {
     let mut summary = outcome.gave.summary.clone();
-    let Some(refined) = outcome.refined() else {
-        return summary;
-    };
-    let refined = &refined.summary.figures;
-    let differences = (summary.figures.0.iter())
+    let differences = refined_differences(outcome);
+    match scene.stepper.method.is_adaptive() {
+        true => summary.tolerance_difference = differences,
+        false => summary.half_step_difference = differences,
+    }
+    summary
+}
+
+/// Each figure's difference from the refined run's, by key (`None` for a figure the refined
+/// run did not give), where the refined run finished.
+fn refined_differences(outcome: &Outcome) -> Option<BTreeMap<String, Option<f64>>> {
+    let refined = &outcome.refined()?.summary.figures;
+    let differences = (outcome.gave.summary.figures.0.iter())
         .map(|(key, value)| {
             let moved = (refined.0.iter()).find(|(k, _)| k == key);
             let difference = moved.map(|(_, refined)| (value - refined).abs());
             (key.clone(), difference)
         })
         .collect();
-    match scene.stepper.method.is_adaptive() {
-        true => summary.tolerance_difference = Some(differences),
-        false => summary.half_step_difference = Some(differences),
-    }
-    summary
+    Some(differences)
 }
 
 impl SceneRuns for AircraftScene {
@@ -274,8 +278,11 @@ impl SceneRuns for AircraftScene {
     }
 
     fn figures(&self, plan: &RunPlan, outcome: &Outcome) -> RunFigures {
-        let m = &summary(self, outcome);
-        let differences = (m.half_step_difference.as_ref()).or(m.tolerance_difference.as_ref());
+        // The differences alone, rather than the summary that says them (a Monte Carlo's
+        // case reads its figures here, and needs no copy of its summary).
+        let m = &outcome.gave.summary;
+        let differences = refined_differences(outcome);
+        let differences = differences.as_ref();
         RunFigures {
             run: plan.path.clone(),
             figures: (m.figures.0.iter())

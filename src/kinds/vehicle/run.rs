@@ -43,11 +43,17 @@ pub type Outcome = crate::run::scene::Outcome<ManoeuvreFigures>;
 /// What summary.json says of a manoeuvre's run: its summary, with the largest difference of
 /// its figures from the refined run's where that finished.
 pub fn summary(outcome: &Outcome) -> ManoeuvreSummary {
-    let refined = outcome.refined();
     ManoeuvreSummary {
-        refined_difference: refined.map(|r| moved_when_refined(&outcome.gave.summary, &r.summary)),
+        refined_difference: refined_difference(outcome),
         ..outcome.gave.summary.clone()
     }
+}
+
+/// The largest difference of a manoeuvre's figures from the refined run's, where that
+/// finished.
+fn refined_difference(outcome: &Outcome) -> Option<f64> {
+    let refined = outcome.refined()?;
+    Some(moved_when_refined(&outcome.gave.summary, &refined.summary))
 }
 
 impl SceneRuns for VehicleScene {
@@ -113,7 +119,11 @@ impl SceneRuns for VehicleScene {
     }
 
     fn figures(&self, plan: &RunPlan, outcome: &Outcome) -> RunFigures {
-        run_figures(&plan.path, &summary(outcome))
+        run_figures(
+            &plan.path,
+            &outcome.gave.summary,
+            refined_difference(outcome),
+        )
     }
 
     fn drawings(&self, _: &(), index: usize, outcome: &Outcome) -> Vec<Drawing> {
@@ -313,8 +323,13 @@ fn manoeuvre_figures(json: &serde_json::Value) -> Vec<(String, &serde_json::Valu
 }
 
 /// A manoeuvre's figures as every kind gives them: each number of [`manoeuvre_figures`] (or
-/// `None` where it is not given), the largest difference the refined run showed over them.
-fn run_figures(name: &str, summary: &ManoeuvreSummary) -> RunFigures {
+/// `None` where it is not given), the largest difference the refined run showed over them
+/// (`largest_difference`, where it ran).
+fn run_figures(
+    name: &str,
+    summary: &ManoeuvreSummary,
+    largest_difference: Option<f64>,
+) -> RunFigures {
     let json = serde_json::to_value(summary).unwrap_or_default();
     let figures = (manoeuvre_figures(&json).into_iter())
         .filter(|(_, value)| value.is_number() || value.is_null())
@@ -327,8 +342,8 @@ fn run_figures(name: &str, summary: &ManoeuvreSummary) -> RunFigures {
     RunFigures {
         run: name.to_owned(),
         figures,
-        refinement: summary.refined_difference.map(|_| summary.refinement),
-        largest_difference: summary.refined_difference,
+        refinement: largest_difference.map(|_| summary.refinement),
+        largest_difference,
         notes: summary.notes.clone(),
     }
 }
