@@ -386,6 +386,12 @@ fn kinematics(state: MidshipState, length: f64) -> Result<Kinematics, MmgStateEr
     })
 }
 
+/// The hull's sway force or yaw moment, non-dimensional, from its terms in v′, r′, v′³, v′²r′,
+/// v′r′² and r′³ (the paper writes Y′_H and N′_H alike).
+fn lateral([v1, r1, vvv, vvr, vrr, rrr]: [f64; 6], (v, r): (f64, f64)) -> f64 {
+    v1 * v + r1 * r + vvv * v.powi(3) + vvr * v * v * r + vrr * v * r * r + rrr * r.powi(3)
+}
+
 /// X_H, Y_H on ½ρLdU², N_H on ½ρL²dU², from the hull's polynomials in v′ and r′.
 fn hull_loads(hull: &HullDerivatives, ship: &Particulars, motion: &Kinematics) -> PlanarLoads {
     let (v, r) = (motion.sway_prime, motion.yaw_rate_prime);
@@ -394,18 +400,18 @@ fn hull_loads(hull: &HullDerivatives, ship: &Particulars, motion: &Kinematics) -
         + hull.x_vr * v * r
         + hull.x_rr * r * r
         + hull.x_vvvv * v.powi(4);
-    let sway = hull.y_v * v
-        + hull.y_r * r
-        + hull.y_vvv * v.powi(3)
-        + hull.y_vvr * v * v * r
-        + hull.y_vrr * v * r * r
-        + hull.y_rrr * r.powi(3);
-    let yaw = hull.n_v * v
-        + hull.n_r * r
-        + hull.n_vvv * v.powi(3)
-        + hull.n_vvr * v * v * r
-        + hull.n_vrr * v * r * r
-        + hull.n_rrr * r.powi(3);
+    let sway = lateral(
+        [
+            hull.y_v, hull.y_r, hull.y_vvv, hull.y_vvr, hull.y_vrr, hull.y_rrr,
+        ],
+        (v, r),
+    );
+    let yaw = lateral(
+        [
+            hull.n_v, hull.n_r, hull.n_vvv, hull.n_vvr, hull.n_vrr, hull.n_rrr,
+        ],
+        (v, r),
+    );
     let force_scale = 0.5 * ship.density * ship.length * ship.draft * motion.speed.powi(2);
     PlanarLoads {
         x: force_scale * surge,
