@@ -3,7 +3,7 @@
 mod mutants;
 
 use eom_codegen::emit::{prove, system_source};
-use eom_codegen::model::ship::{Force, ShipSpec, Term, Units, YawInertia, ship};
+use eom_codegen::model::ship::{Force, ShipForm, ShipSpec, Term, Units, YawInertia, ship};
 use eom_codegen::symbolic::{Expr, parse};
 
 fn term(force: Force, [a, b, c, d]: [u8; 4]) -> Term {
@@ -73,6 +73,7 @@ fn residuals_are_the_mass_matrix_form_with_the_polynomial() {
             term(Force::N, [0, 2, 1, 0]),
         ],
         propulsion: false,
+        form: ShipForm::Polynomial,
     };
     let book = [
         "(M - X_udot)*u_dot - M*v*r - M*x_G*r.powi(2) - X_uu*u.powi(2)",
@@ -94,6 +95,7 @@ fn inertia_about_midship_enters_the_mass_matrix_as_given() {
         yaw_inertia: YawInertia::AboutMidship,
         terms: vec![],
         propulsion: false,
+        form: ShipForm::Polynomial,
     };
     let yaw = &spec.residuals().unwrap()[2];
     let book = parse("(M*x_G - N_vdot)*v_dot + (Izz_midship - N_rdot)*r_dot + M*x_G*u*r").unwrap();
@@ -109,6 +111,7 @@ fn prime_terms_scale_by_the_instantaneous_speed() {
         yaw_inertia: YawInertia::AboutMidship,
         terms: vec![term(Force::Y, [0, 2, 1, 0]), term(Force::N, [1, 0, 0, 1])],
         propulsion: false,
+        form: ShipForm::Polynomial,
     };
     let y = spec.force(Force::Y).unwrap();
     let expected = parse("rho/2.0*L.powi(3)*Y_vvr*v.powi(2)*r/U").unwrap();
@@ -127,6 +130,7 @@ fn the_mariner_builds_proves_and_emits_only_its_terms_and_the_model_contract() {
                 yaw_inertia,
                 terms: mariner_terms(),
                 propulsion: false,
+                form: ShipForm::Polynomial,
             };
             let system = ship("mariner", &spec).unwrap();
             prove(&system).unwrap();
@@ -156,6 +160,7 @@ fn a_term_listed_twice_is_refused() {
         yaw_inertia: YawInertia::AboutG,
         terms: vec![term(Force::Y, [0, 1, 0, 0]), term(Force::Y, [0, 1, 0, 0])],
         propulsion: false,
+        form: ShipForm::Polynomial,
     };
     let error = ship("twice", &spec).unwrap_err();
     assert!(error.to_string().contains("Y_v is listed twice"), "{error}");
@@ -168,6 +173,7 @@ fn the_rudder_angle_moves_at_its_input() {
         yaw_inertia: YawInertia::AboutG,
         terms: vec![],
         propulsion: false,
+        form: ShipForm::Polynomial,
     };
     let system = ship("bare", &spec).unwrap();
     assert_eq!(system.state[6], "delta");
@@ -184,6 +190,7 @@ fn single_operation_mutants_of_the_mariner_s_jacobians_fail_their_check() {
         yaw_inertia: YawInertia::AboutMidship,
         terms: mariner_terms(),
         propulsion: false,
+        form: ShipForm::Polynomial,
     };
     let system = ship("mariner", &spec).unwrap();
     let caught = mutants::jacobian_mutants(&system, 1);
@@ -216,6 +223,7 @@ fn propulsion_puts_the_rudder_on_its_inflow_and_the_thrust_law_in_surge() {
             term(Force::N, [0, 0, 0, 0]),
         ],
         propulsion: true,
+        form: ShipForm::Polynomial,
     };
     let e = "(delta - (v + L*x_R*r)/c)";
     let x = spec.force(Force::X).unwrap();
@@ -253,6 +261,7 @@ fn a_term_in_the_effective_rudder_angle_needs_propulsion() {
         yaw_inertia: YawInertia::AboutG,
         terms: vec![rudder_term(Force::Y, 3)],
         propulsion: false,
+        form: ShipForm::Polynomial,
     };
     let error = ship("no_propeller", &spec).unwrap_err();
     assert!(
@@ -269,4 +278,138 @@ fn a_term_in_the_effective_rudder_angle_needs_propulsion() {
         error.to_string().contains("Y_vd mixes the rudder"),
         "{error}"
     );
+}
+
+/// The MMG hull's terms (Yasukawa & Yoshimura 2015): R′₀ as the bias in X, X′_vv, X′_vr,
+/// X′_rr, X′_vvvv, and Y′, N′ in v, r, vvv, vvr, vrr, rrr.
+fn mmg_terms() -> Vec<Term> {
+    use Force::{N, X, Y};
+    let mut terms = vec![
+        term(X, [0, 0, 0, 0]),
+        term(X, [0, 2, 0, 0]),
+        term(X, [0, 1, 1, 0]),
+        term(X, [0, 0, 2, 0]),
+        term(X, [0, 4, 0, 0]),
+    ];
+    for force in [Y, N] {
+        for powers in [
+            [0, 1, 0, 0],
+            [0, 0, 1, 0],
+            [0, 3, 0, 0],
+            [0, 2, 1, 0],
+            [0, 1, 2, 0],
+            [0, 0, 3, 0],
+        ] {
+            terms.push(term(force, powers));
+        }
+    }
+    terms
+}
+
+fn mmg_spec() -> ShipSpec {
+    ShipSpec {
+        units: Units::Dimensional,
+        yaw_inertia: YawInertia::AboutG,
+        terms: mmg_terms(),
+        propulsion: false,
+        form: ShipForm::Mmg,
+    }
+}
+
+/// The MMG form's residuals are the paper's equations of motion at midship, written here
+/// by hand: the added masses m_x, m_y, J_z on the left with their Coriolis terms, the hull's
+/// polynomial in v′ = v/U and r′ = rL/U on ½ρLdU² (½ρL²dU² for N), and the applied loads.
+#[test]
+fn the_mmg_form_is_the_papers_equations_of_motion() {
+    let spec = mmg_spec();
+    let m_x = "(rho/2.0*L.powi(2)*draft*m_x)";
+    let m_y = "(rho/2.0*L.powi(2)*draft*m_y)";
+    let j_z = "(rho/2.0*L.powi(4)*draft*J_z)";
+    let q = "(rho/2.0*L*draft*U.powi(2))";
+    let (v, r) = ("(v/U)", "(r*L/U)");
+    let lateral = |f: &str| {
+        format!(
+            "{f}_v*{v} + {f}_r*{r} + {f}_vvv*{v}.powi(3) + {f}_vvr*{v}.powi(2)*{r} \
+             + {f}_vrr*{v}*{r}.powi(2) + {f}_rrr*{r}.powi(3)"
+        )
+    };
+    let book = [
+        format!(
+            "(M + {m_x})*u_dot - (M + {m_y})*v*r - M*x_G*r.powi(2) - {q}*(X_0 + X_vv*{v}.powi(2) \
+             + X_vr*{v}*{r} + X_rr*{r}.powi(2) + X_vvvv*{v}.powi(4)) - X_applied"
+        ),
+        format!(
+            "(M + {m_y})*v_dot + (M + {m_x})*u*r + M*x_G*r_dot - {q}*({}) - Y_applied",
+            lateral("Y")
+        ),
+        format!(
+            "(Izz + M*x_G.powi(2) + {j_z})*r_dot + M*x_G*(v_dot + u*r) - {q}*L*({}) - N_applied",
+            lateral("N")
+        ),
+    ];
+    let residuals = spec.residuals().unwrap();
+    for (derived, book) in residuals.iter().zip(&book) {
+        let difference = derived - &parse(book).unwrap();
+        assert!(difference.is_zero(), "{book}: left over {difference}");
+    }
+    let system = ship("kvlcc2", &spec).unwrap();
+    assert_eq!(
+        system.inputs,
+        ["delta_rate", "U", "X_applied", "Y_applied", "N_applied"]
+    );
+    prove(&system).unwrap();
+}
+
+/// An MMG spec reads the hull's terms alone: a term in u, δ or e, a propulsion model or
+/// prime units are refused with the reason.
+#[test]
+fn an_mmg_spec_refuses_what_is_not_the_hulls() {
+    for (what, spec) in [
+        (
+            "in u",
+            ShipSpec {
+                terms: vec![term(Force::Y, [1, 1, 0, 0])],
+                ..mmg_spec()
+            },
+        ),
+        (
+            "in δ",
+            ShipSpec {
+                terms: vec![term(Force::Y, [0, 0, 0, 1])],
+                ..mmg_spec()
+            },
+        ),
+    ] {
+        let error = ship("mmg", &spec).unwrap_err().to_string();
+        assert!(
+            error.contains("not one of the MMG hull's"),
+            "{what}: {error}"
+        );
+    }
+    for spec in [
+        ShipSpec {
+            propulsion: true,
+            ..mmg_spec()
+        },
+        ShipSpec {
+            units: Units::Prime,
+            ..mmg_spec()
+        },
+    ] {
+        let error = ship("mmg", &spec).unwrap_err().to_string();
+        assert!(error.contains("an MMG spec has its body in SI"), "{error}");
+    }
+}
+
+/// The MMG form's Jacobians are proved like the polynomial ships': every single-operation
+/// mutant of the nodes they read fails the check.
+#[test]
+fn single_operation_mutants_of_the_mmg_jacobians_fail_their_check() {
+    let system = ship("kvlcc2", &mmg_spec()).unwrap();
+    let caught = mutants::jacobian_mutants(&system, 1);
+    println!(
+        "KVLCC2 (MMG): {} Jacobian mutants caught, over {} proved entries; ∂f/∂x {:?}, ∂f/∂u {:?}",
+        caught.tried, caught.entries, caught.operations[0], caught.operations[1]
+    );
+    assert!(caught.tried > 100, "only {}", caught.tried);
 }

@@ -8,7 +8,7 @@
 use eom_codegen::emit::program::identifier;
 use eom_codegen::emit::{EmitError, emit_into, system_source, write_if_changed};
 use eom_codegen::model::System;
-use eom_codegen::model::ship::{Force, ShipSpec, Term, Units, YawInertia, ship};
+use eom_codegen::model::ship::{Force, ShipForm, ShipSpec, Term, Units, YawInertia, ship};
 use eom_codegen::model::vehicle::{
     AddedMassCoriolis, Convention, InertiaAbout, Propeller, VehicleSpec, vehicle,
 };
@@ -37,6 +37,7 @@ fn ship_spec() -> ShipSpec {
             term(Force::N, [0, 0, 0, 1]),
         ],
         propulsion: false,
+        form: ShipForm::Polynomial,
     }
 }
 
@@ -64,6 +65,7 @@ fn mariner_spec() -> ShipSpec {
         yaw_inertia: YawInertia::AboutMidship,
         terms,
         propulsion: false,
+        form: ShipForm::Polynomial,
     }
 }
 

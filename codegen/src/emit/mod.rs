@@ -175,7 +175,7 @@ pub fn prove_with_jacobians(system: &System) -> Result<Program, EmitError> {
 /// every catalog model's does.
 ///
 /// ```
-/// use eom_codegen::model::ship::{Force, ShipSpec, Term, Units, YawInertia, ship};
+/// use eom_codegen::model::ship::{Force, ShipForm, ShipSpec, Term, Units, YawInertia, ship};
 /// let spec = ShipSpec {
 ///     units: Units::Dimensional,
 ///     yaw_inertia: YawInertia::AboutG,
@@ -184,6 +184,7 @@ pub fn prove_with_jacobians(system: &System) -> Result<Program, EmitError> {
 ///         Term { force: Force::N, powers: [0, 0, 1, 0, 0] },
 ///     ],
 ///     propulsion: false,
+///     form: ShipForm::Polynomial,
 /// };
 /// let source = eom_codegen::emit::system_source(&ship("two_term_ship", &spec).unwrap()).unwrap();
 /// assert!(source.contains("pub y_v: f64") && source.contains("pub n_r: f64"));

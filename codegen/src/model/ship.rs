@@ -41,6 +41,26 @@
 //! - a bias term is the propeller's: ½ρL²(u_A/2)² Y′_0 (× L for a moment).
 //!
 //! e is formed here from δ, v, r and c, so the proof covers it too.
+//!
+//! **The MMG standard method's form** (a spec with [`ShipForm::Mmg`]; H. Yasukawa and
+//! Y. Yoshimura, *J. Mar. Sci. Technol.* 20:37–52, 2015): the body in SI (M, the yaw inertia,
+//! x_G), the added masses non-dimensional, m′_x and m′_y on ½ρL²d and J′_z on ½ρL⁴d (d the
+//! draft), and the equations of motion the method writes at midship,
+//!
+//! ```text
+//! (M + m_x) u̇ − (M + m_y) v r − M x_G r² = X
+//! (M + m_y) v̇ + (M + m_x) u r + M x_G ṙ = Y
+//! (I_zz + M x_G² + J_z) ṙ + M x_G (v̇ + u r) = N
+//! ```
+//!
+//! which are 4.46 with the loads X_H + X_a − m_x u̇ + m_y v r, Y_H + Y_a − m_y v̇ − m_x u r and
+//! N_H + N_a − J_z ṙ (the added mass's Munk moment (m_x − m_y)uv is in the hull's N′_v, as the
+//! method fits it). The hull's terms are in v′ = v/U and r′ = rL/U (no term in u or δ): a
+//! term contributes ½ρLdU² · Y′_vvr v′²r′, ×L for a moment, and a bias term in X is −R′₀'s
+//! ½ρLdU² R′₀. The propeller's and the rudder's loads (X_a, Y_a, N_a) are not polynomials
+//! (a wake law in exp(−C₁|β_P|), the race's square roots, an angle of attack through
+//! atan2): the caller computes them beside U and the program reads them as inputs, added to
+//! the right side, which is proved with them.
 
 use super::families::inverse_names;
 use super::solve::solve_linear;
@@ -161,6 +181,17 @@ pub enum YawInertia {
     AboutMidship,
 }
 
+/// How the hydrodynamic forces are structured (module docs).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum ShipForm {
+    /// One polynomial table of the whole ship's forces (Abkowitz's; the Mariner's), its added
+    /// mass as the derivatives X_u̇ … N_ṙ, in SI or the prime system.
+    Polynomial,
+    /// The MMG standard method's: the body in SI, the added masses m′_x, m′_y, J′_z, the
+    /// hull's polynomial in v′ and r′ on ½ρLdU², the propeller's and the rudder's loads applied.
+    Mmg,
+}
+
 /// What a ship model is made of.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct ShipSpec {
@@ -173,6 +204,10 @@ pub struct ShipSpec {
     /// Whether the ship has a propeller, with its thrust law, and a rudder on its inflow speed
     /// c (module docs); a spec without one reads no n, c or u_A.
     pub propulsion: bool,
+    /// The polynomial table's form or the MMG standard method's (module docs); an MMG spec is
+    /// in [`Units::Dimensional`] (its body's units) and has no [`ShipSpec::propulsion`] (its
+    /// propeller and rudder are applied loads).
+    pub form: ShipForm,
 }
 
 /// The parameters of propulsion, by their symbols, after the body's, the added mass and the
@@ -184,6 +219,18 @@ pub const PROPULSION: [&str; 6] = ["x_R", "c0", "T_uu", "T_un", "T_nn", "R_uu"];
 /// |n|, the induced axial velocity u_A far behind the disk and the rudder's inflow speed c
 /// (m/s).
 pub const PROPULSION_INPUTS: [&str; 4] = ["n", "n_abs", "u_A", "c"];
+
+/// The MMG form's added masses by their symbols (m′_x, m′_y on ½ρL²d; J′_z on ½ρL⁴d), after
+/// the body's.
+pub const MMG_ADDED_MASS: [&str; 3] = ["m_x", "m_y", "J_z"];
+
+/// The MMG form's scales, by their symbols, after its added masses: ρ, L and the draft d.
+pub const MMG_SCALES: [&str; 3] = [DENSITY, LENGTH, DRAFT];
+const DRAFT: &str = "draft";
+
+/// The MMG form's applied loads, inputs after δ̇ and U: the propeller's and the rudder's X,
+/// Y, N about midship (N, N, N m), which the caller computes.
+pub const APPLIED_LOADS: [&str; 3] = ["X_applied", "Y_applied", "N_applied"];
 
 /// The prime system's scales, by their symbols: ρ, L, and U₀ (the reference of the surge
 /// perturbation), parameters of a prime-system model after the body's and the added mass.
@@ -223,6 +270,10 @@ impl ShipSpec {
                 ),
             ),
         ];
+        if self.form == ShipForm::Mmg {
+            self.mmg_parameters(&mut parameters);
+            return parameters;
+        }
         let added_mass = [
             "added mass X_u̇: surge force per surge acceleration",
             "added mass Y_v̇: sway force per sway acceleration",
@@ -292,9 +343,51 @@ impl ShipSpec {
         parameters
     }
 
-    /// The inputs: the rudder rate, in the prime system the speed U, and with propulsion
-    /// [`PROPULSION_INPUTS`].
+    /// The MMG form's parameters after the body's: the added masses, the scales, the hull's
+    /// terms.
+    fn mmg_parameters(&self, parameters: &mut Vec<Parameter>) {
+        let docs = [
+            "added mass m′_x in surge, over ½ρL²d",
+            "added mass m′_y in sway, over ½ρL²d",
+            "added moment of inertia J′_z in yaw, over ½ρL⁴d",
+            "water density ρ",
+            "length L between perpendiculars",
+            "draft d",
+        ];
+        let symbols = MMG_ADDED_MASS.iter().chain(&MMG_SCALES);
+        for (symbol, doc) in symbols.zip(docs) {
+            parameters.push(parameter(symbol, doc));
+        }
+        for term in &self.terms {
+            let scale = match term.force {
+                Force::N => "½ρL²dU²",
+                Force::X | Force::Y => "½ρLdU²",
+            };
+            let doc = match term.powers {
+                [0, 0, 0, 0, 0] => {
+                    format!("the hull's bias in {} over {scale}", term.force.letter())
+                }
+                _ => format!(
+                    "the hull's derivative: the coefficient of {} in {} over {scale}",
+                    term.monomial(["u", "v′", "r′", "δ", "e"]),
+                    term.force.letter()
+                ),
+            };
+            parameters.push(Parameter {
+                symbol: Cow::Owned(term.symbol()),
+                doc: Cow::Owned(doc),
+            });
+        }
+    }
+
+    /// The inputs: the rudder rate, in the prime system and the MMG form the speed U, with
+    /// propulsion [`PROPULSION_INPUTS`], in the MMG form [`APPLIED_LOADS`].
     pub fn inputs(&self) -> Vec<&'static str> {
+        if self.form == ShipForm::Mmg {
+            let mut inputs = vec!["delta_rate", "U"];
+            inputs.extend(APPLIED_LOADS);
+            return inputs;
+        }
         let mut inputs = match self.units {
             Units::Dimensional => vec!["delta_rate"],
             Units::Prime => vec!["delta_rate", "U"],
@@ -373,13 +466,30 @@ impl ShipSpec {
         if self.propulsion && force == Force::X {
             sum = &sum + &self.thrust()?;
         }
+        if self.form == ShipForm::Mmg {
+            let index = Force::ALL.iter().position(|f| *f == force).unwrap_or(0);
+            sum = &sum + &Expr::symbol(APPLIED_LOADS[index]);
+        }
         Ok(sum)
+    }
+
+    /// ½ρLd in the MMG form: the hull's force per U² of a coefficient (× L for a moment).
+    fn mmg_scale(&self) -> Expr {
+        let half = Expr::constant(Rational::new(1.into(), 2.into()));
+        &(&half * &Expr::symbol(DENSITY)) * &(&Expr::symbol(LENGTH) * &Expr::symbol(DRAFT))
     }
 
     /// What one term's coefficient multiplies, in SI (see the module docs).
     fn monomial_value(&self, term: &Term) -> Result<Expr, SymbolicError> {
         let moment_length = i32::from(term.force == Force::N);
         let [a, b, c, d, k] = term.powers.map(i32::from);
+        if self.form == ShipForm::Mmg {
+            // ½ρLdU² v′^b r′^c = ½ρLd L^c U^(2−b−c) v^b r^c, × L for a moment.
+            let length = Expr::symbol(LENGTH).pow(c + moment_length)?;
+            let speed = Expr::symbol("U").pow(2 - b - c)?;
+            let variables = &Expr::symbol("v").pow(b)? * &Expr::symbol("r").pow(c)?;
+            return Ok(&(&self.mmg_scale() * &length) * &(&speed * &variables));
+        }
         if self.propulsion && a + b + c == 0 {
             // On the rudder's inflow speed c (a term in e or in δ alone) or the propeller's
             // induced velocity (a bias): ½ρL²c² e^k δ^d, ½ρL²(u_A/2)², × L for a moment.
@@ -447,8 +557,27 @@ impl ShipSpec {
         Ok(&self.scale(2)? * &(&(&uu + &un) + &nn))
     }
 
-    /// The added-mass loads, X_u̇ u̇, Y_v̇ v̇ + Y_ṙ ṙ and N_v̇ v̇ + N_ṙ ṙ, in SI.
+    /// The added-mass loads, X_u̇ u̇, Y_v̇ v̇ + Y_ṙ ṙ and N_v̇ v̇ + N_ṙ ṙ, in SI; in the MMG
+    /// form −m_x u̇ + m_y v r, −m_y v̇ − m_x u r and −J_z ṙ (module docs).
     fn added_mass(&self, force: Force) -> Result<Expr, SymbolicError> {
+        if self.form == ShipForm::Mmg {
+            let mass = |symbol: &str| &self.mmg_scale() * &Expr::symbol(symbol);
+            let inertia = &mass("J_z") * &Expr::symbol(LENGTH).pow(2)?;
+            let [u, v, r] = ["u", "v", "r"].map(Expr::symbol);
+            return Ok(match force {
+                Force::X => {
+                    let length = Expr::symbol(LENGTH);
+                    let (m_x, m_y) = (&mass("m_x") * &length, &mass("m_y") * &length);
+                    &(&m_y * &(&v * &r)) - &(&m_x * &Expr::symbol("u_dot"))
+                }
+                Force::Y => {
+                    let length = Expr::symbol(LENGTH);
+                    let (m_x, m_y) = (&mass("m_x") * &length, &mass("m_y") * &length);
+                    -&(&(&m_y * &Expr::symbol("v_dot")) + &(&m_x * &(&u * &r)))
+                }
+                Force::N => -&(&(&inertia * &Expr::symbol(LENGTH)) * &Expr::symbol("r_dot")),
+            });
+        }
         let term = |symbol: &str, rate: &str, length_power: i32| -> Result<Expr, SymbolicError> {
             Ok(&(&self.scale(length_power)? * &Expr::symbol(symbol)) * &Expr::symbol(rate))
         };
@@ -480,6 +609,10 @@ impl ShipSpec {
     /// term in δ or e has no power of u, v or r (the rudder's terms are on c, the hull's on U).
     pub fn reads(&self, term: &Term) -> bool {
         let [a, b, c, d, k] = term.powers;
+        if self.form == ShipForm::Mmg {
+            // The hull's terms: in v′ and r′ alone (the rudder is an applied load).
+            return a == 0 && d == 0 && k == 0;
+        }
         let rudder = d > 0 || k > 0;
         if !self.propulsion {
             return k == 0;
@@ -528,12 +661,23 @@ pub fn ship(name: &str, spec: &ShipSpec) -> Result<System, BuildError> {
             residual: twice.symbol(),
         });
     }
+    if spec.form == ShipForm::Mmg && (spec.units != Units::Dimensional || spec.propulsion) {
+        return Err(BuildError::Verification {
+            model: name.into(),
+            what: "an MMG spec has its body in SI (Units::Dimensional) and its propeller and \
+                   rudder as applied loads (no propulsion model)"
+                .into(),
+            residual: "form".into(),
+        });
+    }
     if let Some(term) = spec.terms.iter().find(|t| !spec.reads(t)) {
         return Err(BuildError::Verification {
             model: name.into(),
             what: format!(
                 "the term {term} {}",
-                if spec.propulsion {
+                if spec.form == ShipForm::Mmg {
+                    "is not one of the MMG hull's, in v′ and r′ alone"
+                } else if spec.propulsion {
                     "mixes the rudder (on its inflow speed c) with u, v or r (on U)"
                 } else {
                     "is in the effective rudder angle e, which needs a propulsion model"

@@ -9,7 +9,7 @@ use eom::kinds::vehicle::VehicleScene;
 use eom::kinds::vehicle::model::{parameter_values, spec};
 use eom::scene::AnyScene;
 use eom_codegen::model::Kinematics;
-use eom_codegen::model::ship::{ADDED_MASS, PRIME_SCALES, ShipSpec};
+use eom_codegen::model::ship::{ADDED_MASS, PRIME_SCALES, ShipForm, ShipSpec};
 use eom_example_user_build_rs::{example_ship, mariner, remus};
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -75,6 +75,7 @@ pub fn symbols(table: &ShipTable) -> BTreeMap<String, f64> {
         yaw_inertia: table.body.yaw_inertia_about,
         terms: table.terms.keys().copied().collect(),
         propulsion: false,
+        form: ShipForm::Polynomial,
     };
     let body = [table.body.mass, table.body.yaw_inertia, table.body.x_g];
     let scales = [
