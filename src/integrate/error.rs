@@ -100,6 +100,15 @@ pub enum IntegrateError {
         /// The time of the right-hand-side evaluation that received it.
         t: f64,
     },
+    /// The model has no rates at a finite state and finite inputs: the state is outside the
+    /// model's domain (an MMG ship going astern, say), and the model says why.
+    #[error("the model has no rates at t = {}: {reason}", Short(*t))]
+    OutsideModel {
+        /// Why, in the model's words.
+        reason: String,
+        /// The time of the right-hand-side evaluation.
+        t: f64,
+    },
     /// Dense output was asked for a number of times that differs from the room given for it.
     #[error("{times} output times but room for {slots} states")]
     OutputLength {
@@ -151,6 +160,7 @@ impl IntegrateError {
             | IntegrateError::MaxStepsExceeded { t, .. }
             | IntegrateError::NonFiniteState { t, .. }
             | IntegrateError::NonFiniteInput { t, .. }
+            | IntegrateError::OutsideModel { t, .. }
             | IntegrateError::Stopped { t }
             | IntegrateError::NotConverged { t, .. } => Some(*t),
             _ => None,
@@ -175,6 +185,9 @@ impl IntegrateError {
             }
             IntegrateError::NonFiniteInput { name, value, .. } => {
                 format!("load input {name} is {value}, at a finite state")
+            }
+            IntegrateError::OutsideModel { reason, .. } => {
+                format!("the model has no rates: {reason}")
             }
             IntegrateError::Stopped { .. } => "the run was stopped by its observer".to_owned(),
             IntegrateError::NotConverged { iterations, .. } => {

@@ -7,6 +7,7 @@ use super::ShipError;
 use super::file::{BodyTable, ManoeuvreTable, PropulsionTable, ShipSceneFile};
 use super::linear::LinearModel;
 use super::manoeuvre::{Manoeuvre, ManoeuvreKind};
+use super::mmg::{MMG_COEFFICIENTS, MMG_PARTICULARS, MmgParameters};
 use super::propulsion::Propulsion;
 use super::scene::{
     CONTROLLER_TIME_S, MAX_HOLD_S, SETTLE_RUDDER_DEG, SETTLE_SPEED_M_S, SETTLE_TOLERANCE_DEG_S,
@@ -15,10 +16,11 @@ use super::scene::{
 use super::side::Side;
 use super::spiral::{ReverseSpiral, Settle, Spiral};
 use super::table::{GivenTable, RigidBodyTerms, ShipBody, ShipTable};
-use super::{Units, YawInertia};
+use super::{ShipForm, Units, YawInertia};
 use crate::manoeuvring::steering::{Rudder, Series};
 use crate::scene::check::Checker;
 use crate::scene::{Problem, SceneError};
+use std::collections::BTreeMap;
 
 /// The keys of `[[manoeuvre]]` that only some kinds read, with whether the table gives each.
 fn kind_keys(table: &ManoeuvreTable) -> [(&'static str, bool); 19] {
@@ -186,14 +188,42 @@ impl Checker<'_> {
 
     pub(super) fn table(&self, file: &ShipSceneFile) -> Result<(ShipTable, f64), SceneError> {
         let hydro = &file.hydrodynamics;
+        let form = self.word(
+            "hydrodynamics.model",
+            hydro.model.as_deref().unwrap_or("polynomial"),
+            [(ShipForm::Polynomial, "polynomial"), (ShipForm::Mmg, "mmg")],
+        )?;
+        if form == ShipForm::Mmg {
+            return self.mmg_table(file);
+        }
+        for (key, given) in [
+            ("particulars", hydro.particulars.is_some()),
+            ("propeller_rate_rps", hydro.propeller_rate_rps.is_some()),
+        ] {
+            if given {
+                return Err(self.invalid(
+                    &format!("hydrodynamics.{key}"),
+                    "a key of an MMG table (model = \"mmg\"); a polynomial table's propeller \
+                     is [propulsion]",
+                ));
+            }
+        }
+        let word = |key: &str, given: &Option<String>| {
+            given.clone().ok_or_else(|| {
+                self.error(
+                    key,
+                    Problem::Missing(format!("{key}, in a polynomial table")),
+                )
+            })
+        };
         let units = self.word(
             "hydrodynamics.units",
-            &hydro.units,
+            &word("hydrodynamics.units", &hydro.units)?,
             [(Units::Prime, "prime"), (Units::Dimensional, "dimensional")],
         )?;
         let rigid_body_terms = self.word(
             "hydrodynamics.rigid_body_terms",
-            &hydro.rigid_body_terms,
+            &word("hydrodynamics.rigid_body_terms", &hydro.rigid_body_terms)?,
             [
                 (RigidBodyTerms::Folded, "folded"),
                 (RigidBodyTerms::Separate, "separate"),
@@ -236,6 +266,80 @@ impl Checker<'_> {
             other => self.invalid("hydrodynamics", other.to_string()),
         })?;
         Ok((table, length))
+    }
+
+    /// An MMG table (`model = "mmg"`): the body in SI, ρ, the approach speed, the method's
+    /// coefficients by the names of `data/kvlcc2_mmg.json` and the particulars B, d, D_P,
+    /// H_R, A_R (L and x_G are the body's); the propeller rate that balances the approach is
+    /// solved here.
+    fn mmg_table(&self, file: &ShipSceneFile) -> Result<(ShipTable, f64), SceneError> {
+        let hydro = &file.hydrodynamics;
+        for (key, given) in [
+            ("units", hydro.units.is_some()),
+            ("rigid_body_terms", hydro.rigid_body_terms.is_some()),
+        ] {
+            if given {
+                return Err(self.invalid(
+                    &format!("hydrodynamics.{key}"),
+                    "an MMG table's units are the method's own (the body in SI, the \
+                     coefficients on ½ρLdU², ½ρL²dU², ½ρL²d, ½ρL⁴d): leave it out",
+                ));
+            }
+        }
+        if file.propulsion.is_some() {
+            return Err(self.invalid(
+                "propulsion",
+                "an MMG ship's propeller is in its coefficients (t_P, w_P0, k_0 …) and \
+                 particulars (D_P): leave [propulsion] out",
+            ));
+        }
+        let density = hydro.density.ok_or_else(|| {
+            self.error(
+                "hydrodynamics.density",
+                Problem::Missing("an MMG table needs ρ".into()),
+            )
+        })?;
+        let density = self.positive("hydrodynamics.density", density)?;
+        let speed = self.positive("hydrodynamics.design_speed", hydro.design_speed)?;
+        let (body, length) = self.ship_body(&file.body, Units::Dimensional)?;
+        let mut particulars = hydro.particulars.clone().unwrap_or_default();
+        self.known_names(
+            "hydrodynamics.coefficients",
+            &hydro.coefficients,
+            &MMG_COEFFICIENTS,
+        )?;
+        self.known_names("hydrodynamics.particulars", &particulars, &MMG_PARTICULARS)?;
+        particulars.insert("L".into(), length);
+        particulars.insert("x_G".into(), body.x_g);
+        let parameters = MmgParameters::from_values(&hydro.coefficients, &particulars, density)
+            .map_err(|e| self.invalid(&format!("hydrodynamics.{}", e.key()), e.to_string()))?;
+        let held = (hydro.propeller_rate_rps)
+            .map(|rate| self.positive("hydrodynamics.propeller_rate_rps", rate))
+            .transpose()?;
+        let table = ShipTable::mmg(body, parameters, (speed, held)).map_err(|e| match e {
+            ShipError::Invalid { key, reason } => self.invalid(&key, reason),
+            other => self.invalid("hydrodynamics", other.to_string()),
+        })?;
+        Ok((table, length))
+    }
+
+    /// Refuses a name of `given` that is not one of `known`, listing them.
+    fn known_names(
+        &self,
+        key: &str,
+        given: &BTreeMap<String, f64>,
+        known: &[&str],
+    ) -> Result<(), SceneError> {
+        match given.keys().find(|name| !known.contains(&name.as_str())) {
+            Some(name) => Err(self.invalid(
+                &format!("{key}.{name}"),
+                format!(
+                    "not a name of an MMG table here; the names are {}",
+                    known.join(", ")
+                ),
+            )),
+            None => Ok(()),
+        }
     }
 
     /// `[propulsion]`, each number checked; the rate at the approach is solved by the table.
@@ -435,7 +539,8 @@ impl Checker<'_> {
                 if propulsion.is_none() {
                     return Err(self.invalid(
                         &key("kind"),
-                        "a crash stop needs a propulsion model to go astern: give [propulsion]",
+                        "a crash stop needs a propulsion model to go astern: give [propulsion] (a \
+                         polynomial table's; an MMG ship's propeller turns ahead only)",
                     ));
                 }
                 let astern = self.finite(

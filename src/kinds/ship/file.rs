@@ -67,16 +67,23 @@ pub struct BodyTable {
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct HydrodynamicsTable {
-    /// `prime` or `dimensional`.
-    pub units: String,
-    /// `folded` or `separate`.
-    pub rigid_body_terms: String,
-    /// ρ, kg/m³ (prime only).
+    /// `polynomial` (the default) or `mmg`.
+    pub model: Option<String>,
+    /// `prime` or `dimensional` (a polynomial table's).
+    pub units: Option<String>,
+    /// `folded` or `separate` (a polynomial table's).
+    pub rigid_body_terms: Option<String>,
+    /// ρ, kg/m³ (prime and MMG tables).
     pub density: Option<f64>,
     /// U₀, m/s.
     pub design_speed: f64,
     /// The coefficients by name, as the table writes them.
     pub coefficients: BTreeMap<String, f64>,
+    /// An MMG table's particulars by name (B, d, D_P, H_R, A_R), m and m².
+    pub particulars: Option<BTreeMap<String, f64>>,
+    /// An MMG ship's propeller rate, rev/s, held in every run (by default the rate that
+    /// balances the approach, solved).
+    pub propeller_rate_rps: Option<f64>,
 }
 
 /// `[propulsion]`: the propeller, its thrust law, and the rudder in its slipstream

@@ -285,10 +285,10 @@ pub fn criteria(scene: &ShipScene, runs: &[Trial]) -> Vec<Criterion> {
             "track_reach",
             "crash_stop".to_owned(),
             (15.0 * length, "m"),
-            (if propulsion {
-                NO_CRASH_STOP
-            } else {
-                NO_PROPULSION
+            (match (propulsion, scene.table.mmg.is_some()) {
+                (true, _) => NO_CRASH_STOP,
+                (false, true) => MMG_AHEAD_ONLY,
+                (false, false) => NO_PROPULSION,
             })
             .to_owned(),
         )),
@@ -323,6 +323,11 @@ fn wrong_turns(turns: &[&Trial], angle: f64, gear: Option<f64>) -> String {
 
 /// Why the stopping criterion is not judged, without a propulsion model.
 pub const NO_PROPULSION: &str = "the scene gives no propulsion model, so no crash stop can be run";
+
+/// Why the stopping criterion is not judged for an MMG ship.
+pub const MMG_AHEAD_ONLY: &str = "the MMG standard method's propeller and rudder are for a \
+                                  ship moving ahead with its propeller turning ahead, so no \
+                                  crash stop can be run";
 
 /// Why the stopping criterion is not judged, with one.
 pub const NO_CRASH_STOP: &str = "the scene runs no crash_stop manoeuvre";

@@ -124,10 +124,27 @@ pub const KEYS: &[Key] = &[
     },
     // [hydrodynamics]
     Key {
+        path: "hydrodynamics.model",
+        families: SHIP,
+        kind: Kind::Text(Choices::These(&["polynomial", "mmg"])),
+        default: "\"polynomial\"",
+        description: "`polynomial`: one table of the whole ship's forces (Abkowitz's; the \
+                      Mariner's), in `units`, named term by term. `mmg`: the MMG standard \
+                      method (Yasukawa & Yoshimura 2015; eom::kinds::ship::mmg): the body in SI \
+                      (body.mass, body.izz or izz_midship, body.x_g), the hull's, propeller's \
+                      and rudder's coefficients by the names of data/kvlcc2_mmg.json, the \
+                      particulars B, d, D_P, H_R, A_R, density; no units, rigid_body_terms or \
+                      [propulsion]. The propeller rate is held at the rate that balances the \
+                      approach at design_speed, solved; δ > 0 turns the ship to starboard.",
+        example: "\"polynomial\"",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
         path: "hydrodynamics.units",
         families: SHIP,
         kind: Kind::Text(Choices::These(&["prime", "dimensional"])),
-        required: Required::Yes,
+        required: Required::When("in a polynomial table"),
         description: "The units of every number of the table and of the body. `dimensional`: \
                       SI (N, N m, kg, m, s, rad), a term Y_vvr adds Y_vvr·v²r newtons. \
                       `prime`: forces over ½ρU²L², moments over ½ρU²L³, mass over ½ρL³, I_zz \
@@ -141,7 +158,7 @@ pub const KEYS: &[Key] = &[
         path: "hydrodynamics.rigid_body_terms",
         families: SHIP,
         kind: Kind::Text(Choices::These(&["folded", "separate"])),
-        required: Required::Yes,
+        required: Required::When("in a polynomial table"),
         description: "`separate`: the table is hydrodynamic only, and 4.46 adds its rigid-body \
                       terms (M v r, M x_G r², M u r, M x_G u r). `folded`: the table holds them, \
                       as many published ones do (the Mariner's X_vr = m′, Y_r − m′, …); eom \
@@ -154,7 +171,7 @@ pub const KEYS: &[Key] = &[
         path: "hydrodynamics.density",
         families: SHIP,
         unit: "kg/m³",
-        required: Required::When("in a prime table (a dimensional one refuses it)"),
+        required: Required::When("in a prime or an MMG table (a dimensional one refuses it)"),
         description: "ρ, the water's density.",
         example: "1025.0",
         ..Key::BLANK
@@ -170,6 +187,21 @@ pub const KEYS: &[Key] = &[
         ..Key::BLANK
     },
     Key {
+        path: "hydrodynamics.propeller_rate_rps",
+        families: SHIP,
+        unit: "rev/s",
+        default: "the rate that balances the approach at design_speed, solved",
+        description: "An MMG ship's propeller rate, held in every run. By default eom solves \
+                      the rate at which the propeller's thrust balances the hull's resistance \
+                      at design_speed (SIMMAN's setup), so the approach is steady; a rate given \
+                      here (a model test's measured rate, a public code's) is held instead, \
+                      and summary.json model.mmg gives the surge force it leaves at the \
+                      approach, which the run's first seconds then feel.",
+        example: "10.33",
+        shown: Shown::Commented,
+        ..Key::BLANK
+    },
+    Key {
         path: "hydrodynamics.coefficients.*",
         families: SHIP,
         kind: Kind::Table("coefficient names and numbers"),
@@ -181,11 +213,32 @@ pub const KEYS: &[Key] = &[
                       in Y, Xrv and Xvr are one term, Nd multiplies δ in N. A 0 marks a bias \
                       (Y0; Y0u is the same term as Yu); an underscore may follow the load \
                       (Y_vvr). The added mass is Xudot, Yvdot, Yrdot, Nvdot, Nrdot. Each \
-                      number is kept as written.",
+                      number is kept as written. In an MMG table (model = \"mmg\") the names \
+                      are the method's, as data/kvlcc2_mmg.json writes them: m_x_p, m_y_p, \
+                      J_z_p (on ½ρL²d, ½ρL⁴d), R_0_p and the hull's X_vv_p, X_vr_p, X_rr_p, \
+                      X_vvvv_p, Y_ and N_ v, r, vvv, vvr, vrr, rrr _p (on ½ρLdU², ½ρL²dU², in \
+                      v′ = v/U, r′ = rL/U), the propeller's t_P, w_P0, x_P_p, k_0, k_1, k_2, \
+                      C_1, C_2_plus, C_2_minus, the rudder's t_R, a_H, x_H_p, x_R_p, \
+                      gamma_R_plus, gamma_R_minus, l_R_p, epsilon, kappa and f_alpha (optional: \
+                      Fujii's 6.13Λ/(Λ + 2.25) at Λ = H_R²/A_R without it); every one but \
+                      f_alpha required, any other name refused.",
         example: "Xudot = -0.0007\nYvdot = -0.0171\nNrdot = -0.00109\nXu = -0.00113\n\
                   Xvv = -0.006\nXrr = 0.00515\nXvr = 0.0085\nYv = -0.0261\nYr = 0.00365\n\
                   Yvrr = -0.045\nYd = 0.00717\nNv = -0.0105\nNr = -0.0048\nNvrr = 0.00611\n\
                   Nd = -0.00399",
+        ..Key::BLANK
+    },
+    Key {
+        path: "hydrodynamics.particulars.*",
+        families: SHIP,
+        kind: Kind::Table("particular names and numbers"),
+        unit: "m, m²",
+        required: Required::When("in an MMG table"),
+        description: "An MMG ship's particulars beside the body's length and x_G: B (breadth), \
+                      d (draft), D_P (the propeller's diameter), H_R (the rudder's span), A_R \
+                      (the rudder's area, m²); each positive, every one required.",
+        example: "B = 1.27\nd = 0.46\nD_P = 0.216\nH_R = 0.345\nA_R = 0.0539",
+        shown: Shown::Commented,
         ..Key::BLANK
     },
     // [rudder]: every key optional.

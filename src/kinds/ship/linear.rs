@@ -24,6 +24,7 @@
 //! scene ([`crate::linear`]): the states set aside, A and B on (u, v, r), the modes and the
 //! verdict, whose sway–yaw eigenvalues are −1/T₁ and −1/T₂.
 
+use super::mmg::MmgShip;
 use super::model::{STATE, ShipModel};
 use super::table::ShipTable;
 use super::{Force, Term, Units};
@@ -135,9 +136,46 @@ fn derivatives(table: &ShipTable, terms: &BTreeMap<Term, f64>, force: Force) -> 
 }
 
 impl LinearModel {
-    /// The closed form from the table's linear derivatives (rigid-body terms separate).
+    /// The closed form from the table's linear derivatives (rigid-body terms separate); an
+    /// MMG ship's from [`LinearModel::mmg`].
     pub fn closed_form(table: &ShipTable) -> Self {
-        Self::from_terms(table, &table.terms, true)
+        match &table.mmg {
+            Some(mmg) => Self::mmg(table, mmg),
+            None => Self::from_terms(table, &table.terms, true),
+        }
+    }
+
+    /// An MMG ship's: the hull's linear derivatives at U₀ (½ρLdU₀ Y′_v, ½ρL²dU₀ Y′_r,
+    /// ½ρL²dU₀ N′_v, ½ρL³dU₀ N′_r), the rudder's derivatives by v, r and δ at the straight
+    /// course with the propeller at n₀, and the rigid and added masses' (M + m_x)U₀ and
+    /// M x_G U₀ in r. The rudder's flow straightening changes at β_R = 0 (γ_R⁺ for β_R ≥ 0,
+    /// γ_R⁻ below) and the wake at β_P = 0, so the straight course has two one-sided linear
+    /// models: this is the one toward β_R > 0, the paper's γ_R⁺ and C₂⁺, which a small turn
+    /// to starboard (r > 0, the midship drifting to port) sees ([`super::mmg`]'s `applied`
+    /// module). The course-stability index C′ is det N over (½ρ)²L⁶U₀², the prime system's.
+    pub fn mmg(table: &ShipTable, mmg: &MmgShip) -> Self {
+        let m = table.mass_matrix();
+        let ship = &mmg.parameters.particulars;
+        let hull = &mmg.parameters.hull;
+        let u0 = table.design_speed;
+        let (rho, l, d) = (ship.density, ship.length, ship.draft);
+        let q = 0.5 * rho * l * d * u0;
+        let rudder = mmg
+            .loads_with_derivatives([u0, 0.0, 0.0, 0.0, mmg.approach_rate])
+            .map_or([[f64::NAN; 5]; 3], |a| a.by);
+        let y_v = q * hull.y_v + rudder[1][1];
+        let y_r = q * l * hull.y_r + rudder[1][2];
+        let n_v = q * l * hull.n_v + rudder[2][1];
+        let n_r = q * l * l * hull.n_r + rudder[2][2];
+        let surge_mass = m[0][0];
+        let (mass, x_g) = (table.body.mass, table.body.x_g);
+        LinearModel {
+            mass: [[m[1][1], m[1][2]], [m[2][1], m[2][2]]],
+            damping: [[-y_v, surge_mass * u0 - y_r], [-n_v, mass * x_g * u0 - n_r]],
+            rudder: [rudder[1][3], rudder[2][3]],
+            speed: u0,
+            prime_scale: Some((0.5 * rho).powi(2) * l.powi(6) * u0 * u0),
+        }
     }
 
     /// The closed form from a table's terms; `add_rigid_body` for terms without the

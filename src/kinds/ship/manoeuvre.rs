@@ -30,6 +30,7 @@
 //! instead, and is not given either.
 
 use super::ShipError;
+use super::mmg::MidshipState;
 use super::model::ShipModel;
 use super::propulsion::RateCommand;
 use super::side::Side;
@@ -235,9 +236,20 @@ impl OdeSystem<f64, 8> for Tracked<'_> {
         *dy = SVector::from_fn(|i, _| if i < 7 { rates[i] } else { distance });
     }
 
+    /// A load input that is not finite, or an MMG ship's state outside the paper's model
+    /// (astern, the propeller stopped), with the reason.
     fn explain_non_finite(&self, t: f64, y: &DriveState) -> Option<IntegrateError> {
-        self.driven
-            .explain_non_finite(t, &SVector::<f64, 7>::from_fn(|i, _| y[i]))
+        let state = SVector::<f64, 7>::from_fn(|i, _| y[i]);
+        if let Some(load) = self.driven.explain_non_finite(t, &state) {
+            return Some(load);
+        }
+        let mmg = self.driven.model().mmg()?;
+        let input = self.driven.loads().at(t, &state.data.0[0]);
+        let error = mmg.loads([y[0], y[1], y[2], y[6], input[1]]).err()?;
+        Some(IntegrateError::OutsideModel {
+            reason: format!("the MMG forces: {error}"),
+            t,
+        })
     }
 }
 
@@ -257,6 +269,10 @@ enum Watch {
     RateLimit,
     /// The ship stops: g = u.
     Stopped,
+    /// An MMG ship's inflow angle at the propeller (0: β_P) or the rudder (1: β_R) changes
+    /// sign: g = the angle. The model changes branch there (C₂, γ_R) and the wake law has a
+    /// kink (|β_P|), so, as at [`Watch::RateLimit`], every run ends a stretch on it.
+    InflowSide(usize),
 }
 
 impl Watch {
@@ -267,8 +283,16 @@ impl Watch {
             Watch::HeadingOnSide(side) => side * change - heading_a,
             Watch::YawRateZero => y[2],
             Watch::Stopped => y[0],
-            Watch::RateLimit => unreachable!("the steering's watch is evaluated by Steering"),
+            Watch::RateLimit | Watch::InflowSide(_) => {
+                unreachable!("the model's kinks are evaluated by the driver")
+            }
         }
+    }
+
+    /// Whether this is a kink of the ship's right-hand side, where only a stretch ends, not
+    /// an event of the manoeuvre.
+    fn is_kink(self) -> bool {
+        matches!(self, Watch::RateLimit | Watch::InflowSide(_))
     }
 }
 
@@ -412,12 +436,26 @@ impl<'a> Problem<8> for Driver<'a> {
         if (system.driven.loads().rate_margin(t, y[2], y[6])).is_some() {
             watches.push(Watch::RateLimit);
         }
+        if self.model.mmg().is_some() {
+            watches.extend([Watch::InflowSide(0), Watch::InflowSide(1)]);
+        }
         watches
     }
 
     fn g(&self, system: &Tracked<'a>, watch: Watch, t: f64, y: &DriveState) -> f64 {
         match watch {
             Watch::RateLimit => (system.driven.loads().rate_margin(t, y[2], y[6])).unwrap_or(0.0),
+            // Zero (not watched) where the model has no angles: the run reports that state.
+            Watch::InflowSide(which) => (self.model.mmg())
+                .and_then(|mmg| {
+                    let state = MidshipState {
+                        u: y[0],
+                        v_m: y[1],
+                        r: y[2],
+                    };
+                    mmg.parameters.inflow_angles(state).ok()
+                })
+                .map_or(0.0, |angles| angles[which]),
             other => other.g(y, self.heading0(), self.heading_a()),
         }
     }
@@ -441,7 +479,7 @@ impl<'a> Problem<8> for Driver<'a> {
     /// An event of the manoeuvre; at the steering gear's own only the form of δ̇ changes.
     fn event(&mut self, watch: Watch, t: f64, y: &mut DriveState) -> Flow {
         self.catch_up(t);
-        if watch != Watch::RateLimit {
+        if !watch.is_kink() {
             self.fire(watch, t, y);
         }
         self.settle(t, y)
@@ -542,6 +580,7 @@ impl<'a> Driver<'a> {
             rudder: self.rudder,
             command,
             engine: self.engine,
+            held_rate: self.model.approach_rate(),
         };
         Tracked {
             driven: self.model.driven_by(steering),
@@ -743,7 +782,7 @@ impl<'a> Driver<'a> {
                     };
                     self.watches = vec![Watch::HeadingOnSide(next_side), Watch::YawRateZero];
                 }
-                Watch::YawRateZero | Watch::RateLimit | Watch::Stopped => {}
+                Watch::YawRateZero | Watch::RateLimit | Watch::Stopped | Watch::InflowSide(_) => {}
             }
         }
     }

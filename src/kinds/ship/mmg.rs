@@ -48,7 +48,8 @@
 //! (v_m < 0). δ > 0 turns the ship to starboard: at β = r = 0 it gives F_N > 0, Y_R < 0 (the
 //! stern pushed to port) and, with x_R + a_H x_H < 0, N_R > 0. This is the paper's sign, and
 //! the opposite of eom's polynomial tables (the Mariner's puts positive δ to port,
-//! [`super::side`]); the scene keys of a later step say which the user writes.
+//! [`super::side`]); an MMG scene writes δ in the paper's sign, and eom finds the side each
+//! sign turns to from the linear model, as for any table.
 //!
 //! **The model's domain.** The paper's model is for a ship moving ahead (u ≥ 0) with its
 //! propeller turning ahead (n_P > 0); [`MmgParameters::forces`] returns an [`MmgStateError`]
@@ -60,19 +61,25 @@
 //!   unbounded but u(1 − w_P) times it is not: u_R = εκ√η √(8K_T/π) n_P D_P, its limit as
 //!   u → 0⁺.
 //!
-//! **Left to later steps**: the equations of motion (4.46 about midship with the added
-//! masses m_x, m_y, J_z, derived and proved by the symbolic engine as the polynomial ships'
-//! are), the scene keys of an MMG ship (and the sign of δ a user writes), the propeller rate
-//! at the approach (the SIMMAN setup's equilibrium), and the Jacobians of these forces.
+//! **How a ship runs it.** An MMG scene (`[hydrodynamics] model = "mmg"`, docs/mmg.md) is a
+//! ship on 4.46 like any other: the symbolic engine derives the paper's equations of motion
+//! at midship with the added masses m_x, m_y, J_z and the hull's polynomial, and proves them
+//! with their Jacobians (`eom_codegen::model::ship`, the MMG form); the propeller's and the
+//! rudder's loads, which are not polynomials, are computed beside the proved program and
+//! read as its applied loads, their derivatives by dual numbers in its Jacobians
+//! ([`MmgShip`]); the propeller is held at the rate that balances the approach
+//! ([`balancing_rate`]). The run, the figures, the sides and the IMO criteria are the ship's.
 
+mod applied;
 mod forces;
 mod parameters;
 
+pub use applied::{AppliedLoads, BY, MmgShip, balancing_rate};
 pub use forces::{
     Controls, Kinematics, MidshipState, MmgForces, MmgStateError, PlanarLoads, PropellerForces,
-    QUANTITIES, RudderForces,
+    QUANTITIES, Real, RudderForces,
 };
 pub use parameters::{
-    AddedMasses, HullDerivatives, MmgParameterError, MmgParameters, Particulars,
-    PropellerCoefficients, RudderCoefficients, fujii_lift_gradient,
+    AddedMasses, HullDerivatives, MMG_COEFFICIENTS, MMG_PARTICULARS, MmgParameterError,
+    MmgParameters, Particulars, PropellerCoefficients, RudderCoefficients, fujii_lift_gradient,
 };

@@ -19,7 +19,7 @@
 //! | what the figures assume (ahead, not stopped, one way, settled), checked on the run (shared with the vehicle's turning circle) | [`crate::manoeuvring::course`] |
 //! | the IMO MSC.137(76) criteria | [`imo`] |
 //! | the linear model about the straight course: Nomoto, course stability, pivot point | [`linear`] |
-//! | the MMG standard method's forces (hull, propeller, rudder) at a state, every quantity kept (its equations of motion are a later step) | [`mmg`] |
+//! | the MMG standard method: its forces (hull, propeller, rudder) at a state, every quantity kept; the propeller's and rudder's loads the proved program reads, with their derivatives; the rate that balances the approach | [`mmg`] |
 //! | the scene file | [`scene`] |
 //!
 //! The model is built when the scene is read, because the table is known only then: the
@@ -55,7 +55,7 @@ pub mod table;
 pub(crate) use crate::defined::engine::{ADDED_MASS, VARIABLES};
 /// The table's vocabulary, from the generator that builds the model: a term, its load, the
 /// units, and about which point the yaw inertia is given.
-pub use crate::defined::engine::{Force, Term, Units, YawInertia};
+pub use crate::defined::engine::{Force, ShipForm, Term, Units, YawInertia};
 pub use crate::manoeuvring::{Rudder, Series};
 pub use kind::KIND;
 pub use linear::{LinearModel, Nomoto};

@@ -13,13 +13,21 @@
 //! U what this model computes from u and n ([`super::propulsion`]): |n|, the induced velocity
 //! u_A and the rudder's inflow speed c; the Jacobians add the chain rule through them, into
 //! ∂f/∂u and ∂f/∂n. A ship without one reads n nowhere.
+//!
+//! An MMG ship (the MMG form of `eom_codegen::model::ship`) reads beside U the propeller's and
+//! the rudder's loads X_a, Y_a, N_a, which [`super::mmg::MmgShip`] computes from (u, v, r, δ,
+//! n) in f64, lane by lane for a SIMD scalar; its Jacobians add ∂f/∂(X_a, Y_a, N_a) times
+//! their dual-number derivatives, into ∂f/∂(u, v, r, δ) and ∂f/∂n. Outside the paper's model
+//! (a ship going astern, the propeller stopped) the loads are NaN, and the run says why
+//! ([`crate::integrate::IntegrateError::OutsideModel`]).
 
 use super::ShipError;
+use super::mmg::MmgShip;
 use super::propulsion::Propulsion;
 use super::table::ShipTable;
 use crate::defined::engine::{
-    ADDED_MASS, EmitError, Operations, PRIME_SCALES, PROPULSION, Program, ShipSpec, Units,
-    prove_with_jacobians, ship,
+    ADDED_MASS, APPLIED_LOADS, EmitError, MMG_ADDED_MASS, MMG_SCALES, Operations, PRIME_SCALES,
+    PROPULSION, Program, ShipSpec, Units, prove_with_jacobians, ship,
 };
 use crate::defined::{
     CoefficientFormulas, Derivations, Functions, Interpreter, Plan, Source, Variables,
@@ -39,9 +47,22 @@ pub const STATE: [&str; 7] = ["u", "v", "r", "X", "Y", "psi", "delta"];
 pub const INPUTS: [&str; 2] = ["delta_rate", "n"];
 
 /// The program's variables this model sets beside the state, in the order of
-/// [`ShipModel::computed`]: δ̇, U, then what propulsion reads. The state's are read where they
-/// lie.
-const COMPUTED: [&str; 6] = ["delta_rate", "U", "n", "n_abs", "u_A", "c"];
+/// [`ShipModel::computed`]: δ̇, U, then what propulsion reads, then an MMG ship's applied
+/// loads. The state's are read where they lie.
+const COMPUTED: [&str; 9] = [
+    "delta_rate",
+    "U",
+    "n",
+    "n_abs",
+    "u_A",
+    "c",
+    APPLIED_LOADS[0],
+    APPLIED_LOADS[1],
+    APPLIED_LOADS[2],
+];
+
+/// Where an MMG ship's applied loads lie in [`COMPUTED`].
+const APPLIED: usize = 6;
 
 /// Where the rates can depend on the state, for any table: u̇, v̇, ṙ on u, v, r and δ (the
 /// terms in U of a prime table are in u and v); Ẋ, Ẏ on u, v, ψ (4.44); ψ̇ on r; δ̇ on none.
@@ -69,6 +90,8 @@ pub struct ShipModel {
     /// Whether the program reads U (a prime table): asked at every call, so kept apart.
     reads_speed: bool,
     propulsion: Option<Propulsion>,
+    /// An MMG ship's propeller and rudder, whose loads the program reads.
+    mmg: Option<MmgShip>,
     /// What the table's values do not change, shared by the models of other values.
     proved: Arc<Proved>,
     operations: Operations,
@@ -90,6 +113,8 @@ enum ProgramInput {
     Induced,
     /// c(u, n).
     Inflow,
+    /// An MMG ship's applied load X, Y or N (by its index), of (u, v, r, δ, n).
+    Applied(usize),
 }
 
 /// The table's terms, 4.46 with them and its proved program: the same for every value of the
@@ -115,6 +140,7 @@ fn spec_of(table: &ShipTable) -> ShipSpec {
         yaw_inertia: table.body.yaw_inertia_about,
         terms: table.terms.keys().copied().collect(),
         propulsion: table.propulsion.is_some(),
+        form: table.form(),
     }
 }
 
@@ -160,6 +186,9 @@ impl ShipModel {
                 "n_abs" => Ok(ProgramInput::RateMagnitude),
                 "u_A" => Ok(ProgramInput::Induced),
                 "c" => Ok(ProgramInput::Inflow),
+                other if APPLIED_LOADS.contains(&other) => Ok(ProgramInput::Applied(
+                    APPLIED_LOADS.iter().position(|l| *l == other).unwrap_or(0),
+                )),
                 other => Err(ShipError::invalid(
                     "hydrodynamics",
                     format!("the program has an input `{other}` no ship computes"),
@@ -183,6 +212,7 @@ impl ShipModel {
             reads_speed: inputs.contains(&ProgramInput::Speed),
             inputs,
             propulsion: table.propulsion,
+            mmg: table.mmg,
             operations: proved.program.operations(&proved.program.rhs),
             terms: proved.spec.terms.len(),
             program: interpreter,
@@ -218,6 +248,7 @@ impl ShipModel {
         Ok(ShipModel {
             program: interpreter(&self.proved, &coefficients)?,
             propulsion: table.propulsion,
+            mmg: table.mmg,
             ..self.clone()
         })
     }
@@ -226,8 +257,8 @@ impl ShipModel {
     /// order: δ̇, U (zero where the program does not read it: a table in SI), and what a
     /// propulsion model computes (zero without one).
     #[inline]
-    fn computed<T: SimdRealField + Copy>(&self, state: &[T; 7], input: &[T; 2]) -> [T; 6] {
-        let mut computed = [T::zero(); 6];
+    fn computed<T: SimdRealField + Copy>(&self, state: &[T; 7], input: &[T; 2]) -> [T; 9] {
+        let mut computed = [T::zero(); 9];
         self.compute(state, input, &mut computed);
         computed
     }
@@ -239,7 +270,7 @@ impl ShipModel {
         &self,
         state: &[T; 7],
         input: &[T; 2],
-        computed: &mut [T; 6],
+        computed: &mut [T; 9],
     ) {
         computed[0] = input[0];
         if self.reads_speed {
@@ -247,6 +278,9 @@ impl ShipModel {
         }
         if let Some(propulsion) = &self.propulsion {
             propelled(propulsion, state, input, computed);
+        }
+        if let Some(mmg) = &self.mmg {
+            mmg_applied(mmg, state, input, computed);
         }
     }
 
@@ -280,6 +314,7 @@ impl ShipModel {
         let mut by_input = [[T::zero(); 2]; 7];
         let speed = (state[0] * state[0] + state[1] * state[1]).simd_sqrt();
         let inflow = self.propulsion.map(|p| p.inflow(state[0], input[1]));
+        let applied_by = self.mmg.map(|mmg| mmg_applied_by(&mmg, state, input));
         let entries = self.evaluate(&self.functions.input_jacobian, state, input);
         for (&(row, column), value) in self.functions.input_pattern.iter().zip(entries) {
             // (∂/∂u, ∂/∂n) of the input, where it is one the model computes.
@@ -305,6 +340,15 @@ impl ShipModel {
                     through(inflow.speed_by, &mut by_state, &mut by_input);
                 }
                 (ProgramInput::Induced | ProgramInput::Inflow, None) => {}
+                (ProgramInput::Applied(load), _) => {
+                    // ∂/∂(u, v, r, δ) into the state's columns, ∂/∂n into the rate's.
+                    if let Some(by) = &applied_by {
+                        for (variable, column) in [0, 1, 2, 6].into_iter().enumerate() {
+                            by_state[row][column] += value * by[load][variable];
+                        }
+                        by_input[row][1] += value * by[load][4];
+                    }
+                }
             }
         }
         (by_state, by_input)
@@ -324,7 +368,16 @@ impl ShipModel {
     /// The propeller rate at the approach, n₀ (rev/s): the model's second input on the
     /// straight course at U₀; zero for a ship without a propulsion model.
     pub fn approach_rate(&self) -> f64 {
-        self.propulsion.map_or(0.0, |p| p.approach_rate)
+        match (&self.propulsion, &self.mmg) {
+            (Some(p), _) => p.approach_rate,
+            (None, Some(mmg)) => mmg.approach_rate,
+            (None, None) => 0.0,
+        }
+    }
+
+    /// An MMG ship's propeller and rudder, for a ship of that form.
+    pub fn mmg(&self) -> Option<&MmgShip> {
+        self.mmg.as_ref()
     }
 
     /// What one call costs, as the emitter counts it.
@@ -369,13 +422,65 @@ fn propelled<T: SimdRealField + Copy>(
     propulsion: &Propulsion,
     state: &[T; 7],
     input: &[T; 2],
-    computed: &mut [T; 6],
+    computed: &mut [T; 9],
 ) {
     let inflow = propulsion.inflow(state[0], input[1]);
     computed[2] = input[1];
     computed[3] = input[1].simd_abs();
     computed[4] = inflow.induced;
     computed[5] = inflow.speed;
+}
+
+/// Lane `lane` of `value`, in f64.
+fn lane_of<T: SimdRealField + Copy>(value: T, lane: usize) -> f64 {
+    T::splat(value.extract(lane)).to_subset_unchecked()
+}
+
+/// `value` into lane `lane` of `into`.
+fn set_lane<T: SimdRealField + Copy>(into: &mut T, lane: usize, value: f64) {
+    into.replace(lane, T::from_subset(&value).extract(0));
+}
+
+/// (u, v, r, δ, n) of lane `lane`: what an MMG ship's applied loads are of.
+fn mmg_variables<T: SimdRealField + Copy>(state: &[T; 7], input: &[T; 2], lane: usize) -> [f64; 5] {
+    [state[0], state[1], state[2], state[6], input[1]].map(|x| lane_of(x, lane))
+}
+
+/// An MMG ship's applied loads (X_P + X_R, Y_R, N_R) into `computed`, lane by lane in f64;
+/// NaN outside the paper's model (a ship going astern, the propeller stopped), which the run
+/// reports with the reason ([`super::mmg::MmgShip::loads`]).
+#[inline(never)]
+fn mmg_applied<T: SimdRealField + Copy>(
+    mmg: &MmgShip,
+    state: &[T; 7],
+    input: &[T; 2],
+    computed: &mut [T; 9],
+) {
+    for lane in 0..T::LANES {
+        let loads = mmg.loads(mmg_variables(state, input, lane));
+        for (k, load) in loads.unwrap_or([f64::NAN; 3]).into_iter().enumerate() {
+            set_lane(&mut computed[APPLIED + k], lane, load);
+        }
+    }
+}
+
+/// The derivatives of an MMG ship's applied loads by (u, v, r, δ, n), lane by lane.
+fn mmg_applied_by<T: SimdRealField + Copy>(
+    mmg: &MmgShip,
+    state: &[T; 7],
+    input: &[T; 2],
+) -> [[T; 5]; 3] {
+    let mut by = [[T::zero(); 5]; 3];
+    for lane in 0..T::LANES {
+        let applied = mmg.loads_with_derivatives(mmg_variables(state, input, lane));
+        let derivatives = applied.map_or([[f64::NAN; 5]; 3], |a| a.by);
+        for (row, values) in by.iter_mut().zip(derivatives) {
+            for (entry, value) in row.iter_mut().zip(values) {
+                set_lane(entry, lane, value);
+            }
+        }
+    }
+    by
 }
 
 /// The hoisted coefficients of the proved program with `table`'s values.
@@ -422,6 +527,20 @@ fn parameters(spec: &ShipSpec, table: &ShipTable, named: bool) -> (Vec<String>, 
     let body = [table.body.mass, table.body.yaw_inertia, table.body.x_g];
     for (symbol, value) in spec.body_symbols().into_iter().zip(body) {
         give(&|| symbol.to_owned(), value);
+    }
+    if let Some(mmg) = &table.mmg {
+        let p = &mmg.parameters;
+        let added = [p.added_mass.surge, p.added_mass.sway, p.added_mass.yaw];
+        let ship = &p.particulars;
+        let scales = [ship.density, ship.length, ship.draft];
+        let given = MMG_ADDED_MASS.into_iter().zip(added);
+        for (symbol, value) in given.chain(MMG_SCALES.into_iter().zip(scales)) {
+            give(&|| symbol.to_owned(), value);
+        }
+        for (term, value) in &table.terms {
+            give(&|| term.symbol(), *value);
+        }
+        return (names, values);
     }
     for (symbol, value) in ADDED_MASS.into_iter().zip(table.added_mass) {
         give(&|| symbol.to_owned(), value);
@@ -470,7 +589,7 @@ impl<T: SimdRealField + Copy> Model<T, 7, 2> for ShipModel {
     /// at `input[1]`: the proved program.
     #[inline]
     fn rhs(&self, state: &[T; 7], input: &[T; 2]) -> [T; 7] {
-        let mut computed = [T::zero(); 6];
+        let mut computed = [T::zero(); 9];
         self.compute(state, input, &mut computed);
         let variables = Variables {
             state,

@@ -43,7 +43,8 @@ pub struct ModelSummary {
     pub family: &'static str,
     /// What it integrates.
     pub equations: &'static str,
-    /// `prime` or `dimensional`.
+    /// `prime`, `dimensional`, or `mmg` (the MMG standard method's: the body in SI, the
+    /// coefficients on ½ρLdU², ½ρL²dU², ½ρL²d, ½ρL⁴d).
     pub units: &'static str,
     /// `about G` or `about midship`.
     pub yaw_inertia: &'static str,
@@ -58,7 +59,31 @@ pub struct ModelSummary {
     /// The propeller at the approach, for a ship with a propulsion model.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub propulsion: Option<PropulsionSummary>,
+    /// The MMG standard method's propeller at the approach, for an MMG ship.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mmg: Option<MmgSummary>,
 }
+
+/// An MMG ship's propeller at the approach, and the convention of its linear model.
+#[derive(Debug, Clone, Serialize)]
+pub struct MmgSummary {
+    /// The rate the propeller is held at in every run, rev/s: the balancing rate unless the
+    /// scene gives another.
+    pub approach_rate_rps: f64,
+    /// n₀, rev/s: X = 0 on the straight course at U₀, rudder amidships.
+    pub balancing_rate_rps: f64,
+    /// X at the approach at the held rate, N: zero to rounding at n₀.
+    pub approach_surge_n: f64,
+    /// J at the approach, U₀(1 − w_P0)/(n D_P) at the held rate.
+    pub approach_advance_ratio: f64,
+    /// Which one-sided derivatives the linear model takes where the model is not smooth.
+    pub linear_model: &'static str,
+}
+
+/// What [`MmgSummary::linear_model`] says.
+pub const MMG_LINEAR_CONVENTION: &str = "one-sided at the straight course: the derivatives \
+    toward β_R > 0 and β_P > 0 (γ_R⁺, C₂⁺), which a small turn to starboard sees; a turn to \
+    port sees γ_R⁻ and C₂⁻";
 
 /// What the propulsion model gives at the approach, and the engine's limit.
 #[derive(Debug, Clone, Serialize)]
@@ -428,10 +453,17 @@ impl ModelSummary {
         let operations = model.operations();
         ModelSummary {
             family: "planar-midship",
-            equations: "4.46 with the added mass and the hydrodynamic polynomial; 4.44",
-            units: match table.units {
-                Units::Prime => "prime",
-                Units::Dimensional => "dimensional",
+            equations: match &table.mmg {
+                None => "4.46 with the added mass and the hydrodynamic polynomial; 4.44",
+                Some(_) => {
+                    "4.46 with the added masses m_x, m_y, J_z (the MMG standard method's), the \
+                     hull's polynomial and the propeller's and rudder's loads; 4.44"
+                }
+            },
+            units: match (table.units, &table.mmg) {
+                (_, Some(_)) => "mmg",
+                (Units::Prime, None) => "prime",
+                (Units::Dimensional, None) => "dimensional",
             },
             yaw_inertia: match table.body.yaw_inertia_about {
                 YawInertia::AboutG => "about G",
@@ -448,6 +480,17 @@ impl ModelSummary {
                 approach_rate_rps: p.approach_rate,
                 approach_inflow_m_s: p.approach_inflow,
                 max_rate_rps_s: p.max_rate,
+            }),
+            mmg: table.mmg.map(|mmg| {
+                let p = &mmg.parameters;
+                MmgSummary {
+                    approach_rate_rps: mmg.approach_rate,
+                    balancing_rate_rps: mmg.balancing_rate,
+                    approach_surge_n: mmg.approach_surge(),
+                    approach_advance_ratio: mmg.approach_speed * (1.0 - p.propeller.straight_wake)
+                        / (mmg.approach_rate * p.particulars.propeller_diameter),
+                    linear_model: MMG_LINEAR_CONVENTION,
+                }
             }),
         }
     }

@@ -18,8 +18,9 @@
 //! by m′r′(U − U₀)/U elsewhere: the run uses 4.46's exact M u r.
 
 use super::ShipError;
+use super::mmg::{MmgParameters, MmgShip};
 use super::propulsion::Propulsion;
-use super::{ADDED_MASS, Force, Term, Units, VARIABLES, YawInertia};
+use super::{ADDED_MASS, Force, ShipForm, Term, Units, VARIABLES, YawInertia};
 use crate::validate::Requirement;
 use std::collections::BTreeMap;
 
@@ -69,6 +70,10 @@ pub struct ShipTable {
     /// The propeller and the rudder in its slipstream, with the rate at the approach solved
     /// ([`Propulsion::at_approach`]); `None` for a ship without a propulsion model.
     pub propulsion: Option<Propulsion>,
+    /// The MMG standard method's ship (its hull's terms are [`ShipTable::terms`], its added
+    /// masses [`ShipTable::added_mass`] in SI; its propeller and rudder are here), for a
+    /// table of that form; `None` for a polynomial table.
+    pub mmg: Option<MmgShip>,
 }
 
 /// A coefficient name, read.
@@ -205,6 +210,7 @@ impl ShipTable {
             given_as: given.rigid_body_terms,
             conversions: Vec::new(),
             propulsion: None,
+            mmg: None,
         };
         if let Some(propulsion) = given.propulsion {
             let length = match (given.units, given.length) {
@@ -222,6 +228,79 @@ impl ShipTable {
             table.unfold();
         }
         table.terms.retain(|_, value| *value != 0.0);
+        table.check_mass_matrix()?;
+        Ok(table)
+    }
+
+    /// The table of an MMG ship: its body in SI, its hull's terms (R′₀ as the bias −X_0,
+    /// the derivatives in v′ and r′ as given, zeros left out), its added masses in SI
+    /// (X_u̇ = −m′_x ½ρL²d, Y_v̇ = −m′_y ½ρL²d, N_ṙ = −J′_z ½ρL⁴d, what the mass matrix and the
+    /// linear model read; the proved program reads m′_x, m′_y, J′_z themselves), and the
+    /// propeller rate that balances the approach at `design_speed`, held in every run unless
+    /// `held` gives another.
+    pub fn mmg(
+        body: ShipBody,
+        parameters: MmgParameters,
+        (design_speed, held): (f64, Option<f64>),
+    ) -> Result<Self, ShipError> {
+        let ship = &parameters.particulars;
+        let (hull, added) = (&parameters.hull, &parameters.added_mass);
+        let mass_scale = 0.5 * ship.density * ship.length * ship.length * ship.draft;
+        let inertia_scale = mass_scale * ship.length * ship.length;
+        let t = |force, powers: [u8; 2]| Term {
+            force,
+            powers: [0, powers[0], powers[1], 0, 0],
+        };
+        let lateral = |force, [v, r, vvv, vvr, vrr, rrr]: [f64; 6]| {
+            [
+                (t(force, [1, 0]), v),
+                (t(force, [0, 1]), r),
+                (t(force, [3, 0]), vvv),
+                (t(force, [2, 1]), vvr),
+                (t(force, [1, 2]), vrr),
+                (t(force, [0, 3]), rrr),
+            ]
+        };
+        let mut terms: BTreeMap<Term, f64> = [
+            (t(Force::X, [0, 0]), -hull.resistance),
+            (t(Force::X, [2, 0]), hull.x_vv),
+            (t(Force::X, [1, 1]), hull.x_vr),
+            (t(Force::X, [0, 2]), hull.x_rr),
+            (t(Force::X, [4, 0]), hull.x_vvvv),
+        ]
+        .into_iter()
+        .collect();
+        let y = [
+            hull.y_v, hull.y_r, hull.y_vvv, hull.y_vvr, hull.y_vrr, hull.y_rrr,
+        ];
+        let n = [
+            hull.n_v, hull.n_r, hull.n_vvv, hull.n_vvr, hull.n_vrr, hull.n_rrr,
+        ];
+        terms.extend(lateral(Force::Y, y));
+        terms.extend(lateral(Force::N, n));
+        terms.retain(|_, value| *value != 0.0);
+        let table = ShipTable {
+            units: Units::Dimensional,
+            body: ShipBody {
+                x_g: ship.centre_of_gravity,
+                ..body
+            },
+            density: Some(ship.density),
+            length: Some(ship.length),
+            design_speed,
+            added_mass: [
+                -added.surge * mass_scale,
+                -added.sway * mass_scale,
+                0.0,
+                0.0,
+                -added.yaw * inertia_scale,
+            ],
+            terms,
+            given_as: RigidBodyTerms::Separate,
+            conversions: Vec::new(),
+            propulsion: None,
+            mmg: Some(MmgShip::new(parameters, design_speed, held)?),
+        };
         table.check_mass_matrix()?;
         Ok(table)
     }
@@ -272,6 +351,14 @@ impl ShipTable {
                 "{term}: {folded:e} (folded) {sign} {what} {:e} = {separate:e}",
                 rigid.abs()
             ));
+        }
+    }
+
+    /// The table's form: the MMG standard method's where it has an MMG ship.
+    pub fn form(&self) -> ShipForm {
+        match self.mmg {
+            Some(_) => ShipForm::Mmg,
+            None => ShipForm::Polynomial,
         }
     }
 

@@ -11,6 +11,9 @@ pub struct Steering<'a> {
     pub(super) command: Command<'a>,
     /// The propeller-rate command; `None` for a ship without a propulsion model.
     pub(super) engine: Option<RateCommand>,
+    /// The propeller rate without a command: an MMG ship's n₀, which balances the approach
+    /// (zero, and read by no term, for a ship without a propeller).
+    pub(super) held_rate: f64,
 }
 
 /// The rudder command over one stretch.
@@ -63,11 +66,11 @@ impl Steering<'_> {
 
 impl Loads<f64, 7, 2> for Steering<'_> {
     /// δ̇: the lag's rate toward the saturated command, or a series' slope for a rudder
-    /// without a lag (which follows its command); n: the engine's command at `t` (zero,
-    /// and read by no term, for a ship without a propulsion model).
+    /// without a lag (which follows its command); n: the engine's command at `t`, or the
+    /// held rate without one.
     fn at(&self, t: f64, state: &[f64; 7]) -> [f64; 2] {
         let (command, slope) = self.command(t, state[2]);
-        let rate = self.engine.map_or(0.0, |engine| engine.rate(t));
+        let rate = self.engine.map_or(self.held_rate, |engine| engine.rate(t));
         [self.rudder.rate(command, state[6]).unwrap_or(slope), rate]
     }
 }

@@ -1,6 +1,7 @@
 //! The MMG forces at one state, hull, propeller and rudder in turn, every quantity on the way
 //! kept (the module's documentation gives the formulas and the signs).
 
+use num_dual::DualNum;
 use std::f64::consts::PI;
 
 use super::parameters::{HullDerivatives, MmgParameters, Particulars};
@@ -26,82 +27,88 @@ pub struct Controls {
     pub propeller_rate: f64,
 }
 
+/// A number the forces are computed in: f64 for their values, a dual number of
+/// [`num_dual`] for their exact derivatives (the model's Jacobians), by one definition.
+pub trait Real: DualNum<Primitive = f64> + Copy {}
+
+impl<D: DualNum<Primitive = f64> + Copy> Real for D {}
+
 /// A force pair and a moment about midship: X, Y in N, N in N m.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PlanarLoads {
+pub struct PlanarLoads<D = f64> {
     /// X, N.
-    pub x: f64,
+    pub x: D,
     /// Y, N.
-    pub y: f64,
+    pub y: D,
     /// N, N m.
-    pub n: f64,
+    pub n: D,
 }
 
 /// The speed and drift of the midship, and the non-dimensional sway and yaw the hull's
 /// derivatives are written in.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Kinematics {
+pub struct Kinematics<D = f64> {
     /// U = √(u² + v_m²), m/s.
-    pub speed: f64,
+    pub speed: D,
     /// β = atan2(−v_m, u), rad (0 at rest).
-    pub drift: f64,
+    pub drift: D,
     /// v′ = v_m/U (0 at rest).
-    pub sway_prime: f64,
+    pub sway_prime: D,
     /// r′ = rL/U (0 at rest).
-    pub yaw_rate_prime: f64,
+    pub yaw_rate_prime: D,
 }
 
 /// The propeller in the hull's wake.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PropellerForces {
+pub struct PropellerForces<D = f64> {
     /// β_P = β − x′_P r′, the inflow angle at the propeller, rad.
-    pub inflow_angle: f64,
+    pub inflow_angle: D,
     /// w_P, the wake fraction in the manoeuvre.
-    pub wake_fraction: f64,
+    pub wake_fraction: D,
     /// J = u(1 − w_P)/(n_P D_P).
-    pub advance_ratio: f64,
+    pub advance_ratio: D,
     /// K_T(J).
-    pub thrust_coefficient: f64,
+    pub thrust_coefficient: D,
     /// T = ρn_P²D_P⁴K_T, N.
-    pub thrust: f64,
+    pub thrust: D,
     /// X_P = (1 − t_P)T, N.
-    pub surge: f64,
+    pub surge: D,
 }
 
 /// The rudder in the propeller's race and the hull's straightened flow.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct RudderForces {
+pub struct RudderForces<D = f64> {
     /// β_R = β − l′_R r′, rad.
-    pub inflow_angle: f64,
+    pub inflow_angle: D,
     /// γ_R, γ_R⁺ or γ_R⁻ by the sign of β_R.
     pub flow_straightening: f64,
     /// u_R, the inflow ahead, m/s.
-    pub inflow_ahead: f64,
+    pub inflow_ahead: D,
     /// v_R = Uγ_Rβ_R, the inflow across, m/s.
-    pub inflow_across: f64,
+    pub inflow_across: D,
     /// α_R = δ − atan2(v_R, u_R), rad.
-    pub angle_of_attack: f64,
+    pub angle_of_attack: D,
     /// U_R = √(u_R² + v_R²), m/s.
-    pub inflow_speed: f64,
+    pub inflow_speed: D,
     /// F_N = ½ρA_R U_R² f_α sin α_R, N.
-    pub normal_force: f64,
+    pub normal_force: D,
     /// X_R, Y_R, N_R about midship.
-    pub loads: PlanarLoads,
+    pub loads: PlanarLoads<D>,
 }
 
 /// Every quantity of the MMG forces at one state, in SI units.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct MmgForces {
+pub struct MmgForces<D = f64> {
     /// U, β, v′, r′.
-    pub kinematics: Kinematics,
+    pub kinematics: Kinematics<D>,
     /// X_H, Y_H, N_H.
-    pub hull: PlanarLoads,
+    pub hull: PlanarLoads<D>,
     /// β_P, w_P, J, K_T, T, X_P.
-    pub propeller: PropellerForces,
+    pub propeller: PropellerForces<D>,
     /// β_R, γ_R, u_R, v_R, α_R, U_R, F_N, X_R, Y_R, N_R.
-    pub rudder: RudderForces,
+    pub rudder: RudderForces<D>,
     /// X = X_H + X_P + X_R, Y = Y_H + Y_R, N = N_H + N_R, about midship.
-    pub total: PlanarLoads,
+    pub total: PlanarLoads<D>,
 }
 
 /// Why the forces cannot be given at a state: it is outside the paper's model.
@@ -209,10 +216,20 @@ impl MmgParameters {
         controls: Controls,
     ) -> Result<MmgForces, MmgStateError> {
         check_domain(state, controls)?;
-        let kinematics = kinematics(state, self.particulars.length)?;
+        let MidshipState { u, v_m, r } = state;
+        self.forces_of([u, v_m, r, controls.rudder_angle, controls.propeller_rate])
+    }
+
+    /// [`MmgParameters::forces`] in any [`Real`] at (u, v_m, r, δ, n_P), the domain checked
+    /// by the caller: with dual numbers seeded on these five, their derivatives by each.
+    pub fn forces_of<D: Real>(
+        &self,
+        [u, v_m, r, delta, rate]: [D; 5],
+    ) -> Result<MmgForces<D>, MmgStateError> {
+        let kinematics = kinematics([u, v_m, r], self.particulars.length)?;
         let hull = hull_loads(&self.hull, &self.particulars, &kinematics);
-        let propeller = self.propeller_forces(state.u, &kinematics, controls.propeller_rate);
-        let rudder = self.rudder_forces(state.u, &kinematics, &propeller, controls)?;
+        let propeller = self.propeller_forces(u, &kinematics, rate);
+        let rudder = self.rudder_forces(u, &kinematics, &propeller, (delta, rate))?;
         let total = PlanarLoads {
             x: hull.x + propeller.surge + rudder.loads.x,
             y: hull.y + rudder.loads.y,
@@ -227,60 +244,78 @@ impl MmgParameters {
         })
     }
 
+    /// β_P and β_R at `state`, rad: the inflow angles whose signs choose C₂ and γ_R (zero at
+    /// rest), or why the paper's model has none there.
+    pub fn inflow_angles(&self, state: MidshipState) -> Result<[f64; 2], MmgStateError> {
+        let motion = kinematics([state.u, state.v_m, state.r], self.particulars.length)?;
+        Ok([
+            inflow_angle(&motion, self.propeller.position),
+            inflow_angle(&motion, self.rudder.effective_position),
+        ])
+    }
+
     /// β_P, the wake in the manoeuvre, J, K_T, T and X_P.
-    fn propeller_forces(&self, u: f64, motion: &Kinematics, rate: f64) -> PropellerForces {
+    fn propeller_forces<D: Real>(
+        &self,
+        u: D,
+        motion: &Kinematics<D>,
+        rate: D,
+    ) -> PropellerForces<D> {
         let p = &self.propeller;
         let diameter = self.particulars.propeller_diameter;
-        let inflow_angle = motion.drift - p.position * motion.yaw_rate_prime;
-        let wake_gain = if inflow_angle >= 0.0 {
+        let inflow_angle = inflow_angle(motion, p.position);
+        let wake_gain = if inflow_angle.re() >= 0.0 {
             p.wake_gain_positive
         } else {
             p.wake_gain_negative
         };
-        let growth = 1.0 - (-p.wake_rate * inflow_angle.abs()).exp();
-        let wake_fraction = 1.0 - (1.0 - p.straight_wake) * (1.0 + growth * (wake_gain - 1.0));
-        let advance_ratio = u * (1.0 - wake_fraction) / (rate * diameter);
+        let magnitude = if inflow_angle.re() < 0.0 {
+            -inflow_angle
+        } else {
+            inflow_angle
+        };
+        let growth = -(magnitude * -p.wake_rate).exp() + 1.0;
+        let wake_fraction = -((growth * (wake_gain - 1.0) + 1.0) * (1.0 - p.straight_wake)) + 1.0;
+        let advance_ratio = u * (-wake_fraction + 1.0) / (rate * diameter);
         let [k0, k1, k2] = p.thrust_curve;
-        let thrust_coefficient = k0 + k1 * advance_ratio + k2 * advance_ratio * advance_ratio;
-        let thrust = self.particulars.density * rate * rate * diameter.powi(4) * thrust_coefficient;
+        let thrust_coefficient = advance_ratio * k1 + advance_ratio * advance_ratio * k2 + k0;
+        let thrust =
+            rate * rate * thrust_coefficient * (self.particulars.density * diameter.powi(4));
         PropellerForces {
             inflow_angle,
             wake_fraction,
             advance_ratio,
             thrust_coefficient,
             thrust,
-            surge: (1.0 - p.thrust_deduction) * thrust,
+            surge: thrust * (1.0 - p.thrust_deduction),
         }
     }
 
     /// The rudder's inflow, its normal force and what it gives about midship.
-    fn rudder_forces(
+    fn rudder_forces<D: Real>(
         &self,
-        u: f64,
-        motion: &Kinematics,
-        propeller: &PropellerForces,
-        controls: Controls,
-    ) -> Result<RudderForces, MmgStateError> {
+        u: D,
+        motion: &Kinematics<D>,
+        propeller: &PropellerForces<D>,
+        (delta, rate): (D, D),
+    ) -> Result<RudderForces<D>, MmgStateError> {
         let c = &self.rudder;
         let ship = &self.particulars;
-        let inflow_angle = motion.drift - c.effective_position * motion.yaw_rate_prime;
-        let flow_straightening = if inflow_angle >= 0.0 {
+        let inflow_angle = inflow_angle(motion, c.effective_position);
+        let flow_straightening = if inflow_angle.re() >= 0.0 {
             c.straightening_positive
         } else {
             c.straightening_negative
         };
-        let inflow_ahead = self.rudder_inflow_ahead(u, propeller, controls.propeller_rate)?;
-        let inflow_across = motion.speed * flow_straightening * inflow_angle;
-        let angle_of_attack = controls.rudder_angle - inflow_across.atan2(inflow_ahead);
-        let inflow_speed = inflow_ahead.hypot(inflow_across);
-        let normal_force = 0.5
-            * ship.density
-            * ship.rudder_area
+        let inflow_ahead = self.rudder_inflow_ahead(u, propeller, rate)?;
+        let inflow_across = motion.speed * inflow_angle * flow_straightening;
+        let angle_of_attack = delta - inflow_across.atan2(inflow_ahead);
+        let inflow_speed = (inflow_ahead * inflow_ahead + inflow_across * inflow_across).sqrt();
+        let normal_force = inflow_speed
             * inflow_speed
-            * inflow_speed
-            * c.lift_gradient
-            * angle_of_attack.sin();
-        let (sin_delta, cos_delta) = controls.rudder_angle.sin_cos();
+            * angle_of_attack.sin()
+            * (0.5 * ship.density * ship.rudder_area * c.lift_gradient);
+        let (sin_delta, cos_delta) = delta.sin_cos();
         let lever = (c.position + c.hull_force_share * c.hull_force_position) * ship.length;
         Ok(RudderForces {
             inflow_angle,
@@ -291,56 +326,53 @@ impl MmgParameters {
             inflow_speed,
             normal_force,
             loads: PlanarLoads {
-                x: -(1.0 - c.drag_deduction) * normal_force * sin_delta,
-                y: -(1.0 + c.hull_force_share) * normal_force * cos_delta,
-                n: -lever * normal_force * cos_delta,
+                x: -(normal_force * sin_delta * (1.0 - c.drag_deduction)),
+                y: -(normal_force * cos_delta * (1.0 + c.hull_force_share)),
+                n: -(normal_force * cos_delta * lever),
             },
         })
     }
 
     /// u_R = εu(1 − w_P) √(η{1 + κ(√(1 + 8K_T/(πJ²)) − 1)}² + (1 − η)), or its limit
-    /// εκ√η √(8K_T/π) n_P D_P at J = 0 (where u(1 − w_P) = 0 and the race term is unbounded).
-    fn rudder_inflow_ahead(
+    /// εκ√η √(8K_T/π) n_P D_P at J = 0 (where u(1 − w_P) = 0 and the race term is unbounded;
+    /// its derivatives there are the limit's, which holds n_P D_P and K_T's).
+    fn rudder_inflow_ahead<D: Real>(
         &self,
-        u: f64,
-        propeller: &PropellerForces,
-        rate: f64,
-    ) -> Result<f64, MmgStateError> {
+        u: D,
+        propeller: &PropellerForces<D>,
+        rate: D,
+    ) -> Result<D, MmgStateError> {
         let c = &self.rudder;
         let (j, k_t) = (propeller.advance_ratio, propeller.thrust_coefficient);
         let undefined = MmgStateError::RaceUndefined {
-            advance_ratio: j,
-            thrust_coefficient: k_t,
+            advance_ratio: j.re(),
+            thrust_coefficient: k_t.re(),
         };
-        let race_radicand = 1.0 + 8.0 * k_t / (PI * j * j);
-        if j == 0.0 || race_radicand.is_infinite() {
-            let thrust_radicand = 8.0 * k_t / PI;
-            if thrust_radicand < 0.0 {
+        let race_radicand = k_t * 8.0 / (j * j * PI) + 1.0;
+        if j.re() == 0.0 || race_radicand.re().is_infinite() {
+            let thrust_radicand = k_t * (8.0 / PI);
+            if thrust_radicand.re() < 0.0 {
                 return Err(undefined);
             }
             let diameter = self.particulars.propeller_diameter;
-            return Ok(c.wake_ratio
-                * c.race_share
-                * c.span_in_race.sqrt()
-                * thrust_radicand.sqrt()
-                * rate
-                * diameter);
+            let race = c.wake_ratio * c.race_share * c.span_in_race.sqrt();
+            return Ok(thrust_radicand.sqrt() * rate * (race * diameter));
         }
-        if race_radicand < 0.0 {
+        if race_radicand.re() < 0.0 {
             return Err(undefined);
         }
-        let race = 1.0 + c.race_share * (race_radicand.sqrt() - 1.0);
-        let radicand = c.span_in_race * race * race + (1.0 - c.span_in_race);
-        if radicand < 0.0 {
+        let race = (race_radicand.sqrt() - 1.0) * c.race_share + 1.0;
+        let radicand = race * race * c.span_in_race + (1.0 - c.span_in_race);
+        if radicand.re() < 0.0 {
             return Err(undefined);
         }
-        Ok(c.wake_ratio * u * (1.0 - propeller.wake_fraction) * radicand.sqrt())
+        Ok(u * (-propeller.wake_fraction + 1.0) * radicand.sqrt() * c.wake_ratio)
     }
 }
 
 /// The state and controls the paper's model is written for: finite, ahead, the propeller
 /// turning ahead.
-fn check_domain(state: MidshipState, controls: Controls) -> Result<(), MmgStateError> {
+pub(crate) fn check_domain(state: MidshipState, controls: Controls) -> Result<(), MmgStateError> {
     for (name, value) in [
         ("u", state.u),
         ("v_m", state.v_m),
@@ -364,42 +396,49 @@ fn check_domain(state: MidshipState, controls: Controls) -> Result<(), MmgStateE
 }
 
 /// U, β, v′, r′ of the midship; at rest (U = 0) β, v′, r′ are 0, and a yaw rate there is an
-/// error.
-fn kinematics(state: MidshipState, length: f64) -> Result<Kinematics, MmgStateError> {
-    let speed = state.u.hypot(state.v_m);
-    if speed == 0.0 {
-        if state.r != 0.0 {
-            return Err(MmgStateError::TurningAtRest { r: state.r });
+/// error. U is √(u² + v_m²) as the proved program's U is computed, to the bit.
+fn kinematics<D: Real>([u, v_m, r]: [D; 3], length: f64) -> Result<Kinematics<D>, MmgStateError> {
+    let speed = (u * u + v_m * v_m).sqrt();
+    if speed.re() == 0.0 {
+        if r.re() != 0.0 {
+            return Err(MmgStateError::TurningAtRest { r: r.re() });
         }
+        let zero = D::from(0.0);
         return Ok(Kinematics {
-            speed,
-            drift: 0.0,
-            sway_prime: 0.0,
-            yaw_rate_prime: 0.0,
+            speed: zero,
+            drift: zero,
+            sway_prime: zero,
+            yaw_rate_prime: zero,
         });
     }
     Ok(Kinematics {
         speed,
-        drift: (-state.v_m).atan2(state.u),
-        sway_prime: state.v_m / speed,
-        yaw_rate_prime: state.r * length / speed,
+        drift: (-v_m).atan2(u),
+        sway_prime: v_m / speed,
+        yaw_rate_prime: r * length / speed,
     })
+}
+
+/// β − x′r′: the inflow angle at the propeller (x′ = x′_P) or the rudder (x′ = l′_R).
+fn inflow_angle<D: Real>(motion: &Kinematics<D>, position: f64) -> D {
+    motion.drift - motion.yaw_rate_prime * position
 }
 
 /// The hull's sway force or yaw moment, non-dimensional, from its terms in v′, r′, v′³, v′²r′,
 /// v′r′² and r′³ (the paper writes Y′_H and N′_H alike).
-fn lateral([v1, r1, vvv, vvr, vrr, rrr]: [f64; 6], (v, r): (f64, f64)) -> f64 {
-    v1 * v + r1 * r + vvv * v.powi(3) + vvr * v * v * r + vrr * v * r * r + rrr * r.powi(3)
+fn lateral<D: Real>([v1, r1, vvv, vvr, vrr, rrr]: [f64; 6], (v, r): (D, D)) -> D {
+    v * v1 + r * r1 + v.powi(3) * vvv + v * v * r * vvr + v * r * r * vrr + r.powi(3) * rrr
 }
 
 /// X_H, Y_H on ½ρLdU², N_H on ½ρL²dU², from the hull's polynomials in v′ and r′.
-fn hull_loads(hull: &HullDerivatives, ship: &Particulars, motion: &Kinematics) -> PlanarLoads {
+fn hull_loads<D: Real>(
+    hull: &HullDerivatives,
+    ship: &Particulars,
+    motion: &Kinematics<D>,
+) -> PlanarLoads<D> {
     let (v, r) = (motion.sway_prime, motion.yaw_rate_prime);
-    let surge = -hull.resistance
-        + hull.x_vv * v * v
-        + hull.x_vr * v * r
-        + hull.x_rr * r * r
-        + hull.x_vvvv * v.powi(4);
+    let surge = v * v * hull.x_vv + v * r * hull.x_vr + r * r * hull.x_rr + v.powi(4) * hull.x_vvvv
+        - hull.resistance;
     let sway = lateral(
         [
             hull.y_v, hull.y_r, hull.y_vvv, hull.y_vvr, hull.y_vrr, hull.y_rrr,
@@ -412,11 +451,11 @@ fn hull_loads(hull: &HullDerivatives, ship: &Particulars, motion: &Kinematics) -
         ],
         (v, r),
     );
-    let force_scale = 0.5 * ship.density * ship.length * ship.draft * motion.speed.powi(2);
+    let force_scale = motion.speed.powi(2) * (0.5 * ship.density * ship.length * ship.draft);
     PlanarLoads {
         x: force_scale * surge,
         y: force_scale * sway,
-        n: force_scale * ship.length * yaw,
+        n: force_scale * yaw * ship.length,
     }
 }
 

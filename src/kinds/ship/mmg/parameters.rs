@@ -50,6 +50,19 @@ pub enum MmgParameterError {
     },
 }
 
+impl MmgParameterError {
+    /// The key it is about, by its path in the table (`coefficients.k_2`).
+    pub fn key(&self) -> &str {
+        match self {
+            MmgParameterError::Missing { key }
+            | MmgParameterError::NotANumber { key }
+            | MmgParameterError::NotAGroup { key }
+            | MmgParameterError::NotFinite { key, .. }
+            | MmgParameterError::NotPositive { key, .. } => key,
+        }
+    }
+}
+
 /// The ship's principal particulars and the water's density, in SI units.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Particulars {
@@ -183,6 +196,54 @@ pub struct MmgParameters {
     /// t_R, a_H, x′_H, x′_R, γ_R±, l′_R, ε, κ, f_α, η.
     pub rudder: RudderCoefficients,
 }
+
+/// The names of a table's `coefficients` ([`MmgParameters::from_values`]); `f_alpha` may be
+/// left out (Fujii's formula then gives it).
+pub const MMG_COEFFICIENTS: [&str; 39] = [
+    "m_x_p",
+    "m_y_p",
+    "J_z_p",
+    "R_0_p",
+    "X_vv_p",
+    "X_vr_p",
+    "X_rr_p",
+    "X_vvvv_p",
+    "Y_v_p",
+    "Y_r_p",
+    "Y_vvv_p",
+    "Y_vvr_p",
+    "Y_vrr_p",
+    "Y_rrr_p",
+    "N_v_p",
+    "N_r_p",
+    "N_vvv_p",
+    "N_vvr_p",
+    "N_vrr_p",
+    "N_rrr_p",
+    "t_P",
+    "w_P0",
+    "x_P_p",
+    "k_0",
+    "k_1",
+    "k_2",
+    "C_1",
+    "C_2_plus",
+    "C_2_minus",
+    "t_R",
+    "a_H",
+    "x_H_p",
+    "x_R_p",
+    "gamma_R_plus",
+    "gamma_R_minus",
+    "l_R_p",
+    "epsilon",
+    "kappa",
+    "f_alpha",
+];
+
+/// The names of a scene's `particulars` the forces read beside the body's L and x_G: B, d
+/// (m), D_P, H_R (m), A_R (m²).
+pub const MMG_PARTICULARS: [&str; 5] = ["B", "d", "D_P", "H_R", "A_R"];
 
 /// Fujii's rudder lift gradient, f_α = 6.13Λ/(Λ + 2.25), at the aspect ratio Λ.
 pub fn fujii_lift_gradient(aspect_ratio: f64) -> f64 {
