@@ -8,7 +8,7 @@
 use eom::Model;
 use eom::kinds::ship::linear::{LinearModel, linearise};
 use eom::kinds::ship::manoeuvre::{Figures, run};
-use eom::kinds::ship::mmg::{Controls, MidshipState};
+use eom::kinds::ship::mmg::{Controls, Edge, MidshipState};
 use eom::kinds::ship::{ShipModel, ShipScene, Side};
 use nalgebra::{Matrix3, Vector3};
 
@@ -157,12 +157,13 @@ fn the_solved_rate_holds_the_approach() {
     }
 }
 
-/// The figures of the manoeuvre `name` run to `side`.
-fn figures(scene: &ShipScene, name: &str, side: Side) -> Figures {
+/// The figures of the manoeuvre `name` run to `side` (`None` for one without sides).
+fn figures(scene: &ShipScene, name: &str, side: impl Into<Option<Side>>) -> Figures {
     let model = ShipModel::new(&scene.table).unwrap();
     let manoeuvre = scene.manoeuvres.iter().find(|m| m.name == name).unwrap();
     let runs = manoeuvre.runs();
-    let (_, sided) = runs.iter().find(|(s, _)| *s == Some(side)).unwrap();
+    let side = side.into();
+    let (_, sided) = runs.iter().find(|(s, _)| *s == side).unwrap();
     run(
         &model,
         &scene.rudder,
@@ -296,4 +297,64 @@ fn bad_mmg_scenes_are_refused_naming_the_key() {
             .to_string();
         assert!(error.contains(key), "{from} → {to}: {error}");
     }
+}
+
+/// On the straight course the rudder's and the wake's derivatives by v and r have two
+/// one-sided values (γ_R⁺ or γ_R⁻, C₂⁺ or C₂⁻, the slope of |β_P|): the dual numbers taken
+/// toward each side are the one-sided differences toward it (v < 0 and r > 0 make β_P, β_R
+/// positive; v > 0 and r < 0 negative), to 1e-6 of the derivative's size (the differences'
+/// own truncation at h = 1e-7 of U₀).
+#[test]
+fn the_one_sided_derivatives_are_those_toward_each_side() {
+    let scene = scene("kvlcc2_l7.toml");
+    let mmg = scene.table.mmg.as_ref().unwrap();
+    let u0 = scene.table.design_speed;
+    let at = [u0, 0.0, 0.0, 0.0, mmg.approach_rate];
+    let base = mmg.loads(at).unwrap();
+    for (edge, sign) in [(Edge::TowardPositive, 1.0), (Edge::TowardNegative, -1.0)] {
+        let exact = mmg.loads_with_derivatives_toward(at, edge).unwrap().by;
+        // β grows as v falls and as r grows (x′_P, l′_R < 0).
+        for (variable, toward) in [(1, -sign), (2, sign)] {
+            let h = 1e-7 * u0 * toward;
+            let mut shifted = at;
+            shifted[variable] += h;
+            let moved = mmg.loads(shifted).unwrap();
+            for load in 0..3 {
+                let difference = (moved[load] - base[load]) / h;
+                let size = exact[load][variable].abs().max(1e-9);
+                assert!(
+                    (exact[load][variable] - difference).abs() <= 1e-6 * size,
+                    "{edge:?}, load {load}, variable {variable}: {} against {difference}",
+                    exact[load][variable]
+                );
+            }
+        }
+    }
+    let (positive, negative) = (
+        mmg.loads_with_derivatives_toward(at, Edge::TowardPositive)
+            .unwrap()
+            .by,
+        mmg.loads_with_derivatives_toward(at, Edge::TowardNegative)
+            .unwrap()
+            .by,
+    );
+    assert!((positive[1][1] - negative[1][1]).abs() > 0.1 * positive[1][1].abs());
+}
+
+/// The KVLCC2's straight course is stable toward starboard (γ_R⁺ = 0.64) and unstable toward
+/// port (γ_R⁻ = 0.395): the summary's verdict is that it is not stable, and the direct spiral
+/// finds the loop, on the side of small rudder angles, that the steady turns' folds bound.
+#[test]
+fn the_kvlcc2_is_course_stable_toward_starboard_only_and_its_spiral_loops() {
+    let scene = scene("kvlcc2_l7.toml");
+    let mmg = scene.table.mmg.as_ref().unwrap();
+    let starboard = LinearModel::mmg(&scene.table, mmg, Edge::TowardPositive);
+    let port = LinearModel::mmg(&scene.table, mmg, Edge::TowardNegative);
+    assert!(starboard.course_stable(), "toward starboard");
+    assert!(!port.course_stable(), "toward port");
+    assert_eq!((starboard.mass, starboard.rudder), (port.mass, port.rudder));
+    let spiral = figures(&scene, "spiral", None);
+    let loop_width = spiral.get("steady_loop_width_deg").unwrap();
+    assert!(loop_width > 0.1 && loop_width < 1.0, "{loop_width}");
+    assert!(spiral.get("loop_width_deg").unwrap() > 0.0);
 }

@@ -24,7 +24,7 @@
 //! scene ([`crate::linear`]): the states set aside, A and B on (u, v, r), the modes and the
 //! verdict, whose sway–yaw eigenvalues are −1/T₁ and −1/T₂.
 
-use super::mmg::MmgShip;
+use super::mmg::{Edge, MmgShip};
 use super::model::{STATE, ShipModel};
 use super::table::ShipTable;
 use super::{Force, Term, Units};
@@ -140,7 +140,7 @@ impl LinearModel {
     /// MMG ship's from [`LinearModel::mmg`].
     pub fn closed_form(table: &ShipTable) -> Self {
         match &table.mmg {
-            Some(mmg) => Self::mmg(table, mmg),
+            Some(mmg) => Self::mmg(table, mmg, Edge::TowardPositive),
             None => Self::from_terms(table, &table.terms, true),
         }
     }
@@ -150,10 +150,11 @@ impl LinearModel {
     /// course with the propeller at n₀, and the rigid and added masses' (M + m_x)U₀ and
     /// M x_G U₀ in r. The rudder's flow straightening changes at β_R = 0 (γ_R⁺ for β_R ≥ 0,
     /// γ_R⁻ below) and the wake at β_P = 0, so the straight course has two one-sided linear
-    /// models: this is the one toward β_R > 0, the paper's γ_R⁺ and C₂⁺, which a small turn
-    /// to starboard (r > 0, the midship drifting to port) sees ([`super::mmg`]'s `applied`
-    /// module). The course-stability index C′ is det N over (½ρ)²L⁶U₀², the prime system's.
-    pub fn mmg(table: &ShipTable, mmg: &MmgShip) -> Self {
+    /// models: [`Edge::TowardPositive`] gives the one toward β_R > 0, the paper's γ_R⁺ and
+    /// C₂⁺, which a small turn to starboard (r > 0, the midship drifting to port) sees;
+    /// [`Edge::TowardNegative`] the other, a turn to port's. The course-stability index C′ is
+    /// det N over (½ρ)²L⁶U₀², the prime system's.
+    pub fn mmg(table: &ShipTable, mmg: &MmgShip, edge: Edge) -> Self {
         let m = table.mass_matrix();
         let ship = &mmg.parameters.particulars;
         let hull = &mmg.parameters.hull;
@@ -161,7 +162,7 @@ impl LinearModel {
         let (rho, l, d) = (ship.density, ship.length, ship.draft);
         let q = 0.5 * rho * l * d * u0;
         let rudder = mmg
-            .loads_with_derivatives([u0, 0.0, 0.0, 0.0, mmg.approach_rate])
+            .loads_with_derivatives_toward([u0, 0.0, 0.0, 0.0, mmg.approach_rate], edge)
             .map_or([[f64::NAN; 5]; 3], |a| a.by);
         let y_v = q * hull.y_v + rudder[1][1];
         let y_r = q * l * hull.y_r + rudder[1][2];
@@ -468,6 +469,33 @@ pub fn nomoto_report(scene: &super::ShipScene, model: &ShipModel, linear: &Linea
             pivot / scene.length
         ),
     );
+    if let Some(mmg) = &scene.table.mmg {
+        let convention = super::summary::MMG_LINEAR_CONVENTION;
+        line(
+            &mut text,
+            format!("  MMG: the linear model above is {convention}"),
+        );
+        let port = LinearModel::mmg(&scene.table, mmg, Edge::TowardNegative);
+        show(&mut text, "Nomoto, toward port:", port.nomoto());
+        let verdict = if port.course_stable() {
+            "stable"
+        } else {
+            "UNSTABLE"
+        };
+        let index = port.stability_index().unwrap_or(f64::NAN);
+        line(
+            &mut text,
+            format!("  course stability toward port: C′ = {index:.6e}: {verdict}"),
+        );
+        if port.course_stable() != linear.course_stable() {
+            line(
+                &mut text,
+                "  the two sides disagree: the straight course is not stable (a small turn to \
+                 the unstable side grows)"
+                    .to_owned(),
+            );
+        }
+    }
     text
 }
 

@@ -76,8 +76,8 @@ mod parameters;
 
 pub use applied::{AppliedLoads, BY, MmgShip, balancing_rate};
 pub use forces::{
-    Controls, Kinematics, MidshipState, MmgForces, MmgStateError, PlanarLoads, PropellerForces,
-    QUANTITIES, Real, RudderForces,
+    Controls, Edge, Kinematics, MidshipState, MmgForces, MmgStateError, PlanarLoads,
+    PropellerForces, QUANTITIES, Real, RudderForces,
 };
 pub use parameters::{
     AddedMasses, HullDerivatives, MMG_COEFFICIENTS, MMG_PARTICULARS, MmgParameterError,

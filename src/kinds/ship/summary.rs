@@ -9,6 +9,7 @@
 use super::imo::Criterion;
 use super::linear::{LinearModel, Nomoto, linearise};
 use super::manoeuvre::{Figures, Manoeuvre, ManoeuvreKind};
+use super::mmg::Edge;
 use super::side::Side;
 use super::spiral::{Branch, SpiralCurve, Verdict};
 use super::steady::{SteadyTurn, SteadyTurns};
@@ -83,7 +84,8 @@ pub struct MmgSummary {
 /// What [`MmgSummary::linear_model`] says.
 pub const MMG_LINEAR_CONVENTION: &str = "one-sided at the straight course: the derivatives \
     toward β_R > 0 and β_P > 0 (γ_R⁺, C₂⁺), which a small turn to starboard sees; a turn to \
-    port sees γ_R⁻ and C₂⁻";
+    port sees γ_R⁻ and C₂⁻ (linear.toward_port); the straight course is stable only where \
+    both sides are";
 
 /// What the propulsion model gives at the approach, and the engine's limit.
 #[derive(Debug, Clone, Serialize)]
@@ -113,12 +115,29 @@ pub struct LinearSummary {
     pub det_n_si: f64,
     /// C′ of a prime table.
     pub stability_index: Option<f64>,
-    /// Whether the straight course is stable.
+    /// Whether the straight course is stable (an MMG ship's: on both sides).
     pub course_stable: bool,
     /// The pivot point of the steady turn, m ahead of midship.
     pub pivot_point_m: f64,
     /// The same over L.
     pub pivot_point_over_length: f64,
+    /// An MMG ship's other one-sided linear model at the straight course, toward β_R < 0 and
+    /// β_P < 0 (a small turn to port); the fields above are toward starboard.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub toward_port: Option<OneSidedSummary>,
+}
+
+/// One side's linear model where the model is not smooth at the straight course.
+#[derive(Debug, Clone, Serialize)]
+pub struct OneSidedSummary {
+    /// Nomoto's constants; `null` where T₁, T₂ are not real.
+    pub nomoto: Option<NomotoSummary>,
+    /// det N in SI.
+    pub det_n_si: f64,
+    /// C′ = det N over (½ρ)²L⁶U₀².
+    pub stability_index: Option<f64>,
+    /// Whether this side's linear model is stable.
+    pub course_stable: bool,
 }
 
 /// Nomoto's constants, dimensional and in the prime system.
@@ -537,6 +556,17 @@ impl LinearSummary {
         let closed = linear.nomoto();
         let (a, b) = linearise(model, speed);
         let linearised = Nomoto::from_state_space(a, b);
+        let toward_port = scene.table.mmg.map(|mmg| {
+            let port = LinearModel::mmg(&scene.table, &mmg, Edge::TowardNegative);
+            OneSidedSummary {
+                nomoto: NomotoSummary::new(port.nomoto(), speed, scene.length),
+                det_n_si: port.det_damping(),
+                stability_index: port.stability_index(),
+                course_stable: port.course_stable(),
+            }
+        });
+        // Stable only where every side's linear model is.
+        let both_stable = toward_port.as_ref().is_none_or(|port| port.course_stable);
         LinearSummary {
             speed_m_s: speed,
             length_m: scene.length,
@@ -545,9 +575,10 @@ impl LinearSummary {
             largest_relative_difference: nomoto_difference(closed, linearised),
             det_n_si: linear.det_damping(),
             stability_index: linear.stability_index(),
-            course_stable: linear.course_stable(),
+            course_stable: linear.course_stable() && both_stable,
             pivot_point_m: linear.pivot_point(),
             pivot_point_over_length: linear.pivot_point() / scene.length,
+            toward_port,
         }
     }
 }

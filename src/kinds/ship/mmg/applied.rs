@@ -18,7 +18,7 @@
 
 use num_dual::DualSVec64;
 
-use super::forces::{Controls, MidshipState, MmgStateError};
+use super::forces::{Controls, Edge, MidshipState, MmgStateError};
 use super::parameters::MmgParameters;
 use crate::kinds::ship::ShipError;
 
@@ -103,10 +103,20 @@ impl MmgShip {
 
     /// [`MmgShip::loads`] and their derivatives (module docs for the branches' edges).
     pub fn loads_with_derivatives(&self, at: [f64; 5]) -> Result<AppliedLoads, MmgStateError> {
+        self.loads_with_derivatives_toward(at, Edge::TowardPositive)
+    }
+
+    /// [`MmgShip::loads_with_derivatives`], an inflow angle of exactly zero taken on the side
+    /// `edge` says: [`Edge::TowardNegative`] gives the other one-sided derivatives there.
+    pub fn loads_with_derivatives_toward(
+        &self,
+        at: [f64; 5],
+        edge: Edge,
+    ) -> Result<AppliedLoads, MmgStateError> {
         let loads = self.loads(at)?;
         let seeded: [DualSVec64<5>; 5] =
             std::array::from_fn(|i| DualSVec64::from_re(at[i]).derivative(i));
-        let forces = self.parameters.forces_of(seeded)?;
+        let forces = self.parameters.forces_of(seeded, edge)?;
         let (p, r) = (forces.propeller, forces.rudder);
         let duals = [p.surge + r.loads.x, r.loads.y, r.loads.n];
         let by = duals.map(|load| {

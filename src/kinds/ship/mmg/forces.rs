@@ -33,6 +33,27 @@ pub trait Real: DualNum<Primitive = f64> + Copy {}
 
 impl<D: DualNum<Primitive = f64> + Copy> Real for D {}
 
+/// Which branch an inflow angle of exactly zero takes, where the model changes with its sign
+/// (C₂ and the wake law's |β_P|, γ_R): the paper's assigns β = 0 to β ≥ 0; taken toward
+/// negative angles, the derivatives there are the other one-sided ones (a turn to port's).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Edge {
+    /// β = 0 is on the side β > 0 (the paper's).
+    TowardPositive,
+    /// β = 0 is on the side β < 0.
+    TowardNegative,
+}
+
+impl Edge {
+    /// Whether `angle` is on the positive side.
+    fn positive(self, angle: f64) -> bool {
+        match self {
+            Edge::TowardPositive => angle >= 0.0,
+            Edge::TowardNegative => angle > 0.0,
+        }
+    }
+}
+
 /// A force pair and a moment about midship: X, Y in N, N in N m.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PlanarLoads<D = f64> {
@@ -217,19 +238,22 @@ impl MmgParameters {
     ) -> Result<MmgForces, MmgStateError> {
         check_domain(state, controls)?;
         let MidshipState { u, v_m, r } = state;
-        self.forces_of([u, v_m, r, controls.rudder_angle, controls.propeller_rate])
+        let at = [u, v_m, r, controls.rudder_angle, controls.propeller_rate];
+        self.forces_of(at, Edge::TowardPositive)
     }
 
-    /// [`MmgParameters::forces`] in any [`Real`] at (u, v_m, r, δ, n_P), the domain checked
-    /// by the caller: with dual numbers seeded on these five, their derivatives by each.
+    /// [`MmgParameters::forces`] in any [`Real`] at (u, v_m, r, δ, n_P), an inflow angle of
+    /// zero on the side `edge` says, the domain checked by the caller: with dual numbers
+    /// seeded on these five, their derivatives by each.
     pub fn forces_of<D: Real>(
         &self,
         [u, v_m, r, delta, rate]: [D; 5],
+        edge: Edge,
     ) -> Result<MmgForces<D>, MmgStateError> {
         let kinematics = kinematics([u, v_m, r], self.particulars.length)?;
         let hull = hull_loads(&self.hull, &self.particulars, &kinematics);
-        let propeller = self.propeller_forces(u, &kinematics, rate);
-        let rudder = self.rudder_forces(u, &kinematics, &propeller, (delta, rate))?;
+        let propeller = self.propeller_forces(u, &kinematics, rate, edge);
+        let rudder = self.rudder_forces(u, &kinematics, &propeller, (delta, rate), edge)?;
         let total = PlanarLoads {
             x: hull.x + propeller.surge + rudder.loads.x,
             y: hull.y + rudder.loads.y,
@@ -260,19 +284,15 @@ impl MmgParameters {
         u: D,
         motion: &Kinematics<D>,
         rate: D,
+        edge: Edge,
     ) -> PropellerForces<D> {
         let p = &self.propeller;
         let diameter = self.particulars.propeller_diameter;
         let inflow_angle = inflow_angle(motion, p.position);
-        let wake_gain = if inflow_angle.re() >= 0.0 {
-            p.wake_gain_positive
+        let (wake_gain, magnitude) = if edge.positive(inflow_angle.re()) {
+            (p.wake_gain_positive, inflow_angle)
         } else {
-            p.wake_gain_negative
-        };
-        let magnitude = if inflow_angle.re() < 0.0 {
-            -inflow_angle
-        } else {
-            inflow_angle
+            (p.wake_gain_negative, -inflow_angle)
         };
         let growth = -(magnitude * -p.wake_rate).exp() + 1.0;
         let wake_fraction = -((growth * (wake_gain - 1.0) + 1.0) * (1.0 - p.straight_wake)) + 1.0;
@@ -298,11 +318,12 @@ impl MmgParameters {
         motion: &Kinematics<D>,
         propeller: &PropellerForces<D>,
         (delta, rate): (D, D),
+        edge: Edge,
     ) -> Result<RudderForces<D>, MmgStateError> {
         let c = &self.rudder;
         let ship = &self.particulars;
         let inflow_angle = inflow_angle(motion, c.effective_position);
-        let flow_straightening = if inflow_angle.re() >= 0.0 {
+        let flow_straightening = if edge.positive(inflow_angle.re()) {
             c.straightening_positive
         } else {
             c.straightening_negative
