@@ -59,8 +59,8 @@ pub(crate) mod engine {
         QUATERNION_STATE as AIRCRAFT_QUATERNION_STATE, STATE as AIRCRAFT_STATE, aircraft_with,
     };
     pub use eom_codegen::model::ship::{
-        ADDED_MASS, APPLIED_LOADS, Force, MMG_ADDED_MASS, MMG_SCALES, PRIME_SCALES, PROPULSION,
-        ShipForm, ShipSpec, Term, Units, VARIABLES, YawInertia, ship,
+        ADDED_MASS, APPLIED_LOADS, CURRENT_INPUTS, Force, MMG_ADDED_MASS, MMG_SCALES, PRIME_SCALES,
+        PROPULSION, ShipForm, ShipSpec, Term, Units, VARIABLES, YawInertia, ship,
     };
     /// A vehicle's table as the engine reads it (its error type among them).
     pub use eom_codegen::model::vehicle as vehicle_table;

@@ -358,3 +358,27 @@ fn the_kvlcc2_is_course_stable_toward_starboard_only_and_its_spiral_loops() {
     assert!(loop_width > 0.1 && loop_width < 1.0, "{loop_width}");
     assert!(spiral.get("loop_width_deg").unwrap() > 0.0);
 }
+
+/// A polynomial table refuses the MMG table's keys, naming each.
+#[test]
+fn a_polynomial_table_refuses_the_mmg_keys() {
+    let text = std::fs::read_to_string("scenes/mariner.toml").unwrap();
+    for (added, key) in [
+        (
+            "propeller_rate_rps = 1.0",
+            "hydrodynamics.propeller_rate_rps",
+        ),
+        ("particulars = { B = 1.0 }", "hydrodynamics.particulars"),
+    ] {
+        let changed = text.replacen(
+            "[hydrodynamics]\n",
+            &format!("[hydrodynamics]\n{added}\n"),
+            1,
+        );
+        assert_ne!(changed, text);
+        let error = ShipScene::parse(&changed, "mariner.toml")
+            .unwrap_err()
+            .to_string();
+        assert!(error.contains(key) && error.contains("MMG"), "{error}");
+    }
+}

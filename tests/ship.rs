@@ -1883,3 +1883,67 @@ fn a_ships_bad_stop_condition_is_refused_naming_the_key() {
         assert!(error.contains(expected), "{stop}: {error}");
     }
 }
+
+/// The Mariner's 35° turning circle in a current of 0.5 m/s flowing east: through the water
+/// it is the still-water turn (the steady radius and speed, t_90, t_180 to the runs' own
+/// tolerance differences, 1e-6 of each), over ground the circle drifts with the current, one
+/// turn period's worth per turn (to 1e-6 of it, the turn being settled by its second turn),
+/// toward 90° (to 1e-4°); the transfer to port shrinks and to starboard grows.
+#[test]
+fn a_current_carries_the_turning_circle_and_nothing_through_the_water() {
+    let text = std::fs::read_to_string("scenes/mariner.toml").unwrap();
+    let current = text.replacen(
+        "[integrator]",
+        "[environment]\ncurrent_m_s = 0.5\ncurrent_toward_deg = 90.0\n\n[integrator]",
+        1,
+    );
+    let (still, carried) = (
+        ShipScene::parse(&text, "mariner.toml").unwrap(),
+        ShipScene::parse(&current, "mariner_current.toml").unwrap(),
+    );
+    let turn = |scene: &ShipScene, side: Side| {
+        let model = ShipModel::new(&scene.table).unwrap();
+        let manoeuvre = scene
+            .manoeuvres
+            .iter()
+            .find(|m| m.name == "turning_circle_35")
+            .unwrap();
+        let runs = manoeuvre.runs();
+        let (_, run) = runs.iter().find(|(s, _)| *s == Some(side)).unwrap();
+        run_to_end(scene, &model, run, &scene.stepper).1
+    };
+    for side in Side::BOTH {
+        let (a, b) = (turn(&still, side), turn(&carried, side));
+        for key in [
+            "steady_turning_radius_m",
+            "steady_speed_m_s",
+            "t_90_s",
+            "t_180_s",
+        ] {
+            let (x, y) = (a.get(key).unwrap(), b.get(key).unwrap());
+            assert!(
+                (x - y).abs() <= 1e-6 * x.abs(),
+                "{side:?} {key}: {x} and {y}"
+            );
+        }
+        let (drift, period) = (
+            b.get("drift_m_per_turn").unwrap(),
+            b.get("turn_period_s").unwrap(),
+        );
+        assert!(
+            (drift - 0.5 * period).abs() <= 1e-6 * drift,
+            "{drift} in {period} s"
+        );
+        let toward = b.get("drift_toward_deg").unwrap();
+        assert!((toward - 90.0).abs() < 1e-4, "{toward}");
+        assert_eq!(a.get("drift_m_per_turn"), None, "no drift in still water");
+        let (still_transfer, carried_transfer) = (
+            a.get("transfer_90_m").unwrap(),
+            b.get("transfer_90_m").unwrap(),
+        );
+        match side {
+            Side::Port => assert!(carried_transfer < still_transfer - 10.0),
+            Side::Starboard => assert!(carried_transfer > still_transfer + 10.0),
+        }
+    }
+}

@@ -2,7 +2,7 @@
 //! figures, IMO verdicts and convergence, the files of each manoeuvre, and the errors.
 
 use eom_test_support::child;
-use eom_test_support::cli::{eom, folder, run_into, scene_arg, succeeded};
+use eom_test_support::cli::{eom, folder, root, run_into, scene_arg, succeeded};
 use std::path::Path;
 
 #[test]
@@ -825,4 +825,40 @@ fn eom_tradeoff_compares_a_ships_settings_on_its_figures() {
     let stderr = String::from_utf8_lossy(&output.stderr);
     assert_eq!(output.status.code(), Some(2), "{stderr}");
     assert!(stderr.contains("gives none"), "{stderr}");
+}
+
+/// The Mariner in a current: its turning circle drifts (the figures say how far per turn and
+/// toward where), and no IMO criterion is judged, since the criteria are for calm water.
+#[test]
+fn a_ship_in_a_current_drifts_and_is_not_judged() {
+    let dir = folder("current");
+    let text = std::fs::read_to_string(root().join("scenes/mariner.toml")).unwrap();
+    let text = text.replacen(
+        "[integrator]",
+        "[environment]\ncurrent_m_s = 0.5\ncurrent_toward_deg = 90.0\n\n[integrator]",
+        1,
+    );
+    let path = dir.join("mariner_current.toml");
+    std::fs::write(&path, text).unwrap();
+    let out = dir.join("out");
+    let stdout = succeeded(&eom(&[
+        "run",
+        path.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]));
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let turn = &summary["manoeuvre"]["turning_circle_35"];
+    for side in ["port", "starboard"] {
+        let figures = &turn["sides"][side];
+        let drift = figures["drift_m_per_turn"].as_f64().unwrap();
+        let period = figures["turn_period_s"].as_f64().unwrap();
+        assert!((drift - 0.5 * period).abs() < 1e-6 * drift, "{figures}");
+    }
+    for criterion in summary["manoeuvre"]["imo"].as_array().unwrap() {
+        assert_eq!(criterion["judged"], false, "{criterion}");
+    }
+    assert!(stdout.contains("judges trials in calm water"), "{stdout}");
+    assert!(stdout.contains("drift_m_per_turn"), "{stdout}");
 }

@@ -74,6 +74,7 @@ fn residuals_are_the_mass_matrix_form_with_the_polynomial() {
         ],
         propulsion: false,
         form: ShipForm::Polynomial,
+        current: false,
     };
     let book = [
         "(M - X_udot)*u_dot - M*v*r - M*x_G*r.powi(2) - X_uu*u.powi(2)",
@@ -96,6 +97,7 @@ fn inertia_about_midship_enters_the_mass_matrix_as_given() {
         terms: vec![],
         propulsion: false,
         form: ShipForm::Polynomial,
+        current: false,
     };
     let yaw = &spec.residuals().unwrap()[2];
     let book = parse("(M*x_G - N_vdot)*v_dot + (Izz_midship - N_rdot)*r_dot + M*x_G*u*r").unwrap();
@@ -112,6 +114,7 @@ fn prime_terms_scale_by_the_instantaneous_speed() {
         terms: vec![term(Force::Y, [0, 2, 1, 0]), term(Force::N, [1, 0, 0, 1])],
         propulsion: false,
         form: ShipForm::Polynomial,
+        current: false,
     };
     let y = spec.force(Force::Y).unwrap();
     let expected = parse("rho/2.0*L.powi(3)*Y_vvr*v.powi(2)*r/U").unwrap();
@@ -131,6 +134,7 @@ fn the_mariner_builds_proves_and_emits_only_its_terms_and_the_model_contract() {
                 terms: mariner_terms(),
                 propulsion: false,
                 form: ShipForm::Polynomial,
+                current: false,
             };
             let system = ship("mariner", &spec).unwrap();
             prove(&system).unwrap();
@@ -161,6 +165,7 @@ fn a_term_listed_twice_is_refused() {
         terms: vec![term(Force::Y, [0, 1, 0, 0]), term(Force::Y, [0, 1, 0, 0])],
         propulsion: false,
         form: ShipForm::Polynomial,
+        current: false,
     };
     let error = ship("twice", &spec).unwrap_err();
     assert!(error.to_string().contains("Y_v is listed twice"), "{error}");
@@ -174,6 +179,7 @@ fn the_rudder_angle_moves_at_its_input() {
         terms: vec![],
         propulsion: false,
         form: ShipForm::Polynomial,
+        current: false,
     };
     let system = ship("bare", &spec).unwrap();
     assert_eq!(system.state[6], "delta");
@@ -191,6 +197,7 @@ fn single_operation_mutants_of_the_mariner_s_jacobians_fail_their_check() {
         terms: mariner_terms(),
         propulsion: false,
         form: ShipForm::Polynomial,
+        current: false,
     };
     let system = ship("mariner", &spec).unwrap();
     let caught = mutants::jacobian_mutants(&system, 1);
@@ -224,6 +231,7 @@ fn propulsion_puts_the_rudder_on_its_inflow_and_the_thrust_law_in_surge() {
         ],
         propulsion: true,
         form: ShipForm::Polynomial,
+        current: false,
     };
     let e = "(delta - (v + L*x_R*r)/c)";
     let x = spec.force(Force::X).unwrap();
@@ -262,6 +270,7 @@ fn a_term_in_the_effective_rudder_angle_needs_propulsion() {
         terms: vec![rudder_term(Force::Y, 3)],
         propulsion: false,
         form: ShipForm::Polynomial,
+        current: false,
     };
     let error = ship("no_propeller", &spec).unwrap_err();
     assert!(
@@ -313,6 +322,7 @@ fn mmg_spec() -> ShipSpec {
         terms: mmg_terms(),
         propulsion: false,
         form: ShipForm::Mmg,
+        current: false,
     }
 }
 
@@ -412,4 +422,43 @@ fn single_operation_mutants_of_the_mmg_jacobians_fail_their_check() {
         caught.tried, caught.entries, caught.operations[0], caught.operations[1]
     );
     assert!(caught.tried > 100, "only {}", caught.tried);
+}
+
+/// A current carries the track: 4.44's rows gain its north and east components, and nothing
+/// else of the system changes.
+#[test]
+fn a_current_carries_the_track_and_nothing_else() {
+    let still = ShipSpec {
+        units: Units::Prime,
+        yaw_inertia: YawInertia::AboutMidship,
+        terms: mariner_terms(),
+        propulsion: false,
+        form: ShipForm::Polynomial,
+        current: false,
+    };
+    let carried = ShipSpec {
+        current: true,
+        ..still.clone()
+    };
+    let (still, carried) = (
+        ship("still", &still).unwrap(),
+        ship("carried", &carried).unwrap(),
+    );
+    assert_eq!(
+        carried.inputs,
+        ["delta_rate", "U", "current_north", "current_east"]
+    );
+    for (k, (a, b)) in still.outputs.iter().zip(&carried.outputs).enumerate() {
+        let difference = b - a;
+        let expected = match k {
+            3 => Expr::symbol("current_north"),
+            4 => Expr::symbol("current_east"),
+            _ => Expr::zero(),
+        };
+        assert!(
+            (&difference - &expected).is_zero(),
+            "output {k}: {difference}"
+        );
+    }
+    prove(&carried).unwrap();
 }

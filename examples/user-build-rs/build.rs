@@ -38,6 +38,7 @@ fn ship_spec() -> ShipSpec {
         ],
         propulsion: false,
         form: ShipForm::Polynomial,
+        current: false,
     }
 }
 
@@ -66,6 +67,7 @@ fn mariner_spec() -> ShipSpec {
         terms,
         propulsion: false,
         form: ShipForm::Polynomial,
+        current: false,
     }
 }
 

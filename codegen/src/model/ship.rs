@@ -61,6 +61,16 @@
 //! (a wake law in exp(−C₁|β_P|), the race's square roots, an angle of attack through
 //! atan2): the caller computes them beside U and the program reads them as inputs, added to
 //! the right side, which is proved with them.
+//!
+//! **A uniform current** (a spec with [`ShipSpec::current`]): the hydrodynamic forces see the
+//! ship's velocity through the water, so 4.46's u and v are taken through the water, and the
+//! track is carried by the current, Ẋ = u cos ψ − v sin ψ + V_N, Ẏ = u sin ψ + v cos ψ + V_E
+//! (4.44 plus the current's north and east components, inputs). For a current constant in
+//! space and time nothing else changes: over ground u = u_r + u_c, v = v_r + v_c with the
+//! current's body-axis components turning at −r (u̇_c = r v_c, v̇_c = −r u_c), so 4.46's
+//! u̇ − vr and v̇ + ur are u̇_r − v_r r and v̇_r + u_r r: the rigid body's terms keep their
+//! form in the velocity through the water (Fossen's property of a constant irrotational
+//! current, *Handbook of Marine Craft Hydrodynamics and Motion Control*, 2011).
 
 use super::families::inverse_names;
 use super::solve::solve_linear;
@@ -208,6 +218,10 @@ pub struct ShipSpec {
     /// in [`Units::Dimensional`] (its body's units) and has no [`ShipSpec::propulsion`] (its
     /// propeller and rudder are applied loads).
     pub form: ShipForm,
+    /// Whether the ship moves in a uniform current: the velocities of 4.46 are then through
+    /// the water, and the track (4.44) adds the current's north and east components, inputs
+    /// [`CURRENT_INPUTS`] (module docs).
+    pub current: bool,
 }
 
 /// The parameters of propulsion, by their symbols, after the body's, the added mass and the
@@ -231,6 +245,10 @@ const DRAFT: &str = "draft";
 /// The MMG form's applied loads, inputs after δ̇ and U: the propeller's and the rudder's X,
 /// Y, N about midship (N, N, N m), which the caller computes.
 pub const APPLIED_LOADS: [&str; 3] = ["X_applied", "Y_applied", "N_applied"];
+
+/// A uniform current's north and east components (m/s), inputs after every other of a spec
+/// with [`ShipSpec::current`].
+pub const CURRENT_INPUTS: [&str; 2] = ["current_north", "current_east"];
 
 /// The prime system's scales, by their symbols: ρ, L, and U₀ (the reference of the surge
 /// perturbation), parameters of a prime-system model after the body's and the added mass.
@@ -383,17 +401,16 @@ impl ShipSpec {
     /// The inputs: the rudder rate, in the prime system and the MMG form the speed U, with
     /// propulsion [`PROPULSION_INPUTS`], in the MMG form [`APPLIED_LOADS`].
     pub fn inputs(&self) -> Vec<&'static str> {
-        if self.form == ShipForm::Mmg {
-            let mut inputs = vec!["delta_rate", "U"];
-            inputs.extend(APPLIED_LOADS);
-            return inputs;
-        }
-        let mut inputs = match self.units {
-            Units::Dimensional => vec!["delta_rate"],
-            Units::Prime => vec!["delta_rate", "U"],
+        let mut inputs = match (self.form, self.units) {
+            (ShipForm::Mmg, _) => [&["delta_rate", "U"][..], &APPLIED_LOADS].concat(),
+            (ShipForm::Polynomial, Units::Dimensional) => vec!["delta_rate"],
+            (ShipForm::Polynomial, Units::Prime) => vec!["delta_rate", "U"],
         };
         if self.propulsion {
             inputs.extend(PROPULSION_INPUTS);
+        }
+        if self.current {
+            inputs.extend(CURRENT_INPUTS);
         }
         inputs
     }
@@ -693,7 +710,13 @@ pub fn ship(name: &str, spec: &ShipSpec) -> Result<System, BuildError> {
     let mut outputs = surge.accelerations(&surge.rest);
     outputs.extend(sway_yaw.accelerations(&sway_yaw.rest));
     let velocity = Vec3::new(Expr::symbol("u"), Expr::symbol("v"), Expr::zero());
-    let [x_rate, y_rate, _] = rotation_z("psi").mul_vec(&velocity).0;
+    let [mut x_rate, mut y_rate, _] = rotation_z("psi").mul_vec(&velocity).0;
+    if spec.current {
+        // Through the water at (u, v), carried over ground by the current.
+        let [north, east] = CURRENT_INPUTS.map(Expr::symbol);
+        x_rate = &x_rate + &north;
+        y_rate = &y_rate + &east;
+    }
     outputs.extend([
         x_rate,
         y_rate,

@@ -4,7 +4,7 @@
 //! is (its linear model, its propulsion, its steering gear, its length).
 
 use super::ShipError;
-use super::file::{BodyTable, ManoeuvreTable, PropulsionTable, ShipSceneFile};
+use super::file::{BodyTable, EnvironmentTable, ManoeuvreTable, PropulsionTable, ShipSceneFile};
 use super::linear::LinearModel;
 use super::manoeuvre::{Manoeuvre, ManoeuvreKind};
 use super::mmg::{MMG_COEFFICIENTS, MMG_PARTICULARS, MmgParameters};
@@ -15,7 +15,7 @@ use super::scene::{
 };
 use super::side::Side;
 use super::spiral::{ReverseSpiral, Settle, Spiral};
-use super::table::{GivenTable, RigidBodyTerms, ShipBody, ShipTable};
+use super::table::{Current, GivenTable, RigidBodyTerms, ShipBody, ShipTable};
 use super::{ShipForm, Units, YawInertia};
 use crate::manoeuvring::steering::{Rudder, Series};
 use crate::scene::check::Checker;
@@ -196,18 +196,14 @@ impl Checker<'_> {
         if form == ShipForm::Mmg {
             return self.mmg_table(file);
         }
-        for (key, given) in [
-            ("particulars", hydro.particulars.is_some()),
-            ("propeller_rate_rps", hydro.propeller_rate_rps.is_some()),
-        ] {
-            if given {
-                return Err(self.invalid(
-                    &format!("hydrodynamics.{key}"),
-                    "a key of an MMG table (model = \"mmg\"); a polynomial table's propeller \
-                     is [propulsion]",
-                ));
-            }
-        }
+        self.none_of(
+            [
+                ("particulars", hydro.particulars.is_some()),
+                ("propeller_rate_rps", hydro.propeller_rate_rps.is_some()),
+            ],
+            "a key of an MMG table (model = \"mmg\"); a polynomial table's propeller is \
+             [propulsion]",
+        )?;
         let word = |key: &str, given: &Option<String>| {
             given.clone().ok_or_else(|| {
                 self.error(
@@ -274,18 +270,14 @@ impl Checker<'_> {
     /// solved here.
     fn mmg_table(&self, file: &ShipSceneFile) -> Result<(ShipTable, f64), SceneError> {
         let hydro = &file.hydrodynamics;
-        for (key, given) in [
-            ("units", hydro.units.is_some()),
-            ("rigid_body_terms", hydro.rigid_body_terms.is_some()),
-        ] {
-            if given {
-                return Err(self.invalid(
-                    &format!("hydrodynamics.{key}"),
-                    "an MMG table's units are the method's own (the body in SI, the \
-                     coefficients on ½ρLdU², ½ρL²dU², ½ρL²d, ½ρL⁴d): leave it out",
-                ));
-            }
-        }
+        self.none_of(
+            [
+                ("units", hydro.units.is_some()),
+                ("rigid_body_terms", hydro.rigid_body_terms.is_some()),
+            ],
+            "an MMG table's units are the method's own (the body in SI, the coefficients on \
+             ½ρLdU², ½ρL²dU², ½ρL²d, ½ρL⁴d): leave it out",
+        )?;
         if file.propulsion.is_some() {
             return Err(self.invalid(
                 "propulsion",
@@ -321,6 +313,50 @@ impl Checker<'_> {
             other => self.invalid("hydrodynamics", other.to_string()),
         })?;
         Ok((table, length))
+    }
+
+    /// `[environment]`: a current of a speed (≥ 0) toward a direction, both given.
+    pub(super) fn current(&self, table: &EnvironmentTable) -> Result<Option<Current>, SceneError> {
+        let key = |k: &str| format!("environment.{k}");
+        let (speed, toward) = match (table.current_m_s, table.current_toward_deg) {
+            (None, None) => return Ok(None),
+            (Some(speed), Some(toward)) => (speed, toward),
+            (Some(_), None) => {
+                return Err(self.error(
+                    &key("current_toward_deg"),
+                    Problem::Missing("the direction the current flows toward".into()),
+                ));
+            }
+            (None, Some(_)) => {
+                return Err(self.error(
+                    &key("current_m_s"),
+                    Problem::Missing("the current's speed".into()),
+                ));
+            }
+        };
+        let speed = self.finite(&key("current_m_s"), speed)?;
+        if speed < 0.0 {
+            return Err(self.invalid(
+                &key("current_m_s"),
+                format!(
+                    "{speed} m/s: a speed is not negative (give the direction it flows toward)"
+                ),
+            ));
+        }
+        let toward = self.finite(&key("current_toward_deg"), toward)?;
+        Ok(Some(Current {
+            speed,
+            toward: toward.to_radians(),
+        }))
+    }
+
+    /// Refuses the first of the `[hydrodynamics]` keys `given` that the table's form does not
+    /// read, saying `why`.
+    fn none_of(&self, given: [(&str, bool); 2], why: &str) -> Result<(), SceneError> {
+        match given.iter().find(|(_, present)| *present) {
+            Some((key, _)) => Err(self.invalid(&format!("hydrodynamics.{key}"), why)),
+            None => Ok(()),
+        }
     }
 
     /// Refuses a name of `given` that is not one of `known`, listing them.

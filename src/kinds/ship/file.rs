@@ -22,6 +22,8 @@ pub struct ShipSceneFile {
     pub rudder: SteeringGearTable,
     /// The propeller, its thrust law and the rudder in its slipstream (prime tables).
     pub propulsion: Option<PropulsionTable>,
+    /// The water around the ship: a uniform current.
+    pub environment: Option<EnvironmentTable>,
     /// The step.
     pub integrator: IntegratorTable,
     /// The manoeuvres, each run from the same approach.
@@ -112,6 +114,16 @@ pub struct PropulsionTable {
     pub wetted_surface: Option<f64>,
     /// The engine's rate limit, rev/s².
     pub max_rate_rps_s: Option<f64>,
+}
+
+/// `[environment]`: a uniform current, constant in space and time.
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct EnvironmentTable {
+    /// The current's speed, m/s.
+    pub current_m_s: Option<f64>,
+    /// The direction it flows toward, degrees clockwise from north.
+    pub current_toward_deg: Option<f64>,
 }
 
 /// `[[manoeuvre]]`: each kind reads its own keys and refuses the others.

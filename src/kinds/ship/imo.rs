@@ -293,8 +293,20 @@ pub fn criteria(scene: &ShipScene, runs: &[Trial]) -> Vec<Criterion> {
             .to_owned(),
         )),
     }
+    if scene.table.current.is_some_and(|c| c.speed > 0.0) {
+        // Each side's figure stays, for the record; no verdict rests on it.
+        for criterion in judged.iter_mut().filter(|c| c.not_judged_because.is_none()) {
+            criterion.value = None;
+            criterion.side = None;
+            criterion.not_judged_because = Some(IN_CURRENT.to_owned());
+        }
+    }
     judged
 }
+
+/// Why no criterion is judged in a current.
+pub const IN_CURRENT: &str = "the scene has a current: IMO MSC.137(76) judges trials in calm \
+                              water, and the track's figures here are over ground";
 
 /// Why the turning criteria are not judged on a scene whose turning circles are all at
 /// other angles than `angle` (rad): which angle they need, and the angles the scene ran.

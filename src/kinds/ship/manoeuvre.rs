@@ -743,6 +743,11 @@ impl<'a> Driver<'a> {
             ManoeuvreKind::TurningCircle { rudder } => {
                 self.set_command(rudder, y);
                 self.watches = vec![Watch::HeadingChange(PI / 2.0), Watch::HeadingChange(PI)];
+                if self.model.current().is_some() {
+                    // A drifting circle: its first and second whole turns.
+                    let turns = [2.0 * PI, 4.0 * PI].map(Watch::HeadingChange);
+                    self.watches.extend(turns);
+                }
             }
             ManoeuvreKind::ZigZag { rudder, heading } => {
                 self.set_command(rudder, y);

@@ -26,8 +26,8 @@ use super::mmg::MmgShip;
 use super::propulsion::Propulsion;
 use super::table::ShipTable;
 use crate::defined::engine::{
-    ADDED_MASS, APPLIED_LOADS, EmitError, MMG_ADDED_MASS, MMG_SCALES, Operations, PRIME_SCALES,
-    PROPULSION, Program, ShipSpec, Units, prove_with_jacobians, ship,
+    ADDED_MASS, APPLIED_LOADS, CURRENT_INPUTS, EmitError, MMG_ADDED_MASS, MMG_SCALES, Operations,
+    PRIME_SCALES, PROPULSION, Program, ShipSpec, Units, prove_with_jacobians, ship,
 };
 use crate::defined::{
     CoefficientFormulas, Derivations, Functions, Interpreter, Plan, Source, Variables,
@@ -49,7 +49,7 @@ pub const INPUTS: [&str; 2] = ["delta_rate", "n"];
 /// The program's variables this model sets beside the state, in the order of
 /// [`ShipModel::computed`]: δ̇, U, then what propulsion reads, then an MMG ship's applied
 /// loads. The state's are read where they lie.
-const COMPUTED: [&str; 9] = [
+const COMPUTED: [&str; 11] = [
     "delta_rate",
     "U",
     "n",
@@ -59,7 +59,12 @@ const COMPUTED: [&str; 9] = [
     APPLIED_LOADS[0],
     APPLIED_LOADS[1],
     APPLIED_LOADS[2],
+    CURRENT_INPUTS[0],
+    CURRENT_INPUTS[1],
 ];
+
+/// Where a current's components lie in [`COMPUTED`].
+const CURRENT: usize = 9;
 
 /// Where an MMG ship's applied loads lie in [`COMPUTED`].
 const APPLIED: usize = 6;
@@ -92,6 +97,8 @@ pub struct ShipModel {
     propulsion: Option<Propulsion>,
     /// An MMG ship's propeller and rudder, whose loads the program reads.
     mmg: Option<MmgShip>,
+    /// The current's north and east components, m/s, for a ship in one.
+    current: Option<[f64; 2]>,
     /// What the table's values do not change, shared by the models of other values.
     proved: Arc<Proved>,
     operations: Operations,
@@ -115,6 +122,8 @@ enum ProgramInput {
     Inflow,
     /// An MMG ship's applied load X, Y or N (by its index), of (u, v, r, δ, n).
     Applied(usize),
+    /// A current's north or east component: a constant.
+    Current,
 }
 
 /// The table's terms, 4.46 with them and its proved program: the same for every value of the
@@ -141,6 +150,7 @@ fn spec_of(table: &ShipTable) -> ShipSpec {
         terms: table.terms.keys().copied().collect(),
         propulsion: table.propulsion.is_some(),
         form: table.form(),
+        current: table.current.is_some(),
     }
 }
 
@@ -186,6 +196,7 @@ impl ShipModel {
                 "n_abs" => Ok(ProgramInput::RateMagnitude),
                 "u_A" => Ok(ProgramInput::Induced),
                 "c" => Ok(ProgramInput::Inflow),
+                other if CURRENT_INPUTS.contains(&other) => Ok(ProgramInput::Current),
                 other if APPLIED_LOADS.contains(&other) => Ok(ProgramInput::Applied(
                     APPLIED_LOADS.iter().position(|l| *l == other).unwrap_or(0),
                 )),
@@ -213,6 +224,7 @@ impl ShipModel {
             inputs,
             propulsion: table.propulsion,
             mmg: table.mmg,
+            current: table.current.map(|c| c.components()),
             operations: proved.program.operations(&proved.program.rhs),
             terms: proved.spec.terms.len(),
             program: interpreter,
@@ -249,6 +261,7 @@ impl ShipModel {
             program: interpreter(&self.proved, &coefficients)?,
             propulsion: table.propulsion,
             mmg: table.mmg,
+            current: table.current.map(|c| c.components()),
             ..self.clone()
         })
     }
@@ -257,8 +270,8 @@ impl ShipModel {
     /// order: δ̇, U (zero where the program does not read it: a table in SI), and what a
     /// propulsion model computes (zero without one).
     #[inline]
-    fn computed<T: SimdRealField + Copy>(&self, state: &[T; 7], input: &[T; 2]) -> [T; 9] {
-        let mut computed = [T::zero(); 9];
+    fn computed<T: SimdRealField + Copy>(&self, state: &[T; 7], input: &[T; 2]) -> [T; 11] {
+        let mut computed = [T::zero(); 11];
         self.compute(state, input, &mut computed);
         computed
     }
@@ -270,7 +283,7 @@ impl ShipModel {
         &self,
         state: &[T; 7],
         input: &[T; 2],
-        computed: &mut [T; 9],
+        computed: &mut [T; 11],
     ) {
         computed[0] = input[0];
         if self.reads_speed {
@@ -281,6 +294,10 @@ impl ShipModel {
         }
         if let Some(mmg) = &self.mmg {
             mmg_applied(mmg, state, input, computed);
+        }
+        if let Some([north, east]) = self.current {
+            computed[CURRENT] = T::from_subset(&north);
+            computed[CURRENT + 1] = T::from_subset(&east);
         }
     }
 
@@ -340,6 +357,8 @@ impl ShipModel {
                     through(inflow.speed_by, &mut by_state, &mut by_input);
                 }
                 (ProgramInput::Induced | ProgramInput::Inflow, None) => {}
+                // A constant: no derivative.
+                (ProgramInput::Current, _) => {}
                 (ProgramInput::Applied(load), _) => {
                     // ∂/∂(u, v, r, δ) into the state's columns, ∂/∂n into the rate's.
                     if let Some(by) = &applied_by {
@@ -378,6 +397,11 @@ impl ShipModel {
     /// An MMG ship's propeller and rudder, for a ship of that form.
     pub fn mmg(&self) -> Option<&MmgShip> {
         self.mmg.as_ref()
+    }
+
+    /// The current's north and east components, m/s, for a ship in one.
+    pub fn current(&self) -> Option<[f64; 2]> {
+        self.current
     }
 
     /// What one call costs, as the emitter counts it.
@@ -422,7 +446,7 @@ fn propelled<T: SimdRealField + Copy>(
     propulsion: &Propulsion,
     state: &[T; 7],
     input: &[T; 2],
-    computed: &mut [T; 9],
+    computed: &mut [T; 11],
 ) {
     let inflow = propulsion.inflow(state[0], input[1]);
     computed[2] = input[1];
@@ -454,7 +478,7 @@ fn mmg_applied<T: SimdRealField + Copy>(
     mmg: &MmgShip,
     state: &[T; 7],
     input: &[T; 2],
-    computed: &mut [T; 9],
+    computed: &mut [T; 11],
 ) {
     for lane in 0..T::LANES {
         let loads = mmg.loads(mmg_variables(state, input, lane));
@@ -589,7 +613,7 @@ impl<T: SimdRealField + Copy> Model<T, 7, 2> for ShipModel {
     /// at `input[1]`: the proved program.
     #[inline]
     fn rhs(&self, state: &[T; 7], input: &[T; 2]) -> [T; 7] {
-        let mut computed = [T::zero(); 9];
+        let mut computed = [T::zero(); 11];
         self.compute(state, input, &mut computed);
         let variables = Variables {
             state,

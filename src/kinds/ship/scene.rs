@@ -175,7 +175,10 @@ impl ShipScene {
                 ),
             ));
         }
-        let (table, length) = check.table(file)?;
+        let (mut table, length) = check.table(file)?;
+        if let Some(environment) = &file.environment {
+            table.current = check.current(environment)?;
+        }
         let rudder = check.steering_gear("rudder", &file.rudder)?;
         let linear = LinearModel::closed_form(&table);
         let table_propulsion = table.propulsion.as_ref();

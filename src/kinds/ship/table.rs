@@ -74,6 +74,26 @@ pub struct ShipTable {
     /// masses [`ShipTable::added_mass`] in SI; its propeller and rudder are here), for a
     /// table of that form; `None` for a polynomial table.
     pub mmg: Option<MmgShip>,
+    /// The uniform current the ship moves in, where the scene gives one: its u and v are then
+    /// through the water and its track over ground.
+    pub current: Option<Current>,
+}
+
+/// A uniform current, constant in space and time.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Current {
+    /// Its speed, m/s.
+    pub speed: f64,
+    /// The direction it flows toward (its set), rad clockwise from north (X).
+    pub toward: f64,
+}
+
+impl Current {
+    /// Its north and east components, m/s.
+    pub fn components(&self) -> [f64; 2] {
+        let (sin, cos) = self.toward.sin_cos();
+        [self.speed * cos, self.speed * sin]
+    }
 }
 
 /// A coefficient name, read.
@@ -211,6 +231,7 @@ impl ShipTable {
             conversions: Vec::new(),
             propulsion: None,
             mmg: None,
+            current: None,
         };
         if let Some(propulsion) = given.propulsion {
             let length = match (given.units, given.length) {
@@ -300,6 +321,7 @@ impl ShipTable {
             conversions: Vec::new(),
             propulsion: None,
             mmg: Some(MmgShip::new(parameters, design_speed, held)?),
+            current: None,
         };
         table.check_mass_matrix()?;
         Ok(table)

@@ -76,6 +76,7 @@ pub fn symbols(table: &ShipTable) -> BTreeMap<String, f64> {
         terms: table.terms.keys().copied().collect(),
         propulsion: false,
         form: ShipForm::Polynomial,
+        current: false,
     };
     let body = [table.body.mass, table.body.yaw_inertia, table.body.x_g];
     let scales = [

@@ -192,6 +192,13 @@ impl Driver<'_> {
         };
         let at_90 = holding(PI / 2.0, "advance and transfer");
         let at_180 = holding(PI, "the tactical diameter");
+        // A drifting circle's first and second whole turns.
+        let turns = (self.model.current()).map(|_| {
+            (
+                holding(2.0 * PI, "the drift"),
+                holding(4.0 * PI, "the drift"),
+            )
+        });
         // The steady turn is read at the end of the run, which a stopped run did not reach.
         let steady = match self.stopped {
             Some(_) => None,
@@ -210,22 +217,46 @@ impl Driver<'_> {
             let label = format!("180°: tactical diameter {:.1} m", offset(&y).1.abs());
             marks.push((label, [y[3], y[4]]));
         }
+        let mut values = vec![
+            ("advance_90_m", at_90.map(|(_, y)| offset(&y).0)),
+            ("transfer_90_m", at_90.map(|(_, y)| offset(&y).1.abs())),
+            (
+                "tactical_diameter_m",
+                at_180.map(|(_, y)| offset(&y).1.abs()),
+            ),
+            (
+                "steady_turning_radius_m",
+                steady.map(|(speed, r)| speed / r.abs()),
+            ),
+            ("steady_speed_m_s", steady.map(|(speed, _)| speed)),
+            ("t_90_s", at_90.map(|(t, _)| t - t_exec)),
+            ("t_180_s", at_180.map(|(t, _)| t - t_exec)),
+        ];
+        // The displacement over the second whole turn, and how long it took.
+        let drift = match turns {
+            Some((Some((t1, y1)), Some((t2, y2)))) => Some((y2[3] - y1[3], y2[4] - y1[4], t2 - t1)),
+            Some(_) => {
+                notes.push(
+                    "the drift not given: the turn did not reach 720° of heading change (or \
+                     stopped going ahead) by the end; lengthen duration_s"
+                        .to_owned(),
+                );
+                None
+            }
+            None => None,
+        };
+        if turns.is_some() {
+            values.extend([
+                ("drift_m_per_turn", drift.map(|(n, e, _)| n.hypot(e))),
+                (
+                    "drift_toward_deg",
+                    drift.map(|(n, e, _)| e.atan2(n).to_degrees().rem_euclid(360.0)),
+                ),
+                ("turn_period_s", drift.map(|(_, _, period)| period)),
+            ]);
+        }
         Figures {
-            values: vec![
-                ("advance_90_m", at_90.map(|(_, y)| offset(&y).0)),
-                ("transfer_90_m", at_90.map(|(_, y)| offset(&y).1.abs())),
-                (
-                    "tactical_diameter_m",
-                    at_180.map(|(_, y)| offset(&y).1.abs()),
-                ),
-                (
-                    "steady_turning_radius_m",
-                    steady.map(|(speed, r)| speed / r.abs()),
-                ),
-                ("steady_speed_m_s", steady.map(|(speed, _)| speed)),
-                ("t_90_s", at_90.map(|(t, _)| t - t_exec)),
-                ("t_180_s", at_180.map(|(t, _)| t - t_exec)),
-            ],
+            values,
             side: Some(if course.turned() > 0.0 {
                 "starboard"
             } else {
