@@ -48,6 +48,9 @@ fn the_mariner_runs_its_manoeuvres_and_is_judged() {
     assert_eq!(turn["tactical_diameter_m"].as_f64(), Some(diameter("port")));
     assert_eq!(sides["port"]["side"], "port");
     assert_eq!(sides["starboard"]["side"], "starboard");
+    // Each side's rudder as it ran: the Mariner's table turns to port with δ > 0.
+    assert_eq!(sides["port"]["rudder_deg"], 35.0, "{sides}");
+    assert_eq!(sides["starboard"]["rudder_deg"], -35.0, "{sides}");
     // The turn went ahead, one way, and settled: no note qualifies a figure.
     assert_eq!(turn["notes"], serde_json::json!([]), "{turn}");
     // The transfer at 180° is more than the transfer at 90°, and the steady diameter is near

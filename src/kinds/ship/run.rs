@@ -256,9 +256,14 @@ fn judged(scene: &ShipScene, outcomes: &[Runs]) -> Vec<Criterion> {
     criteria(scene, &trials)
 }
 
-/// A manoeuvre's summary: its one run's, or the worse side's with each side's beside.
+/// A manoeuvre's summary: its one run's, or the worse side's with each side's beside, each
+/// with the kind its side ran (the rudder's sign to that side).
 fn manoeuvre_summary(scene: &ShipScene, manoeuvre: &Manoeuvre, runs: &Runs) -> ManoeuvreSummary {
+    let sided = manoeuvre.runs();
     let summary_of = |(side, outcome): &(Option<Side>, Outcome)| {
+        let manoeuvre = (sided.iter())
+            .find(|(s, _)| s == side)
+            .map_or(manoeuvre, |(_, run)| run);
         let not_refined = Figures::default();
         // No figure of its own where it was not refined: every difference `None`.
         let refined = outcome.refined().map(|refined| &refined.figures);
