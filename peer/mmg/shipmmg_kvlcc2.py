@@ -214,7 +214,10 @@ def read_setup():
     for key, value in hydro['coefficients'].items():
         assert value == c[key], f'the scene and the table differ on {key}'
     trials = []
+    # The turning circles and zig-zags (the scene's spiral is eom's alone).
     for m in scene['manoeuvre']:
+        if m['kind'] not in ('turning_circle', 'zigzag'):
+            continue
         for side in ('port', 'starboard'):
             trials.append({
                 'name': m['name'], 'kind': m['kind'], 'side': side,
@@ -599,9 +602,9 @@ def own_zigzag(trial, setup, p, n, tolerances=None):
 # eom
 
 def run_eom(setup, timing):
-    """eom's figures from `eom run scenes/kvlcc2_l7.toml`, and its wall times: the whole scene
-    (TIMING_RUNS runs, as `time` reads them) and each trial alone (the scene with that manoeuvre
-    and side alone)."""
+    """eom's figures from `eom run` on scenes/kvlcc2_l7.toml with its turning circles and
+    zig-zags alone, and its wall times: those six trials in one command (TIMING_RUNS runs, as
+    `time` reads them) and each trial alone (the scene with that manoeuvre and side alone)."""
     if not os.access(EOM, os.X_OK):
         return None
     version = subprocess.run([EOM, '--version'], capture_output=True, text=True).stdout.strip()
@@ -616,8 +619,21 @@ def run_eom(setup, timing):
             raise SystemExit(f'eom run {scene} failed:\n{done.stderr}')
         return elapsed, json.load(open(os.path.join(out, 'summary.json')))
 
-    wall, summary = run(SCENE, os.path.join(work, 'scene'))
-    result = {'version': version, 'command': 'eom run scenes/kvlcc2_l7.toml --out DIR --force',
+    # The scene's turning circles and zig-zags, the trials compared (its spiral is eom's alone).
+    text = open(SCENE).read()
+    head, *blocks = text.split('[[manoeuvre]]')
+    by_name = {}
+    for block in blocks:
+        manoeuvre = tomllib.loads('[[manoeuvre]]' + block)['manoeuvre'][0]
+        if manoeuvre['kind'] in ('turning_circle', 'zigzag'):
+            by_name[manoeuvre['name']] = block
+    trials_scene = os.path.join(work, 'trials.toml')
+    with open(trials_scene, 'w') as f:
+        f.write(head + ''.join('[[manoeuvre]]' + block for block in by_name.values()))
+    wall, summary = run(trials_scene, os.path.join(work, 'scene'))
+    result = {'version': version,
+              'command': 'eom run on scenes/kvlcc2_l7.toml with its turning circles and zig-zags '
+                         'alone --out DIR --force',
               'approach_rate_rps': summary['model']['mmg']['approach_rate_rps'],
               'integrator': {k: summary['integrator'][k] for k in ('method', 'rtol', 'atol')},
               'figures': {}}
@@ -628,19 +644,13 @@ def run_eom(setup, timing):
     if timing:
         walls, inner = [wall], [summary['wall_seconds']]
         for i in range(TIMING_RUNS - 1):
-            w, s = run(SCENE, os.path.join(work, 'scene'))
+            w, s = run(trials_scene, os.path.join(work, 'scene'))
             walls.append(w)
             inner.append(s['wall_seconds'])
         result['timing'] = {'scene_wall_s': walls, 'scene_wall_median_s': statistics.median(walls),
                             'scene_summary_wall_seconds': inner,
                             'scene_summary_wall_median_s': statistics.median(inner),
                             'per_trial': {}}
-        text = open(SCENE).read()
-        head, *blocks = text.split('[[manoeuvre]]')
-        by_name = {}
-        for block in blocks:
-            name = tomllib.loads('[[manoeuvre]]' + block)['manoeuvre'][0]['name']
-            by_name[name] = block
         for trial in setup['trials']:
             stem = f"{trial['name']}_{trial['side']}"
             scene = os.path.join(work, f'{stem}.toml')

@@ -51,7 +51,9 @@ impl Checker<'_> {
     }
 
     /// Refuses the name of manoeuvre `index` where an earlier manoeuvre has it: a manoeuvre's
-    /// name is its folder in the output, and its key in the summary.
+    /// name is its folder in the output, and its key in the summary. The kinds with manoeuvres
+    /// read scenes with feature `ship`.
+    #[cfg(feature = "ship")]
     pub(crate) fn unique_manoeuvre<'n>(
         &self,
         index: usize,

@@ -14,7 +14,10 @@
 //! its slope (γ_R⁺ against γ_R⁻). The derivatives given at a branch's edge are those of the
 //! branch the paper assigns the edge to (β ≥ 0: C₂⁺, γ_R⁺, the derivative of |β_P| taken as
 //! +1), the one-sided derivatives toward β > 0, i.e. toward v < 0 (the midship moving to
-//! port). On the straight course v = r = 0 both edges are met at once.
+//! port). On the straight course v = r = 0 both edges are met at once;
+//! [`MmgShip::loads_with_derivatives_toward`] with [`Edge::TowardNegative`] gives the other
+//! one-sided derivatives there, a small turn to port's (the ship's two linear models,
+//! [`crate::kinds::ship::linear::LinearModel::mmg`]).
 
 use num_dual::DualSVec64;
 
