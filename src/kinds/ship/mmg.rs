@@ -71,13 +71,14 @@
 //! ([`balancing_rate`]). The run, the figures, the sides and the IMO criteria are the ship's.
 
 mod applied;
+mod check;
 mod forces;
 mod parameters;
 
 pub use applied::{AppliedLoads, BY, MmgShip, balancing_rate};
 pub use forces::{
     Controls, Edge, Kinematics, MidshipState, MmgForces, MmgStateError, PlanarLoads,
-    PropellerForces, QUANTITIES, Real, RudderForces,
+    PropellerAndRudder, PropellerForces, QUANTITIES, Real, RudderForces,
 };
 pub use parameters::{
     AddedMasses, HullDerivatives, MMG_COEFFICIENTS, MMG_PARTICULARS, MmgParameterError,
