@@ -21,7 +21,7 @@
 
 use num_dual::DualSVec64;
 
-use super::forces::{Controls, Edge, MidshipState, MmgStateError};
+use super::forces::{Controls, Edge, MidshipState, MmgStateError, Real, check_domain};
 use super::parameters::MmgParameters;
 use crate::kinds::ship::ShipError;
 
@@ -93,14 +93,18 @@ impl MmgShip {
     /// X_P + X_R, Y_R, N_R at (u, v, r, δ, n), or why the paper's model has none there.
     pub fn loads(&self, at: [f64; 5]) -> Result<[f64; 3], MmgStateError> {
         let [u, v_m, r, rudder_angle, propeller_rate] = at;
-        let forces = self.parameters.forces(
-            MidshipState { u, v_m, r },
-            Controls {
-                rudder_angle,
-                propeller_rate,
-            },
-        )?;
-        let (p, r) = (forces.propeller, forces.rudder);
+        let controls = Controls {
+            rudder_angle,
+            propeller_rate,
+        };
+        check_domain(MidshipState { u, v_m, r }, controls)?;
+        self.applied(at, Edge::TowardPositive)
+    }
+
+    /// X_P + X_R, Y_R, N_R in any [`Real`], the domain checked by the caller: the propeller
+    /// and the rudder alone, the hull's forces being the proved program's own.
+    fn applied<D: Real>(&self, at: [D; 5], edge: Edge) -> Result<[D; 3], MmgStateError> {
+        let (_, p, r) = self.parameters.propeller_and_rudder_of(at, edge)?;
         Ok([p.surge + r.loads.x, r.loads.y, r.loads.n])
     }
 
@@ -119,10 +123,7 @@ impl MmgShip {
         let loads = self.loads(at)?;
         let seeded: [DualSVec64<5>; 5] =
             std::array::from_fn(|i| DualSVec64::from_re(at[i]).derivative(i));
-        let forces = self.parameters.forces_of(seeded, edge)?;
-        let (p, r) = (forces.propeller, forces.rudder);
-        let duals = [p.surge + r.loads.x, r.loads.y, r.loads.n];
-        let by = duals.map(|load| {
+        let by = self.applied(seeded, edge)?.map(|load| {
             let gradient = load.eps.unwrap_generic(nalgebra::Const::<5>, nalgebra::U1);
             std::array::from_fn(|i| gradient[i])
         });

@@ -117,6 +117,10 @@ pub struct RudderForces<D = f64> {
     pub loads: PlanarLoads<D>,
 }
 
+/// The kinematics, the propeller's forces and the rudder's at one state, without the hull's
+/// ([`MmgParameters::propeller_and_rudder_of`]).
+pub type PropellerAndRudder<D> = (Kinematics<D>, PropellerForces<D>, RudderForces<D>);
+
 /// Every quantity of the MMG forces at one state, in SI units.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct MmgForces<D = f64> {
@@ -250,10 +254,9 @@ impl MmgParameters {
         [u, v_m, r, delta, rate]: [D; 5],
         edge: Edge,
     ) -> Result<MmgForces<D>, MmgStateError> {
-        let kinematics = kinematics([u, v_m, r], self.particulars.length)?;
+        let (kinematics, propeller, rudder) =
+            self.propeller_and_rudder_of([u, v_m, r, delta, rate], edge)?;
         let hull = hull_loads(&self.hull, &self.particulars, &kinematics);
-        let propeller = self.propeller_forces(u, &kinematics, rate, edge);
-        let rudder = self.rudder_forces(u, &kinematics, &propeller, (delta, rate), edge)?;
         let total = PlanarLoads {
             x: hull.x + propeller.surge + rudder.loads.x,
             y: hull.y + rudder.loads.y,
@@ -266,6 +269,20 @@ impl MmgParameters {
             rudder,
             total,
         })
+    }
+
+    /// The propeller's and the rudder's forces alone (not the hull's), with the kinematics
+    /// they are of, as [`MmgParameters::forces_of`] takes them: what a proved program that
+    /// has the hull's forces of its own reads beside it.
+    pub fn propeller_and_rudder_of<D: Real>(
+        &self,
+        [u, v_m, r, delta, rate]: [D; 5],
+        edge: Edge,
+    ) -> Result<PropellerAndRudder<D>, MmgStateError> {
+        let kinematics = kinematics([u, v_m, r], self.particulars.length)?;
+        let propeller = self.propeller_forces(u, &kinematics, rate, edge);
+        let rudder = self.rudder_forces(u, &kinematics, &propeller, (delta, rate), edge)?;
+        Ok((kinematics, propeller, rudder))
     }
 
     /// β_P and β_R at `state`, rad: the inflow angles whose signs choose C₂ and γ_R (zero at
@@ -501,6 +518,13 @@ mod tests {
         }
     }
 
+    /// The forces of a turn to starboard and of its mirror image to port.
+    fn turning_both_ways(model: &MmgParameters) -> (MmgForces, MmgForces) {
+        let starboard = model.forces(state(0.9, -0.2, 0.06), controls(0.6, 10.0));
+        let port = model.forces(state(0.9, 0.2, -0.06), controls(-0.6, 10.0));
+        (starboard.unwrap(), port.unwrap())
+    }
+
     #[test]
     fn positive_rudder_turns_the_ship_to_starboard() {
         let forces = kvlcc2_model()
@@ -520,12 +544,7 @@ mod tests {
         let mut model = kvlcc2_model();
         model.propeller.wake_gain_negative = model.propeller.wake_gain_positive;
         model.rudder.straightening_negative = model.rudder.straightening_positive;
-        let starboard = model
-            .forces(state(0.9, -0.2, 0.06), controls(0.6, 10.0))
-            .unwrap();
-        let port = model
-            .forces(state(0.9, 0.2, -0.06), controls(-0.6, 10.0))
-            .unwrap();
+        let (starboard, port) = turning_both_ways(&model);
         let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * a.abs().max(1.0);
         for (name, (a, b)) in [
             ("X", (starboard.total.x, port.total.x)),
@@ -544,12 +563,7 @@ mod tests {
     #[test]
     fn the_sides_differ_where_the_paper_says_they_do() {
         let model = kvlcc2_model();
-        let starboard = model
-            .forces(state(0.9, -0.2, 0.06), controls(0.6, 10.0))
-            .unwrap();
-        let port = model
-            .forces(state(0.9, 0.2, -0.06), controls(-0.6, 10.0))
-            .unwrap();
+        let (starboard, port) = turning_both_ways(&model);
         assert_eq!(starboard.rudder.flow_straightening, 0.64);
         assert_eq!(port.rudder.flow_straightening, 0.395);
         // C₂⁺ = 1.6 thins the wake when the flow comes from starboard of the propeller.
