@@ -89,7 +89,7 @@ fn main() {
     let ship = eom::kinds::ship::ShipModel::new(&mariner.table).expect("the Mariner builds");
     let mut state = mariner.start();
     (state[1], state[2], state[6]) = (0.3, 0.004, 0.05);
-    scene_row("mariner", &ship, ship.operations(), (&state, &[0.0; 2]));
+    scene_row("mariner", &ship, ship.operations(), (&state, &[0.0; 3]));
     let remus = std::fs::read_to_string("scenes/remus100.toml").expect("the scene");
     let remus =
         eom::kinds::vehicle::VehicleScene::parse(&remus, "remus100.toml").expect("REMUS builds");

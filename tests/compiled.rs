@@ -47,7 +47,7 @@ fn within(random: &mut Random, bound: f64) -> f64 {
 
 /// A Mariner state far around its manoeuvres: u of either sign (a ship going astern), every
 /// heading within ±20 rad (the kernel's reduction), the rudder beyond its stops; and δ̇.
-fn ship_state(random: &mut Random) -> ([f64; 7], [f64; 2]) {
+fn ship_state(random: &mut Random) -> ([f64; 7], [f64; 3]) {
     let state = [
         within(random, 12.0),
         within(random, 4.0),
@@ -57,8 +57,13 @@ fn ship_state(random: &mut Random) -> ([f64; 7], [f64; 2]) {
         within(random, 20.0),
         within(random, 0.8),
     ];
-    // δ̇, and the propeller rate n of either sign (ahead and astern), rev/s.
-    (state, [within(random, 0.1), within(random, 2.0)])
+    // δ̇, the propeller rate n of either sign (ahead and astern), rev/s, and a gust, m/s.
+    let input = [
+        within(random, 0.1),
+        within(random, 2.0),
+        within(random, 3.0),
+    ];
+    (state, input)
 }
 
 /// A REMUS state: velocities and rates of either sign (the |x| inputs), any position, a
@@ -201,8 +206,8 @@ fn the_written_out_kernel_is_the_kernel_at_every_edge() {
     for heading in all {
         state[5] = heading;
         let (a, b) = (
-            model.rhs(&state, &[0.0, 0.0]),
-            reference.rhs(&state, &[0.0, 0.0]),
+            model.rhs(&state, &[0.0; 3]),
+            reference.rhs(&state, &[0.0; 3]),
         );
         // x' = u cos ψ − v sin ψ and y' = u sin ψ + v cos ψ read the heading's pair.
         assert_eq!(
@@ -237,8 +242,8 @@ fn other_number_types_are_interpreted() {
     let reference = model.interpreted();
     let state = [7.5f32, 0.3, -0.01, 10.0, -4.0, 0.4, 0.2];
     let (a, b) = (
-        model.rhs(&state, &[0.01, 0.0]),
-        reference.rhs(&state, &[0.01, 0.0]),
+        model.rhs(&state, &[0.01, 0.0, 0.0]),
+        reference.rhs(&state, &[0.01, 0.0, 0.0]),
     );
     assert_eq!(a.map(f32::to_bits), b.map(f32::to_bits));
     assert!(a.iter().all(|x| x.is_finite()));

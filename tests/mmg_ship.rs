@@ -86,7 +86,7 @@ fn the_proved_program_is_the_papers_equations_of_motion() {
                 0.3,
                 delta,
             ];
-            let rates = model.rhs(&y, &[0.0, n]);
+            let rates = model.rhs(&y, &[0.0, n, 0.0]);
             let expected = paper_accelerations(&scene, y, n);
             for (k, name) in ["u̇", "v̇", "ṙ"].iter().enumerate() {
                 let size = expected.iter().map(|a| a.abs()).fold(1e-9, f64::max);
@@ -113,7 +113,7 @@ fn the_jacobians_are_those_of_the_rates() {
         [1.0, -0.1, 0.02, 1.0, 2.0, 0.4, 0.3],
         [0.8, 0.12, -0.04, 0.0, 0.0, -1.0, -0.5],
     ] {
-        let input = [0.01, n];
+        let input = [0.01, n, 0.0];
         let by_state = model.state_jacobian(&y, &input);
         let by_input = model.input_jacobian(&y, &input);
         for row in 0..7 {
@@ -148,11 +148,11 @@ fn the_solved_rate_holds_the_approach() {
     for file in ["kvlcc2_l7.toml", "kvlcc2_full.toml"] {
         let scene = scene(file);
         let model = ShipModel::new(&scene.table).unwrap();
-        let rates = model.rhs(&scene.start(), &[0.0, model.approach_rate()]);
+        let rates = model.rhs(&scene.start(), &[0.0, model.approach_rate(), 0.0]);
         let speed = scene.table.design_speed;
         assert!(rates[0].abs() <= 1e-14 * speed, "{file}: u̇ = {}", rates[0]);
         assert_eq!(rates[1..3], [0.0, 0.0], "{file}: v̇, ṙ");
-        let lower = model.rhs(&scene.start(), &[0.0, 0.99 * model.approach_rate()]);
+        let lower = model.rhs(&scene.start(), &[0.0, 0.99 * model.approach_rate(), 0.0]);
         assert!(lower[0] < 0.0, "{file}: below n₀ the ship slows");
     }
 }

@@ -159,7 +159,7 @@ fn the_proved_program_is_4_46_with_the_table_forces() {
             ];
             let rate = draw(-0.1, 0.1);
             let n = draw(-1.2, 1.2) * model.approach_rate();
-            let program = model.rhs(&y, &[rate, n]);
+            let program = model.rhs(&y, &[rate, n, 0.0]);
             let (direct, sizes) = independent_rhs(&scene.table, y, (rate, n));
             for i in 0..7 {
                 let size = if i < 3 {
@@ -669,7 +669,7 @@ duration_s = 100.0
         ShipModel::new(&at_midship.table).unwrap(),
     );
     let y: [f64; 7] = [5.0, 0.3, 0.01, 0.0, 0.0, 0.2, 0.1];
-    let (ra, rb) = (a.rhs(&y, &[0.0, 0.0]), b.rhs(&y, &[0.0, 0.0]));
+    let (ra, rb) = (a.rhs(&y, &[0.0; 3]), b.rhs(&y, &[0.0; 3]));
     for i in 0..7 {
         assert!(
             (ra[i] - rb[i]).abs() <= 1e-12 * ra[i].abs().max(1e-6),
@@ -793,10 +793,14 @@ fn the_ship_model_keeps_the_model_contract() {
                 draw(-4.0, 4.0),
                 draw(-0.7, 0.7),
             ];
-            let rate = [draw(-0.1, 0.1), draw(-1.2, 1.2) * model.approach_rate()];
+            let rate = [
+                draw(-0.1, 0.1),
+                draw(-1.2, 1.2) * model.approach_rate(),
+                draw(-3.0, 3.0),
+            ];
             let by_state = model.state_jacobian(&y, &rate);
             let by_input = model.input_jacobian(&y, &rate);
-            for column in 0..9 {
+            for column in 0..10 {
                 let seeded = |i: usize| {
                     let value = Dual64::from(if i < 7 { y[i] } else { rate[i - 7] });
                     if i == column {
@@ -806,7 +810,7 @@ fn the_ship_model_keeps_the_model_contract() {
                     }
                 };
                 let state: [Dual64; 7] = std::array::from_fn(seeded);
-                let rates = model.rhs(&state, &[seeded(7), seeded(8)]);
+                let rates = model.rhs(&state, &[seeded(7), seeded(8), seeded(9)]);
                 for row in 0..7 {
                     let ours = if column < 7 {
                         by_state[row][column]
@@ -821,9 +825,9 @@ fn the_ship_model_keeps_the_model_contract() {
                         rates[row].eps
                     );
                     let declared = if column < 7 {
-                        <ShipModel as Model<f64, 7, 2>>::STATE_JACOBIAN.contains(&(row, column))
+                        <ShipModel as Model<f64, 7, 3>>::STATE_JACOBIAN.contains(&(row, column))
                     } else {
-                        <ShipModel as Model<f64, 7, 2>>::INPUT_JACOBIAN.contains(&(row, column - 7))
+                        <ShipModel as Model<f64, 7, 3>>::INPUT_JACOBIAN.contains(&(row, column - 7))
                     };
                     assert!(
                         declared || ours == 0.0,

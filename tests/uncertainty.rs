@@ -19,7 +19,7 @@ fn ship(table: toml::Table) -> ShipScene {
 }
 
 /// States about the approach and well into a hard turn, with the rudder moving.
-fn states(count: usize) -> Vec<([f64; 7], [f64; 2])> {
+fn states(count: usize) -> Vec<([f64; 7], [f64; 3])> {
     let mut random = Random(17);
     (0..count)
         .map(|_| {
@@ -33,7 +33,7 @@ fn states(count: usize) -> Vec<([f64; 7], [f64; 2])> {
                 x(-7.0, 7.0),
                 x(-0.7, 0.7),
             ];
-            (state, [x(-0.09, 0.09), 0.0])
+            (state, [x(-0.09, 0.09), 0.0, 0.0])
         })
         .collect()
 }

@@ -864,4 +864,14 @@ fn a_ship_in_a_current_drifts_and_is_not_judged() {
     }
     assert!(stdout.contains("judges trials in calm water"), "{stdout}");
     assert!(stdout.contains("drift_m_per_turn"), "{stdout}");
+    let environment = &summary["model"]["environment"];
+    assert_eq!(environment["current"]["speed_m_s"], 0.5, "{environment}");
+    assert_eq!(environment["current"]["toward_deg"], 90.0, "{environment}");
+    assert!(
+        environment["figures"]
+            .as_str()
+            .unwrap()
+            .contains("over ground")
+    );
+    assert!(stdout.contains("the figures are over ground"), "{stdout}");
 }

@@ -75,6 +75,7 @@ fn residuals_are_the_mass_matrix_form_with_the_polynomial() {
         propulsion: false,
         form: ShipForm::Polynomial,
         current: false,
+        applied: false,
     };
     let book = [
         "(M - X_udot)*u_dot - M*v*r - M*x_G*r.powi(2) - X_uu*u.powi(2)",
@@ -98,6 +99,7 @@ fn inertia_about_midship_enters_the_mass_matrix_as_given() {
         propulsion: false,
         form: ShipForm::Polynomial,
         current: false,
+        applied: false,
     };
     let yaw = &spec.residuals().unwrap()[2];
     let book = parse("(M*x_G - N_vdot)*v_dot + (Izz_midship - N_rdot)*r_dot + M*x_G*u*r").unwrap();
@@ -115,6 +117,7 @@ fn prime_terms_scale_by_the_instantaneous_speed() {
         propulsion: false,
         form: ShipForm::Polynomial,
         current: false,
+        applied: false,
     };
     let y = spec.force(Force::Y).unwrap();
     let expected = parse("rho/2.0*L.powi(3)*Y_vvr*v.powi(2)*r/U").unwrap();
@@ -135,6 +138,7 @@ fn the_mariner_builds_proves_and_emits_only_its_terms_and_the_model_contract() {
                 propulsion: false,
                 form: ShipForm::Polynomial,
                 current: false,
+                applied: false,
             };
             let system = ship("mariner", &spec).unwrap();
             prove(&system).unwrap();
@@ -166,6 +170,7 @@ fn a_term_listed_twice_is_refused() {
         propulsion: false,
         form: ShipForm::Polynomial,
         current: false,
+        applied: false,
     };
     let error = ship("twice", &spec).unwrap_err();
     assert!(error.to_string().contains("Y_v is listed twice"), "{error}");
@@ -180,6 +185,7 @@ fn the_rudder_angle_moves_at_its_input() {
         propulsion: false,
         form: ShipForm::Polynomial,
         current: false,
+        applied: false,
     };
     let system = ship("bare", &spec).unwrap();
     assert_eq!(system.state[6], "delta");
@@ -198,6 +204,7 @@ fn single_operation_mutants_of_the_mariner_s_jacobians_fail_their_check() {
         propulsion: false,
         form: ShipForm::Polynomial,
         current: false,
+        applied: false,
     };
     let system = ship("mariner", &spec).unwrap();
     let caught = mutants::jacobian_mutants(&system, 1);
@@ -232,6 +239,7 @@ fn propulsion_puts_the_rudder_on_its_inflow_and_the_thrust_law_in_surge() {
         propulsion: true,
         form: ShipForm::Polynomial,
         current: false,
+        applied: false,
     };
     let e = "(delta - (v + L*x_R*r)/c)";
     let x = spec.force(Force::X).unwrap();
@@ -271,6 +279,7 @@ fn a_term_in_the_effective_rudder_angle_needs_propulsion() {
         propulsion: false,
         form: ShipForm::Polynomial,
         current: false,
+        applied: false,
     };
     let error = ship("no_propeller", &spec).unwrap_err();
     assert!(
@@ -323,6 +332,7 @@ fn mmg_spec() -> ShipSpec {
         propulsion: false,
         form: ShipForm::Mmg,
         current: false,
+        applied: false,
     }
 }
 
@@ -362,12 +372,16 @@ fn the_mmg_form_is_the_papers_equations_of_motion() {
         let difference = derived - &parse(book).unwrap();
         assert!(difference.is_zero(), "{book}: left over {difference}");
     }
-    let system = ship("kvlcc2", &spec).unwrap();
+    reads_the_applied_loads_and_proves(&ship("kvlcc2", &spec).unwrap());
+}
+
+/// A system whose inputs are δ̇, U and the applied loads X, Y, N, and which proves.
+fn reads_the_applied_loads_and_proves(system: &eom_codegen::model::System) {
     assert_eq!(
         system.inputs,
         ["delta_rate", "U", "X_applied", "Y_applied", "N_applied"]
     );
-    prove(&system).unwrap();
+    prove(system).unwrap();
 }
 
 /// An MMG spec reads the hull's terms alone: a term in u, δ or e, a propulsion model or
@@ -435,6 +449,7 @@ fn a_current_carries_the_track_and_nothing_else() {
         propulsion: false,
         form: ShipForm::Polynomial,
         current: false,
+        applied: false,
     };
     let carried = ShipSpec {
         current: true,
@@ -461,4 +476,34 @@ fn a_current_carries_the_track_and_nothing_else() {
         );
     }
     prove(&carried).unwrap();
+}
+
+/// Applied loads (the wind's) enter a polynomial ship's right side as they enter an MMG
+/// ship's: each of 4.46's residuals loses exactly its load, the inputs gain X, Y, N after U,
+/// and the system with them proves.
+#[test]
+fn applied_loads_enter_a_polynomial_ship_as_its_loads() {
+    let calm = ShipSpec {
+        units: Units::Prime,
+        yaw_inertia: YawInertia::AboutMidship,
+        terms: mariner_terms(),
+        propulsion: false,
+        form: ShipForm::Polynomial,
+        current: false,
+        applied: false,
+    };
+    let windy = ShipSpec {
+        applied: true,
+        ..calm.clone()
+    };
+    let (before, after) = (calm.residuals().unwrap(), windy.residuals().unwrap());
+    for ((a, b), load) in before
+        .iter()
+        .zip(&after)
+        .zip(["X_applied", "Y_applied", "N_applied"])
+    {
+        let difference = &(b - a) + &Expr::symbol(load);
+        assert!(difference.is_zero(), "{load}: {difference}");
+    }
+    reads_the_applied_loads_and_proves(&ship("windy", &windy).unwrap());
 }

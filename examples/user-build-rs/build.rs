@@ -39,6 +39,7 @@ fn ship_spec() -> ShipSpec {
         propulsion: false,
         form: ShipForm::Polynomial,
         current: false,
+        applied: false,
     }
 }
 
@@ -68,6 +69,7 @@ fn mariner_spec() -> ShipSpec {
         propulsion: false,
         form: ShipForm::Polynomial,
         current: false,
+        applied: false,
     }
 }
 

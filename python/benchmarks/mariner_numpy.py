@@ -110,7 +110,7 @@ def random_states(count: int, seed: int = 1) -> tuple[np.ndarray, np.ndarray]:
             rng.uniform(-0.7, 0.7, count),
         ]
     )
-    u = np.stack([rng.uniform(-0.09, 0.09, count), np.zeros(count)])
+    u = np.stack([rng.uniform(-0.09, 0.09, count), np.zeros(count), np.zeros(count)])
     return x, u
 
 

@@ -27,7 +27,7 @@ def mariner():
 def test_the_models_names(mariner):
     assert mariner.name == "ship"
     assert mariner.state_names == ["u", "v", "r", "X", "Y", "psi", "delta"]
-    assert mariner.input_names == ["delta_rate", "n"]
+    assert mariner.input_names == ["delta_rate", "n", "wind_gust"]
 
 
 def test_rhs_over_a_million_states_in_one_call_is_each_states_own_call(mariner):
@@ -98,7 +98,7 @@ def test_the_jacobians_are_the_derivatives_of_the_rates(mariner):
     scale; 1e-6 leaves a hundredfold margin."""
     x, u = random_states(20, seed=4)
     a, b = mariner.state_jacobian(x, u), mariner.input_jacobian(x, u)
-    assert a.shape == (7, 7, 20) and b.shape == (7, 2, 20)
+    assert a.shape == (7, 7, 20) and b.shape == (7, 3, 20)
     for k in range(20):
         assert np.array_equal(mariner.state_jacobian(x[:, k], u[:, k]), a[:, :, k])
     scale = np.abs(mariner.rhs(x, u)).max(axis=1) + 1e-300
@@ -115,7 +115,7 @@ def test_wrong_shapes_and_values_are_exceptions_that_say_so(mariner):
     x, u = random_states(4)
     with pytest.raises(eom.ShapeError, match=r"\(7, N\)"):
         mariner.rhs(x[:6], u)
-    with pytest.raises(eom.ShapeError, match=r"u has shape \(2, 3\)"):
+    with pytest.raises(eom.ShapeError, match=r"u has shape \(3, 3\)"):
         mariner.rhs(x, u[:, :3])
     with pytest.raises(eom.ShapeError):
         mariner.rhs(np.zeros((7, 2, 2)), u)

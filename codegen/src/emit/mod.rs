@@ -186,6 +186,7 @@ pub fn prove_with_jacobians(system: &System) -> Result<Program, EmitError> {
 ///     propulsion: false,
 ///     form: ShipForm::Polynomial,
 ///     current: false,
+///     applied: false,
 /// };
 /// let source = eom_codegen::emit::system_source(&ship("two_term_ship", &spec).unwrap()).unwrap();
 /// assert!(source.contains("pub y_v: f64") && source.contains("pub n_r: f64"));

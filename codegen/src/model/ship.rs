@@ -62,6 +62,12 @@
 //! atan2): the caller computes them beside U and the program reads them as inputs, added to
 //! the right side, which is proved with them.
 //!
+//! **Applied loads** (a spec with [`ShipSpec::applied`]): loads computed beside the program,
+//! the wind's on the hull and superstructure above water, which are neither polynomials nor
+//! constant (they follow the relative wind's angle through a table, and the heading), enter a
+//! polynomial ship as they enter an MMG ship: X, Y, N inputs added to the right side, proved
+//! with it.
+//!
 //! **A uniform current** (a spec with [`ShipSpec::current`]): the hydrodynamic forces see the
 //! ship's velocity through the water, so 4.46's u and v are taken through the water, and the
 //! track is carried by the current, Ẋ = u cos ψ − v sin ψ + V_N, Ẏ = u sin ψ + v cos ψ + V_E
@@ -222,6 +228,10 @@ pub struct ShipSpec {
     /// the water, and the track (4.44) adds the current's north and east components, inputs
     /// [`CURRENT_INPUTS`] (module docs).
     pub current: bool,
+    /// Whether loads computed beside the program act on the ship (the wind's): a polynomial
+    /// spec then reads [`APPLIED_LOADS`] as an MMG spec does, added to the right side (module
+    /// docs); an MMG spec reads them anyway.
+    pub applied: bool,
 }
 
 /// The parameters of propulsion, by their symbols, after the body's, the added mass and the
@@ -242,8 +252,8 @@ pub const MMG_ADDED_MASS: [&str; 3] = ["m_x", "m_y", "J_z"];
 pub const MMG_SCALES: [&str; 3] = [DENSITY, LENGTH, DRAFT];
 const DRAFT: &str = "draft";
 
-/// The MMG form's applied loads, inputs after δ̇ and U: the propeller's and the rudder's X,
-/// Y, N about midship (N, N, N m), which the caller computes.
+/// The applied loads, inputs after δ̇ and U (and propulsion's): X, Y, N about midship (N, N,
+/// N m), which the caller computes: an MMG ship's propeller and rudder, the wind's loads.
 pub const APPLIED_LOADS: [&str; 3] = ["X_applied", "Y_applied", "N_applied"];
 
 /// A uniform current's north and east components (m/s), inputs after every other of a spec
@@ -399,20 +409,30 @@ impl ShipSpec {
     }
 
     /// The inputs: the rudder rate, in the prime system and the MMG form the speed U, with
-    /// propulsion [`PROPULSION_INPUTS`], in the MMG form [`APPLIED_LOADS`].
+    /// propulsion [`PROPULSION_INPUTS`], in the MMG form or with [`ShipSpec::applied`]
+    /// [`APPLIED_LOADS`].
     pub fn inputs(&self) -> Vec<&'static str> {
         let mut inputs = match (self.form, self.units) {
-            (ShipForm::Mmg, _) => [&["delta_rate", "U"][..], &APPLIED_LOADS].concat(),
+            (ShipForm::Mmg, _) => vec!["delta_rate", "U"],
             (ShipForm::Polynomial, Units::Dimensional) => vec!["delta_rate"],
             (ShipForm::Polynomial, Units::Prime) => vec!["delta_rate", "U"],
         };
         if self.propulsion {
             inputs.extend(PROPULSION_INPUTS);
         }
+        if self.reads_applied_loads() {
+            inputs.extend(APPLIED_LOADS);
+        }
         if self.current {
             inputs.extend(CURRENT_INPUTS);
         }
         inputs
+    }
+
+    /// Whether the right side adds [`APPLIED_LOADS`]: in the MMG form, or with
+    /// [`ShipSpec::applied`].
+    pub fn reads_applied_loads(&self) -> bool {
+        self.form == ShipForm::Mmg || self.applied
     }
 
     /// The symbols of the body's three parameters, in this spec's units: the mass, the yaw
@@ -483,7 +503,7 @@ impl ShipSpec {
         if self.propulsion && force == Force::X {
             sum = &sum + &self.thrust()?;
         }
-        if self.form == ShipForm::Mmg {
+        if self.reads_applied_loads() {
             let index = Force::ALL.iter().position(|f| *f == force).unwrap_or(0);
             sum = &sum + &Expr::symbol(APPLIED_LOADS[index]);
         }

@@ -129,14 +129,18 @@ fn ten_terms() {
     let jit = ShipModel::new(&table()).expect("the table builds");
     assert!(jit.is_compiled(), "the ten-term table compiles");
     let interpreted = jit.interpreted();
-    let differing = differing_bits(|s, d| k.rhs(s, &[d]), |s, d| jit.rhs(s, &[d, 0.0]));
+    let differing = differing_bits(|s, d| k.rhs(s, &[d]), |s, d| jit.rhs(s, &[d, 0.0, 0.0]));
     println!(
         "ship, 10 terms: rustc and jit outputs differing in their bits: {differing} of 700000"
     );
     let times = rounds(&[
         &|| time(ship_start, CALLS, |y| k.rhs(y, &[0.01])),
-        &|| time(ship_start, CALLS, |y| jit.rhs(y, &[0.01, 0.0])),
-        &|| time(ship_start, CALLS / 10, |y| interpreted.rhs(y, &[0.01, 0.0])),
+        &|| time(ship_start, CALLS, |y| jit.rhs(y, &[0.01, 0.0, 0.0])),
+        &|| {
+            time(ship_start, CALLS / 10, |y| {
+                interpreted.rhs(y, &[0.01, 0.0, 0.0])
+            })
+        },
     ]);
     print(
         "ship, 10 terms",
@@ -145,9 +149,9 @@ fn ten_terms() {
     // Each is a model: the same driver, the same RK4.
     let (driven, jit_driven) = (
         k.driven_by(Constant([0.0])),
-        jit.driven_by(Constant([0.0, 0.0])),
+        jit.driven_by(Constant([0.0, 0.0, 0.0])),
     );
-    let interpreted_driven = interpreted.driven_by(Constant([0.0, 0.0]));
+    let interpreted_driven = interpreted.driven_by(Constant([0.0, 0.0, 0.0]));
     let times = rounds(&[
         &|| time_rk4(&driven) * 1e-9,
         &|| time_rk4(&jit_driven) * 1e-9,
@@ -167,16 +171,16 @@ fn mariner() {
     let jit = ShipModel::new(&table).expect("the Mariner builds");
     assert!(jit.is_compiled() && jit.terms() == 39);
     let interpreted = jit.interpreted();
-    let differing = differing_bits(m_rhs, |s, d| jit.rhs(s, &[d, 0.0]));
+    let differing = differing_bits(m_rhs, |s, d| jit.rhs(s, &[d, 0.0, 0.0]));
     println!("Mariner: rustc and jit outputs differing in their bits: {differing} of 700000");
     assert!(cfg!(target_feature = "fma") || differing == 0);
     let mariner_start = [7.5, 0.3, -0.01, 10.0, -5.0, 0.3, 0.1];
     let times = rounds(&[
         &|| time(mariner_start, CALLS, |y| m_rhs(y, 0.01)),
-        &|| time(mariner_start, CALLS, |y| jit.rhs(y, &[0.01, 0.0])),
+        &|| time(mariner_start, CALLS, |y| jit.rhs(y, &[0.01, 0.0, 0.0])),
         &|| {
             time(mariner_start, CALLS / 10, |y| {
-                interpreted.rhs(y, &[0.01, 0.0])
+                interpreted.rhs(y, &[0.01, 0.0, 0.0])
             })
         },
     ]);

@@ -159,7 +159,7 @@ fn main() {
         }
         ("ten-rk4", _) => {
             let jit = ShipModel::new(&common::table()).expect("the table builds");
-            rk4(&jit.driven_by(Constant([0.0, 0.0])), ship_start, calls).to_vec()
+            rk4(&jit.driven_by(Constant([0.0, 0.0, 0.0])), ship_start, calls).to_vec()
         }
         ("ten", form) => {
             let jit = ShipModel::new(&common::table()).expect("the table builds");
@@ -168,7 +168,7 @@ fn main() {
             } else {
                 jit.interpreted()
             };
-            run(ship_start, calls, |y| model.rhs(y, &[0.01, 0.0])).to_vec()
+            run(ship_start, calls, |y| model.rhs(y, &[0.01, 0.0, 0.0])).to_vec()
         }
         ("mariner", form) => {
             let table = mariner_table();
@@ -183,7 +183,7 @@ fn main() {
                 } else {
                     jit.interpreted()
                 };
-                run(start, calls, |y| model.rhs(y, &[0.01, 0.0])).to_vec()
+                run(start, calls, |y| model.rhs(y, &[0.01, 0.0, 0.0])).to_vec()
             }
         }
         ("remus", form) => {

@@ -26,8 +26,11 @@ fn the_ten_term_ship_is_the_same_in_all_three_forms() {
     let k = ship::Coefficients::<f64>::new(&example_ship());
     let compiled = ShipModel::new(&table()).expect("the table builds");
     let interpreted = compiled.interpreted();
-    let jit = |s: &[f64; 7], d: f64| compiled.rhs(s, &[d, 0.0]);
-    assert_eq!(differing_bits(jit, |s, d| interpreted.rhs(s, &[d, 0.0])), 0);
+    let jit = |s: &[f64; 7], d: f64| compiled.rhs(s, &[d, 0.0, 0.0]);
+    assert_eq!(
+        differing_bits(jit, |s, d| interpreted.rhs(s, &[d, 0.0, 0.0])),
+        0
+    );
     if !FUSED {
         assert_eq!(differing_bits(|s, d| k.rhs(s, &[d]), jit), 0);
     }
@@ -41,8 +44,11 @@ fn the_mariner_is_the_same_in_all_three_forms() {
     let compiled = ShipModel::new(&table).expect("the Mariner builds");
     assert_eq!(compiled.terms(), 39);
     let interpreted = compiled.interpreted();
-    let jit = |s: &[f64; 7], d: f64| compiled.rhs(s, &[d, 0.0]);
-    assert_eq!(differing_bits(jit, |s, d| interpreted.rhs(s, &[d, 0.0])), 0);
+    let jit = |s: &[f64; 7], d: f64| compiled.rhs(s, &[d, 0.0, 0.0]);
+    assert_eq!(
+        differing_bits(jit, |s, d| interpreted.rhs(s, &[d, 0.0, 0.0])),
+        0
+    );
     if !FUSED {
         assert_eq!(differing_bits(rustc, jit), 0);
     }

@@ -22,8 +22,10 @@ pub struct ShipSceneFile {
     pub rudder: SteeringGearTable,
     /// The propeller, its thrust law and the rudder in its slipstream (prime tables).
     pub propulsion: Option<PropulsionTable>,
-    /// The water around the ship: a uniform current.
+    /// The water and the air around the ship: a uniform current, a wind.
     pub environment: Option<EnvironmentTable>,
+    /// The ship above water: its wind coefficients and areas.
+    pub windage: Option<WindageTable>,
     /// The step.
     pub integrator: IntegratorTable,
     /// The manoeuvres, each run from the same approach.
@@ -116,7 +118,8 @@ pub struct PropulsionTable {
     pub max_rate_rps_s: Option<f64>,
 }
 
-/// `[environment]`: a uniform current, constant in space and time.
+/// `[environment]`: a uniform current, constant in space and time; a wind fixed in direction,
+/// steady or gusting.
 #[derive(Debug, Clone, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct EnvironmentTable {
@@ -124,6 +127,55 @@ pub struct EnvironmentTable {
     pub current_m_s: Option<f64>,
     /// The direction it flows toward, degrees clockwise from north.
     pub current_toward_deg: Option<f64>,
+    /// The wind's mean speed, m/s.
+    pub wind_m_s: Option<f64>,
+    /// The direction it blows from, degrees clockwise from north.
+    pub wind_from_deg: Option<f64>,
+    /// The spectrum its gusts are drawn from (`"norsok"`); steady without one.
+    pub wind_spectrum: Option<String>,
+    /// The seed the gusts are drawn with.
+    pub wind_seed: Option<u64>,
+    /// The height of the wind above the sea, m (10 by default).
+    pub wind_height_m: Option<f64>,
+}
+
+/// `[windage]`: the ship above water, as its wind loads are given: its areas and length
+/// overall, and its coefficients over the relative wind's angle, as a table or by Isherwood's
+/// regression on its geometry.
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WindageTable {
+    /// `"isherwood"` for Isherwood's regression; a table (`angles_deg`, `C_X` …) without it.
+    pub coefficients: Option<String>,
+    /// The table's angles off the bow, 0 to 180 degrees.
+    pub angles_deg: Option<Vec<f64>>,
+    /// C_X at each angle.
+    #[serde(rename = "C_X")]
+    pub c_x: Option<Vec<f64>>,
+    /// C_Y at each angle.
+    #[serde(rename = "C_Y")]
+    pub c_y: Option<Vec<f64>>,
+    /// C_N at each angle.
+    #[serde(rename = "C_N")]
+    pub c_n: Option<Vec<f64>>,
+    /// L_oa, m.
+    pub length_overall_m: Option<f64>,
+    /// A_F, m².
+    pub frontal_area_m2: Option<f64>,
+    /// A_L, m².
+    pub lateral_area_m2: Option<f64>,
+    /// ρ_a, kg/m³.
+    pub air_density_kg_m3: Option<f64>,
+    /// B, m (Isherwood's).
+    pub beam_m: Option<f64>,
+    /// A_SS, m² (Isherwood's).
+    pub superstructure_area_m2: Option<f64>,
+    /// S, m (Isherwood's).
+    pub perimeter_m: Option<f64>,
+    /// C, m (Isherwood's).
+    pub centroid_from_bow_m: Option<f64>,
+    /// M (Isherwood's).
+    pub masts: Option<f64>,
 }
 
 /// `[[manoeuvre]]`: each kind reads its own keys and refuses the others.

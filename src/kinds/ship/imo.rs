@@ -293,12 +293,19 @@ pub fn criteria(scene: &ShipScene, runs: &[Trial]) -> Vec<Criterion> {
             .to_owned(),
         )),
     }
-    if scene.table.current.is_some_and(|c| c.speed > 0.0) {
+    let in_current = scene.table.current.is_some_and(|c| c.speed > 0.0);
+    let in_wind = scene.table.wind.as_ref().is_some_and(|w| w.speed > 0.0);
+    let not_calm = match (in_current, in_wind) {
+        (true, _) => Some(IN_CURRENT),
+        (false, true) => Some(IN_WIND),
+        (false, false) => None,
+    };
+    if let Some(why) = not_calm {
         // Each side's figure stays, for the record; no verdict rests on it.
         for criterion in judged.iter_mut().filter(|c| c.not_judged_because.is_none()) {
             criterion.value = None;
             criterion.side = None;
-            criterion.not_judged_because = Some(IN_CURRENT.to_owned());
+            criterion.not_judged_because = Some(why.to_owned());
         }
     }
     judged
@@ -307,6 +314,10 @@ pub fn criteria(scene: &ShipScene, runs: &[Trial]) -> Vec<Criterion> {
 /// Why no criterion is judged in a current.
 pub const IN_CURRENT: &str = "the scene has a current: IMO MSC.137(76) judges trials in calm \
                               water, and the track's figures here are over ground";
+
+/// Why no criterion is judged in a wind.
+pub const IN_WIND: &str = "the scene has a wind: IMO MSC.137(76) judges trials in calm \
+                           weather, and the track's figures here are over ground";
 
 /// Why the turning criteria are not judged on a scene whose turning circles are all at
 /// other angles than `angle` (rad): which angle they need, and the angles the scene ran.

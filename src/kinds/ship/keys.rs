@@ -3,16 +3,19 @@
 //! sources and estimates are said there), in the prime system, with the dimensional keys
 //! shown commented out beside their prime counterparts.
 
+pub mod environment;
+
 use crate::scene::reference::{Choices, Frame, Key, Kind, Required, SceneFamily, Shown};
 
-const SHIP: &[SceneFamily] = &[SceneFamily::Kind("ship")];
+pub(crate) const SHIP: &[SceneFamily] = &[SceneFamily::Kind("ship")];
 
 /// The yaw inertia: one of four keys, by the table's units and the point it is taken about.
 const ONE_YAW_INERTIA: Required = Required::When(
     "as one of izz, izz_midship (dimensional), izz_prime, izz_midship_prime (prime)",
 );
 
-/// Every key of a ship scene.
+/// The keys of a ship scene up to `[environment]`: the ship, its table, its rudder and
+/// propeller.
 pub const KEYS: &[Key] = &[
     Key::shared(
         "title",
@@ -372,34 +375,11 @@ pub const KEYS: &[Key] = &[
         shown: Shown::Commented,
         ..Key::BLANK
     },
-    // [environment]
-    Key {
-        path: "environment.current_m_s",
-        families: SHIP,
-        unit: "m/s",
-        default: "no current",
-        description: "A uniform current's speed, constant in space and time, with \
-                      current_toward_deg. The ship's u and v (and U, the speeds of the figures \
-                      and the trajectory) are then through the water, what the hydrodynamic \
-                      forces see, and its track X, Y over ground, carried by the current: the \
-                      advance, transfer and tactical diameter are over ground, and a turning \
-                      circle drifts (its figures drift_m_per_turn, drift_toward_deg and \
-                      turn_period_s, from the turns at 360° and 720° of heading change).",
-        example: "0.5",
-        shown: Shown::Commented,
-        ..Key::BLANK
-    },
-    Key {
-        path: "environment.current_toward_deg",
-        families: SHIP,
-        unit: "deg",
-        required: Required::When("with environment.current_m_s"),
-        description: "The direction the current flows toward (its set, as currents are \
-                      given), clockwise from north (X): 90 flows east.",
-        example: "90.0",
-        shown: Shown::Commented,
-        ..Key::BLANK
-    },
+];
+
+/// The keys after `[environment]` and `[windage]` ([`environment::KEYS`]): the step, the
+/// manoeuvres, the output, the linear model.
+pub const RUN_KEYS: &[Key] = &[
     // [integrator]
     Key::shared("integrator.method", SHIP, "\"rk4\"", Shown::Set),
     Key::shared("integrator.step", SHIP, "0.2", Shown::Set),

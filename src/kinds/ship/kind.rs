@@ -25,7 +25,7 @@ pub const KIND: Registered = Registered {
                 exactly the terms the table lists, derived and proved when the scene is read, \
                 run through each `[[manoeuvre]]` from the same straight approach at U₀ \
                 (`scenes/mariner.toml`, `scenes/esso_osaka.toml`; `eom new ship`).",
-        keys: &[keys::KEYS],
+        keys: &[keys::KEYS, keys::environment::KEYS, keys::RUN_KEYS],
         notes: keys::NOTES,
         columns: Columns::Listed {
             said: "A ship writes one `trajectory.csv` per manoeuvre, with the rudder command \

@@ -291,7 +291,7 @@ impl LinearModel {
 pub fn linearise(model: &ShipModel, speed: f64) -> ([[f64; 2]; 2], [f64; 2]) {
     let mut state = [0.0; 7];
     state[0] = speed;
-    let jacobian = model.state_jacobian(&state, &[0.0, model.approach_rate()]);
+    let jacobian = model.state_jacobian(&state, &[0.0, model.approach_rate(), 0.0]);
     let row = |i: usize| [jacobian[i][1], jacobian[i][2]];
     ([row(1), row(2)], [jacobian[1][6], jacobian[2][6]])
 }
@@ -317,7 +317,7 @@ impl ShipPlant<'_> {
 
 impl LinearPlant for ShipPlant<'_> {
     fn name(&self) -> &'static str {
-        <ShipModel as Model<f64, 7, 2>>::NAME
+        <ShipModel as Model<f64, 7, 3>>::NAME
     }
 
     /// The ship is a planar body about midship.
@@ -360,7 +360,7 @@ impl LinearPlant for ShipPlant<'_> {
 
     fn evaluate(&self, state: &[f64], extra: &[f64]) -> Result<Evaluation, LinearError> {
         let full = Self::full(state, extra[0]);
-        let input = [0.0, self.model.approach_rate()];
+        let input = [0.0, self.model.approach_rate(), 0.0];
         let rates = self.model.rhs(&full, &input);
         let jacobian = self.model.state_jacobian(&full, &input);
         let a = DMatrix::from_fn(6, 6, |i, j| jacobian[i][j]);
@@ -372,10 +372,14 @@ impl LinearPlant for ShipPlant<'_> {
         Ok(Evaluation { rates, a, b })
     }
 
+    /// The model's pattern on (u, v, r, X, Y, ψ); the accelerations depend on ψ only in a
+    /// wind.
     fn pattern(&self) -> Vec<(usize, usize)> {
-        let pattern = <ShipModel as Model<f64, 7, 2>>::STATE_JACOBIAN;
+        let pattern = <ShipModel as Model<f64, 7, 3>>::STATE_JACOBIAN;
+        let windage = self.model.wind().is_some();
         (pattern.iter().copied())
             .filter(|&(i, j)| i < 6 && j < 6)
+            .filter(|&(i, j)| windage || i >= 3 || j != 5)
             .collect()
     }
 
@@ -410,14 +414,20 @@ pub fn linearise_ship(
     crate::linear::linearise(&plant, (state, extra), &scene.linear)
 }
 
-/// Nomoto's models, the course stability and the pivot point, as text.
+/// Nomoto's models, the course stability and the pivot point, as text: the ship's own, in calm
+/// air (a wind's loads turn with the heading, which Nomoto's model has not; the linearisation
+/// above it keeps ψ).
 pub fn nomoto_report(scene: &super::ShipScene, model: &ShipModel, linear: &LinearModel) -> String {
     let mut text = String::new();
     let speed = scene.table.design_speed;
+    let air = match model.wind() {
+        Some(_) => " in calm air",
+        None => "",
+    };
     line(
         &mut text,
         format!(
-            "{}: the linear model about the straight course at U₀ = {speed} m/s",
+            "{}: the linear model about the straight course at U₀ = {speed} m/s{air}",
             crate::output::text::printable(&scene.title)
         ),
     );
@@ -432,7 +442,7 @@ pub fn nomoto_report(scene: &super::ShipScene, model: &ShipModel, linear: &Linea
         line(text, said);
     };
     show(&mut text, "Nomoto, closed form:", linear.nomoto());
-    let (a, b) = linearise(model, speed);
+    let (a, b) = linearise(&model.calm(), speed);
     show(
         &mut text,
         "Nomoto, linearised model:",

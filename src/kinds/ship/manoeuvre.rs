@@ -221,7 +221,7 @@ impl Figures {
 /// The ship under its steering, with the distance run by midship as an eighth state
 /// (ṡ = U = √(u² + v²)), integrated with the rest for the zig-zag's initial turning distance.
 struct Tracked<'a> {
-    driven: Driven<'a, ShipModel, Steering<'a>, 2>,
+    driven: Driven<'a, ShipModel, Steering<'a>, 3>,
 }
 
 impl OdeSystem<f64, 8> for Tracked<'_> {
@@ -540,6 +540,7 @@ impl<'a> Driver<'a> {
             command,
             engine: self.engine,
             held_rate: self.model.approach_rate(),
+            gust: (self.model.wind()).and_then(|wind| wind.wind.gust.as_ref()),
         };
         Tracked {
             driven: self.model.driven_by(steering),
@@ -702,7 +703,7 @@ impl<'a> Driver<'a> {
             ManoeuvreKind::TurningCircle { rudder } => {
                 self.set_command(rudder, y);
                 self.watches = vec![Watch::HeadingChange(PI / 2.0), Watch::HeadingChange(PI)];
-                if self.model.current().is_some() {
+                if self.model.drifts() {
                     // A drifting circle: its first and second whole turns.
                     let turns = [2.0 * PI, 4.0 * PI].map(Watch::HeadingChange);
                     self.watches.extend(turns);

@@ -16,10 +16,12 @@
 //! | the spiral tests (direct and reverse), the r–δ curve and its loop | [`spiral`] |
 //! | the steady turns at fixed rudder by continuation, and the folds that end the loop | [`steady`] |
 //! | what a run reports, as data (`summary.json`'s types) | [`summary`] |
+//! | the current, the wind and the windage as a run reports them, and what the figures are over | [`environment`] |
 //! | what the figures assume (ahead, not stopped, one way, settled), checked on the run (shared with the vehicle's turning circle) | [`crate::manoeuvring::course`] |
 //! | the IMO MSC.137(76) criteria | [`imo`] |
 //! | the linear model about the straight course: Nomoto, course stability, pivot point | [`linear`] |
 //! | the MMG standard method: its forces (hull, propeller, rudder) at a state, every quantity kept; the propeller's and rudder's loads the proved program reads, with their derivatives; the rate that balances the approach | [`mmg`] |
+//! | the wind: a ship's coefficients over the relative wind's angle (a table, or Isherwood's regression), its loads and their derivatives; gusts from a spectrum with a seed | [`wind`] |
 //! | the scene file | [`scene`] |
 //!
 //! The model is built when the scene is read, because the table is known only then: the
@@ -32,6 +34,7 @@
 //! `emit::system_source` (crate `eom-codegen`) from a `build.rs`.
 
 mod check;
+pub mod environment;
 pub mod file;
 pub mod imo;
 pub mod keys;
@@ -49,6 +52,7 @@ pub mod spiral;
 pub mod steady;
 pub mod summary;
 pub mod table;
+pub mod wind;
 
 /// The added-mass derivatives' symbols and the motion variables' letters, in the generator's
 /// order (the table reads its names by them).

@@ -20,11 +20,17 @@
 //! their dual-number derivatives, into ∂f/∂(u, v, r, δ) and ∂f/∂n. Outside the paper's model
 //! (a ship going astern, the propeller stopped) the loads are NaN, and the run says why
 //! ([`crate::integrate::IntegrateError::OutsideModel`]).
+//!
+//! A ship with a [`super::wind::Windage`] reads the wind's loads the same way, added to an MMG
+//! ship's or alone ([`super::wind::ShipWind::loads`]): they are of u, v and the heading ψ (the
+//! wind is fixed in space) and of the gust g, the model's third input, so its ∂f/∂x gains
+//! entries in ψ's column and its ∂f/∂g a column.
 
 use super::ShipError;
 use super::mmg::MmgShip;
 use super::propulsion::Propulsion;
 use super::table::ShipTable;
+use super::wind::ShipWind;
 use crate::defined::engine::{
     ADDED_MASS, APPLIED_LOADS, CURRENT_INPUTS, EmitError, MMG_ADDED_MASS, MMG_SCALES, Operations,
     PRIME_SCALES, PROPULSION, Program, ShipSpec, Units, prove_with_jacobians, ship,
@@ -42,13 +48,15 @@ use std::sync::Arc;
 pub const STATE: [&str; 7] = ["u", "v", "r", "X", "Y", "psi", "delta"];
 
 /// The inputs: the rudder's rate δ̇ (rad/s), which the steering gear sets
-/// ([`crate::manoeuvring::steering`]), and the propeller rate n (rev/s), which the engine's command sets
-/// ([`super::propulsion`]; read only by a ship with a propulsion model).
-pub const INPUTS: [&str; 2] = ["delta_rate", "n"];
+/// ([`crate::manoeuvring::steering`]); the propeller rate n (rev/s), which the engine's command
+/// sets ([`super::propulsion`]; read only by a ship with a propulsion model or an MMG ship's);
+/// the gust g (m/s), the wind's speed less its mean ([`super::wind::gust`]; read only by a ship
+/// with a windage, zero where the wind does not gust).
+pub const INPUTS: [&str; 3] = ["delta_rate", "n", "wind_gust"];
 
 /// The program's variables this model sets beside the state, in the order of
 /// [`ShipModel::computed`]: δ̇, U, then what propulsion reads, then an MMG ship's applied
-/// loads. The state's are read where they lie.
+/// loads (or the wind's, or both's sum). The state's are read where they lie.
 const COMPUTED: [&str; 11] = [
     "delta_rate",
     "U",
@@ -66,24 +74,28 @@ const COMPUTED: [&str; 11] = [
 /// Where a current's components lie in [`COMPUTED`].
 const CURRENT: usize = 9;
 
-/// Where an MMG ship's applied loads lie in [`COMPUTED`].
+/// Where the applied loads (an MMG ship's propeller and rudder, the wind) lie in [`COMPUTED`].
 const APPLIED: usize = 6;
 
 /// Where the rates can depend on the state, for any table: u̇, v̇, ṙ on u, v, r and δ (the
-/// terms in U of a prime table are in u and v); Ẋ, Ẏ on u, v, ψ (4.44); ψ̇ on r; δ̇ on none.
-/// A table without a term in some entry makes that entry's derivative zero at every state.
+/// terms in U of a prime table are in u and v) and, in a wind, on ψ; Ẋ, Ẏ on u, v, ψ (4.44);
+/// ψ̇ on r; δ̇ on none. A table without a term in some entry makes that entry's derivative zero
+/// at every state.
 #[rustfmt::skip]
-const STATE_JACOBIAN: [(usize, usize); 19] = [
-    (0, 0), (0, 1), (0, 2), (0, 6),
-    (1, 0), (1, 1), (1, 2), (1, 6),
-    (2, 0), (2, 1), (2, 2), (2, 6),
+const STATE_JACOBIAN: [(usize, usize); 22] = [
+    (0, 0), (0, 1), (0, 2), (0, 5), (0, 6),
+    (1, 0), (1, 1), (1, 2), (1, 5), (1, 6),
+    (2, 0), (2, 1), (2, 2), (2, 5), (2, 6),
     (3, 0), (3, 1), (3, 5),
     (4, 0), (4, 1), (4, 5),
     (5, 2),
 ];
 
-/// δ̇ is the rudder's rate itself; u̇, v̇, ṙ depend on n through the thrust law and c.
-const INPUT_JACOBIAN: [(usize, usize); 4] = [(0, 1), (1, 1), (2, 1), (6, 0)];
+/// δ̇ is the rudder's rate itself; u̇, v̇, ṙ depend on n through the thrust law and c, and on
+/// the gust through the wind's loads.
+#[rustfmt::skip]
+const INPUT_JACOBIAN: [(usize, usize); 7] =
+    [(0, 1), (0, 2), (1, 1), (1, 2), (2, 1), (2, 2), (6, 0)];
 
 /// A ship's proved program, ready to evaluate.
 #[derive(Debug, Clone)]
@@ -99,6 +111,8 @@ pub struct ShipModel {
     mmg: Option<MmgShip>,
     /// The current's north and east components, m/s, for a ship in one.
     current: Option<[f64; 2]>,
+    /// The air on a ship with a windage: its coefficients, the wind, the current it drifts in.
+    wind: Option<Arc<ShipWind>>,
     /// What the table's values do not change, shared by the models of other values.
     proved: Arc<Proved>,
     operations: Operations,
@@ -120,7 +134,8 @@ enum ProgramInput {
     Induced,
     /// c(u, n).
     Inflow,
-    /// An MMG ship's applied load X, Y or N (by its index), of (u, v, r, δ, n).
+    /// An applied load X, Y or N (by its index): an MMG ship's, of (u, v, r, δ, n), and the
+    /// wind's, of (u, v, ψ, g).
     Applied(usize),
     /// A current's north or east component: a constant.
     Current,
@@ -151,6 +166,7 @@ fn spec_of(table: &ShipTable) -> ShipSpec {
         propulsion: table.propulsion.is_some(),
         form: table.form(),
         current: table.current.is_some(),
+        applied: table.windage.is_some(),
     }
 }
 
@@ -225,6 +241,7 @@ impl ShipModel {
             propulsion: table.propulsion,
             mmg: table.mmg,
             current: table.current.map(|c| c.components()),
+            wind: table.ship_wind().map(Arc::new),
             operations: proved.program.operations(&proved.program.rhs),
             terms: proved.spec.terms.len(),
             program: interpreter,
@@ -262,6 +279,7 @@ impl ShipModel {
             propulsion: table.propulsion,
             mmg: table.mmg,
             current: table.current.map(|c| c.components()),
+            wind: table.ship_wind().map(Arc::new),
             ..self.clone()
         })
     }
@@ -270,7 +288,7 @@ impl ShipModel {
     /// order: δ̇, U (zero where the program does not read it: a table in SI), and what a
     /// propulsion model computes (zero without one).
     #[inline]
-    fn computed<T: SimdRealField + Copy>(&self, state: &[T; 7], input: &[T; 2]) -> [T; 11] {
+    fn computed<T: SimdRealField + Copy>(&self, state: &[T; 7], input: &[T; 3]) -> [T; 11] {
         let mut computed = [T::zero(); 11];
         self.compute(state, input, &mut computed);
         computed
@@ -282,7 +300,7 @@ impl ShipModel {
     fn compute<T: SimdRealField + Copy>(
         &self,
         state: &[T; 7],
-        input: &[T; 2],
+        input: &[T; 3],
         computed: &mut [T; 11],
     ) {
         computed[0] = input[0];
@@ -295,6 +313,9 @@ impl ShipModel {
         if let Some(mmg) = &self.mmg {
             mmg_applied(mmg, state, input, computed);
         }
+        if let Some(wind) = &self.wind {
+            wind_applied(wind, state, input, computed);
+        }
         if let Some([north, east]) = self.current {
             computed[CURRENT] = T::from_subset(&north);
             computed[CURRENT + 1] = T::from_subset(&east);
@@ -306,7 +327,7 @@ impl ShipModel {
         &self,
         plan: &'a Plan,
         state: &[T; 7],
-        input: &[T; 2],
+        input: &[T; 3],
     ) -> impl Iterator<Item = T> + use<'a, T> {
         let computed = self.computed(state, input);
         let variables = Variables {
@@ -321,21 +342,22 @@ impl ShipModel {
     fn jacobians<T: SimdRealField + Copy>(
         &self,
         state: &[T; 7],
-        input: &[T; 2],
-    ) -> ([[T; 7]; 7], [[T; 2]; 7]) {
+        input: &[T; 3],
+    ) -> ([[T; 7]; 7], [[T; 3]; 7]) {
         let mut by_state = [[T::zero(); 7]; 7];
         let entries = self.evaluate(&self.functions.state_jacobian, state, input);
         for (&(row, column), value) in self.functions.state_pattern.iter().zip(entries) {
             by_state[row][column] = value;
         }
-        let mut by_input = [[T::zero(); 2]; 7];
+        let mut by_input = [[T::zero(); 3]; 7];
         let speed = (state[0] * state[0] + state[1] * state[1]).simd_sqrt();
         let inflow = self.propulsion.map(|p| p.inflow(state[0], input[1]));
         let applied_by = self.mmg.map(|mmg| mmg_applied_by(&mmg, state, input));
+        let wind_by = (self.wind.as_deref()).map(|wind| wind_applied_by(wind, state, input));
         let entries = self.evaluate(&self.functions.input_jacobian, state, input);
         for (&(row, column), value) in self.functions.input_pattern.iter().zip(entries) {
             // (∂/∂u, ∂/∂n) of the input, where it is one the model computes.
-            let through = |by: [T; 2], by_state: &mut [[T; 7]; 7], by_input: &mut [[T; 2]; 7]| {
+            let through = |by: [T; 2], by_state: &mut [[T; 7]; 7], by_input: &mut [[T; 3]; 7]| {
                 by_state[row][0] += value * by[0];
                 by_input[row][1] += value * by[1];
             };
@@ -366,6 +388,13 @@ impl ShipModel {
                             by_state[row][column] += value * by[load][variable];
                         }
                         by_input[row][1] += value * by[load][4];
+                    }
+                    // ∂/∂(u, v, ψ) into the state's columns, ∂/∂g into the gust's.
+                    if let Some(by) = &wind_by {
+                        for (variable, column) in [0, 1, 5].into_iter().enumerate() {
+                            by_state[row][column] += value * by[load][variable];
+                        }
+                        by_input[row][2] += value * by[load][3];
                     }
                 }
             }
@@ -402,6 +431,25 @@ impl ShipModel {
     /// The current's north and east components, m/s, for a ship in one.
     pub fn current(&self) -> Option<[f64; 2]> {
         self.current
+    }
+
+    /// The air on a ship with a windage: its coefficients, the wind, the current.
+    pub fn wind(&self) -> Option<&ShipWind> {
+        self.wind.as_deref()
+    }
+
+    /// The same ship in calm air: the wind's loads left out (an MMG ship's propeller and
+    /// rudder kept), what the linear model about the straight course is of.
+    pub fn calm(&self) -> ShipModel {
+        ShipModel {
+            wind: None,
+            ..self.clone()
+        }
+    }
+
+    /// Whether the track drifts: the ship is in a current, or feels a wind.
+    pub fn drifts(&self) -> bool {
+        self.current.is_some() || self.wind.as_ref().is_some_and(|w| w.wind.speed > 0.0)
     }
 
     /// What one call costs, as the emitter counts it.
@@ -445,7 +493,7 @@ impl ShipModel {
 fn propelled<T: SimdRealField + Copy>(
     propulsion: &Propulsion,
     state: &[T; 7],
-    input: &[T; 2],
+    input: &[T; 3],
     computed: &mut [T; 11],
 ) {
     let inflow = propulsion.inflow(state[0], input[1]);
@@ -466,7 +514,7 @@ fn set_lane<T: SimdRealField + Copy>(into: &mut T, lane: usize, value: f64) {
 }
 
 /// (u, v, r, δ, n) of lane `lane`: what an MMG ship's applied loads are of.
-fn mmg_variables<T: SimdRealField + Copy>(state: &[T; 7], input: &[T; 2], lane: usize) -> [f64; 5] {
+fn mmg_variables<T: SimdRealField + Copy>(state: &[T; 7], input: &[T; 3], lane: usize) -> [f64; 5] {
     [state[0], state[1], state[2], state[6], input[1]].map(|x| lane_of(x, lane))
 }
 
@@ -477,7 +525,7 @@ fn mmg_variables<T: SimdRealField + Copy>(state: &[T; 7], input: &[T; 2], lane: 
 fn mmg_applied<T: SimdRealField + Copy>(
     mmg: &MmgShip,
     state: &[T; 7],
-    input: &[T; 2],
+    input: &[T; 3],
     computed: &mut [T; 11],
 ) {
     for lane in 0..T::LANES {
@@ -492,12 +540,59 @@ fn mmg_applied<T: SimdRealField + Copy>(
 fn mmg_applied_by<T: SimdRealField + Copy>(
     mmg: &MmgShip,
     state: &[T; 7],
-    input: &[T; 2],
+    input: &[T; 3],
 ) -> [[T; 5]; 3] {
     let mut by = [[T::zero(); 5]; 3];
     for lane in 0..T::LANES {
         let applied = mmg.loads_with_derivatives(mmg_variables(state, input, lane));
         let derivatives = applied.map_or([[f64::NAN; 5]; 3], |a| a.by);
+        for (row, values) in by.iter_mut().zip(derivatives) {
+            for (entry, value) in row.iter_mut().zip(values) {
+                set_lane(entry, lane, value);
+            }
+        }
+    }
+    by
+}
+
+/// (u, v, ψ) and g of lane `lane`: what the wind's loads are of.
+fn wind_variables<T: SimdRealField + Copy>(
+    state: &[T; 7],
+    input: &[T; 3],
+    lane: usize,
+) -> ([f64; 3], f64) {
+    let of = |x| lane_of(x, lane);
+    ([of(state[0]), of(state[1]), of(state[5])], of(input[2]))
+}
+
+/// The wind's loads added into `computed`'s applied loads, lane by lane in f64.
+#[inline(never)]
+fn wind_applied<T: SimdRealField + Copy>(
+    wind: &ShipWind,
+    state: &[T; 7],
+    input: &[T; 3],
+    computed: &mut [T; 11],
+) {
+    for lane in 0..T::LANES {
+        let (velocity, gust) = wind_variables(state, input, lane);
+        let loads = wind.loads(velocity, gust).loads;
+        for (k, load) in loads.into_iter().enumerate() {
+            let sum = lane_of(computed[APPLIED + k], lane) + load;
+            set_lane(&mut computed[APPLIED + k], lane, sum);
+        }
+    }
+}
+
+/// The derivatives of the wind's loads by (u, v, ψ, g), lane by lane.
+fn wind_applied_by<T: SimdRealField + Copy>(
+    wind: &ShipWind,
+    state: &[T; 7],
+    input: &[T; 3],
+) -> [[T; 4]; 3] {
+    let mut by = [[T::zero(); 4]; 3];
+    for lane in 0..T::LANES {
+        let (velocity, gust) = wind_variables(state, input, lane);
+        let derivatives = wind.loads(velocity, gust).by;
         for (row, values) in by.iter_mut().zip(derivatives) {
             for (entry, value) in row.iter_mut().zip(values) {
                 set_lane(entry, lane, value);
@@ -602,17 +697,17 @@ fn parameters(spec: &ShipSpec, table: &ShipTable, named: bool) -> (Vec<String>, 
 
 /// The ship as a model like the catalog's: its state and inputs, the proved program as `rhs`,
 /// its proved Jacobians, and the rigid body's kinetic energy.
-impl<T: SimdRealField + Copy> Model<T, 7, 2> for ShipModel {
+impl<T: SimdRealField + Copy> Model<T, 7, 3> for ShipModel {
     const NAME: &'static str = "ship";
     const STATE: [&'static str; 7] = STATE;
-    const INPUTS: [&'static str; 2] = INPUTS;
+    const INPUTS: [&'static str; 3] = INPUTS;
     const STATE_JACOBIAN: &'static [(usize, usize)] = &STATE_JACOBIAN;
     const INPUT_JACOBIAN: &'static [(usize, usize)] = &INPUT_JACOBIAN;
 
     /// The rates of the state with the rudder moving at `input[0]` and the propeller turning
     /// at `input[1]`: the proved program.
     #[inline]
-    fn rhs(&self, state: &[T; 7], input: &[T; 2]) -> [T; 7] {
+    fn rhs(&self, state: &[T; 7], input: &[T; 3]) -> [T; 7] {
         let mut computed = [T::zero(); 11];
         self.compute(state, input, &mut computed);
         let variables = Variables {
@@ -629,18 +724,18 @@ impl<T: SimdRealField + Copy> Model<T, 7, 2> for ShipModel {
     /// fluid's share (the added mass) is not in it.
     fn kinetic_energy(&self, state: &[T; 7]) -> T {
         (self
-            .evaluate(&self.functions.kinetic_energy, state, &[T::zero(); 2])
+            .evaluate(&self.functions.kinetic_energy, state, &[T::zero(); 3])
             .next())
         .unwrap_or_else(T::zero)
     }
 
     /// ∂f/∂x: the proved Jacobian program (see the module docs for U, u_A and c).
-    fn state_jacobian(&self, state: &[T; 7], input: &[T; 2]) -> [[T; 7]; 7] {
+    fn state_jacobian(&self, state: &[T; 7], input: &[T; 3]) -> [[T; 7]; 7] {
         self.jacobians(state, input).0
     }
 
     /// ∂f/∂(δ̇, n): the proved Jacobian program.
-    fn input_jacobian(&self, state: &[T; 7], input: &[T; 2]) -> [[T; 2]; 7] {
+    fn input_jacobian(&self, state: &[T; 7], input: &[T; 3]) -> [[T; 3]; 7] {
         self.jacobians(state, input).1
     }
 }

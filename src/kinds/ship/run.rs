@@ -5,6 +5,7 @@
 //! loop, the rows, the refined run and the summary's shared keys; this module opens no file.
 
 use super::Side;
+use super::environment::EnvironmentSummary;
 use super::imo::{Criterion, Trial, criteria, possible};
 use super::linear::LinearModel;
 use super::manoeuvre::{Figures, ManoeuvreKind, ManoeuvreRun, ROW, run_until};
@@ -670,6 +671,9 @@ fn report(
     let mut text = String::new();
     let out = &mut text;
     writeln!(out, "{}", printable(&scene.title))?;
+    if let Some(environment) = EnvironmentSummary::of(&scene.table) {
+        writeln!(out, "{}", environment.line())?;
+    }
     for (manoeuvre, runs) in scene.manoeuvres.iter().zip(outcomes) {
         manoeuvre_report(out, manoeuvre, runs)?;
     }

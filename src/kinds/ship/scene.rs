@@ -79,6 +79,7 @@
 
 use super::linear::LinearModel;
 use super::manoeuvre::Manoeuvre;
+use super::manoeuvre::ManoeuvreKind::{ReverseSpiral, Spiral};
 use super::table::ShipTable;
 use crate::integrate::Stepper;
 use crate::manoeuvring::steering::Rudder;
@@ -176,8 +177,12 @@ impl ShipScene {
             ));
         }
         let (mut table, length) = check.table(file)?;
+        if let Some(windage) = &file.windage {
+            table.windage = Some(check.windage(windage)?);
+        }
         if let Some(environment) = &file.environment {
             table.current = check.current(environment)?;
+            table.wind = check.wind(environment, table.windage.is_some())?;
         }
         let rudder = check.steering_gear("rudder", &file.rudder)?;
         let linear = LinearModel::closed_form(&table);
@@ -188,6 +193,10 @@ impl ShipScene {
                 Problem::Missing("at least one [[manoeuvre]]".into()),
             ));
         }
+        // The air moving over the water (a wind, or a current under a windage): the wind's
+        // loads turn with the heading, and no turn is steady.
+        let windy =
+            (table.ship_wind()).is_some_and(|air| air.wind.speed > 0.0 || air.current != [0.0; 2]);
         let mut manoeuvres: Vec<Manoeuvre> = Vec::new();
         for (index, table) in file.manoeuvre.iter().enumerate() {
             let ship = Ship {
@@ -197,6 +206,14 @@ impl ShipScene {
                 length,
             };
             let manoeuvre = check.manoeuvre(index, table, ship)?;
+            if windy && matches!(manoeuvre.kind, Spiral(_) | ReverseSpiral(_)) {
+                return Err(check.invalid(
+                    &format!("manoeuvre[{index}].kind"),
+                    "a spiral holds the rudder until the turn is steady, and where the air moves \
+                     over the water (a wind, or a current under a [windage]) no turn is: the \
+                     wind's loads turn with the heading. Run it in still air",
+                ));
+            }
             let names = manoeuvres.iter().map(|m| m.name.as_str());
             check.unique_manoeuvre(index, &manoeuvre.name, names)?;
             manoeuvres.push(manoeuvre);

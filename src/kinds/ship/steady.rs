@@ -222,14 +222,16 @@ impl Scaled<'_> {
 
     /// F(x).
     fn residual(&self, x: &Vector4<f64>) -> Vector3<f64> {
-        let rates = self.model.rhs(&self.state(x), &[0.0, self.rate]);
+        let rates = self.model.rhs(&self.state(x), &[0.0, self.rate, 0.0]);
         let scales = self.rate_scales();
         Vector3::from_fn(|i, _| rates[i] * scales[i])
     }
 
     /// J = ∂F/∂x: the proved Jacobian's rows u̇, v̇, ṙ and columns u, v, r, δ, scaled.
     fn jacobian(&self, x: &Vector4<f64>) -> Matrix3x4<f64> {
-        let jacobian = self.model.state_jacobian(&self.state(x), &[0.0, self.rate]);
+        let jacobian = self
+            .model
+            .state_jacobian(&self.state(x), &[0.0, self.rate, 0.0]);
         let (u, l) = (self.speed, self.length);
         let columns = [(0, u), (1, u), (2, u / l), (6, 1.0)];
         let scales = self.rate_scales();
@@ -394,7 +396,7 @@ impl Scaled<'_> {
     /// The steady turn at x, in SI, with its stability.
     fn turn(&self, x: &Vector4<f64>) -> SteadyTurn {
         let state = self.state(x);
-        let jacobian = self.model.state_jacobian(&state, &[0.0, self.rate]);
+        let jacobian = self.model.state_jacobian(&state, &[0.0, self.rate, 0.0]);
         let a = Matrix3::from_fn(|i, j| jacobian[i][j]);
         SteadyTurn {
             rudder: x[3],

@@ -6,6 +6,7 @@
 //! names; the application writes them with the keys of every object sorted, as a ship's
 //! summary has always been written. A library user gets the same numbers without parsing JSON.
 
+use super::environment::EnvironmentSummary;
 use super::imo::Criterion;
 use super::linear::{LinearModel, Nomoto, linearise};
 use super::manoeuvre::{Figures, Manoeuvre, ManoeuvreKind};
@@ -63,6 +64,9 @@ pub struct ModelSummary {
     /// The MMG standard method's propeller at the approach, for an MMG ship.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub mmg: Option<MmgSummary>,
+    /// The current, the wind and the windage, for a ship in any.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub environment: Option<EnvironmentSummary>,
 }
 
 /// An MMG ship's propeller at the approach, and the convention of its linear model.
@@ -511,6 +515,7 @@ impl ModelSummary {
                     linear_model: MMG_LINEAR_CONVENTION,
                 }
             }),
+            environment: EnvironmentSummary::of(table),
         }
     }
 }
@@ -532,7 +537,7 @@ impl NomotoSummary {
 /// An angle (or a rate) the scene gave in degrees, back from radians as it was written: the
 /// conversion there and back is off by an ulp (7.5° came back as 7.499999999999999°), and
 /// fifteen significant digits, well above that and below anything a scene writes, undo it.
-fn as_given(radians: f64) -> f64 {
+pub(super) fn as_given(radians: f64) -> f64 {
     let degrees = radians.to_degrees();
     format!("{degrees:.14e}").parse().unwrap_or(degrees)
 }
@@ -554,7 +559,8 @@ impl LinearSummary {
     pub fn new(scene: &ShipScene, model: &ShipModel, linear: &LinearModel) -> Self {
         let speed = scene.table.design_speed;
         let closed = linear.nomoto();
-        let (a, b) = linearise(model, speed);
+        // The ship's own: in calm air (the wind's loads turn with the heading).
+        let (a, b) = linearise(&model.calm(), speed);
         let linearised = Nomoto::from_state_space(a, b);
         let toward_port = scene.table.mmg.map(|mmg| {
             let port = LinearModel::mmg(&scene.table, &mmg, Edge::TowardNegative);

@@ -20,6 +20,7 @@
 use super::ShipError;
 use super::mmg::{MmgParameters, MmgShip};
 use super::propulsion::Propulsion;
+use super::wind::{ShipWind, Wind, Windage};
 use super::{ADDED_MASS, Force, ShipForm, Term, Units, VARIABLES, YawInertia};
 use crate::validate::Requirement;
 use std::collections::BTreeMap;
@@ -77,6 +78,11 @@ pub struct ShipTable {
     /// The uniform current the ship moves in, where the scene gives one: its u and v are then
     /// through the water and its track over ground.
     pub current: Option<Current>,
+    /// The ship's wind coefficients and areas, where the scene gives them: the air then acts
+    /// on it, still or blowing ([`ShipTable::ship_wind`]).
+    pub windage: Option<Windage>,
+    /// The wind, where the scene gives one (it needs a windage); without one the air is still.
+    pub wind: Option<Wind>,
 }
 
 /// A uniform current, constant in space and time.
@@ -86,6 +92,24 @@ pub struct Current {
     pub speed: f64,
     /// The direction it flows toward (its set), rad clockwise from north (X).
     pub toward: f64,
+}
+
+impl ShipTable {
+    /// The air on the ship, for a table with a windage: the wind (still air without one) and
+    /// the current the ship drifts in.
+    pub fn ship_wind(&self) -> Option<ShipWind> {
+        let windage = self.windage.clone()?;
+        let still = Wind {
+            speed: 0.0,
+            from: 0.0,
+            gust: None,
+        };
+        Some(ShipWind {
+            windage,
+            wind: self.wind.clone().unwrap_or(still),
+            current: self.current.map_or([0.0; 2], |c| c.components()),
+        })
+    }
 }
 
 impl Current {
@@ -232,6 +256,8 @@ impl ShipTable {
             propulsion: None,
             mmg: None,
             current: None,
+            windage: None,
+            wind: None,
         };
         if let Some(propulsion) = given.propulsion {
             let length = match (given.units, given.length) {
@@ -322,6 +348,8 @@ impl ShipTable {
             propulsion: None,
             mmg: Some(MmgShip::new(parameters, design_speed, held)?),
             current: None,
+            windage: None,
+            wind: None,
         };
         table.check_mass_matrix()?;
         Ok(table)

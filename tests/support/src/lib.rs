@@ -10,6 +10,7 @@
 //! | a fixed stream of random draws | [`random`] |
 //! | a model's Jacobians by central differences | [`differences`] |
 //! | the keys a serde schema accepts | [`schema`] |
+//! | the Mariner in a wind, built from the shipped scene | [`ships`] |
 
 pub mod bodies;
 pub mod child;
@@ -22,3 +23,4 @@ pub mod jacobian;
 pub mod properties;
 pub mod random;
 pub mod schema;
+pub mod ships;

@@ -77,6 +77,7 @@ pub fn symbols(table: &ShipTable) -> BTreeMap<String, f64> {
         propulsion: false,
         form: ShipForm::Polynomial,
         current: false,
+        applied: false,
     };
     let body = [table.body.mass, table.body.yaw_inertia, table.body.x_g];
     let scales = [

@@ -193,7 +193,7 @@ impl Driver<'_> {
         let at_90 = holding(PI / 2.0, "advance and transfer");
         let at_180 = holding(PI, "the tactical diameter");
         // A drifting circle's first and second whole turns.
-        let turns = (self.model.current()).map(|_| {
+        let turns = (self.model.drifts()).then(|| {
             (
                 holding(2.0 * PI, "the drift"),
                 holding(4.0 * PI, "the drift"),

@@ -2,9 +2,10 @@
 //! and the propeller rate are at a time and state, over one stretch of a manoeuvre.
 
 use super::*;
+use crate::kinds::ship::wind::Gust;
 
 /// The steering gear under a command and the engine under its own, as the ship model's
-/// loads: the rudder's rate δ̇ and the propeller rate n at a time and state.
+/// loads: the rudder's rate δ̇, the propeller rate n and the wind's gust at a time and state.
 #[derive(Debug, Clone, Copy)]
 pub struct Steering<'a> {
     pub(super) rudder: &'a Rudder,
@@ -14,6 +15,8 @@ pub struct Steering<'a> {
     /// The propeller rate without a command: an MMG ship's n₀, which balances the approach
     /// (zero, and read by no term, for a ship without a propeller).
     pub(super) held_rate: f64,
+    /// The wind's gusts, for a ship in a gusting wind.
+    pub(super) gust: Option<&'a Gust>,
 }
 
 /// The rudder command over one stretch.
@@ -64,13 +67,18 @@ impl Steering<'_> {
     }
 }
 
-impl Loads<f64, 7, 2> for Steering<'_> {
+impl Loads<f64, 7, 3> for Steering<'_> {
     /// δ̇: the lag's rate toward the saturated command, or a series' slope for a rudder
     /// without a lag (which follows its command); n: the engine's command at `t`, or the
-    /// held rate without one.
-    fn at(&self, t: f64, state: &[f64; 7]) -> [f64; 2] {
+    /// held rate without one; g: the gust at `t`, zero where the wind does not gust.
+    fn at(&self, t: f64, state: &[f64; 7]) -> [f64; 3] {
         let (command, slope) = self.command(t, state[2]);
         let rate = self.engine.map_or(self.held_rate, |engine| engine.rate(t));
-        [self.rudder.rate(command, state[6]).unwrap_or(slope), rate]
+        let gust = self.gust.map_or(0.0, |gust| gust.at(t));
+        [
+            self.rudder.rate(command, state[6]).unwrap_or(slope),
+            rate,
+            gust,
+        ]
     }
 }
