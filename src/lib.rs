@@ -17,6 +17,7 @@
 //! | what every kind of scene is, and what its run gives | [`kind`]: `Kind`, `Finished`, `KindError` |
 //! | the kinds, each in its folder, and the registry that lists them: a catalog body, a ship on its hydrodynamic table (4.46), an underwater vehicle and an aircraft on theirs (the last three with feature `ship`) | [`kinds`]: `REGISTRY`, one folder a kind |
 //! | what a ship's and a vehicle's manoeuvres share: the steering gear, the course | [`manoeuvring`] |
+//! | the Earth around a body that moves through space: its constants, shapes, geodesy and gravity | [`earth`] |
 //! | a scene's runs: the one runner of every kind's runs, rows to a recorder, the trade-off of its integrators, a Monte Carlo | [`run`]: `run::scene`, `run::record`, `run::tradeoff`, `run::uncertainty` |
 //! | linearisation of any model: the operating point, A and B from the proved Jacobians, the modes | [`linear`] |
 //! | exact solutions and invariants for judging runs | [`reference`](mod@reference), [`energy`], [`elliptic`] |
@@ -55,6 +56,7 @@
 pub mod batch;
 #[cfg(feature = "ship")]
 mod defined;
+pub mod earth;
 pub mod elliptic;
 pub mod energy;
 pub mod generic;
