@@ -58,6 +58,7 @@ pub(crate) mod engine {
     pub use eom_codegen::model::aircraft::{
         QUATERNION_STATE as AIRCRAFT_QUATERNION_STATE, STATE as AIRCRAFT_STATE, aircraft_with,
     };
+    pub use eom_codegen::model::earth as earth_model;
     pub use eom_codegen::model::ship::{
         ADDED_MASS, APPLIED_LOADS, CURRENT_INPUTS, Force, MMG_ADDED_MASS, MMG_SCALES, PRIME_SCALES,
         PROPULSION, ShipForm, ShipSpec, Term, Units, VARIABLES, YawInertia, ship,

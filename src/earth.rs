@@ -11,11 +11,16 @@
 //! oblate Earth to J2 ([`gravity`]). Each is checked against the six tools of the NESC check
 //! cases (`data/nesc/`, `tests/earth_nesc.rs`): their printed positions and local gravity.
 //!
-//! The equations of motion over a turning Earth (the Coriolis and centripetal terms, the
-//! transport rate) are derived and proved as the chapter's are; they are not here yet.
+//! The translational equations over a turning Earth (the Coriolis and centripetal terms) are
+//! derived and proved as the chapter's are (`eom_codegen::model::earth`) and run as
+//! [`point_mass::PointMass`] (feature `ship`, which brings the symbolic engine at run time);
+//! the attitude over the Earth, the transport rate of local axes and the scenes are not here
+//! yet.
 
 pub mod geodesy;
 pub mod gravity;
+#[cfg(feature = "ship")]
+pub mod point_mass;
 
 pub use geodesy::{Ecef, Geodetic};
 pub use gravity::Gravity;

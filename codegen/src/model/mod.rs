@@ -6,6 +6,7 @@
 //! back to the proved form.
 
 pub mod aircraft;
+pub mod earth;
 mod families;
 pub mod jacobian;
 pub mod ship;
