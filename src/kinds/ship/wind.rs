@@ -14,7 +14,7 @@
 //! ground, which is the velocity through the water (the state's u, v) plus the current's; so
 //! the loads depend on u, v and the heading ψ (the wind and the current are fixed in space),
 //! and on the wind's speed, whose gusts ([`gust`]) are the model's third input. They enter the
-//! proved program as applied loads (`eom_codegen::model::ship`, [`ShipSpec::applied`]), with
+//! proved program as applied loads (`eom_codegen::model::ship::ShipSpec::applied`), with
 //! their derivatives in its Jacobians, computed here by hand from the formula above:
 //! `V_r² dγ = u_r dv_r − v_r du_r` is written without dividing by V_r², so a ship at rest
 //! in still air has loads and derivatives zero, not NaN.
@@ -25,8 +25,6 @@
 //! model's equations are; a table's moment is about the middle of the length overall, which
 //! for a merchant ship lies a few metres from midship of L_pp: not corrected, and said in the
 //! docs.
-//!
-//! [`ShipSpec::applied`]: crate::defined::engine::ShipSpec::applied
 
 mod check;
 pub mod coefficients;
