@@ -542,11 +542,20 @@ fn mmg_applied_by<T: SimdRealField + Copy>(
     state: &[T; 7],
     input: &[T; 3],
 ) -> [[T; 5]; 3] {
-    let mut by = [[T::zero(); 5]; 3];
-    for lane in 0..T::LANES {
+    by_lanes(|lane| {
         let applied = mmg.loads_with_derivatives(mmg_variables(state, input, lane));
-        let derivatives = applied.map_or([[f64::NAN; 5]; 3], |a| a.by);
-        for (row, values) in by.iter_mut().zip(derivatives) {
+        applied.map_or([[f64::NAN; 5]; 3], |a| a.by)
+    })
+}
+
+/// Derivatives of the three applied loads computed lane by lane in f64 (`of_lane`), gathered
+/// into the SIMD scalar's lanes.
+fn by_lanes<T: SimdRealField + Copy, const N: usize>(
+    of_lane: impl Fn(usize) -> [[f64; N]; 3],
+) -> [[T; N]; 3] {
+    let mut by = [[T::zero(); N]; 3];
+    for lane in 0..T::LANES {
+        for (row, values) in by.iter_mut().zip(of_lane(lane)) {
             for (entry, value) in row.iter_mut().zip(values) {
                 set_lane(entry, lane, value);
             }
@@ -589,17 +598,10 @@ fn wind_applied_by<T: SimdRealField + Copy>(
     state: &[T; 7],
     input: &[T; 3],
 ) -> [[T; 4]; 3] {
-    let mut by = [[T::zero(); 4]; 3];
-    for lane in 0..T::LANES {
+    by_lanes(|lane| {
         let (velocity, gust) = wind_variables(state, input, lane);
-        let derivatives = wind.loads(velocity, gust).by;
-        for (row, values) in by.iter_mut().zip(derivatives) {
-            for (entry, value) in row.iter_mut().zip(values) {
-                set_lane(entry, lane, value);
-            }
-        }
-    }
-    by
+        wind.loads(velocity, gust).by
+    })
 }
 
 /// The hoisted coefficients of the proved program with `table`'s values.
