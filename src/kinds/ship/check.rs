@@ -265,37 +265,50 @@ impl Checker<'_> {
 
     /// `[environment]`: a current of a speed (≥ 0) toward a direction, both given.
     pub(super) fn current(&self, table: &EnvironmentTable) -> Result<Option<Current>, SceneError> {
-        let key = |k: &str| format!("environment.{k}");
-        let (speed, toward) = match (table.current_m_s, table.current_toward_deg) {
-            (None, None) => return Ok(None),
-            (Some(speed), Some(toward)) => (speed, toward),
-            (Some(_), None) => {
-                return Err(self.error(
-                    &key("current_toward_deg"),
-                    Problem::Missing("the direction the current flows toward".into()),
-                ));
-            }
-            (None, Some(_)) => {
-                return Err(self.error(
-                    &key("current_m_s"),
-                    Problem::Missing("the current's speed".into()),
-                ));
-            }
+        let Some((speed, toward)) = self.speed_and_direction(
+            ("environment.current_m_s", table.current_m_s),
+            ("environment.current_toward_deg", table.current_toward_deg),
+            [
+                "the current's speed",
+                "the direction the current flows toward",
+                "it flows toward",
+            ],
+        )?
+        else {
+            return Ok(None);
         };
-        let speed = self.finite(&key("current_m_s"), speed)?;
-        if speed < 0.0 {
-            return Err(self.invalid(
-                &key("current_m_s"),
-                format!(
-                    "{speed} m/s: a speed is not negative (give the direction it flows toward)"
-                ),
-            ));
-        }
-        let toward = self.finite(&key("current_toward_deg"), toward)?;
+        let toward = self.finite("environment.current_toward_deg", toward)?;
         Ok(Some(Current {
             speed,
             toward: toward.to_radians(),
         }))
+    }
+
+    /// A speed and a direction given together (a current's, a wind's), or neither (`None`):
+    /// the speed finite and not negative, the direction as written. `said` is what the speed
+    /// is, what the direction is, and how the direction is read (`it flows toward`).
+    pub(super) fn speed_and_direction(
+        &self,
+        (speed_key, speed): (&str, Option<f64>),
+        (direction_key, direction): (&str, Option<f64>),
+        [speed_is, direction_is, read]: [&str; 3],
+    ) -> Result<Option<(f64, f64)>, SceneError> {
+        let (speed, direction) = match (speed, direction) {
+            (None, None) => return Ok(None),
+            (Some(speed), Some(direction)) => (speed, direction),
+            (Some(_), None) => {
+                return Err(self.error(direction_key, Problem::Missing(direction_is.into())));
+            }
+            (None, Some(_)) => return Err(self.error(speed_key, Problem::Missing(speed_is.into()))),
+        };
+        let speed = self.finite(speed_key, speed)?;
+        if speed < 0.0 {
+            return Err(self.invalid(
+                speed_key,
+                format!("{speed} m/s: a speed is not negative (give the direction {read})"),
+            ));
+        }
+        Ok(Some((speed, direction)))
     }
 
     /// `[propulsion]`, each number checked; the rate at the approach is solved by the table.

@@ -152,37 +152,24 @@ impl Checker<'_> {
             ("wind_seed", table.wind_seed.is_some()),
             ("wind_height_m", table.wind_height_m.is_some()),
         ];
-        let (speed, from) = match (table.wind_m_s, table.wind_from_deg) {
-            (None, None) => {
-                return match gust_keys.iter().find(|(_, given)| *given) {
-                    Some((k, _)) => Err(self.error(
-                        &key("wind_m_s"),
-                        Problem::Missing(format!("the mean wind that {} is of", key(k))),
-                    )),
-                    None => Ok(None),
-                };
-            }
-            (Some(speed), Some(from)) => (speed, from),
-            (Some(_), None) => {
-                return Err(self.error(
-                    &key("wind_from_deg"),
-                    Problem::Missing("the direction the wind blows from".into()),
-                ));
-            }
-            (None, Some(_)) => {
-                return Err(self.error(
+        let given = self.speed_and_direction(
+            (&key("wind_m_s"), table.wind_m_s),
+            (&key("wind_from_deg"), table.wind_from_deg),
+            [
+                "the wind's speed",
+                "the direction the wind blows from",
+                "it blows from",
+            ],
+        )?;
+        let Some((speed, from)) = given else {
+            return match gust_keys.iter().find(|(_, given)| *given) {
+                Some((k, _)) => Err(self.error(
                     &key("wind_m_s"),
-                    Problem::Missing("the wind's speed".into()),
-                ));
-            }
+                    Problem::Missing(format!("the mean wind that {} is of", key(k))),
+                )),
+                None => Ok(None),
+            };
         };
-        let speed = self.finite(&key("wind_m_s"), speed)?;
-        if speed < 0.0 {
-            return Err(self.invalid(
-                &key("wind_m_s"),
-                format!("{speed} m/s: a speed is not negative (give the direction it blows from)"),
-            ));
-        }
         if !has_windage {
             return Err(self.invalid(
                 &key("wind_m_s"),
