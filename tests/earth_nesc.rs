@@ -5,25 +5,8 @@
 //! (0.3048 m), as the tools' numbers show.
 
 use eom::earth::{Ecef, Ellipsoid, Geodetic, Gravity, NESC};
+use eom_test_support::nesc::{FOOT, cases, column};
 use serde_json::Value;
-
-const FOOT: f64 = 0.3048;
-
-fn cases() -> Value {
-    let text = std::fs::read_to_string("data/nesc/cases.json").unwrap();
-    serde_json::from_str(&text).unwrap()
-}
-
-/// A tool's checkpoints of `column` in case `case`, as numbers; `None` where it gives none.
-fn column(case: &Value, name: &str, tool: &str) -> Option<Vec<f64>> {
-    let values = case["checkpoints"][name][tool].as_array()?;
-    Some(
-        values
-            .iter()
-            .map(|v| v.as_str().unwrap().parse().unwrap())
-            .collect(),
-    )
-}
 
 /// The shape and the field of a case's Earth.
 fn earth_of(case: &Value) -> (Ellipsoid, Gravity) {
@@ -105,9 +88,8 @@ const ECEF: [&str; 3] = ["gePosition_ft_X", "gePosition_ft_Y", "gePosition_ft_Z"
 ///   ellipsoid gives h = X − a: its own two numbers differ, whatever the conversion.
 #[test]
 fn each_tools_ecef_position_is_its_geodetic_one() {
-    let all = cases();
     let mut compared = 0;
-    for case in all["cases"].as_array().unwrap() {
+    for case in &cases() {
         let (ellipsoid, _) = earth_of(case);
         let number = case["number"].as_u64().unwrap();
         for tool in case["tools"].as_array().unwrap() {
@@ -162,9 +144,8 @@ fn each_tools_ecef_position_is_its_geodetic_one() {
 /// t = 5 s, not traced); SIM02 gives no gravity in cases 4 and 5 (it prints 0).
 #[test]
 fn each_tools_local_gravity_is_the_fields_magnitude() {
-    let all = cases();
     let mut compared = 0;
-    for case in all["cases"].as_array().unwrap() {
+    for case in &cases() {
         let (ellipsoid, gravity) = earth_of(case);
         for tool in case["tools"].as_array().unwrap() {
             let tool = tool.as_str().unwrap();

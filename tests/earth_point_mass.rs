@@ -9,27 +9,15 @@ use eom::earth::point_mass::PointMass;
 use eom::earth::{Ecef, Geodetic, NESC};
 use eom::{AdaptiveOptions, Constant, Dop853, Integrator, Model};
 use eom_test_support::differences::central_jacobians;
+use eom_test_support::nesc::{self, FOOT, case};
 use nalgebra::SVector;
 use serde_json::Value;
-
-const FOOT: f64 = 0.3048;
-
-fn case(number: u64) -> Value {
-    let text = std::fs::read_to_string("data/nesc/cases.json").unwrap();
-    let all: Value = serde_json::from_str(&text).unwrap();
-    let cases = all["cases"].as_array().unwrap();
-    cases
-        .iter()
-        .find(|c| c["number"] == number)
-        .unwrap()
-        .clone()
-}
 
 /// The tools' values of `column` at checkpoint `k`, those of `tools` that give it.
 fn values(case: &Value, column: &str, k: usize, tools: &[&str]) -> Vec<f64> {
     (tools.iter())
-        .filter_map(|tool| case["checkpoints"][column][*tool].as_array())
-        .map(|v| v[k].as_str().unwrap().parse().unwrap())
+        .filter_map(|tool| nesc::column(case, column, tool))
+        .map(|v| v[k])
         .collect()
 }
 

@@ -11,6 +11,7 @@
 //! | a model's Jacobians by central differences | [`differences`] |
 //! | the keys a serde schema accepts | [`schema`] |
 //! | the Mariner in a wind, built from the shipped scene | [`ships`] |
+//! | NASA's NESC check cases of `data/nesc/` | [`nesc`] |
 
 pub mod bodies;
 pub mod child;
@@ -20,6 +21,7 @@ pub mod double_double;
 pub mod eval;
 pub mod extremes;
 pub mod jacobian;
+pub mod nesc;
 pub mod properties;
 pub mod random;
 pub mod schema;
